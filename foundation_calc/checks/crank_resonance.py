@@ -1,0 +1,85 @@
+"""Resonance check of a crank-mechanism foundation against the scene's required detuning.
+
+Each condition n·ω = p of :data:`~foundation_calc.solvers.crank_resonance.CONDITIONS` has two
+estimates of its critical speed: from the paper's zero-order operator and from the operator with
+the mechanism's time-averaged inertia. The margin is measured to the nearer of the two, so the
+verdict holds whichever estimate is used. A paper condition inside the band fails; an extra one
+warns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.solvers.crank_frequencies import (
+    NaturalFrequencies,
+    averaged_inertia_frequencies,
+    rocking_stability_margin,
+    zero_order_frequencies,
+)
+from foundation_calc.solvers.crank_mechanism import CrankDesign
+from foundation_calc.solvers.crank_resonance import (
+    CONDITIONS,
+    ResonanceCondition,
+    critical_speed,
+    relative_detuning,
+)
+
+
+@dataclass(frozen=True)
+class ResonanceRow:
+    """One resonance condition checked at the operating speed (speeds in rad/s)."""
+
+    condition: ResonanceCondition
+    critical_zero_order: float
+    critical_averaged: float
+    margin: float
+    required: float
+    outcome: Outcome
+
+
+@dataclass(frozen=True)
+class ResonanceReport:
+    """Natural frequencies of a design and its resonance rows."""
+
+    design: CrankDesign
+    zero_order: NaturalFrequencies
+    averaged: NaturalFrequencies
+    stability_margin: float
+    rows: tuple[ResonanceRow, ...]
+
+    @property
+    def outcome(self) -> Outcome:
+        return worst(row.outcome for row in self.rows)
+
+    @property
+    def nearest(self) -> ResonanceRow:
+        """The row with the smallest margin."""
+        return min(self.rows, key=lambda row: row.margin)
+
+
+def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
+    """Natural frequencies of ``design`` and the margin of its speed from every resonance."""
+    d, rod = design, design.rod
+    soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g)
+    zero = zero_order_frequencies(*soil_args)
+    averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho)
+    rows = []
+    for cond in CONDITIONS:
+        w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
+        w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
+        margin = min(relative_detuning(d.omega, w0), relative_detuning(d.omega, w1))
+        inside = margin < detuning
+        if not inside:
+            outcome = Outcome.PASS
+        else:
+            outcome = Outcome.FAIL if cond.source == "paper" else Outcome.WARN
+        rows.append(ResonanceRow(cond, w0, w1, margin, detuning, outcome))
+    return ResonanceReport(
+        design=design,
+        zero_order=zero,
+        averaged=averaged,
+        stability_margin=rocking_stability_margin(d.c, d.I1, d.M_tot * d.g, d.h),
+        rows=tuple(rows),
+    )

@@ -1,0 +1,42 @@
+"""The ``fcalc`` application: one module per command, heavy imports inside the commands."""
+
+from __future__ import annotations
+
+import typer
+
+from foundation_calc import __version__
+from foundation_calc.cli.resonance import resonance
+
+EXIT_CODES_HELP = (
+    "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
+    " 3 invalid scene (unreadable, bad TOML, failed validation, physically impossible);"
+    " 4 internal error."
+)
+
+app = typer.Typer(
+    name="fcalc",
+    help="Dynamics of machine foundations and vibrating platforms.\n\n" + EXIT_CODES_HELP,
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    epilog=EXIT_CODES_HELP,
+)
+app.command(epilog=EXIT_CODES_HELP)(resonance)
+
+
+def _version(value: bool) -> None:
+    if value:
+        print(f"fcalc {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Show the version."),
+) -> None:
+    """Dynamics of machine foundations and vibrating platforms."""
+
+
+def main() -> None:
+    """Console-script entry point."""
+    app()

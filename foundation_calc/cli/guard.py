@@ -1,0 +1,61 @@
+"""Turn exceptions into messages on stderr and documented exit codes.
+
+Every command body runs under :func:`reports_errors`: a :class:`FcalcError` prints its message
+(one line per problem, naming the field) and exits with its code; anything else is a bug in
+fcalc and exits 4 with a one-line summary, never a traceback (set ``FCALC_DEBUG=1`` to see it).
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+from collections.abc import Callable
+
+import typer
+
+from foundation_calc.errors import ExitCode, FcalcError, SceneError
+
+
+def report_error(exc: FcalcError) -> None:
+    """Print a user-facing error on stderr."""
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stderr
+
+    err = stderr()
+    if isinstance(exc, SceneError):
+        err.print(f"[bold red]error[/]: invalid scene {escape(exc.source)}")
+        for loc, msg in exc.problems:
+            err.print(f"  {escape(loc) + ': ' if loc else ''}{escape(msg)}", soft_wrap=True)
+    else:
+        err.print(f"[bold red]error[/]: {escape(str(exc))}", soft_wrap=True)
+
+
+def reports_errors(command: Callable) -> Callable:
+    """Decorate a typer command so that errors end in a message and an exit code."""
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        try:
+            return command(*args, **kwargs)
+        except (typer.Exit, typer.Abort, KeyboardInterrupt):
+            raise
+        except FcalcError as exc:
+            report_error(exc)
+            raise typer.Exit(int(exc.exit_code)) from None
+        except Exception as exc:  # a bug: say so without a traceback
+            if os.environ.get("FCALC_DEBUG"):
+                raise
+            from rich.markup import escape
+
+            from foundation_calc.output.console import stderr
+
+            stderr().print(
+                f"[bold red]internal error[/]: {escape(type(exc).__name__)}: {escape(str(exc))}\n"
+                "  This is a bug in fcalc; please report it with the scene file"
+                " (FCALC_DEBUG=1 shows the traceback).",
+                soft_wrap=True,
+            )
+            raise typer.Exit(int(ExitCode.INTERNAL)) from None
+
+    return wrapper

@@ -1,0 +1,37 @@
+"""``fcalc resonance SCENE``: natural frequencies and resonance margins of a crank foundation."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors
+
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
+StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (extra resonances) as failures.")]
+
+
+@reports_errors
+def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False) -> None:
+    """Natural frequencies k0, p1, p2 and the margin of the crank speed from every resonance.
+
+    Checks the paper's conditions ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2 (fail inside the
+    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn).
+    """
+    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.checks.outcomes import exit_code
+    from foundation_calc.output import crank_resonance as report_out
+    from foundation_calc.scenes import load_scene
+
+    loaded = load_scene(scene, expect="crank_foundation")
+    report = check_resonances(loaded.design(), loaded.limits.detuning)
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(report_out.resonance_document(report, loaded, str(scene)))
+    else:
+        report_out.print_resonance_report(report, loaded, str(scene))
+    raise typer.Exit(int(exit_code(report.outcome, strict)))

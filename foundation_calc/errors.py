@@ -1,0 +1,65 @@
+"""Exceptions raised by foundation_calc, and the exit code each one maps to.
+
+Solvers and scene loaders raise; only :mod:`foundation_calc.cli` turns an exception into a
+message and an exit code. Every exception also inherits a built-in (``ValueError`` or
+``ArithmeticError``) so that library users can catch it without importing this module.
+"""
+
+from __future__ import annotations
+
+from enum import IntEnum
+
+
+class ExitCode(IntEnum):
+    """Exit codes of ``fcalc``, documented in README.md and ``fcalc --help``."""
+
+    OK = 0  #: every check passes
+    CHECK_FAILED = 1  #: at least one check fails (resonance, amplitude, feasibility warning made strict)
+    USAGE = 2  #: command-line usage error (typer/click)
+    INVALID_SCENE = 3  #: unreadable file, bad TOML, failed validation, physically impossible design
+    INTERNAL = 4  #: a bug in fcalc: please report it with the scene file
+
+
+class FcalcError(Exception):
+    """Base class of every error that fcalc reports to its user."""
+
+    exit_code: ExitCode = ExitCode.INTERNAL
+
+
+class SceneError(FcalcError, ValueError):
+    """A scene file cannot be used: unreadable, not TOML, or fails validation.
+
+    ``problems`` holds one ``(location, message)`` pair per problem, where ``location`` is the
+    dotted path of the field (``mechanism.rod_length``) or ``""`` for the file as a whole.
+    """
+
+    exit_code = ExitCode.INVALID_SCENE
+
+    def __init__(self, source: str, problems: list[tuple[str, str]]):
+        self.source = source
+        self.problems = problems
+        lines = [f"{loc}: {msg}" if loc else msg for loc, msg in problems]
+        super().__init__(f"{source}: " + "; ".join(lines))
+
+
+class PhysicsError(FcalcError, ValueError):
+    """The inputs are valid numbers but describe a system that has no answer.
+
+    Examples: a foundation that is unstable in rocking, an isolator stiffness that must be
+    negative. ``field`` names the scene field (or derived quantity) that is responsible, and
+    ``hint`` says what range would make the design possible.
+    """
+
+    exit_code = ExitCode.INVALID_SCENE
+
+    def __init__(self, message: str, *, field: str = "", hint: str = ""):
+        self.field = field
+        self.hint = hint
+        text = f"{field}: {message}" if field else message
+        super().__init__(f"{text} ({hint})" if hint else text)
+
+
+class ConvergenceError(FcalcError, ArithmeticError):
+    """An iterative solver did not converge; the message says how far it got."""
+
+    exit_code = ExitCode.INVALID_SCENE

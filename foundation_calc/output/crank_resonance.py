@@ -1,0 +1,120 @@
+"""Report of ``fcalc resonance``: rich tables and the JSON document (SI units)."""
+
+from __future__ import annotations
+
+from rich.table import Table
+
+from foundation_calc.checks.crank_resonance import ResonanceReport
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.solvers.crank_resonance import MODE_NAMES
+from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
+
+
+def _frequencies(freqs) -> dict:
+    return {"k0": freqs.k0, "p1": freqs.p1, "p2": freqs.p2}
+
+
+def summary_line(report: ResonanceReport) -> str:
+    """One sentence that says whether the speed is far enough from every resonance."""
+    near = report.nearest
+    rpm = rpm_from_omega(report.design.omega)
+    outcome = report.outcome.value
+    if outcome == "pass":
+        return (
+            f"{verdict_text(outcome)}: {fmt(rpm)} rpm is at least {near.margin:.1%} from every"
+            f" resonance (nearest: {near.condition.label}; required {near.required:.0%})"
+        )
+    bad = [r for r in report.rows if r.outcome.value == outcome]
+    names = ", ".join(f"{r.condition.label} (margin {r.margin:.1%})" for r in bad)
+    return f"{verdict_text(outcome)}: {fmt(rpm)} rpm is inside the {near.required:.0%} band of {names}"
+
+
+def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
+    """The JSON document of ``fcalc resonance`` (every number SI: rad/s, kg, m)."""
+    d = report.design
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "resonance",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
+        "derived": {
+            "mu": d.mu,
+            "lambda": d.lam,
+            "total_mass": d.M_tot,
+            "moving_mass": d.rod.m,
+            "rho1": d.rho1_sq**0.5,
+            "kappa": d.rod.kappa,
+            "rocking_stability_margin": report.stability_margin,
+        },
+        "natural_frequencies": _frequencies(report.zero_order),
+        "natural_frequencies_averaged_inertia": _frequencies(report.averaged),
+        "resonances": [
+            {
+                "condition": row.condition.label,
+                "harmonic": row.condition.harmonic,
+                "mode": row.condition.mode,
+                "mode_name": MODE_NAMES[row.condition.mode],
+                "source": row.condition.source,
+                "excitation": row.condition.excitation,
+                "critical_speed": speed_triplet(row.critical_zero_order),
+                "critical_speed_averaged_inertia": speed_triplet(row.critical_averaged),
+                "margin": row.margin,
+                "required": row.required,
+                "verdict": row.outcome.value,
+            }
+            for row in report.rows
+        ],
+        "verdict": report.outcome.value,
+    }
+
+
+def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
+    """Print the tables of ``fcalc resonance``."""
+    d = report.design
+    out = stdout()
+    title = scene.name or source
+    out.print(
+        f"[bold]{title}[/]  speed {fmt(d.omega)} rad/s = {fmt(hz_from_omega(d.omega))} Hz"
+        f" = {fmt(rpm_from_omega(d.omega))} rpm (given as {scene.mechanism.speed_given_as})"
+    )
+
+    design = Table(title="Design", title_justify="left")
+    for col in ("quantity", "value", "unit"):
+        design.add_column(col, justify="right" if col == "value" else "left")
+    design.add_row("μ = m/M_tot, moving-mass ratio", fmt(d.mu, 4), "-")
+    design.add_row("λ = r/l, crank-to-rod ratio", fmt(d.lam, 4), "-")
+    design.add_row("M_tot, total mass", fmt(d.M_tot), "kg")
+    design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt(d.rho1_sq**0.5, 4), "m")
+    design.add_row("rocking stability reserve c·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
+    out.print(design)
+
+    freqs = Table(title="Natural frequencies", title_justify="left")
+    freqs.add_column("mode")
+    for col in ("rad/s", "Hz", "rpm", "rad/s, averaged inertia"):
+        freqs.add_column(col, justify="right")
+    for mode in ("k0", "p1", "p2"):
+        w0, w1 = getattr(report.zero_order, mode), getattr(report.averaged, mode)
+        freqs.add_row(
+            f"{mode} ({MODE_NAMES[mode]})", fmt(w0, 6), fmt(hz_from_omega(w0)), fmt(rpm_from_omega(w0)), fmt(w1, 6)
+        )
+    out.print(freqs)
+
+    res = Table(title="Resonances (critical crank speeds)", title_justify="left")
+    res.add_column("condition")
+    res.add_column("mode")
+    for col in ("rpm", "rpm, avg. inertia", "margin", "required"):
+        res.add_column(col, justify="right")
+    res.add_column("verdict")
+    for row in report.rows:
+        label = row.condition.label + ("" if row.condition.source == "paper" else " (extra)")
+        res.add_row(
+            label,
+            MODE_NAMES[row.condition.mode],
+            fmt(rpm_from_omega(row.critical_zero_order)),
+            fmt(rpm_from_omega(row.critical_averaged)),
+            f"{row.margin:.1%}",
+            f"{row.required:.0%}",
+            verdict_text(row.outcome.value),
+        )
+    out.print(res)
+    out.print(summary_line(report))

@@ -1,0 +1,60 @@
+"""Building blocks shared by every scene kind: model configuration, quantities, speeds.
+
+Every physical field is declared with :func:`quantity`, so its description always carries the
+paper's symbol and the SI unit; the JSON schema, the error messages and the docs read it there.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from foundation_calc.units import omega_from_hz, omega_from_rpm
+
+#: Version of the scene format written by ``fcalc init`` and accepted by the loaders.
+SCENE_SCHEMA_VERSION = 1
+
+
+class SceneModel(BaseModel):
+    """Base of all scene models: unknown keys, NaN, inf and strings-for-numbers are rejected."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True, frozen=True)
+
+
+def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraints: Any) -> Any:
+    """A pydantic Field whose description reads ``"symbol [unit]: text"``."""
+    return Field(default, description=f"{symbol} [{unit}]: {text}", **constraints)
+
+
+class SpeedFields(SceneModel):
+    """The operating speed, given as exactly one of ``omega``, ``frequency_hz``, ``speed_rpm``."""
+
+    omega: float | None = quantity("ω", "rad/s", "angular speed of the shaft", None, gt=0)
+    frequency_hz: float | None = quantity("f", "Hz", "rotation frequency of the shaft", None, gt=0)
+    speed_rpm: float | None = quantity("n", "rpm", "shaft speed in revolutions per minute", None, gt=0)
+
+    @model_validator(mode="after")
+    def _exactly_one_speed(self):
+        given = [k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None]
+        if len(given) != 1:
+            got = "none" if not given else " and ".join(given)
+            raise ValueError(
+                "give the speed as exactly one of omega [rad/s], frequency_hz [Hz] or speed_rpm [rpm]"
+                f" (got {got})"
+            )
+        return self
+
+    @property
+    def omega_rad_s(self) -> float:
+        """The speed in rad/s, whichever way the scene gave it."""
+        if self.omega is not None:
+            return self.omega
+        if self.frequency_hz is not None:
+            return omega_from_hz(self.frequency_hz)
+        return omega_from_rpm(self.speed_rpm)
+
+    @property
+    def speed_given_as(self) -> str:
+        """Which of the three keys the scene used."""
+        return next(k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None)

@@ -1,0 +1,147 @@
+"""Scene model of kind ``crank_foundation``: a block foundation carrying a crank-slider machine.
+
+Keys and units follow the scene contract of Krichever & Makarov's problem (see README). All
+values are SI. Rules that involve two fields (l' < l, r < l, mu <= 0.5) are checked here so the
+message names the field to change.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import ValidationInfo, field_validator, model_validator
+
+from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.solvers.constants import GRAVITY
+from foundation_calc.solvers.crank_mechanism import CrankDesign, lump_slider
+
+#: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
+#: method of the paper is claimed to hold.
+MU_MAX = 0.5
+
+
+class Foundation(SceneModel):
+    """The rigid block (foundation and machine frame, without the rod and the slider)."""
+
+    mass: float = quantity("M", "kg", "block and machine frame, without rod and slider", gt=0)
+    moment_of_inertia: float = quantity(
+        "I_c", "kg m²", "about the block's centre of mass C, axis normal to the plane of motion", gt=0
+    )
+    cog_height: float = quantity("h", "m", "height of the centre of mass C above the base", gt=0)
+    base_area: float = quantity("S", "m²", "area of the base in contact with the soil", gt=0)
+    base_second_moment: float = quantity(
+        "I1", "m⁴", "second moment of the base area about its centroidal axis normal to the plane", gt=0
+    )
+
+
+class Soil(SceneModel):
+    """Barkan's elastic half-space coefficients of the soil under the base."""
+
+    c_z: float = quantity("c", "N/m³", "coefficient of elastic uniform compression", gt=0)
+    c_x: float = quantity("c1", "N/m³", "coefficient of elastic uniform shear", gt=0)
+
+
+class Mechanism(SpeedFields):
+    """The crank-slider machine; the crank turns at constant speed relative to the foundation."""
+
+    crank_radius: float = quantity("r", "m", "crank radius", gt=0)
+    rod_length: float = quantity("l", "m", "connecting-rod length, crank pin M' to slider pin M''", gt=0)
+    rod_mass: float = quantity("m", "kg", "connecting-rod mass", gt=0)
+    rod_cog_to_crank_pin: float = quantity(
+        "l'", "m", "distance C1M' from the rod's centre of mass to the crank pin; 0 < l' < l", gt=0
+    )
+    rod_radius_of_gyration: float = quantity("ρ", "m", "radius of gyration of the rod about C1", gt=0)
+    crank_axis_to_cog: float = quantity(
+        "a", "m", "distance from the crank axis A to C along the guide; positive when A is above C"
+    )
+    slider_mass: float = quantity(
+        "m1", "kg", "mass carried by the slider (saw frame, piston, ram)", 0.0, ge=0
+    )
+    drive_on_foundation: bool = quantity(
+        "-", "-", "true when the motor's reaction torque acts on the foundation", True
+    )
+
+    @field_validator("rod_length")
+    @classmethod
+    def _rod_longer_than_crank(cls, rod_length: float, info: ValidationInfo) -> float:
+        r = info.data.get("crank_radius")
+        if r is not None and not r < rod_length:
+            raise ValueError(
+                f"must be longer than crank_radius = {r:g} m (λ = r/l = {r / rod_length:.4g} must be < 1)"
+            )
+        return rod_length
+
+    @field_validator("rod_cog_to_crank_pin")
+    @classmethod
+    def _cog_on_the_rod(cls, l1: float, info: ValidationInfo) -> float:
+        rod_length = info.data.get("rod_length")
+        if rod_length is not None and not l1 < rod_length:
+            raise ValueError(f"must be less than rod_length = {rod_length:g} m (0 < l' < l)")
+        return l1
+
+
+class Limits(SceneModel):
+    """What the checks compare against."""
+
+    amplitude: float | None = quantity(
+        "u_max", "m", "largest allowed displacement amplitude of any reported point", None, gt=0
+    )
+    velocity: float | None = quantity("v_max", "m/s", "largest allowed velocity amplitude", None, gt=0)
+    acceleration: float | None = quantity(
+        "a_max", "m/s²", "largest allowed acceleration amplitude", None, gt=0
+    )
+    detuning: float = quantity(
+        "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
+    )
+
+
+class CrankScene(SceneModel):
+    """A scene of kind ``crank_foundation``."""
+
+    kind: Literal["crank_foundation"] = quantity("-", "-", 'scene kind, always "crank_foundation"')
+    schema_version: Literal[1] = quantity(
+        "-", "-", "version of the scene format", SCENE_SCHEMA_VERSION
+    )
+    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    foundation: Foundation
+    soil: Soil
+    mechanism: Mechanism
+    limits: Limits = Limits()
+
+    @model_validator(mode="after")
+    def _mechanism_is_small(self):
+        moving = self.mechanism.rod_mass + self.mechanism.slider_mass
+        mu = moving / (self.foundation.mass + moving)
+        if mu > MU_MAX:
+            raise ValueError(
+                f"mechanism.rod_mass + mechanism.slider_mass = {moving:g} kg makes μ = {mu:.4g};"
+                f" the method needs μ = (m + m1)/(M + m + m1) <= {MU_MAX}"
+            )
+        return self
+
+    def design(self) -> CrankDesign:
+        """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod)."""
+        f, s, mech = self.foundation, self.soil, self.mechanism
+        rod = lump_slider(
+            m=mech.rod_mass,
+            l=mech.rod_length,
+            l1=mech.rod_cog_to_crank_pin,
+            rho=mech.rod_radius_of_gyration,
+            m1=mech.slider_mass,
+        )
+        return CrankDesign(
+            M=f.mass,
+            I_c=f.moment_of_inertia,
+            h=f.cog_height,
+            S=f.base_area,
+            I1=f.base_second_moment,
+            c=s.c_z,
+            c1=s.c_x,
+            omega=mech.omega_rad_s,
+            r=mech.crank_radius,
+            l=mech.rod_length,
+            a=mech.crank_axis_to_cog,
+            rod=rod,
+            drive_on_foundation=mech.drive_on_foundation,
+            g=GRAVITY,
+        )

@@ -1,0 +1,83 @@
+"""Read a scene file and validate it with the model of its ``kind``.
+
+Every failure becomes a :class:`~foundation_calc.errors.SceneError` whose problems name the
+field (dotted path), the offending value, the unit and the allowed range.
+"""
+
+from __future__ import annotations
+
+import importlib
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from foundation_calc.errors import SceneError
+
+#: scene kind -> "module:Model"; a module is imported only when a scene of its kind is read.
+KINDS: dict[str, str] = {
+    "crank_foundation": "foundation_calc.scenes.crank:CrankScene",
+}
+
+#: Largest scene file read [bytes]; a design is a few hundred bytes.
+MAX_SCENE_BYTES = 1_000_000
+
+
+def read_toml(path: str | Path) -> dict[str, Any]:
+    """Return the TOML document at ``path`` as a dict, or raise :class:`SceneError`."""
+    source = str(path)
+    try:
+        raw = Path(path).read_bytes()
+    except IsADirectoryError:
+        raise SceneError(source, [("", "is a folder, not a scene file")]) from None
+    except OSError as exc:
+        raise SceneError(source, [("", f"cannot be read: {exc.strerror or exc}")]) from None
+    if len(raw) > MAX_SCENE_BYTES:
+        raise SceneError(
+            source, [("", f"is {len(raw)} bytes; a scene file must be under {MAX_SCENE_BYTES} bytes")]
+        )
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(source, [("", f"is not UTF-8 text (byte {exc.start})")]) from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(source, [("", f"is not valid TOML: {exc}")]) from None
+    except RecursionError:
+        raise SceneError(source, [("", "is not valid TOML: nested too deeply")]) from None
+
+
+def model_for_kind(kind: str) -> type:
+    """Return the pydantic model class of a scene kind (imported on first use)."""
+    module_name, _, class_name = KINDS[kind].partition(":")
+    return getattr(importlib.import_module(module_name), class_name)
+
+
+def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | None = None):
+    """Validate a scene document (already parsed TOML) and return its model instance.
+
+    ``expect`` names the kind the caller needs; a scene of another kind is a :class:`SceneError`.
+    """
+    kind = data.get("kind")
+    if not isinstance(kind, str) or kind not in KINDS:
+        allowed = ", ".join(f'"{k}"' for k in KINDS)
+        got = "missing" if kind is None else f"{kind!r}"
+        raise SceneError(source, [("kind", f"must be one of {allowed} (got {got})")])
+    if expect is not None and kind != expect:
+        raise SceneError(source, [("kind", f'this command needs a "{expect}" scene (got "{kind}")')])
+    model = model_for_kind(kind)
+    from pydantic import ValidationError
+
+    from foundation_calc.scenes.messages import describe_validation_error
+
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        raise SceneError(source, describe_validation_error(model, exc)) from None
+    except RecursionError:
+        raise SceneError(source, [("", "is nested too deeply")]) from None
+
+
+def load_scene(path: str | Path, expect: str | None = None):
+    """Read, parse and validate the scene file at ``path``."""
+    return parse_scene(read_toml(path), source=str(path), expect=expect)
