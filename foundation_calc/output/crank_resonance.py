@@ -117,4 +117,4 @@ def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
             verdict_text(row.outcome.value),
         )
     out.print(res)
-    out.print(summary_line(report))
+    out.print(summary_line(report), soft_wrap=True)

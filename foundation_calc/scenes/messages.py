@@ -66,8 +66,9 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
             msg = msg[len("Value error, "):]
         info = _field_info(model, loc)
         details = []
-        if kind != "missing":
-            details.append(f"got {_shorten(err.get('input'))}")
+        given = err.get("input")
+        if kind != "missing" and not isinstance(given, dict):
+            details.append(f"got {_shorten(given)}")
         if info is not None:
             rng = allowed_range(info)
             if rng and kind not in ("greater_than", "greater_than_equal", "less_than", "less_than_equal"):
