@@ -5,6 +5,7 @@ from __future__ import annotations
 import typer
 
 from foundation_calc import __version__
+from foundation_calc.cli.check import check
 from foundation_calc.cli.resonance import resonance
 
 EXIT_CODES_HELP = (
@@ -22,6 +23,7 @@ app = typer.Typer(
     epilog=EXIT_CODES_HELP,
 )
 app.command(epilog=EXIT_CODES_HELP)(resonance)
+app.command(epilog=EXIT_CODES_HELP)(check)
 
 
 def _version(value: bool) -> None:

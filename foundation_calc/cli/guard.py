@@ -38,8 +38,8 @@ def reports_errors(command: Callable) -> Callable:
     def wrapper(*args, **kwargs):
         try:
             return command(*args, **kwargs)
-        except (typer.Exit, typer.Abort, KeyboardInterrupt):
-            raise
+        except (typer.Exit, typer.Abort, typer.BadParameter, KeyboardInterrupt):
+            raise  # typer prints a bad parameter as a usage error itself (exit 2)
         except FcalcError as exc:
             report_error(exc)
             raise typer.Exit(int(exc.exit_code)) from None

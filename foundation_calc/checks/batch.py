@@ -1,0 +1,118 @@
+"""Run every supported check on many scene files, one bad file never hiding the others.
+
+A scene that cannot be loaded, or a check that raises a :class:`~foundation_calc.errors.FcalcError`
+(an impossible design), is recorded as ``invalid`` (exit 3); any other exception inside one
+scene's check is recorded as ``internal`` (exit 4, a bug) and the run goes on. The exit code of
+the run is the worst of all: 4 internal > 3 invalid > 1 fail (or warn with ``strict``) > 0.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from foundation_calc.checks.registry import CHECKS, Finding
+from foundation_calc.errors import ExitCode, FcalcError, SceneError
+
+#: Verdicts of one check, from best to worst, and the exit code each one implies.
+VERDICT_EXIT = {"pass": ExitCode.OK, "warn": ExitCode.OK, "fail": ExitCode.CHECK_FAILED,
+                "invalid": ExitCode.INVALID_SCENE, "internal": ExitCode.INTERNAL}
+
+
+@dataclass(frozen=True)
+class CheckRun:
+    """One check on one scene: a finding, or the problems that stopped it.
+
+    ``verdict`` is ``pass``/``warn``/``fail`` from the finding, ``invalid`` for a scene that
+    cannot be loaded or designed, ``internal`` for a bug. ``problems`` are ``(field, message)``.
+    """
+
+    check: str
+    verdict: str
+    reason: str = ""
+    values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
+    document: Mapping[str, Any] = field(default_factory=dict)
+    problems: tuple[tuple[str, str], ...] = ()
+
+    def exit_code(self, strict: bool) -> ExitCode:
+        if strict and self.verdict == "warn":
+            return ExitCode.CHECK_FAILED
+        return VERDICT_EXIT[self.verdict]
+
+
+@dataclass(frozen=True)
+class SceneRun:
+    """All checks of one scene file. ``kind`` and ``name`` are empty when it did not load."""
+
+    source: str
+    kind: str
+    name: str
+    runs: tuple[CheckRun, ...]
+
+    def exit_code(self, strict: bool) -> ExitCode:
+        return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
+
+
+def scene_files(paths: Iterable[str | Path]) -> list[Path]:
+    """The scene files named by ``paths``: files as given, folders searched for ``*.toml``.
+
+    Files found in folders are sorted so reports are stable; a path that does not exist is kept,
+    so that it is reported as a scene that cannot be read.
+    """
+    found: list[Path] = []
+    for path in map(Path, paths):
+        found.extend(sorted(path.rglob("*.toml")) if path.is_dir() else [path])
+    return list(dict.fromkeys(found))
+
+
+def _error_run(check: str, exc: BaseException) -> CheckRun:
+    if isinstance(exc, SceneError):
+        return CheckRun(check, "invalid", "the scene cannot be used", problems=tuple(exc.problems))
+    if isinstance(exc, FcalcError):
+        return CheckRun(check, "invalid", str(exc), problems=((getattr(exc, "field", ""), str(exc)),))
+    text = f"{type(exc).__name__}: {exc}"
+    return CheckRun(check, "internal", f"internal error (a bug in fcalc): {text}", problems=(("", text),))
+
+
+def _finite(finding: Finding) -> Finding:
+    """``finding`` itself; NaN or inf in its numbers is a bug, so it raises ``ValueError``."""
+    json.dumps([finding.document, list(finding.values.values())], allow_nan=False)
+    return finding
+
+
+def run_scene(path: str | Path) -> SceneRun:
+    """Load one scene and run every check of its kind (``"load"`` stands for a scene that fails)."""
+    from foundation_calc.scenes import load_scene
+
+    source = str(path)
+    try:
+        scene = load_scene(path)
+    except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
+        if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
+            raise
+        return SceneRun(source, "", "", (_error_run("load", exc),))
+    runs = []
+    for name, check in CHECKS[scene.kind].items():
+        try:
+            finding = _finite(check(scene))
+        except Exception as exc:  # noqa: BLE001 - one check's error must not stop the others
+            if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
+                raise
+            runs.append(_error_run(name, exc))
+            continue
+        runs.append(CheckRun(name, finding.outcome.value, finding.reason, finding.values, finding.document))
+    return SceneRun(source, scene.kind, scene.name, tuple(runs))
+
+
+def run_scenes(paths: Iterable[str | Path]) -> list[SceneRun]:
+    """:func:`run_scene` on every file of :func:`scene_files`."""
+    return [run_scene(path) for path in scene_files(paths)]
+
+
+def exit_code(scenes: Iterable[SceneRun], strict: bool = False) -> ExitCode:
+    """The worst exit code over all scenes (0 when there are none)."""
+    return max((scene.exit_code(strict) for scene in scenes), default=ExitCode.OK)

@@ -1,0 +1,71 @@
+"""Which checks each scene kind supports, as used by ``fcalc check``.
+
+:data:`CHECKS` maps a scene kind to its checks, by name; each check is a function
+``scene -> Finding``. A :class:`Finding` carries the outcome, a one-line reason and a JSON-able
+document (SI units). The reason is a template whose ``{placeholders}`` are filled from
+``values`` (name -> (quantity, SI value)), so tables can show speeds in rpm or amplitudes in mm
+without any check knowing about display units.
+
+The functions here adapt the per-topic checks (``checks/crank_resonance.py`` ...) and reuse the
+JSON documents of the single-scene commands; they import those modules only when called, so
+``fcalc check`` loads the physics of the kinds it meets and nothing else. Adding a check to a
+kind is one function and one entry in :data:`CHECKS`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from foundation_calc.checks.outcomes import Outcome
+
+
+@dataclass(frozen=True)
+class Finding:
+    """The outcome of one check on one scene.
+
+    Attributes
+    ----------
+    check : name of the check, e.g. ``"resonance"``
+    outcome : pass, warn or fail
+    reason : one line; ``{name}`` placeholders refer to ``values``
+    values : name -> (quantity, value in SI units), quantity as in ``output.display_units``
+    document : the check's detailed JSON document (SI units)
+    """
+
+    check: str
+    outcome: Outcome
+    reason: str
+    values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
+    document: Mapping[str, Any] = field(default_factory=dict)
+
+
+def crank_resonance(scene) -> Finding:
+    """Margin of the crank speed from every resonance (``fcalc resonance``)."""
+    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.output.crank_resonance import resonance_document
+
+    report = check_resonances(scene.design(), scene.limits.detuning)
+    near = report.nearest
+    values = {"speed": ("speed", report.design.omega)}
+    if report.outcome is Outcome.PASS:
+        values["critical"] = ("speed", near.critical_zero_order)
+        reason = (
+            f"speed {{speed}} is at least {near.margin:.1%} from every resonance"
+            f" (nearest {near.condition.label} at {{critical}}; required {near.required:.0%})"
+        )
+    else:
+        bad = [row for row in report.rows if row.outcome is report.outcome]
+        names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
+        reason = f"speed {{speed}} is inside the {near.required:.0%} band of {names}"
+    document = resonance_document(report, scene, "")
+    for key in ("schema_version", "command", "scene"):
+        document.pop(key)
+    return Finding("resonance", report.outcome, reason, values, document)
+
+
+#: scene kind -> {check name: function scene -> Finding}, in the order they are reported.
+CHECKS: dict[str, dict[str, Callable[[Any], Finding]]] = {
+    "crank_foundation": {"resonance": crank_resonance},
+}

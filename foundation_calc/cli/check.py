@@ -1,0 +1,57 @@
+"""``fcalc check PATH...``: every check of every scene under the given files and folders."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.units import UnitsOpt, display_units
+
+PathsArg = Annotated[
+    list[Path],
+    typer.Argument(metavar="PATH", help="Scene files (TOML) or folders, searched recursively for *.toml.", show_default=False),
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the table.")]
+JunitOpt = Annotated[
+    Optional[Path],
+    typer.Option("--junit", metavar="FILE", help="Also write a JUnit XML report (one test case per scene and check)."),
+]
+StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
+
+
+@reports_errors
+def check(
+    paths: PathsArg,
+    json: JsonOpt = False,
+    junit: JunitOpt = None,
+    strict: StrictOpt = False,
+    units: UnitsOpt = None,
+) -> None:
+    """Run every check that each scene's kind supports and report them all.
+
+    A scene that cannot be read or validated is reported (exit 3) and the others still run; a
+    crash inside one scene's check is reported as an internal error (exit 4). The exit code is
+    the worst over all scenes: 4 internal error, 3 invalid scene, 1 a check fails, 0 all pass.
+    """
+    from foundation_calc.checks.batch import exit_code, run_scenes
+    from foundation_calc.output import check_report
+
+    shown = display_units(units)
+    scenes = run_scenes(paths)
+    if not scenes:
+        raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
+    if junit is not None:
+        try:
+            check_report.write_junit(junit, scenes, strict)
+        except OSError as exc:
+            raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(check_report.check_document(scenes, strict))
+    else:
+        check_report.print_check_table(scenes, shown, strict)
+    raise typer.Exit(int(exit_code(scenes, strict)))

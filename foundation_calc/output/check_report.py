@@ -1,0 +1,157 @@
+"""Report of ``fcalc check``: a summary table, one JSON document, JUnit XML for CI servers.
+
+JUnit layout (read by Jenkins, GitLab, GitHub test reporters): one ``<testsuite>`` per scene file,
+one ``<testcase>`` per check of that scene (``name`` = the check, ``classname`` = the scene path
+with ``/`` as ``.``, ``file`` = the path). A failing check carries ``<failure>``, a scene that
+cannot be used or an internal error carries ``<error>``, each with the reason; a warning passes
+(``--strict`` makes it a failure) and its reason is in ``<system-out>``. A scene that does not
+load has a single test case, ``load``.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from collections import Counter
+from pathlib import Path, PurePath
+
+from rich.markup import escape
+from rich.table import Table
+
+from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout
+from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
+from foundation_calc.output.files import write_atomically
+
+_SI = DisplayUnits()
+_VERDICT_STYLE = {**OUTCOME_STYLE, "invalid": "bold magenta", "internal": "bold magenta"}
+
+
+def _reason(run: CheckRun, units: DisplayUnits) -> str:
+    """The reason of a run in ``units``; for problems, one ``field: message`` per line."""
+    if run.problems and run.verdict == "invalid":
+        return "\n".join(f"{loc}: {msg}" if loc else msg for loc, msg in run.problems)
+    return units.render(run.reason, run.values)
+
+
+def _verdict(run: CheckRun, strict: bool) -> str:
+    return "fail" if strict and run.verdict == "warn" else run.verdict
+
+
+def counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
+    """How many checks ended in each verdict (every verdict present, zero or not)."""
+    tally = Counter(_verdict(run, strict) for scene in scenes for run in scene.runs)
+    return {verdict: tally[verdict] for verdict in _VERDICT_STYLE}
+
+
+def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False) -> None:
+    """The summary table (scene, kind, check, verdict, reason) and a one-line total."""
+    table = Table(title="fcalc check", title_justify="left")
+    for col in ("scene", "kind", "check", "verdict", "reason"):
+        table.add_column(col, overflow="fold")
+    for scene in scenes:
+        for run in scene.runs:
+            verdict = _verdict(run, strict)
+            table.add_row(
+                escape(scene.source),
+                scene.kind or "?",
+                run.check,
+                f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]",
+                escape(_reason(run, units)),
+            )
+    out = stdout()
+    out.print(table)
+    tally = ", ".join(f"{n} {verdict}" for verdict, n in counts(scenes, strict).items() if n)
+    out.print(f"{len(scenes)} scene(s), {tally or 'no checks'}; exit code {int(exit_code(scenes, strict))}")
+
+
+def _values_si(values) -> dict:
+    return {
+        name: {"quantity": quantity, "value": value, "unit": next(iter(CONVERSIONS[quantity]))}
+        for name, (quantity, value) in values.items()
+    }
+
+
+def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
+    """The JSON document of ``fcalc check`` (every number SI)."""
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "check",
+        "strict": strict,
+        "exit_code": int(exit_code(scenes, strict)),
+        "counts": counts(scenes, strict),
+        "scenes": [
+            {
+                "source": scene.source,
+                "kind": scene.kind or None,
+                "name": scene.name,
+                "exit_code": int(scene.exit_code(strict)),
+                "checks": [
+                    {
+                        "check": run.check,
+                        "verdict": _verdict(run, strict),
+                        "reason": _reason(run, _SI),
+                        "values": _values_si(run.values),
+                        "problems": [{"field": loc, "message": msg} for loc, msg in run.problems],
+                        "result": dict(run.document),
+                    }
+                    for run in scene.runs
+                ],
+            }
+            for scene in scenes
+        ],
+    }
+
+
+#: Characters XML 1.0 cannot carry at all (control characters, surrogates, U+FFFE/U+FFFF).
+_NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+
+
+def _xml_safe(text: str) -> str:
+    return _NOT_XML.sub("\ufffd", text)
+
+
+def _classname(source: str) -> str:
+    path = PurePath(source)
+    return ".".join(part for part in path.with_suffix("").parts if part not in ("/", "..", "."))
+
+
+def junit_xml(scenes: list[SceneRun], strict: bool = False) -> str:
+    """The run as JUnit XML text (reasons in SI units)."""
+    root = ET.Element("testsuites", name="fcalc check")
+    totals = Counter()
+    for scene in scenes:
+        suite = ET.SubElement(root, "testsuite", name=scene.source)
+        tally = Counter()
+        for run in scene.runs:
+            verdict = _verdict(run, strict)
+            case = ET.SubElement(
+                suite, "testcase", name=run.check, classname=_classname(scene.source), file=scene.source
+            )
+            case.set("time", "0")
+            reason = _reason(run, _SI)
+            if verdict == "fail":
+                ET.SubElement(case, "failure", message=reason, type="fail").text = reason
+                tally["failures"] += 1
+            elif verdict in ("invalid", "internal"):
+                ET.SubElement(case, "error", message=reason, type=verdict).text = reason
+                tally["errors"] += 1
+            else:
+                ET.SubElement(case, "system-out").text = f"{verdict.upper()}: {reason}"
+            tally["tests"] += 1
+        for key in ("tests", "failures", "errors"):
+            suite.set(key, str(tally[key]))
+        totals.update(tally)
+    for key in ("tests", "failures", "errors"):
+        root.set(key, str(totals[key]))
+    ET.indent(root)
+    for element in root.iter():
+        element.text = element.text and _xml_safe(element.text)
+        for key, value in element.attrib.items():
+            element.set(key, _xml_safe(value))
+    return ET.tostring(root, encoding="unicode", xml_declaration=True) + "\n"
+
+
+def write_junit(path: str | Path, scenes: list[SceneRun], strict: bool = False) -> None:
+    """Write :func:`junit_xml` to ``path`` atomically."""
+    write_atomically(path, junit_xml(scenes, strict))

@@ -1,0 +1,75 @@
+"""Units of the numbers shown in tables: SI by default, the units an office quotes on request.
+
+Every command that prints a table takes ``--units`` and hands the parsed :class:`DisplayUnits`
+to its report; JSON output never goes through here and stays SI. A quantity is named by what it
+measures (``"amplitude"``, ``"speed"``); each unit name belongs to exactly one quantity, so
+``--units mm --units rpm`` (or ``--units mm,rpm``) is unambiguous.
+
+>>> units = parse_units(["mm,rpm"])
+>>> units.show("amplitude", 2.0e-4), units.show("speed", 31.41592653589793)
+('0.2 mm', '300 rpm')
+>>> DisplayUnits().show("speed", 31.41592653589793)
+'31.416 rad/s'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+from foundation_calc.output.console import fmt
+from foundation_calc.units import hz_from_omega, rpm_from_omega
+
+#: quantity -> {unit label: conversion from the SI value}; the first unit is the SI one.
+CONVERSIONS = {
+    "amplitude": {"m": lambda v: v, "mm": lambda v: v * 1e3, "µm": lambda v: v * 1e6},
+    "speed": {"rad/s": lambda v: v, "Hz": hz_from_omega, "rpm": rpm_from_omega},
+}
+
+#: Spellings accepted on the command line besides the labels themselves.
+ALIASES = {"um": "µm", "micron": "µm", "hz": "Hz", "rad_s": "rad/s", "rads": "rad/s"}
+
+#: Every unit a user may name, for ``--help``.
+UNIT_CHOICES = ", ".join(unit for table in CONVERSIONS.values() for unit in table) + " (um = µm)"
+
+
+@dataclass(frozen=True)
+class DisplayUnits:
+    """The unit each quantity is shown in (SI unless chosen otherwise)."""
+
+    amplitude: str = "m"
+    speed: str = "rad/s"
+
+    def label(self, quantity: str) -> str:
+        """The unit label of ``quantity``, e.g. ``"mm"``."""
+        return getattr(self, quantity)
+
+    def convert(self, quantity: str, si_value: float) -> float:
+        """``si_value`` (m, rad/s) expressed in the chosen unit of ``quantity``."""
+        return CONVERSIONS[quantity][self.label(quantity)](si_value)
+
+    def show(self, quantity: str, si_value: float, digits: int = 5) -> str:
+        """A value with its unit, e.g. ``"0.2 mm"``."""
+        return f"{fmt(self.convert(quantity, si_value), digits)} {self.label(quantity)}"
+
+    def render(self, template: str, values: Mapping[str, tuple[str, float]]) -> str:
+        """Fill ``{name}`` placeholders of ``template`` from ``values`` (name -> (quantity, SI))."""
+        return template.format_map({name: self.show(q, v) for name, (q, v) in values.items()})
+
+
+def parse_units(tokens: Iterable[str]) -> DisplayUnits:
+    """Build :class:`DisplayUnits` from ``--units`` values (each may be comma-separated).
+
+    Raises ``ValueError`` naming the unknown unit and the choices, or a quantity given twice.
+    """
+    chosen: dict[str, str] = {}
+    for token in tokens:
+        for name in filter(None, (part.strip() for part in token.split(","))):
+            unit = ALIASES.get(name, name)
+            quantity = next((q for q, table in CONVERSIONS.items() if unit in table), None)
+            if quantity is None:
+                raise ValueError(f"unknown unit {name!r}; choose from {UNIT_CHOICES}")
+            if quantity in chosen and chosen[quantity] != unit:
+                raise ValueError(f"two units for {quantity}: {chosen[quantity]} and {unit}")
+            chosen[quantity] = unit
+    return DisplayUnits(**chosen)

@@ -1,0 +1,159 @@
+"""`fcalc check` over many scenes: table, JSON, JUnit XML, exit codes, one bad file never hides others."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import xml.etree.ElementTree as ET
+
+import pytest
+import tomli_w
+
+from foundation_calc.checks import registry
+from foundation_calc.cli.app import app
+from foundation_calc.output.console import stdout
+from tests.conftest import CONFIGS, configs_of_kind
+
+GOOD = sorted(CONFIGS.glob("*.toml"))
+
+
+def _invoke(runner, *args):
+    return runner.invoke(app, ["check", *map(str, args)])
+
+
+@pytest.fixture
+def mixed_folder(tmp_path, frame_saw):
+    """Every shipped config, plus broken scenes in a subfolder (bad TOML, bad value, not UTF-8)."""
+    folder = tmp_path / "scenes"
+    (folder / "broken").mkdir(parents=True)
+    for config in GOOD:
+        shutil.copy(config, folder / config.name)
+    (folder / "broken" / "not_toml.toml").write_text("kind = \n", encoding="utf-8")
+    frame_saw["foundation"]["mass"] = -5.0
+    (folder / "broken" / "negative_mass.toml").write_text(tomli_w.dumps(frame_saw), encoding="utf-8")
+    (folder / "broken" / "latin1.toml").write_bytes("name = 'Säge'\n".encode("latin-1"))
+    (folder / "notes.txt").write_text("not a scene", encoding="utf-8")
+    return folder
+
+
+@pytest.mark.parametrize("config", configs_of_kind("crank_foundation"), ids=lambda p: p.name)
+def test_each_config_agrees_with_fcalc_resonance(runner, config):
+    """`check` on one crank scene ends with the exit code and verdict of `resonance`."""
+    single = runner.invoke(app, ["resonance", str(config), "--json"])
+    result = _invoke(runner, config, "--json")
+    assert result.exit_code == single.exit_code, result.stdout
+    assert result.stderr == ""
+    doc = json.loads(result.stdout)
+    assert doc["schema_version"] == 1 and doc["command"] == "check"
+    (scene,) = doc["scenes"]
+    checks = {c["check"]: c for c in scene["checks"]}
+    assert checks["resonance"]["verdict"] == json.loads(single.stdout)["verdict"]
+    assert checks["resonance"]["result"]["resonances"] == json.loads(single.stdout)["resonances"]
+    assert checks["resonance"]["values"]["speed"]["unit"] == "rad/s"
+
+
+def test_folder_with_good_and_broken_scenes(runner, mixed_folder, tmp_path):
+    report = tmp_path / "reports" / "junit.xml"
+    report.parent.mkdir()
+    result = _invoke(runner, mixed_folder, "--json", "--junit", report)
+    assert result.exit_code == 3  # the worst: invalid scenes (no internal errors)
+    doc = json.loads(result.stdout)
+    sources = [s["source"] for s in doc["scenes"]]
+    assert len(sources) == len(GOOD) + 3  # notes.txt is not a scene
+    by_name = {s["source"].rsplit("/", 1)[-1]: s for s in doc["scenes"]}
+    assert by_name["negative_mass.toml"]["checks"][0]["verdict"] == "invalid"
+    problems = by_name["negative_mass.toml"]["checks"][0]["problems"]
+    assert problems[0]["field"] == "foundation.mass" and "[kg]" in problems[0]["message"]
+    assert "not UTF-8" in by_name["latin1.toml"]["checks"][0]["reason"]
+    assert "not valid TOML" in by_name["not_toml.toml"]["checks"][0]["reason"]
+    for config in GOOD:
+        assert by_name[config.name]["checks"][0]["verdict"] in {"pass", "warn", "fail"}
+
+    root = ET.parse(report).getroot()
+    suites = root.findall("testsuite")
+    assert sorted(s.get("name") for s in suites) == sorted(sources)
+    cases = root.iter("testcase")
+    assert all(len(list(s.iter("testcase"))) >= 1 for s in suites)
+    assert int(root.get("tests")) == len(list(cases)) == len(sources)
+    assert int(root.get("errors")) == 3
+    assert int(root.get("failures")) == doc["counts"]["fail"] >= 1
+    error = root.find(".//testcase[@classname]/error")
+    assert error is not None and error.get("message")
+    assert not list(report.parent.glob(".*tmp"))  # no temporary file left behind
+
+
+def test_table_lists_every_scene(runner, mixed_folder, monkeypatch):
+    monkeypatch.setattr(stdout(), "width", 250)  # one line per row: names are not folded
+    result = _invoke(runner, mixed_folder)
+    assert result.exit_code == 3
+    text = result.stdout.replace("\n", "")
+    for name in ("frame_saw", "negative_mass", "latin1", "not_toml", "INVALID", "exit code 3"):
+        assert name in text
+
+
+def test_strict_makes_warnings_fail_like_resonance(runner):
+    scene = CONFIGS / "frame_saw.toml"  # warns: extra resonance 2ω = p1 within the band
+    assert _invoke(runner, scene).exit_code == 0
+    assert _invoke(runner, scene, "--strict").exit_code == 1
+    assert runner.invoke(app, ["resonance", str(scene), "--strict"]).exit_code == 1
+    doc = json.loads(_invoke(runner, scene, "--strict", "--json").stdout)
+    assert doc["strict"] and doc["scenes"][0]["checks"][0]["verdict"] == "fail"
+
+
+def test_crash_in_one_check_is_internal_and_others_still_run(runner, monkeypatch, tmp_path):
+    def broken(scene):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.delenv("FCALC_DEBUG", raising=False)
+    checks = {**registry.CHECKS["crank_foundation"], "boom": broken}
+    monkeypatch.setitem(registry.CHECKS, "crank_foundation", checks)
+    report = tmp_path / "junit.xml"
+    result = _invoke(runner, CONFIGS / "frame_saw.toml", CONFIGS / "crank_press.toml", "--junit", report)
+    assert result.exit_code == 4
+    assert "Traceback" not in result.output
+    root = ET.parse(report).getroot()
+    assert root.get("tests") == "4" and root.get("errors") == "2"
+    assert [e.get("type") for e in root.iter("error")] == ["internal", "internal"]
+
+
+def test_missing_file_is_reported_and_the_rest_run(runner, tmp_path):
+    result = _invoke(runner, tmp_path / "nope.toml", CONFIGS / "crank_press.toml", "--json")
+    assert result.exit_code == 3
+    doc = json.loads(result.stdout)
+    assert [s["exit_code"] for s in doc["scenes"]] == [3, 0]
+    assert "cannot be read" in doc["scenes"][0]["checks"][0]["reason"]
+
+
+def test_no_scene_files_is_a_usage_error(runner, tmp_path):
+    result = _invoke(runner, tmp_path)
+    assert result.exit_code == 2
+    assert "no scene files" in result.output
+
+
+def test_units_in_table_and_json_stays_si(runner, monkeypatch):
+    monkeypatch.setattr(stdout(), "width", 250)
+    scene = CONFIGS / "frame_saw.toml"  # 300 rpm = 31.416 rad/s = 5 Hz
+    assert "300 rpm" in _invoke(runner, scene, "--units", "rpm").stdout
+    assert "5 Hz" in _invoke(runner, scene, "--units", "mm,Hz").stdout
+    assert "31.416 rad/s" in _invoke(runner, scene).stdout
+    doc = json.loads(_invoke(runner, scene, "--units", "rpm", "--json").stdout)
+    assert doc["scenes"][0]["checks"][0]["values"]["speed"]["value"] == pytest.approx(10 * 3.141592653589793)
+    bad = _invoke(runner, scene, "--units", "furlong")
+    assert bad.exit_code == 2 and "furlong" in bad.output
+
+
+def test_junit_replaces_an_old_report_and_escapes_odd_names(runner, tmp_path):
+    odd = tmp_path / "odd\x01name.toml"
+    odd.write_text("kind = 'crank_foundation'\n", encoding="utf-8")
+    report = tmp_path / "junit.xml"
+    report.write_text("old", encoding="utf-8")
+    result = _invoke(runner, odd, "--junit", report)
+    assert result.exit_code == 3
+    root = ET.parse(report).getroot()  # parses: the control character was replaced
+    assert root.find("testsuite").get("name") == str(odd).replace("\x01", "\ufffd")
+
+
+def test_unwritable_junit_path_is_not_a_crash(runner, tmp_path):
+    result = _invoke(runner, CONFIGS / "crank_press.toml", "--junit", tmp_path / "no" / "such" / "dir.xml")
+    assert result.exit_code == 2
+    assert "Traceback" not in result.output
