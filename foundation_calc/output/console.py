@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import json
 from functools import cache
+from typing import TYPE_CHECKING
 
-from rich.console import Console
+if TYPE_CHECKING:  # rich.console costs ~10 ms to import: only the table path pays for it
+    from rich.console import Console
 
 #: JSON documents written by fcalc carry this version; it changes when a key is renamed or removed.
 JSON_SCHEMA_VERSION = 1
@@ -16,12 +18,16 @@ OUTCOME_STYLE = {"pass": "bold green", "warn": "bold yellow", "fail": "bold red"
 @cache
 def stdout() -> Console:
     """Console for results."""
+    from rich.console import Console
+
     return Console(highlight=False)
 
 
 @cache
 def stderr() -> Console:
     """Console for messages; never mixed into JSON on stdout."""
+    from rich.console import Console
+
     return Console(stderr=True, highlight=False)
 
 

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from rich.table import Table
-
 from foundation_calc.checks.crank_resonance import ResonanceReport
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.solvers.crank_resonance import MODE_NAMES
@@ -70,6 +68,8 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
 
 def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
     """Print the tables of ``fcalc resonance``."""
+    from rich.table import Table
+
     d = report.design
     out = stdout()
     title = scene.name or source
