@@ -1,0 +1,111 @@
+"""Periodic motion of the foundation as trigonometric series: points, peaks, comparisons.
+
+Each approximation (the paper's corrected first approximation, the averaged-operator closed
+form, the exact harmonic balance) produces a :class:`PeriodicMotion`: the cosine and sine
+coefficients of x [m], y [m] and θ [rad] for the harmonics n = 0 ... K of the crank speed ω.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.solvers.trig_series import analyse, derivative, peak, sample
+
+#: Degrees of freedom in the order of the first axis of :class:`PeriodicMotion` arrays.
+DOFS = ("x", "y", "theta")
+
+#: Directions of a point's displacement.
+DIRECTIONS = ("horizontal", "vertical")
+
+
+@dataclass(frozen=True)
+class PeriodicMotion:
+    """x(t), y(t), θ(t) = Σ_n cos[..., n] cos(nωt) + sin[..., n] sin(nωt).
+
+    ``cos``, ``sin``: shape (..., 3, K + 1), rows x [m], y [m] (down), θ [rad]; ``omega`` [rad/s].
+    """
+
+    omega: object
+    cos: np.ndarray
+    sin: np.ndarray
+
+    def coefficient(self, dof: str, n: int):
+        """(cos, sin) coefficient of harmonic n of ``dof`` (0 beyond the series)."""
+        i = DOFS.index(dof)
+        if n >= self.cos.shape[-1]:
+            return np.zeros_like(self.cos[..., i, 0]), np.zeros_like(self.cos[..., i, 0])
+        return self.cos[..., i, n], self.sin[..., i, n]
+
+
+@dataclass(frozen=True)
+class Peaks:
+    """Largest |value| over one revolution of a displacement, its velocity and acceleration.
+
+    Arrays of the shape of the signals' leading dimensions [m, m/s, m/s²] (rad for θ).
+    """
+
+    displacement: object
+    velocity: object
+    acceleration: object
+
+
+def peaks(cos, sin, omega) -> Peaks:
+    """Peaks of a series and of its first two time derivatives (see :func:`trig_series.peak`)."""
+    return Peaks(
+        displacement=peak(cos, sin),
+        velocity=peak(*derivative(cos, sin, omega, 1)),
+        acceleration=peak(*derivative(cos, sin, omega, 2)),
+    )
+
+
+def motion_peaks(motion: PeriodicMotion) -> Peaks:
+    """Peaks of x, y, θ (last axis of the result's arrays: x, y, θ)."""
+    return peaks(motion.cos, motion.sin, np.asarray(motion.omega)[..., None])
+
+
+def point_series(motion: PeriodicMotion, horizontal, height):
+    """Horizontal and vertical displacement [m] of a body point as series, shape (..., 2, 2K + 1).
+
+    The point sits ``horizontal`` [m] from C (in +x) and ``height`` [m] above C; its
+    displacement is the rigid-body motion X + (R(θ) - I) b, b = (horizontal, -height) in body
+    axes, that is (x + (cos θ - 1) u + H sin θ, y + u sin θ - (cos θ - 1) H), sampled and analysed
+    again up to twice the motion's harmonics (exact for the θ² terms; θ³ terms are below 1e-12
+    relative for |θ| < 1e-3 rad).
+    """
+    K = motion.cos.shape[-1] - 1
+    K2 = 2 * K
+    N = 4 * K2 + 4
+    x, y, th = np.moveaxis(sample(motion.cos, motion.sin, N), -2, 0)
+    u, H = np.asarray(horizontal)[..., None], np.asarray(height)[..., None]
+    ct1 = np.cos(th) - 1.0
+    st = np.sin(th)
+    values = np.stack([x + ct1 * u + H * st, y + u * st - ct1 * H], axis=-2)
+    return analyse(values, K2)
+
+
+def point_peaks(motion: PeriodicMotion, horizontal, height) -> Peaks:
+    """Peaks of a point's horizontal and vertical motion (last axis: horizontal, vertical)."""
+    cos, sin = point_series(motion, horizontal, height)
+    return peaks(cos, sin, np.asarray(motion.omega)[..., None])
+
+
+def relative_error(approx, exact):
+    """|approx - exact| / |exact| [-] (arrays or complex); 0 where both are 0."""
+    diff = np.abs(np.asarray(approx) - np.asarray(exact))
+    size = np.abs(np.asarray(exact))
+    return np.where(size == 0.0, np.where(diff == 0.0, 0.0, 1.0), diff / np.where(size == 0.0, 1.0, size))
+
+
+__all__ = [
+    "DIRECTIONS",
+    "DOFS",
+    "PeriodicMotion",
+    "Peaks",
+    "motion_peaks",
+    "peaks",
+    "point_peaks",
+    "point_series",
+    "relative_error",
+]
