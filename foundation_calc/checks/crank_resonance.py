@@ -22,8 +22,8 @@ from foundation_calc.solvers.crank_mechanism import CrankDesign
 from foundation_calc.solvers.crank_resonance import (
     CONDITIONS,
     ResonanceCondition,
+    condition_margin,
     critical_speed,
-    relative_detuning,
 )
 
 
@@ -59,19 +59,38 @@ class ResonanceReport:
         return min(self.rows, key=lambda row: row.margin)
 
 
-def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
-    """Natural frequencies of ``design`` and the margin of its speed from every resonance."""
+def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
+    """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays)."""
     d, rod = design, design.rod
     soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g)
     zero = zero_order_frequencies(*soil_args)
     averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho)
+    return zero, averaged
+
+
+def paper_margin(design: CrankDesign):
+    """Smallest margin [-] of the speed from the paper's six conditions; arrays of designs welcome.
+
+    This is the batch path: one call for a million designs, numpy arrays in and out.
+    """
+    zero, averaged = design_frequencies(design)
+    margins = [condition_margin(design.omega, zero, averaged, c) for c in CONDITIONS if c.source == "paper"]
+    smallest = margins[0]
+    for m in margins[1:]:
+        smallest = (smallest + m - abs(smallest - m)) / 2.0
+    return smallest
+
+
+def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
+    """Natural frequencies of ``design`` and the margin of its speed from every resonance."""
+    d = design
+    zero, averaged = design_frequencies(design)
     rows = []
     for cond in CONDITIONS:
         w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
         w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
-        margin = min(relative_detuning(d.omega, w0), relative_detuning(d.omega, w1))
-        inside = margin < detuning
-        if not inside:
+        margin = condition_margin(d.omega, zero, averaged, cond)
+        if margin >= detuning:
             outcome = Outcome.PASS
         else:
             outcome = Outcome.FAIL if cond.source == "paper" else Outcome.WARN

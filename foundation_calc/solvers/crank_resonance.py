@@ -69,3 +69,20 @@ def relative_detuning(omega, omega_critical):
     0.2
     """
     return abs(omega - omega_critical) / omega_critical
+
+
+def condition_margin(omega, zero_order, averaged, condition: ResonanceCondition):
+    """Margin [-] of ω from one condition, measured to the nearer of its two critical speeds.
+
+    ``zero_order`` and ``averaged`` hold k0, p1, p2 [rad/s] of the paper's operator and of the
+    operator with the mechanism's averaged inertia. Arithmetic only: arrays of designs or speeds
+    give an array of margins.
+
+    >>> from types import SimpleNamespace as F
+    >>> condition_margin(95.0, F(k0=100.0), F(k0=100.0), CONDITIONS[0])
+    0.05
+    """
+    w0 = critical_speed(getattr(zero_order, condition.mode), condition.harmonic)
+    w1 = critical_speed(getattr(averaged, condition.mode), condition.harmonic)
+    d0, d1 = relative_detuning(omega, w0), relative_detuning(omega, w1)
+    return (d0 + d1 - abs(d0 - d1)) / 2.0

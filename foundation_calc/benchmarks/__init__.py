@@ -1,0 +1,1 @@
+"""Benchmarks behind ``fcalc bench``: they measure (time, peak memory, error); tests assert."""
