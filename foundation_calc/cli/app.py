@@ -6,6 +6,7 @@ import typer
 
 from foundation_calc import __version__
 from foundation_calc.cli.check import check
+from foundation_calc.cli.platform import platform
 from foundation_calc.cli.resonance import resonance
 
 EXIT_CODES_HELP = (
@@ -24,6 +25,7 @@ app = typer.Typer(
 )
 app.command(epilog=EXIT_CODES_HELP)(resonance)
 app.command(epilog=EXIT_CODES_HELP)(check)
+app.command(epilog=EXIT_CODES_HELP)(platform)
 
 
 def _version(value: bool) -> None:

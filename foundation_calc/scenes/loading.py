@@ -16,6 +16,7 @@ from foundation_calc.errors import SceneError
 #: scene kind -> "module:Model"; a module is imported only when a scene of its kind is read.
 KINDS: dict[str, str] = {
     "crank_foundation": "foundation_calc.scenes.crank:CrankScene",
+    "platform": "foundation_calc.scenes.platform:PlatformScene",
 }
 
 #: Largest scene file read [bytes]; a design is a few hundred bytes.

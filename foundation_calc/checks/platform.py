@@ -1,0 +1,130 @@
+"""Checks of a vibrating-platform design: exciter height, resonance margins, rocking.
+
+Impossible designs never get here (the design raises PhysicsError, exit 3). What is checked:
+
+- exciter height: WARN below the support plane (normal below resonance) or more than
+  ``limits.exciter_height_ratio`` × ζ above it (the paper's 2.6 m is "highly undesirable");
+- regime margin: WARN when ω is within ``limits.detuning`` of the translational resonance
+  sqrt(c0 / M_Σ);
+- natural frequencies: WARN for each of the six 6-DOF modes within ``limits.detuning`` of ω;
+- rocking: FAIL when the 6-DOF model's rocking exceeds ``limits.rocking_percent`` of u.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.solvers.platform_design import PlatformDesign
+from foundation_calc.solvers.platform_dynamics import Modes, natural_frequencies
+from foundation_calc.solvers.platform_verification import (
+    PlatformModel,
+    SensitivityRow,
+    Verification,
+    build,
+    sensitivity,
+    verify,
+)
+
+MODE_NAMES = {
+    "x": "translation x",
+    "y": "translation y",
+    "z": "vertical",
+    "alpha": "rocking about x",
+    "beta": "rocking about y",
+    "gamma": "yaw",
+}
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One check: its name, outcome and a sentence a designer can act on."""
+
+    name: str
+    outcome: Outcome
+    message: str
+
+
+@dataclass(frozen=True)
+class PlatformReport:
+    """A design, its 6-DOF verification, modes, sensitivity table and findings."""
+
+    design: PlatformDesign
+    model: PlatformModel
+    inertia_given: bool
+    verification: Verification
+    modes: Modes
+    sensitivity: tuple[SensitivityRow, ...]
+    findings: tuple[Finding, ...]
+
+    @property
+    def outcome(self) -> Outcome:
+        return worst(f.outcome for f in self.findings)
+
+
+def mode_margins(modes: Modes, omega) -> list[float]:
+    """|ω - p| / p for each natural frequency p [-]."""
+    return [abs(omega - p) / p for p in modes.frequencies]
+
+
+def _height(d: PlatformDesign, ratio: float) -> Finding:
+    if d.c < 0:
+        regime = "normal below resonance" if d.sigma > 0 else "unusual above resonance"
+        return Finding(
+            "exciter height",
+            Outcome.WARN,
+            f"the exciter's axis point is c = {d.c:.4g} m, below the support plane ({regime});"
+            " check that the structure can carry it there",
+        )
+    if d.zeta > 0 and d.c > ratio * d.zeta:
+        return Finding(
+            "exciter height",
+            Outcome.WARN,
+            f"the exciter sits c = {d.c:.4g} m above the support plane, {d.c / d.zeta:.3g} × ζ"
+            f" (limit {ratio:g} × ζ); lowering ζ lowers c (Eq. (3.15))",
+        )
+    return Finding("exciter height", Outcome.PASS, f"c = {d.c:.4g} m")
+
+
+def _regime(d: PlatformDesign, detuning: float) -> Finding:
+    p = d.translation_frequency
+    side = "below" if d.sigma > 0 else "above"
+    text = f"ω = {d.omega:.5g} rad/s is {d.regime_margin:.1%} {side} the translational resonance sqrt(c0/M_Σ) = {p:.5g} rad/s"
+    if d.regime_margin < detuning:
+        return Finding("regime margin", Outcome.WARN, f"{text}; thin margin (want {detuning:.0%}): a larger u moves it away")
+    return Finding("regime margin", Outcome.PASS, text)
+
+
+def _modes(modes: Modes, omega, detuning: float) -> Finding:
+    close = [
+        f"{MODE_NAMES[dom]} {p:.5g} rad/s (margin {mg:.1%})"
+        for p, dom, mg in zip(modes.frequencies, modes.dominant, mode_margins(modes, omega))
+        if mg < detuning
+    ]
+    if close:
+        return Finding(
+            "natural frequencies",
+            Outcome.WARN,
+            f"within {detuning:.0%} of ω: " + ", ".join(close) + " (any deviation from the design excites them)",
+        )
+    return Finding("natural frequencies", Outcome.PASS, f"all six are at least {detuning:.0%} from ω")
+
+
+def _rocking(v: Verification, limit: float, eta: float) -> Finding:
+    why = f" with loss factor η = {eta:g}" if eta > 0 else ""
+    text = f"rocking {v.rocking_percent:.3g} % of u{why} (limit {limit:g} %)"
+    return Finding("rocking", Outcome.FAIL if v.rocking_percent > limit else Outcome.PASS, text)
+
+
+def check_platform(design: PlatformDesign, model: PlatformModel, limits, inertia_given: bool) -> PlatformReport:
+    """Verify ``design`` on the 6-DOF model and compare with ``limits`` (a scene's [limits])."""
+    v = verify(design, model)
+    platform, rotors = build(design, model)
+    modes = natural_frequencies(platform, rotors)
+    findings = (
+        _height(design, limits.exciter_height_ratio),
+        _regime(design, limits.detuning),
+        _modes(modes, design.omega, limits.detuning),
+        _rocking(v, limits.rocking_percent, model.eta),
+    )
+    return PlatformReport(design, model, inertia_given, v, modes, tuple(sensitivity(design, model)), findings)

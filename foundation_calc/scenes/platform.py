@@ -1,0 +1,202 @@
+"""Scene model of kind ``platform``: a vibro-table on four three-spring isolators with one exciter.
+
+Keys follow the scene contract of the platform note (Bolotnik, Chernousko et al., section 3):
+``[platform]`` mass, length, width, cog, inertia; ``[exciter]`` rotor_mass, eccentricity,
+position; ``[operation]`` omega | frequency_hz | speed_rpm, amplitude, regime; ``[isolators]``
+vertical_reference or vertical. Added keys: ``platform.product_height``,
+``isolators.horizontal_split``, ``isolators.loss_factor``, ``[[extra_exciters]]`` and
+``[limits]``. All values are SI.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import Field, ValidationInfo, field_validator, model_validator
+
+from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.solvers.constants import GRAVITY
+from foundation_calc.solvers.platform_design import (
+    REGIME_SIGN,
+    PlatformDesign,
+    design_from_position,
+    design_from_vertical,
+)
+from foundation_calc.solvers.platform_dynamics import block_inertia
+from foundation_calc.solvers.platform_verification import ExtraRotor, PlatformModel
+
+#: The paper's worked example, used by ``fcalc platform`` when no scene is given.
+DEFAULT_SCENE = Path(__file__).with_name("defaults") / "platform.toml"
+
+Positive = Annotated[float, Field(gt=0)]
+Fraction = Annotated[float, Field(gt=0, lt=1)]
+
+
+def _vector(symbol: str, unit: str, text: str, n: int, default=...):
+    """A fixed-length list field whose description reads ``"symbol [unit]: text"``."""
+    return Field(default, description=f"{symbol} [{unit}]: {text}", min_length=n, max_length=n)
+
+
+class Platform(SceneModel):
+    """The rigid platform with mould and concrete, without the rotor."""
+
+    mass: float = quantity("M", "kg", "platform with mould and concrete, without the rotor", gt=0)
+    length: float = quantity("A", "m", "side O1O2 of the support rectangle, along x'", gt=0)
+    width: float = quantity("B", "m", "side O1O4 of the support rectangle, along y'", gt=0)
+    cog: list[float] = _vector("(ξ, η, ζ)", "m", "centre of mass from corner O1, platform frame", 3)
+    inertia: list[Positive] | None = _vector(
+        "(J_x, J_y, J_z)", "kg m²", "central principal moments along x', y', z' (optional: else a"
+        " homogeneous block A × B × product_height is assumed)", 3, None
+    )
+    product_height: float | None = quantity(
+        "H", "m", "height of the product box whose corners are checked (default 2ζ)", None, gt=0
+    )
+
+
+class Exciter(SceneModel):
+    """The single-shaft exciter with a vertical axis that the design places."""
+
+    rotor_mass: float = quantity("m", "kg", "rotor mass", gt=0)
+    eccentricity: float = quantity("l", "m", "distance from the axis to the rotor's centre of mass", gt=0)
+    position: list[float] | None = _vector(
+        "(a, b)", "m", "axis point in the platform frame; leave out when isolators.vertical is given", 2, None
+    )
+
+
+class Operation(SpeedFields):
+    """Speed, amplitude and regime."""
+
+    amplitude: float = quantity("u", "m", "required amplitude of the circular motion", gt=0)
+    regime: Literal["above", "below"] = quantity(
+        "-", "-", '"above" resonance (sign - in (3.14)) or "below" (sign +)', "above"
+    )
+
+
+class Isolators(SceneModel):
+    """Vertical stiffnesses (given or from K), the split of the horizontal sums, damping."""
+
+    vertical_reference: float | None = quantity(
+        "K", "N/m", "c33 = K and (c23 + c43)/2 = K (the paper's c23 = c33 = c43 = K when centred)", None, gt=0
+    )
+    vertical: list[Positive] | None = _vector(
+        "(c13, c23, c33, c43)", "N/m", "explicit vertical stiffnesses; a, b then follow from (3.9)-(3.10)", 4, None
+    )
+    horizontal_split: list[Fraction] = _vector(
+        "(s1, s3, s4, s2)", "-", "shares c11/(c11+c21), c31/(c31+c41), c12/(c12+c42), c22/(c22+c32)",
+        4, [0.5, 0.5, 0.5, 0.5],
+    )
+    loss_factor: float = quantity("η", "-", "hysteretic loss factor of every spring", 0.0, ge=0, lt=1)
+
+    @field_validator("vertical")
+    @classmethod
+    def _one_vertical_rule(cls, vertical, info: ValidationInfo):
+        if vertical is not None and info.data.get("vertical_reference") is not None:
+            raise ValueError("give either vertical_reference (K) or vertical (c13, c23, c33, c43), not both")
+        return vertical
+
+
+class ExtraExciter(SceneModel):
+    """An additional rotor, for verification only (the design places the main exciter)."""
+
+    rotor_mass: float = quantity("m_j", "kg", "rotor mass", gt=0)
+    eccentricity: float = quantity("l_j", "m", "distance from the axis to the rotor's centre of mass", gt=0)
+    position: list[float] = _vector("(a_j, b_j, c_j)", "m", "axis point in the platform frame", 3)
+    axis: list[float] = _vector("(δ1, δ2)", "rad", "axis angles of Eq. (1.3); (0, 0) is vertical", 2, [0.0, 0.0])
+    speed_ratio: float = quantity(
+        "ω_j/ω", "-", "signed speed as a multiple of the operating speed (-1: counter-rotating)", 1.0
+    )
+    phase: float = quantity("φ_j0", "rad", "rotor angle at t = 0 (the main rotor has 0)", 0.0)
+
+    @field_validator("speed_ratio")
+    @classmethod
+    def _turns(cls, ratio: float) -> float:
+        if ratio == 0.0:
+            raise ValueError("must not be 0 (a rotor at rest is not an exciter)")
+        return ratio
+
+
+class Limits(SceneModel):
+    """What the checks compare against."""
+
+    detuning: float = quantity(
+        "δ", "-", "required relative distance of ω from every natural frequency", 0.2, gt=0, lt=1
+    )
+    rocking_percent: float = quantity(
+        "-", "% of u", "largest allowed rocking of the product's corners relative to its centre of mass", 5.0, gt=0
+    )
+    exciter_height_ratio: float = quantity(
+        "c/ζ", "-", "warn when the exciter is more than this many ζ above the support plane", 3.0, gt=0
+    )
+
+
+class PlatformScene(SceneModel):
+    """A scene of kind ``platform``."""
+
+    kind: Literal["platform"] = quantity("-", "-", 'scene kind, always "platform"')
+    schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
+    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    platform: Platform
+    exciter: Exciter
+    operation: Operation
+    isolators: Isolators
+    extra_exciters: list[ExtraExciter] = Field(
+        default_factory=list, description="- [-]: further rotors for the 6-DOF verification", max_length=16
+    )
+    limits: Limits = Limits()
+
+    @model_validator(mode="after")
+    def _position_or_vertical(self):
+        iso, pos = self.isolators, self.exciter.position
+        if iso.vertical is None and iso.vertical_reference is None:
+            raise ValueError(
+                "isolators: give vertical_reference (K) [N/m] or vertical = [c13, c23, c33, c43] [N/m]"
+            )
+        if iso.vertical is not None and pos is not None:
+            raise ValueError(
+                "exciter.position and isolators.vertical cannot both be given: with the four vertical"
+                " stiffnesses, (3.9)-(3.10) fix a and b"
+            )
+        return self
+
+    @property
+    def product_height(self) -> float:
+        """H [m]: the scene's product_height, else 2|ζ| (at least a tenth of the shorter side)."""
+        p = self.platform
+        if p.product_height is not None:
+            return p.product_height
+        return max(2.0 * abs(p.cog[2]), 0.1 * min(p.length, p.width))
+
+    @property
+    def inertia_given(self) -> bool:
+        """True when the scene gives the platform's central moments of inertia."""
+        return self.platform.inertia is not None
+
+    @property
+    def inertia(self) -> tuple:
+        """Central principal moments [kg m²]: the scene's, else a homogeneous block A × B × H."""
+        p = self.platform
+        if p.inertia is not None:
+            return tuple(p.inertia)
+        return block_inertia(p.mass, p.length, p.width, self.product_height)
+
+    def design(self) -> PlatformDesign:
+        """Design the isolators and the exciter height (raises PhysicsError when impossible)."""
+        p, e, op, iso = self.platform, self.exciter, self.operation, self.isolators
+        common = dict(
+            M=p.mass, m=e.rotor_mass, l=e.eccentricity, u=op.amplitude, omega=op.omega_rad_s,
+            xi=p.cog[0], eta=p.cog[1], zeta=p.cog[2], A=p.length, B=p.width,
+            sigma=REGIME_SIGN[op.regime], g=GRAVITY, split=tuple(iso.horizontal_split),
+        )
+        if iso.vertical is not None:
+            return design_from_vertical(**common, vertical=tuple(iso.vertical))
+        a, b = e.position if e.position is not None else (0.0, 0.0)
+        return design_from_position(**common, a=a, b=b, K=iso.vertical_reference)
+
+    def model(self) -> PlatformModel:
+        """Inertia, damping, product box and extra rotors of the 6-DOF verification."""
+        extra = tuple(
+            ExtraRotor(x.rotor_mass, x.eccentricity, tuple(x.position), x.axis[0], x.axis[1], x.speed_ratio, x.phase)
+            for x in self.extra_exciters
+        )
+        return PlatformModel(self.inertia, self.isolators.loss_factor, self.product_height, extra)

@@ -1,0 +1,420 @@
+"""Linearised 6-DOF dynamics of a rigid platform on twelve springs, driven by rotating unbalances.
+
+Source: the model of section 1 of [1]_ (Eqs. (1.1)-(1.9)), re-derived here because the printed
+rotational equations are omitted and the rotor matrix A_j(φ) is garbled (its entry (3,2) is
+-sin δ2 cos φ; (1.7) itself is right).
+
+Model. Coordinates q = (x, y, z, α, β, γ): displacement R of corner O1 and the small rotation Φ
+of the platform. Isolator i at corner r_i is three springs c_i1, c_i2, c_i3 along the fixed axes
+(the paper's potential (1.2)). Rotor j is a point mass m_j at body position S_j(t) = ρ_j + L_j(t),
+with L_j = l_j (t1 cos φ_j + t2 sin φ_j), t1 = (sin δ1, -cos δ1, 0),
+t2 = (cos δ1 cos δ2, sin δ1 cos δ2, -sin δ2), axis e = t1 × t2 (1.3), (1.7), and φ_j = ω_j t + φ_j0
+(ω_j may be negative: a two-shaft directional exciter is two rotors with ω and -ω).
+
+Newton-Euler for platform and rotors (Σ r×m a about O1 = moment of external forces), kept to first
+order in q with L_j finite, and linearised about the static equilibrium gives
+M(t) q'' + G(t) q' + K(t) q = F(t) with, S_tot = M r_c + Σ m_j S_j and [v]× the cross matrix::
+
+    M = [[M_Σ I, -[S_tot]×], [[S_tot]×, J_O1 + Σ m (|S|² I - S Sᵀ)]]
+    G = [[0, -Σ 2m [L']×], [0, Σ 2m ((S·L') I - L' Sᵀ)]]
+    K = K_springs + [[0, -Σ m [L'']×], [0, Σ m (S L''ᵀ - L'' Sᵀ) + g m (L e3ᵀ - (L·e3) I)
+                                        - g (Mζ + Σ m c_j) diag(1, 1, 0)]]
+    F = [-Σ m L'',  -Σ m S × L'' - g Σ m L × e3]
+
+K_springs = Σ_i T_iᵀ diag(c_i1, c_i2, c_i3) T_i with T_i = [I, -[r_i]×]; the last term of K is
+the weight's tilt stiffness about the static equilibrium (the weight's moment and the springs'
+preload combined). A hysteretic loss factor η multiplies K_springs by (1 + iη sign Ω). The rotor's
+own inertia about its axis is neglected (point masses), as in the paper's design (e × J e = 0).
+
+Steady state. Every coefficient is a trigonometric polynomial in the φ_j; the response is
+q = q_static + Σ Q_n exp(i n·φ) over integer harmonic vectors n. The constant parts are solved
+exactly at each frequency; the periodic parts (relative size m l / (M × platform size)) are
+resolved by a Neumann series, order by order, until the correction is below round-off.
+
+References
+----------
+.. [1] N.N. Bolotnik, B.V. Gusev, Nguyen Truong, I.E. Kholmin, F.L. Chernousko, "Calculation of
+   the parameters of a vibration mechanism with unbalanced vibration exciters", Izv. AN SSSR,
+   MTT, 1986.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from foundation_calc.errors import ConvergenceError, PhysicsError
+
+E3 = np.array([0.0, 0.0, 1.0])
+
+#: Largest number of Neumann orders for the periodic terms.
+MAX_ORDERS = 40
+
+#: Relative size (of the first solve) below which a Neumann correction is dropped.
+NEUMANN_TOL = 1e-17
+
+#: Names of the six coordinates, in order.
+COORDINATES = ("x", "y", "z", "alpha", "beta", "gamma")
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """One single-shaft unbalanced exciter (SI units).
+
+    Attributes
+    ----------
+    m : rotor mass [kg]
+    l : eccentricity, axis to rotor's centre of mass [m]
+    rho : (a, b, c), the axis point O^j in the platform frame [m]
+    delta1, delta2 : axis angles of (1.3) [rad]; (0, 0) is a vertical axis
+    omega : signed speed about the axis e [rad/s]
+    phi0 : angle at t = 0 [rad]
+    """
+
+    m: float
+    l: float
+    rho: tuple
+    delta1: float
+    delta2: float
+    omega: float
+    phi0: float
+
+    def axes(self):
+        """(t1, t2, e) of (1.3), (1.7) in the platform frame."""
+        s1, c1, s2, c2 = np.sin(self.delta1), np.cos(self.delta1), np.sin(self.delta2), np.cos(self.delta2)
+        t1 = np.array([s1, -c1, 0.0])
+        t2 = np.array([c1 * c2, s1 * c2, -s2])
+        return t1, t2, np.cross(t1, t2)
+
+    def eccentric_phasor(self) -> np.ndarray:
+        """λ with L(t) = λ e^{iφ} + conj: λ = l (t1 - i t2) e^{iφ0} / 2 [m]."""
+        t1, t2, _ = self.axes()
+        return 0.5 * self.l * (t1 - 1j * t2) * np.exp(1j * self.phi0)
+
+
+@dataclass(frozen=True)
+class RigidPlatform:
+    """The platform, its isolators and its loss factor (SI units).
+
+    Attributes
+    ----------
+    M : platform mass without rotors [kg]
+    r_c : (ξ, η, ζ) centre of mass from corner O1 [m]
+    J_O1 : inertia tensor about O1 in the platform frame, 3×3 [kg m²]
+    A, B : sides O1O2 (x') and O1O4 (y') [m]
+    stiffness : c_ij, 4×3, rows O1..O4, columns x, y, z [N/m]
+    eta : hysteretic loss factor of the isolators [-]
+    g : acceleration of gravity [m/s²]
+    """
+
+    M: float
+    r_c: tuple
+    J_O1: np.ndarray
+    A: float
+    B: float
+    stiffness: np.ndarray
+    eta: float
+    g: float
+
+    @property
+    def corners(self) -> np.ndarray:
+        """r_1..r_4 of (1.3) [m], shape (4, 3)."""
+        A, B = self.A, self.B
+        return np.array([[0.0, 0.0, 0.0], [A, 0.0, 0.0], [A, B, 0.0], [0.0, B, 0.0]])
+
+
+def skew(v) -> np.ndarray:
+    """Cross-product matrix: skew(v) @ w == v × w (complex v allowed)."""
+    v = np.asarray(v)
+    return np.array([[0 * v[0], -v[2], v[1]], [v[2], 0 * v[0], -v[0]], [-v[1], v[0], 0 * v[0]]])
+
+
+def point_map(p) -> np.ndarray:
+    """T with T q = displacement of body point p, R + Φ × p, shape 3×6."""
+    return np.hstack([np.eye(3), -skew(p)])
+
+
+def block_inertia(M, A, B, H):
+    """Central principal moments of a homogeneous block A × B × H of mass M [kg m²].
+
+    >>> block_inertia(12.0, 1.0, 2.0, 3.0)
+    (13.0, 10.0, 5.0)
+    """
+    return M * (B * B + H * H) / 12.0, M * (A * A + H * H) / 12.0, M * (A * A + B * B) / 12.0
+
+
+def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
+    """J_O1 = J_c + M (|r_c|² I - r_c r_cᵀ) (parallel axes) [kg m²]."""
+    r = np.asarray(r_c, dtype=float)
+    return np.diag(np.asarray(J_c, dtype=float)) + M * (r @ r * np.eye(3) - np.outer(r, r))
+
+
+def spring_stiffness(platform: RigidPlatform) -> np.ndarray:
+    """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m]."""
+    K = np.zeros((6, 6))
+    for r_i, c_i in zip(platform.corners, platform.stiffness):
+        T = point_map(r_i)
+        K += T.T @ np.diag(c_i) @ T
+    return K
+
+
+# ---- trigonometric polynomials: dict {harmonic vector (tuple of ints): complex coefficient} ----
+
+
+def _series_product(a: dict, b: dict, op) -> dict:
+    out: dict = defaultdict(lambda: 0)
+    for ka, va in a.items():
+        for kb, vb in b.items():
+            out[tuple(x + y for x, y in zip(ka, kb))] = out[tuple(x + y for x, y in zip(ka, kb))] + op(va, vb)
+    return dict(out)
+
+
+def _series_add(*terms) -> dict:
+    out: dict = defaultdict(lambda: 0)
+    for scale, series in terms:
+        for k, v in series.items():
+            out[k] = out[k] + scale * v
+    return dict(out)
+
+
+def _series_map(a: dict, fn) -> dict:
+    return {k: fn(v) for k, v in a.items()}
+
+
+@dataclass(frozen=True)
+class PeriodicSystem:
+    """Fourier coefficients of M(t), G(t), K(t) (6×6) and F(t) (6) by harmonic vector."""
+
+    speeds: np.ndarray
+    mass: dict
+    gyro: dict
+    stiff: dict
+    force: dict
+    springs: np.ndarray
+    eta: float
+    static_load: np.ndarray = field(repr=False)
+
+    def frequency(self, n) -> float:
+        """Ω = Σ n_j ω_j [rad/s]."""
+        return float(np.dot(n, self.speeds))
+
+    def dynamic_matrix(self, n) -> np.ndarray:
+        """K0 + iΩ G0 - Ω² M0 at the frequency of harmonic vector n."""
+        zero = tuple(0 for _ in self.speeds)
+        w = self.frequency(n)
+        hyst = 1j * self.eta * np.sign(w) * self.springs
+        return self.stiff[zero] + hyst + 1j * w * self.gyro.get(zero, 0) - w * w * self.mass[zero]
+
+
+def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
+    """Assemble the Fourier coefficients of the linearised equations (module docstring)."""
+    N = len(rotors)
+    zero = (0,) * N
+    speeds = np.array([r.omega for r in rotors], dtype=float)
+    M_sigma = platform.M + sum(r.m for r in rotors)
+    r_c = np.asarray(platform.r_c, dtype=float)
+
+    def unit(j, s):
+        return tuple(s if k == j else 0 for k in range(N))
+
+    S_tot = {zero: platform.M * r_c + 0j}
+    J = {zero: platform.J_O1 + 0j}
+    G_R, G_P, K_R, K_P = {}, {}, {}, {}
+    F_R, F_P = {}, {}
+    zeta_s = platform.M * r_c[2]
+    for j, rot in enumerate(rotors):
+        lam, w = rot.eccentric_phasor(), rot.omega
+        L = {unit(j, 1): lam, unit(j, -1): lam.conj()}
+        Ld = {unit(j, 1): 1j * w * lam, unit(j, -1): -1j * w * lam.conj()}
+        Ldd = _series_map(L, lambda v, w=w: -w * w * v)
+        S = _series_add((1.0, {zero: np.asarray(rot.rho, dtype=float) + 0j}), (1.0, L))
+        m = rot.m
+        zeta_s += m * rot.rho[2]
+        S_tot = _series_add((1.0, S_tot), (m, S))
+        SS = _series_product(S, S, lambda a, b: (a @ b) * np.eye(3) - np.outer(a, b))
+        J = _series_add((1.0, J), (m, SS))
+        G_R = _series_add((1.0, G_R), (-2.0 * m, _series_map(Ld, skew)))
+        G_P = _series_add((1.0, G_P), (2.0 * m, _series_product(S, Ld, lambda s, d: (s @ d) * np.eye(3) - np.outer(d, s))))
+        K_R = _series_add((1.0, K_R), (-m, _series_map(Ldd, skew)))
+        K_P = _series_add(
+            (1.0, K_P),
+            (m, _series_product(S, Ldd, lambda s, d: np.outer(s, d) - np.outer(d, s))),
+            (platform.g * m, _series_map(L, lambda v: np.outer(v, E3) - v[2] * np.eye(3))),
+        )
+        F_R = _series_add((1.0, F_R), (-m, Ldd))
+        F_P = _series_add(
+            (1.0, F_P),
+            (-m, _series_product(S, Ldd, np.cross)),
+            (-platform.g * m, _series_map(L, lambda v: np.cross(v, E3))),
+        )
+
+    springs = spring_stiffness(platform)
+    keys = set(S_tot) | set(J) | set(G_R) | set(G_P) | set(K_R) | set(K_P) | {zero}
+    mass, gyro, stiff = {}, {}, {}
+    for k in keys:
+        s = skew(S_tot.get(k, np.zeros(3)))
+        mass[k] = np.block([[np.eye(3) * (M_sigma if k == zero else 0.0), -s], [s, J.get(k, np.zeros((3, 3)))]])
+        gyro[k] = np.block([[np.zeros((3, 3)), G_R.get(k, np.zeros((3, 3)))], [np.zeros((3, 3)), G_P.get(k, np.zeros((3, 3)))]])
+        stiff[k] = np.block([[np.zeros((3, 3)), K_R.get(k, np.zeros((3, 3)))], [np.zeros((3, 3)), K_P.get(k, np.zeros((3, 3)))]])
+    stiff[zero] = stiff[zero] + springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
+    force = {k: np.concatenate([F_R.get(k, np.zeros(3)), F_P.get(k, np.zeros(3))]) for k in set(F_R) | set(F_P)}
+    S_mean = S_tot[zero].real
+    static = np.concatenate([[0.0, 0.0, -M_sigma * platform.g], -platform.g * np.cross(S_mean, E3)])
+    return PeriodicSystem(speeds, mass, gyro, stiff, force, springs, platform.eta, static)
+
+
+@dataclass(frozen=True)
+class SteadyState:
+    """Steady response q(t) = static + Σ_n Q_n e^{i n·φ} (n and -n both present; q real).
+
+    Attributes
+    ----------
+    static : static equilibrium under gravity (x, y, z [m], α, β, γ [rad])
+    harmonics : {harmonic vector n: complex 6-vector Q_n}
+    system : the assembled equations
+    orders : Neumann orders used for the periodic terms
+    """
+
+    static: np.ndarray
+    harmonics: dict
+    system: PeriodicSystem
+    orders: int
+
+    def by_frequency(self) -> dict:
+        """{Ω >= 0 [rad/s]: complex 6-vector} merging harmonic vectors of equal frequency; the
+        real motion at Ω > 0 is 2 Re(Q e^{iΩt}), at Ω = 0 the mean offset Q."""
+        scale = max(float(np.max(np.abs(self.system.speeds))), 1.0)
+        out: dict = {}
+        for n, Q in self.harmonics.items():
+            w = self.system.frequency(n)
+            if w < -1e-12 * scale:
+                continue
+            key = round(w / scale, 9) * scale
+            out[key] = out.get(key, 0) + Q
+        return out
+
+    @property
+    def mean(self) -> np.ndarray:
+        """Static equilibrium plus the mean offset from the periodic terms."""
+        return self.static + self.by_frequency().get(0.0, np.zeros(6)).real
+
+    def peak(self, T: np.ndarray) -> float:
+        """Peak of |T q_dyn(t)| over time, summed over frequencies (exact for one frequency).
+
+        For one frequency the orbit of 2 Re(X e^{iθ}) is an ellipse with semi-major axis
+        sqrt(2 (|X|² + |X·X|)).
+        """
+        total = 0.0
+        for w, Q in self.by_frequency().items():
+            if w == 0.0:
+                continue
+            X = T @ Q
+            total += float(np.sqrt(2.0 * (np.vdot(X, X).real + abs(X @ X))))
+        return total
+
+
+def static_response(system: PeriodicSystem) -> np.ndarray:
+    """Static equilibrium q_s from K_springs q_s = weight and its moment about O1."""
+    return np.linalg.solve(system.springs, system.static_load)
+
+
+def _solve(system: PeriodicSystem, n, rhs) -> np.ndarray:
+    A = system.dynamic_matrix(n)
+    return np.linalg.solve(A, rhs)
+
+
+def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
+    """Steady-state response of the platform to its rotors (see module docstring).
+
+    Raises
+    ------
+    PhysicsError
+        when a harmonic of the rotor speeds meets an undamped natural frequency exactly.
+    ConvergenceError
+        when the periodic terms do not converge (a combination frequency next to a resonance).
+
+    >>> p = RigidPlatform(2e4, (1.5, 1.0, 0.65), inertia_about_corner(2e4, (1.5, 1.0, 0.65),
+    ...     block_inertia(2e4, 3.0, 2.0, 1.3)), 3.0, 2.0, np.full((4, 3), 1e8), 0.0, 9.81)
+    >>> s = steady_state(p, [Rotor(25.0, 0.2, (1.5, 1.0, 0.65), 0.0, 0.0, 100.0, 0.0)])
+    >>> round(float(s.static[2]) * 1e4, 4)
+    -4.9111
+    """
+    system = periodic_system(platform, rotors)
+    length = float(np.hypot(platform.A, platform.B))
+    weights = np.array([1.0, 1.0, 1.0, length, length, length])
+    periodic = [k for k in system.mass if any(k)]
+    periodic = sorted(set(periodic) | {k for k in system.gyro if any(k)} | {k for k in system.stiff if any(k)})
+    try:
+        current = {n: _solve(system, n, f) for n, f in system.force.items()}
+    except np.linalg.LinAlgError:
+        raise PhysicsError("a rotor speed coincides with an undamped natural frequency") from None
+    base = max(float(np.max(np.abs(Q * weights))) for Q in current.values())
+    total: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
+    sizes = []
+    for order in range(MAX_ORDERS):
+        for n, Q in current.items():
+            total[n] = total[n] + Q
+        size = max((float(np.max(np.abs(Q * weights))) for Q in current.values()), default=0.0)
+        sizes.append(size)
+        if size <= NEUMANN_TOL * base:
+            break
+        if order >= 3 and size > sizes[-2]:
+            raise ConvergenceError(
+                "the rotors' periodic terms do not converge: a combination of the rotor speeds"
+                " lies on a natural frequency of the platform"
+            )
+        residual: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
+        for n, Q in current.items():
+            w = system.frequency(n)
+            for k in periodic:
+                op = system.stiff.get(k, 0) + 1j * w * system.gyro.get(k, 0) - w * w * system.mass.get(k, 0)
+                target = tuple(a + b for a, b in zip(n, k))
+                residual[target] = residual[target] - op @ Q
+        current = {n: _solve(system, n, r) for n, r in residual.items() if np.max(np.abs(r)) > 0.0}
+        if not current:
+            break
+    else:
+        raise ConvergenceError(f"the periodic terms did not converge in {MAX_ORDERS} orders")
+    return SteadyState(static_response(system), dict(total), system, len(sizes))
+
+
+@dataclass(frozen=True)
+class Modes:
+    """Undamped natural frequencies [rad/s] (ascending) and the dominant coordinate of each."""
+
+    frequencies: np.ndarray
+    dominant: tuple
+    shapes: np.ndarray
+
+
+def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
+    """The six natural frequencies of the mean (time-averaged) system without damping.
+
+    Solves K0 v = p² M0 v with M0, K0 the constant parts of M(t), K(t) (rotor masses at their
+    mean inertia, the weight's tilt stiffness included, gyroscopic terms left out).
+
+    Raises
+    ------
+    PhysicsError
+        when a squared frequency is not positive (the platform tips over under its weight).
+    """
+    system = periodic_system(platform, rotors)
+    zero = (0,) * len(rotors)
+    M0, K0 = system.mass[zero].real, system.stiff[zero].real
+    Lc = np.linalg.cholesky(0.5 * (M0 + M0.T))
+    Li = np.linalg.inv(Lc)
+    p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + K0.T)) @ Li.T)
+    if np.any(p2 <= 0.0):
+        raise PhysicsError(
+            f"the platform is unstable: a squared natural frequency is {float(p2.min()):.6g} rad²/s²"
+            " (the weight's tilting moment exceeds the isolators' rocking stiffness)",
+            field="isolators.vertical",
+            hint="stiffen the vertical isolators or lower the centre of mass ζ",
+        )
+    shapes = Li.T @ v
+    length = float(np.hypot(platform.A, platform.B))
+    weights = np.array([1.0, 1.0, 1.0, length, length, length])
+    dominant = tuple(COORDINATES[int(np.argmax(np.abs(shapes[:, i]) * weights))] for i in range(6))
+    return Modes(np.sqrt(p2), dominant, shapes)
