@@ -360,7 +360,7 @@ def require_feasible_horizontal(d: PlatformDesign, position_given: bool) -> None
             f"the horizontal pair sum {name} = {value:.6g} N/m is not positive, so no isolator"
             " split can realise the design",
             field=f"isolators.{name}",
-            hint=f"it is positive for {_u_range(float(p), float(q), float(sg))} at this a, b; or for an {how}",
+            hint=f"it is positive for {_u_range(float(p), float(q), float(sg))} at this a, b; or for {how}",
         )
 
 

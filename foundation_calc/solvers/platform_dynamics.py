@@ -382,7 +382,9 @@ def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
 
 @dataclass(frozen=True)
 class Modes:
-    """Undamped natural frequencies [rad/s] (ascending) and the dominant coordinate of each."""
+    """Undamped natural frequencies [rad/s] (ascending), the motion with the largest share of each
+    mode's kinetic energy (translation of the centre of mass or rotation), and the mode shapes
+    (columns, mass-normalised)."""
 
     frequencies: np.ndarray
     dominant: tuple
@@ -414,7 +416,9 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
             hint="stiffen the vertical isolators or lower the centre of mass ζ",
         )
     shapes = Li.T @ v
-    length = float(np.hypot(platform.A, platform.B))
-    weights = np.array([1.0, 1.0, 1.0, length, length, length])
-    dominant = tuple(COORDINATES[int(np.argmax(np.abs(shapes[:, i]) * weights))] for i in range(6))
+    r_c = np.asarray(platform.r_c, dtype=float)
+    J_c = platform.J_O1 - platform.M * (r_c @ r_c * np.eye(3) - np.outer(r_c, r_c))
+    at_cog = shapes[:3] - skew(r_c) @ shapes[3:]  # translation of the centre of mass
+    energy = np.vstack([platform.M * at_cog**2, np.diag(J_c)[:, None] * shapes[3:] ** 2])
+    dominant = tuple(COORDINATES[int(np.argmax(energy[:, i]))] for i in range(6))
     return Modes(np.sqrt(p2), dominant, shapes)
