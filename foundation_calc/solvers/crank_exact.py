@@ -140,6 +140,35 @@ def _newton(galerkin: _Galerkin, z: np.ndarray, force_size: float) -> tuple[np.n
     )
 
 
+def _first_solve(design: CrankDesign, K: int) -> tuple[np.ndarray, int, float, float]:
+    """Newton with K harmonics from the averaged closed form: (z, iterations, residual, force size)."""
+    start = averaged_response(design)
+    if start.resonant:
+        n, mode = start.nearest
+        raise ConvergenceError(
+            f"no periodic solution: {n}ω is within {start.margin:.2g} (relative) of the natural"
+            f" frequency {start.natural[mode]:.8g} rad/s of the averaged operator"
+        )
+    galerkin = _Galerkin(design, K)
+    force_size = float(np.abs(galerkin.residual(np.zeros((3, 2 * K + 1)))).max())
+    return (*_newton(galerkin, _pack(start.motion, K), force_size), force_size)
+
+
+def fixed_harmonics_solution(design: CrankDesign, harmonics: int) -> PeriodicMotion:
+    """Harmonic balance truncated at ``harmonics`` harmonics, without the convergence test.
+
+    The same Newton solve as the first step of :func:`exact_periodic_solution`, for any K >= 1;
+    ``fcalc bench`` uses it to show the truncation error against K.
+
+    Raises
+    ------
+    PhysicsError, ConvergenceError
+        as :func:`exact_periodic_solution`.
+    """
+    z, _, _, _ = _first_solve(design, harmonics)
+    return _unpack(z, design.omega)
+
+
 def exact_periodic_solution(design: CrankDesign) -> ExactSolution:
     """T-periodic solution of the exact equations of motion (module docstring).
 
@@ -151,17 +180,8 @@ def exact_periodic_solution(design: CrankDesign) -> ExactSolution:
         when the averaged operator is resonant, when Newton's method does not converge, or when
         :data:`MAX_HARMONICS` harmonics are not enough; the message says how far it got.
     """
-    start = averaged_response(design)
-    if start.resonant:
-        n, mode = start.nearest
-        raise ConvergenceError(
-            f"no periodic solution: {n}ω is within {start.margin:.2g} (relative) of the natural"
-            f" frequency {start.natural[mode]:.8g} rad/s of the averaged operator"
-        )
     K = FIRST_HARMONICS
-    galerkin = _Galerkin(design, K)
-    force_size = float(np.abs(galerkin.residual(np.zeros((3, 2 * K + 1)))).max())
-    z, iterations, res = _newton(galerkin, _pack(start.motion, K), force_size)
+    z, iterations, res, force_size = _first_solve(design, K)
     while True:
         K2 = 2 * K
         if K2 > MAX_HARMONICS:
@@ -184,4 +204,4 @@ def exact_periodic_solution(design: CrankDesign) -> ExactSolution:
             )
 
 
-__all__ = ["DOFS", "ExactSolution", "HARMONIC_TOLERANCE", "exact_periodic_solution"]
+__all__ = ["DOFS", "ExactSolution", "HARMONIC_TOLERANCE", "exact_periodic_solution", "fixed_harmonics_solution"]
