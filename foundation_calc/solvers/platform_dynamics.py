@@ -346,8 +346,15 @@ def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
     weights = np.array([1.0, 1.0, 1.0, length, length, length])
     periodic = [k for k in system.mass if any(k)]
     periodic = sorted(set(periodic) | {k for k in system.gyro if any(k)} | {k for k in system.stiff if any(k)})
+    static = static_response(system)
+    # the periodic stiffness acting on the static state (e.g. centrifugal forces of a tilted rotor)
+    load: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
+    for n, f in system.force.items():
+        load[n] = load[n] + f
+    for k in periodic:
+        load[k] = load[k] - system.stiff.get(k, np.zeros((6, 6))) @ static
     try:
-        current = {n: _solve(system, n, f) for n, f in system.force.items()}
+        current = {n: _solve(system, n, f) for n, f in load.items()}
     except np.linalg.LinAlgError:
         raise PhysicsError("a rotor speed coincides with an undamped natural frequency") from None
     base = max(float(np.max(np.abs(Q * weights))) for Q in current.values())
@@ -377,7 +384,7 @@ def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
             break
     else:
         raise ConvergenceError(f"the periodic terms did not converge in {MAX_ORDERS} orders")
-    return SteadyState(static_response(system), dict(total), system, len(sizes))
+    return SteadyState(static, dict(total), system, len(sizes))
 
 
 @dataclass(frozen=True)
