@@ -52,6 +52,19 @@ def test_each_config_agrees_with_fcalc_resonance(runner, config):
     assert checks["resonance"]["values"]["speed"]["unit"] == "rad/s"
 
 
+@pytest.mark.parametrize("config", configs_of_kind("platform"), ids=lambda p: p.name)
+def test_each_platform_config_agrees_with_fcalc_platform(runner, config):
+    single = runner.invoke(app, ["platform", str(config), "--json"])
+    result = _invoke(runner, config, "--json")
+    assert result.exit_code == single.exit_code, result.stdout
+    assert result.stderr == ""
+    (scene,) = json.loads(result.stdout)["scenes"]
+    (design,) = scene["checks"]
+    assert design["check"] == "design" and design["verdict"] == json.loads(single.stdout)["verdict"]
+    assert design["result"]["checks"] == json.loads(single.stdout)["checks"]
+    assert len(design["details"]) == len(design["result"]["checks"])
+
+
 def test_folder_with_good_and_broken_scenes(runner, mixed_folder, tmp_path):
     report = tmp_path / "reports" / "junit.xml"
     report.parent.mkdir()

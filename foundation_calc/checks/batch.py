@@ -37,6 +37,7 @@ class CheckRun:
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     document: Mapping[str, Any] = field(default_factory=dict)
     problems: tuple[tuple[str, str], ...] = ()
+    details: tuple[str, ...] = ()
 
     def exit_code(self, strict: bool) -> ExitCode:
         if strict and self.verdict == "warn":
@@ -73,7 +74,7 @@ def _error_run(check: str, exc: BaseException) -> CheckRun:
     if isinstance(exc, SceneError):
         return CheckRun(check, "invalid", "the scene cannot be used", problems=tuple(exc.problems))
     if isinstance(exc, FcalcError):
-        return CheckRun(check, "invalid", str(exc), problems=((getattr(exc, "field", ""), str(exc)),))
+        return CheckRun(check, "invalid", str(exc), problems=(("", str(exc)),))
     text = f"{type(exc).__name__}: {exc}"
     return CheckRun(check, "internal", f"internal error (a bug in fcalc): {text}", problems=(("", text),))
 
@@ -104,7 +105,8 @@ def run_scene(path: str | Path) -> SceneRun:
                 raise
             runs.append(_error_run(name, exc))
             continue
-        runs.append(CheckRun(name, finding.outcome.value, finding.reason, finding.values, finding.document))
+        f = finding
+        runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.document, details=f.details))
     return SceneRun(source, scene.kind, scene.name, tuple(runs))
 
 

@@ -32,6 +32,7 @@ class Finding:
     reason : one line; ``{name}`` placeholders refer to ``values``
     values : name -> (quantity, value in SI units), quantity as in ``output.display_units``
     document : the check's detailed JSON document (SI units)
+    details : further lines (SI units) for the JUnit report and JSON, too long for the table
     """
 
     check: str
@@ -39,6 +40,7 @@ class Finding:
     reason: str
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     document: Mapping[str, Any] = field(default_factory=dict)
+    details: tuple[str, ...] = ()
 
 
 def crank_resonance(scene) -> Finding:
@@ -59,13 +61,35 @@ def crank_resonance(scene) -> Finding:
         bad = [row for row in report.rows if row.outcome is report.outcome]
         names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
         reason = f"speed {{speed}} is inside the {near.required:.0%} band of {names}"
-    document = resonance_document(report, scene, "")
-    for key in ("schema_version", "command", "scene"):
-        document.pop(key)
-    return Finding("resonance", report.outcome, reason, values, document)
+    return Finding("resonance", report.outcome, reason, values, _embedded(resonance_document(report, scene, "")))
+
+
+def platform_design(scene) -> Finding:
+    """Design of the isolators and exciter, verified on the 6-DOF model (``fcalc platform``)."""
+    from foundation_calc.checks.platform import check_platform
+    from foundation_calc.output.platform import platform_document
+
+    report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
+    shown = [f for f in report.findings if f.outcome is report.outcome]
+    if report.outcome is Outcome.PASS:
+        reason = "at {speed}: the design moves translationally and every check passes"
+    else:
+        kinds = {Outcome.WARN: "warnings", Outcome.FAIL: "failures"}[report.outcome]
+        reason = f"at {{speed}}: {kinds} from " + ", ".join(f.name for f in shown)
+    given_as = scene.operation.speed_given_as
+    document = _embedded(platform_document(report, scene, "", given_as))
+    details = tuple(f"{f.outcome.value.upper()} {f.name}: {f.message}" for f in report.findings)
+    values = {"speed": ("speed", report.design.omega)}
+    return Finding("design", report.outcome, reason, values, document, details)
+
+
+def _embedded(document: dict) -> dict:
+    """A single-scene command's JSON document without what the ``check`` document says once."""
+    return {k: v for k, v in document.items() if k not in ("schema_version", "command", "scene")}
 
 
 #: scene kind -> {check name: function scene -> Finding}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding]]] = {
     "crank_foundation": {"resonance": crank_resonance},
+    "platform": {"design": platform_design},
 }

@@ -22,6 +22,19 @@ JunitOpt = Annotated[
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
 
 
+def _report_problems(scenes) -> None:
+    """Every scene that could not be checked, on stderr, as the single-scene commands print it."""
+    from foundation_calc.cli.guard import report_error, report_internal
+    from foundation_calc.errors import SceneError
+
+    for scene in scenes:
+        for run in scene.runs:
+            if run.verdict == "invalid":
+                report_error(SceneError(scene.source, list(run.problems)))
+            elif run.verdict == "internal":
+                report_internal(f"{scene.source}, check {run.check}: {run.problems[0][1]}")
+
+
 @reports_errors
 def check(
     paths: PathsArg,
@@ -43,6 +56,7 @@ def check(
     scenes = run_scenes(paths)
     if not scenes:
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
+    _report_problems(scenes)
     if junit is not None:
         try:
             check_report.write_junit(junit, scenes, strict)

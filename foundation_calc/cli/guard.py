@@ -31,6 +31,20 @@ def report_error(exc: FcalcError) -> None:
         err.print(f"[bold red]error[/]: {escape(str(exc))}", soft_wrap=True)
 
 
+def report_internal(text: str) -> None:
+    """Print an unexpected exception (a bug in fcalc) on stderr, without a traceback."""
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stderr
+
+    stderr().print(
+        f"[bold red]internal error[/]: {escape(text)}\n"
+        "  This is a bug in fcalc; please report it with the scene file"
+        " (FCALC_DEBUG=1 shows the traceback).",
+        soft_wrap=True,
+    )
+
+
 def reports_errors(command: Callable) -> Callable:
     """Decorate a typer command so that errors end in a message and an exit code."""
 
@@ -46,16 +60,7 @@ def reports_errors(command: Callable) -> Callable:
         except Exception as exc:  # a bug: say so without a traceback
             if os.environ.get("FCALC_DEBUG"):
                 raise
-            from rich.markup import escape
-
-            from foundation_calc.output.console import stderr
-
-            stderr().print(
-                f"[bold red]internal error[/]: {escape(type(exc).__name__)}: {escape(str(exc))}\n"
-                "  This is a bug in fcalc; please report it with the scene file"
-                " (FCALC_DEBUG=1 shows the traceback).",
-                soft_wrap=True,
-            )
+            report_internal(f"{type(exc).__name__}: {exc}")
             raise typer.Exit(int(ExitCode.INTERNAL)) from None
 
     return wrapper

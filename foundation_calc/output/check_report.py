@@ -15,9 +15,6 @@ import xml.etree.ElementTree as ET
 from collections import Counter
 from pathlib import Path, PurePath
 
-from rich.markup import escape
-from rich.table import Table
-
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
@@ -46,6 +43,9 @@ def counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
 
 def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False) -> None:
     """The summary table (scene, kind, check, verdict, reason) and a one-line total."""
+    from rich.markup import escape
+    from rich.table import Table
+
     table = Table(title="fcalc check", title_justify="left")
     for col in ("scene", "kind", "check", "verdict", "reason"):
         table.add_column(col, overflow="fold")
@@ -93,6 +93,7 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
                         "reason": _reason(run, _SI),
                         "values": _values_si(run.values),
                         "problems": [{"field": loc, "message": msg} for loc, msg in run.problems],
+                        "details": list(run.details),
                         "result": dict(run.document),
                     }
                     for run in scene.runs
@@ -130,14 +131,15 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False) -> str:
             )
             case.set("time", "0")
             reason = _reason(run, _SI)
+            text = "\n".join((reason, *run.details))
             if verdict == "fail":
-                ET.SubElement(case, "failure", message=reason, type="fail").text = reason
+                ET.SubElement(case, "failure", message=reason, type="fail").text = text
                 tally["failures"] += 1
             elif verdict in ("invalid", "internal"):
                 ET.SubElement(case, "error", message=reason, type=verdict).text = reason
                 tally["errors"] += 1
             else:
-                ET.SubElement(case, "system-out").text = f"{verdict.upper()}: {reason}"
+                ET.SubElement(case, "system-out").text = f"{verdict.upper()}: {text}"
             tally["tests"] += 1
         for key in ("tests", "failures", "errors"):
             suite.set(key, str(tally[key]))

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from foundation_calc.units import omega_from_hz, omega_from_rpm
 
@@ -16,10 +16,31 @@ from foundation_calc.units import omega_from_hz, omega_from_rpm
 SCENE_SCHEMA_VERSION = 1
 
 
+#: Smallest and largest magnitude of a non-zero number in a scene [SI units]. Designs sit far
+#: inside (masses 1e1-1e7 kg, stiffnesses 1e4-1e10 N/m, amplitudes 1e-7-1e-2 m); outside it,
+#: products and quotients of a few inputs overflow or underflow double precision.
+MAGNITUDE_RANGE = (1e-15, 1e15)
+
+
 class SceneModel(BaseModel):
-    """Base of all scene models: unknown keys, NaN, inf and strings-for-numbers are rejected."""
+    """Base of all scene models: unknown keys, NaN, inf and strings-for-numbers are rejected.
+
+    Every number (also inside lists) must be 0 or within :data:`MAGNITUDE_RANGE`.
+    """
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True, frozen=True)
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _computable_magnitude(cls, value: Any) -> Any:
+        low, high = MAGNITUDE_RANGE
+        for number in value if isinstance(value, (tuple, list)) else (value,):
+            if isinstance(number, float) and number != 0 and not low <= abs(number) <= high:
+                raise ValueError(
+                    f"must be 0 or of magnitude {low:g} to {high:g}"
+                    " (beyond that the arithmetic overflows)"
+                )
+        return value
 
 
 def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraints: Any) -> Any:

@@ -27,17 +27,18 @@ def read_toml(path: str | Path) -> dict[str, Any]:
     """Return the TOML document at ``path`` as a dict, or raise :class:`SceneError`."""
     source = str(path)
     try:
-        raw = Path(path).read_bytes()
+        with open(path, "rb") as handle:  # never more than the limit: the path may be /dev/zero
+            raw = handle.read(MAX_SCENE_BYTES + 1)
     except IsADirectoryError:
         raise SceneError(source, [("", "is a folder, not a scene file")]) from None
-    except OSError as exc:
-        raise SceneError(source, [("", f"cannot be read: {exc.strerror or exc}")]) from None
+    except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the path
+        raise SceneError(source, [("", f"cannot be read: {getattr(exc, 'strerror', None) or exc}")]) from None
     if len(raw) > MAX_SCENE_BYTES:
         raise SceneError(
-            source, [("", f"is {len(raw)} bytes; a scene file must be under {MAX_SCENE_BYTES} bytes")]
+            source, [("", f"is over {MAX_SCENE_BYTES} bytes; a scene file must be under that")]
         )
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8").removeprefix("\ufeff")  # Windows editors may write a BOM
     except UnicodeDecodeError as exc:
         raise SceneError(source, [("", f"is not UTF-8 text (byte {exc.start})")]) from None
     try:
