@@ -95,6 +95,14 @@ class Limits(SceneModel):
     )
 
 
+class Point(SceneModel):
+    """A point of the foundation whose vibration the norms limit (edge of the block, a bearing)."""
+
+    name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80)
+    horizontal: float = quantity("u", "m", "horizontal position from the centre of mass C, positive in +x")
+    height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)")
+
+
 class CrankScene(SceneModel):
     """A scene of kind ``crank_foundation``."""
 
@@ -107,6 +115,18 @@ class CrankScene(SceneModel):
     soil: Soil
     mechanism: Mechanism
     limits: Limits = Limits()
+    points: list[Point] = quantity(
+        "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
+    )
+
+    @field_validator("points")
+    @classmethod
+    def _distinct_point_names(cls, points: list[Point]) -> list[Point]:
+        names = [p.name for p in points]
+        repeated = sorted({n for n in names if names.count(n) > 1} | ({"C"} & set(names)))
+        if repeated:
+            raise ValueError(f"point names must be distinct and not 'C' (the centre of mass): {', '.join(repeated)}")
+        return points
 
     @model_validator(mode="after")
     def _mechanism_is_small(self):
