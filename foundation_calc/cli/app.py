@@ -5,6 +5,7 @@ from __future__ import annotations
 import typer
 
 from foundation_calc import __version__
+from foundation_calc.cli.amplitudes import amplitudes
 from foundation_calc.cli.check import check
 from foundation_calc.cli.platform import platform
 from foundation_calc.cli.resonance import resonance
@@ -24,6 +25,7 @@ app = typer.Typer(
     epilog=EXIT_CODES_HELP,
 )
 app.command(epilog=EXIT_CODES_HELP)(resonance)
+app.command(epilog=EXIT_CODES_HELP)(amplitudes)
 app.command(epilog=EXIT_CODES_HELP)(check)
 app.command(epilog=EXIT_CODES_HELP)(platform)
 

@@ -42,6 +42,7 @@ import numpy as np
 
 from foundation_calc.solvers.crank_frequencies import zero_order_frequencies
 from foundation_calc.solvers.crank_resonance import CONDITIONS, relative_detuning
+from foundation_calc.solvers.crank_response import PeriodicMotion
 
 #: Relative distance |nω - p|/p below which a speed counts as resonant: the undamped periodic
 #: solution does not exist there (or is larger than anything the linear soil model can carry).
@@ -71,6 +72,15 @@ class FirstApproximation:
     theta3: object
     margins: dict
     resonant: object
+
+    def motion(self, omega) -> PeriodicMotion:
+        """The coefficients as series x, y, θ with harmonics 0 ... 3 (shape (..., 3, 4))."""
+        shape = np.broadcast(self.y1, self.x1, self.theta1, omega).shape
+        cos, sin = np.zeros(shape + (3, 4)), np.zeros(shape + (3, 4))
+        cos[..., 1, 1], cos[..., 1, 2] = self.y1, self.y2
+        sin[..., 0, 1], sin[..., 0, 3] = self.x1, self.x3
+        sin[..., 2, 1], sin[..., 2, 3] = self.theta1, self.theta3
+        return PeriodicMotion(omega=omega, cos=cos, sin=sin)
 
 
 def _guarded(denominator, resonant):

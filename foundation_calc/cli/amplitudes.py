@@ -1,0 +1,42 @@
+"""``fcalc amplitudes SCENE``: forced vibration amplitudes of a crank foundation against its limits."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors
+
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
+ExactOpt = Annotated[
+    bool,
+    typer.Option("--exact", help="Also solve the exact equations (harmonic balance) and report the closed forms' errors."),
+]
+
+
+@reports_errors
+def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False) -> None:
+    """Steady-state amplitudes per harmonic, peaks of C and of the scene's [[points]], and limits.
+
+    Always shows the paper's corrected first approximation and the closed form with the averaged
+    operator; --exact adds the exact periodic solution, checks the limits with it and reports the
+    closed forms' relative errors. Fails (exit 1) when a peak exceeds [limits] amplitude, velocity
+    or acceleration, or when the speed is resonant.
+    """
+    from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.outcomes import exit_code
+    from foundation_calc.output import crank_amplitudes as report_out
+    from foundation_calc.scenes import load_scene
+
+    loaded = load_scene(scene, expect="crank_foundation")
+    report = check_amplitudes(loaded.design(), loaded.limits, loaded.points, exact=exact)
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(report_out.amplitudes_document(report, loaded, str(scene)))
+    else:
+        report_out.print_amplitudes_report(report, loaded, str(scene))
+    raise typer.Exit(int(exit_code(report.outcome)))

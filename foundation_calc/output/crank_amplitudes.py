@@ -1,0 +1,176 @@
+"""Report of ``fcalc amplitudes``: rich tables and the JSON document (SI units: m, rad, s)."""
+
+from __future__ import annotations
+
+from rich.table import Table
+
+from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank_response import DIRECTIONS, DOFS
+from foundation_calc.units import rpm_from_omega, speed_triplet
+
+UNITS = {"x": "m", "y": "m", "theta": "rad"}
+RATE_UNITS = {"displacement": "", "velocity": "/s", "acceleration": "/s²"}
+FIRST_KEYS = (("y", 1, "cos"), ("y", 2, "cos"), ("x", 1, "sin"), ("x", 3, "sin"), ("theta", 1, "sin"), ("theta", 3, "sin"))
+
+
+def _approximation_document(approx: Approximation) -> dict:
+    doc = {
+        "title": approx.title,
+        "resonant": approx.resonant,
+        "resonance_margin": approx.margin,
+        "nearest_resonance": approx.nearest,
+    }
+    if approx.resonant:
+        return doc
+    if approx.key == "first_approximation":
+        coefficients = {f"{dof}{n}": float(approx.motion.coefficient(dof, n)[part == "sin"]) for dof, n, part in FIRST_KEYS}
+        doc["coefficients"] = coefficients
+        doc["magnitudes"] = {k: abs(v) for k, v in coefficients.items()}
+    doc["harmonics"] = {
+        f"{dof}{n}": {
+            "cos": float(approx.motion.coefficient(dof, n)[0]),
+            "sin": float(approx.motion.coefficient(dof, n)[1]),
+            "magnitude": abs(approx.harmonic(dof, n)),
+        }
+        for dof, n in ((d, n) for d in DOFS for n in range(0, 5))
+    }
+    doc["peaks"] = {
+        dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
+    }
+    doc["points"] = {
+        name: {d: {q: float(getattr(pk, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
+        for name, pk in approx.points.items()
+    }
+    return doc
+
+
+def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
+    """The JSON document of ``fcalc amplitudes`` (every number SI)."""
+    d = report.design
+    doc = {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "amplitudes",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
+        "derived": {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m},
+        "conventions": "y positive downward; theta turns +x toward +y; x, y of the centre of mass C;"
+        " point horizontal = x + height·theta, vertical = y + horizontal·theta (to first order in theta)",
+        "resonant_margin": RESONANT_MARGIN,
+        "checked_with": report.checked,
+        "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
+        "limits": [
+            {
+                "point": row.point,
+                "direction": row.direction,
+                "quantity": row.quantity,
+                "value": row.value,
+                "limit": row.limit,
+                "ratio": row.ratio,
+                "verdict": row.outcome.value,
+            }
+            for row in report.rows
+        ],
+        "verdict": report.outcome.value,
+    }
+    if report.exact_info is not None:
+        info = report.exact_info
+        doc["exact_solver"] = {
+            "harmonics": info.harmonics,
+            "newton_iterations": info.newton_iterations,
+            "harmonic_change": info.harmonic_change,
+            "relative_residual": info.residual,
+            "seconds": info.seconds,
+        }
+        doc["errors"] = report.errors
+    return doc
+
+
+def _harmonics_table(report: AmplitudeReport) -> Table:
+    table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
+    table.add_column("harmonic")
+    shown = [a for a in report.approximations.values()]
+    for a in shown:
+        table.add_column(a.key.replace("_", " "), justify="right")
+    if report.errors:
+        for key in report.errors:
+            table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+    for dof, n in HARMONICS:
+        part = 0 if dof == "y" else 1
+        cells = [f"{dof}{n} [{UNITS[dof]}]"]
+        for a in shown:
+            cells.append("resonant" if a.resonant else fmt(float(a.motion.coefficient(dof, n)[part]), 6))
+        if report.errors:
+            for err in report.errors.values():
+                cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")
+        table.add_row(*cells)
+    return table
+
+
+def _points_table(report: AmplitudeReport) -> Table:
+    approx = report.approximations[report.checked]
+    table = Table(title=f"Peaks over one revolution ({approx.title})", title_justify="left")
+    for col in ("point", "direction", "displacement [m]", "velocity [m/s]", "acceleration [m/s²]"):
+        table.add_column(col, justify="left" if col in ("point", "direction") else "right")
+    for name, pk in approx.points.items():
+        for i, direction in enumerate(DIRECTIONS):
+            table.add_row(name, direction, *(fmt(float(getattr(pk, q)[i])) for q in QUANTITIES))
+    for i, dof in enumerate(DOFS):
+        if dof == "theta":
+            table.add_row("C", "rocking θ", *(fmt(float(getattr(approx.peaks, q)[i])) + f" rad{RATE_UNITS[q]}" for q in QUANTITIES))
+    return table
+
+
+def _limits_table(report: AmplitudeReport) -> Table:
+    table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
+    for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
+        table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
+    for row in report.rows:
+        unit = "m" + RATE_UNITS[row.quantity]
+        table.add_row(
+            row.point, row.direction, row.quantity, f"{fmt(row.value)} {unit}", f"{fmt(row.limit)} {unit}",
+            f"{row.ratio:.3f}", verdict_text(row.outcome.value),
+        )
+    return table
+
+
+def summary_line(report: AmplitudeReport) -> str:
+    approx = report.approximations[report.checked]
+    if report.resonant:
+        return (
+            f"{verdict_text('fail')}: resonant — {approx.nearest} is within {approx.margin:.2g} (relative) of the"
+            f" speed; no steady state without damping"
+        )
+    if not report.rows:
+        return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in [limits]"
+    top = max(report.rows, key=lambda r: r.ratio)
+    return (
+        f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
+        f" ({top.point}, {top.direction} {top.quantity})"
+    )
+
+
+def print_amplitudes_report(report: AmplitudeReport, scene, source: str) -> None:
+    """Print the tables of ``fcalc amplitudes``."""
+    d = report.design
+    out = stdout()
+    out.print(
+        f"[bold]{scene.name or source}[/]  speed {fmt(d.omega)} rad/s = {fmt(rpm_from_omega(d.omega))} rpm,"
+        f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
+    )
+    for a in report.approximations.values():
+        note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"
+        out.print(f"  {a.key.replace('_', ' ')}: {a.title} ({note})")
+    if report.exact_info is not None:
+        info = report.exact_info
+        out.print(
+            f"  exact: {info.harmonics} harmonics (change from {info.harmonics // 2}: {info.harmonic_change:.1e}),"
+            f" {info.newton_iterations} Newton step(s), {info.seconds * 1e3:.0f} ms"
+        )
+    out.print(_harmonics_table(report))
+    if not report.resonant:
+        out.print(_points_table(report))
+    if report.rows:
+        out.print(_limits_table(report))
+    out.print(summary_line(report))
