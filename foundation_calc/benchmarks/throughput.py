@@ -1,13 +1,16 @@
-"""Designs per second: the vectorised resonance check against the scalar path, in one run."""
+"""Designs per second: the vectorised resonance check and closed-form amplitudes against the
+scalar path, in one run."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from foundation_calc.benchmarks.measure import measure
 from foundation_calc.checks.crank_resonance import check_resonances, paper_margin
+from foundation_calc.solvers.crank_closed_form import design_first_approximation
 from foundation_calc.solvers.crank_mechanism import CrankDesign
 
 
@@ -36,8 +39,15 @@ def perturbed_designs(design: CrankDesign, n: int, seed: int = 0) -> CrankDesign
     )
 
 
-def resonance_throughput(design: CrankDesign, designs: int = 1_000_000, scalar_designs: int = 2_000) -> Throughput:
-    """Time the vectorised check on ``designs`` designs and the scalar check on a sample of them."""
+def batch_throughput(
+    design: CrankDesign,
+    vectorised_fn: Callable[[CrankDesign], object],
+    scalar_fn: Callable[[CrankDesign], object],
+    designs: int = 1_000_000,
+    scalar_designs: int = 2_000,
+) -> Throughput:
+    """Time ``vectorised_fn`` on ``designs`` perturbed designs in one call, ``scalar_fn`` on a
+    sample of them one by one, measured in the same run."""
     batch = perturbed_designs(design, designs)
     sample = [
         replace(design, c=float(batch.c[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
@@ -46,13 +56,24 @@ def resonance_throughput(design: CrankDesign, designs: int = 1_000_000, scalar_d
 
     def scalar_loop() -> None:
         for one in sample:
-            check_resonances(one, 0.2)
+            scalar_fn(one)
 
     scalar = measure(scalar_loop, min_time=0.5, max_calls=5)
-    vectorised = measure(lambda: paper_margin(batch), min_time=0.5, max_calls=5)
+    vectorised = measure(lambda: vectorised_fn(batch), min_time=0.5, max_calls=5)
     return Throughput(
         designs=designs,
         scalar_per_second=scalar_designs / scalar.seconds,
         vectorised_per_second=designs / vectorised.seconds,
         vectorised_peak_bytes=vectorised.peak_bytes,
     )
+
+
+def resonance_throughput(design: CrankDesign, designs: int = 1_000_000, scalar_designs: int = 2_000) -> Throughput:
+    """The resonance check: :func:`paper_margin` on the batch against :func:`check_resonances`."""
+    return batch_throughput(design, paper_margin, lambda one: check_resonances(one, 0.2), designs, scalar_designs)
+
+
+def amplitude_throughput(design: CrankDesign, designs: int = 1_000_000, scalar_designs: int = 2_000) -> Throughput:
+    """The closed-form amplitudes (six harmonic coefficients and the resonant flag of the corrected
+    first approximation), the same function called on the batch and on each design of the sample."""
+    return batch_throughput(design, design_first_approximation, design_first_approximation, designs, scalar_designs)

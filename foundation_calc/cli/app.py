@@ -6,6 +6,7 @@ import typer
 
 from foundation_calc import __version__
 from foundation_calc.cli.amplitudes import amplitudes
+from foundation_calc.cli.bench import bench
 from foundation_calc.cli.check import check
 from foundation_calc.cli.platform import platform
 from foundation_calc.cli.resonance import resonance
@@ -28,6 +29,7 @@ app.command(epilog=EXIT_CODES_HELP)(resonance)
 app.command(epilog=EXIT_CODES_HELP)(amplitudes)
 app.command(epilog=EXIT_CODES_HELP)(check)
 app.command(epilog=EXIT_CODES_HELP)(platform)
+app.command(epilog=EXIT_CODES_HELP)(bench)
 
 
 def _version(value: bool) -> None:

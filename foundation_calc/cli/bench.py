@@ -1,0 +1,147 @@
+"""``fcalc bench [SCENE...]``: run time against error of every method, throughput and start-up."""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors
+
+
+class Section(str, Enum):
+    accuracy = "accuracy"
+    throughput = "throughput"
+    startup = "startup"
+
+
+ScenesArg = Annotated[
+    Optional[list[Path]],
+    typer.Argument(help="Scene files (TOML). Default: every crank_foundation and platform file in ./configs.", show_default=False),
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
+PlotOpt = Annotated[
+    Optional[Path],
+    typer.Option("--plot", metavar="FILE.png", help="Also draw error against time (log-log); needs the plot extra (matplotlib).", show_default=False),
+]
+DesignsOpt = Annotated[
+    Optional[int],
+    typer.Option("--designs", min=1000, help="Designs in the throughput batch. Default: 1e6 (1e5 with --quick).", show_default=False),
+]
+QuickOpt = Annotated[bool, typer.Option("--quick", help="Shorter timings (fewer repetitions, 1e5 designs, 5 start-up runs).")]
+MethodOpt = Annotated[
+    Optional[list[str]],
+    typer.Option("--method", metavar="KEY", help="Only these methods (repeatable; keys as in --json, e.g."
+                 " first_approximation, averaged_operator, harmonic_balance_K4, shooting_solve_ivp)."
+                 " The converged reference is always computed.", show_default=False),
+]
+SkipOpt = Annotated[
+    Optional[list[Section]], typer.Option("--skip", help="Leave out a section (repeatable).", show_default=False)
+]
+
+#: Seconds each method is timed for (at least 3 calls after a warm-up), normal and --quick.
+MIN_TIME = {False: 0.2, True: 0.02}
+STARTUP_RUNS = {False: 20, True: 5}
+
+
+def _default_scenes() -> list[Path]:
+    folder = Path("configs")
+    if not folder.is_dir():
+        raise typer.BadParameter("no scene given and no ./configs folder here", param_hint="SCENE")
+    return sorted(folder.glob("*.toml"))
+
+
+def _chosen(methods, keys):
+    if not keys:
+        return methods
+    known = {m.key for m in methods}
+    unknown = [k for k in keys if k not in known]
+    if unknown:
+        raise typer.BadParameter(f"unknown method {unknown[0]!r}; choose from {', '.join(sorted(known))}", param_hint="'--method'")
+    return tuple(m for m in methods if m.key in keys)
+
+
+@reports_errors
+def bench(
+    scenes: ScenesArg = None,
+    json: JsonOpt = False,
+    plot: PlotOpt = None,
+    designs: DesignsOpt = None,
+    quick: QuickOpt = False,
+    skip: SkipOpt = None,
+    method: MethodOpt = None,
+) -> None:
+    """Time every amplitude method on each crank scene and report its error against the exact solution.
+
+    Methods: the paper's corrected first approximation, the averaged-operator closed form,
+    harmonic balance at K = 1, 2, 4, 8, 16 harmonics, shooting with scipy's solve_ivp, and the
+    converged harmonic balance that is the reference (error = largest relative error of the x, y,
+    θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Then the
+    designs per second of one vectorised call against a Python loop, and fcalc's start-up against
+    its frameworks' — all measured in this run, on the first crank scene.
+    """
+    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
+
+    if plot is not None and not plotting_available():
+        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    skipped = set(skip or [])
+    paths = list(scenes) if scenes else _default_scenes()
+
+    from foundation_calc.scenes import load_scene
+
+    loaded = [(path, load_scene(path)) for path in paths]
+    cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
+    platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
+    if not cranks:  # throughput and start-up are measured on the first crank scene
+        skipped |= {Section.throughput, Section.startup}
+
+    from foundation_calc.benchmarks.accuracy import METHODS, benchmark_scene
+    from foundation_calc.output import bench_report as report
+
+    methods = _chosen(METHODS, method)
+    steps = len(cranks) * len(methods) if Section.accuracy not in skipped else 0
+    steps += len(platforms) if Section.accuracy not in skipped else 0
+    steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
+    results, platform_results, throughput, startup = [], [], None, None
+    with report.progress_bar(steps) as step:
+        if Section.accuracy not in skipped:
+            for path, scene in cranks:
+                results.append(
+                    benchmark_scene(str(path), scene.name, scene.design(), methods=methods, min_time=MIN_TIME[quick],
+                                    on_method=lambda label, p=path: step(f"{p.name}: {label}"))
+                )
+            if platforms:
+                from foundation_calc.benchmarks.platform import benchmark_platform
+
+                for path, scene in platforms:
+                    step(f"{path.name}: design + 6-DOF verification")
+                    platform_results.append(benchmark_platform(str(path), scene, min_time=MIN_TIME[quick]))
+        if Section.throughput not in skipped:
+            from foundation_calc.benchmarks.throughput import amplitude_throughput, resonance_throughput
+
+            design = cranks[0][1].design()
+            n = designs or (100_000 if quick else 1_000_000)
+            sample = min(2_000, max(100, n // 50))  # designs timed one by one
+            step(f"throughput: resonance check, {n:.3g} designs")
+            throughput = {"resonance_check": resonance_throughput(design, n, sample)}
+            step(f"throughput: closed-form amplitudes, {n:.3g} designs")
+            throughput["closed_form_amplitudes"] = amplitude_throughput(design, n, sample)
+        if Section.startup not in skipped:
+            from foundation_calc.benchmarks.startup import startup_times
+
+            step("start-up: fcalc resonance against typer, pydantic, rich")
+            startup = startup_times(str(cranks[0][0]), runs=STARTUP_RUNS[quick])
+    if plot is not None:
+        report.plot_bench(results, plot)
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(report.bench_document(results, platform_results, throughput, startup))
+    else:
+        report.print_bench(results, platform_results, throughput, startup)
+        if plot is not None:
+            from foundation_calc.output.console import stderr
+
+            stderr().print(f"plot written to {plot}")

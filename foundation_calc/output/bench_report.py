@@ -1,0 +1,189 @@
+"""Tables, JSON and the error-against-time plot of ``fcalc bench``."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stderr, stdout
+
+
+def seconds_text(seconds: float) -> str:
+    """A duration with a readable unit: ``12.3 µs``, ``4.56 ms``, ``1.23 s``."""
+    for scale, unit in ((1.0, "s"), (1e-3, "ms"), (1e-6, "µs")):
+        if seconds >= scale:
+            return f"{fmt(seconds / scale, 3)} {unit}"
+    return f"{fmt(seconds / 1e-9, 3)} ns"
+
+
+def bytes_text(size: int) -> str:
+    """A memory size in kB or MB (10³ bytes)."""
+    return f"{fmt(size / 1e6, 3)} MB" if size >= 1e6 else f"{fmt(size / 1e3, 3)} kB"
+
+
+@contextmanager
+def progress_bar(total: int, enabled: bool = True) -> Iterator[Callable[[str], None]]:
+    """A progress bar on stderr (cleared when done); yields ``step(text)``, called before each step."""
+    if not enabled:
+        yield lambda text: None
+        return
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
+    with Progress(*columns, console=stderr(), transient=True) as progress:
+        task = progress.add_task("fcalc bench", total=total)
+        started = [False]
+
+        def step(text: str) -> None:
+            if started[0]:
+                progress.advance(task)
+            started[0] = True
+            progress.update(task, description=text)
+
+        yield step
+
+
+def _method_document(result) -> dict:
+    return {
+        "key": result.method.key,
+        "label": result.method.label,
+        "seconds": result.seconds,
+        "peak_bytes": result.peak_bytes,
+        "calls": result.calls,
+        "error": result.error,
+        "errors": result.errors,
+        "failure": result.failure,
+    }
+
+
+def _throughput_document(t) -> dict:
+    return {
+        "designs": t.designs,
+        "vectorised_designs_per_second": t.vectorised_per_second,
+        "scalar_designs_per_second": t.scalar_per_second,
+        "speedup": t.speedup,
+        "vectorised_peak_bytes": t.vectorised_peak_bytes,
+    }
+
+
+def bench_document(scenes, platforms, throughput, startup) -> dict:
+    """The whole benchmark as one JSON-ready dict (seconds, bytes, relative errors)."""
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "error_definition": "largest relative error of the x, y, θ peak amplitudes against the"
+        " converged harmonic balance of the exact equations",
+        "scenes": [
+            {
+                "scene": s.scene,
+                "name": s.name,
+                "reference_peaks": s.reference_peaks,
+                "reference_failure": s.reference_failure,
+                "methods": [_method_document(r) for r in s.results],
+            }
+            for s in scenes
+        ],
+        "platform_scenes": [p.document() for p in platforms],
+        "throughput": None if throughput is None else {k: _throughput_document(t) for k, t in throughput.items()},
+        "startup": None
+        if startup is None
+        else [
+            {
+                "label": row.label,
+                "seconds": row.seconds,
+                "ratio_to_import_floor": row.ratio_to_import_floor,
+                "ratio_to_framework_floor": row.ratio_to_framework_floor,
+            }
+            for row in startup
+        ],
+    }
+
+
+def _scene_table(s):
+    from rich.markup import escape
+    from rich.table import Table
+
+    table = Table(title=f"{escape(s.name or s.scene)} — {escape(s.scene)}", title_justify="left")
+    table.add_column("method")
+    table.add_column("time per evaluation", justify="right")
+    table.add_column("peak memory", justify="right")
+    table.add_column("largest peak error (x, y, θ)", justify="right")
+    for r in s.results:
+        if r.failure is not None:
+            table.add_row(r.method.label, "—", "—", f"[red]failed[/]: {escape(r.failure)}")
+            continue
+        if r.error is not None:
+            error = f"{r.error:.1e}"
+        else:
+            error = "reference" if s.reference_failure is None else "no reference"
+        table.add_row(r.method.label, seconds_text(r.seconds), bytes_text(r.peak_bytes), error)
+    return table
+
+
+def print_bench(scenes, platforms, throughput, startup) -> None:
+    """The benchmark as rich tables on stdout."""
+    from rich.table import Table
+
+    out = stdout()
+    for s in scenes:
+        out.print(_scene_table(s))
+        if s.reference_failure:
+            out.print(f"  [yellow]reference failed[/]: {s.reference_failure}", soft_wrap=True)
+        out.print()
+    for p in platforms:
+        out.print(p.table())
+        out.print()
+    if throughput:
+        table = Table(title="Throughput: one vectorised call against a Python loop, same run", title_justify="left")
+        for name in ("computation", "designs", "vectorised", "scalar loop", "speed-up", "peak memory (vectorised)"):
+            table.add_column(name, justify="left" if name == "computation" else "right")
+        labels = {"resonance_check": "resonance check (k0, p1, p2, margins)",
+                  "closed_form_amplitudes": "closed-form amplitudes (first approximation)"}
+        for key, t in throughput.items():
+            table.add_row(
+                labels.get(key, key),
+                f"{t.designs:.3g}",
+                f"{t.vectorised_per_second:.3g} designs/s",
+                f"{t.scalar_per_second:.3g} designs/s",
+                f"{t.speedup:.0f}×",
+                bytes_text(t.vectorised_peak_bytes),
+            )
+        out.print(table)
+        out.print()
+    if startup:
+        table = Table(title="Start-up: median wall time of a whole process, interleaved runs", title_justify="left")
+        for name in ("command", "time", "× import typer, pydantic, rich", "× typer command + pydantic model"):
+            table.add_column(name, justify="left" if name == "command" else "right")
+        for row in startup:
+            table.add_row(
+                row.label, seconds_text(row.seconds), f"{row.ratio_to_import_floor:.2f}", f"{row.ratio_to_framework_floor:.2f}"
+            )
+        out.print(table)
+
+
+def plot_bench(scenes, path: str | Path) -> None:
+    """Error against time per evaluation, log-log, one marker per method and scene."""
+    from foundation_calc.output.plots import new_figure, save
+
+    fig, ax = new_figure()
+    markers = "osD^v<>p*hX"
+    keys = [r.method.key for r in scenes[0].results] if scenes else []
+    for i, key in enumerate(keys):
+        pts = [
+            (r.seconds, max(r.error, 1e-17))
+            for s in scenes
+            for r in s.results
+            if r.method.key == key and r.error is not None and r.seconds is not None
+        ]
+        if pts:
+            label = next(r.method.label for r in scenes[0].results if r.method.key == key)
+            ax.loglog(*zip(*pts), markers[i % len(markers)], label=label, alpha=0.8)
+    ax.set_xlabel("time per evaluation [s]")
+    ax.set_ylabel("largest relative error of the x, y, θ peaks [-]")
+    ax.set_title("Crank foundation: run time against error (" + ", ".join(Path(s.scene).stem for s in scenes) + ")")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, path)
+
+
+__all__ = ["bench_document", "bytes_text", "plot_bench", "print_bench", "progress_bar", "seconds_text"]

@@ -1,0 +1,78 @@
+"""The corrected first approximation applied to a :class:`CrankDesign`, for one design or a million.
+
+:func:`~foundation_calc.solvers.crank_first_approximation.first_approximation` takes the paper's
+symbols; this module feeds it a design (whose fields may be numpy arrays: a speed sweep, a soil
+sweep, a batch of random designs) and turns its coefficients into a
+:class:`~foundation_calc.solvers.crank_response.PeriodicMotion`, so that peaks, points and
+errors are computed the same way for every method. Arithmetic only: no Python object per design.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from foundation_calc.solvers.crank_first_approximation import FirstApproximation, first_approximation
+from foundation_calc.solvers.crank_mechanism import CrankDesign
+from foundation_calc.solvers.crank_response import PeriodicMotion
+
+
+def design_first_approximation(design: CrankDesign) -> FirstApproximation:
+    """Coefficients of the corrected first approximation of ``design`` (fields may be arrays).
+
+    ``g* = g`` when the motor's reaction acts on the foundation, 0 otherwise (the paper's (3.7)).
+
+    >>> from foundation_calc.solvers.crank_mechanism import lump_slider
+    >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7,
+    ...                 omega=np.array([31.41592653589793, 40.0]), r=0.3, l=1.2, a=2.0,
+    ...                 rod=lump_slider(1.5e3, 1.2, 1.0, 0.35, 0.0), drive_on_foundation=True, g=9.81)
+    >>> design_first_approximation(d).y1
+    array([0.00040382, 0.00069391])
+    """
+    d, rod = design, design.rod
+    g_star = d.g if d.drive_on_foundation else 0.0
+    return first_approximation(
+        d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g, g_star, d.omega, rod.m, d.r, d.l, rod.l1, rod.rho, d.a
+    )
+
+
+def first_approximation_motion(design: CrankDesign) -> tuple[PeriodicMotion, np.ndarray]:
+    """The first approximation as a series (harmonics 0 ... 3) and its ``resonant`` mask.
+
+    ``cos``, ``sin`` have shape (..., 3, 4) with the designs' shape in front; where a design is
+    resonant (within the first approximation's resonant margin of a condition) they are 0.
+    """
+    fa = design_first_approximation(design)
+    zero = np.zeros(np.broadcast(fa.y1, fa.x1, fa.theta1).shape)
+    cos = np.stack(
+        [
+            np.stack([zero, zero, zero, zero], axis=-1),
+            np.stack([zero, zero + fa.y1, zero + fa.y2, zero], axis=-1),
+            np.stack([zero, zero, zero, zero], axis=-1),
+        ],
+        axis=-2,
+    )
+    sin = np.stack(
+        [
+            np.stack([zero, zero + fa.x1, zero, zero + fa.x3], axis=-1),
+            np.stack([zero, zero, zero, zero], axis=-1),
+            np.stack([zero, zero + fa.theta1, zero, zero + fa.theta3], axis=-1),
+        ],
+        axis=-2,
+    )
+    return PeriodicMotion(omega=design.omega, cos=cos, sin=sin), np.asarray(fa.resonant)
+
+
+def varied(design: CrankDesign, *, omega=None, soil_factor=None) -> CrankDesign:
+    """``design`` with its speed replaced by ``omega`` [rad/s] and/or both soil coefficients c, c1
+    multiplied by ``soil_factor`` [-] (either may be an array: one design per element)."""
+    if omega is not None:
+        design = replace(design, omega=np.asarray(omega, dtype=float))
+    if soil_factor is not None:
+        factor = np.asarray(soil_factor, dtype=float)
+        design = replace(design, c=design.c * factor, c1=design.c1 * factor)
+    return design
+
+
+__all__ = ["design_first_approximation", "first_approximation_motion", "varied"]

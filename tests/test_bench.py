@@ -1,0 +1,127 @@
+"""``fcalc bench``: its errors against an independent reference, its JSON, its optional plot.
+
+The bench's reference is the converged harmonic balance; here each reported error is recomputed
+against the shooting solution (time integration, an independent method) from the peaks of each
+method's own output. The two references agree to ~1e-10, so a reported error above 1e-6 must be
+reproduced to 1e-4 relative (of itself). No test looks at the measured times.
+"""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+
+import numpy as np
+import pytest
+
+from foundation_calc.benchmarks.accuracy import METHODS, REFERENCE
+from foundation_calc.benchmarks.startup import startup_times
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import load_scene
+from foundation_calc.solvers.crank_response import motion_peaks
+from foundation_calc.solvers.crank_shooting import shooting_solution
+from tests.conftest import CONFIGS
+
+SCENE = CONFIGS / "frame_saw.toml"
+
+
+@cache
+def bench_json(tmp: str) -> tuple[dict, str]:
+    from typer.testing import CliRunner
+
+    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup"]
+    args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
+    plot = f"{tmp}/bench.png"
+    try:
+        import matplotlib  # noqa: F401
+
+        args += ["--plot", plot]
+    except ModuleNotFoundError:
+        plot = ""
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout), plot
+
+
+@pytest.fixture(scope="module")
+def document(tmp_path_factory):
+    return bench_json(str(tmp_path_factory.mktemp("bench")))
+
+
+def test_every_method_is_reported_with_time_memory_and_error(document):
+    doc, _ = document
+    (scene,) = doc["scenes"]
+    assert [m["key"] for m in scene["methods"]] == [m.key for m in METHODS if m.key != "shooting_solve_ivp"]
+    for m in scene["methods"]:
+        assert m["failure"] is None
+        assert m["seconds"] > 0 and m["peak_bytes"] > 0 and m["calls"] >= 3
+        if m["key"] == REFERENCE.key:
+            assert m["error"] is None
+        else:
+            assert m["error"] == max(m["errors"].values())
+
+
+def test_errors_agree_with_shooting(document):
+    doc, _ = document
+    (scene,) = doc["scenes"]
+    design = load_scene(SCENE).design()
+    independent = motion_peaks(shooting_solution(design).motion).displacement
+    reference = np.array([scene["reference_peaks"][k] for k in ("x", "y", "theta")])
+    assert np.allclose(reference, independent, rtol=1e-8, atol=0)
+    by_key = {m.key: m for m in METHODS}
+    for m in scene["methods"]:
+        if m["error"] is None:
+            continue
+        peaks = motion_peaks(by_key[m["key"]].solve(design)).displacement
+        error = np.max(np.abs(peaks - independent) / independent)
+        assert m["error"] == pytest.approx(error, rel=1e-4, abs=1e-8), m["key"]
+
+
+def test_method_errors_are_ordered_as_the_theory_says(document):
+    doc, _ = document
+    err = {m["key"]: m["error"] for m in doc["scenes"][0]["methods"]}
+    assert 1e-3 < err["first_approximation"] < 0.05  # O(μ) plus the missed 2ω ≈ p1 harmonic
+    assert err["harmonic_balance_K1"] > err["harmonic_balance_K2"] > err["harmonic_balance_K4"] > err["harmonic_balance_K8"]
+    assert err["harmonic_balance_K16"] < 1e-12
+
+
+def test_plot_is_written_when_matplotlib_is_installed(document):
+    _, plot = document
+    if not plot:
+        pytest.skip("matplotlib (the plot extra) is not installed")
+    with open(plot, "rb") as handle:
+        assert handle.read(8) == b"\x89PNG\r\n\x1a\n"
+
+
+def test_unknown_method_is_a_usage_error(runner):
+    result = runner.invoke(app, ["bench", str(SCENE), "--method", "euler"])
+    assert result.exit_code == 2
+    assert "first_approximation" in result.output
+
+
+def test_plot_without_matplotlib_is_a_usage_error(runner, monkeypatch, tmp_path):
+    monkeypatch.setattr("foundation_calc.output.plots.plotting_available", lambda: False)
+    result = runner.invoke(app, ["bench", str(SCENE), "--plot", str(tmp_path / "b.png")])
+    assert result.exit_code == 2
+    assert "foundation_calc[plot]" in result.output
+    assert not (tmp_path / "b.png").exists()
+
+
+def test_throughput_section(runner):
+    result = runner.invoke(app, ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc["scenes"] == [] and doc["startup"] is None
+    for key in ("resonance_check", "closed_form_amplitudes"):
+        t = doc["throughput"][key]
+        assert t["designs"] == 2000
+        assert t["speedup"] == pytest.approx(t["vectorised_designs_per_second"] / t["scalar_designs_per_second"])
+
+
+def test_startup_rows_are_side_by_side():
+    rows = startup_times(str(SCENE), runs=1)
+    labels = [row.label for row in rows]
+    assert "import typer, pydantic, rich" in labels and "fcalc resonance SCENE" in labels
+    floor = next(r.seconds for r in rows if r.label == "import typer, pydantic, rich")
+    for row in rows:
+        assert row.ratio_to_import_floor == pytest.approx(row.seconds / floor)
