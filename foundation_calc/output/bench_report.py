@@ -83,7 +83,18 @@ def bench_document(scenes, platforms, throughput, startup) -> dict:
             }
             for s in scenes
         ],
-        "platform_scenes": [p.document() for p in platforms],
+        "platform_scenes": [
+            {
+                "scene": p.scene,
+                "name": p.name,
+                "design_seconds": p.design_seconds,
+                "verification_seconds": p.verification_seconds,
+                "rotation_residual": p.rotation_residual,
+                "rocking_percent_of_u": p.rocking_percent,
+                "failure": p.failure,
+            }
+            for p in platforms
+        ],
         "throughput": None if throughput is None else {k: _throughput_document(t) for k, t in throughput.items()},
         "startup": None
         if startup is None
@@ -120,6 +131,27 @@ def _scene_table(s):
     return table
 
 
+def _platform_table(platforms):
+    from rich.markup import escape
+    from rich.table import Table
+
+    table = Table(title="Platform scenes: design formulas, 6-DOF verification", title_justify="left")
+    for name in ("scene", "design", "6-DOF verification", "rotation residual", "rocking"):
+        table.add_column(name, justify="left" if name == "scene" else "right")
+    for p in platforms:
+        if p.failure is not None:
+            table.add_row(escape(Path(p.scene).name), "—", "—", f"[red]failed[/]: {escape(p.failure)}", "—")
+        else:
+            table.add_row(
+                escape(Path(p.scene).name),
+                seconds_text(p.design_seconds),
+                seconds_text(p.verification_seconds),
+                f"{p.rotation_residual:.1e} rad",
+                f"{p.rocking_percent:.1e} % of u",
+            )
+    return table
+
+
 def print_bench(scenes, platforms, throughput, startup) -> None:
     """The benchmark as rich tables on stdout."""
     from rich.table import Table
@@ -130,8 +162,8 @@ def print_bench(scenes, platforms, throughput, startup) -> None:
         if s.reference_failure:
             out.print(f"  [yellow]reference failed[/]: {s.reference_failure}", soft_wrap=True)
         out.print()
-    for p in platforms:
-        out.print(p.table())
+    if platforms:
+        out.print(_platform_table(platforms))
         out.print()
     if throughput:
         table = Table(title="Throughput: one vectorised call against a Python loop, same run", title_justify="left")
