@@ -1,0 +1,121 @@
+"""Sweep of a crank foundation's speed or soil stiffness: closed-form amplitudes, resonances, limits.
+
+One call of the corrected first approximation on arrays (no Python object per point) gives the
+peaks of x, y and θ at every point; the margins of every resonance condition come from the same
+arithmetic as ``fcalc resonance`` (nearer of the zero-order and the averaged-inertia critical
+speed). A point whose margin is below the first approximation's resonant margin has no periodic
+solution: it is reported as resonant, never as an infinite amplitude.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.checks.crank_resonance import design_frequencies
+from foundation_calc.solvers.crank_closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank_mechanism import CrankDesign
+from foundation_calc.solvers.crank_resonance import CONDITIONS, condition_margin, critical_speed
+from foundation_calc.solvers.crank_response import motion_peaks
+
+#: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
+VARIABLES = ("omega", "soil_factor")
+
+#: Status of a point, worst last.
+STATUSES = ("pass", "warn", "fail", "resonant")
+
+
+@dataclass(frozen=True)
+class CriticalSpeed:
+    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)."""
+
+    label: str
+    source: str
+    zero_order: float
+    averaged: float
+
+
+@dataclass(frozen=True)
+class SweepReport:
+    """Amplitudes and verdicts along a sweep (arrays of length n).
+
+    Attributes
+    ----------
+    variable : ``"omega"`` or ``"soil_factor"``
+    values : the swept values [rad/s or -]
+    omega : crank speed at each point [rad/s]
+    peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
+    resonant : no periodic solution of the first approximation (margin < 1e-6)
+    margin : smallest relative distance from a resonance condition [-]
+    nearest : index into :data:`~foundation_calc.solvers.crank_resonance.CONDITIONS` of that one
+    over_limit : the larger of the x, y peaks exceeds ``amplitude_limit`` (False without a limit)
+    status : one of :data:`STATUSES` per point
+    critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
+    """
+
+    variable: str
+    values: np.ndarray
+    omega: np.ndarray
+    peaks: np.ndarray
+    resonant: np.ndarray
+    margin: np.ndarray
+    nearest: np.ndarray
+    over_limit: np.ndarray
+    status: np.ndarray
+    critical: tuple[CriticalSpeed, ...]
+    amplitude_limit: float | None
+    detuning: float
+
+
+def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | None, detuning: float) -> SweepReport:
+    """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
+
+    Raises
+    ------
+    PhysicsError
+        when a point of the sweep is unstable in rocking (a soil factor too small).
+    """
+    if variable not in VARIABLES:
+        raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
+    values = np.asarray(values, dtype=float)
+    batch = varied(design, **{variable: values})
+    motion, resonant = first_approximation_motion(batch)
+    peaks = motion_peaks(motion).displacement
+    zero, averaged = design_frequencies(batch)
+    omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
+    margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
+    nearest = np.argmin(margins, axis=0)
+    margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
+    paper = np.array([c.source == "paper" for c in CONDITIONS])
+    in_band = margins < detuning
+    fail = (in_band & paper[:, None]).any(axis=0)
+    warn = (in_band & ~paper[:, None]).any(axis=0)
+    over = np.zeros(values.shape, dtype=bool) if amplitude_limit is None else peaks[:, :2].max(axis=1) > amplitude_limit
+    status = np.where(resonant, "resonant", np.where(fail | over, "fail", np.where(warn, "warn", "pass")))
+    critical = ()
+    if variable == "omega":
+        lo, hi = values.min(), values.max()
+        critical = tuple(
+            CriticalSpeed(c.label, c.source, float(w0), float(w1))
+            for c in CONDITIONS
+            for w0, w1 in [(critical_speed(getattr(zero, c.mode), c.harmonic), critical_speed(getattr(averaged, c.mode), c.harmonic))]
+            if lo <= max(w0, w1) and min(w0, w1) <= hi
+        )
+    return SweepReport(
+        variable=variable,
+        values=values,
+        omega=omega,
+        peaks=peaks,
+        resonant=np.asarray(resonant, dtype=bool),
+        margin=margin,
+        nearest=nearest,
+        over_limit=over,
+        status=status,
+        critical=critical,
+        amplitude_limit=amplitude_limit,
+        detuning=detuning,
+    )
+
+
+__all__ = ["STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]

@@ -1,0 +1,144 @@
+"""Table, CSV, JSON and plot of ``fcalc sweep``. Resonant points carry no amplitude (empty / null)."""
+
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path
+
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
+from foundation_calc.solvers.crank_resonance import CONDITIONS
+from foundation_calc.units import hz_from_omega, rpm_from_omega
+
+METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
+STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
+
+
+def _rows(report):
+    """One dict per point, SI units; amplitudes None where resonant."""
+    for i, value in enumerate(report.values):
+        resonant = bool(report.resonant[i])
+        x, y, th = (None if resonant else float(v) for v in report.peaks[i])
+        yield {
+            report.variable: float(value),
+            "omega": float(report.omega[i]),
+            "x_peak": x,
+            "y_peak": y,
+            "theta_peak": th,
+            "resonant": resonant,
+            "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
+            "margin": float(report.margin[i]),
+            "over_limit": bool(report.over_limit[i]),
+            "status": str(report.status[i]),
+        }
+
+
+def sweep_document(report, scene_path: str, name: str) -> dict:
+    """The sweep as one JSON-ready dict (SI units: rad/s, m, rad)."""
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "scene": scene_path,
+        "name": name,
+        "method": METHOD,
+        "variable": report.variable,
+        "limits": {"amplitude": report.amplitude_limit, "detuning": report.detuning},
+        "critical_speeds": [
+            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged}
+            for c in report.critical
+        ],
+        "points": list(_rows(report)),
+    }
+
+
+def sweep_csv(report) -> str:
+    """The sweep as CSV text: SI columns plus the speed in Hz and rpm; empty amplitude where resonant."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    header = [report.variable if report.variable != "omega" else "omega_rad_s", "speed_hz", "speed_rpm",
+              "x_peak_m", "y_peak_m", "theta_peak_rad", "resonant", "nearest_condition", "margin", "over_limit", "status"]
+    if report.variable != "omega":
+        header.insert(1, "omega_rad_s")
+    writer.writerow(header)
+    for row in _rows(report):
+        cells = [row[report.variable]]
+        if report.variable != "omega":
+            cells.append(row["omega"])
+        cells += [hz_from_omega(row["omega"]), rpm_from_omega(row["omega"])]
+        cells += ["" if row[k] is None else repr(row[k]) for k in ("x_peak", "y_peak", "theta_peak")]
+        cells += [row["resonant"], row["nearest_condition"], repr(row["margin"]), row["over_limit"], row["status"]]
+        writer.writerow(cells)
+    return buffer.getvalue()
+
+
+def print_sweep(report, scene_path: str, name: str, units) -> None:
+    """The sweep as a rich table; speeds and amplitudes in the chosen display units."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    out = stdout()
+    speed_unit, amp_unit = units.label("speed"), units.label("amplitude")
+    title = f"{escape(name or scene_path)} — {METHOD}"
+    table = Table(title=title, title_justify="left")
+    if report.variable == "soil_factor":
+        table.add_column("soil factor (c_z, c_x)", justify="right")
+    table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
+    for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
+        table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
+    table.add_column("nearest resonance, margin")
+    table.add_column("status")
+    for row in _rows(report):
+        cells = [] if report.variable == "omega" else [fmt(row["soil_factor"], 4)]
+        cells.append(fmt(units.convert("speed", row["omega"]), 6))
+        if row["resonant"]:
+            cells += ["resonant", "resonant", "resonant"]
+        else:
+            cells += [fmt(units.convert("amplitude", row["x_peak"]), 4), fmt(units.convert("amplitude", row["y_peak"]), 4),
+                      fmt(row["theta_peak"], 4)]
+        cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
+        status = row["status"] + (" (over limit)" if row["over_limit"] else "")
+        cells.append(f"[{STATUS_STYLE[row['status']]}]{status}[/]")
+        table.add_row(*cells)
+    out.print(table)
+    if report.critical:
+        crit = Table(title="Critical speeds inside the sweep (zero-order / averaged-inertia operator)", title_justify="left")
+        for col in ("condition", "source", f"zero-order [{speed_unit}]", f"averaged [{speed_unit}]"):
+            crit.add_column(escape(col), justify="left" if col in ("condition", "source") else "right")
+        for c in report.critical:
+            crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
+        out.print(crit)
+    limit = "none" if report.amplitude_limit is None else units.show("amplitude", report.amplitude_limit)
+    out.print(f"amplitude limit (x, y of C): {limit}; required detuning {report.detuning:.0%}", soft_wrap=True)
+
+
+def plot_sweep(report, path: str | Path, units, name: str) -> None:
+    """x, y peaks against the swept variable (log scale), critical speeds and the limit marked."""
+    import numpy as np
+
+    from foundation_calc.output.plots import new_figure, save
+
+    fig, ax = new_figure()
+    if report.variable == "omega":
+        xs = np.array([units.convert("speed", w) for w in report.values])
+        ax.set_xlabel(f"crank speed [{units.label('speed')}]")
+    else:
+        xs = report.values
+        ax.set_xlabel("factor on the soil coefficients c_z, c_x [-]")
+    ok = ~report.resonant
+    for i, dof in enumerate(("x", "y")):
+        amps = np.where(ok, [units.convert("amplitude", v) for v in report.peaks[:, i]], np.nan)
+        ax.semilogy(xs, amps, label=f"{dof} peak of C")
+    if report.amplitude_limit is not None:
+        ax.axhline(units.convert("amplitude", report.amplitude_limit), color="red", linestyle="--", label="amplitude limit")
+    for c in report.critical:
+        style = "-" if c.source == "paper" else ":"
+        ax.axvline(units.convert("speed", c.zero_order), color="grey", linestyle=style, alpha=0.6)
+        ax.text(units.convert("speed", c.zero_order), 1.0, c.label, rotation=90, va="top", ha="right", fontsize=7,
+                transform=ax.get_xaxis_transform())
+    ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
+    ax.set_title(f"{name}: {METHOD}", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, path)
+
+
+__all__ = ["plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
