@@ -1,0 +1,89 @@
+"""``fcalc sweep``: options, outputs, and that one vectorised call equals point-by-point calls."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+from foundation_calc.checks.crank_sweep import sweep
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import load_scene
+from foundation_calc.solvers.crank_closed_form import design_first_approximation, varied
+from foundation_calc.units import omega_from_rpm
+from tests.conftest import configs_of_kind
+
+CRANKS = configs_of_kind("crank_foundation")
+
+
+@pytest.mark.parametrize("path", CRANKS, ids=lambda p: p.stem)
+def test_every_crank_config_sweeps_to_json(runner, path):
+    result = runner.invoke(app, ["sweep", str(path), "--speed", "50:900:40", "--json"])
+    assert result.exit_code == 0, result.output
+    assert result.stderr == ""
+    doc = json.loads(result.stdout)
+    assert len(doc["points"]) == 40
+    assert doc["points"][0]["omega"] == pytest.approx(omega_from_rpm(50.0), rel=1e-15)
+
+
+def test_vectorised_sweep_equals_scalar_calls():
+    """The batch path is the same arithmetic: each point equals its own scalar evaluation."""
+    design = load_scene(CRANKS[0]).design()
+    omegas = np.geomspace(1.0, 500.0, 37)
+    report = sweep(design, "omega", omegas, None, 0.2)
+    factors = np.linspace(0.5, 1.5, 9)
+    soil = sweep(design, "soil_factor", factors, None, 0.2)
+    for i, w in enumerate(omegas):
+        one = design_first_approximation(varied(design, omega=float(w)))
+        assert abs(report.peaks[i, 1]) >= abs(one.y1) - abs(one.y2) - 1e-30  # peak bounds the harmonics
+        assert report.peaks[i, 1] <= abs(one.y1) + abs(one.y2) + 1e-30
+    for i, f in enumerate(factors):
+        one = sweep(varied(design, soil_factor=float(f)), "omega", [design.omega], None, 0.2)
+        assert soil.peaks[i] == pytest.approx(one.peaks[0], rel=1e-13)
+        assert soil.status[i] == one.status[0]
+
+
+def test_table_csv_and_units(runner, tmp_path):
+    out = tmp_path / "s.csv"
+    result = runner.invoke(app, ["sweep", str(CRANKS[0]), "--soil", "0.5:1.5:5", "--csv", str(out), "--units", "mm"])
+    assert result.exit_code == 0, result.output
+    assert "[mm]" in result.stdout and "soil" in result.stdout
+    rows = list(csv.DictReader(io.StringIO(out.read_text(encoding="utf-8"))))
+    assert [float(r["soil_factor"]) for r in rows] == [0.5, 0.75, 1.0, 1.25, 1.5]
+    assert all(float(r["x_peak_m"]) > 0 for r in rows)
+
+
+@pytest.mark.parametrize(
+    "spec, unit, first",
+    [("100:600:3", "rpm", omega_from_rpm(100.0)), ("10:60:3rad/s", "rad/s", 10.0), ("2:8:3 hz", "Hz", 2 * np.pi * 2)],
+)
+def test_speed_units(runner, spec, unit, first):
+    result = runner.invoke(app, ["sweep", str(CRANKS[0]), "--speed", spec, "--json"])
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["points"][0]["omega"] == pytest.approx(first, rel=1e-15)
+    table = runner.invoke(app, ["sweep", str(CRANKS[0]), "--speed", spec])
+    assert f"[{unit}]" in table.stdout
+
+
+@pytest.mark.parametrize(
+    "args",
+    [[], ["--speed", "1:2", "--soil", "1:2"], ["--speed", "600:100"], ["--speed", "1:2:1"], ["--speed", "1:2furlong"],
+     ["--soil", "0:1"], ["--soil", "0.5:1.5m"], ["--speed", "a:b"], ["--speed", "nan:2"], ["--speed", "1:inf"]],
+)
+def test_bad_options_are_usage_errors(runner, args):
+    result = runner.invoke(app, ["sweep", str(CRANKS[0]), *args])
+    assert result.exit_code == 2, result.output
+
+
+def test_plot(runner, tmp_path, monkeypatch):
+    png = tmp_path / "s.png"
+    pytest.importorskip("matplotlib")
+    result = runner.invoke(app, ["sweep", str(CRANKS[0]), "--speed", "100:700:60", "--plot", str(png)])
+    assert result.exit_code == 0, result.output
+    assert png.read_bytes()[:4] == b"\x89PNG"
+    monkeypatch.setattr("foundation_calc.output.plots.plotting_available", lambda: False)
+    result = runner.invoke(app, ["sweep", str(CRANKS[0]), "--speed", "100:700", "--plot", str(tmp_path / "t.png")])
+    assert result.exit_code == 2 and "foundation_calc[plot]" in result.output
