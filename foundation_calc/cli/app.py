@@ -8,9 +8,11 @@ from foundation_calc import __version__
 from foundation_calc.cli.amplitudes import amplitudes
 from foundation_calc.cli.bench import bench
 from foundation_calc.cli.check import check
+from foundation_calc.cli.init import init
 from foundation_calc.cli.platform import platform
 from foundation_calc.cli.resonance import resonance
 from foundation_calc.cli.sweep import sweep
+from foundation_calc.cli.schema import schema
 
 EXIT_CODES_HELP = (
     "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
@@ -29,6 +31,8 @@ app = typer.Typer(
 app.command(epilog=EXIT_CODES_HELP)(resonance)
 app.command(epilog=EXIT_CODES_HELP)(amplitudes)
 app.command(epilog=EXIT_CODES_HELP)(check)
+app.command(epilog=EXIT_CODES_HELP)(init)
+app.command(epilog=EXIT_CODES_HELP)(schema)
 app.command(epilog=EXIT_CODES_HELP)(platform)
 app.command(epilog=EXIT_CODES_HELP)(bench)
 app.command(epilog=EXIT_CODES_HELP)(sweep)
