@@ -11,8 +11,8 @@ from foundation_calc.cli.check import check
 from foundation_calc.cli.init import init
 from foundation_calc.cli.platform import platform
 from foundation_calc.cli.resonance import resonance
-from foundation_calc.cli.sweep import sweep
 from foundation_calc.cli.schema import schema
+from foundation_calc.cli.sweep import sweep
 
 EXIT_CODES_HELP = (
     "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
