@@ -152,27 +152,22 @@ def rescaled_scenes(draw, kind=None):
     return document
 
 
-#: Crashes found by the property below in code outside the loader, pinned until they are fixed.
-#: A platform 1e15 m long with a 0.1 mm eccentricity: numpy LinAlgError (exit 4) in the 6-DOF
-#: natural frequencies (Cholesky of the mass matrix). Found by the property below (about 1 % of
-#: random platform scenes); strict xfail so that the fix shows up here.
+#: A crash found by the property below, kept as a regression case: a platform 1e15 m long with a
+#: 0.1 mm eccentricity gave numpy LinAlgError (exit 4) in the 6-DOF natural frequencies (Cholesky
+#: of the mass matrix); rotations are now scaled by the platform's size before the eigen-solve.
 PLATFORM_HUGE_LENGTH = _mutate(
     _mutate(SEEDS["platform_explicit_vertical.toml"], ("platform", "length"), 1e15), ("exciter", "eccentricity"), 1e-4
 )
 
 
-@pytest.mark.xfail(strict=True, reason="LinAlgError in platform natural_frequencies for a 1e15 m platform")
 def test_pinned_platform_crash_with_a_huge_length():
     _numbers_never_crash_a_check(PLATFORM_HUGE_LENGTH)
 
 
 @settings(max_examples=60, deadline=None)
-@given(rescaled_scenes("crank_foundation"))
+@given(rescaled_scenes())
 def test_numbers_the_loader_accepts_never_crash_a_check(document):
-    """Within the accepted magnitudes every check ends in a finite verdict or an FcalcError (exit 3).
-
-    Crank scenes only until the platform crash above is fixed (then: ``rescaled_scenes()``).
-    """
+    """Within the accepted magnitudes every check ends in a finite verdict or an FcalcError (exit 3)."""
     _numbers_never_crash_a_check(document)
 
 

@@ -321,8 +321,13 @@ def static_response(system: PeriodicSystem) -> np.ndarray:
 
 
 def _solve(system: PeriodicSystem, n, rhs) -> np.ndarray:
-    A = system.dynamic_matrix(n)
-    return np.linalg.solve(A, rhs)
+    try:
+        return np.linalg.solve(system.dynamic_matrix(n), rhs)
+    except np.linalg.LinAlgError:
+        raise PhysicsError(
+            f"the 6-DOF response is undefined: {system.frequency(n):.6g} rad/s, a harmonic of the"
+            " rotor speeds, falls exactly on an undamped natural frequency"
+        ) from None
 
 
 def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
@@ -353,10 +358,7 @@ def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
         load[n] = load[n] + f
     for k in periodic:
         load[k] = load[k] - system.stiff.get(k, np.zeros((6, 6))) @ static
-    try:
-        current = {n: _solve(system, n, f) for n, f in load.items()}
-    except np.linalg.LinAlgError:
-        raise PhysicsError("a rotor speed coincides with an undamped natural frequency") from None
+    current = {n: _solve(system, n, f) for n, f in load.items()}
     base = max(float(np.max(np.abs(Q * weights))) for Q in current.values())
     total: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
     sizes = []
@@ -411,10 +413,18 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
     """
     system = periodic_system(platform, rotors)
     zero = (0,) * len(rotors)
-    M0, K0 = system.mass[zero].real, system.stiff[zero].real
-    Lc = np.linalg.cholesky(0.5 * (M0 + M0.T))
-    Li = np.linalg.inv(Lc)
-    p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + K0.T)) @ Li.T)
+    # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
+    D = np.diag([1.0, 1.0, 1.0] + [1.0 / float(np.hypot(platform.A, platform.B))] * 3)
+    M0, K0 = D @ system.mass[zero].real @ D, D @ system.stiff[zero].real @ D
+    try:
+        Lc = np.linalg.cholesky(0.5 * (M0 + M0.T))
+        Li = np.linalg.inv(Lc)
+        p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + K0.T)) @ Li.T)
+    except np.linalg.LinAlgError:
+        raise ConvergenceError(
+            "the 6-DOF natural frequencies cannot be computed in double precision: the platform's"
+            " masses, sizes and stiffnesses span too many orders of magnitude"
+        ) from None
     if np.any(p2 <= 0.0):
         raise PhysicsError(
             f"the platform is unstable: a squared natural frequency is {float(p2.min()):.6g} rad²/s²"
@@ -422,7 +432,7 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
             field="isolators.vertical",
             hint="stiffen the vertical isolators or lower the centre of mass ζ",
         )
-    shapes = Li.T @ v
+    shapes = D @ Li.T @ v
     r_c = np.asarray(platform.r_c, dtype=float)
     J_c = platform.J_O1 - platform.M * (r_c @ r_c * np.eye(3) - np.outer(r_c, r_c))
     at_cog = shapes[:3] - skew(r_c) @ shapes[3:]  # translation of the centre of mass
