@@ -1,0 +1,100 @@
+"""``fcalc amplitudes`` through typer's CliRunner on every crank_foundation scene in configs/."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from pathlib import Path
+
+import pytest
+import tomli_w
+from typer.testing import CliRunner
+
+from foundation_calc.cli.app import app
+
+CONFIGS = sorted(
+    p for p in (Path(__file__).parent.parent / "configs").glob("*.toml")
+    if tomllib.loads(p.read_text("utf-8")).get("kind") == "crank_foundation"
+)
+
+
+BASE = Path(__file__).parent.parent / "configs" / "frame_saw.toml"
+
+
+def run(*args):
+    return CliRunner().invoke(app, ["amplitudes", *map(str, args)])
+
+
+@pytest.mark.parametrize("scene", CONFIGS, ids=lambda p: p.name)
+@pytest.mark.parametrize("exact", [False, True])
+def test_config_json(scene, exact):
+    result = run(scene, "--json", *(["--exact"] if exact else []))
+    assert result.exit_code in (0, 1), result.output
+    assert result.stderr == ""
+    doc = json.loads(result.stdout)
+    assert result.exit_code == (1 if doc["verdict"] == "fail" else 0)
+    approx = doc["approximations"]
+    assert set(approx["first_approximation"]["coefficients"]) == {"y1", "y2", "x1", "x3", "theta1", "theta3"}
+    assert doc["checked_with"] == ("exact" if exact else "averaged_operator")
+    if exact:
+        assert set(doc["errors"]) == {"first_approximation", "averaged_operator"}
+        assert doc["exact_solver"]["harmonic_change"] < 1e-10
+
+
+@pytest.mark.parametrize("scene", CONFIGS, ids=lambda p: p.name)
+def test_config_tables(scene):
+    result = run(scene, "--exact")
+    assert result.exit_code in (0, 1)
+    assert result.stderr == ""
+    assert "first approximation" in result.stdout and "exact" in result.stdout
+
+
+def _scene(tmp_path, **changes):
+    data = tomllib.loads(BASE.read_text("utf-8"))
+    for section, values in changes.items():
+        if isinstance(values, dict):
+            data.setdefault(section, {}).update(values)
+        else:
+            data[section] = values
+    path = tmp_path / "scene.toml"
+    path.write_text(tomli_w.dumps(data), "utf-8")
+    return path
+
+
+def test_points_and_limits_pass(tmp_path):
+    path = _scene(
+        tmp_path,
+        limits={"amplitude": 1.0e-2, "velocity": 1.0, "acceleration": 10.0},
+        points=[{"name": "top edge", "horizontal": 2.5, "height": 1.3}],
+    )
+    result = run(path, "--json")
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert len(doc["limits"]) == 2 * 2 * 3
+    assert "top edge" in doc["approximations"]["averaged_operator"]["points"]
+
+
+def test_resonant_speed_fails_with_its_margin(tmp_path):
+    # k0 = sqrt(c S / M_tot) of the frame saw
+    data = tomllib.loads(BASE.read_text("utf-8"))
+    f, s, m = data["foundation"], data["soil"], data["mechanism"]
+    k0 = (s["c_z"] * f["base_area"] / (f["mass"] + m["rod_mass"] + m.get("slider_mass", 0.0))) ** 0.5
+    mech = {k: v for k, v in m.items() if k not in ("omega", "frequency_hz", "speed_rpm")}
+    data["mechanism"] = {**mech, "omega": k0}
+    path = tmp_path / "resonant.toml"
+    path.write_text(tomli_w.dumps(data), "utf-8")
+    result = run(path, "--json", "--exact")
+    assert result.exit_code == 1, result.output
+    doc = json.loads(result.stdout)
+    assert doc["approximations"]["averaged_operator"]["resonant"] is True
+    assert doc["approximations"]["first_approximation"]["resonance_margin"] < 1e-6
+    assert doc["verdict"] == "fail"
+    tables = run(path)
+    assert tables.exit_code == 1 and "resonant" in tables.stdout
+
+
+def test_duplicate_point_names_are_an_invalid_scene(tmp_path):
+    path = _scene(tmp_path, points=[{"name": "a", "horizontal": 1.0, "height": 0.0}] * 2)
+    result = run(path)
+    assert result.exit_code == 3
+    assert "points" in result.stderr
