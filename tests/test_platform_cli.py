@@ -118,15 +118,29 @@ def test_scene_rules(runner, tmp_path):
     doc = read_toml(CONFIGS / "platform_paper_example.toml")
     both = copy.deepcopy(doc)
     both["isolators"]["vertical"] = [1e8, 1e8, 1e8, 1e8]
+    contradicts = copy.deepcopy(doc)
+    del contradicts["isolators"]["vertical_reference"]
+    contradicts["isolators"]["vertical"] = [1e8, 1e8, 1e8, 1e8]  # puts the exciter at a = 6 m
     neither = copy.deepcopy(doc)
     del neither["isolators"]["vertical_reference"]
     typo = copy.deepcopy(doc)
     typo["exciter"]["rotor_mas"] = 1.0
-    for case, text in ((both, "not both"), (neither, "vertical_reference"), (typo, "rotor_mas")):
+    cases = ((both, "not both"), (neither, "vertical_reference"), (typo, "rotor_mas"), (contradicts, "contradicts"))
+    for case, text in cases:
         path = tmp_path / "s.toml"
         path.write_text(tomli_w.dumps(case), encoding="utf-8")
         result = runner.invoke(app, ["platform", str(path)])
         assert result.exit_code == 3 and text in result.stderr
+
+
+def test_position_consistent_with_vertical_is_accepted(runner, tmp_path):
+    doc = read_toml(CONFIGS / "platform_paper_example.toml")
+    del doc["isolators"]["vertical_reference"]
+    doc["isolators"]["vertical"] = [1.005e8, 1.0e8, 1.0e8, 1.0e8]  # and position = [0, 0] kept
+    path = tmp_path / "s.toml"
+    path.write_text(tomli_w.dumps(doc), encoding="utf-8")
+    result = _run_json(runner, ["platform", str(path), "--json"])
+    assert abs(result["design"]["a"]) < 1e-9 and result["design"]["c13"] == 1.005e8
 
 
 def test_rocking_limit_fails_with_exit_1(runner, tmp_path):

@@ -22,12 +22,17 @@ from foundation_calc.solvers.platform_design import (
     PlatformDesign,
     design_from_position,
     design_from_vertical,
+    position_from_vertical,
 )
 from foundation_calc.solvers.platform_dynamics import block_inertia
 from foundation_calc.solvers.platform_verification import ExtraRotor, PlatformModel
 
 #: The paper's worked example, used by ``fcalc platform`` when no scene is given.
 DEFAULT_SCENE = Path(__file__).with_name("defaults") / "platform.toml"
+
+#: Largest mismatch [m per m of platform size] between a given exciter.position and the (a, b)
+#: that (3.9)-(3.10) derive from given vertical stiffnesses.
+POSITION_MATCH = 1e-6
 
 Positive = Annotated[float, Field(gt=0)]
 Fraction = Annotated[float, Field(gt=0, lt=1)]
@@ -60,7 +65,8 @@ class Exciter(SceneModel):
     rotor_mass: float = quantity("m", "kg", "rotor mass", gt=0)
     eccentricity: float = quantity("l", "m", "distance from the axis to the rotor's centre of mass", gt=0)
     position: list[float] | None = _vector(
-        "(a, b)", "m", "axis point in the platform frame; leave out when isolators.vertical is given", 2, None
+        "(a, b)", "m", "axis point in the platform frame; with isolators.vertical leave it out (or it must agree"
+        " with (3.9)-(3.10))", 2, None
     )
 
 
@@ -153,10 +159,16 @@ class PlatformScene(SceneModel):
                 "isolators: give vertical_reference (K) [N/m] or vertical = [c13, c23, c33, c43] [N/m]"
             )
         if iso.vertical is not None and pos is not None:
-            raise ValueError(
-                "exciter.position and isolators.vertical cannot both be given: with the four vertical"
-                " stiffnesses, (3.9)-(3.10) fix a and b"
+            p = self.platform
+            a, b = position_from_vertical(
+                p.mass, self.exciter.rotor_mass, p.cog[0], p.cog[1], p.length, p.width, *iso.vertical
             )
+            if max(abs(a - pos[0]), abs(b - pos[1])) > POSITION_MATCH * max(1.0, p.length, p.width):
+                raise ValueError(
+                    f"exciter.position = {list(pos)} m contradicts isolators.vertical: with these four"
+                    f" vertical stiffnesses (3.9)-(3.10) put the exciter at (a, b) = ({a:.6g}, {b:.6g}) m;"
+                    " leave exciter.position out (or give vertical_reference instead of vertical)"
+                )
         return self
 
     @property
