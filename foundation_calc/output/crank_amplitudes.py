@@ -56,7 +56,8 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
         "derived": {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m},
         "conventions": "y positive downward; theta turns +x toward +y; x, y of the centre of mass C;"
-        " point horizontal = x + height·theta, vertical = y + horizontal·theta (to first order in theta)",
+        " a point's displacement is the rigid-body motion X + (R(theta) - I)(horizontal, -height),"
+        " to first order (x + height·theta, y + horizontal·theta)",
         "resonant_margin": RESONANT_MARGIN,
         "checked_with": report.checked,
         "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
