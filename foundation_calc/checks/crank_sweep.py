@@ -17,7 +17,7 @@ from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.solvers.crank_closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank_mechanism import CrankDesign
 from foundation_calc.solvers.crank_resonance import CONDITIONS, condition_margin, critical_speed
-from foundation_calc.solvers.crank_response import motion_peaks
+from foundation_calc.solvers.trig_series import peak
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -81,7 +81,7 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
     values = np.asarray(values, dtype=float)
     batch = varied(design, **{variable: values})
     motion, resonant = first_approximation_motion(batch)
-    peaks = motion_peaks(motion).displacement
+    peaks = peak(motion.cos, motion.sin)  # displacement only: (n, 3)
     zero, averaged = design_frequencies(batch)
     omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
     margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
