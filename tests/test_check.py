@@ -37,18 +37,20 @@ def mixed_folder(tmp_path, frame_saw):
 
 
 @pytest.mark.parametrize("config", configs_of_kind("crank_foundation"), ids=lambda p: p.name)
-def test_each_config_agrees_with_fcalc_resonance(runner, config):
-    """`check` on one crank scene ends with the exit code and verdict of `resonance`."""
-    single = runner.invoke(app, ["resonance", str(config), "--json"])
+def test_each_crank_config_agrees_with_resonance_and_amplitudes(runner, config):
+    """`check` on one crank scene gives the verdicts of `resonance` and `amplitudes`, and the worse exit code."""
+    singles = {name: runner.invoke(app, [name, str(config), "--json"]) for name in ("resonance", "amplitudes")}
     result = _invoke(runner, config, "--json")
-    assert result.exit_code == single.exit_code, result.stdout
+    assert result.exit_code == max(single.exit_code for single in singles.values()), result.stdout
     assert result.stderr == ""
     doc = json.loads(result.stdout)
     assert doc["schema_version"] == 1 and doc["command"] == "check"
     (scene,) = doc["scenes"]
     checks = {c["check"]: c for c in scene["checks"]}
-    assert checks["resonance"]["verdict"] == json.loads(single.stdout)["verdict"]
-    assert checks["resonance"]["result"]["resonances"] == json.loads(single.stdout)["resonances"]
+    assert list(checks) == ["resonance", "amplitudes"]
+    for name, single in singles.items():
+        assert checks[name]["verdict"] == json.loads(single.stdout)["verdict"], name
+    assert checks["resonance"]["result"]["resonances"] == json.loads(singles["resonance"].stdout)["resonances"]
     assert checks["resonance"]["values"]["speed"]["unit"] == "rad/s"
 
 
@@ -87,7 +89,7 @@ def test_folder_with_good_and_broken_scenes(runner, mixed_folder, tmp_path):
     assert sorted(s.get("name") for s in suites) == sorted(sources)
     cases = root.iter("testcase")
     assert all(len(list(s.iter("testcase"))) >= 1 for s in suites)
-    assert int(root.get("tests")) == len(list(cases)) == len(sources)
+    assert int(root.get("tests")) == len(list(cases)) == sum(len(s["checks"]) for s in doc["scenes"])
     assert int(root.get("errors")) == 3
     assert int(root.get("failures")) == doc["counts"]["fail"] >= 1
     error = root.find(".//testcase[@classname]/error")
@@ -104,13 +106,17 @@ def test_table_lists_every_scene(runner, mixed_folder, monkeypatch):
         assert name in text
 
 
-def test_strict_makes_warnings_fail_like_resonance(runner):
-    scene = CONFIGS / "frame_saw.toml"  # warns: extra resonance 2ω = p1 within the band
-    assert _invoke(runner, scene).exit_code == 0
-    assert _invoke(runner, scene, "--strict").exit_code == 1
-    assert runner.invoke(app, ["resonance", str(scene), "--strict"]).exit_code == 1
-    doc = json.loads(_invoke(runner, scene, "--strict", "--json").stdout)
+def test_strict_makes_warnings_fail_like_the_single_commands(runner):
+    platform = CONFIGS / "platform_explicit_vertical.toml"  # warns (exciter height), fails nothing
+    assert _invoke(runner, platform).exit_code == 0
+    assert _invoke(runner, platform, "--strict").exit_code == 1
+    assert runner.invoke(app, ["platform", str(platform), "--strict"]).exit_code == 1
+    crank = CONFIGS / "frame_saw.toml"  # resonance warns: extra resonance 2ω = p1 within the band
+    assert runner.invoke(app, ["resonance", str(crank), "--strict"]).exit_code == 1
+    doc = json.loads(_invoke(runner, crank, "--strict", "--json").stdout)
     assert doc["strict"] and doc["scenes"][0]["checks"][0]["verdict"] == "fail"
+    doc = json.loads(_invoke(runner, crank, "--json").stdout)
+    assert doc["scenes"][0]["checks"][0]["verdict"] == "warn"
 
 
 def test_crash_in_one_check_is_internal_and_others_still_run(runner, monkeypatch, tmp_path):
@@ -125,7 +131,7 @@ def test_crash_in_one_check_is_internal_and_others_still_run(runner, monkeypatch
     assert result.exit_code == 4
     assert "Traceback" not in result.output
     root = ET.parse(report).getroot()
-    assert root.get("tests") == "4" and root.get("errors") == "2"
+    assert root.get("tests") == "6" and root.get("errors") == "2"  # 2 scenes x (resonance, amplitudes, boom)
     assert [e.get("type") for e in root.iter("error")] == ["internal", "internal"]
 
 

@@ -104,7 +104,7 @@ def test_random_documents_end_in_a_scene_error(document):
     assert info.value.problems and all(isinstance(msg, str) and msg for _, msg in info.value.problems)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=50, deadline=None)
 @given(mutated_scenes())
 @example((_mutate(SEEDS["frame_saw.toml"], ("foundation", "moment_of_inertia"), 1e308), ("foundation",)))
 @example((_mutate(SEEDS["frame_saw.toml"], ("soil", "c_x"), 5e-324), ("soil",)))
@@ -164,7 +164,7 @@ def test_pinned_platform_crash_with_a_huge_length():
     _numbers_never_crash_a_check(PLATFORM_HUGE_LENGTH)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(rescaled_scenes())
 def test_numbers_the_loader_accepts_never_crash_a_check(document):
     """Within the accepted magnitudes every check ends in a finite verdict or an FcalcError (exit 3)."""

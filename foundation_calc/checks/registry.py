@@ -64,6 +64,40 @@ def crank_resonance(scene) -> Finding:
     return Finding("resonance", report.outcome, reason, values, _embedded(resonance_document(report, scene, "")))
 
 
+#: Display quantity of each limited quantity of the amplitude check.
+_AMPLITUDE_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
+
+
+def crank_amplitudes(scene) -> Finding:
+    """Steady-state peaks of C and the scene's points against [limits] (``fcalc amplitudes``)."""
+    from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.output.crank_amplitudes import amplitudes_document
+
+    report = check_amplitudes(scene.design(), scene.limits, scene.points)
+    approx = report.approximations[report.checked]
+    values = {"speed": ("speed", report.design.omega)}
+    if report.resonant:
+        reason = f"speed {{speed}} is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state"
+    elif not report.rows:
+        reason = "no amplitude, velocity or acceleration limit in [limits]"
+    else:
+        top = max(report.rows, key=lambda row: row.ratio)
+        quantity = _AMPLITUDE_QUANTITY[top.quantity]
+        values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
+        reason = (
+            f"largest peak {top.quantity} {{peak}} at {top.point} ({top.direction}) is {top.ratio:.0%}"
+            f" of the limit {{limit}}"
+        )
+    document = _embedded(amplitudes_document(report, scene, ""))
+    details = tuple(
+        f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
+        if row.outcome is Outcome.PASS
+        else f"FAIL {row.point} {row.direction} {row.quantity}: {row.value:.4g} > {row.limit:.4g} [SI]"
+        for row in report.rows
+    )
+    return Finding("amplitudes", report.outcome, reason, values, document, details)
+
+
 def platform_design(scene) -> Finding:
     """Design of the isolators and exciter, verified on the 6-DOF model (``fcalc platform``)."""
     from foundation_calc.checks.platform import check_platform
@@ -90,6 +124,6 @@ def _embedded(document: dict) -> dict:
 
 #: scene kind -> {check name: function scene -> Finding}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding]]] = {
-    "crank_foundation": {"resonance": crank_resonance},
+    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes},
     "platform": {"design": platform_design},
 }

@@ -12,7 +12,8 @@ UnitsOpt = Annotated[
         "--units",
         metavar="UNIT[,UNIT]",
         help="Units of the tables (JSON stays SI): m, mm or µm (um) for amplitudes; rad/s, Hz or rpm"
-        " for speeds. Repeat the option or separate by commas, e.g. --units mm,rpm. Default: SI.",
+        " for speeds; m/s or mm/s for velocities. Repeat the option or separate by commas, e.g."
+        " --units mm,rpm. Default: SI.",
         show_default=False,
     ),
 ]

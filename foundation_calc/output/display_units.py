@@ -24,10 +24,12 @@ from foundation_calc.units import hz_from_omega, rpm_from_omega
 CONVERSIONS = {
     "amplitude": {"m": lambda v: v, "mm": lambda v: v * 1e3, "µm": lambda v: v * 1e6},
     "speed": {"rad/s": lambda v: v, "Hz": hz_from_omega, "rpm": rpm_from_omega},
+    "velocity": {"m/s": lambda v: v, "mm/s": lambda v: v * 1e3},
+    "acceleration": {"m/s²": lambda v: v, "mm/s²": lambda v: v * 1e3},
 }
 
 #: Spellings accepted on the command line besides the labels themselves.
-ALIASES = {"um": "µm", "micron": "µm", "hz": "Hz", "rad_s": "rad/s", "rads": "rad/s"}
+ALIASES = {"um": "µm", "micron": "µm", "hz": "Hz", "rad_s": "rad/s", "rads": "rad/s", "m/s2": "m/s²", "mm/s2": "mm/s²"}
 
 #: Every unit a user may name, for ``--help``.
 UNIT_CHOICES = ", ".join(unit for table in CONVERSIONS.values() for unit in table) + " (um = µm)"
@@ -39,6 +41,8 @@ class DisplayUnits:
 
     amplitude: str = "m"
     speed: str = "rad/s"
+    velocity: str = "m/s"
+    acceleration: str = "m/s²"
 
     def label(self, quantity: str) -> str:
         """The unit label of ``quantity``, e.g. ``"mm"``."""
