@@ -87,3 +87,19 @@ def test_plot(runner, tmp_path, monkeypatch):
     monkeypatch.setattr("foundation_calc.output.plots.plotting_available", lambda: False)
     result = runner.invoke(app, ["sweep", str(CRANKS[0]), "--speed", "100:700", "--plot", str(tmp_path / "t.png")])
     assert result.exit_code == 2 and "foundation_calc[plot]" in result.output
+
+
+def test_points_match_fcalc_amplitudes(runner, tmp_path, frame_saw):
+    """A sweep point at the scene's speed reports the same point peaks as ``fcalc amplitudes``."""
+    import tomli_w
+
+    frame_saw["points"] = [{"name": "edge", "horizontal": 2.5, "height": -1.5}]
+    path = tmp_path / "p.toml"
+    path.write_text(tomli_w.dumps(frame_saw), encoding="utf-8")
+    swept = runner.invoke(app, ["sweep", str(path), "--speed", "300:400:2", "--json"])
+    amps = runner.invoke(app, ["amplitudes", str(path), "--json"])
+    edge = json.loads(swept.stdout)["points"][0]["points"]["edge"]
+    want = json.loads(amps.stdout)["approximations"]["first_approximation"]["points"]["edge"]
+    for direction in ("horizontal", "vertical"):
+        assert edge[direction] == pytest.approx(want[direction]["displacement"], rel=1e-12)
+    assert json.loads(swept.stdout)["points"][0]["over_limit"]

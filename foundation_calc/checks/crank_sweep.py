@@ -17,6 +17,7 @@ from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.solvers.crank_closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank_mechanism import CrankDesign
 from foundation_calc.solvers.crank_resonance import CONDITIONS, condition_margin, critical_speed
+from foundation_calc.solvers.crank_response import point_series
 from foundation_calc.solvers.trig_series import peak
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
@@ -49,7 +50,8 @@ class SweepReport:
     resonant : no periodic solution of the first approximation (margin < 1e-6)
     margin : smallest relative distance from a resonance condition [-]
     nearest : index into :data:`~foundation_calc.solvers.crank_resonance.CONDITIONS` of that one
-    over_limit : the larger of the x, y peaks exceeds ``amplitude_limit`` (False without a limit)
+    points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
+    over_limit : a displacement peak of C (x, y) or of a point exceeds ``amplitude_limit``
     status : one of :data:`STATUSES` per point
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     """
@@ -61,6 +63,7 @@ class SweepReport:
     resonant: np.ndarray
     margin: np.ndarray
     nearest: np.ndarray
+    points: dict
     over_limit: np.ndarray
     status: np.ndarray
     critical: tuple[CriticalSpeed, ...]
@@ -68,8 +71,11 @@ class SweepReport:
     detuning: float
 
 
-def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | None, detuning: float) -> SweepReport:
+def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | None, detuning: float, points=()) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
+
+    ``points``: (name, horizontal, height) [m] of body points relative to C, as the scene's
+    ``[[points]]``; their peaks come from the same series (rigid-body motion, exact in θ).
 
     Raises
     ------
@@ -82,6 +88,7 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
     batch = varied(design, **{variable: values})
     motion, resonant = first_approximation_motion(batch)
     peaks = peak(motion.cos, motion.sin)  # displacement only: (n, 3)
+    located = {name: peak(*point_series(motion, u, H)) for name, u, H in points}
     zero, averaged = design_frequencies(batch)
     omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
     margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
@@ -91,7 +98,8 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
     in_band = margins < detuning
     fail = (in_band & paper[:, None]).any(axis=0)
     warn = (in_band & ~paper[:, None]).any(axis=0)
-    over = np.zeros(values.shape, dtype=bool) if amplitude_limit is None else peaks[:, :2].max(axis=1) > amplitude_limit
+    largest = np.max([peaks[:, :2].max(axis=1), *(p.max(axis=1) for p in located.values())], axis=0)
+    over = np.zeros(values.shape, dtype=bool) if amplitude_limit is None else largest > amplitude_limit
     status = np.where(resonant, "resonant", np.where(fail | over, "fail", np.where(warn, "warn", "pass")))
     critical = ()
     if variable == "omega":
@@ -110,6 +118,7 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
         resonant=np.asarray(resonant, dtype=bool),
         margin=margin,
         nearest=nearest,
+        points=located,
         over_limit=over,
         status=status,
         critical=critical,

@@ -73,7 +73,7 @@ def sweep(
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
     Every point is computed in one vectorised call of the corrected first approximation; each
-    row shows the peaks of x, y (of C) and θ, the nearest resonance condition and its margin,
+    row shows the peaks of x, y (of C), θ and of the scene's [[points]], the nearest resonance condition and its margin,
     and a status: resonant (no periodic solution), fail (inside the detuning band of a paper
     condition, or over the amplitude limit), warn (inside the band of an extra condition), pass.
     A sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
@@ -108,7 +108,8 @@ def sweep(
     from foundation_calc.scenes import load_scene
 
     loaded = load_scene(scene, expect="crank_foundation")
-    report = run_sweep(loaded.design(), variable, values, loaded.limits.amplitude, loaded.limits.detuning)
+    points = [(p.name, p.horizontal, p.height) for p in loaded.points]
+    report = run_sweep(loaded.design(), variable, values, loaded.limits.amplitude, loaded.limits.detuning, points)
     if csv is not None:
         from foundation_calc.output.files import write_atomically
 

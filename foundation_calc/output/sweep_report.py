@@ -19,12 +19,17 @@ def _rows(report):
     for i, value in enumerate(report.values):
         resonant = bool(report.resonant[i])
         x, y, th = (None if resonant else float(v) for v in report.peaks[i])
+        points = {
+            name: None if resonant else {"horizontal": float(p[i, 0]), "vertical": float(p[i, 1])}
+            for name, p in report.points.items()
+        }
         yield {
             report.variable: float(value),
             "omega": float(report.omega[i]),
             "x_peak": x,
             "y_peak": y,
             "theta_peak": th,
+            "points": points,
             "resonant": resonant,
             "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
             "margin": float(report.margin[i]),
@@ -55,7 +60,9 @@ def sweep_csv(report) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     header = [report.variable if report.variable != "omega" else "omega_rad_s", "speed_hz", "speed_rpm",
-              "x_peak_m", "y_peak_m", "theta_peak_rad", "resonant", "nearest_condition", "margin", "over_limit", "status"]
+              "x_peak_m", "y_peak_m", "theta_peak_rad",
+              *(f"{name}_{d}_peak_m" for name in report.points for d in ("horizontal", "vertical")),
+              "resonant", "nearest_condition", "margin", "over_limit", "status"]
     if report.variable != "omega":
         header.insert(1, "omega_rad_s")
     writer.writerow(header)
@@ -65,6 +72,9 @@ def sweep_csv(report) -> str:
             cells.append(row["omega"])
         cells += [hz_from_omega(row["omega"]), rpm_from_omega(row["omega"])]
         cells += ["" if row[k] is None else repr(row[k]) for k in ("x_peak", "y_peak", "theta_peak")]
+        for name in report.points:
+            p = row["points"][name]
+            cells += ["", ""] if p is None else [repr(p["horizontal"]), repr(p["vertical"])]
         cells += [row["resonant"], row["nearest_condition"], repr(row["margin"]), row["over_limit"], row["status"]]
         writer.writerow(cells)
     return buffer.getvalue()
@@ -84,16 +94,22 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
     table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
     for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
         table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
+    for name in report.points:
+        table.add_column(escape(f"{name} peak h/v [{amp_unit}]"), justify="right")
     table.add_column("nearest resonance, margin")
     table.add_column("status")
     for row in _rows(report):
         cells = [] if report.variable == "omega" else [fmt(row["soil_factor"], 4)]
         cells.append(fmt(units.convert("speed", row["omega"]), 6))
         if row["resonant"]:
-            cells += ["resonant", "resonant", "resonant"]
+            cells += ["resonant"] * (3 + len(report.points))
         else:
             cells += [fmt(units.convert("amplitude", row["x_peak"]), 4), fmt(units.convert("amplitude", row["y_peak"]), 4),
                       fmt(row["theta_peak"], 4)]
+            cells += [
+                " / ".join(fmt(units.convert("amplitude", p[k]), 4) for k in ("horizontal", "vertical"))
+                for p in row["points"].values()
+            ]
         cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
         status = row["status"] + (" (over limit)" if row["over_limit"] else "")
         cells.append(f"[{STATUS_STYLE[row['status']]}]{status}[/]")
@@ -107,7 +123,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
             crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
     limit = "none" if report.amplitude_limit is None else units.show("amplitude", report.amplitude_limit)
-    out.print(f"amplitude limit (x, y of C): {limit}; required detuning {report.detuning:.0%}", soft_wrap=True)
+    out.print(f"amplitude limit (x, y of C and of every point): {limit}; required detuning {report.detuning:.0%}", soft_wrap=True)
 
 
 def plot_sweep(report, path: str | Path, units, name: str) -> None:

@@ -44,24 +44,7 @@ def first_approximation_motion(design: CrankDesign) -> tuple[PeriodicMotion, np.
     resonant (within the first approximation's resonant margin of a condition) they are 0.
     """
     fa = design_first_approximation(design)
-    zero = np.zeros(np.broadcast(fa.y1, fa.x1, fa.theta1).shape)
-    cos = np.stack(
-        [
-            np.stack([zero, zero, zero, zero], axis=-1),
-            np.stack([zero, zero + fa.y1, zero + fa.y2, zero], axis=-1),
-            np.stack([zero, zero, zero, zero], axis=-1),
-        ],
-        axis=-2,
-    )
-    sin = np.stack(
-        [
-            np.stack([zero, zero + fa.x1, zero, zero + fa.x3], axis=-1),
-            np.stack([zero, zero, zero, zero], axis=-1),
-            np.stack([zero, zero + fa.theta1, zero, zero + fa.theta3], axis=-1),
-        ],
-        axis=-2,
-    )
-    return PeriodicMotion(omega=design.omega, cos=cos, sin=sin), np.asarray(fa.resonant)
+    return fa.motion(design.omega), np.asarray(fa.resonant)
 
 
 def varied(design: CrankDesign, *, omega=None, soil_factor=None) -> CrankDesign:
