@@ -22,6 +22,13 @@ def _invoke(runner, *args):
 
 
 @pytest.fixture
+def quick_checks(monkeypatch):
+    """Crank scenes run only the resonance check (the amplitude check takes ~1 s a scene), for
+    tests of the report itself rather than of the checks."""
+    monkeypatch.setitem(registry.CHECKS, "crank_foundation", {"resonance": registry.crank_resonance})
+
+
+@pytest.fixture
 def mixed_folder(tmp_path, frame_saw):
     """Every shipped config, plus broken scenes in a subfolder (bad TOML, bad value, not UTF-8)."""
     folder = tmp_path / "scenes"
@@ -97,7 +104,7 @@ def test_folder_with_good_and_broken_scenes(runner, mixed_folder, tmp_path):
     assert not list(report.parent.glob(".*tmp"))  # no temporary file left behind
 
 
-def test_table_lists_every_scene(runner, mixed_folder, monkeypatch):
+def test_table_lists_every_scene(runner, quick_checks, mixed_folder, monkeypatch):
     monkeypatch.setattr(stdout(), "width", 250)  # one line per row: names are not folded
     result = _invoke(runner, mixed_folder)
     assert result.exit_code == 3
@@ -106,7 +113,7 @@ def test_table_lists_every_scene(runner, mixed_folder, monkeypatch):
         assert name in text
 
 
-def test_strict_makes_warnings_fail_like_the_single_commands(runner):
+def test_strict_makes_warnings_fail_like_the_single_commands(runner, quick_checks):
     platform = CONFIGS / "platform_explicit_vertical.toml"  # warns (exciter height), fails nothing
     assert _invoke(runner, platform).exit_code == 0
     assert _invoke(runner, platform, "--strict").exit_code == 1
@@ -135,7 +142,7 @@ def test_crash_in_one_check_is_internal_and_others_still_run(runner, monkeypatch
     assert [e.get("type") for e in root.iter("error")] == ["internal", "internal"]
 
 
-def test_missing_file_is_reported_and_the_rest_run(runner, tmp_path):
+def test_missing_file_is_reported_and_the_rest_run(runner, quick_checks, tmp_path):
     result = _invoke(runner, tmp_path / "nope.toml", CONFIGS / "crank_press.toml", "--json")
     assert result.exit_code == 3
     doc = json.loads(result.stdout)
@@ -149,7 +156,7 @@ def test_no_scene_files_is_a_usage_error(runner, tmp_path):
     assert "no scene files" in result.output
 
 
-def test_units_in_table_and_json_stays_si(runner, monkeypatch):
+def test_units_in_table_and_json_stays_si(runner, quick_checks, monkeypatch):
     monkeypatch.setattr(stdout(), "width", 250)
     scene = CONFIGS / "frame_saw.toml"  # 300 rpm = 31.416 rad/s = 5 Hz
     assert "300 rpm" in _invoke(runner, scene, "--units", "rpm").stdout
@@ -161,7 +168,7 @@ def test_units_in_table_and_json_stays_si(runner, monkeypatch):
     assert bad.exit_code == 2 and "furlong" in bad.output
 
 
-def test_junit_replaces_an_old_report_and_escapes_odd_names(runner, tmp_path):
+def test_junit_replaces_an_old_report_and_escapes_odd_names(runner, quick_checks, tmp_path):
     odd = tmp_path / "odd\x01name.toml"
     odd.write_text("kind = 'crank_foundation'\n", encoding="utf-8")
     report = tmp_path / "junit.xml"
@@ -172,7 +179,7 @@ def test_junit_replaces_an_old_report_and_escapes_odd_names(runner, tmp_path):
     assert root.find("testsuite").get("name") == str(odd).replace("\x01", "\ufffd")
 
 
-def test_unwritable_junit_path_is_not_a_crash(runner, tmp_path):
+def test_unwritable_junit_path_is_not_a_crash(runner, quick_checks, tmp_path):
     result = _invoke(runner, CONFIGS / "crank_press.toml", "--junit", tmp_path / "no" / "such" / "dir.xml")
     assert result.exit_code == 2
     assert "Traceback" not in result.output
