@@ -183,3 +183,17 @@ def test_unwritable_junit_path_is_not_a_crash(runner, quick_checks, tmp_path):
     result = _invoke(runner, CONFIGS / "crank_press.toml", "--junit", tmp_path / "no" / "such" / "dir.xml")
     assert result.exit_code == 2
     assert "Traceback" not in result.output
+
+
+def test_resonance_tables_follow_units(runner, monkeypatch):
+    """`fcalc resonance --units`: critical speeds in the chosen unit; JSON unchanged (SI)."""
+    monkeypatch.setattr(stdout(), "width", 250)
+    scene = str(CONFIGS / "frame_saw.toml")
+    si = runner.invoke(app, ["resonance", scene])
+    hz = runner.invoke(app, ["resonance", scene, "--units", "Hz"])
+    assert "rad/s, avg. inertia" in si.stdout and "Hz, avg. inertia" in hz.stdout
+    # k0 = 108.732 rad/s = 17.305 Hz (natural-frequency table); ω = k0 row in Hz:
+    row = next(line for line in hz.stdout.splitlines() if line.startswith("│ ω = k0 "))
+    assert row.count("17.305") == 2 and "1038.3" not in row
+    plain = runner.invoke(app, ["resonance", scene, "--json"]).stdout
+    assert runner.invoke(app, ["resonance", scene, "--json", "--units", "Hz"]).stdout == plain

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
@@ -15,7 +16,7 @@ StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (extra
 
 
 @reports_errors
-def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False) -> None:
+def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False, units: UnitsOpt = None) -> None:
     """Natural frequencies k0, p1, p2 and the margin of the crank speed from every resonance.
 
     Checks the paper's conditions ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2 (fail inside the
@@ -26,6 +27,7 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False)
     from foundation_calc.output import crank_resonance as report_out
     from foundation_calc.scenes import load_scene
 
+    shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     report = check_resonances(loaded.design(), loaded.limits.detuning)
     if json:
@@ -33,5 +35,5 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False)
 
         print_json(report_out.resonance_document(report, loaded, str(scene)))
     else:
-        report_out.print_resonance_report(report, loaded, str(scene))
+        report_out.print_resonance_report(report, loaded, str(scene), shown)
     raise typer.Exit(int(exit_code(report.outcome, strict)))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from foundation_calc.checks.crank_resonance import ResonanceReport
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank_resonance import MODE_NAMES
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
@@ -66,7 +67,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
     }
 
 
-def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
+def print_resonance_report(report: ResonanceReport, scene, source: str, units: DisplayUnits = DisplayUnits()) -> None:
     """Print the tables of ``fcalc resonance``."""
     from rich.table import Table
 
@@ -102,7 +103,8 @@ def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
     res = Table(title="Resonances (critical crank speeds)", title_justify="left")
     res.add_column("condition")
     res.add_column("mode")
-    for col in ("rpm", "rpm, avg. inertia", "margin", "required"):
+    speed = units.label("speed")
+    for col in (speed, f"{speed}, avg. inertia", "margin", "required"):
         res.add_column(col, justify="right")
     res.add_column("verdict")
     for row in report.rows:
@@ -110,8 +112,8 @@ def print_resonance_report(report: ResonanceReport, scene, source: str) -> None:
         res.add_row(
             label,
             MODE_NAMES[row.condition.mode],
-            fmt(rpm_from_omega(row.critical_zero_order)),
-            fmt(rpm_from_omega(row.critical_averaged)),
+            fmt(units.convert("speed", row.critical_zero_order)),
+            fmt(units.convert("speed", row.critical_averaged)),
             f"{row.margin:.1%}",
             f"{row.required:.0%}",
             verdict_text(row.outcome.value),
