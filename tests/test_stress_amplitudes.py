@@ -9,7 +9,6 @@ solution exists the closed form's error is bounded by what its truncation predic
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import replace
 
 import numpy as np
@@ -29,16 +28,10 @@ from foundation_calc.solvers.crank_mechanism import lump_slider
 from foundation_calc.solvers.crank_resonance import CONDITIONS
 from foundation_calc.solvers.crank_response import motion_peaks
 from tests import crank_reference as ref
+from tests.test_stress_resonance import _finite
 
 OFFSETS = np.array([0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-4, -1e-4, 1e-2, -1e-2])
 
-
-def _finite(node) -> bool:
-    if isinstance(node, dict):
-        return all(_finite(v) for v in node.values())
-    if isinstance(node, list):
-        return all(_finite(v) for v in node)
-    return not isinstance(node, float) or math.isfinite(node)
 
 
 def _check_sweep(report):

@@ -9,24 +9,17 @@ pair). Near each, 1e-12 .. 1e-2 relative, the command must give finite JSON or a
 from __future__ import annotations
 
 import json
-import math
 
 import pytest
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
 from tests.conftest import CONFIGS
+from tests.test_stress_resonance import _finite
 
 SCENE = CONFIGS / "platform_paper_example.toml"
 OFFSETS = [0.0, 1e-12, -1e-9, 1e-6, -1e-2]
 
-
-def _finite(node) -> bool:
-    if isinstance(node, dict):
-        return all(_finite(v) for v in node.values())
-    if isinstance(node, list):
-        return all(_finite(v) for v in node)
-    return not isinstance(node, float) or math.isfinite(node)
 
 
 def _singular_amplitudes():

@@ -23,6 +23,9 @@ from foundation_calc.solvers.trig_series import peak
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
 
+#: Points whose peaks are found together: peak() holds ~64 × 4 × 8 bytes per series and sample.
+CHUNK = 4096
+
 #: Status of a point, worst last.
 STATUSES = ("pass", "warn", "fail", "resonant")
 
@@ -71,6 +74,11 @@ class SweepReport:
     detuning: float
 
 
+def _peaks(cos, sin):
+    """:func:`peak` over the first axis in chunks of :data:`CHUNK`, so memory stays bounded."""
+    return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
+
+
 def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | None, detuning: float, points=()) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
 
@@ -87,8 +95,8 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
     values = np.asarray(values, dtype=float)
     batch = varied(design, **{variable: values})
     motion, resonant = first_approximation_motion(batch)
-    peaks = peak(motion.cos, motion.sin)  # displacement only: (n, 3)
-    located = {name: peak(*point_series(motion, u, H)) for name, u, H in points}
+    peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
+    located = {name: _peaks(*point_series(motion, u, H)) for name, u, H in points}
     zero, averaged = design_frequencies(batch)
     omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
     margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])

@@ -14,7 +14,7 @@ from foundation_calc.cli.units import UnitsOpt
 #: Unit suffixes accepted after a speed range -> display unit label.
 SPEED_UNITS = {"rpm": "rpm", "rad/s": "rad/s", "hz": "Hz"}
 DEFAULT_POINTS = 101
-MAX_POINTS = 1_000_000
+MAX_POINTS = 100_000
 
 _RANGE = re.compile(r"^\s*([^:\s]+)\s*:\s*([^:\s]+?)\s*(?::\s*(\d+))?\s*([a-zA-Z/]*)\s*$")
 
