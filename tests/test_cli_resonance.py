@@ -74,3 +74,15 @@ def test_internal_error_exits_4_without_traceback(runner, monkeypatch):
     result = runner.invoke(app, ["resonance", "configs/frame_saw.toml"])
     assert result.exit_code == 4
     assert "internal error" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_closed_pipe_ends_quietly_with_141(runner, monkeypatch):
+    import foundation_calc.output.crank_resonance as out
+
+    def closed(*args, **kwargs):
+        raise BrokenPipeError(32, "Broken pipe")
+
+    monkeypatch.setattr(out, "resonance_document", closed)
+    result = runner.invoke(app, ["resonance", "configs/frame_saw.toml", "--json"])
+    assert result.exit_code == 141
+    assert "internal error" not in result.stderr

@@ -9,11 +9,16 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
 from collections.abc import Callable
 
 import typer
 
 from foundation_calc.errors import ExitCode, FcalcError, SceneError
+
+
+#: Exit code when stdout is closed by its reader, as for a process ended by SIGPIPE (128 + 13).
+BROKEN_PIPE = 141
 
 
 def report_error(exc: FcalcError) -> None:
@@ -54,6 +59,12 @@ def reports_errors(command: Callable) -> Callable:
             return command(*args, **kwargs)
         except (typer.Exit, typer.Abort, typer.BadParameter, KeyboardInterrupt):
             raise  # typer prints a bad parameter as a usage error itself (exit 2)
+        except BrokenPipeError:  # `fcalc ... | head`: the reader left; stop quietly, as a shell would
+            try:  # no "Exception ignored" message when Python flushes stdout at exit
+                os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            except (OSError, ValueError):  # stdout is not a file (tests, embedding)
+                pass
+            raise typer.Exit(BROKEN_PIPE) from None
         except FcalcError as exc:
             report_error(exc)
             raise typer.Exit(int(exc.exit_code)) from None
