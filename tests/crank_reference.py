@@ -57,3 +57,25 @@ def averaged_mass_matrix(*, M, I_c, m, l1, rho, m1, a, r, l, samples=4096):
 def frequencies(K, Mm):
     """Natural frequencies [rad/s], ascending, by a generalized symmetric eigen-solve."""
     return np.sqrt(eigh(K, Mm, eigvals_only=True))
+
+
+def scaled_scene(*, mass, inertia, height, area, second, c_z, c_x, mu, lam, cog, omega=31.4, drive_on=True):
+    """A crank_foundation scene document scaled from the frame saw by decades (``10**arg``).
+
+    ``mu``, ``lam`` (λ = r/l) and ``cog`` (l'/l) are given directly; the rod mass follows from μ.
+    Used by the property tests to reach every corner of the input domain.
+    """
+    M = 1e5 * 10**mass
+    return {
+        "kind": "crank_foundation",
+        "foundation": {
+            "mass": M, "moment_of_inertia": 4.5e5 * 10**inertia, "cog_height": 1.5 * 10**height,
+            "base_area": 30.0 * 10**area, "base_second_moment": 90.0 * 10**second,
+        },
+        "soil": {"c_z": 4e7 * 10**c_z, "c_x": 4e7 * 10**c_z * 0.7 * 10**c_x},
+        "mechanism": {
+            "omega": omega, "crank_radius": 1.2 * lam, "rod_length": 1.2,
+            "rod_mass": mu / (1 - mu) * M * 0.999999, "rod_cog_to_crank_pin": 1.2 * cog,
+            "rod_radius_of_gyration": 0.35, "crank_axis_to_cog": 2.0, "drive_on_foundation": drive_on,
+        },
+    }

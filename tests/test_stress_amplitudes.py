@@ -153,20 +153,10 @@ magnitudes = st.floats(-3.0, 3.0)
 def test_random_designs_sweep_to_finite_numbers_or_clear_errors(
     mass, inertia, height, area, second, c_z, c_x, mu, lam, cog, drive_on
 ):
-    M = 1e5 * 10**mass
-    scene = {
-        "kind": "crank_foundation",
-        "foundation": {
-            "mass": M, "moment_of_inertia": 4.5e5 * 10**inertia, "cog_height": 1.5 * 10**height,
-            "base_area": 30.0 * 10**area, "base_second_moment": 90.0 * 10**second,
-        },
-        "soil": {"c_z": 4e7 * 10**c_z, "c_x": 4e7 * 10**c_z * 0.7 * 10**c_x},
-        "mechanism": {
-            "omega": 31.4, "crank_radius": 1.2 * lam, "rod_length": 1.2,
-            "rod_mass": mu / (1 - mu) * M * 0.999999, "rod_cog_to_crank_pin": 1.2 * cog,
-            "rod_radius_of_gyration": 0.35, "crank_axis_to_cog": 2.0, "drive_on_foundation": drive_on,
-        },
-    }
+    scene = ref.scaled_scene(
+        mass=mass, inertia=inertia, height=height, area=area, second=second, c_z=c_z, c_x=c_x,
+        mu=mu, lam=lam, cog=cog, drive_on=drive_on,
+    )
     try:
         design = parse_scene(scene).design()
         report = sweep(design, "omega", np.geomspace(1e-4, 1e5, 120), 2e-4, 0.2)

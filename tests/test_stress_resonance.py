@@ -60,21 +60,10 @@ magnitudes = st.floats(-3.0, 3.0)  # decades around the frame saw's values
 def test_random_scenes_give_finite_answers_or_clear_errors(
     mass, inertia, height, area, second, c_z, c_x, speed, mu, lam, cog
 ):
-    M = 1e5 * 10**mass
-    m = mu / (1 - mu) * M * 0.999999
-    scene = {
-        "kind": "crank_foundation",
-        "foundation": {
-            "mass": M, "moment_of_inertia": 4.5e5 * 10**inertia, "cog_height": 1.5 * 10**height,
-            "base_area": 30.0 * 10**area, "base_second_moment": 90.0 * 10**second,
-        },
-        "soil": {"c_z": 4e7 * 10**c_z, "c_x": 4e7 * 10**c_z * 0.7 * 10**c_x},
-        "mechanism": {
-            "omega": 31.4 * 10**speed, "crank_radius": 1.2 * lam, "rod_length": 1.2,
-            "rod_mass": m, "rod_cog_to_crank_pin": 1.2 * cog, "rod_radius_of_gyration": 0.35,
-            "crank_axis_to_cog": 2.0,
-        },
-    }
+    scene = ref.scaled_scene(
+        mass=mass, inertia=inertia, height=height, area=area, second=second, c_z=c_z, c_x=c_x,
+        mu=mu, lam=lam, cog=cog, omega=31.4 * 10**speed,
+    )
     try:
         loaded = parse_scene(scene)
         report = check_resonances(loaded.design(), loaded.limits.detuning)

@@ -19,7 +19,8 @@ from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank_averaged import averaged_response
-from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN, first_approximation
+from foundation_calc.solvers.crank_closed_form import design_first_approximation
+from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank_mechanism import CrankDesign
 from foundation_calc.solvers.crank_response import (
     DIRECTIONS,
@@ -126,14 +127,10 @@ def _approximation(key, motion, resonant, margin, nearest, points) -> Approximat
 
 
 def _first(design: CrankDesign, points) -> Approximation:
-    d, rod = design, design.rod
-    g_star = d.g if d.drive_on_foundation else 0.0
-    fa = first_approximation(
-        d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g, g_star, d.omega, rod.m, d.r, d.l, rod.l1, rod.rho, d.a
-    )
+    fa = design_first_approximation(design)
     label = min(fa.margins, key=lambda k: fa.margins[k])
     return _approximation(
-        "first_approximation", fa.motion(d.omega), bool(fa.resonant), float(fa.margins[label]), label, points
+        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points
     )
 
 
