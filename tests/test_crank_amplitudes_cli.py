@@ -98,3 +98,17 @@ def test_duplicate_point_names_are_an_invalid_scene(tmp_path):
     result = run(path)
     assert result.exit_code == 3
     assert "points" in result.stderr
+
+
+def test_units_convert_the_tables_but_not_the_json(runner):
+    from foundation_calc.cli.app import app
+
+    si = runner.invoke(app, ["amplitudes", "configs/vertical_compressor.toml"])
+    mm = runner.invoke(app, ["amplitudes", "configs/vertical_compressor.toml", "--units", "mm,mm/s"])
+    assert si.exit_code == mm.exit_code == 0
+    assert "y1 [m]" in si.stdout and "y1 [mm]" in mm.stdout
+    assert "displacement [mm]" in mm.stdout and "0.15 mm" in mm.stdout
+    js = runner.invoke(app, ["amplitudes", "configs/vertical_compressor.toml", "--units", "mm", "--json"])
+    assert '"amplitude": 0.00015' in js.stdout or "0.00015" in js.stdout
+    bad = runner.invoke(app, ["amplitudes", "configs/vertical_compressor.toml", "--units", "furlong"])
+    assert bad.exit_code == 2

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
@@ -18,7 +19,7 @@ ExactOpt = Annotated[
 
 
 @reports_errors
-def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False) -> None:
+def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None) -> None:
     """Steady-state amplitudes per harmonic, peaks of C and of the scene's [[points]], and limits.
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
@@ -31,6 +32,7 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False) 
     from foundation_calc.output import crank_amplitudes as report_out
     from foundation_calc.scenes import load_scene
 
+    shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     report = check_amplitudes(loaded.design(), loaded.limits, loaded.points, exact=exact)
     if json:
@@ -38,5 +40,5 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False) 
 
         print_json(report_out.amplitudes_document(report, loaded, str(scene)))
     else:
-        report_out.print_amplitudes_report(report, loaded, str(scene))
+        report_out.print_amplitudes_report(report, loaded, str(scene), shown)
     raise typer.Exit(int(exit_code(report.outcome)))

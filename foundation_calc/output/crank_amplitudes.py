@@ -6,12 +6,15 @@ from rich.table import Table
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank_response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
 
 UNITS = {"x": "m", "y": "m", "theta": "rad"}
 RATE_UNITS = {"displacement": "", "velocity": "/s", "acceleration": "/s²"}
+#: display quantity of each peak of a displacement (m); rotations stay in rad
+DISPLAY_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
 FIRST_KEYS = (("y", 1, "cos"), ("y", 2, "cos"), ("x", 1, "sin"), ("x", 3, "sin"), ("theta", 1, "sin"), ("theta", 3, "sin"))
 
 
@@ -88,7 +91,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
     return doc
 
 
-def _harmonics_table(report: AmplitudeReport) -> Table:
+def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
     table.add_column("harmonic")
     shown = [a for a in report.approximations.values()]
@@ -99,9 +102,14 @@ def _harmonics_table(report: AmplitudeReport) -> Table:
             table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
     for dof, n in HARMONICS:
         part = 0 if dof == "y" else 1
-        cells = [f"{dof}{n} [{UNITS[dof]}]"]
+        unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
+        cells = [f"{dof}{n} \\[{unit}]"]
         for a in shown:
-            cells.append("resonant" if a.resonant else fmt(float(a.motion.coefficient(dof, n)[part]), 6))
+            if a.resonant:
+                cells.append("resonant")
+                continue
+            value = float(a.motion.coefficient(dof, n)[part])
+            cells.append(fmt(value if dof == "theta" else units.convert("amplitude", value), 6))
         if report.errors:
             for err in report.errors.values():
                 cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")
@@ -109,28 +117,33 @@ def _harmonics_table(report: AmplitudeReport) -> Table:
     return table
 
 
-def _points_table(report: AmplitudeReport) -> Table:
+def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     approx = report.approximations[report.checked]
     table = Table(title=f"Peaks over one revolution ({approx.title})", title_justify="left")
-    for col in ("point", "direction", "displacement [m]", "velocity [m/s]", "acceleration [m/s²]"):
-        table.add_column(col, justify="left" if col in ("point", "direction") else "right")
+    table.add_column("point")
+    table.add_column("direction")
+    for q in QUANTITIES:
+        table.add_column(f"{q} \\[{units.label(DISPLAY_QUANTITY[q])}]", justify="right")
     for name, pk in approx.points.items():
         for i, direction in enumerate(DIRECTIONS):
-            table.add_row(name, direction, *(fmt(float(getattr(pk, q)[i])) for q in QUANTITIES))
+            table.add_row(
+                name, direction,
+                *(fmt(units.convert(DISPLAY_QUANTITY[q], float(getattr(pk, q)[i]))) for q in QUANTITIES),
+            )
     for i, dof in enumerate(DOFS):
         if dof == "theta":
             table.add_row("C", "rocking θ", *(fmt(float(getattr(approx.peaks, q)[i])) + f" rad{RATE_UNITS[q]}" for q in QUANTITIES))
     return table
 
 
-def _limits_table(report: AmplitudeReport) -> Table:
+def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
     for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
         table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
     for row in report.rows:
-        unit = "m" + RATE_UNITS[row.quantity]
+        shown = DISPLAY_QUANTITY[row.quantity]
         table.add_row(
-            row.point, row.direction, row.quantity, f"{fmt(row.value)} {unit}", f"{fmt(row.limit)} {unit}",
+            row.point, row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
             f"{row.ratio:.3f}", verdict_text(row.outcome.value),
         )
     return table
@@ -144,7 +157,7 @@ def summary_line(report: AmplitudeReport) -> str:
             f" speed; no steady state without damping"
         )
     if not report.rows:
-        return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in [limits]"
+        return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
     top = max(report.rows, key=lambda r: r.ratio)
     return (
         f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
@@ -152,12 +165,14 @@ def summary_line(report: AmplitudeReport) -> str:
     )
 
 
-def print_amplitudes_report(report: AmplitudeReport, scene, source: str) -> None:
-    """Print the tables of ``fcalc amplitudes``."""
+def print_amplitudes_report(
+    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits()
+) -> None:
+    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI)."""
     d = report.design
     out = stdout()
     out.print(
-        f"[bold]{scene.name or source}[/]  speed {fmt(d.omega)} rad/s = {fmt(rpm_from_omega(d.omega))} rpm,"
+        f"[bold]{scene.name or source}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
         f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
     )
     for a in report.approximations.values():
@@ -169,9 +184,9 @@ def print_amplitudes_report(report: AmplitudeReport, scene, source: str) -> None
             f"  exact: {info.harmonics} harmonics (change from {info.harmonics // 2}: {info.harmonic_change:.1e}),"
             f" {info.newton_iterations} Newton step(s), {info.seconds * 1e3:.0f} ms"
         )
-    out.print(_harmonics_table(report))
+    out.print(_harmonics_table(report, units))
     if not report.resonant:
-        out.print(_points_table(report))
+        out.print(_points_table(report, units))
     if report.rows:
-        out.print(_limits_table(report))
+        out.print(_limits_table(report, units))
     out.print(summary_line(report))
