@@ -79,3 +79,17 @@ def scaled_scene(*, mass, inertia, height, area, second, c_z, c_x, mu, lam, cog,
             "rod_radius_of_gyration": 0.35, "crank_axis_to_cog": 2.0, "drive_on_foundation": drive_on,
         },
     }
+
+
+def make_p1_equal_p2(scene: dict) -> dict:
+    """Modify a crank scene in place so that p1 = p2 (almost): a0 = b1 and a vanishing coupling.
+
+    h → 1e-6 m kills the coupling a1 b0; I1 is chosen so that (c1 h² S + c I1 − P h)/I_c = c1 S/M_tot.
+    """
+    f, s = scene["foundation"], scene["soil"]
+    f["cog_height"] = 1e-6
+    M_tot = f["mass"] + scene["mechanism"]["rod_mass"] + scene["mechanism"].get("slider_mass", 0.0)
+    f["base_second_moment"] = (s["c_x"] * f["base_area"] / M_tot * f["moment_of_inertia"]
+                               - s["c_x"] * f["cog_height"] ** 2 * f["base_area"]
+                               + M_tot * G * f["cog_height"]) / s["c_z"]
+    return scene

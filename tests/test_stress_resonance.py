@@ -109,13 +109,7 @@ def test_exactly_unstable_is_reported_with_its_field(runner, tmp_path, frame_saw
 
 def test_nearly_equal_p1_p2(frame_saw):
     """a0 = b1 and a vanishing coupling make p1 = p2: the discriminant must not go negative."""
-    f, s = frame_saw["foundation"], frame_saw["soil"]
-    f["cog_height"] = 1e-6
-    M_tot = f["mass"] + frame_saw["mechanism"]["rod_mass"]
-    # choose I1 so that b1 = a0: (c1 h² S + c I1 − P h)/I_c = c1 S/M_tot
-    f["base_second_moment"] = (s["c_x"] * f["base_area"] / M_tot * f["moment_of_inertia"]
-                               - s["c_x"] * f["cog_height"] ** 2 * f["base_area"]
-                               + M_tot * ref.G * f["cog_height"]) / s["c_z"]
+    ref.make_p1_equal_p2(frame_saw)
     report = check_resonances(parse_scene(frame_saw).design(), 0.2)
     assert report.zero_order.p1 == pytest.approx(report.zero_order.p2, rel=1e-4)
     assert math.isfinite(report.averaged.p1) and math.isfinite(report.averaged.p2)
