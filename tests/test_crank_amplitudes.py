@@ -233,3 +233,29 @@ def test_peak_of_a_series_matches_dense_sampling(coefs, K):
     # dense sampling misses the top by at most (2π/N)² q''/8 ~ 1e-9 relative
     assert peak(cos, sin) == pytest.approx(dense, rel=2e-8, abs=1e-12)
     assert peak(cos, sin) >= dense - 1e-15
+
+
+
+def test_three_omega_equal_k0_is_a_weak_resonance_of_the_exact_equations():
+    """The linear forcing has no vertical 3rd harmonic, yet the exact equations resonate at 3ω = k0.
+
+    Their nonlinear coupling forces y at 3ω, so the exact y3 grows like 1/(relative offset): this
+    is why the averaged form names such coincidences as its nearest resonance.
+    """
+    from dataclasses import replace
+
+    from foundation_calc.scenes import load_scene
+    from foundation_calc.solvers.crank_averaged import averaged_response
+    from foundation_calc.solvers.crank_exact import exact_periodic_solution
+    from foundation_calc.solvers.crank_frequencies import zero_order_frequencies
+
+    d = load_scene("configs/frame_saw.toml").design()
+    k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g).k0
+    ratios = []
+    for offset in (1e-4, 1e-3):
+        design = replace(d, omega=k0 / 3 * (1 + offset))
+        exact = exact_periodic_solution(design).motion
+        y1, y3 = (abs(complex(*exact.coefficient("y", n))) for n in (1, 3))
+        ratios.append(y3 / y1 * offset)
+        assert averaged_response(design).nearest == (3, 1)  # 3ω against the vertical mode
+    assert ratios[1] == pytest.approx(ratios[0], rel=0.05)  # y3 ∝ 1/offset: a resonance
