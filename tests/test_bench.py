@@ -18,8 +18,8 @@ from foundation_calc.benchmarks.accuracy import METHODS, REFERENCE
 from foundation_calc.benchmarks.startup import startup_times
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import load_scene
-from foundation_calc.solvers.crank_response import motion_peaks
-from foundation_calc.solvers.crank_shooting import shooting_solution
+from foundation_calc.solvers.crank.response import motion_peaks
+from foundation_calc.solvers.crank.shooting import shooting_solution
 from tests.conftest import CONFIGS
 
 SCENE = CONFIGS / "frame_saw.toml"

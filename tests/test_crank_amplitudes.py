@@ -15,13 +15,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foundation_calc.checks.crank_amplitudes import check_amplitudes
-from foundation_calc.solvers.crank_averaged import averaged_response
-from foundation_calc.solvers.crank_exact import exact_periodic_solution
-from foundation_calc.solvers.crank_first_approximation import first_approximation
-from foundation_calc.solvers.crank_frequencies import zero_order_frequencies
-from foundation_calc.solvers.crank_mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.crank_response import point_peaks, relative_error
-from foundation_calc.solvers.trig_series import peak, sample
+from foundation_calc.solvers.crank.averaged import averaged_response
+from foundation_calc.solvers.crank.exact import exact_periodic_solution
+from foundation_calc.solvers.crank.first_approximation import first_approximation
+from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
+from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
+from foundation_calc.solvers.crank.response import point_peaks, relative_error
+from foundation_calc.solvers.numerics.trig_series import peak, sample
 
 
 def make_design(m=1.5e3, omega=45.0, r=0.1, l=1.2, l1=0.9, rho=0.35, a=2.0, c1=2.8e7, drive_on=True, M=1.0e5):
@@ -245,9 +245,9 @@ def test_three_omega_equal_k0_is_a_weak_resonance_of_the_exact_equations():
     from dataclasses import replace
 
     from foundation_calc.scenes import load_scene
-    from foundation_calc.solvers.crank_averaged import averaged_response
-    from foundation_calc.solvers.crank_exact import exact_periodic_solution
-    from foundation_calc.solvers.crank_frequencies import zero_order_frequencies
+    from foundation_calc.solvers.crank.averaged import averaged_response
+    from foundation_calc.solvers.crank.exact import exact_periodic_solution
+    from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
 
     d = load_scene("configs/frame_saw.toml").design()
     k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g).k0

@@ -17,10 +17,10 @@ import numpy as np
 import pytest
 
 from foundation_calc.errors import ConvergenceError
-from foundation_calc.solvers.crank_dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank_exact import exact_periodic_solution
-from foundation_calc.solvers.crank_mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.trig_series import analyse
+from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
+from foundation_calc.solvers.crank.exact import exact_periodic_solution
+from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
+from foundation_calc.solvers.numerics.trig_series import analyse
 
 sp = pytest.importorskip("sympy")
 
@@ -180,7 +180,7 @@ def test_harmonic_balance_reports_its_convergence():
 
 def test_harmonic_balance_refuses_a_resonant_speed():
     design = make_design()
-    from foundation_calc.solvers.crank_averaged import averaged_response
+    from foundation_calc.solvers.crank.averaged import averaged_response
 
     k0 = averaged_response(design).natural[1]
     with pytest.raises(ConvergenceError, match="no periodic solution"):

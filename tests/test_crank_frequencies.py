@@ -14,11 +14,11 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.crank_frequencies import (
+from foundation_calc.solvers.crank.frequencies import (
     averaged_inertia_frequencies,
     zero_order_frequencies,
 )
-from foundation_calc.solvers.crank_mechanism import lump_slider
+from foundation_calc.solvers.crank.mechanism import lump_slider
 from tests import crank_reference as ref
 
 REL = 1e-9

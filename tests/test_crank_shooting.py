@@ -16,8 +16,8 @@ import pytest
 
 from foundation_calc.errors import PhysicsError
 from foundation_calc.scenes import parse_scene
-from foundation_calc.solvers.crank_exact import exact_periodic_solution
-from foundation_calc.solvers.crank_shooting import shooting_solution
+from foundation_calc.solvers.crank.exact import exact_periodic_solution
+from foundation_calc.solvers.crank.shooting import shooting_solution
 
 
 @pytest.mark.parametrize("drive_on", [True, False])

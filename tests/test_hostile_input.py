@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from foundation_calc.checks.registry import CHECKS
 from foundation_calc.cli.app import app
 from foundation_calc.errors import FcalcError, SceneError
+from foundation_calc.output.check_report import result_document
 from foundation_calc.scenes import load_scene, parse_scene, read_toml
 from foundation_calc.scenes.loading import MAX_SCENE_BYTES
 from tests.conftest import CONFIGS
@@ -125,7 +126,8 @@ def test_one_hostile_value_is_named_or_checked(case):
         except FcalcError as exc:  # an impossible design: exit 3 with a message
             assert str(exc)
             continue
-        assert _finite(dict(finding.document)) and _finite(dict(finding.values))
+        document = result_document(finding.check, finding.report, scene)
+        assert _finite(document) and _finite(dict(finding.values))
 
 
 def _numeric_paths(document: dict) -> list[tuple]:
@@ -181,7 +183,8 @@ def _numbers_never_crash_a_check(document):
             finding = check(scene)
         except FcalcError:
             continue
-        assert _finite(dict(finding.document)) and _finite(dict(finding.values))
+        document = result_document(finding.check, finding.report, scene)
+        assert _finite(document) and _finite(dict(finding.values))
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])

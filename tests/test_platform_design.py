@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.platform_design import (
+from foundation_calc.solvers.platform.design import (
     design_from_position,
     design_from_vertical,
     position_from_vertical,

@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from scipy.linalg import eigh, expm
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.platform_design import design_from_position, design_from_vertical
-from foundation_calc.solvers.platform_dynamics import (
+from foundation_calc.solvers.platform.design import design_from_position, design_from_vertical
+from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
     Rotor,
     block_inertia,
@@ -21,7 +21,7 @@ from foundation_calc.solvers.platform_dynamics import (
     natural_frequencies,
     steady_state,
 )
-from foundation_calc.solvers.platform_verification import PlatformModel, build, sensitivity, verify
+from foundation_calc.solvers.platform.verification import PlatformModel, build, sensitivity, verify
 from tests.platform_rigid_body import hat, integrate, linear_history
 
 W = 50 * math.pi

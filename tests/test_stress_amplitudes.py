@@ -21,12 +21,12 @@ from foundation_calc.checks.crank_sweep import sweep
 from foundation_calc.cli.app import app
 from foundation_calc.errors import PhysicsError, SceneError
 from foundation_calc.scenes import parse_scene
-from foundation_calc.solvers.crank_closed_form import first_approximation_motion
-from foundation_calc.solvers.crank_exact import exact_periodic_solution
-from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
-from foundation_calc.solvers.crank_mechanism import lump_slider
-from foundation_calc.solvers.crank_resonance import CONDITIONS
-from foundation_calc.solvers.crank_response import motion_peaks
+from foundation_calc.solvers.crank.closed_form import first_approximation_motion
+from foundation_calc.solvers.crank.exact import exact_periodic_solution
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.mechanism import lump_slider
+from foundation_calc.solvers.crank.resonance import CONDITIONS
+from foundation_calc.solvers.crank.response import motion_peaks
 from tests import crank_reference as ref
 from tests.test_stress_resonance import _finite
 

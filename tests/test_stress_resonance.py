@@ -21,7 +21,7 @@ from foundation_calc.checks.crank_resonance import check_resonances
 from foundation_calc.cli.app import app
 from foundation_calc.errors import PhysicsError, SceneError
 from foundation_calc.scenes import parse_scene
-from foundation_calc.solvers.crank_resonance import CONDITIONS
+from foundation_calc.solvers.crank.resonance import CONDITIONS
 from tests import crank_reference as ref
 
 

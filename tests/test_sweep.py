@@ -12,7 +12,7 @@ import pytest
 from foundation_calc.checks.crank_sweep import sweep
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import load_scene
-from foundation_calc.solvers.crank_closed_form import design_first_approximation, varied
+from foundation_calc.solvers.crank.closed_form import design_first_approximation, varied
 from foundation_calc.units import omega_from_rpm
 from tests.conftest import configs_of_kind
 

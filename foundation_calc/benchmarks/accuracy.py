@@ -17,28 +17,28 @@ import numpy as np
 
 from foundation_calc.benchmarks.measure import measure
 from foundation_calc.errors import FcalcError
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import DOFS, PeriodicMotion, motion_peaks, relative_error
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import DOFS, PeriodicMotion, motion_peaks, relative_error
 
 #: Numbers of harmonics at which the harmonic balance is shown truncated.
 HARMONICS = (1, 2, 4, 8, 16)
 
 
 def _first_approximation(design: CrankDesign) -> PeriodicMotion:
-    from foundation_calc.solvers.crank_closed_form import first_approximation_motion
+    from foundation_calc.solvers.crank.closed_form import first_approximation_motion
 
     return first_approximation_motion(design)[0]
 
 
 def _averaged(design: CrankDesign) -> PeriodicMotion:
-    from foundation_calc.solvers.crank_averaged import averaged_response
+    from foundation_calc.solvers.crank.averaged import averaged_response
 
     return averaged_response(design).motion
 
 
 def _harmonic_balance(K: int) -> Callable[[CrankDesign], PeriodicMotion]:
     def solve(design: CrankDesign) -> PeriodicMotion:
-        from foundation_calc.solvers.crank_exact import fixed_harmonics_solution
+        from foundation_calc.solvers.crank.exact import fixed_harmonics_solution
 
         return fixed_harmonics_solution(design, K)
 
@@ -46,13 +46,13 @@ def _harmonic_balance(K: int) -> Callable[[CrankDesign], PeriodicMotion]:
 
 
 def _shooting(design: CrankDesign) -> PeriodicMotion:
-    from foundation_calc.solvers.crank_shooting import shooting_solution
+    from foundation_calc.solvers.crank.shooting import shooting_solution
 
     return shooting_solution(design).motion
 
 
 def _converged(design: CrankDesign) -> PeriodicMotion:
-    from foundation_calc.solvers.crank_exact import exact_periodic_solution
+    from foundation_calc.solvers.crank.exact import exact_periodic_solution
 
     return exact_periodic_solution(design).motion
 

@@ -27,7 +27,7 @@ class PlatformBenchmark:
 
 def benchmark_platform(scene: str, loaded, *, min_time: float = 0.2) -> PlatformBenchmark:
     """Time ``loaded.design()`` and the 6-DOF verification of a validated platform scene."""
-    from foundation_calc.solvers.platform_verification import verify
+    from foundation_calc.solvers.platform.verification import verify
 
     name = getattr(loaded, "name", "")
     try:

@@ -10,8 +10,8 @@ import numpy as np
 
 from foundation_calc.benchmarks.measure import measure
 from foundation_calc.checks.crank_resonance import check_resonances, paper_margin
-from foundation_calc.solvers.crank_closed_form import design_first_approximation
-from foundation_calc.solvers.crank_mechanism import CrankDesign
+from foundation_calc.solvers.crank.closed_form import design_first_approximation
+from foundation_calc.solvers.crank.mechanism import CrankDesign
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,7 @@ class CheckRun:
     verdict: str
     reason: str = ""
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
-    document: Mapping[str, Any] = field(default_factory=dict)
+    report: Any = None
     problems: tuple[tuple[str, str], ...] = ()
     details: tuple[str, ...] = ()
 
@@ -47,12 +47,14 @@ class CheckRun:
 
 @dataclass(frozen=True)
 class SceneRun:
-    """All checks of one scene file. ``kind`` and ``name`` are empty when it did not load."""
+    """All checks of one scene file. ``kind`` and ``name`` are empty and ``scene`` (the validated
+    scene model) is ``None`` when it did not load."""
 
     source: str
     kind: str
     name: str
     runs: tuple[CheckRun, ...]
+    scene: Any = None
 
     def exit_code(self, strict: bool) -> ExitCode:
         return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
@@ -81,7 +83,7 @@ def _error_run(check: str, exc: BaseException) -> CheckRun:
 
 def _finite(finding: Finding) -> Finding:
     """``finding`` itself; NaN or inf in its numbers is a bug, so it raises ``ValueError``."""
-    json.dumps([finding.document, list(finding.values.values())], allow_nan=False)
+    json.dumps(list(finding.values.values()), allow_nan=False)
     return finding
 
 
@@ -106,8 +108,8 @@ def run_scene(path: str | Path) -> SceneRun:
             runs.append(_error_run(name, exc))
             continue
         f = finding
-        runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.document, details=f.details))
-    return SceneRun(source, scene.kind, scene.name, tuple(runs))
+        runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details))
+    return SceneRun(source, scene.kind, scene.name, tuple(runs), scene)
 
 
 def run_scenes(paths: Iterable[str | Path]) -> list[SceneRun]:

@@ -18,11 +18,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.solvers.crank_averaged import averaged_response
-from foundation_calc.solvers.crank_closed_form import design_first_approximation
-from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import (
+from foundation_calc.solvers.crank.averaged import averaged_response
+from foundation_calc.solvers.crank.closed_form import design_first_approximation
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import (
     DIRECTIONS,
     DOFS,
     PeriodicMotion,
@@ -198,7 +198,7 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
     if exact and not approximations["averaged_operator"].resonant:
         import time
 
-        from foundation_calc.solvers.crank_exact import exact_periodic_solution
+        from foundation_calc.solvers.crank.exact import exact_periodic_solution
 
         start = time.perf_counter()
         sol = exact_periodic_solution(design)

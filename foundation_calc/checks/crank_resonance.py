@@ -1,6 +1,6 @@
 """Resonance check of a crank-mechanism foundation against the scene's required detuning.
 
-Each condition n·ω = p of :data:`~foundation_calc.solvers.crank_resonance.CONDITIONS` has two
+Each condition n·ω = p of :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` has two
 estimates of its critical speed: from the paper's zero-order operator and from the operator with
 the mechanism's time-averaged inertia. The margin is measured to the nearer of the two, so the
 verdict holds whichever estimate is used. A paper condition inside the band fails; an extra one
@@ -12,14 +12,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.solvers.crank_frequencies import (
+from foundation_calc.solvers.crank.frequencies import (
     NaturalFrequencies,
     averaged_inertia_frequencies,
     rocking_stability_margin,
     zero_order_frequencies,
 )
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_resonance import (
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.resonance import (
     CONDITIONS,
     ResonanceCondition,
     condition_margin,

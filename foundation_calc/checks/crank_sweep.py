@@ -14,11 +14,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.solvers.crank_closed_form import first_approximation_motion, varied
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_resonance import CONDITIONS, condition_margin, critical_speed
-from foundation_calc.solvers.crank_response import point_series
-from foundation_calc.solvers.trig_series import peak
+from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
+from foundation_calc.solvers.crank.response import point_series
+from foundation_calc.solvers.numerics.trig_series import peak
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -52,7 +52,7 @@ class SweepReport:
     peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
     resonant : no periodic solution of the first approximation (margin < 1e-6)
     margin : smallest relative distance from a resonance condition [-]
-    nearest : index into :data:`~foundation_calc.solvers.crank_resonance.CONDITIONS` of that one
+    nearest : index into :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` of that one
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
     over_limit : a displacement peak of C (x, y) or of a point exceeds ``amplitude_limit``
     status : one of :data:`STATUSES` per point

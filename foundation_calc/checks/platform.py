@@ -15,9 +15,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.solvers.platform_design import PlatformDesign
-from foundation_calc.solvers.platform_dynamics import Modes, natural_frequencies
-from foundation_calc.solvers.platform_verification import (
+from foundation_calc.solvers.platform.design import PlatformDesign
+from foundation_calc.solvers.platform.dynamics import Modes, natural_frequencies
+from foundation_calc.solvers.platform.verification import (
     PlatformModel,
     SensitivityRow,
     Verification,

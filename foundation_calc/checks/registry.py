@@ -6,10 +6,11 @@ document (SI units). The reason is a template whose ``{placeholders}`` are fille
 ``values`` (name -> (quantity, SI value)), so tables can show speeds in rpm or amplitudes in mm
 without any check knowing about display units.
 
-The functions here adapt the per-topic checks (``checks/crank_resonance.py`` ...) and reuse the
-JSON documents of the single-scene commands; they import those modules only when called, so
-``fcalc check`` loads the physics of the kinds it meets and nothing else. Adding a check to a
-kind is one function and one entry in :data:`CHECKS`.
+The functions here adapt the per-topic checks (``checks/crank_resonance.py`` ...); they import
+those modules only when called, so ``fcalc check`` loads the physics of the kinds it meets and
+nothing else. Each finding keeps the check's report, from which the output layer writes the same
+JSON document as the single-scene command. Adding a check to a kind is one function and one entry
+in :data:`CHECKS` (and its document in ``output/check_report.py``).
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ class Finding:
     outcome : pass, warn or fail
     reason : one line; ``{name}`` placeholders refer to ``values``
     values : name -> (quantity, value in SI units), quantity as in ``output.display_units``
-    document : the check's detailed JSON document (SI units)
+    report : the per-topic check's report (SI units), for the output layer's JSON document
     details : further lines (SI units) for the JUnit report and JSON, too long for the table
     """
 
@@ -39,14 +40,13 @@ class Finding:
     outcome: Outcome
     reason: str
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
-    document: Mapping[str, Any] = field(default_factory=dict)
+    report: Any = None
     details: tuple[str, ...] = ()
 
 
 def crank_resonance(scene) -> Finding:
     """Margin of the crank speed from every resonance (``fcalc resonance``)."""
     from foundation_calc.checks.crank_resonance import check_resonances
-    from foundation_calc.output.crank_resonance import resonance_document
 
     report = check_resonances(scene.design(), scene.limits.detuning)
     near = report.nearest
@@ -61,7 +61,7 @@ def crank_resonance(scene) -> Finding:
         bad = [row for row in report.rows if row.outcome is report.outcome]
         names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
         reason = f"speed {{speed}} is inside the {near.required:.0%} band of {names}"
-    return Finding("resonance", report.outcome, reason, values, _embedded(resonance_document(report, scene, "")))
+    return Finding("resonance", report.outcome, reason, values, report)
 
 
 #: Display quantity of each limited quantity of the amplitude check.
@@ -71,7 +71,6 @@ _AMPLITUDE_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "acc
 def crank_amplitudes(scene) -> Finding:
     """Steady-state peaks of C and the scene's points against [limits] (``fcalc amplitudes``)."""
     from foundation_calc.checks.crank_amplitudes import check_amplitudes
-    from foundation_calc.output.crank_amplitudes import amplitudes_document
 
     report = check_amplitudes(scene.design(), scene.limits, scene.points)
     approx = report.approximations[report.checked]
@@ -88,20 +87,18 @@ def crank_amplitudes(scene) -> Finding:
             f"largest peak {top.quantity} {{peak}} at {top.point} ({top.direction}) is {top.ratio:.0%}"
             f" of the limit {{limit}}"
         )
-    document = _embedded(amplitudes_document(report, scene, ""))
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
         if row.outcome is Outcome.PASS
         else f"FAIL {row.point} {row.direction} {row.quantity}: {row.value:.4g} > {row.limit:.4g} [SI]"
         for row in report.rows
     )
-    return Finding("amplitudes", report.outcome, reason, values, document, details)
+    return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 
 def platform_design(scene) -> Finding:
     """Design of the isolators and exciter, verified on the 6-DOF model (``fcalc platform``)."""
     from foundation_calc.checks.platform import check_platform
-    from foundation_calc.output.platform import platform_document
 
     report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
     shown = [f for f in report.findings if f.outcome is report.outcome]
@@ -110,16 +107,9 @@ def platform_design(scene) -> Finding:
     else:
         kinds = {Outcome.WARN: "warnings", Outcome.FAIL: "failures"}[report.outcome]
         reason = f"at {{speed}}: {kinds} from " + ", ".join(f.name for f in shown)
-    given_as = scene.operation.speed_given_as
-    document = _embedded(platform_document(report, scene, "", given_as))
     details = tuple(f"{f.outcome.value.upper()} {f.name}: {f.message}" for f in report.findings)
     values = {"speed": ("speed", report.design.omega)}
-    return Finding("design", report.outcome, reason, values, document, details)
-
-
-def _embedded(document: dict) -> dict:
-    """A single-scene command's JSON document without what the ``check`` document says once."""
-    return {k: v for k, v in document.items() if k not in ("schema_version", "command", "scene")}
+    return Finding("design", report.outcome, reason, values, report, details)
 
 
 #: scene kind -> {check name: function scene -> Finding}, in the order they are reported.

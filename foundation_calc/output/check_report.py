@@ -72,6 +72,27 @@ def _values_si(values) -> dict:
     }
 
 
+def result_document(check: str, report, scene) -> dict:
+    """The JSON document of the single-scene command behind ``check`` for its ``report`` on
+    ``scene``, without what the ``check`` document says once (schema version, command, scene);
+    empty for a check that did not run (``report`` is ``None``)."""
+    if report is None:
+        return {}
+    if check == "resonance":
+        from foundation_calc.output.crank_resonance import resonance_document
+
+        document = resonance_document(report, scene, "")
+    elif check == "amplitudes":
+        from foundation_calc.output.crank_amplitudes import amplitudes_document
+
+        document = amplitudes_document(report, scene, "")
+    else:
+        from foundation_calc.output.platform import platform_document
+
+        document = platform_document(report, scene, "", scene.operation.speed_given_as)
+    return {k: v for k, v in document.items() if k not in ("schema_version", "command", "scene")}
+
+
 def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
     """The JSON document of ``fcalc check`` (every number SI)."""
     return {
@@ -94,7 +115,7 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
                         "values": _values_si(run.values),
                         "problems": [{"field": loc, "message": msg} for loc, msg in run.problems],
                         "details": list(run.details),
-                        "result": dict(run.document),
+                        "result": result_document(run.check, run.report, scene.scene),
                     }
                     for run in scene.runs
                 ],

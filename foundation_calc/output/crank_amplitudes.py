@@ -7,8 +7,8 @@ from rich.table import Table
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
-from foundation_calc.solvers.crank_response import DIRECTIONS, DOFS
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
 
 UNITS = {"x": "m", "y": "m", "theta": "rad"}

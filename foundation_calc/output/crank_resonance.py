@@ -5,7 +5,7 @@ from __future__ import annotations
 from foundation_calc.checks.crank_resonance import ResonanceReport
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.solvers.crank_resonance import MODE_NAMES
+from foundation_calc.solvers.crank.resonance import MODE_NAMES
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
 

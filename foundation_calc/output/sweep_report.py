@@ -7,7 +7,7 @@ import io
 from pathlib import Path
 
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
-from foundation_calc.solvers.crank_resonance import CONDITIONS
+from foundation_calc.solvers.crank.resonance import CONDITIONS
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"

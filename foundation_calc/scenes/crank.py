@@ -13,7 +13,7 @@ from pydantic import ValidationInfo, field_validator, model_validator
 
 from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
-from foundation_calc.solvers.crank_mechanism import CrankDesign, lump_slider
+from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 
 #: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
 #: method of the paper is claimed to hold.

@@ -17,15 +17,15 @@ from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
-from foundation_calc.solvers.platform_design import (
+from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
     PlatformDesign,
     design_from_position,
     design_from_vertical,
     position_from_vertical,
 )
-from foundation_calc.solvers.platform_dynamics import block_inertia
-from foundation_calc.solvers.platform_verification import ExtraRotor, PlatformModel
+from foundation_calc.solvers.platform.dynamics import block_inertia
+from foundation_calc.solvers.platform.verification import ExtraRotor, PlatformModel
 
 #: The paper's worked example, used by ``fcalc platform`` when no scene is given.
 DEFAULT_SCENE = Path(__file__).with_name("defaults") / "platform.toml"

@@ -40,9 +40,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.crank_frequencies import zero_order_frequencies
-from foundation_calc.solvers.crank_resonance import CONDITIONS, relative_detuning
-from foundation_calc.solvers.crank_response import PeriodicMotion
+from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
+from foundation_calc.solvers.crank.resonance import CONDITIONS, relative_detuning
+from foundation_calc.solvers.crank.response import PeriodicMotion
 
 #: Relative distance |nω - p|/p below which a speed counts as resonant: the undamped periodic
 #: solution does not exist there (or is larger than anything the linear soil model can carry).

@@ -1,8 +1,8 @@
 """Check a platform design on the full 6-DOF model: amplitudes, rocking, tolerance sensitivity.
 
-The design formulas of :mod:`~foundation_calc.solvers.platform_design` make the platform move
+The design formulas of :mod:`~foundation_calc.solvers.platform.design` make the platform move
 purely translationally; this module builds the 6-DOF model of
-:mod:`~foundation_calc.solvers.platform_dynamics` for a design and measures what the paper
+:mod:`~foundation_calc.solvers.platform.dynamics` for a design and measures what the paper
 exists for: how uniformly the corners of the product vibrate.
 
 Rocking = max over the corners p of the product box of the peak of |Φ(t) × (p - r_c)|, i.e. the
@@ -16,8 +16,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.solvers.platform_design import PlatformDesign
-from foundation_calc.solvers.platform_dynamics import (
+from foundation_calc.solvers.platform.design import PlatformDesign
+from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
     Rotor,
     SteadyState,
@@ -158,7 +158,7 @@ def verify(design: PlatformDesign, model: PlatformModel, **changes) -> Verificat
     """Solve the 6-DOF model of ``design`` (``changes`` as for :func:`build`) and measure it.
 
     >>> import math
-    >>> from foundation_calc.solvers.platform_design import design_from_position
+    >>> from foundation_calc.solvers.platform.design import design_from_position
     >>> d = design_from_position(2e4, 25.0, 0.2, 1e-3, 50 * math.pi, 1.5, 1.0, 0.65, 3.0, 2.0,
     ...                          -1.0, 9.81, 0.0, 0.0, 1e8, (0.5,) * 4)
     >>> v = verify(d, PlatformModel((9.5e3, 1.8e4, 2.2e4), 0.0, 1.3))

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.crank_mechanism import CrankDesign
+from foundation_calc.solvers.crank.mechanism import CrankDesign
 
 
 @dataclass(frozen=True)

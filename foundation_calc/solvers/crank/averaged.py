@@ -2,7 +2,7 @@
 
 An improvement of the paper's first approximation ([1]_, Eqs. (4.11)-(4.14)) at the same cost
 class (microseconds to a millisecond): the exact equations of
-:mod:`~foundation_calc.solvers.crank_dynamics` are linearised about the static position,
+:mod:`~foundation_calc.solvers.crank.dynamics` are linearised about the static position,
 
     r(q, q', q'', t) ≈ r0(t) + K(t) q + C(t) q' + M(t) q'',
 
@@ -31,12 +31,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.crank_dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank_first_approximation import RESONANT_MARGIN
-from foundation_calc.solvers.crank_frequencies import require_stable_rocking
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import PeriodicMotion
-from foundation_calc.solvers.trig_series import analyse, phases
+from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.frequencies import require_stable_rocking
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import PeriodicMotion
+from foundation_calc.solvers.numerics.trig_series import analyse, phases
 
 #: Samples of one revolution for the forcing's Fourier coefficients, and the harmonics kept.
 FORCING_SAMPLES = 256
@@ -85,7 +85,7 @@ class AveragedResponse:
     natural : natural frequencies of (K̄, M̄) [rad/s], ascending (3,)
     margin : smallest relative distance |nω - p|/p over harmonics and modes [-]
     nearest : (n, index of the mode in ``natural``) of that smallest margin
-    resonant : margin < :data:`~foundation_calc.solvers.crank_first_approximation.RESONANT_MARGIN`
+    resonant : margin < :data:`~foundation_calc.solvers.crank.first_approximation.RESONANT_MARGIN`
     mass, damping, stiffness : the averaged matrices (3, 3), order x, y, θ
     """
 
@@ -107,7 +107,7 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
     PhysicsError
         when the foundation is unstable in rocking.
 
-    >>> from foundation_calc.solvers.crank_mechanism import lump_slider
+    >>> from foundation_calc.solvers.crank.mechanism import lump_slider
     >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7, omega=31.4159,
     ...                 r=0.3, l=1.2, a=2.0, rod=lump_slider(1.5e3, 1.2, 1.0, 0.35, 0.0),
     ...                 drive_on_foundation=True, g=9.81)

@@ -1,7 +1,7 @@
 """Periodic steady state by time integration: shooting with scipy's ``solve_ivp``.
 
 What an engineer without the closed forms would write, kept as a yardstick for ``fcalc bench``:
-the exact equations of :mod:`~foundation_calc.solvers.crank_dynamics` are written as a first-order
+the exact equations of :mod:`~foundation_calc.solvers.crank.dynamics` are written as a first-order
 system s = (q, q'), q = (x, y, θ), and integrated over one period T = 2π/ω with an explicit
 Runge-Kutta method (DOP853). The periodic orbit is the root of
 
@@ -24,11 +24,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError
-from foundation_calc.solvers.crank_dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank_frequencies import require_stable_rocking
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import PeriodicMotion
-from foundation_calc.solvers.trig_series import analyse, phases
+from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
+from foundation_calc.solvers.crank.frequencies import require_stable_rocking
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import PeriodicMotion
+from foundation_calc.solvers.numerics.trig_series import analyse, phases
 
 #: Relative tolerance of the Runge-Kutta integration (DOP853).
 RTOL = 1e-10

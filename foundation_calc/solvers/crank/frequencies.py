@@ -26,7 +26,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.crank_mechanism import (
+from foundation_calc.solvers.crank.mechanism import (
     mean_cos_psi,
     mean_position_v,
     mean_square_distance,
@@ -130,7 +130,7 @@ def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, g, m, a, r, l, l1,
 
         M_xx = M_tot,  M_xθ = m (a - l' ⟨cos ψ⟩),  M_θθ = I_c + m (ρ² + ⟨|p|²⟩)
 
-    with ⟨|p|²⟩ from :func:`~foundation_calc.solvers.crank_mechanism.mean_square_distance`;
+    with ⟨|p|²⟩ from :func:`~foundation_calc.solvers.crank.mechanism.mean_square_distance`;
     the vertical mass stays M_tot exactly, so k0 is unchanged. p² are the roots of
     det(K - p² M) = 0 with K the soil stiffness matrix of (3.2)-(3.4).
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.trig_series import analyse, derivative, peak, sample
+from foundation_calc.solvers.numerics.trig_series import analyse, derivative, peak, sample
 
 #: Degrees of freedom in the order of the first axis of :class:`PeriodicMotion` arrays.
 DOFS = ("x", "y", "theta")

@@ -1,6 +1,6 @@
 """Exact periodic steady state of the crank-mechanism foundation by harmonic balance.
 
-Solves the full nonlinear equations of :mod:`~foundation_calc.solvers.crank_dynamics` (no
+Solves the full nonlinear equations of :mod:`~foundation_calc.solvers.crank.dynamics` (no
 small-parameter expansion) for the T-periodic motion, T = 2π/ω:
 
 1. x, y, θ are truncated Fourier series with harmonics 0 ... K; the residual of the equations
@@ -22,11 +22,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError
-from foundation_calc.solvers.crank_averaged import averaged_response
-from foundation_calc.solvers.crank_dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import DOFS, PeriodicMotion
-from foundation_calc.solvers.trig_series import basis, phases
+from foundation_calc.solvers.crank.averaged import averaged_response
+from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import DOFS, PeriodicMotion
+from foundation_calc.solvers.numerics.trig_series import basis, phases
 
 #: Relative change of the solution, from K to 2K harmonics, below which the series is accepted.
 HARMONIC_TOLERANCE = 1e-10

@@ -1,9 +1,9 @@
 """The corrected first approximation applied to a :class:`CrankDesign`, for one design or a million.
 
-:func:`~foundation_calc.solvers.crank_first_approximation.first_approximation` takes the paper's
+:func:`~foundation_calc.solvers.crank.first_approximation.first_approximation` takes the paper's
 symbols; this module feeds it a design (whose fields may be numpy arrays: a speed sweep, a soil
 sweep, a batch of random designs) and turns its coefficients into a
-:class:`~foundation_calc.solvers.crank_response.PeriodicMotion`, so that peaks, points and
+:class:`~foundation_calc.solvers.crank.response.PeriodicMotion`, so that peaks, points and
 errors are computed the same way for every method. Arithmetic only: no Python object per design.
 """
 
@@ -13,9 +13,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from foundation_calc.solvers.crank_first_approximation import FirstApproximation, first_approximation
-from foundation_calc.solvers.crank_mechanism import CrankDesign
-from foundation_calc.solvers.crank_response import PeriodicMotion
+from foundation_calc.solvers.crank.first_approximation import FirstApproximation, first_approximation
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.response import PeriodicMotion
 
 
 def design_first_approximation(design: CrankDesign) -> FirstApproximation:
@@ -23,7 +23,7 @@ def design_first_approximation(design: CrankDesign) -> FirstApproximation:
 
     ``g* = g`` when the motor's reaction acts on the foundation, 0 otherwise (the paper's (3.7)).
 
-    >>> from foundation_calc.solvers.crank_mechanism import lump_slider
+    >>> from foundation_calc.solvers.crank.mechanism import lump_slider
     >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7,
     ...                 omega=np.array([31.41592653589793, 40.0]), r=0.3, l=1.2, a=2.0,
     ...                 rod=lump_slider(1.5e3, 1.2, 1.0, 0.35, 0.0), drive_on_foundation=True, g=9.81)

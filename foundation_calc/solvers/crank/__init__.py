@@ -1,0 +1,1 @@
+"""Foundation of a crank-slider mechanism (Krichever & Makarov): frequencies, resonances, response."""

@@ -1,0 +1,1 @@
+"""Numerics shared by the problems: trigonometric series, their peaks and harmonic balance helpers."""

@@ -1,0 +1,114 @@
+"""The package's dependencies run one way: cli → output/benchmarks → checks → scenes → solvers →
+units/errors. Every import of every module (function-level ones included) is parsed and an import
+from a higher layer fails the test, so the rule in the README's Architecture section stays true.
+Inside ``solvers`` the problems (crank, platform) do not import each other, and the shared
+``numerics`` and ``soil`` packages import neither problem."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).resolve().parents[1] / "foundation_calc"
+
+#: Rank of each layer: a module may import modules of its own rank or lower.
+LAYER_RANK = {
+    "units": 0,
+    "errors": 0,
+    "solvers": 1,
+    "scenes": 2,
+    "checks": 3,
+    "output": 4,
+    "benchmarks": 4,
+    "cli": 5,
+    "__main__": 6,
+}
+#: Solver packages that may be imported only by themselves and layers above ``solvers``.
+PROBLEMS = {"crank", "platform"}
+SHARED_SOLVERS = {"numerics", "soil", "constants"}
+
+
+def _module_name(path: Path) -> str:
+    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path: Path, module: str | None = None) -> list[tuple[int, str]]:
+    """``(line, absolute module name)`` of every foundation_calc import in the file at ``path``,
+    whose own dotted name is ``module`` (derived from the path inside the package by default)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    module = module or _module_name(path)
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [(node.lineno, alias.name) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                anchor = package.split(".")
+                anchor = anchor[: len(anchor) - node.level + 1]
+                base = ".".join(anchor + ([base] if base else []))
+            found.append((node.lineno, base))
+    return [(line, name) for line, name in found if name.split(".")[0] == "foundation_calc"]
+
+
+def _layer(module: str) -> str | None:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else None
+
+
+MODULES = sorted(PACKAGE.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_no_upward_import(path: Path) -> None:
+    here = _layer(_module_name(path))
+    if here is None:  # foundation_calc/__init__.py: metadata only
+        assert not _imports(path), "the package root must not import its layers"
+        return
+    assert here in LAYER_RANK, f"{path}: module outside every layer; add it to LAYER_RANK"
+    for line, target in _imports(path):
+        there = _layer(target)
+        if there is None:
+            continue
+        assert there in LAYER_RANK, f"{path}:{line} imports {target}, outside every layer"
+        assert LAYER_RANK[there] <= LAYER_RANK[here], (
+            f"{path.relative_to(PACKAGE)}:{line} ({here}) imports {target} ({there}), a layer above it"
+        )
+
+
+@pytest.mark.parametrize(
+    "path", sorted((PACKAGE / "solvers").rglob("*.py")), ids=lambda p: str(p.relative_to(PACKAGE))
+)
+def test_solver_problems_stay_apart(path: Path) -> None:
+    parts = _module_name(path).split(".")
+    own = parts[2] if len(parts) > 2 else None
+    for line, target in _imports(path):
+        tparts = target.split(".")
+        if len(tparts) < 3 or tparts[1] != "solvers":
+            continue
+        other = tparts[2]
+        if other in PROBLEMS and other != own:
+            assert own not in SHARED_SOLVERS | PROBLEMS, (
+                f"{path.relative_to(PACKAGE)}:{line} imports {target}: the problems and the "
+                "shared solver packages must not depend on another problem"
+            )
+
+
+def test_layers_cover_the_package() -> None:
+    """Every top-level module or package of foundation_calc sits in a layer."""
+    names = {p.stem for p in PACKAGE.glob("*.py")} | {p.name for p in PACKAGE.iterdir() if p.is_dir()}
+    names -= {"__init__", "__pycache__", "py.typed"}
+    assert names <= set(LAYER_RANK), f"outside every layer: {sorted(names - set(LAYER_RANK))}"
+
+
+def test_an_upward_import_is_caught(tmp_path: Path) -> None:
+    """The parser sees a function-level import (the way the CLI defers heavy modules)."""
+    module = tmp_path / "m.py"
+    module.write_text("def f():\n    from foundation_calc.output.console import x\n")
+    assert _imports(module, "foundation_calc.solvers.m") == [(2, "foundation_calc.output.console")]
+    module.write_text("from ..output import console\n")
+    assert _imports(module, "foundation_calc.solvers.m") == [(1, "foundation_calc.output")]
