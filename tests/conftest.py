@@ -26,5 +26,5 @@ def runner() -> CliRunner:
 
 @pytest.fixture
 def frame_saw() -> dict:
-    """A fresh copy of configs/frame_saw.toml as a dict, to modify in a test."""
-    return copy.deepcopy(read_toml(CONFIGS / "frame_saw.toml"))
+    """A fresh copy of configs/frame_saw_extra_resonance.toml as a dict, to modify in a test."""
+    return copy.deepcopy(read_toml(CONFIGS / "frame_saw_extra_resonance.toml"))

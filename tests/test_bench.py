@@ -22,7 +22,7 @@ from foundation_calc.solvers.crank.response import motion_peaks
 from foundation_calc.solvers.crank.shooting import shooting_solution
 from tests.conftest import CONFIGS
 
-SCENE = CONFIGS / "frame_saw.toml"
+SCENE = CONFIGS / "frame_saw_extra_resonance.toml"
 
 
 @cache

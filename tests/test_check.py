@@ -12,6 +12,7 @@ import tomli_w
 from foundation_calc.checks import registry
 from foundation_calc.cli.app import app
 from foundation_calc.output.console import stdout
+from foundation_calc.scenes import read_toml
 from tests.conftest import CONFIGS, configs_of_kind
 
 GOOD = sorted(CONFIGS.glob("*.toml"))
@@ -113,12 +114,16 @@ def test_table_lists_every_scene(runner, quick_checks, mixed_folder, monkeypatch
         assert name in text
 
 
-def test_strict_makes_warnings_fail_like_the_single_commands(runner, quick_checks):
+def test_strict_makes_warnings_fail_like_the_single_commands(runner, quick_checks, tmp_path):
     platform = CONFIGS / "platform_explicit_vertical.toml"  # warns (exciter height), fails nothing
     assert _invoke(runner, platform).exit_code == 0
     assert _invoke(runner, platform, "--strict").exit_code == 1
     assert runner.invoke(app, ["platform", str(platform), "--strict"]).exit_code == 1
-    crank = CONFIGS / "frame_saw.toml"  # resonance warns: extra resonance 2ω = p1 within the band
+    scene = read_toml(CONFIGS / "frame_saw.toml")
+    scene["mechanism"]["speed_rpm"] = 410  # extra resonances only: 4ω = k0 11.7 %, 2ω = p1 18.4 % away
+    crank = tmp_path / "frame_saw_410rpm.toml"
+    crank.write_text(tomli_w.dumps(scene))
+    assert runner.invoke(app, ["resonance", str(crank)]).exit_code == 0
     assert runner.invoke(app, ["resonance", str(crank), "--strict"]).exit_code == 1
     doc = json.loads(_invoke(runner, crank, "--strict", "--json").stdout)
     assert doc["strict"] and doc["scenes"][0]["checks"][0]["verdict"] == "fail"
@@ -134,7 +139,7 @@ def test_crash_in_one_check_is_internal_and_others_still_run(runner, monkeypatch
     checks = {**registry.CHECKS["crank_foundation"], "boom": broken}
     monkeypatch.setitem(registry.CHECKS, "crank_foundation", checks)
     report = tmp_path / "junit.xml"
-    result = _invoke(runner, CONFIGS / "frame_saw.toml", CONFIGS / "crank_press.toml", "--junit", report)
+    result = _invoke(runner, CONFIGS / "frame_saw_extra_resonance.toml", CONFIGS / "crank_press.toml", "--junit", report)
     assert result.exit_code == 4
     assert "Traceback" not in result.output
     root = ET.parse(report).getroot()
@@ -158,7 +163,7 @@ def test_no_scene_files_is_a_usage_error(runner, tmp_path):
 
 def test_units_in_table_and_json_stays_si(runner, quick_checks, monkeypatch):
     monkeypatch.setattr(stdout(), "width", 250)
-    scene = CONFIGS / "frame_saw.toml"  # 300 rpm = 31.416 rad/s = 5 Hz
+    scene = CONFIGS / "frame_saw_extra_resonance.toml"  # 300 rpm = 31.416 rad/s = 5 Hz
     assert "300 rpm" in _invoke(runner, scene, "--units", "rpm").stdout
     assert "5 Hz" in _invoke(runner, scene, "--units", "mm,Hz").stdout
     assert "31.416 rad/s" in _invoke(runner, scene).stdout
@@ -188,7 +193,7 @@ def test_unwritable_junit_path_is_not_a_crash(runner, quick_checks, tmp_path):
 def test_resonance_tables_follow_units(runner, monkeypatch):
     """`fcalc resonance --units`: critical speeds in the chosen unit; JSON unchanged (SI)."""
     monkeypatch.setattr(stdout(), "width", 250)
-    scene = str(CONFIGS / "frame_saw.toml")
+    scene = str(CONFIGS / "frame_saw_extra_resonance.toml")
     si = runner.invoke(app, ["resonance", scene])
     hz = runner.invoke(app, ["resonance", scene, "--units", "Hz"])
     assert "rad/s, avg. inertia" in si.stdout and "Hz, avg. inertia" in hz.stdout

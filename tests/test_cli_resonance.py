@@ -10,7 +10,7 @@ import pytest
 from foundation_calc.cli.app import app
 from tests.conftest import configs_of_kind
 
-EXPECTED_EXIT = {"compressor_near_resonance.toml": 1}
+EXPECTED_EXIT = {"compressor_near_resonance.toml": 1, "frame_saw_extra_resonance.toml": 1}
 
 
 @pytest.mark.parametrize("config", configs_of_kind("crank_foundation"), ids=lambda p: p.name)
@@ -52,7 +52,7 @@ def test_help_documents_exit_codes(runner):
 def test_usage_error_exits_2(runner):
     result = runner.invoke(app, ["resonance"])
     assert result.exit_code == 2
-    result = runner.invoke(app, ["resonance", "configs/frame_saw.toml", "--no-such-flag"])
+    result = runner.invoke(app, ["resonance", "configs/frame_saw_extra_resonance.toml", "--no-such-flag"])
     assert result.exit_code == 2
 
 
@@ -71,7 +71,7 @@ def test_internal_error_exits_4_without_traceback(runner, monkeypatch):
         raise ZeroDivisionError("simulated")
 
     monkeypatch.setattr(mod, "check_resonances", boom)
-    result = runner.invoke(app, ["resonance", "configs/frame_saw.toml"])
+    result = runner.invoke(app, ["resonance", "configs/frame_saw_extra_resonance.toml"])
     assert result.exit_code == 4
     assert "internal error" in result.stderr and "Traceback" not in result.stderr
 
@@ -83,6 +83,6 @@ def test_closed_pipe_ends_quietly_with_141(runner, monkeypatch):
         raise BrokenPipeError(32, "Broken pipe")
 
     monkeypatch.setattr(out, "resonance_document", closed)
-    result = runner.invoke(app, ["resonance", "configs/frame_saw.toml", "--json"])
+    result = runner.invoke(app, ["resonance", "configs/frame_saw_extra_resonance.toml", "--json"])
     assert result.exit_code == 141
     assert "internal error" not in result.stderr

@@ -249,7 +249,7 @@ def test_three_omega_equal_k0_is_a_weak_resonance_of_the_exact_equations():
     from foundation_calc.solvers.crank.exact import exact_periodic_solution
     from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
 
-    d = load_scene("configs/frame_saw.toml").design()
+    d = load_scene("configs/frame_saw_extra_resonance.toml").design()
     k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g).k0
     ratios = []
     for offset in (1e-4, 1e-3):

@@ -18,7 +18,7 @@ CONFIGS = sorted(
 )
 
 
-BASE = Path(__file__).parent.parent / "configs" / "frame_saw.toml"
+BASE = Path(__file__).parent.parent / "configs" / "frame_saw_extra_resonance.toml"
 
 
 def run(*args):

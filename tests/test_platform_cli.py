@@ -24,9 +24,13 @@ def _finite(node):
     return not isinstance(node, float) or math.isfinite(node)
 
 
-def _run_json(runner, args):
+#: Shipped scenes that fail on purpose, one per failure mode (README, "Shipped examples").
+DELIBERATELY_FAILING = {"platform_thin_regime_margin.toml", "platform_translation_mode_near_speed.toml"}
+
+
+def _run_json(runner, args, exit_code=0):
     result = runner.invoke(app, args)
-    assert result.exit_code == 0, result.stderr
+    assert result.exit_code == exit_code, result.stderr
     assert result.stderr == ""
     doc = json.loads(result.stdout)
     assert doc["command"] == "platform" and _finite(doc)
@@ -62,12 +66,13 @@ def test_acceptance_commands_reproduce_the_corrected_example(runner, omega, expe
 
 @pytest.mark.parametrize("config", configs_of_kind("platform"), ids=lambda p: p.name)
 def test_every_platform_config(runner, config):
-    doc = _run_json(runner, ["platform", str(config), "--json"])
-    assert doc["verdict"] in {"pass", "warn"}
+    failing = config.name in DELIBERATELY_FAILING
+    doc = _run_json(runner, ["platform", str(config), "--json"], 1 if failing else 0)
+    assert doc["verdict"] == "fail" if failing else doc["verdict"] in {"pass", "warn"}
     if not read_toml(config)["isolators"].get("loss_factor"):
         assert doc["verification"]["rocking_percent"] < 1e-9
     table = runner.invoke(app, ["platform", str(config)])
-    assert table.exit_code == 0 and table.stderr == ""
+    assert table.exit_code == (1 if failing else 0) and table.stderr == ""
     for text in ("rad/s", "Hz", "rpm", "N/m", "% of u", "Sensitivity"):
         assert text in table.stdout
 

@@ -3,15 +3,16 @@
 Each condition n·ω = p of :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` has two
 estimates of its critical speed: from the paper's zero-order operator and from the operator with
 the mechanism's time-averaged inertia. The margin is measured to the nearer of the two, so the
-verdict holds whichever estimate is used. A paper condition inside the band fails; an extra one
-warns.
+verdict holds whichever estimate is used. The verdict follows the rule shared by every scene kind
+(:func:`~foundation_calc.checks.outcomes.resonance_outcome`): a paper condition (the mechanism
+drives it at first order) fails inside the band; an extra one warns there and fails within 5 %.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.checks.outcomes import Outcome, resonance_outcome, worst
 from foundation_calc.solvers.crank.frequencies import (
     NaturalFrequencies,
     averaged_inertia_frequencies,
@@ -90,10 +91,7 @@ def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
         w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
         w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
         margin = condition_margin(d.omega, zero, averaged, cond)
-        if margin >= detuning:
-            outcome = Outcome.PASS
-        else:
-            outcome = Outcome.FAIL if cond.source == "paper" else Outcome.WARN
+        outcome = resonance_outcome(margin, detuning, driven=cond.source == "paper")
         rows.append(ResonanceRow(cond, w0, w1, margin, detuning, outcome))
     return ResonanceReport(
         design=design,

@@ -28,6 +28,35 @@ def worst(outcomes: Iterable[Outcome]) -> Outcome:
     return max(outcomes, key=_RANK.__getitem__, default=Outcome.PASS)
 
 
+#: Relative distance of the operating speed from any natural frequency inside which a design
+#: fails whatever the mode [-]: within 5 % the smallest build tolerance (a 1 % stiffness error
+#: moves a frequency by 0.5 %) or a few percent of speed drift reaches the resonance.
+RESONANCE_FAIL_MARGIN = 0.05
+
+
+def resonance_outcome(margin: float, detuning: float, driven: bool) -> Outcome:
+    """The verdict rule of every scene kind for one resonance (README, "Verdicts").
+
+    A mode the design drives (platform: the two translations; crank foundation: the paper's
+    conditions ω = k0, 2ω = k0, ω = p1,2, 3ω = p1,2) fails inside the detuning band; any mode
+    fails within :data:`RESONANCE_FAIL_MARGIN`; any other mode inside the band warns.
+
+    Parameters
+    ----------
+    margin : relative distance of the speed from the resonance, |ω - ω_c|/ω_c [-]
+    detuning : required relative distance, the scene's ``[limits] detuning`` [-]
+    driven : whether the design's own excitation drives this mode
+
+    >>> [resonance_outcome(m, 0.2, d).value for m, d in ((0.15, True), (0.15, False), (0.04, False), (0.3, True))]
+    ['fail', 'warn', 'fail', 'pass']
+    """
+    if margin < RESONANCE_FAIL_MARGIN or (driven and margin < detuning):
+        return Outcome.FAIL
+    if margin < detuning:
+        return Outcome.WARN
+    return Outcome.PASS
+
+
 def exit_code(outcome: Outcome, strict: bool = False) -> ExitCode:
     """Exit code of a run whose worst outcome is ``outcome``."""
     if outcome is Outcome.FAIL or (strict and outcome is Outcome.WARN):

@@ -86,9 +86,11 @@ class Limits(SceneModel):
     amplitude: float | None = quantity(
         "u_max", "m", "largest allowed displacement amplitude of any reported point", None, gt=0
     )
-    velocity: float | None = quantity("v_max", "m/s", "largest allowed velocity amplitude", None, gt=0)
+    velocity: float | None = quantity(
+        "v_max", "m/s", "largest allowed velocity amplitude", None, gt=0, examples=[5.0e-3]
+    )
     acceleration: float | None = quantity(
-        "a_max", "m/s²", "largest allowed acceleration amplitude", None, gt=0
+        "a_max", "m/s²", "largest allowed acceleration amplitude", None, gt=0, examples=[0.3]
     )
     detuning: float = quantity(
         "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
@@ -98,9 +100,13 @@ class Limits(SceneModel):
 class Point(SceneModel):
     """A point of the foundation whose vibration the norms limit (edge of the block, a bearing)."""
 
-    name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80)
-    horizontal: float = quantity("u", "m", "horizontal position from the centre of mass C, positive in +x")
-    height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)")
+    name: str = quantity(
+        "-", "-", "label shown in reports", min_length=1, max_length=80, examples=["top edge, machine side"]
+    )
+    horizontal: float = quantity(
+        "u", "m", "horizontal position from the centre of mass C, positive in +x", examples=[2.5]
+    )
+    height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
 
 
 class CrankScene(SceneModel):

@@ -38,9 +38,9 @@ Positive = Annotated[float, Field(gt=0)]
 Fraction = Annotated[float, Field(gt=0, lt=1)]
 
 
-def _vector(symbol: str, unit: str, text: str, n: int, default=...):
+def _vector(symbol: str, unit: str, text: str, n: int, default=..., **extra):
     """A fixed-length list field whose description reads ``"symbol [unit]: text"``."""
-    return Field(default, description=f"{symbol} [{unit}]: {text}", min_length=n, max_length=n)
+    return Field(default, description=f"{symbol} [{unit}]: {text}", min_length=n, max_length=n, **extra)
 
 
 class Platform(SceneModel):
@@ -52,10 +52,10 @@ class Platform(SceneModel):
     cog: list[float] = _vector("(ξ, η, ζ)", "m", "centre of mass from corner O1, platform frame", 3)
     inertia: list[Positive] | None = _vector(
         "(J_x, J_y, J_z)", "kg m²", "central principal moments along x', y', z' (optional: else a"
-        " homogeneous block A × B × product_height is assumed)", 3, None
+        " homogeneous block A × B × product_height is assumed)", 3, None, examples=[[9.0e3, 1.7e4, 2.2e4]]
     )
     product_height: float | None = quantity(
-        "H", "m", "height of the product box whose corners are checked (default 2ζ)", None, gt=0
+        "H", "m", "height of the product box whose corners are checked (default 2ζ)", None, gt=0, examples=[1.3]
     )
 
 
@@ -86,7 +86,8 @@ class Isolators(SceneModel):
         "K", "N/m", "c33 = K and (c23 + c43)/2 = K (the paper's c23 = c33 = c43 = K when centred)", None, gt=0
     )
     vertical: list[Positive] | None = _vector(
-        "(c13, c23, c33, c43)", "N/m", "explicit vertical stiffnesses; a, b then follow from (3.9)-(3.10)", 4, None
+        "(c13, c23, c33, c43)", "N/m", "explicit vertical stiffnesses; a, b then follow from (3.9)-(3.10)", 4, None,
+        examples=[[1.005e8, 1.0e8, 1.0e8, 1.0e8]],
     )
     horizontal_split: list[Fraction] = _vector(
         "(s1, s3, s4, s2)", "-", "shares c11/(c11+c21), c31/(c31+c41), c12/(c12+c42), c22/(c22+c32)",
@@ -105,9 +106,11 @@ class Isolators(SceneModel):
 class ExtraExciter(SceneModel):
     """An additional rotor, for verification only (the design places the main exciter)."""
 
-    rotor_mass: float = quantity("m_j", "kg", "rotor mass", gt=0)
-    eccentricity: float = quantity("l_j", "m", "distance from the axis to the rotor's centre of mass", gt=0)
-    position: list[float] = _vector("(a_j, b_j, c_j)", "m", "axis point in the platform frame", 3)
+    rotor_mass: float = quantity("m_j", "kg", "rotor mass", gt=0, examples=[6.0])
+    eccentricity: float = quantity(
+        "l_j", "m", "distance from the axis to the rotor's centre of mass", gt=0, examples=[0.1]
+    )
+    position: list[float] = _vector("(a_j, b_j, c_j)", "m", "axis point in the platform frame", 3, examples=[[2.0, 0.5, 0.3]])
     axis: list[float] = _vector("(δ1, δ2)", "rad", "axis angles of Eq. (1.3); (0, 0) is vertical", 2, [0.0, 0.0])
     speed_ratio: float = quantity(
         "ω_j/ω", "-", "signed speed as a multiple of the operating speed (-1: counter-rotating)", 1.0

@@ -5,12 +5,13 @@ completed with the model's defaults. tomli-w writes the values; the comments are
 from the pydantic field descriptions (``"symbol [unit]: text"``) and constraints, so the
 template, the JSON schema and the error messages read the same source. Keys that are unset in
 the example (optional keys, alternatives such as the other two ways of giving the speed) are
-written commented out, with the equivalent value where there is one.
+written commented out, with the equivalent value where there is one and otherwise the field's
+example value, so that every commented-out key is valid TOML when uncommented.
 
 >>> text = scene_template("crank_foundation")
 >>> "mass = 100000.0" in text and "# M [kg]: block and machine frame" in text
 True
->>> "# omega = 31.4159" in text  # the example gives speed_rpm = 300
+>>> "# omega = 26.1799" in text  # the example gives speed_rpm = 250
 True
 """
 
@@ -97,8 +98,9 @@ def _section(model: type[BaseModel], values: dict | None, header: str, lines: li
         if value is None or off:
             default = None if info.is_required() else info.get_default(call_default_factory=True)
             shown = alternatives.get(key, value if value is not None else default)
-            placeholder = _value_line(key, shown) if shown is not None else f"{key} = ..."
-            lines.append(f"# {placeholder}")
+            if shown is None:
+                shown = info.examples[0]  # every optional or nested field carries one
+            lines.append(f"# {_value_line(key, shown)}")
         else:
             lines.append(_value_line(key, value))
     for key, nested, is_list in tables:

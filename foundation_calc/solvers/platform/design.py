@@ -41,6 +41,12 @@ REGIME_SIGN = {"below": 1.0, "above": -1.0}
 #: Relative distance |c0 - Mω²| / (Mω²) under which (3.11) is treated as singular.
 SINGULAR_C0 = 1e-9
 
+#: How far from the platform's corner O1 the exciter's axis point (a, b, c) may lie, in units of
+#: the platform's larger side max(A, B) [-]. An exciter sits on or inside the structure it
+#: drives; ten platform lengths away is no machine, only the sign of a unit typed wrongly (mm as
+#: m) or of a design next to the singularity c0 = M ω² of (3.11).
+EXCITER_REACH = 10.0
+
 #: Names of the horizontal pair sums, in the order returned by :func:`horizontal_sums`.
 HORIZONTAL_SUMS = ("c11+c21", "c31+c41", "c12+c42", "c22+c32")
 
@@ -295,8 +301,8 @@ def require_positive_c0(M, m, l, u, omega, sigma, c0) -> None:
     if _any(c0 <= 0.0):
         u_min = m * l / (M + m)
         raise PhysicsError(
-            f"c0 = c1 = c2 = {_first(c0):.6g} N/m is not positive: above resonance the amplitude"
-            f" cannot exceed m l / M_Σ = {u_min:.6g} m at any stiffness",
+            f"c0 = c1 = c2 = {_first(c0):.6g} N/m is not positive: above resonance (3.14) gives"
+            f" c0 = M_Σ ω² (1 - m l/(M_Σ u)), so the amplitude u must exceed m l / M_Σ = {u_min:.6g} m",
             field="operation.amplitude",
             hint=f"require u > {u_min:.6g} m, or choose regime = \"below\"",
         )
@@ -307,6 +313,87 @@ def require_positive_c0(M, m, l, u, omega, sigma, c0) -> None:
             " infinite; above resonance this happens at u = l",
             field="operation.amplitude",
             hint=f"move u away from the eccentricity l = {np.max(l):.6g} m",
+        )
+
+
+def amplitude_for_margin(M, m, l, sigma, margin):
+    """Largest amplitude u [m] whose design keeps the speed ``margin`` away from the
+    translational resonance p = sqrt(c0/M_Σ); any smaller u keeps it farther.
+
+    From (3.14), (p/ω)² = 1 + σ q with q = m l/(M_Σ u). Above resonance (σ = -1) the margin
+    ω/p - 1 = 1/sqrt(1 - q) - 1 grows with q; below (σ = +1) 1 - ω/p = 1 - 1/sqrt(1 + q) does
+    too. So a smaller u (or a larger unbalance m l) moves the resonance away, and the margin d is
+    reached at q = 1 - 1/(1 + d)² above and q = 1/(1 - d)² - 1 below (d < 1).
+
+    >>> round(amplitude_for_margin(2e4, 25.0, 0.2, -1.0, 0.2) * 1e3, 4)
+    0.8172
+    """
+    q = 1.0 - 1.0 / (1.0 + margin) ** 2 if sigma < 0 else 1.0 / (1.0 - margin) ** 2 - 1.0
+    return m * l / ((M + m) * q)
+
+
+def _amplitudes_for_height(d: "PlatformDesign", reach: float) -> str:
+    """Amplitudes u > 0 for which (3.11) with (3.14) puts the exciter within |c| <= ``reach``.
+
+    c is a linear-fractional function of c0, and c0 of 1/u, so c(u) = ±reach has one root each:
+    c0 = (ω² g M_Σ - M ω⁴ ζ ± reach M ω⁴)/(±reach ω² + g), u = σ m l ω²/(c0 - M_Σ ω²). Between
+    these roots and the pole u = l (above resonance) c(u) is monotonic, so testing one point of
+    each interval finds the amplitudes that work.
+    """
+    M, m, l, w2, zeta, g, sg = d.M, d.m, d.l, d.omega**2, d.zeta, d.g, d.sigma
+    Ms = M + m
+
+    def height(u):
+        return exciter_height(M, m, d.omega, zeta, summed_stiffness(M, m, l, u, d.omega, sg), g)
+
+    cuts = [-sg * l] if sg < 0 else []
+    for target in (reach, -reach):
+        c0 = (w2 * g * Ms - M * w2 * w2 * zeta + target * M * w2 * w2) / (target * w2 + g)
+        if c0 != Ms * w2:
+            cuts.append(sg * m * l * w2 / (c0 - Ms * w2))
+    edges = [0.0] + sorted(u for u in cuts if u > 0.0) + [float("inf")]
+    spans = []
+    for lo, hi in zip(edges, edges[1:]):
+        probe = 2.0 * lo + 1.0 if hi == float("inf") else (lo + hi) / 2.0
+        if abs(height(probe)) <= reach:
+            if hi == float("inf"):
+                spans.append(f"u > {lo:.6g} m")
+            else:
+                spans.append(f"{lo:.6g} m < u < {hi:.6g} m" if lo > 0.0 else f"u < {hi:.6g} m")
+    return " or ".join(spans) or "no amplitude u"
+
+
+def require_buildable_position(d: "PlatformDesign", position_given: bool) -> None:
+    """Raise :class:`PhysicsError` when the exciter's axis point (a, b, c) lies more than
+    :data:`EXCITER_REACH` × max(A, B) from the corner O1: no real machine has it there.
+
+    The hint gives what brings it back: for c the amplitudes u (Eqs. (3.11), (3.14)); for a, b
+    given through the vertical stiffnesses the load share (c23 + c33)/c3 or (c33 + c43)/c3 of
+    (3.9)-(3.10), a = ((c23 + c33)/c3 · A M_Σ - M ξ)/m.
+    """
+    reach = EXCITER_REACH * max(_first(d.A), _first(d.B))
+    Ms = d.M + d.m
+    for name, value in (("c", d.c), ("a", d.a), ("b", d.b)):
+        worst = float(np.max(np.abs(value)))
+        if worst <= reach:
+            continue
+        where = f"{name} = {_first(value) if _first(value) == -worst else worst:.6g} m"
+        if name == "c":
+            hint = f"|c| <= {reach:.6g} m for {_amplitudes_for_height(d, reach)} at this speed"
+            field = "exciter.height"
+        elif position_given:
+            hint = f"give |{name}| <= {reach:.6g} m"
+            field = "exciter.position"
+        else:
+            side, centre, share = (d.A, d.xi, "(c23 + c33)/c3") if name == "a" else (d.B, d.eta, "(c33 + c43)/c3")
+            lo, hi = ((d.M * centre + s * d.m * reach) / (side * Ms) for s in (-1.0, 1.0))
+            hint = f"|{name}| <= {reach:.6g} m needs {_first(lo):.6g} < {share} < {_first(hi):.6g} (Eqs. (3.9)-(3.10))"
+            field = "isolators.vertical"
+        raise PhysicsError(
+            f"the exciter's axis point comes out at {where}, more than {EXCITER_REACH:g} × max(A, B)"
+            f" = {reach:.6g} m from the platform: no machine can be built so",
+            field=field,
+            hint=hint,
         )
 
 
@@ -408,6 +495,7 @@ def _complete(M, m, l, u, omega, xi, eta, zeta, A, B, sigma, g, a, b, vertical, 
         stiffness=_split_table(sums, vertical, split),
     )
     require_feasible_horizontal(design, position_given)
+    require_buildable_position(design, position_given)
     return design
 
 
