@@ -120,8 +120,8 @@ def test_strict_makes_warnings_fail_like_the_single_commands(runner, quick_check
     assert _invoke(runner, platform, "--strict").exit_code == 1
     assert runner.invoke(app, ["platform", str(platform), "--strict"]).exit_code == 1
     scene = read_toml(CONFIGS / "frame_saw.toml")
-    scene["mechanism"]["speed_rpm"] = 410  # extra resonances only: 4ω = k0 11.7 %, 2ω = p1 18.4 % away
-    crank = tmp_path / "frame_saw_410rpm.toml"
+    scene["mechanism"]["speed_rpm"] = 440  # extra resonances only: 4ω = k0 11 %, 2ω = p1 18.9 % away
+    crank = tmp_path / "frame_saw_440rpm.toml"
     crank.write_text(tomli_w.dumps(scene))
     assert runner.invoke(app, ["resonance", str(crank)]).exit_code == 0
     assert runner.invoke(app, ["resonance", str(crank), "--strict"]).exit_code == 1

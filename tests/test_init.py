@@ -63,7 +63,7 @@ def test_crank_template_names_symbols_units_and_ranges():
     text = scene_template("crank_foundation")
     for fragment in (
         "# M [kg]: block and machine frame, without rod and slider; allowed > 0\nmass = 100000.0",
-        "# c [N/m³]: coefficient of elastic uniform compression; allowed > 0\nc_z = 60000000.0",
+        "# c [N/m³]: coefficient of elastic uniform compression; allowed > 0\nc_z = 70000000.0",
         "speed_rpm = 250.0",
         "# omega = 26.179939",  # the alternatives, commented out, with the same speed
         "# frequency_hz = 4.166667",

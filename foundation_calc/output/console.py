@@ -15,12 +15,50 @@ JSON_SCHEMA_VERSION = 1
 OUTCOME_STYLE = {"pass": "bold green", "warn": "bold yellow", "fail": "bold red"}
 
 
+#: Width of stdout when it is not a terminal (a file, a pipe, a CI log): wide enough that no
+#: table is ever squeezed, so a file holds every column at its natural width.
+UNLIMITED_WIDTH = 100_000
+
+
+def keep_words_whole(table) -> None:
+    """Give every column of a rich ``table`` at least the width of its longest word.
+
+    When a table is wider than the terminal, rich narrows its columns and cuts what does not fit
+    with "…". With this floor the text columns wrap between words and a number (one word) is
+    never cut at any width; a table that cannot fit runs past the right edge instead.
+    """
+    from rich.cells import cell_len
+    from rich.text import Text
+
+    for column in table.columns:
+        cells = (column.header, *column.cells)
+        plain = (cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else "" for cell in cells)
+        longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
+        column.min_width = max(column.min_width or 0, longest)
+
+
 @cache
 def stdout() -> Console:
-    """Console for results."""
-    from rich.console import Console
+    """Console for results: full width when not a terminal, and no table cuts a word."""
+    import sys
 
-    return Console(highlight=False)
+    from rich.console import Console
+    from rich.table import Table
+
+    class ResultConsole(Console):
+        def on_broken_pipe(self) -> None:
+            """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
+            raise BrokenPipeError
+
+        def print(self, *objects, **kwargs):
+            for item in objects:
+                if isinstance(item, Table):
+                    keep_words_whole(item)
+            kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
+            super().print(*objects, **kwargs)
+
+    width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
+    return ResultConsole(highlight=False, width=width)
 
 
 @cache

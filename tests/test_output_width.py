@@ -1,0 +1,67 @@
+"""Output that keeps every number whole, at any width, on a terminal or in a file, and exits
+141 when its reader closes the pipe. Run as a user runs fcalc: a real process, a real pipe."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+from rich.console import Console
+from rich.table import Table
+
+from foundation_calc.output.console import keep_words_whole
+from tests.conftest import CONFIGS
+
+FCALC = (sys.executable, "-m", "foundation_calc")
+
+
+def _run(*args: str, columns: int) -> subprocess.CompletedProcess:
+    env = {**os.environ, "COLUMNS": str(columns)}
+    return subprocess.run((*FCALC, *args), capture_output=True, text=True, env=env, check=False)
+
+
+@pytest.mark.parametrize("columns", [40, 80, 132])
+def test_no_number_is_cut_in_a_file(columns):
+    result = _run("amplitudes", str(CONFIGS / "frame_saw.toml"), "--exact", columns=columns)
+    assert result.returncode == 0, result.stderr
+    assert "…" not in result.stdout
+    document = json.loads(_run("amplitudes", str(CONFIGS / "frame_saw.toml"), "--exact", "--json", columns=columns).stdout)
+    x1 = document["approximations"]["exact"]["harmonics"]["x1"]["sin"]
+    assert f"{x1:.6g}" in result.stdout and "e-05" in f"{x1:.6g}"  # whole, with its exponent
+
+
+def test_check_of_every_config_cuts_nothing_in_a_file():
+    result = _run("check", str(CONFIGS), columns=80)
+    assert result.returncode in (0, 1), result.stderr
+    assert "…" not in result.stdout
+
+
+@pytest.mark.parametrize("width", [20, 40, 80])
+def test_a_narrow_terminal_wraps_words_and_never_cuts_them(width):
+    table = Table("quantity", "value")
+    table.add_row("a long description of a derived quantity", "-7.15432e-05")
+    table.add_row("another", "123456789.123")
+    console = Console(width=width, force_terminal=True, record=True, color_system=None)
+    keep_words_whole(table)
+    console.print(table, crop=False)  # as stdout() prints: the terminal wraps a long line
+    text = console.export_text()
+    assert "…" not in text
+    assert "-7.15432e-05" in text and "123456789.123" in text and "description" in text
+
+
+@pytest.mark.parametrize(
+    "args",
+    [("check", str(CONFIGS)), ("platform",), ("resonance", str(CONFIGS / "frame_saw.toml")), ("check", str(CONFIGS), "--json")],
+    ids=lambda a: " ".join(a[:1] + a[2:]),
+)
+def test_a_closed_pipe_exits_141(args):
+    """`fcalc ... | head -1` in a real pipe: the reader leaves after one line."""
+    producer = subprocess.Popen((*FCALC, *args), stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert producer.stdout.readline()
+    producer.stdout.close()
+    _, err = producer.communicate(timeout=60)
+    assert producer.returncode == 141, err.decode()
+    assert b"Traceback" not in err
