@@ -103,3 +103,29 @@ def test_points_match_fcalc_amplitudes(runner, tmp_path, frame_saw):
     for direction in ("horizontal", "vertical"):
         assert edge[direction] == pytest.approx(want[direction]["displacement"], rel=1e-12)
     assert json.loads(swept.stdout)["points"][0]["over_limit"]
+
+
+@pytest.mark.parametrize("quantity", ["velocity", "acceleration"])
+def test_sweep_applies_the_limits_that_amplitudes_applies(runner, tmp_path, quantity):
+    """A scene that fails on velocity (or acceleration) in ``fcalc amplitudes`` fails on it in
+    ``fcalc sweep`` at the same speed: one limit check for every command."""
+    import tomli_w
+
+    from tests.conftest import CONFIGS
+    from foundation_calc.scenes import read_toml
+
+    scene = read_toml(CONFIGS / "frame_saw.toml")
+    amps = json.loads(runner.invoke(app, ["amplitudes", str(CONFIGS / "frame_saw.toml"), "--json"]).stdout)
+    peak = amps["approximations"]["first_approximation"]["peaks"]["y"][quantity]
+    scene["limits"] = {"amplitude": 1.0, quantity: 0.9 * peak, "detuning": 0.2}
+    path = tmp_path / "tight.toml"
+    path.write_text(tomli_w.dumps(scene), encoding="utf-8")
+    assert runner.invoke(app, ["amplitudes", str(path)]).exit_code == 1
+    rpm = scene["mechanism"]["speed_rpm"]
+    speeds = f"{rpm}:{rpm + 2}:3"  # the scene's speed is the first point
+    swept = json.loads(runner.invoke(app, ["sweep", str(path), "--speed", speeds, "--json"]).stdout)
+    row = swept["points"][0]
+    assert row["status"] == "fail" and row["over_limits"] == [quantity]
+    assert swept["limits"][quantity] == pytest.approx(0.9 * peak)
+    table = runner.invoke(app, ["sweep", str(path), "--speed", speeds]).stdout
+    assert f"over {quantity} limit" in table

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
@@ -31,9 +32,6 @@ from foundation_calc.solvers.crank.response import (
     point_peaks,
     relative_error,
 )
-
-#: Quantities a limit may bound, with the scene's [limits] key of each.
-QUANTITIES = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
 
 #: Harmonics whose coefficients are reported and compared (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("y", 3), ("y", 4), ("x", 1), ("x", 2), ("x", 3), ("theta", 1), ("theta", 2), ("theta", 3))
@@ -167,14 +165,13 @@ def _errors(approx: Approximation, exact: Approximation) -> dict | None:
 
 def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     rows = []
-    for quantity, key in QUANTITIES.items():
-        limit = getattr(limits, key)
-        if limit is None or approx.resonant:
-            continue
+    if approx.resonant:
+        return ()
+    for quantity, limit in limited_quantities(limits).items():
         for name, pk in approx.points.items():
             for i, direction in enumerate(DIRECTIONS):
                 value = float(getattr(pk, quantity)[i])
-                outcome = Outcome.FAIL if value > limit else Outcome.PASS
+                outcome = Outcome.FAIL if exceeds(value, limit) else Outcome.PASS
                 rows.append(LimitRow(name, direction, quantity, value, limit, outcome))
     return tuple(rows)
 

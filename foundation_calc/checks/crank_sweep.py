@@ -14,11 +14,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies
+from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.outcomes import resonance_masks
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
 from foundation_calc.solvers.crank.response import point_series
-from foundation_calc.solvers.numerics.trig_series import peak
+from foundation_calc.solvers.numerics.trig_series import derivative, peak
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -54,7 +56,9 @@ class SweepReport:
     margin : smallest relative distance from a resonance condition [-]
     nearest : index into :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` of that one
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
-    over_limit : a displacement peak of C (x, y) or of a point exceeds ``amplitude_limit``
+    over_limit : a peak of C (x, y) or of a point exceeds its limit (displacement, velocity or
+        acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
+    over_quantities : limited quantity -> where its peak exceeds the limit
     status : one of :data:`STATUSES` per point
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     """
@@ -68,10 +72,16 @@ class SweepReport:
     nearest: np.ndarray
     points: dict
     over_limit: np.ndarray
+    over_quantities: dict
     status: np.ndarray
     critical: tuple[CriticalSpeed, ...]
-    amplitude_limit: float | None
+    limits: dict
     detuning: float
+
+    @property
+    def amplitude_limit(self) -> float | None:
+        """The displacement limit [m], or None."""
+        return self.limits.get("displacement")
 
 
 def _peaks(cos, sin):
@@ -79,11 +89,27 @@ def _peaks(cos, sin):
     return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
 
 
-def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | None, detuning: float, points=()) -> SweepReport:
+def _over(motion, omega, points, limits: dict) -> dict:
+    """Limited quantity -> bool array: a peak of C (x, y) or of a point exceeds the limit."""
+    series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
+    series += [point_series(motion, u, H) for _, u, H in points]
+    over = {}
+    for order, quantity in enumerate(QUANTITIES):
+        if quantity not in limits:
+            continue
+        w = omega[:, None]
+        largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
+        over[quantity] = exceeds(largest, limits[quantity])
+    return over
+
+
+def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, points=()) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
 
-    ``points``: (name, horizontal, height) [m] of body points relative to C, as the scene's
-    ``[[points]]``; their peaks come from the same series (rigid-body motion, exact in θ).
+    ``limits``: the scene's ``[limits]`` (amplitude, velocity, acceleration [m, m/s, m/s²] or
+    None), checked as ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height)
+    [m] of body points relative to C, as the scene's ``[[points]]``; their peaks come from the
+    same series (rigid-body motion, exact in θ).
 
     Raises
     ------
@@ -102,12 +128,14 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
     margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
     nearest = np.argmin(margins, axis=0)
     margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
-    paper = np.array([c.source == "paper" for c in CONDITIONS])
-    in_band = margins < detuning
-    fail = (in_band & paper[:, None]).any(axis=0)
-    warn = (in_band & ~paper[:, None]).any(axis=0)
-    largest = np.max([peaks[:, :2].max(axis=1), *(p.max(axis=1) for p in located.values())], axis=0)
-    over = np.zeros(values.shape, dtype=bool) if amplitude_limit is None else largest > amplitude_limit
+    driven = np.array([c.source == "paper" for c in CONDITIONS])[:, None]
+    fails, inside = resonance_masks(margins, detuning, driven)
+    fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
+    limited = limited_quantities(limits)
+    over_quantities = _over(motion, omega, points, limited)
+    over = np.zeros(values.shape, dtype=bool)
+    for mask in over_quantities.values():
+        over |= mask
     status = np.where(resonant, "resonant", np.where(fail | over, "fail", np.where(warn, "warn", "pass")))
     critical = ()
     if variable == "omega":
@@ -128,9 +156,10 @@ def sweep(design: CrankDesign, variable: str, values, amplitude_limit: float | N
         nearest=nearest,
         points=located,
         over_limit=over,
+        over_quantities=over_quantities,
         status=status,
         critical=critical,
-        amplitude_limit=amplitude_limit,
+        limits=limited,
         detuning=detuning,
     )
 

@@ -50,11 +50,17 @@ def resonance_outcome(margin: float, detuning: float, driven: bool) -> Outcome:
     >>> [resonance_outcome(m, 0.2, d).value for m, d in ((0.15, True), (0.15, False), (0.04, False), (0.3, True))]
     ['fail', 'warn', 'fail', 'pass']
     """
-    if margin < RESONANCE_FAIL_MARGIN or (driven and margin < detuning):
+    fails, inside = resonance_masks(margin, detuning, driven)
+    if fails:
         return Outcome.FAIL
-    if margin < detuning:
-        return Outcome.WARN
-    return Outcome.PASS
+    return Outcome.WARN if inside else Outcome.PASS
+
+
+def resonance_masks(margin, detuning, driven):
+    """``(fails, inside)`` of :func:`resonance_outcome` for arrays of margins (numpy bool arrays
+    for ``driven``) or scalars: a resonance fails, or warns where ``inside & ~fails``."""
+    inside = margin < detuning
+    return (margin < RESONANCE_FAIL_MARGIN) | (driven & inside), inside
 
 
 def exit_code(outcome: Outcome, strict: bool = False) -> ExitCode:

@@ -64,13 +64,10 @@ def crank_resonance(scene) -> Finding:
     return Finding("resonance", report.outcome, reason, values, report)
 
 
-#: Display quantity of each limited quantity of the amplitude check.
-_AMPLITUDE_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
-
-
 def crank_amplitudes(scene) -> Finding:
     """Steady-state peaks of C and the scene's points against [limits] (``fcalc amplitudes``)."""
     from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.limits import QUANTITIES
 
     report = check_amplitudes(scene.design(), scene.limits, scene.points)
     approx = report.approximations[report.checked]
@@ -81,7 +78,7 @@ def crank_amplitudes(scene) -> Finding:
         reason = "no amplitude, velocity or acceleration limit in [limits]"
     else:
         top = max(report.rows, key=lambda row: row.ratio)
-        quantity = _AMPLITUDE_QUANTITY[top.quantity]
+        quantity = QUANTITIES[top.quantity]  # the limit's key names its display quantity
         values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
         reason = (
             f"largest peak {top.quantity} {{peak}} at {top.point} ({top.direction}) is {top.ratio:.0%}"

@@ -109,7 +109,7 @@ def sweep(
 
     loaded = load_scene(scene, expect="crank_foundation")
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    report = run_sweep(loaded.design(), variable, values, loaded.limits.amplitude, loaded.limits.detuning, points)
+    report = run_sweep(loaded.design(), variable, values, loaded.limits, loaded.limits.detuning, points)
     if csv is not None:
         from foundation_calc.output.files import write_atomically
 

@@ -6,6 +6,7 @@ import csv
 import io
 from pathlib import Path
 
+from foundation_calc.checks.limits import QUANTITIES
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
 from foundation_calc.solvers.crank.resonance import CONDITIONS
 from foundation_calc.units import hz_from_omega, rpm_from_omega
@@ -34,6 +35,7 @@ def _rows(report):
             "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
             "margin": float(report.margin[i]),
             "over_limit": bool(report.over_limit[i]),
+            "over_limits": [q for q, mask in report.over_quantities.items() if mask[i]],
             "status": str(report.status[i]),
         }
 
@@ -46,7 +48,10 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
         "name": name,
         "method": METHOD,
         "variable": report.variable,
-        "limits": {"amplitude": report.amplitude_limit, "detuning": report.detuning},
+        "limits": {
+            **{key: report.limits.get(quantity) for quantity, key in QUANTITIES.items()},
+            "detuning": report.detuning,
+        },
         "critical_speeds": [
             {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged}
             for c in report.critical
@@ -111,7 +116,8 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
                 for p in row["points"].values()
             ]
         cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
-        status = row["status"] + (" (over limit)" if row["over_limit"] else "")
+        over = ", ".join(row["over_limits"])
+        status = row["status"] + (f" (over {over} limit)" if over else "")
         cells.append(f"[{STATUS_STYLE[row['status']]}]{status}[/]")
         table.add_row(*cells)
     out.print(table)
@@ -122,8 +128,10 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         for c in report.critical:
             crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
-    limit = "none" if report.amplitude_limit is None else units.show("amplitude", report.amplitude_limit)
-    out.print(f"amplitude limit (x, y of C and of every point): {limit}; required detuning {report.detuning:.0%}", soft_wrap=True)
+    limits = "; ".join(f"{q} {units.show(QUANTITIES[q], v)}" for q, v in report.limits.items()) or "none"
+    out.print(
+        f"peak limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
+    )
 
 
 def plot_sweep(report, path: str | Path, units, name: str) -> None:
