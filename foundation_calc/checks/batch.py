@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from foundation_calc.checks.registry import CHECKS, Finding
+from foundation_calc.checks.registry import CHECKS, Finding, Reason
 from foundation_calc.errors import ExitCode, FcalcError, SceneError
 
 #: Verdicts of one check, from best to worst, and the exit code each one implies.
@@ -28,12 +28,13 @@ class CheckRun:
     """One check on one scene: a finding, or the problems that stopped it.
 
     ``verdict`` is ``pass``/``warn``/``fail`` from the finding, ``invalid`` for a scene that
-    cannot be loaded or designed, ``internal`` for a bug. ``problems`` are ``(field, message)``.
+    cannot be loaded or designed, ``internal`` for a bug. ``reason`` is in the parts of
+    :data:`~foundation_calc.checks.registry.Reason`; ``problems`` are ``(field, message)``.
     """
 
     check: str
     verdict: str
-    reason: str = ""
+    reason: Reason = ()
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     report: Any = None
     problems: tuple[tuple[str, str], ...] = ()
@@ -74,11 +75,11 @@ def scene_files(paths: Iterable[str | Path]) -> list[Path]:
 
 def _error_run(check: str, exc: BaseException) -> CheckRun:
     if isinstance(exc, SceneError):
-        return CheckRun(check, "invalid", "the scene cannot be used", problems=tuple(exc.problems))
+        return CheckRun(check, "invalid", ("the scene cannot be used",), problems=tuple(exc.problems))
     if isinstance(exc, FcalcError):
-        return CheckRun(check, "invalid", str(exc), problems=(("", str(exc)),))
+        return CheckRun(check, "invalid", (str(exc),), problems=(("", str(exc)),))
     text = f"{type(exc).__name__}: {exc}"
-    return CheckRun(check, "internal", f"internal error (a bug in fcalc): {text}", problems=(("", text),))
+    return CheckRun(check, "internal", (f"internal error (a bug in fcalc): {text}",), problems=(("", text),))
 
 
 def _finite(finding: Finding) -> Finding:

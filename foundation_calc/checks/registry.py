@@ -1,10 +1,11 @@
 """Which checks each scene kind supports, as used by ``fcalc check``.
 
 :data:`CHECKS` maps a scene kind to its checks, by name; each check is a function
-``scene -> Finding``. A :class:`Finding` carries the outcome, a one-line reason and a JSON-able
-document (SI units). The reason is a template whose ``{placeholders}`` are filled from
-``values`` (name -> (quantity, SI value)), so tables can show speeds in rpm or amplitudes in mm
-without any check knowing about display units.
+``scene -> Finding``. A :class:`Finding` carries the outcome and a one-line reason. The reason is
+a sequence of parts: literal text (which may hold user text, such as a point's name, and is never
+interpreted) and ``(quantity, SI value)`` pairs that the output layer shows in the user's units,
+so tables can show speeds in rpm or amplitudes in mm without any check knowing about display
+units. ``values`` names the same numbers for the JSON document.
 
 The functions here adapt the per-topic checks (``checks/crank_resonance.py`` ...); they import
 those modules only when called, so ``fcalc check`` loads the physics of the kinds it meets and
@@ -22,6 +23,10 @@ from typing import Any
 from foundation_calc.checks.outcomes import Outcome
 
 
+#: A reason: literal text parts and ``(quantity, SI value)`` parts, in reading order.
+Reason = tuple[str | tuple[str, float], ...]
+
+
 @dataclass(frozen=True)
 class Finding:
     """The outcome of one check on one scene.
@@ -30,7 +35,7 @@ class Finding:
     ----------
     check : name of the check, e.g. ``"resonance"``
     outcome : pass, warn or fail
-    reason : one line; ``{name}`` placeholders refer to ``values``
+    reason : one line as parts: literal text, or ``(quantity, SI value)`` to show in display units
     values : name -> (quantity, value in SI units), quantity as in ``output.display_units``
     report : the per-topic check's report (SI units), for the output layer's JSON document
     details : further lines (SI units) for the JUnit report and JSON, too long for the table
@@ -38,7 +43,7 @@ class Finding:
 
     check: str
     outcome: Outcome
-    reason: str
+    reason: Reason
     values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     report: Any = None
     details: tuple[str, ...] = ()
@@ -50,17 +55,18 @@ def crank_resonance(scene) -> Finding:
 
     report = check_resonances(scene.design(), scene.limits.detuning)
     near = report.nearest
-    values = {"speed": ("speed", report.design.omega)}
+    speed = ("speed", report.design.omega)
+    values = {"speed": speed}
     if report.outcome is Outcome.PASS:
-        values["critical"] = ("speed", near.critical_zero_order)
+        values["critical"] = critical = ("speed", near.critical_zero_order)
         reason = (
-            f"speed {{speed}} is at least {near.margin:.1%} from every resonance"
-            f" (nearest {near.condition.label} at {{critical}}; required {near.required:.0%})"
+            "speed ", speed, f" is at least {near.margin:.1%} from every resonance (nearest {near.condition.label} at ",
+            critical, f"; required {near.required:.0%})",
         )
     else:
         bad = [row for row in report.rows if row.outcome is report.outcome]
         names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
-        reason = f"speed {{speed}} is inside the {near.required:.0%} band of {names}"
+        reason = ("speed ", speed, f" is inside the {near.required:.0%} band of {names}")
     return Finding("resonance", report.outcome, reason, values, report)
 
 
@@ -71,18 +77,19 @@ def crank_amplitudes(scene) -> Finding:
 
     report = check_amplitudes(scene.design(), scene.limits, scene.points)
     approx = report.approximations[report.checked]
-    values = {"speed": ("speed", report.design.omega)}
+    speed = ("speed", report.design.omega)
+    values = {"speed": speed}
     if report.resonant:
-        reason = f"speed {{speed}} is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state"
+        reason = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state")
     elif not report.rows:
-        reason = "no amplitude, velocity or acceleration limit in [limits]"
+        reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
         top = max(report.rows, key=lambda row: row.ratio)
         quantity = QUANTITIES[top.quantity]  # the limit's key names its display quantity
         values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
         reason = (
-            f"largest peak {top.quantity} {{peak}} at {top.point} ({top.direction}) is {top.ratio:.0%}"
-            f" of the limit {{limit}}"
+            f"largest peak {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
+            " of the limit ", values["limit"],
         )
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
@@ -99,13 +106,14 @@ def platform_design(scene) -> Finding:
 
     report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
     shown = [f for f in report.findings if f.outcome is report.outcome]
+    speed = ("speed", report.design.omega)
     if report.outcome is Outcome.PASS:
-        reason = "at {speed}: the design moves translationally and every check passes"
+        reason = ("at ", speed, ": the design moves translationally and every check passes")
     else:
         kinds = {Outcome.WARN: "warnings", Outcome.FAIL: "failures"}[report.outcome]
-        reason = f"at {{speed}}: {kinds} from " + ", ".join(f.name for f in shown)
+        reason = ("at ", speed, f": {kinds} from " + ", ".join(f.name for f in shown))
     details = tuple(f"{f.outcome.value.upper()} {f.name}: {f.message}" for f in report.findings)
-    values = {"speed": ("speed", report.design.omega)}
+    values = {"speed": speed}
     return Finding("design", report.outcome, reason, values, report, details)
 
 

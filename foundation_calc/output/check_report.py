@@ -28,7 +28,7 @@ def _reason(run: CheckRun, units: DisplayUnits) -> str:
     """The reason of a run in ``units``; for problems, one ``field: message`` per line."""
     if run.problems and run.verdict == "invalid":
         return "\n".join(f"{loc}: {msg}" if loc else msg for loc, msg in run.problems)
-    return units.render(run.reason, run.values)
+    return units.render(run.reason)
 
 
 def _verdict(run: CheckRun, strict: bool) -> str:

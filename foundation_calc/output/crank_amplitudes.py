@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from rich.markup import escape
 from rich.table import Table
+from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
@@ -127,7 +129,7 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     for name, pk in approx.points.items():
         for i, direction in enumerate(DIRECTIONS):
             table.add_row(
-                name, direction,
+                Text(name), direction,
                 *(fmt(units.convert(DISPLAY_QUANTITY[q], float(getattr(pk, q)[i]))) for q in QUANTITIES),
             )
     for i, dof in enumerate(DOFS):
@@ -143,7 +145,7 @@ def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     for row in report.rows:
         shown = DISPLAY_QUANTITY[row.quantity]
         table.add_row(
-            row.point, row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
+            Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
             f"{row.ratio:.3f}", verdict_text(row.outcome.value),
         )
     return table
@@ -152,16 +154,14 @@ def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
 def summary_line(report: AmplitudeReport) -> str:
     approx = report.approximations[report.checked]
     if report.resonant:
-        return (
-            f"{verdict_text('fail')}: resonant — {approx.nearest} is within {approx.margin:.2g} (relative) of the"
-            f" speed; no steady state without damping"
-        )
+        where = "exactly at the speed" if approx.margin == 0 else f"{approx.margin:.3g} (relative) from the speed"
+        return f"{verdict_text('fail')}: resonant — {approx.nearest} is {where}; no steady state without damping"
     if not report.rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
     top = max(report.rows, key=lambda r: r.ratio)
     return (
         f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
-        f" ({top.point}, {top.direction} {top.quantity})"
+        f" ({escape(top.point)}, {top.direction} {top.quantity})"
     )
 
 
@@ -172,7 +172,7 @@ def print_amplitudes_report(
     d = report.design
     out = stdout()
     out.print(
-        f"[bold]{scene.name or source}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
+        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
         f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
     )
     for a in report.approximations.values():

@@ -69,13 +69,14 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
 
 def print_resonance_report(report: ResonanceReport, scene, source: str, units: DisplayUnits = DisplayUnits()) -> None:
     """Print the tables of ``fcalc resonance``."""
+    from rich.markup import escape
     from rich.table import Table
 
     d = report.design
     out = stdout()
     title = scene.name or source
     out.print(
-        f"[bold]{title}[/]  speed {fmt(d.omega)} rad/s = {fmt(hz_from_omega(d.omega))} Hz"
+        f"[bold]{escape(title)}[/]  speed {fmt(d.omega)} rad/s = {fmt(hz_from_omega(d.omega))} Hz"
         f" = {fmt(rpm_from_omega(d.omega))} rpm (given as {scene.mechanism.speed_given_as})"
     )
 

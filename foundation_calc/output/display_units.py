@@ -14,7 +14,7 @@ measures (``"amplitude"``, ``"speed"``); each unit name belongs to exactly one q
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from foundation_calc.output.console import fmt
@@ -56,9 +56,10 @@ class DisplayUnits:
         """A value with its unit, e.g. ``"0.2 mm"``."""
         return f"{fmt(self.convert(quantity, si_value), digits)} {self.label(quantity)}"
 
-    def render(self, template: str, values: Mapping[str, tuple[str, float]]) -> str:
-        """Fill ``{name}`` placeholders of ``template`` from ``values`` (name -> (quantity, SI))."""
-        return template.format_map({name: self.show(q, v) for name, (q, v) in values.items()})
+    def render(self, parts) -> str:
+        """Join a check's reason: text parts as they are (user text is never interpreted), and
+        ``(quantity, SI value)`` parts shown in these units."""
+        return "".join(part if isinstance(part, str) else self.show(*part) for part in parts)
 
 
 def parse_units(tokens: Iterable[str]) -> DisplayUnits:

@@ -146,7 +146,7 @@ def _first_solve(design: CrankDesign, K: int) -> tuple[np.ndarray, int, float, f
     if start.resonant:
         n, mode = start.nearest
         raise ConvergenceError(
-            f"no periodic solution: {n}ω is within {start.margin:.2g} (relative) of the natural"
+            f"no periodic solution: {n}ω is {start.margin:.3g} (relative) from the natural"
             f" frequency {start.natural[mode]:.8g} rad/s of the averaged operator"
         )
     galerkin = _Galerkin(design, K)
