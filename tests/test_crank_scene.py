@@ -56,7 +56,7 @@ BROKEN = [
     ("limits.amplitude", 0.0, ["limits.amplitude", "[m]"]),
     ("kind", "crank", ["kind", "crank_foundation"]),
     ("schema_version", 7, ["schema_version"]),
-    ("soil", _DELETE, ["soil", "required"]),
+    ("soil", _DELETE, ["soil", "missing", "c_z, c_x"]),
 ]
 
 

@@ -49,28 +49,32 @@ class CheckRun:
 @dataclass(frozen=True)
 class SceneRun:
     """All checks of one scene file. ``kind`` and ``name`` are empty and ``scene`` (the validated
-    scene model) is ``None`` when it did not load."""
+    scene model) is ``None`` when it did not load; ``skipped`` marks a TOML file found in a folder
+    that is no scene (no ``kind`` key, e.g. ``.taplo.toml``), which has no checks."""
 
     source: str
     kind: str
     name: str
     runs: tuple[CheckRun, ...]
     scene: Any = None
+    skipped: bool = False
 
     def exit_code(self, strict: bool) -> ExitCode:
         return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
 
 
-def scene_files(paths: Iterable[str | Path]) -> list[Path]:
-    """The scene files named by ``paths``: files as given, folders searched for ``*.toml``.
+def scene_files(paths: Iterable[str | Path]) -> dict[Path, bool]:
+    """The scene files named by ``paths``, each with whether it was found by a folder search.
 
-    Files found in folders are sorted so reports are stable; a path that does not exist is kept,
-    so that it is reported as a scene that cannot be read.
+    Files are taken as given and folders searched for ``*.toml``; files found in folders are
+    sorted so reports are stable; a path that does not exist is kept, so that it is reported as a
+    scene that cannot be read.
     """
-    found: list[Path] = []
+    found: dict[Path, bool] = {}
     for path in map(Path, paths):
-        found.extend(sorted(path.rglob("*.toml")) if path.is_dir() else [path])
-    return list(dict.fromkeys(found))
+        for file in sorted(path.rglob("*.toml")) if path.is_dir() else [path]:
+            found[file] = found.get(file, True) and path.is_dir()
+    return found
 
 
 def _error_run(check: str, exc: BaseException) -> CheckRun:
@@ -88,13 +92,19 @@ def _finite(finding: Finding) -> Finding:
     return finding
 
 
-def run_scene(path: str | Path) -> SceneRun:
-    """Load one scene and run every check of its kind (``"load"`` stands for a scene that fails)."""
-    from foundation_calc.scenes import load_scene
+def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
+    """Load one scene and run every check of its kind (``"load"`` stands for a scene that fails).
+
+    With ``skip_non_scenes`` a TOML document without a ``kind`` key is skipped, not invalid.
+    """
+    from foundation_calc.scenes import parse_scene, read_toml
 
     source = str(path)
     try:
-        scene = load_scene(path)
+        document = read_toml(path)
+        if skip_non_scenes and "kind" not in document:
+            return SceneRun(source, "", "", (), skipped=True)
+        scene = parse_scene(document, source)
     except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise
@@ -114,8 +124,9 @@ def run_scene(path: str | Path) -> SceneRun:
 
 
 def run_scenes(paths: Iterable[str | Path]) -> list[SceneRun]:
-    """:func:`run_scene` on every file of :func:`scene_files`."""
-    return [run_scene(path) for path in scene_files(paths)]
+    """:func:`run_scene` on every file of :func:`scene_files`; files found in folders that are
+    no scenes are skipped."""
+    return [run_scene(path, searched) for path, searched in scene_files(paths).items()]
 
 
 def exit_code(scenes: Iterable[SceneRun], strict: bool = False) -> ExitCode:

@@ -41,11 +41,13 @@ MODE_NAMES = {
 
 @dataclass(frozen=True)
 class Finding:
-    """One check: its name, outcome and a sentence a designer can act on."""
+    """One check: its name, outcome, a sentence a designer can act on and the number behind it
+    in a few words (``brief``, for one-line summaries such as ``fcalc check``)."""
 
     name: str
     outcome: Outcome
     message: str
+    brief: str = ""
 
 
 @dataclass(frozen=True)
@@ -78,6 +80,7 @@ def _height(d: PlatformDesign, ratio: float) -> Finding:
             Outcome.WARN,
             f"the exciter's axis point is c = {d.c:.4g} m, below the support plane ({regime});"
             " check that the structure can carry it there",
+            f"c = {d.c:.4g} m",
         )
     if d.zeta > 0 and d.c > ratio * d.zeta:
         return Finding(
@@ -85,6 +88,7 @@ def _height(d: PlatformDesign, ratio: float) -> Finding:
             Outcome.WARN,
             f"the exciter sits c = {d.c:.4g} m above the support plane, {d.c / d.zeta:.3g} × ζ"
             f" (limit {ratio:g} × ζ); lowering ζ lowers c (Eq. (3.15))",
+            f"c = {d.c:.4g} m = {d.c / d.zeta:.3g} ζ",
         )
     return Finding("exciter height", Outcome.PASS, f"c = {d.c:.4g} m")
 
@@ -98,14 +102,16 @@ def _regime(d: PlatformDesign, detuning: float) -> Finding:
     side = "below" if d.sigma > 0 else "above"
     text = f"ω = {d.omega:.5g} rad/s is {d.regime_margin:.1%} {side} the translational resonance sqrt(c0/M_Σ) = {p:.5g} rad/s"
     outcome = resonance_outcome(d.regime_margin, detuning, driven=True)
+    brief = f"{d.regime_margin:.1%} from sqrt(c0/M_Σ) = {p:.5g} rad/s"
     if outcome is Outcome.PASS:
-        return Finding("regime margin", outcome, text)
+        return Finding("regime margin", outcome, text, brief)
     u_max = amplitude_for_margin(d.M, d.m, d.l, d.sigma, detuning)
     return Finding(
         "regime margin",
         outcome,
         f"{text}, inside the required {detuning:.0%}: u <= {u_max:.4g} m (now {d.u:.4g} m) or a larger"
         " unbalance m l moves it away (Eq. (3.14))",
+        brief,
     )
 
 
@@ -122,13 +128,16 @@ def _modes(modes: Modes, omega, detuning: float) -> Finding:
         "natural frequencies",
         outcome,
         f"within {detuning:.0%} of ω: " + ", ".join(close) + " (any deviation from the design excites them)",
+        ", ".join(text for o, text in rows if o is outcome),
     )
 
 
 def _rocking(v: Verification, limit: float, eta: float) -> Finding:
     why = f" with loss factor η = {eta:g}" if eta > 0 else ""
     text = f"rocking {v.rocking_percent:.3g} % of u{why} (limit {limit:g} %)"
-    return Finding("rocking", Outcome.FAIL if v.rocking_percent > limit else Outcome.PASS, text)
+    return Finding(
+        "rocking", Outcome.FAIL if v.rocking_percent > limit else Outcome.PASS, text, f"{v.rocking_percent:.3g} % of u"
+    )
 
 
 def check_platform(design: PlatformDesign, model: PlatformModel, limits, inertia_given: bool) -> PlatformReport:

@@ -111,7 +111,7 @@ def platform_design(scene) -> Finding:
         reason = ("at ", speed, ": the design moves translationally and every check passes")
     else:
         kinds = {Outcome.WARN: "warnings", Outcome.FAIL: "failures"}[report.outcome]
-        reason = ("at ", speed, f": {kinds} from " + ", ".join(f.name for f in shown))
+        reason = ("at ", speed, f": {kinds} from " + "; ".join(f"{f.name} ({f.brief})" for f in shown))
     details = tuple(f"{f.outcome.value.upper()} {f.name}: {f.message}" for f in report.findings)
     values = {"speed": speed}
     return Finding("design", report.outcome, reason, values, report, details)

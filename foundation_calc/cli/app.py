@@ -17,7 +17,7 @@ from foundation_calc.cli.sweep import sweep
 EXIT_CODES_HELP = (
     "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
     " 3 invalid scene (unreadable, bad TOML, failed validation, physically impossible);"
-    " 4 internal error."
+    " 4 internal error; 141 stdout closed by its reader (fcalc ... | head)."
 )
 
 app = typer.Typer(
@@ -27,6 +27,7 @@ app = typer.Typer(
     add_completion=False,
     pretty_exceptions_enable=False,
     epilog=EXIT_CODES_HELP,
+    rich_markup_mode=None,  # help text is plain: units in brackets ([m], [[points]]) print as written
 )
 app.command(epilog=EXIT_CODES_HELP)(resonance)
 app.command(epilog=EXIT_CODES_HELP)(amplitudes)

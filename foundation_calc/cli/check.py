@@ -20,6 +20,9 @@ JunitOpt = Annotated[
     typer.Option("--junit", metavar="FILE", help="Also write a JUnit XML report (one test case per scene and check)."),
 ]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
+VerboseOpt = Annotated[
+    bool, typer.Option("--verbose", "-v", help="Every problem of an invalid scene and every limit row in the table.")
+]
 
 
 def _report_problems(scenes) -> None:
@@ -42,6 +45,7 @@ def check(
     junit: JunitOpt = None,
     strict: StrictOpt = False,
     units: UnitsOpt = None,
+    verbose: VerboseOpt = False,
 ) -> None:
     """Run every check that each scene's kind supports and report them all.
 
@@ -54,7 +58,7 @@ def check(
 
     shown = display_units(units)
     scenes = run_scenes(paths)
-    if not scenes:
+    if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)
     if junit is not None:
@@ -67,5 +71,5 @@ def check(
 
         print_json(check_report.check_document(scenes, strict))
     else:
-        check_report.print_check_table(scenes, shown, strict)
+        check_report.print_check_table(scenes, shown, strict, verbose)
     raise typer.Exit(int(exit_code(scenes, strict)))

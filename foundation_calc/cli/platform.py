@@ -78,5 +78,5 @@ def _run(scene: Path | None, speeds: dict, amp: float | None, json: bool, strict
 
         print_json(report_out.platform_document(report, loaded, source, given_as))
     else:
-        report_out.print_platform_report(report, loaded, source, given_as)
+        report_out.print_platform_report(report, loaded, source, given_as, strict)
     raise typer.Exit(int(exit_code(report.outcome, strict)))

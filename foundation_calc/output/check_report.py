@@ -41,28 +41,68 @@ def counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
     return {verdict: tally[verdict] for verdict in _VERDICT_STYLE}
 
 
-def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False) -> None:
-    """The summary table (scene, kind, check, verdict, reason) and a one-line total."""
-    from rich.markup import escape
-    from rich.table import Table
+def scene_counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
+    """How many scenes ended in each verdict, a scene's verdict being its worst check's
+    (every verdict present, zero or not); skipped files are not scenes and not counted."""
+    rank = list(_VERDICT_STYLE)
+    tally = Counter(
+        max((_verdict(run, strict) for run in scene.runs), key=rank.index, default="pass")
+        for scene in scenes
+        if not scene.skipped
+    )
+    return {verdict: tally[verdict] for verdict in _VERDICT_STYLE}
 
-    table = Table(title="fcalc check", title_justify="left")
-    for col in ("scene", "kind", "check", "verdict", "reason"):
-        table.add_column(col, overflow="fold")
-    for scene in scenes:
+
+def _tally(counted: dict[str, int]) -> str:
+    return ", ".join(f"{n} {verdict}" for verdict, n in counted.items() if n) or "none"
+
+
+def _common_folder(sources: list[str]) -> str:
+    """The folder all sources share (``""`` when they share none), to print names short."""
+    import os
+
+    folders = [os.path.dirname(s) for s in sources]
+    common = os.path.commonpath(folders) if folders and all(folders) else ""
+    return common if all(f == common or f.startswith(common + os.sep) for f in folders) else ""
+
+
+def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False, verbose: bool = False) -> None:
+    """One line per scene and check (scene, check, verdict, reason), then the counts of scenes
+    and of checks. An invalid scene shows its first problem (all of them with ``verbose``; they
+    are also on stderr, in the JSON document and in JUnit); ``verbose`` adds each check's details."""
+    import os
+
+    from rich.table import Table
+    from rich.text import Text
+
+    checked = [scene for scene in scenes if not scene.skipped]
+    folder = _common_folder([scene.source for scene in checked])
+    title = f"fcalc check: scenes in {folder}{os.sep}" if folder else "fcalc check"
+    table = Table(title=Text(title), title_justify="left")
+    for col in ("scene", "check", "verdict", "reason"):
+        table.add_column(col)
+    for scene in checked:
+        shown = os.path.relpath(scene.source, folder) if folder else scene.source
         for run in scene.runs:
             verdict = _verdict(run, strict)
-            table.add_row(
-                escape(scene.source),
-                scene.kind or "?",
-                run.check,
-                f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]",
-                escape(_reason(run, units)),
-            )
+            lines = _reason(run, units).splitlines() or [""]
+            if run.problems and run.verdict == "invalid" and not verbose and len(lines) > 1:
+                more = len(lines) - 1
+                lines = [lines[0], f"(+{more} more problem{'s' * (more > 1)}, on stderr)"]
+            if verbose:
+                lines += list(run.details)
+            table.add_row(Text(shown), run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", Text("\n".join(lines)))
     out = stdout()
     out.print(table)
-    tally = ", ".join(f"{n} {verdict}" for verdict, n in counts(scenes, strict).items() if n)
-    out.print(f"{len(scenes)} scene(s), {tally or 'no checks'}; exit code {int(exit_code(scenes, strict))}")
+    skipped = [scene.source for scene in scenes if scene.skipped]
+    if skipped:
+        out.print(Text("skipped (TOML without a kind key, not a scene): " + ", ".join(skipped)), soft_wrap=True)
+    out.print(
+        f"{len(checked)} scene{'s' * (len(checked) != 1)}: {_tally(scene_counts(scenes, strict))}"
+        f" ({sum(len(s.runs) for s in checked)} checks: {_tally(counts(scenes, strict))})"
+        f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
+        soft_wrap=True,
+    )
 
 
 def _values_si(values) -> dict:
@@ -101,6 +141,8 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
         "strict": strict,
         "exit_code": int(exit_code(scenes, strict)),
         "counts": counts(scenes, strict),
+        "scene_counts": scene_counts(scenes, strict),
+        "skipped": [scene.source for scene in scenes if scene.skipped],
         "scenes": [
             {
                 "source": scene.source,
@@ -121,6 +163,7 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
                 ],
             }
             for scene in scenes
+            if not scene.skipped
         ],
     }
 
@@ -142,7 +185,7 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False) -> str:
     """The run as JUnit XML text (reasons in SI units)."""
     root = ET.Element("testsuites", name="fcalc check")
     totals = Counter()
-    for scene in scenes:
+    for scene in (scene for scene in scenes if not scene.skipped):
         suite = ET.SubElement(root, "testsuite", name=scene.source)
         tally = Counter()
         for run in scene.runs:

@@ -69,8 +69,11 @@ def stderr() -> Console:
     return Console(stderr=True, highlight=False)
 
 
-def verdict_text(outcome: str) -> str:
-    """An outcome as styled console markup, e.g. ``[bold red]FAIL[/]``."""
+def verdict_text(outcome: str, strict: bool = False) -> str:
+    """An outcome as styled console markup, e.g. ``[bold red]FAIL[/]``; with ``strict`` a
+    warning is shown as the failure it counts as."""
+    if strict and outcome == "warn":
+        return f"[{OUTCOME_STYLE['fail']}]FAIL[/] (a warning, failing with --strict)"
     return f"[{OUTCOME_STYLE[outcome]}]{outcome.upper()}[/]"
 
 

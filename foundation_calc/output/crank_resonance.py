@@ -13,7 +13,7 @@ def _frequencies(freqs) -> dict:
     return {"k0": freqs.k0, "p1": freqs.p1, "p2": freqs.p2}
 
 
-def summary_line(report: ResonanceReport) -> str:
+def summary_line(report: ResonanceReport, strict: bool = False) -> str:
     """One sentence that says whether the speed is far enough from every resonance."""
     near = report.nearest
     rpm = rpm_from_omega(report.design.omega)
@@ -25,7 +25,7 @@ def summary_line(report: ResonanceReport) -> str:
         )
     bad = [r for r in report.rows if r.outcome.value == outcome]
     names = ", ".join(f"{r.condition.label} (margin {r.margin:.1%})" for r in bad)
-    return f"{verdict_text(outcome)}: {fmt(rpm)} rpm is inside the {near.required:.0%} band of {names}"
+    return f"{verdict_text(outcome, strict)}: {fmt(rpm)} rpm is inside the {near.required:.0%} band of {names}"
 
 
 def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
@@ -67,7 +67,9 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
     }
 
 
-def print_resonance_report(report: ResonanceReport, scene, source: str, units: DisplayUnits = DisplayUnits()) -> None:
+def print_resonance_report(
+    report: ResonanceReport, scene, source: str, units: DisplayUnits = DisplayUnits(), strict: bool = False
+) -> None:
     """Print the tables of ``fcalc resonance``."""
     from rich.markup import escape
     from rich.table import Table
@@ -120,4 +122,4 @@ def print_resonance_report(report: ResonanceReport, scene, source: str, units: D
             verdict_text(row.outcome.value),
         )
     out.print(res)
-    out.print(summary_line(report), soft_wrap=True)
+    out.print(summary_line(report, strict), soft_wrap=True)

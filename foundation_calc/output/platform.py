@@ -108,7 +108,7 @@ def _table(title: str, *columns: str) -> Table:
     return table
 
 
-def print_platform_report(report: PlatformReport, scene, source: str, given_as: str) -> None:
+def print_platform_report(report: PlatformReport, scene, source: str, given_as: str, strict: bool = False) -> None:
     """Print the tables of ``fcalc platform``."""
     d, v = report.design, report.verification
     out = stdout()
@@ -168,7 +168,7 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
 
     for f in report.findings:
         out.print(f"{verdict_text(f.outcome.value)} {escape(f.name)}: {escape(f.message)}", soft_wrap=True)
-    out.print(f"{verdict_text(report.outcome.value)}: {summary(report)}", soft_wrap=True)
+    out.print(f"{verdict_text(report.outcome.value, strict)}: {summary(report)}", soft_wrap=True)
 
 
 def summary(report: PlatformReport) -> str:

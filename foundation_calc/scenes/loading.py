@@ -19,6 +19,12 @@ KINDS: dict[str, str] = {
     "platform": "foundation_calc.scenes.platform:PlatformScene",
 }
 
+#: scene kind -> the single-scene commands that take it (for messages that point the way).
+KIND_COMMANDS: dict[str, tuple[str, ...]] = {
+    "crank_foundation": ("resonance", "amplitudes", "sweep"),
+    "platform": ("platform",),
+}
+
 #: Largest scene file read [bytes]; a design is a few hundred bytes.
 MAX_SCENE_BYTES = 1_000_000
 
@@ -30,7 +36,7 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         with open(path, "rb") as handle:  # never more than the limit: the path may be /dev/zero
             raw = handle.read(MAX_SCENE_BYTES + 1)
     except IsADirectoryError:
-        raise SceneError(source, [("", "is a folder, not a scene file")]) from None
+        raise SceneError(source, [("", "is a folder, not a scene file; fcalc check FOLDER checks every scene in it")]) from None
     except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the path
         raise SceneError(source, [("", f"cannot be read: {getattr(exc, 'strerror', None) or exc}")]) from None
     if len(raw) > MAX_SCENE_BYTES:
@@ -66,7 +72,8 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | Non
         got = "missing" if kind is None else f"{kind!r}"
         raise SceneError(source, [("kind", f"must be one of {allowed} (got {got})")])
     if expect is not None and kind != expect:
-        raise SceneError(source, [("kind", f'this command needs a "{expect}" scene (got "{kind}")')])
+        commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
+        raise SceneError(source, [("kind", f'this command needs a "{expect}" scene (got "{kind}": use {commands})')])
     model = model_for_kind(kind)
     from pydantic import ValidationError
 

@@ -8,6 +8,7 @@ and unit (from the field's description) and the allowed range (from its constrai
 
 from __future__ import annotations
 
+import difflib
 from typing import Any
 
 from pydantic import BaseModel, ValidationError
@@ -35,6 +36,48 @@ def _field_info(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | Non
     return info
 
 
+def _model_at(model: type[BaseModel], loc: tuple[Any, ...]) -> type[BaseModel] | None:
+    """The model whose fields are the keys at ``loc`` (the table that holds the key)."""
+    current: Any = model
+    for part in loc:
+        if isinstance(part, int):
+            continue
+        fields = getattr(current, "model_fields", None)
+        if not fields or part not in fields:
+            return None
+        current = _nested(fields[part].annotation)
+    return current if isinstance(current, type) and issubclass(current, BaseModel) else None
+
+
+def _nested(annotation: Any) -> Any:
+    """``Model`` out of ``Model``, ``Model | None`` or ``list[Model]``; else the annotation."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in getattr(annotation, "__args__", ()) or ():
+        found = _nested(arg)
+        if isinstance(found, type) and issubclass(found, BaseModel):
+            return found
+    return annotation
+
+
+def _unknown_key(model: type[BaseModel], loc: tuple[Any, ...]) -> str:
+    """The message for a key the scene kind does not have, with the nearest known key."""
+    table = _model_at(model, loc[:-1])
+    known = list(table.model_fields) if table is not None else []
+    close = difflib.get_close_matches(str(loc[-1]), known, n=1, cutoff=0.6)
+    hint = f"; did you mean {close[0]}?" if close else (f"; the keys here are {', '.join(known)}" if known else "")
+    return f"unknown key (misspelt, or not part of this scene kind){hint}"
+
+
+def _missing_table(info: FieldInfo | None) -> str:
+    """For a whole missing table: the keys it needs."""
+    nested = _nested(info.annotation) if info is not None else None
+    if not (isinstance(nested, type) and issubclass(nested, BaseModel)):
+        return ""
+    required = [name for name, field in nested.model_fields.items() if field.is_required()]
+    return f"a table with {', '.join(required)}" if required else "a table"
+
+
 def allowed_range(info: FieldInfo) -> str:
     """The constraints of a field as text, e.g. ``"> 0"`` or ``">= 0 and < 1"``."""
     parts = []
@@ -59,9 +102,9 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
         path = ".".join(str(p) for p in loc)
         kind = err["type"]
         if kind == "extra_forbidden":
-            problems.append((path, "unknown key (misspelt, or not part of this scene kind)"))
+            problems.append((path, _unknown_key(model, loc)))
             continue
-        msg = err["msg"]
+        msg = "missing" if kind == "missing" else err["msg"]
         if msg.startswith("Value error, "):
             msg = msg[len("Value error, "):]
         info = _field_info(model, loc)
@@ -69,7 +112,10 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
         given = err.get("input")
         if kind != "missing" and not isinstance(given, dict):
             details.append(f"got {_shorten(given)}")
-        if info is not None:
+        table = _missing_table(info) if kind == "missing" else ""
+        if table:
+            details.append(table)
+        elif info is not None:
             rng = allowed_range(info)
             if rng and kind not in ("greater_than", "greater_than_equal", "less_than", "less_than_equal"):
                 details.append(f"allowed {rng}")

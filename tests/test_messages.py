@@ -1,0 +1,87 @@
+"""Errors and summaries that tell the user what to do: the nearest key for a misspelt one, the
+keys a missing table needs, the command for a scene of the other kind, fcalc check for a folder;
+non-scene TOML skipped by a folder check; scenes and checks counted apart; --strict says FAIL."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import tomli_w
+
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import read_toml
+from tests.conftest import CONFIGS
+
+
+def _write(tmp_path, name: str, text: str):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "hint"),
+    [
+        ("cog_height", "cog_heigth", "did you mean cog_height?"),
+        ("rod_mass", "rod_mas", "did you mean rod_mass?"),
+        ("[limits]", "[limit]", "did you mean limits?"),
+    ],
+)
+def test_a_misspelt_key_gets_the_nearest_one(runner, tmp_path, old, new, hint):
+    text = (CONFIGS / "frame_saw.toml").read_text(encoding="utf-8").replace(old, new, 1)
+    result = runner.invoke(app, ["resonance", str(_write(tmp_path, "s.toml", text))])
+    assert result.exit_code == 3 and hint in result.stderr
+
+
+def test_a_missing_table_lists_the_keys_it_needs(runner, tmp_path):
+    scene = read_toml(CONFIGS / "frame_saw.toml")
+    del scene["soil"]
+    result = runner.invoke(app, ["resonance", str(_write(tmp_path, "s.toml", tomli_w.dumps(scene)))])
+    assert result.exit_code == 3 and "soil: missing (a table with c_z, c_x)" in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("command", "config", "hint"),
+    [
+        ("resonance", "platform_paper_example.toml", "use fcalc platform"),
+        ("platform", "frame_saw.toml", "use fcalc resonance or fcalc amplitudes or fcalc sweep"),
+    ],
+)
+def test_a_scene_of_the_other_kind_names_its_command(runner, command, config, hint):
+    result = runner.invoke(app, [command, str(CONFIGS / config)])
+    assert result.exit_code == 3 and hint in result.stderr.replace("\n  ", " ").replace("\n", " ")
+
+
+def test_a_folder_given_to_a_single_scene_command_suggests_check(runner):
+    result = runner.invoke(app, ["resonance", str(CONFIGS)])
+    assert result.exit_code == 3 and "fcalc check" in result.stderr
+
+
+def test_check_skips_toml_that_is_no_scene(runner, tmp_path):
+    _write(tmp_path, ".taplo.toml", '[[rule]]\ninclude = ["*.toml"]\n')
+    _write(tmp_path, "frame_saw.toml", (CONFIGS / "frame_saw.toml").read_text(encoding="utf-8"))
+    result = runner.invoke(app, ["check", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert "skipped" in result.stdout and ".taplo.toml" in result.stdout
+    document = json.loads(runner.invoke(app, ["check", str(tmp_path), "--json"]).stdout)
+    assert [s["source"].rsplit("/", 1)[-1] for s in document["scenes"]] == ["frame_saw.toml"]
+    assert document["skipped"][0].endswith(".taplo.toml")
+    named = runner.invoke(app, ["check", str(tmp_path / ".taplo.toml")])  # named explicitly: checked
+    assert named.exit_code == 3
+
+
+def test_summary_counts_scenes_and_checks_apart(runner):
+    result = runner.invoke(app, ["check", str(CONFIGS / "frame_saw.toml"), str(CONFIGS / "platform_paper_example.toml")])
+    last = result.stdout.strip().splitlines()[-1]
+    assert last.startswith("2 scenes: 1 pass, 1 warn (3 checks: 2 pass, 1 warn)")
+    document = json.loads(
+        runner.invoke(app, ["check", str(CONFIGS / "frame_saw.toml"), str(CONFIGS / "platform_paper_example.toml"), "--json"]).stdout
+    )
+    assert document["scene_counts"]["pass"] == 1 and document["counts"]["pass"] == 2
+
+
+def test_strict_prints_a_failure_not_a_warning(runner):
+    result = runner.invoke(app, ["platform", "--strict"])  # the paper example warns (exciter height)
+    assert result.exit_code == 1
+    assert result.stdout.strip().splitlines()[-1].startswith("FAIL (a warning, failing with --strict)")
