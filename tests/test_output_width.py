@@ -65,3 +65,18 @@ def test_a_closed_pipe_exits_141(args):
     _, err = producer.communicate(timeout=60)
     assert producer.returncode == 141, err.decode()
     assert b"Traceback" not in err
+
+
+def test_round_off_prints_as_zero(runner):
+    """The paper's design rocks by 1e-18 % of u (round-off of the 6-DOF solve): the table says 0,
+    the JSON keeps the computed number."""
+    from foundation_calc.cli.app import app
+
+    table = runner.invoke(app, ["platform"]).stdout
+    rows = {line.split("│")[1].strip(): line.split("│")[2].strip() for line in table.splitlines() if line.count("│") == 4}
+    for quantity in ("amplitude of z", "rotation amplitude α", "static corner offset from the tilt",
+                     "rocking: corner motion relative to the centre of mass"):
+        assert rows[quantity] == "0", (quantity, rows[quantity])
+    assert rows["amplitude of x"] == "0.001"
+    document = json.loads(runner.invoke(app, ["platform", "--json"]).stdout)
+    assert 0 <= document["verification"]["rocking_percent"] < 1e-9

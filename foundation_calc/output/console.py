@@ -85,3 +85,19 @@ def print_json(document: dict) -> None:
 def fmt(value: float, digits: int = 5) -> str:
     """A number with ``digits`` significant figures, for tables."""
     return f"{value:.{digits}g}"
+
+
+#: Relative size below which a computed value is round-off of the solver, not a result [-]:
+#: double precision carries 1e-16, and the 6-DOF and harmonic-balance solves lose at most four
+#: digits to conditioning, so anything under 1e-12 of the quantity's own scale is noise.
+ROUNDOFF = 1e-12
+
+
+def fmt_scaled(value: float, scale: float, digits: int = 5) -> str:
+    """Like :func:`fmt`, but ``0`` when ``|value| < ROUNDOFF × scale``: a value the solver cannot
+    tell from zero (``scale`` is the size of the quantity it belongs to, e.g. the amplitude u).
+
+    >>> fmt_scaled(2.93e-15, 100.0), fmt_scaled(-1.46e-19, 1e-4), fmt_scaled(3.1e-5, 1e-4)
+    ('0', '0', '3.1e-05')
+    """
+    return "0" if abs(value) < ROUNDOFF * abs(scale) else fmt(value, digits)

@@ -7,7 +7,7 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
@@ -102,6 +102,12 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     if report.errors:
         for key in report.errors:
             table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+    scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
+        (a.key, dof): max(abs(float(a.motion.coefficient(dof, k)[0 if dof == "y" else 1])) for d, k in HARMONICS if d == dof)
+        for a in shown
+        if not a.resonant
+        for dof in DOFS
+    }
     for dof, n in HARMONICS:
         part = 0 if dof == "y" else 1
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
@@ -111,7 +117,10 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
                 cells.append("resonant")
                 continue
             value = float(a.motion.coefficient(dof, n)[part])
-            cells.append(fmt(value if dof == "theta" else units.convert("amplitude", value), 6))
+            scale = scales[a.key, dof]
+            if dof != "theta":
+                value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
+            cells.append(fmt_scaled(value, scale, 6))
         if report.errors:
             for err in report.errors.values():
                 cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")

@@ -6,7 +6,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from foundation_calc.checks.platform import MODE_NAMES, PlatformReport, mode_margins
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
 AXES = ("x", "y", "z")
@@ -140,14 +140,15 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
 
     inertia = "scene" if report.inertia_given else "estimated: homogeneous block A × B × H"
     vt = _table(f"6-DOF verification (inertia {inertia}; loss factor η = {report.model.eta:g})", "quantity", "value", "unit")
+    size = max(float(d.A), float(d.B))  # rotations are compared with u over the platform's size
     for axis, amp in zip(AXES, v.amplitudes):
-        vt.add_row(f"amplitude of {axis}", fmt(amp, 6), f"m ({amp / v.u:.6g} u)")
+        vt.add_row(f"amplitude of {axis}", fmt_scaled(amp, v.u, 6), f"m ({fmt_scaled(amp / v.u, 1.0, 6)} u)")
     for axis, rot in zip(("α", "β", "γ"), v.rotations):
-        vt.add_row(f"rotation amplitude {axis}", fmt(rot, 4), "rad")
-    vt.add_row("static tilt |(α, β, γ)|", fmt(v.static_tilt, 4), "rad")
-    vt.add_row("static corner offset from the tilt", fmt(v.static_offset_percent, 4), "% of u")
-    vt.add_row("rocking: corner motion relative to the centre of mass", fmt(v.rocking_percent, 4), "% of u")
-    vt.add_row("spread of corner amplitudes (max - min)", fmt(v.spread_percent, 4), "% of u")
+        vt.add_row(f"rotation amplitude {axis}", fmt_scaled(rot, v.u / size, 4), "rad")
+    vt.add_row("static tilt |(α, β, γ)|", fmt_scaled(v.static_tilt, v.u / size, 4), "rad")
+    vt.add_row("static corner offset from the tilt", fmt_scaled(v.static_offset_percent, 100.0, 4), "% of u")
+    vt.add_row("rocking: corner motion relative to the centre of mass", fmt_scaled(v.rocking_percent, 100.0, 4), "% of u")
+    vt.add_row("spread of corner amplitudes (max - min)", fmt_scaled(v.spread_percent, 100.0, 4), "% of u")
     out.print(vt)
 
     ft = _table("Natural frequencies (6-DOF, undamped)", "mode", "rad/s", "Hz", "rpm", "margin")
@@ -162,7 +163,7 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
     for r in report.sensitivity:
         se.add_row(
             r.parameter, r.tolerance,
-            *(fmt(x, 3) for x in (r.rocking_plus, r.rocking_minus, r.static_plus, r.static_minus)),
+            *(fmt_scaled(x, 100.0, 3) for x in (r.rocking_plus, r.rocking_minus, r.static_plus, r.static_minus)),
         )
     out.print(se)
 
