@@ -85,3 +85,34 @@ def test_strict_prints_a_failure_not_a_warning(runner):
     result = runner.invoke(app, ["platform", "--strict"])  # the paper example warns (exciter height)
     assert result.exit_code == 1
     assert result.stdout.strip().splitlines()[-1].startswith("FAIL (a warning, failing with --strict)")
+
+
+@pytest.mark.parametrize(
+    ("config", "change", "warning"),
+    [
+        ("frame_saw.toml", ("mechanism", "crank_radius", 300.0), "mechanism.crank_radius = 300 m"),
+        ("frame_saw.toml", ("mechanism", "omega", 300.0), "write speed_rpm = 300"),
+        ("platform_paper_example.toml", ("operation", "amplitude", 0.02), "was it typed in mm?"),
+        ("platform_paper_example.toml", ("operation", "omega", 3000.0), "write speed_rpm = 3000"),
+    ],
+)
+def test_a_probably_wrong_unit_is_warned_about(runner, tmp_path, config, change, warning):
+    scene = read_toml(CONFIGS / config)
+    table, key, value = change
+    if key == "omega" and "speed_rpm" in scene[table]:
+        del scene[table]["speed_rpm"]
+    if key == "crank_radius":
+        scene["mechanism"]["rod_length"] = 1200.0
+        scene["mechanism"]["rod_cog_to_crank_pin"] = 1000.0
+    scene[table][key] = value
+    path = _write(tmp_path, "s.toml", tomli_w.dumps(scene))
+    command = "platform" if config.startswith("platform") else "resonance"
+    single = runner.invoke(app, [command, str(path)])
+    assert warning in single.stderr.replace("\n", " ") and single.exit_code != 4
+    batch = json.loads(runner.invoke(app, ["check", str(path), "--json"]).stdout)
+    assert any(warning in w for w in batch["scenes"][0]["warnings"])
+
+
+def test_a_plausible_scene_has_no_warning(runner):
+    for config in ("frame_saw.toml", "platform_paper_example.toml"):
+        assert "warning" not in runner.invoke(app, ["check", str(CONFIGS / config)]).stderr

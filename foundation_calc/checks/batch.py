@@ -58,6 +58,7 @@ class SceneRun:
     runs: tuple[CheckRun, ...]
     scene: Any = None
     skipped: bool = False
+    warnings: tuple[str, ...] = ()
 
     def exit_code(self, strict: bool) -> ExitCode:
         return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
@@ -120,7 +121,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
             continue
         f = finding
         runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details))
-    return SceneRun(source, scene.kind, scene.name, tuple(runs), scene)
+    return SceneRun(source, scene.kind, scene.name, tuple(runs), scene, warnings=tuple(scene.plausibility_warnings()))
 
 
 def run_scenes(paths: Iterable[str | Path]) -> list[SceneRun]:

@@ -27,10 +27,12 @@ VerboseOpt = Annotated[
 
 def _report_problems(scenes) -> None:
     """Every scene that could not be checked, on stderr, as the single-scene commands print it."""
-    from foundation_calc.cli.guard import report_error, report_internal
+    from foundation_calc.cli.guard import report_error, report_internal, warn_implausible
     from foundation_calc.errors import SceneError
 
     for scene in scenes:
+        if scene.scene is not None:
+            warn_implausible(scene.scene, scene.source)
         for run in scene.runs:
             if run.verdict == "invalid":
                 report_error(SceneError(scene.source, list(run.problems)))

@@ -36,6 +36,18 @@ def report_error(exc: FcalcError) -> None:
         err.print(f"[bold red]error[/]: {escape(str(exc))}", soft_wrap=True)
 
 
+def warn_implausible(scene, source: str = "") -> None:
+    """Print the scene's plausibility warnings (probably a wrong unit) on stderr; they never
+    change the exit code."""
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stderr
+
+    for text in scene.plausibility_warnings():
+        where = f"{escape(source)}: " if source else ""
+        stderr().print(f"[bold yellow]warning[/]: {where}{escape(text)}", soft_wrap=True)
+
+
 def report_internal(text: str) -> None:
     """Print an unexpected exception (a bug in fcalc) on stderr, without a traceback."""
     from rich.markup import escape

@@ -7,7 +7,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import reports_errors, warn_implausible
 
 SceneArg = Annotated[
     Optional[Path],
@@ -69,6 +69,7 @@ def _run(scene: Path | None, speeds: dict, amp: float | None, json: bool, strict
             operation["amplitude"] = amp
         source += " (with command-line overrides)"
     loaded = parse_scene(data, source=source, expect="platform")
+    warn_implausible(loaded)
     given_as = loaded.operation.speed_given_as
     if speeds:
         given_as = f"{SPEED_FLAGS[given_as]} on the command line"

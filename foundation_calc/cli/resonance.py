@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
@@ -29,6 +29,7 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
 
     shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
+    warn_implausible(loaded)
     report = check_resonances(loaded.design(), loaded.limits.detuning)
     if json:
         from foundation_calc.output.console import print_json

@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.units import UnitsOpt
 
 #: Unit suffixes accepted after a speed range -> display unit label.
@@ -108,6 +108,7 @@ def sweep(
     from foundation_calc.scenes import load_scene
 
     loaded = load_scene(scene, expect="crank_foundation")
+    warn_implausible(loaded)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     report = run_sweep(loaded.design(), variable, values, loaded.limits, loaded.limits.detuning, points)
     if csv is not None:

@@ -149,6 +149,7 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
                 "kind": scene.kind or None,
                 "name": scene.name,
                 "exit_code": int(scene.exit_code(strict)),
+                "warnings": list(scene.warnings),
                 "checks": [
                     {
                         "check": run.check,

@@ -43,6 +43,11 @@ class SceneModel(BaseModel):
         return value
 
 
+#: A length more than this many times the structure's own size is flagged as probably typed in
+#: mm where m was meant (a plausibility warning, not an error) [-].
+LENGTH_SCALE_FACTOR = 10.0
+
+
 def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraints: Any) -> Any:
     """A pydantic Field whose description reads ``"symbol [unit]: text"``."""
     return Field(default, description=f"{symbol} [{unit}]: {text}", **constraints)

@@ -7,11 +7,13 @@ message names the field to change.
 
 from __future__ import annotations
 
+import math
+
 from typing import Literal
 
 from pydantic import ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 
@@ -109,6 +111,11 @@ class Point(SceneModel):
     height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
 
 
+#: Crank speed [rad/s] above which ``omega`` was probably meant as rpm: about 1900 rpm, faster
+#: than crank machines on block foundations run (frame saws 250-350 rpm, compressors to 1000).
+CRANK_OMEGA_PLAUSIBLE = 200.0
+
+
 class CrankScene(SceneModel):
     """A scene of kind ``crank_foundation``."""
 
@@ -133,6 +140,35 @@ class CrankScene(SceneModel):
         if repeated:
             raise ValueError(f"point names must be distinct and not 'C' (the centre of mass): {', '.join(repeated)}")
         return points
+
+    def plausibility_warnings(self) -> list[str]:
+        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s).
+
+        A length of the machine or a point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
+        × the foundation's size sqrt(S) away, or ``omega`` above what crank machines run at.
+        """
+        size = self.foundation.base_area**0.5
+        mech = self.mechanism
+        lengths = {
+            "foundation.cog_height": self.foundation.cog_height,
+            "mechanism.crank_radius": mech.crank_radius,
+            "mechanism.rod_length": mech.rod_length,
+            "mechanism.crank_axis_to_cog": mech.crank_axis_to_cog,
+            **{f"points.{p.name!r}.horizontal": p.horizontal for p in self.points},
+            **{f"points.{p.name!r}.height": p.height for p in self.points},
+        }
+        found = [
+            f"{key} = {value:g} m is {abs(value) / size:.3g} × the foundation's size sqrt(S) = {size:.3g} m;"
+            " was it typed in mm?"
+            for key, value in lengths.items()
+            if abs(value) > LENGTH_SCALE_FACTOR * size
+        ]
+        if mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
+            found.append(
+                f"mechanism.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
+                f" machine; if you meant {mech.omega:g} rpm, write speed_rpm = {mech.omega:g}"
+            )
+        return found
 
     @model_validator(mode="after")
     def _mechanism_is_small(self):

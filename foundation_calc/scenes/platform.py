@@ -10,12 +10,14 @@ vertical_reference or vertical. Added keys: ``platform.product_height``,
 
 from __future__ import annotations
 
+import math
+
 from pathlib import Path
 from typing import Annotated, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -139,6 +141,13 @@ class Limits(SceneModel):
     )
 
 
+#: Amplitude [m] above which u was probably typed in mm: vibro-tables vibrate 0.1-5 mm.
+PLATFORM_AMPLITUDE_PLAUSIBLE = 0.01
+
+#: Exciter speed [rad/s] above which ``omega`` was probably meant as rpm (about 9500 rpm).
+PLATFORM_OMEGA_PLAUSIBLE = 1000.0
+
+
 class PlatformScene(SceneModel):
     """A scene of kind ``platform``."""
 
@@ -153,6 +162,23 @@ class PlatformScene(SceneModel):
         default_factory=list, description="- [-]: further rotors for the 6-DOF verification", max_length=16
     )
     limits: Limits = Limits()
+
+    def plausibility_warnings(self) -> list[str]:
+        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s)."""
+        op, size = self.operation, max(self.platform.length, self.platform.width)
+        found = []
+        if op.amplitude > PLATFORM_AMPLITUDE_PLAUSIBLE:
+            found.append(
+                f"operation.amplitude = {op.amplitude:g} m: vibro-tables vibrate 0.1-5 mm; was it typed in mm?"
+            )
+        if self.exciter.eccentricity > LENGTH_SCALE_FACTOR * size:
+            found.append(f"exciter.eccentricity = {self.exciter.eccentricity:g} m exceeds the platform; was it typed in mm?")
+        if op.omega is not None and op.omega > PLATFORM_OMEGA_PLAUSIBLE:
+            found.append(
+                f"operation.omega = {op.omega:g} rad/s is {op.omega * 30 / math.pi:.5g} rpm; if you meant"
+                f" {op.omega:g} rpm, write speed_rpm = {op.omega:g}"
+            )
+        return found
 
     @model_validator(mode="after")
     def _position_or_vertical(self):

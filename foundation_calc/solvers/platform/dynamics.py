@@ -320,13 +320,30 @@ def static_response(system: PeriodicSystem) -> np.ndarray:
     return np.linalg.solve(system.springs, system.static_load)
 
 
+def combination_label(n) -> str:
+    """A harmonic vector of the rotor speeds as text: (2, -1) -> "2ω1 − ω2", (1,) -> "ω".
+
+    >>> combination_label((2, -1)), combination_label((1,)), combination_label((0, 3))
+    ('2ω1 − ω2', 'ω', '3ω2')
+    """
+    names = ["ω"] if len(n) == 1 else [f"ω{j + 1}" for j in range(len(n))]
+    text = ""
+    for k, name in zip(n, names):
+        if k == 0:
+            continue
+        sign = ("−" if k < 0 else "+") if text else ("−" if k < 0 else "")
+        term = f"{abs(k) if abs(k) != 1 else ''}{name}"
+        text += f" {sign} {term}" if text else f"{sign}{term}"
+    return text or "0"
+
+
 def _solve(system: PeriodicSystem, n, rhs) -> np.ndarray:
     try:
         return np.linalg.solve(system.dynamic_matrix(n), rhs)
     except np.linalg.LinAlgError:
         raise PhysicsError(
-            f"the 6-DOF response is undefined: {system.frequency(n):.6g} rad/s, a harmonic of the"
-            " rotor speeds, falls exactly on an undamped natural frequency"
+            f"the 6-DOF response is undefined: {combination_label(n)} = {system.frequency(n):.6g} rad/s,"
+            " a combination of the rotor speeds, falls exactly on an undamped natural frequency"
         ) from None
 
 
@@ -370,9 +387,14 @@ def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
         if size <= NEUMANN_TOL * base:
             break
         if order >= 3 and size > sizes[-2]:
+            worst = max(current, key=lambda n: float(np.max(np.abs(current[n] * weights))))
+            w = abs(system.frequency(worst))
+            modes = natural_frequencies(platform, rotors).frequencies
+            p = float(modes[np.argmin(np.abs(modes - w))])
             raise ConvergenceError(
-                "the rotors' periodic terms do not converge: a combination of the rotor speeds"
-                " lies on a natural frequency of the platform"
+                f"the rotors' periodic terms do not converge: the combination {combination_label(worst)}"
+                f" = {w:.6g} rad/s of the rotor speeds lies {abs(w - p) / p:.2%} from the natural"
+                f" frequency {p:.6g} rad/s of the platform"
             )
         residual: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
         for n, Q in current.items():
