@@ -116,3 +116,16 @@ def test_a_probably_wrong_unit_is_warned_about(runner, tmp_path, config, change,
 def test_a_plausible_scene_has_no_warning(runner):
     for config in ("frame_saw.toml", "platform_paper_example.toml"):
         assert "warning" not in runner.invoke(app, ["check", str(CONFIGS / config)]).stderr
+
+
+def test_units_rpm_converts_every_speed_column(runner):
+    table = runner.invoke(app, ["resonance", str(CONFIGS / "frame_saw.toml"), "--units", "rpm"]).stdout
+    header = next(line for line in table.splitlines() if "averaged inertia" in line and "mode" in line)
+    assert "rpm, averaged inertia" in header
+
+
+def test_nearest_resonances_are_named_alike_by_every_method(runner):
+    """Both closed forms name a resonance as n·ω = mode (k0, p1, p2), not one by its frequency."""
+    lines = runner.invoke(app, ["amplitudes", str(CONFIGS / "frame_saw.toml")]).stdout.splitlines()[1:3]
+    assert "nearest resonance 3ω = p1" in lines[0]
+    assert "nearest resonance 6ω = k0 (166.091 rad/s" in lines[1]

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
@@ -135,7 +136,10 @@ def _first(design: CrankDesign, points) -> Approximation:
 def _averaged(design: CrankDesign, points) -> Approximation:
     res = averaged_response(design)
     n, mode = res.nearest
-    label = f"{n}ω = {res.natural[mode]:.6g} rad/s" if n > 1 else f"ω = {res.natural[mode]:.6g} rad/s"
+    w = float(res.natural[mode])
+    zero, _ = design_frequencies(design)  # name the averaged mode after the nearest k0, p1, p2
+    name = min(("k0", "p1", "p2"), key=lambda k: abs(float(getattr(zero, k)) - w))
+    label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
     return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points)
 
 

@@ -94,12 +94,13 @@ def print_resonance_report(
 
     freqs = Table(title="Natural frequencies", title_justify="left")
     freqs.add_column("mode")
-    for col in ("rad/s", "Hz", "rpm", "rad/s, averaged inertia"):
+    for col in ("rad/s", "Hz", "rpm", f"{units.label('speed')}, averaged inertia"):
         freqs.add_column(col, justify="right")
     for mode in ("k0", "p1", "p2"):
         w0, w1 = getattr(report.zero_order, mode), getattr(report.averaged, mode)
         freqs.add_row(
-            f"{mode} ({MODE_NAMES[mode]})", fmt(w0, 6), fmt(hz_from_omega(w0)), fmt(rpm_from_omega(w0)), fmt(w1, 6)
+            f"{mode} ({MODE_NAMES[mode]})", fmt(w0, 6), fmt(hz_from_omega(w0)), fmt(rpm_from_omega(w0)),
+            fmt(units.convert("speed", w1), 6),
         )
     out.print(freqs)
 
