@@ -129,3 +129,29 @@ def test_nearest_resonances_are_named_alike_by_every_method(runner):
     lines = runner.invoke(app, ["amplitudes", str(CONFIGS / "frame_saw.toml")]).stdout.splitlines()[1:3]
     assert "nearest resonance 3ω = p1" in lines[0]
     assert "nearest resonance 6ω = k0 (166.091 rad/s" in lines[1]
+
+
+def test_a_number_too_long_to_read_is_an_invalid_scene_naming_its_line(runner, tmp_path):
+    text = 'kind = "crank_foundation"\n[foundation]\nmass = ' + "9" * 5000 + "\n"
+    result = runner.invoke(app, ["resonance", str(_write(tmp_path, "big.toml", text))])
+    assert result.exit_code == 3
+    assert "line 3, key mass: a number with 5000 digits" in result.stderr.replace("\n  ", " ")
+
+
+def test_frequencies_double_precision_cannot_resolve_are_an_invalid_scene(runner, tmp_path):
+    """Lengths of 1e-13 m against a 1e5 kg block on c_z = 4e-5 N/m³: one natural frequency of
+    the averaged operator is round-off. Exit 3 naming the fields, never a crash or a NaN."""
+    scene = read_toml(CONFIGS / "frame_saw.toml")
+    scene["foundation"] |= {"moment_of_inertia": 1e-13, "base_area": 30.0, "cog_height": 1e-13}
+    scene["soil"] = {"c_z": 4e-5, "c_x": 2.8e-5}
+    del scene["mechanism"]["speed_rpm"]
+    scene["mechanism"] |= {
+        "omega": 7e13, "crank_radius": 1e-13, "rod_length": 1.2e-13, "rod_cog_to_crank_pin": 1e-13,
+        "rod_radius_of_gyration": 1e-13, "crank_axis_to_cog": 1e-13,
+    }
+    path = _write(tmp_path, "extreme.toml", tomli_w.dumps(scene))
+    result = runner.invoke(app, ["amplitudes", str(path)])
+    assert result.exit_code == 3, result.output
+    assert "double precision" in result.stderr and "foundation.moment_of_inertia" in result.stderr
+    batch = runner.invoke(app, ["check", str(path), str(CONFIGS / "frame_saw.toml"), "--json"])
+    assert batch.exit_code == 3 and [s["exit_code"] for s in json.loads(batch.stdout)["scenes"]] == [3, 0]

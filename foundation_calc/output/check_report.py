@@ -57,6 +57,10 @@ def _tally(counted: dict[str, int]) -> str:
     return ", ".join(f"{n} {verdict}" for verdict, n in counted.items() if n) or "none"
 
 
+def _plural(n: int, noun: str) -> str:
+    return f"{n} {noun}{'s' * (n != 1)}"
+
+
 def _common_folder(sources: list[str]) -> str:
     """The folder all sources share (``""`` when they share none), to print names short."""
     import os
@@ -98,8 +102,8 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
     if skipped:
         out.print(Text("skipped (TOML without a kind key, not a scene): " + ", ".join(skipped)), soft_wrap=True)
     out.print(
-        f"{len(checked)} scene{'s' * (len(checked) != 1)}: {_tally(scene_counts(scenes, strict))}"
-        f" ({sum(len(s.runs) for s in checked)} checks: {_tally(counts(scenes, strict))})"
+        f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
+        f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
         f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
         soft_wrap=True,
     )

@@ -53,6 +53,26 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         raise SceneError(source, [("", f"is not valid TOML: {exc}")]) from None
     except RecursionError:
         raise SceneError(source, [("", "is not valid TOML: nested too deeply")]) from None
+    except ValueError:  # an integer longer than Python converts (sys.get_int_max_str_digits())
+        raise SceneError(source, [("", f"cannot be read: {_overlong_number(text)}")]) from None
+
+
+def _overlong_number(text: str) -> str:
+    """Where a scene has a number too long to read, as text naming its line and key."""
+    import re
+    import sys
+
+    limit = sys.get_int_max_str_digits()
+    for number, line in enumerate(text.splitlines(), start=1):
+        found = re.search(rf"\d{{{limit},}}", line)
+        if found:
+            key = line.partition("=")[0].strip() if "=" in line[: found.start()] else ""
+            named = f", key {key}" if key else ""
+            return (
+                f"line {number}{named}: a number with {len(found.group())} digits (at most {limit} can be read;"
+                " a physical input needs a handful)"
+            )
+    return "a value cannot be converted"
 
 
 def model_for_kind(kind: str) -> type:

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
@@ -99,6 +100,36 @@ class AveragedResponse:
     stiffness: np.ndarray
 
 
+#: Smallest ratio of the lowest to the highest natural frequency that double precision resolves
+#: [-]: the eigenvalues ω² then span 14 decades, the limit of 16-digit arithmetic with margin.
+RESOLVED_FREQUENCY_RATIO = 1e-7
+
+#: Scene fields whose values set the natural frequencies, named when they cannot be resolved.
+FREQUENCY_FIELDS = (
+    "foundation.mass, foundation.moment_of_inertia, foundation.cog_height, foundation.base_area,"
+    " foundation.base_second_moment, soil.c_z, soil.c_x"
+)
+
+
+def _natural_frequencies(M, K) -> np.ndarray:
+    """Ascending natural frequencies [rad/s] of (K, M), or :class:`PhysicsError` when double
+    precision cannot resolve them (a singular mass matrix, or frequencies more than
+    1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is round-off)."""
+    try:
+        squared = np.linalg.eigvals(np.linalg.solve(M, K)).real
+    except np.linalg.LinAlgError:
+        squared = np.zeros(3)
+    natural = np.sort(np.sqrt(np.abs(squared)))
+    if not np.all(np.isfinite(natural)) or natural[0] <= RESOLVED_FREQUENCY_RATIO * natural[-1]:
+        raise PhysicsError(
+            f"the natural frequencies of the averaged operator ({', '.join(f'{w:.3g}' for w in natural)} rad/s)"
+            f" span more than {1 / RESOLVED_FREQUENCY_RATIO:.0e}: outside the range double precision resolves;"
+            " the masses, lengths and soil stiffness of the scene are orders of magnitude apart",
+            field=FREQUENCY_FIELDS,
+        )
+    return natural
+
+
 def averaged_response(design: CrankDesign) -> AveragedResponse:
     """Forced steady state with the time-averaged operator and the exact forcing (module docs).
 
@@ -118,7 +149,7 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
     require_stable_rocking(design.c, design.I1, design.M_tot * design.g, design.h)
     lin = linearise(design, phases(FORCING_SAMPLES))
     M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
-    natural = np.sort(np.sqrt(np.abs(np.linalg.eigvals(np.linalg.solve(M, K)).real)))
+    natural = _natural_frequencies(M, K)
     n = np.arange(FORCING_HARMONICS + 1)
     w = n * design.omega
     margins = np.abs(w[1:, None] - natural) / natural
@@ -131,7 +162,11 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
         Z = np.zeros((3, FORCING_HARMONICS + 1), dtype=complex)
     else:
         ops = K + 1j * w[:, None, None] * C - (w * w)[:, None, None] * M
-        Z = np.linalg.solve(ops, (fc - 1j * fs).T[..., None])[..., 0].T
+        try:
+            Z = np.linalg.solve(ops, (fc - 1j * fs).T[..., None])[..., 0].T
+        except np.linalg.LinAlgError:  # singular in double precision: a resonance to round-off
+            resonant, margin = True, 0.0
+            Z = np.zeros((3, FORCING_HARMONICS + 1), dtype=complex)
     return AveragedResponse(
         motion=PeriodicMotion(omega=design.omega, cos=Z.real, sin=-Z.imag),
         natural=natural,
