@@ -13,19 +13,20 @@ def _frequencies(freqs) -> dict:
     return {"k0": freqs.k0, "p1": freqs.p1, "p2": freqs.p2}
 
 
-def summary_line(report: ResonanceReport, strict: bool = False) -> str:
-    """One sentence that says whether the speed is far enough from every resonance."""
+def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUnits = DisplayUnits()) -> str:
+    """One sentence that says whether the speed is far enough from every resonance (the speed in
+    ``units``, as ``fcalc check`` words it)."""
     near = report.nearest
-    rpm = rpm_from_omega(report.design.omega)
+    speed = units.show("speed", report.design.omega)
     outcome = report.outcome.value
     if outcome == "pass":
         return (
-            f"{verdict_text(outcome)}: {fmt(rpm)} rpm is at least {near.margin:.1%} from every"
+            f"{verdict_text(outcome)}: speed {speed} is at least {near.margin:.1%} from every"
             f" resonance (nearest: {near.condition.label}; required {near.required:.0%})"
         )
     bad = [r for r in report.rows if r.outcome.value == outcome]
     names = ", ".join(f"{r.condition.label} (margin {r.margin:.1%})" for r in bad)
-    return f"{verdict_text(outcome, strict)}: {fmt(rpm)} rpm is inside the {near.required:.0%} band of {names}"
+    return f"{verdict_text(outcome, strict)}: speed {speed} is inside the {near.required:.0%} band of {names}"
 
 
 def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
@@ -123,4 +124,4 @@ def print_resonance_report(
             verdict_text(row.outcome.value),
         )
     out.print(res)
-    out.print(summary_line(report, strict), soft_wrap=True)
+    out.print(summary_line(report, strict, units), soft_wrap=True)

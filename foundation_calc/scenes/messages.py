@@ -17,35 +17,29 @@ from pydantic.fields import FieldInfo
 _BOUND_SYMBOLS = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
 
 
-def _field_info(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | None:
-    """Follow ``loc`` through nested models and return the FieldInfo it ends on."""
-    info = None
-    current: Any = model
+def _walk(model: type[BaseModel], loc: tuple[Any, ...]) -> tuple[FieldInfo | None, Any]:
+    """Follow ``loc`` through nested models: the FieldInfo it ends on and the model (or type)
+    that field holds; ``(None, None)`` when ``loc`` leaves the models."""
+    info, current = None, model
     for part in loc:
         if isinstance(part, int):
             continue
         fields = getattr(current, "model_fields", None)
         if not fields or part not in fields:
-            return None
+            return None, None
         info = fields[part]
-        current = info.annotation
-        # unwrap Optional[...] / X | None and list[...] to reach a nested model
-        for arg in getattr(current, "__args__", ()) or ():
-            if isinstance(arg, type) and issubclass(arg, BaseModel):
-                current = arg
-    return info
+        current = _nested(info.annotation)
+    return info, current
+
+
+def _field_info(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | None:
+    """The FieldInfo that ``loc`` ends on."""
+    return _walk(model, loc)[0]
 
 
 def _model_at(model: type[BaseModel], loc: tuple[Any, ...]) -> type[BaseModel] | None:
     """The model whose fields are the keys at ``loc`` (the table that holds the key)."""
-    current: Any = model
-    for part in loc:
-        if isinstance(part, int):
-            continue
-        fields = getattr(current, "model_fields", None)
-        if not fields or part not in fields:
-            return None
-        current = _nested(fields[part].annotation)
+    current = _walk(model, loc)[1]
     return current if isinstance(current, type) and issubclass(current, BaseModel) else None
 
 
