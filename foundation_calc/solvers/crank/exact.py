@@ -182,6 +182,7 @@ def exact_periodic_solution(design: CrankDesign) -> ExactSolution:
     """
     K = FIRST_HARMONICS
     z, iterations, res, force_size = _first_solve(design, K)
+    change = float("inf")  # no refinement compared yet
     while True:
         K2 = 2 * K
         if K2 > MAX_HARMONICS:
