@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
@@ -117,12 +119,28 @@ class AmplitudeReport:
         return worst(row.outcome for row in self.rows)
 
 
+#: Points evaluated in one array operation; bounds the memory of a scene with many points.
+POINT_CHUNK = 1024
+
+
+def _located(motion, points) -> dict[str, Peaks]:
+    """Peaks of C and of every point, all points of a chunk in one array operation."""
+    names = ["C", *(p.name for p in points)]
+    horizontal = np.array([0.0, *(p.horizontal for p in points)])
+    height = np.array([0.0, *(p.height for p in points)])
+    located = {}
+    for start in range(0, len(names), POINT_CHUNK):
+        chunk = slice(start, start + POINT_CHUNK)
+        pk = point_peaks(motion, horizontal[chunk], height[chunk])
+        for i, name in enumerate(names[chunk]):
+            located[name] = Peaks(pk.displacement[i], pk.velocity[i], pk.acceleration[i])
+    return located
+
+
 def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
     if resonant:
         return Approximation(key, None, True, margin, nearest, None, {})
-    located = {"C": point_peaks(motion, 0.0, 0.0)}
-    located.update({p.name: point_peaks(motion, p.horizontal, p.height) for p in points})
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), located)
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), _located(motion, points))
 
 
 def _first(design: CrankDesign, points) -> Approximation:
