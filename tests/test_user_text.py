@@ -67,3 +67,38 @@ def test_a_name_too_long_is_an_invalid_scene_and_the_rest_still_run(runner, tmp_
     assert result.exit_code == 3
     verdicts = {s["source"].rsplit("/", 1)[-1]: s["exit_code"] for s in json.loads(result.stdout)["scenes"]}
     assert verdicts == {"crank.toml": 3, "good.toml": 0, "platform.toml": 3}
+
+
+def test_one_folder_of_every_hostile_case_gives_a_verdict_for_each_scene(runner, tmp_path):
+    """A format-template name, a name too long, a number too long to read, frequencies double
+    precision cannot resolve, and good scenes, in one folder: a verdict for every scene in the
+    table, the JSON document and JUnit."""
+    good = read_toml(CONFIGS / "frame_saw.toml")
+    named = {**good, "name": "{speed:>50000000}", "points": [{"name": "{x} [b] %s", "horizontal": 0.5, "height": 0.5}]}
+    extreme = json.loads(json.dumps(good))
+    extreme["foundation"] |= {"moment_of_inertia": 1e-13, "cog_height": 1e-13}
+    extreme["soil"] = {"c_z": 4e-5, "c_x": 2.8e-5}
+    del extreme["mechanism"]["speed_rpm"]
+    extreme["mechanism"] |= {"omega": 7e13, "crank_radius": 1e-13, "rod_length": 1.2e-13, "rod_cog_to_crank_pin": 1e-13,
+                             "rod_radius_of_gyration": 1e-13, "crank_axis_to_cog": 1e-13}
+    files = {
+        "a_named.toml": tomli_w.dumps(named),
+        "b_long_name.toml": tomli_w.dumps({**good, "name": "n" * 10_000}),
+        "c_big_int.toml": 'kind = "crank_foundation"\n[foundation]\nmass = ' + "9" * 5000 + "\n",
+        "d_extreme.toml": tomli_w.dumps(extreme),
+        "e_good.toml": tomli_w.dumps(good),
+        "f_platform.toml": (CONFIGS / "platform_paper_example.toml").read_text(encoding="utf-8"),
+    }
+    for name, text in files.items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    junit = tmp_path / "report.xml"
+    table = runner.invoke(app, ["check", str(tmp_path), "--junit", str(junit)])
+    assert table.exit_code == 3
+    for name in files:
+        assert name in table.stdout
+    document = json.loads(runner.invoke(app, ["check", str(tmp_path), "--json"]).stdout)
+    codes = {s["source"].rsplit("/", 1)[-1]: s["exit_code"] for s in document["scenes"]}
+    assert codes == {"a_named.toml": 0, "b_long_name.toml": 3, "c_big_int.toml": 3, "d_extreme.toml": 3,
+                     "e_good.toml": 0, "f_platform.toml": 0}
+    suites = {s.get("name").rsplit("/", 1)[-1] for s in ET.parse(junit).getroot()}
+    assert suites == set(files)
