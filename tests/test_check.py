@@ -202,3 +202,16 @@ def test_resonance_tables_follow_units(runner, monkeypatch):
     assert row.count("17.305") == 2 and "1038.3" not in row
     plain = runner.invoke(app, ["resonance", scene, "--json"]).stdout
     assert runner.invoke(app, ["resonance", scene, "--json", "--units", "Hz"]).stdout == plain
+
+
+def test_jobs_give_the_serial_result_in_the_same_order(runner, tmp_path):
+    """Scenes spread over worker processes: the same document as the serial run, a broken scene
+    still reported in its place."""
+    for name in ("frame_saw.toml", "crank_press.toml", "compressor_near_resonance.toml", "vertical_compressor.toml"):
+        shutil.copy(CONFIGS / name, tmp_path / name)
+    (tmp_path / "broken.toml").write_text('kind = "crank_foundation"\n[foundation\n', encoding="utf-8")
+    serial = runner.invoke(app, ["check", str(tmp_path), "--json", "--jobs", "1"])
+    parallel = runner.invoke(app, ["check", str(tmp_path), "--json", "--jobs", "2"])
+    assert serial.exit_code == parallel.exit_code == 3
+    assert json.loads(serial.stdout) == json.loads(parallel.stdout)
+    assert [s["source"].rsplit("/", 1)[-1] for s in json.loads(parallel.stdout)["scenes"]][0] == "broken.toml"

@@ -20,6 +20,10 @@ JunitOpt = Annotated[
     typer.Option("--junit", metavar="FILE", help="Also write a JUnit XML report (one test case per scene and check)."),
 ]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
+JobsOpt = Annotated[
+    Optional[int],
+    typer.Option("--jobs", "-j", min=1, help="Worker processes (default: the number of cores); 1 checks in this process."),
+]
 VerboseOpt = Annotated[
     bool, typer.Option("--verbose", "-v", help="Every problem of an invalid scene and every limit row in the table.")
 ]
@@ -48,6 +52,7 @@ def check(
     strict: StrictOpt = False,
     units: UnitsOpt = None,
     verbose: VerboseOpt = False,
+    jobs: JobsOpt = None,
 ) -> None:
     """Run every check that each scene's kind supports and report them all.
 
@@ -59,7 +64,9 @@ def check(
     from foundation_calc.output import check_report
 
     shown = display_units(units)
-    scenes = run_scenes(paths)
+    import os
+
+    scenes = run_scenes(paths, jobs or os.cpu_count() or 1)
     if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)
