@@ -4,8 +4,9 @@ Three references are run interleaved with fcalc, many times each, and compared b
 
 - ``import typer, pydantic, rich`` — the import floor (typer and pydantic import lazily, so this
   line loads little of either);
-- a minimal typer command that validates one pydantic model — the framework floor: what any
-  typer + pydantic CLI pays before doing any work;
+- a minimal typer command that reads a TOML scene, validates it with a small pydantic model and
+  prints one rich table — the framework floor: what any typer + pydantic + rich CLI of this kind
+  pays before doing its own work;
 - ``python -c pass`` — the interpreter alone.
 """
 
@@ -18,18 +19,38 @@ import time
 from dataclasses import dataclass
 
 FRAMEWORK_FLOOR = """
+import sys
+import tomllib
+
 import typer
-from pydantic import BaseModel
+from pydantic import BaseModel, ConfigDict, Field
+from rich.console import Console
+from rich.table import Table
+
+
+class Soil(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    c_z: float = Field(gt=0)
+    c_x: float = Field(gt=0)
+
 
 class Scene(BaseModel):
-    mass: float
+    model_config = ConfigDict(extra="ignore")
+    kind: str
+    soil: Soil
+
 
 app = typer.Typer()
 
+
 @app.command()
 def main(path: str) -> None:
-    Scene(mass=1.0)
-    print(path)
+    with open(path, "rb") as handle:
+        scene = Scene.model_validate(tomllib.load(handle))
+    table = Table("key", "value")
+    table.add_row("c_z", f"{scene.soil.c_z:.4g}")
+    Console().print(table)
+
 
 app()
 """
@@ -51,7 +72,7 @@ def _commands(scene: str) -> dict[str, tuple[str, ...]]:
     return {
         "python -c pass": (py, "-c", "pass"),
         "import typer, pydantic, rich": (py, "-c", "import typer, pydantic, rich"),
-        "typer command + pydantic model": (py, "-c", FRAMEWORK_FLOOR, scene),
+        "typer + TOML + pydantic model + rich table": (py, "-c", FRAMEWORK_FLOOR, scene),
         "fcalc resonance SCENE": (py, "-m", "foundation_calc", "resonance", scene),
         "fcalc resonance SCENE --json": (py, "-m", "foundation_calc", "resonance", scene, "--json"),
     }
@@ -68,7 +89,7 @@ def startup_times(scene: str, runs: int = 20) -> list[StartupRow]:
             samples[label].append(time.perf_counter() - t0)
     medians = {label: statistics.median(ts) for label, ts in samples.items()}
     floor = medians["import typer, pydantic, rich"]
-    framework = medians["typer command + pydantic model"]
+    framework = medians["typer + TOML + pydantic model + rich table"]
     return [
         StartupRow(label, commands[label], t, t / floor, t / framework) for label, t in medians.items()
     ]

@@ -184,7 +184,7 @@ def print_bench(scenes, platforms, throughput, startup) -> None:
         out.print()
     if startup:
         table = Table(title="Start-up: median wall time of a whole process, interleaved runs", title_justify="left")
-        for name in ("command", "time", "× import typer, pydantic, rich", "× typer command + pydantic model"):
+        for name in ("command", "time", "× import typer, pydantic, rich", "× typer + TOML + pydantic + rich table"):
             table.add_column(name, justify="left" if name == "command" else "right")
         for row in startup:
             table.add_row(
