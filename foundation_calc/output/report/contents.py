@@ -1,0 +1,340 @@
+"""What a calculation sheet says, read from the JSON documents of the single-scene commands.
+
+This module is the only place of the report package that reads JSON keys, so a renamed key is
+fixed here once. Numbers are shown with 6 significant figures in the chosen display units.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.report import equations
+from foundation_calc.output.report.model import Figure, Paragraph, Section, Sheet, table
+
+DIGITS = 6
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    """Where a sheet comes from: scene, file and its SHA-256, fcalc version, date, command."""
+
+    name: str
+    file: str
+    sha256: str
+    version: str
+    date: str
+    command: str
+
+
+def num(value: float | None, digits: int = DIGITS) -> str:
+    """A number with ``digits`` significant figures; ``-`` for a missing one."""
+    return "-" if value is None else f"{value:.{digits}g}"
+
+
+def pct(value: float) -> str:
+    """A fraction as a percentage with 2 decimals."""
+    return f"{value * 100:.2f} %"
+
+
+def _title_section(title: TitleBlock) -> Section:
+    rows = (
+        ("scene", title.name),
+        ("file", title.file),
+        ("SHA-256 of the file", title.sha256),
+        ("fcalc version", title.version),
+        ("date (UTC)", title.date),
+        ("command", title.command),
+    )
+    return Section("Title block", (table("", ("item", "value"), rows, (False, False)),))
+
+
+def _speed(units: DisplayUnits, omega: float) -> str:
+    return num(units.convert("speed", omega))
+
+
+def _equation_section(eqs) -> Section:
+    return Section("Equations used", tuple(eqs))
+
+
+# --------------------------------------------------------------------------- crank foundation
+
+
+def _crank_inputs(scene_data: dict) -> Section:
+    blocks = []
+    for group, values in scene_data.items():
+        if isinstance(values, dict):
+            rows = [(key, str(value)) for key, value in values.items()]
+            blocks.append(table(f"[{group}]", ("key", "value (scene units, SI)"), rows, (False, True)))
+    return Section("Inputs (as given in the scene file)", tuple(blocks))
+
+
+def _crank_derived(res: dict, units: DisplayUnits) -> Section:
+    d, s = res["derived"], res["speed"]
+    rows = (
+        ("ω, crank speed", _speed(units, s["omega"]), units.label("speed")),
+        ("μ = m/M_tot, moving-mass ratio", num(d["mu"]), "-"),
+        ("λ = r/l, crank-to-rod ratio", num(d["lambda"]), "-"),
+        ("M_tot, total mass", num(d["total_mass"]), "kg"),
+        ("m, moving mass", num(d["moving_mass"]), "kg"),
+        ("ρ1 = sqrt(I_c/M_tot)", num(d["rho1"]), "m"),
+        ("κ = l'l'' − ρ²", num(d["kappa"]), "m²"),
+        ("rocking stability reserve c·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
+    )
+    return Section("Derived quantities", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
+
+
+def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
+    sp = units.label("speed")
+    zero, avg = res["natural_frequencies"], res["natural_frequencies_averaged_inertia"]
+    freqs = table(
+        "Natural frequencies",
+        ("mode", f"[{sp}]", f"averaged inertia [{sp}]"),
+        ((mode, _speed(units, zero[mode]), _speed(units, avg[mode])) for mode in zero),
+    )
+    rows = (
+        (
+            r["condition"] + ("" if r["source"] == "paper" else " (extra)"),
+            r["mode_name"],
+            _speed(units, r["critical_speed"]["omega"]),
+            _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
+            pct(r["margin"]),
+            pct(r["required"]),
+            r["verdict"].upper(),
+        )
+        for r in res["resonances"]
+    )
+    resonances = table(
+        "Resonances: critical crank speeds and margins",
+        ("condition", "mode", f"critical [{sp}]", f"avg. inertia [{sp}]", "margin", "required", "verdict"),
+        rows,
+        (False, False, True, True, True, True, False),
+    )
+    return Section("Natural frequencies and resonances", (freqs, resonances))
+
+
+def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
+    approximations = amp["approximations"]
+    checked = approximations[amp["checked_with"]]
+    blocks = [Paragraph(f"Checked with: {checked['title']}. Signs: y positive downward; {amp['conventions']}.")]
+    if checked["resonant"]:
+        blocks.append(Paragraph(f"Resonant: {checked['nearest_resonance']}; no steady state without damping."))
+        return Section("Amplitudes", tuple(blocks))
+    shown = [(key, a) for key, a in approximations.items() if not a["resonant"]]
+    au = units.label("amplitude")
+    rows = []
+    for name in checked["harmonics"]:
+        h = [a["harmonics"][name] for _, a in shown]
+        if max(x["magnitude"] for x in h) == 0.0:
+            continue
+        unit = "rad" if name.startswith("theta") else au
+        scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
+        rows.append((f"{name} [{unit}]", *(num(scale(x["magnitude"])) for x in h)))
+    blocks.append(
+        table("Amplitude per harmonic (magnitude)", ("harmonic", *(k.replace("_", " ") for k, _ in shown)), rows)
+    )
+    quantity_units = {
+        "displacement": ("amplitude", au),
+        "velocity": ("velocity", units.label("velocity")),
+        "acceleration": ("acceleration", units.label("acceleration")),
+    }
+    point_rows = [
+        (point, direction, *(num(units.convert(quantity_units[q][0], v)) for q, v in peaks.items()))
+        for point, dirs in checked["points"].items()
+        for direction, peaks in dirs.items()
+    ]
+    header = ("point", "direction", *(f"{q} [{u}]" for q, (_, u) in quantity_units.items()))
+    blocks.append(table("Peaks over one revolution", header, point_rows, (False, False, True, True, True)))
+    return Section("Amplitudes", tuple(blocks))
+
+
+def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
+    rows = [
+        (
+            f"resonance {r['condition']}",
+            "margin " + pct(r["margin"]),
+            "≥ " + pct(r["required"]),
+            num(r["required"] / r["margin"], 4) if r["margin"] > 0 else "inf",
+            r["verdict"].upper(),
+            "scene [limits] detuning",
+        )
+        for r in res["resonances"]
+    ]
+    shown = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
+    for row in amp["limits"]:
+        q = shown[row["quantity"]]
+        rows.append(
+            (
+                f"{row['point']} {row['direction']} {row['quantity']}",
+                f"{num(units.convert(q, row['value']))} {units.label(q)}",
+                f"≤ {num(units.convert(q, row['limit']))} {units.label(q)}",
+                num(row["ratio"], 4),
+                row["verdict"].upper(),
+                f"scene [limits] {q}",
+            )
+        )
+    checks = table(
+        "Every check (ratio = demand/limit; above 1 fails)",
+        ("check", "value", "limit", "ratio", "verdict", "limit's source"),
+        rows,
+        (False, True, True, True, False, False),
+    )
+    verdict = Paragraph(f"Resonance verdict: {res['verdict'].upper()}. Amplitude verdict: {amp['verdict'].upper()}.")
+    return Section("Checks", (checks, verdict))
+
+
+def _max_leaf(value) -> float | None:
+    if isinstance(value, dict):
+        leaves = [x for x in map(_max_leaf, value.values()) if x is not None]
+        return max(leaves) if leaves else None
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return abs(float(value))
+    return None
+
+
+def _crank_accuracy(amp: dict) -> Section:
+    approximations = amp["approximations"]
+    text = [f"Limits checked with the {approximations[amp['checked_with']]['title']}."]
+    solver = amp.get("exact_solver")
+    if solver is None:
+        text.append(
+            "The exact periodic solution was not computed (run with --exact to check the limits with it"
+            " and to state the closed forms' errors against it)."
+        )
+        return Section("Accuracy", tuple(Paragraph(t) for t in text))
+    text.append(
+        f"Exact solution: harmonic balance with {solver['harmonics']} harmonics, {solver['newton_iterations']}"
+        f" Newton step(s), change from half the harmonics {num(solver['harmonic_change'], 3)},"
+        f" relative residual {num(solver['relative_residual'], 3)}."
+    )
+    rows = [(key.replace("_", " "), num(_max_leaf(err), 3)) for key, err in (amp.get("errors") or {}).items()]
+    return Section(
+        "Accuracy",
+        (*(Paragraph(t) for t in text), table("Largest relative error against the exact solution", ("method", "error"), rows)),
+    )
+
+
+def crank_sheet(title: TitleBlock, scene_data: dict, res: dict, amp: dict, figures: tuple[Figure, ...], units: DisplayUnits) -> Sheet:
+    """The sheet of a crank foundation from the ``resonance`` and ``amplitudes`` JSON documents."""
+    sections = (
+        _title_section(title),
+        _crank_inputs(scene_data),
+        _crank_derived(res, units),
+        _crank_frequencies(res, units),
+        _crank_amplitudes(amp, units),
+        _crank_checks(res, amp, units),
+        _equation_section(equations.CRANK),
+        Section("Plots", figures),
+        _crank_accuracy(amp),
+    )
+    return Sheet(f"Calculation sheet: {title.name}", sections)
+
+
+# --------------------------------------------------------------------------- platform
+
+
+def _platform_inputs(doc: dict, units: DisplayUnits) -> Section:
+    i = doc["inputs"]
+    rows = (
+        ("ω, speed", _speed(units, doc["speed"]["omega"]), units.label("speed")),
+        ("M, platform and product mass", num(i["M"]), "kg"),
+        ("m, unbalanced mass", num(i["m"]), "kg"),
+        ("l, eccentricity", num(i["l"]), "m"),
+        ("u, required circular amplitude", num(units.convert("amplitude", i["u"])), units.label("amplitude")),
+        ("regime", str(i["regime"]), "-"),
+        ("ξ, η, ζ, centre of mass", ", ".join(num(i[k]) for k in ("xi", "eta", "zeta")), "m"),
+        ("A, B, isolator spacing", ", ".join(num(i[k]) for k in ("A", "B")), "m"),
+        ("g", num(i["g"]), "m/s²"),
+    )
+    return Section("Inputs", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
+
+
+def _platform_design(doc: dict, units: DisplayUnits) -> Section:
+    d = doc["design"]
+    rows = [
+        ("M_Σ, moving mass", num(d["M_sigma"]), "kg"),
+        ("c0 = c1 = c2 (3.14)", num(d["c0"]), "N/m"),
+        ("c3, summed vertical stiffness", num(d["c3"]), "N/m"),
+        *((f"{k} (3.16)-(3.20)", num(v), "N/m") for k, v in d["horizontal_sums"].items()),
+        ("a (3.9)", num(d["a"]), "m"),
+        ("b (3.10)", num(d["b"]), "m"),
+        ("c (3.11)", num(d["c"]), "m"),
+        ("static deflection", num(units.convert("amplitude", d["static_deflection"])), units.label("amplitude")),
+        ("translational resonance", _speed(units, d["translation_frequency"]), units.label("speed")),
+    ]
+    design = table("Design", ("quantity", "value", "unit"), rows, (False, True, False))
+    stiff = table(
+        "Isolator stiffnesses c_ij [N/m]",
+        ("isolator", "x", "y", "z"),
+        ((f"O{n + 1}", *(num(x) for x in row)) for n, row in enumerate(d["stiffness_table"])),
+    )
+    return Section("Platform design", (design, stiff))
+
+
+def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
+    v = doc["verification"]
+    au = units.label("amplitude")
+    rows = [
+        *((f"amplitude of {k}", num(units.convert("amplitude", a)), au) for k, a in v["amplitudes"].items()),
+        *((f"rotation amplitude {k}", num(r), "rad") for k, r in v["rotations"].items()),
+        ("static tilt", num(v["static_tilt"]), "rad"),
+        ("static corner offset", num(v["static_offset_percent"]), "% of u"),
+        ("rocking of the corners", num(v["rocking_percent"]), "% of u"),
+        ("spread of corner amplitudes", num(v["spread_percent"]), "% of u"),
+    ]
+    inertia = v["inertia"]["source"]
+    verification = table(
+        f"6-DOF verification (inertia: {inertia}; loss factor {num(v['loss_factor'])})",
+        ("quantity", "value", "unit"),
+        rows,
+        (False, True, False),
+    )
+    sp = units.label("speed")
+    freqs = table(
+        "Natural frequencies (6-DOF, undamped)",
+        ("mode", f"[{sp}]", "margin"),
+        ((f["mode"], _speed(units, f["omega"]), pct(f["margin"])) for f in doc["natural_frequencies"]),
+    )
+    sens = table(
+        "Sensitivity to build tolerances [% of u]",
+        ("parameter", "tolerance", "rocking +", "rocking −", "static +", "static −"),
+        (
+            (
+                s["parameter"], str(s["tolerance"]),
+                *(num(s[k], 4) for k in ("rocking_percent_plus", "rocking_percent_minus",
+                                         "static_offset_percent_plus", "static_offset_percent_minus")),
+            )
+            for s in doc["sensitivity"]
+        ),
+        (False, False, True, True, True, True),
+    )
+    return Section("6-DOF verification", (verification, freqs, sens))
+
+
+def _platform_checks(doc: dict) -> Section:
+    rows = ((c["name"], c["message"], c["verdict"].upper(), "scene [limits]") for c in doc["checks"])
+    checks = table("Every check", ("check", "finding", "verdict", "limit's source"), rows, (False, False, False, False))
+    return Section("Checks", (checks, Paragraph(f"Verdict: {doc['verdict'].upper()}.")))
+
+
+def platform_sheet(title: TitleBlock, doc: dict, units: DisplayUnits) -> Sheet:
+    """The sheet of a vibrating platform from the ``platform`` JSON document."""
+    sections = (
+        _title_section(title),
+        _platform_inputs(doc, units),
+        _platform_design(doc, units),
+        _platform_verification(doc, units),
+        _platform_checks(doc),
+        _equation_section(equations.PLATFORM),
+        Section(
+            "Accuracy",
+            (
+                Paragraph(
+                    "Design: closed forms (3.8)-(3.21), corrected. Verification: the steady state of the full"
+                    " linear 6-DOF equations solved directly (no series truncation); the rocking figures are"
+                    " the difference between this solution and the intended pure translation."
+                ),
+            ),
+        ),
+    )
+    return Sheet(f"Calculation sheet: {title.name}", sections)
