@@ -19,6 +19,10 @@ JunitOpt = Annotated[
     Optional[Path],
     typer.Option("--junit", metavar="FILE", help="Also write a JUnit XML report (one test case per scene and check)."),
 ]
+ReportDirOpt = Annotated[
+    Optional[Path],
+    typer.Option("--report-dir", metavar="DIR", help="Also write a calculation sheet (PDF) per valid scene into DIR."),
+]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
 
 
@@ -35,6 +39,24 @@ def _report_problems(scenes) -> None:
                 report_internal(f"{scene.source}, check {run.check}: {run.problems[0][1]}")
 
 
+def _write_sheets(scenes, folder: Path, shown) -> None:
+    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``."""
+    from foundation_calc.cli.report import command_line
+    from foundation_calc.output.report import write_sheet
+    from foundation_calc.output.report.documents import scene_sheet
+
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
+    for scene in scenes:
+        if any(run.verdict in ("invalid", "internal") for run in scene.runs):
+            continue
+        path = Path(scene.source)
+        sheet, _ = scene_sheet(path, command_line(), shown)
+        write_sheet(sheet, folder / f"{path.stem}.pdf")
+
+
 @reports_errors
 def check(
     paths: PathsArg,
@@ -42,6 +64,7 @@ def check(
     junit: JunitOpt = None,
     strict: StrictOpt = False,
     units: UnitsOpt = None,
+    report_dir: ReportDirOpt = None,
 ) -> None:
     """Run every check that each scene's kind supports and report them all.
 
@@ -53,6 +76,10 @@ def check(
     from foundation_calc.output import check_report
 
     shown = display_units(units)
+    if report_dir is not None:
+        from foundation_calc.cli.report import check_output
+
+        check_output(report_dir / "sheet.pdf", "'--report-dir'")
     scenes = run_scenes(paths)
     if not scenes:
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
@@ -62,6 +89,8 @@ def check(
             check_report.write_junit(junit, scenes, strict)
         except OSError as exc:
             raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
+    if report_dir is not None:
+        _write_sheets(scenes, report_dir, shown)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -13,6 +13,8 @@ from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, Sheet, table
 
 DIGITS = 6
+#: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
+NEGLIGIBLE = 1e-9
 
 
 @dataclass(frozen=True)
@@ -116,17 +118,18 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
 def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
     approximations = amp["approximations"]
     checked = approximations[amp["checked_with"]]
-    blocks = [Paragraph(f"Checked with: {checked['title']}. Signs: y positive downward; {amp['conventions']}.")]
+    blocks = [Paragraph(f"Checked with: {checked['title']}. Signs: {amp['conventions']}.")]
     if checked["resonant"]:
         blocks.append(Paragraph(f"Resonant: {checked['nearest_resonance']}; no steady state without damping."))
         return Section("Amplitudes", tuple(blocks))
     shown = [(key, a) for key, a in approximations.items() if not a["resonant"]]
     au = units.label("amplitude")
     rows = []
+    largest = {dof: max(h["magnitude"] for k, h in checked["harmonics"].items() if k.rstrip("0123456789") == dof) for dof in ("x", "y", "theta")}
     for name in checked["harmonics"]:
         h = [a["harmonics"][name] for _, a in shown]
-        if max(x["magnitude"] for x in h) == 0.0:
-            continue
+        if max(x["magnitude"] for x in h) <= NEGLIGIBLE * largest[name.rstrip("0123456789")]:
+            continue  # round-off of a harmonic the motion does not have
         unit = "rad" if name.startswith("theta") else au
         scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
         rows.append((f"{name} [{unit}]", *(num(scale(x["magnitude"])) for x in h)))
