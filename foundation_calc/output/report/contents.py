@@ -35,8 +35,8 @@ def num(value: float | None, digits: int = DIGITS) -> str:
 
 
 def pct(value: float) -> str:
-    """A fraction as a percentage with 2 decimals."""
-    return f"{value * 100:.2f} %"
+    """A fraction as a percentage with ``DIGITS`` significant figures."""
+    return f"{value * 100:.{DIGITS}g} %"
 
 
 def _title_section(title: TitleBlock) -> Section:
