@@ -32,8 +32,9 @@ def _table(t: Table) -> str:
     align = ", ".join("right" if n else "left" for n in t.numeric)
     cells = [string(h) for h in t.header] + [string(c) for row in t.rows for c in row]
     columns = ", ".join(["auto"] * len(t.header))
-    if not any(t.numeric):
-        columns = ", ".join(["auto"] + ["1fr"] * (len(t.header) - 1))
+    if not any(t.numeric):  # a text table: its longest column takes the free width and wraps
+        widest = max(range(len(t.header)), key=lambda j: max((len(row[j]) for row in t.rows), default=0))
+        columns = ", ".join("1fr" if j == widest else "auto" for j in range(len(t.header)))
     body = (
         f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: 2.5pt),"
         f" stroke: 0.4pt + gray, table.header({', '.join(cells[:len(t.header)])}), {', '.join(cells[len(t.header):])})"
