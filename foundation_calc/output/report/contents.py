@@ -62,15 +62,6 @@ def _equation_section(eqs) -> Section:
 # --------------------------------------------------------------------------- crank foundation
 
 
-def _crank_inputs(scene_data: dict) -> Section:
-    blocks = []
-    for group, values in scene_data.items():
-        if isinstance(values, dict):
-            rows = [(key, str(value)) for key, value in values.items()]
-            blocks.append(table(f"[{group}]", ("key", "value (scene units, SI)"), rows, (False, True)))
-    return Section("Inputs (as given in the scene file)", tuple(blocks))
-
-
 def _crank_derived(res: dict, units: DisplayUnits) -> Section:
     d, s = res["derived"], res["speed"]
     rows = (
@@ -217,11 +208,11 @@ def _crank_accuracy(amp: dict) -> Section:
     )
 
 
-def crank_sheet(title: TitleBlock, scene_data: dict, res: dict, amp: dict, figures: tuple[Figure, ...], units: DisplayUnits) -> Sheet:
+def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figures: tuple[Figure, ...], units: DisplayUnits) -> Sheet:
     """The sheet of a crank foundation from the ``resonance`` and ``amplitudes`` JSON documents."""
     sections = (
         _title_section(title),
-        _crank_inputs(scene_data),
+        inputs,
         _crank_derived(res, units),
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
@@ -249,7 +240,7 @@ def _platform_inputs(doc: dict, units: DisplayUnits) -> Section:
         ("A, B, isolator spacing", ", ".join(num(i[k]) for k in ("A", "B")), "m"),
         ("g", num(i["g"]), "m/s²"),
     )
-    return Section("Inputs", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
+    return Section("Inputs as the design uses them", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
 
 
 def _platform_design(doc: dict, units: DisplayUnits) -> Section:
@@ -320,10 +311,11 @@ def _platform_checks(doc: dict) -> Section:
     return Section("Checks", (checks, Paragraph(f"Verdict: {doc['verdict'].upper()}.")))
 
 
-def platform_sheet(title: TitleBlock, doc: dict, units: DisplayUnits) -> Sheet:
+def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, units: DisplayUnits) -> Sheet:
     """The sheet of a vibrating platform from the ``platform`` JSON document."""
     sections = (
         _title_section(title),
+        inputs,
         _platform_inputs(doc, units),
         _platform_design(doc, units),
         _platform_verification(doc, units),

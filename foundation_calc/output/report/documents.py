@@ -8,6 +8,7 @@ from pathlib import Path
 
 from foundation_calc import __version__
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.report.inputs import inputs_section
 from foundation_calc.output.report.contents import TitleBlock, crank_sheet, platform_sheet
 from foundation_calc.output.report.model import Sheet
 
@@ -60,15 +61,15 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     """Load the scene at ``path``, run its checks and return its sheet and the JSON documents."""
     from foundation_calc.scenes import parse_scene, read_toml
 
-    data = read_toml(path)
-    loaded = parse_scene(data, source=str(path))
+    loaded = parse_scene(read_toml(path), source=str(path))
     title = title_block(path, loaded.name, command)
+    inputs = inputs_section(loaded, units)
     if loaded.kind == "platform":
         docs = platform_documents(loaded, str(path))
-        return platform_sheet(title, docs["platform"], units), docs
+        return platform_sheet(title, inputs, docs["platform"], units), docs
     from foundation_calc.output.report.figures import sweep_figure
 
     docs = crank_documents(loaded, str(path), exact)
     omega = docs["resonance"]["speed"]["omega"]
     figure = sweep_figure(docs["sweep"], omega, units)
-    return crank_sheet(title, data, docs["resonance"], docs["amplitudes"], (figure,), units), docs
+    return crank_sheet(title, inputs, docs["resonance"], docs["amplitudes"], (figure,), units), docs

@@ -18,6 +18,9 @@ PREAMBLE = """#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), numbering: "1
 #show table.cell.where(y: 0): strong
 """
 
+#: A text column with a cell longer than this takes the page's free width and wraps.
+WRAP_CHARS = 40
+
 #: Tables longer than this may break across pages; shorter ones stay whole.
 UNBREAKABLE_ROWS = 30
 
@@ -32,8 +35,10 @@ def _table(t: Table) -> str:
     align = ", ".join("right" if n else "left" for n in t.numeric)
     cells = [string(h) for h in t.header] + [string(c) for row in t.rows for c in row]
     columns = ", ".join(["auto"] * len(t.header))
-    if not any(t.numeric):  # a text table: its longest column takes the free width and wraps
-        widest = max(range(len(t.header)), key=lambda j: max((len(row[j]) for row in t.rows), default=0))
+    width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
+    text_columns = [j for j in range(len(t.header)) if not t.numeric[j]]
+    widest = max(text_columns, key=width.__getitem__, default=None)
+    if widest is not None and width[widest] > WRAP_CHARS:  # long text takes the free width and wraps
         columns = ", ".join("1fr" if j == widest else "auto" for j in range(len(t.header)))
     body = (
         f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: 2.5pt),"
