@@ -132,12 +132,6 @@ def test_user_text_is_never_markup(runner, tmp_path, suffix):
         assert "<script>" not in text
 
 
-def test_markdown_escape_keeps_the_text():
-    from foundation_calc.output.report.markdown import escape
-
-    assert escape("a_b *c* [d](e) <f>") == r"a\_b \*c\* \[d\]\(e\) &lt;f&gt;"
-
-
 def test_check_writes_one_sheet_per_scene(runner, tmp_path):
     for name in ("frame_saw.toml", "platform_paper_example.toml"):
         (tmp_path / name).write_bytes((CONFIGS / name).read_bytes())

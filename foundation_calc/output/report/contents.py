@@ -106,6 +106,15 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     return Section("Natural frequencies and resonances", (freqs, resonances))
 
 
+def _largest_harmonics(approximation: dict) -> dict[str, float]:
+    """The largest harmonic magnitude of each coordinate x, y, theta of one method."""
+    largest: dict[str, float] = {}
+    for name, harmonic in approximation["harmonics"].items():
+        dof = name.rstrip("0123456789")
+        largest[dof] = max(largest.get(dof, 0.0), harmonic["magnitude"])
+    return largest
+
+
 def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
     approximations = amp["approximations"]
     checked = approximations[amp["checked_with"]]
@@ -116,14 +125,16 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
     shown = [(key, a) for key, a in approximations.items() if not a["resonant"]]
     au = units.label("amplitude")
     rows = []
-    largest = {dof: max(h["magnitude"] for k, h in checked["harmonics"].items() if k.rstrip("0123456789") == dof) for dof in ("x", "y", "theta")}
+    largest = [_largest_harmonics(a) for _, a in shown]
     for name in checked["harmonics"]:
-        h = [a["harmonics"][name] for _, a in shown]
-        if max(x["magnitude"] for x in h) <= NEGLIGIBLE * largest[name.rstrip("0123456789")]:
-            continue  # round-off of a harmonic the motion does not have
-        unit = "rad" if name.startswith("theta") else au
+        dof = name.rstrip("0123456789")
+        # a harmonic below NEGLIGIBLE of its coordinate's largest is round-off: shown as 0, dropped when all are
+        h = [a["harmonics"][name]["magnitude"] * (a["harmonics"][name]["magnitude"] > NEGLIGIBLE * big[dof]) for (_, a), big in zip(shown, largest)]
+        if not any(h):
+            continue
+        unit = "rad" if dof == "theta" else au
         scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
-        rows.append((f"{name} [{unit}]", *(num(scale(x["magnitude"])) for x in h)))
+        rows.append((f"{name} [{unit}]", *(num(scale(x)) for x in h)))
     blocks.append(
         table("Amplitude per harmonic (magnitude)", ("harmonic", *(k.replace("_", " ") for k, _ in shown)), rows)
     )
@@ -177,13 +188,10 @@ def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
     return Section("Checks", (checks, verdict))
 
 
-def _max_leaf(value) -> float | None:
-    if isinstance(value, dict):
-        leaves = [x for x in map(_max_leaf, value.values()) if x is not None]
-        return max(leaves) if leaves else None
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return abs(float(value))
-    return None
+def _largest_peak_errors(errors: dict) -> list[str]:
+    """The largest relative error of the peaks over every point, per quantity, as table cells."""
+    points = errors["points"].values()
+    return [num(max(max(p[q].values()) for p in points), 3) for q in ("displacement", "velocity", "acceleration")]
 
 
 def _crank_accuracy(amp: dict) -> Section:
@@ -201,11 +209,17 @@ def _crank_accuracy(amp: dict) -> Section:
         f" Newton step(s), change from half the harmonics {num(solver['harmonic_change'], 3)},"
         f" relative residual {num(solver['relative_residual'], 3)}."
     )
-    rows = [(key.replace("_", " "), num(_max_leaf(err), 3)) for key, err in (amp.get("errors") or {}).items()]
-    return Section(
-        "Accuracy",
-        (*(Paragraph(t) for t in text), table("Largest relative error against the exact solution", ("method", "error"), rows)),
+    rows = [
+        (key.replace("_", " "), *_largest_peak_errors(err))
+        for key, err in (amp.get("errors") or {}).items()
+        if err is not None
+    ]
+    errors = table(
+        "Largest relative error of the peaks of every point against the exact solution",
+        ("method", "displacement", "velocity", "acceleration"),
+        rows,
     )
+    return Section("Accuracy", (*(Paragraph(t) for t in text), errors))
 
 
 def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figures: tuple[Figure, ...], units: DisplayUnits) -> Sheet:

@@ -6,11 +6,17 @@ import re
 
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
-_SPECIAL = re.compile(r"([\\`*_{}\[\]()#+\-.!|$%~^])")
+#: Characters that can start markup anywhere in a line. Every block starts with fcalc's own text or
+#: "|", so the line-start-only markers (``-``, ``1.``, ``>``) need no escape.
+_SPECIAL = re.compile(r"([\\`*_{}\[\]#+!|$%~^])")
 
 
 def escape(text: str) -> str:
-    """``text`` as literal Markdown: punctuation backslash-escaped, ``< > &`` as entities."""
+    """``text`` as literal Markdown: markup characters backslash-escaped, ``< > &`` as entities.
+
+    >>> print(escape("a_b *c* [d](e) <f>"))
+    a\\_b \\*c\\* \\[d\\](e) &lt;f&gt;
+    """
     text = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
     return _SPECIAL.sub(r"\\\1", text).replace("\n", " ")
 
