@@ -106,15 +106,19 @@ def hostile_scene(tmp_path, kind_file: str):
 
     scene = tomllib.loads((CONFIGS / kind_file).read_text(encoding="utf-8"))
     scene["name"] = HOSTILE
-    scene["points"] = [{"name": HOSTILE + " pt", "horizontal": 1.0, "height": 1.0}]
+    if scene["kind"] == "crank_foundation":
+        scene["points"] = [{"name": HOSTILE + " pt", "horizontal": 1.0, "height": 1.0}]
     path = tmp_path / "hostile.toml"
     path.write_text(tomli_w.dumps(scene), encoding="utf-8")
     return path
 
 
-@pytest.mark.parametrize("suffix", [".pdf", ".html", ".md"])
-def test_user_text_is_never_markup(runner, tmp_path, suffix):
-    scene = hostile_scene(tmp_path, "frame_saw.toml")
+@pytest.mark.parametrize(
+    ("kind_file", "suffix"),
+    [("frame_saw.toml", ".pdf"), ("frame_saw.toml", ".html"), ("frame_saw.toml", ".md"), ("platform_paper_example.toml", ".pdf")],
+)
+def test_user_text_is_never_markup(runner, tmp_path, kind_file, suffix):
+    scene = hostile_scene(tmp_path, kind_file)
     out = tmp_path / f"sheet{suffix}"
     result = runner.invoke(app, ["report", str(scene), "-o", str(out)])
     assert result.exit_code in (0, 1), result.output
@@ -162,3 +166,24 @@ def test_core_commands_do_not_import_the_report_extra():
         [sys.executable, "-c", code, str(CONFIGS / "frame_saw.toml")], capture_output=True, text=True, cwd=ROOT, check=True
     )
     assert out.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_exact_states_the_errors_of_the_closed_forms(runner, tmp_path):
+    scene = CONFIGS / "frame_saw.toml"
+    out = tmp_path / "sheet.html"
+    runner.invoke(app, ["report", str(scene), "-o", str(out), "--exact"])
+    amp = json.loads(runner.invoke(app, ["amplitudes", str(scene), "--exact", "--json"]).stdout)
+    points = amp["errors"]["first_approximation"]["points"].values()
+    largest = {q: max(max(p[q].values()) for p in points) for q in ("displacement", "velocity", "acceleration")}
+    shown = numbers(html_text(out).split("Accuracy")[-1])
+    assert all(any(abs(x - v) <= 5e-3 * v for x in shown) for v in largest.values()), (largest, shown)
+
+
+def test_missing_report_extra_is_a_usage_error(runner, tmp_path, monkeypatch):
+    import importlib.util
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "typst" else real(name, *a))
+    result = runner.invoke(app, ["report", str(CONFIGS / "frame_saw.toml"), "-o", str(tmp_path / "x.pdf")])
+    assert result.exit_code == 2
+    assert "foundation_calc[report]" in result.output
