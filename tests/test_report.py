@@ -6,6 +6,7 @@ import json
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 import tomli_w
@@ -137,13 +138,14 @@ def test_user_text_is_never_markup(runner, tmp_path, kind_file, suffix):
 
 
 def test_check_writes_one_sheet_per_scene(runner, tmp_path):
-    for name in ("frame_saw.toml", "platform_paper_example.toml"):
-        (tmp_path / name).write_bytes((CONFIGS / name).read_bytes())
+    for name in ("frame_saw.toml", "platform_paper_example.toml", "other/frame_saw.toml"):
+        (tmp_path / name).parent.mkdir(exist_ok=True)
+        (tmp_path / name).write_bytes((CONFIGS / Path(name).name).read_bytes())
     (tmp_path / "broken.toml").write_text("kind = 'crank_foundation'\n", encoding="utf-8")
     sheets = tmp_path / "sheets"
     result = runner.invoke(app, ["check", str(tmp_path), "--report-dir", str(sheets), "--json"])
     assert result.exit_code == 3, result.output
-    assert sorted(p.name for p in sheets.iterdir()) == ["frame_saw.pdf", "platform_paper_example.pdf"]
+    assert sorted(p.name for p in sheets.iterdir()) == ["frame_saw-2.pdf", "frame_saw.pdf", "platform_paper_example.pdf"]
 
 
 def test_unknown_format_is_a_usage_error(runner, tmp_path):

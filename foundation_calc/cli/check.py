@@ -40,7 +40,11 @@ def _report_problems(scenes) -> None:
 
 
 def _write_sheets(scenes, folder: Path, shown) -> None:
-    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``."""
+    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``.
+
+    Scenes of the same name in different folders get ``<stem>-2.pdf``, ``<stem>-3.pdf``… in the
+    order they were checked.
+    """
     from foundation_calc.cli.report import command_line
     from foundation_calc.output.report import write_sheet
     from foundation_calc.output.report.documents import scene_sheet
@@ -49,12 +53,15 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
+    used: dict[str, int] = {}
     for scene in scenes:
         if any(run.verdict in ("invalid", "internal") for run in scene.runs):
             continue
         path = Path(scene.source)
+        used[path.stem] = used.get(path.stem, 0) + 1
+        suffix = "" if used[path.stem] == 1 else f"-{used[path.stem]}"
         sheet, _ = scene_sheet(path, command_line(), shown)
-        write_sheet(sheet, folder / f"{path.stem}.pdf")
+        write_sheet(sheet, folder / f"{path.stem}{suffix}.pdf")
 
 
 @reports_errors
