@@ -8,13 +8,13 @@ from foundation_calc.output.report.model import Equation, Figure, Paragraph, She
 
 STYLE = """
 body { font-family: "DejaVu Sans", Arial, sans-serif; font-size: 10pt; max-width: 190mm; margin: 1em auto; }
-h1 { font-size: 15pt; } h2 { font-size: 12pt; border-bottom: 1px solid #888; margin-top: 1.4em; }
+h1 { font-size: 15pt; } h2 { font-size: 12pt; border-bottom: 1px solid #888; margin-top: 1.4em; page-break-after: avoid; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; page-break-inside: avoid; }
 caption { text-align: left; font-weight: bold; padding-bottom: 0.2em; }
 th, td { border: 1px solid #aaa; padding: 2px 6px; vertical-align: top; }
 th { background: #eee; } td.n { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
-td { overflow-wrap: anywhere; }
-.eq { margin: 0.4em 0; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
+td { overflow-wrap: break-word; }
+.eq { margin: 0.4em 0; page-break-inside: avoid; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
 figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; height: auto; }
 @page { size: A4; margin: 15mm; }
 """
