@@ -48,6 +48,7 @@ def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, u
     """
     from foundation_calc.checks.outcomes import Outcome, exit_code, worst
     from foundation_calc.output.report import write_sheet
+    from foundation_calc.output.report.contents import verdicts
     from foundation_calc.output.report.documents import scene_sheet
 
     path = output if output is not None else scene.with_suffix(".pdf")
@@ -60,4 +61,4 @@ def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, u
         raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'-o'") from None
     for file in written:
         print(f"wrote {file}", file=sys.stderr)
-    raise typer.Exit(int(exit_code(worst(Outcome(d["verdict"]) for d in docs.values() if "verdict" in d))))
+    raise typer.Exit(int(exit_code(worst(map(Outcome, verdicts(docs))))))

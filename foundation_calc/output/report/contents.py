@@ -29,6 +29,41 @@ class TitleBlock:
     command: str
 
 
+@dataclass(frozen=True)
+class SweepSeries:
+    """What the sweep plot draws, from the ``sweep`` JSON document (SI units)."""
+
+    omega: list[float]
+    peaks: dict[str, list[float | None]]
+    amplitude_limit: float | None
+    detuning: float
+    critical: list[tuple[str, str, float]]
+    method: str
+
+
+def sweep_series(doc: dict) -> SweepSeries:
+    """The plotted series of a speed sweep: speeds, peaks of y and x of C, limits, critical speeds."""
+    rows = doc["points"]
+    return SweepSeries(
+        omega=[r["omega"] for r in rows],
+        peaks={"y of C": [r["y_peak"] for r in rows], "x of C": [r["x_peak"] for r in rows]},
+        amplitude_limit=doc["limits"]["amplitude"],
+        detuning=doc["limits"]["detuning"],
+        critical=[(c["condition"], c["source"], c["zero_order"]) for c in doc["critical_speeds"]],
+        method=doc["method"],
+    )
+
+
+def operating_speed(resonance: dict) -> float:
+    """The crank speed ω [rad/s] of the ``resonance`` JSON document."""
+    return resonance["speed"]["omega"]
+
+
+def verdicts(documents: dict) -> list[str]:
+    """The verdict (``pass``, ``warn``, ``fail``) of every JSON document that has one."""
+    return [d["verdict"] for d in documents.values() if "verdict" in d]
+
+
 def num(value: float | None, digits: int = DIGITS) -> str:
     """A number with ``digits`` significant figures; ``-`` for a missing one."""
     return "-" if value is None else f"{value:.{digits}g}"

@@ -8,8 +8,14 @@ from pathlib import Path
 
 from foundation_calc import __version__
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.report.contents import (
+    TitleBlock,
+    crank_sheet,
+    operating_speed,
+    platform_sheet,
+    sweep_series,
+)
 from foundation_calc.output.report.inputs import inputs_section
-from foundation_calc.output.report.contents import TitleBlock, crank_sheet, platform_sheet
 from foundation_calc.output.report.model import Sheet
 
 #: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
@@ -70,6 +76,5 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     from foundation_calc.output.report.figures import sweep_figure
 
     docs = crank_documents(loaded, str(path), exact)
-    omega = docs["resonance"]["speed"]["omega"]
-    figure = sweep_figure(docs["sweep"], omega, units)
+    figure = sweep_figure(sweep_series(docs["sweep"]), operating_speed(docs["resonance"]), units)
     return crank_sheet(title, inputs, docs["resonance"], docs["amplitudes"], (figure,), units), docs

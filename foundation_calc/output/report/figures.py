@@ -6,41 +6,38 @@ import io
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.plots import new_figure
+from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure
 
 #: Labels of critical speeds closer than this fraction of the plotted range are staggered.
 LABEL_GAP = 0.04
 
 
-def sweep_figure(doc: dict, operating_omega: float, units: DisplayUnits) -> Figure:
-    """Peaks of C against the crank speed with the operating speed and the detuning bands shaded.
-
-    ``doc`` is the JSON document of ``fcalc sweep`` over the speed (SI units).
-    """
+def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
+    """Peaks of C against the crank speed [rad/s] with the operating speed and the detuning bands shaded."""
     import matplotlib.pyplot as plt
 
     fig, ax = new_figure(7.0, 3.6)
-    rows = doc["points"]
-    xs = [units.convert("speed", r["omega"]) for r in rows]
-    for key, label in (("y_peak", "y of C"), ("x_peak", "x of C")):
-        ys = [float("nan") if r[key] is None else units.convert("amplitude", r[key]) for r in rows]
+    xs = [units.convert("speed", w) for w in series.omega]
+    for label, peaks in series.peaks.items():
+        ys = [float("nan") if p is None else units.convert("amplitude", p) for p in peaks]
         ax.semilogy(xs, ys, label=f"peak {label}")
-    limit = doc["limits"]["amplitude"]
+    limit = series.amplitude_limit
     if limit is not None:
         ax.axhline(units.convert("amplitude", limit), color="red", linestyle="--", label="amplitude limit")
-    band = doc["limits"]["detuning"]
+    band = series.detuning
     lo, hi = min(xs), max(xs)
     shown = sorted(
-        (units.convert("speed", c["zero_order"]), c) for c in doc["critical_speeds"]
-        if lo <= units.convert("speed", c["zero_order"]) <= hi
+        (units.convert("speed", omega), label, source) for label, source, omega in series.critical
+        if lo <= units.convert("speed", omega) <= hi
     )
     previous, level = -float("inf"), 0
-    for centre, c in shown:
-        colour = "tab:red" if c["source"] == "paper" else "tab:orange"
+    for centre, label, source in shown:
+        colour = "tab:red" if source == "paper" else "tab:orange"
         ax.axvspan(centre * (1 - band), centre * (1 + band), color=colour, alpha=0.12, linewidth=0)
         level = (level + 1) % 3 if centre - previous < LABEL_GAP * (hi - lo) else 0  # stagger close labels
         previous = centre
-        ax.text(centre, 0.98 - 0.22 * level, c["condition"], rotation=90, va="top", ha="right", fontsize=7,
+        ax.text(centre, 0.98 - 0.22 * level, label, rotation=90, va="top", ha="right", fontsize=7,
                 transform=ax.get_xaxis_transform())
     ax.axvline(units.convert("speed", operating_omega), color="black", linewidth=1.5, label="operating speed")
     ax.set_xlim(lo, hi)
@@ -54,7 +51,7 @@ def sweep_figure(doc: dict, operating_omega: float, units: DisplayUnits) -> Figu
     svg = buffer.getvalue()
     svg = svg[svg.index("<svg"):]  # drop the XML prolog and DOCTYPE so the SVG can sit inline in HTML
     caption = (
-        f"Closed-form peaks ({doc['method']}) against the crank speed; shaded: the ±{band:.0%} detuning"
+        f"Closed-form peaks ({series.method}) against the crank speed; shaded: the ±{band:.0%} detuning"
         " band of each resonance (red: the paper's conditions, orange: extra ones); black line: the operating speed."
     )
     return Figure(svg, caption)
