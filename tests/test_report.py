@@ -90,6 +90,8 @@ def test_platform_sheet_shows_the_json_numbers(runner, tmp_path):
     expected |= {f"c{i + 1}{j + 1}": x for i, row in enumerate(d["stiffness_table"]) for j, x in enumerate(row) if x}
     expected |= {f"amplitude {k}": a for k, a in v["amplitudes"].items() if a > 0}
     expected |= {f"mode {n}": f["omega"] for n, f in enumerate(doc["natural_frequencies"])}
+    expected |= {f"margin {n}": 100 * f["margin"] for n, f in enumerate(doc["natural_frequencies"])}
+    expected |= {"regime margin": 100 * d["regime_margin"], "rocking": v["rocking_percent"]}
     assert_all_shown(expected, numbers(pdf_text(out)))
 
 

@@ -354,21 +354,61 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     return Section("6-DOF verification", (verification, freqs, sens))
 
 
-def _platform_checks(doc: dict) -> Section:
-    rows = ((c["name"], c["message"], c["verdict"].upper(), "scene [limits]") for c in doc["checks"])
-    checks = table("Every check", ("check", "finding", "verdict", "limit's source"), rows, (False, False, False, False))
-    return Section("Checks", (checks, Paragraph(f"Verdict: {doc['verdict'].upper()}.")))
+def _ratio(demand: float, limit: float) -> str:
+    return num(demand / limit, 4) if limit > 0 else "-"
 
 
-def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, units: DisplayUnits) -> Sheet:
-    """The sheet of a vibrating platform from the ``platform`` JSON document."""
+def _platform_measures(doc: dict, limits: dict) -> dict[str, tuple[str, str, str, str]]:
+    """Value, limit, ratio (demand/limit; above 1 fails or warns) and the limit's source of each check."""
+    d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
+    detuning, height = limits["detuning"], limits["exciter_height_ratio"]
+    closest = min(f["margin"] for f in doc["natural_frequencies"])
+    return {
+        "exciter height": (
+            (f"c/ζ = {num(d['c'] / zeta, 4)}", f"≤ {num(height)}", _ratio(d["c"] / zeta, height), "scene [limits] exciter_height_ratio")
+            if d["c"] >= 0 and zeta > 0
+            else (f"c = {num(d['c'])} m", "c ≥ 0 (above the support plane)", "-", "design rule")
+        ),
+        "regime margin": (
+            pct(d["regime_margin"]), "≥ " + pct(detuning), _ratio(detuning, d["regime_margin"]), "scene [limits] detuning"
+        ),
+        "natural frequencies": (
+            "closest " + pct(closest), "≥ " + pct(detuning), _ratio(detuning, closest), "scene [limits] detuning"
+        ),
+        "rocking": (
+            f"{num(v['rocking_percent'], 4)} % of u",
+            f"≤ {num(limits['rocking_percent'])} % of u",
+            _ratio(v["rocking_percent"], limits["rocking_percent"]),
+            "scene [limits] rocking_percent",
+        ),
+    }
+
+
+def _platform_checks(doc: dict, limits: dict) -> Section:
+    measures = _platform_measures(doc, limits)
+    rows = []
+    for c in doc["checks"]:
+        value, limit, ratio, source = measures.get(c["name"], ("-", "-", "-", "-"))
+        rows.append((c["name"], value, limit, ratio, c["verdict"].upper(), source))
+    checks = table(
+        "Every check (ratio = demand/limit; above 1 fails or warns)",
+        ("check", "value", "limit", "ratio", "verdict", "limit's source"),
+        rows,
+        (False, True, True, True, False, False),
+    )
+    findings = table("Findings", ("check", "finding"), ((c["name"], c["message"]) for c in doc["checks"]), (False, False))
+    return Section("Checks", (checks, findings, Paragraph(f"Verdict: {doc['verdict'].upper()}.")))
+
+
+def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, limits: dict, units: DisplayUnits) -> Sheet:
+    """The sheet of a vibrating platform from the ``platform`` JSON document and the scene's ``[limits]``."""
     sections = (
         _title_section(title),
         inputs,
         _platform_inputs(doc, units),
         _platform_design(doc, units),
         _platform_verification(doc, units),
-        _platform_checks(doc),
+        _platform_checks(doc, limits),
         _equation_section(equations.PLATFORM),
         Section(
             "Accuracy",

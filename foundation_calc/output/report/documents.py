@@ -72,7 +72,7 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     inputs = inputs_section(loaded, units)
     if loaded.kind == "platform":
         docs = platform_documents(loaded, str(path))
-        return platform_sheet(title, inputs, docs["platform"], units), docs
+        return platform_sheet(title, inputs, docs["platform"], loaded.limits.model_dump(), units), docs
     from foundation_calc.output.report.figures import sweep_figure
 
     docs = crank_documents(loaded, str(path), exact)

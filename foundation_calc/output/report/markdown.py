@@ -8,7 +8,7 @@ from foundation_calc.output.report.model import Equation, Figure, Paragraph, She
 
 #: Characters that can start markup anywhere in a line. Every block starts with fcalc's own text or
 #: "|", so the line-start-only markers (``-``, ``1.``, ``>``) need no escape.
-_SPECIAL = re.compile(r"([\\`*_{}\[\]#+!|$%~^])")
+_SPECIAL = re.compile(r"([\\`*_{}\[\]#+!|$~^])")
 
 
 def escape(text: str) -> str:
