@@ -51,7 +51,7 @@ CRANK = (
 
 PLATFORM = (
     Equation(
-        'c_0 = c_1 = c_2 = M_Sigma omega^2 plus.minus m l omega^2 / u',
+        'c_0 = c_1 = c_2 = M_Sigma omega^2 plus.minus (m l omega^2) / u',
         "c0 = c1 = c2 = M_Σ ω² ± m l ω²/u  (+ below, − above resonance; u the required amplitude)",
         "[BC] Eq. (3.14)",
     ),
