@@ -19,6 +19,10 @@ JunitOpt = Annotated[
     Optional[Path],
     typer.Option("--junit", metavar="FILE", help="Also write a JUnit XML report (one test case per scene and check)."),
 ]
+ReportDirOpt = Annotated[
+    Optional[Path],
+    typer.Option("--report-dir", metavar="DIR", help="Also write a calculation sheet (PDF) per valid scene into DIR."),
+]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (e.g. extra resonances) as failures.")]
 JobsOpt = Annotated[
     Optional[int],
@@ -44,6 +48,31 @@ def _report_problems(scenes) -> None:
                 report_internal(f"{scene.source}, check {run.check}: {run.problems[0][1]}")
 
 
+def _write_sheets(scenes, folder: Path, shown) -> None:
+    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``.
+
+    Scenes of the same name in different folders get ``<stem>-2.pdf``, ``<stem>-3.pdf``… in the
+    order they were checked.
+    """
+    from foundation_calc.cli.report import command_line
+    from foundation_calc.output.report import write_sheet
+    from foundation_calc.output.report.documents import scene_sheet
+
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
+    used: dict[str, int] = {}
+    for scene in scenes:
+        if scene.skipped or any(run.verdict in ("invalid", "internal") for run in scene.runs):
+            continue
+        path = Path(scene.source)
+        used[path.stem] = used.get(path.stem, 0) + 1
+        suffix = "" if used[path.stem] == 1 else f"-{used[path.stem]}"
+        sheet, _ = scene_sheet(path, command_line(), shown)
+        write_sheet(sheet, folder / f"{path.stem}{suffix}.pdf")
+
+
 @reports_errors
 def check(
     paths: PathsArg,
@@ -53,6 +82,7 @@ def check(
     units: UnitsOpt = None,
     verbose: VerboseOpt = False,
     jobs: JobsOpt = None,
+    report_dir: ReportDirOpt = None,
 ) -> None:
     """Run every check that each scene's kind supports and report them all.
 
@@ -66,6 +96,10 @@ def check(
     shown = display_units(units)
     import os
 
+    if report_dir is not None:
+        from foundation_calc.cli.report import check_output
+
+        check_output(report_dir / "sheet.pdf", "'--report-dir'")
     scenes = run_scenes(paths, jobs or os.cpu_count() or 1)
     if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
@@ -75,6 +109,8 @@ def check(
             check_report.write_junit(junit, scenes, strict)
         except OSError as exc:
             raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
+    if report_dir is not None:
+        _write_sheets(scenes, report_dir, shown)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -1,0 +1,64 @@
+"""``fcalc report SCENE -o FILE``: a calculation sheet to file (PDF, HTML or Markdown)."""
+
+from __future__ import annotations
+
+import shlex
+import sys
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.units import UnitsOpt, display_units
+
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML), crank_foundation or platform.", show_default=False)]
+OutputOpt = Annotated[
+    Optional[Path],
+    typer.Option("-o", "--output", metavar="FILE", help="FILE.pdf, FILE.html or FILE.md; default: the scene's name with .pdf."),
+]
+ExactOpt = Annotated[
+    bool, typer.Option("--exact", help="Crank scenes: also solve the exact equations and state the closed forms' errors.")
+]
+
+
+def command_line() -> str:
+    """The command that is running, as a user would type it."""
+    return shlex.join(["fcalc", *sys.argv[1:]])
+
+
+def check_output(path: Path, hint: str) -> None:
+    """Raise a usage error when ``path`` has no sheet format or the report extra is missing."""
+    from foundation_calc.output.report import FORMATS, INSTALL_HINT, missing_packages
+
+    if path.suffix.lower() not in FORMATS:
+        raise typer.BadParameter(f"{path}: the file must end in .pdf, .html or .md", param_hint=hint)
+    missing = missing_packages(path.suffix.lower())
+    if missing:
+        raise typer.BadParameter(f"{', '.join(missing)} not installed: {INSTALL_HINT}", param_hint=hint)
+
+
+@reports_errors
+def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, units: UnitsOpt = None) -> None:
+    """Write a calculation sheet: title block, inputs, derived quantities, frequencies, amplitudes
+    or the platform design, every check with its limit and verdict, the equations with their
+    sources and corrections, plots and the accuracy statement.
+
+    Exits as the checks do: 0 all pass, 1 a check fails (the sheet is written either way).
+    """
+    from foundation_calc.checks.outcomes import Outcome, exit_code, worst
+    from foundation_calc.output.report import write_sheet
+    from foundation_calc.output.report.contents import verdicts
+    from foundation_calc.output.report.documents import scene_sheet
+
+    path = output if output is not None else scene.with_suffix(".pdf")
+    check_output(path, "'-o'")
+    shown = display_units(units)
+    sheet, docs = scene_sheet(scene, command_line(), shown, exact)
+    try:
+        written = write_sheet(sheet, path)
+    except OSError as exc:
+        raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'-o'") from None
+    for file in written:
+        print(f"wrote {file}", file=sys.stderr)
+    raise typer.Exit(int(exit_code(worst(map(Outcome, verdicts(docs))))))

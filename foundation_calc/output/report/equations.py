@@ -1,0 +1,76 @@
+"""The equations a calculation sheet quotes, with their sources and fcalc's corrections of the print.
+
+Sources: [KM] Krichever & Makarov, foundation of a crank mechanism; [BC] Bolotnik, Gusev, Nguyen,
+Kholmin, Chernousko, vibrating platform. The corrections are those listed in the README section
+"Corrections to the sources".
+"""
+
+from __future__ import annotations
+
+from foundation_calc.output.report.model import Equation
+
+CRANK = (
+    Equation(
+        'k_0^2 = c S / M_"tot", quad a_0 = c_1 S / M_"tot", quad b_0 = c_1 h S / M_"tot", quad'
+        ' a_1 = c_1 h S / I_c, quad b_1 = (c_1 h^2 S + c I_1 - P_"tot" h) / I_c',
+        "k0² = c S/M_tot, a0 = c1 S/M_tot, b0 = c1 h S/M_tot, a1 = c1 h S/I_c,"
+        " b1 = (c1 h² S + c I1 − P_tot h)/I_c",
+        "[KM] Eq. (4.5), with (3.4)",
+        "(3.4): the weight term of the rocking stiffness is −P h (printed +P h); ∫z³ is ∫z².",
+    ),
+    Equation(
+        'p_(1,2)^2 = (a_0 + b_1)/2 minus.plus sqrt(((a_0 + b_1)/2)^2 - (a_0 b_1 - a_1 b_0))',
+        "p1², p2² = (a0 + b1)/2 ∓ sqrt(((a0 + b1)/2)² − (a0 b1 − a1 b0))",
+        "[KM] Eq. (4.7)",
+        "(4.6)–(4.9): the printed ρ1, ρ2 are the frequencies p1, p2; the smaller root is computed as"
+        " (a0 b1 − a1 b0)/p2² to avoid cancellation.",
+    ),
+    Equation(
+        'omega = k_0, quad 2 omega = k_0, quad omega = p_(1,2), quad 3 omega = p_(1,2)'
+        ' quad "(and 4" omega = k_0", 2" omega = p_(1,2) ")"',
+        "resonances ω = k0, 2ω = k0, ω = p1,2, 3ω = p1,2 (and 4ω = k0, 2ω = p1,2)",
+        "[KM] §4; the bracketed conditions are resonances of the exact equations",
+    ),
+    Equation(
+        'y_c = mu [ (r omega^2)/(k_0^2 - omega^2) cos omega t'
+        " + (l')/l lambda (r omega^2)/(k_0^2 - 4 omega^2) cos 2 omega t ]",
+        "y_c = μ [ r ω²/(k0² − ω²) cos ωt + (l'/l) λ r ω²/(k0² − 4ω²) cos 2ωt ]  (y down)",
+        "[KM] Eqs. (4.11), (4.14)",
+        "(4.14): μ multiplies the solution of (4.11) once (read literally, the print counts it"
+        " twice and gives amplitudes about 70× too small).",
+    ),
+    Equation(
+        "x_c = mu [ b' sin omega t + b''' sin 3 omega t ], quad"
+        " theta = mu [ c' sin omega t + c''' sin 3 omega t ]",
+        "x_c = μ [ b' sin ωt + b''' sin 3ωt ],  θ = μ [ c' sin ωt + c''' sin 3ωt ]",
+        "[KM] Eqs. (4.11)–(4.14)",
+        "(4.12): A′ lacks 1/l on the crank term and has the wrong sign on the rod-couple term;"
+        " (4.13): A‴ has the wrong sign; \"c_1\" in (4.14) is θ1.",
+    ),
+)
+
+PLATFORM = (
+    Equation(
+        'c_0 = c_1 = c_2 = M_Sigma omega^2 plus.minus (m l omega^2) / u',
+        "c0 = c1 = c2 = M_Σ ω² ± m l ω²/u  (+ below, − above resonance; u the required amplitude)",
+        "[BC] Eq. (3.14)",
+    ),
+    Equation(
+        'c = (omega^2 g M_Sigma - g c_0 - M omega^4 zeta) / (omega^2 (c_0 - M omega^2))',
+        "c = (ω² g M_Σ − g c0 − M ω⁴ ζ) / (ω² (c0 − M ω²)), c0 ≠ M ω²; a, b from (3.9), (3.10)",
+        "[BC] Eqs. (3.9)–(3.11)",
+        "(3.2), (3.5), (3.11), (3.15): the printed ξ is ζ, the height of the centre of mass.",
+    ),
+    Equation(
+        'c_(i j) "from the pair sums", quad c_13 = (M + 4 m) K / M',
+        "c_ij from the pair sums; c13 = (M + 4m) K/M",
+        "[BC] Eqs. (3.16)–(3.21)",
+        "(3.21): c13 = (M+4m)K/M = 1.005·10⁸ N/m in the example (printed 4.005·10⁸, which is c3).",
+    ),
+    Equation(
+        'z = - M_Sigma g / c_3',
+        "z = −M_Σ g / c3",
+        "[BC] static deflection",
+        "printed without the sign.",
+    ),
+)

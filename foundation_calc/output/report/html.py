@@ -1,0 +1,58 @@
+"""A calculation sheet as one self-contained, printable HTML file (inline CSS and SVG, no network)."""
+
+from __future__ import annotations
+
+from html import escape
+
+from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
+
+STYLE = """
+body { font-family: "DejaVu Sans", Arial, sans-serif; font-size: 10pt; max-width: 190mm; margin: 1em auto; }
+h1 { font-size: 15pt; } h2 { font-size: 12pt; border-bottom: 1px solid #888; margin-top: 1.4em; page-break-after: avoid; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; page-break-inside: avoid; }
+caption { text-align: left; font-weight: bold; padding-bottom: 0.2em; }
+th, td { border: 1px solid #aaa; padding: 2px 6px; vertical-align: top; }
+th { background: #eee; } td.n { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
+td { overflow-wrap: break-word; }
+.eq { margin: 0.4em 0; page-break-inside: avoid; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
+figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; height: auto; }
+@page { size: A4; margin: 15mm; }
+"""
+
+
+def _table(t: Table) -> str:
+    head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
+    body = "".join(
+        "<tr>" + "".join(f'<td{" class=n" if n else ""}>{escape(c)}</td>' for c, n in zip(row, t.numeric)) + "</tr>"
+        for row in t.rows
+    )
+    caption = f"<caption>{escape(t.title)}</caption>" if t.title else ""
+    return f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def _block(block) -> str:
+    if isinstance(block, Paragraph):
+        return f"<p>{escape(block.text)}</p>"
+    if isinstance(block, Table):
+        return _table(block)
+    if isinstance(block, Equation):
+        fix = f'<br><span class="fix">Correction: {escape(block.correction)}</span>' if block.correction else ""
+        return f'<div class="eq"><code>{escape(block.plain)}</code><br><span class="src">{escape(block.source)}</span>{fix}</div>'
+    if isinstance(block, Figure):
+        return f"<figure>{block.svg}<figcaption>{escape(block.caption)}</figcaption></figure>"
+    raise TypeError(type(block).__name__)
+
+
+def render(sheet: Sheet) -> str:
+    """The HTML text of the sheet."""
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
+        f"<h1>{escape(sheet.title)}</h1>",
+    ]
+    for number, section in enumerate(sheet.sections, 1):
+        parts.append(f"<h2>{number}. {escape(section.title)}</h2>")
+        parts += [_block(b) for b in section.blocks]
+    parts.append("</body></html>")
+    return "\n".join(parts)

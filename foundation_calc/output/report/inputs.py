@@ -1,0 +1,61 @@
+"""The scene's inputs echoed on a sheet: key, symbol, value and unit from the scene model itself.
+
+Every scene field's description starts with ``symbol [unit]:``, so the sheet, the JSON schema
+and the tables share one source. Limits on amplitudes, velocities and accelerations and the
+platform's amplitude are shown in the chosen display units; everything else as given (SI).
+"""
+
+from __future__ import annotations
+
+import re
+
+from pydantic import BaseModel
+
+from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.report.model import Section, table
+
+_DESCRIPTION = re.compile(r"^\s*(?P<symbol>.*?)\s*\[(?P<unit>[^\]]*)\]\s*:\s*(?P<meaning>.*)$", re.S)
+
+#: (group, key) -> display quantity of the fields shown in the chosen units.
+DISPLAYED = {
+    ("limits", "amplitude"): "amplitude",
+    ("limits", "velocity"): "velocity",
+    ("limits", "acceleration"): "acceleration",
+    ("operation", "amplitude"): "amplitude",
+}
+
+
+def _value(value) -> str:
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    if isinstance(value, (list, tuple)):
+        return ", ".join(map(_value, value))
+    return str(value)
+
+
+def _rows(group: str, model: BaseModel, units: DisplayUnits):
+    for key, field in type(model).model_fields.items():
+        value = getattr(model, key)
+        if value is None:
+            continue
+        match = _DESCRIPTION.match(field.description or "")
+        symbol, unit, meaning = match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
+        quantity = DISPLAYED.get((group.split("[")[0], key))
+        if quantity is not None and isinstance(value, float):
+            value, unit = units.convert(quantity, value), units.label(quantity)
+        yield (key, symbol, _value(value), unit, meaning)
+
+
+def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
+    """One table per group of the scene (``[foundation]``, ``[[points]]``…), as the model holds it."""
+    header = ("key", "symbol", "value", "unit", "meaning")
+    blocks = []
+    for name in type(scene).model_fields:
+        value = getattr(scene, name)
+        groups = [(f"[{name}]", value)] if isinstance(value, BaseModel) else []
+        if isinstance(value, (list, tuple)):
+            groups = [(f"[[{name}]] {i + 1}", item) for i, item in enumerate(value) if isinstance(item, BaseModel)]
+        for title, model in groups:
+            rows = list(_rows(title.strip("[]").split("]")[0], model, units))
+            blocks.append(table(title, header, rows, (False, False, True, False, False)))
+    return Section("Inputs (the scene as validated)", tuple(blocks))

@@ -1,0 +1,87 @@
+"""A calculation sheet as PDF, typeset by typst (the ``typst`` package ships its compiler).
+
+The typst source is written in code mode: every piece of user text is a typst string literal,
+so no scene or point name is ever read as markup; only the equations are typst math.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
+
+PREAMBLE = """#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), numbering: "1 / 1")
+#set text(size: 9pt)
+#set par(justify: false)
+#set heading(numbering: "1.")
+#show table.cell.where(y: 0): strong
+"""
+
+#: A text column with a cell longer than this takes the page's free width and wraps.
+WRAP_CHARS = 40
+
+#: Tables longer than this may break across pages; shorter ones stay whole.
+UNBREAKABLE_ROWS = 30
+
+
+def string(text: str) -> str:
+    """``text`` as a typst string literal."""
+    escaped = text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n").replace("\r", "\\r")
+    return f'"{escaped}"'
+
+
+def _table(t: Table) -> str:
+    align = ", ".join("right" if n else "left" for n in t.numeric)
+    cells = [string(h) for h in t.header] + [string(c) for row in t.rows for c in row]
+    columns = ", ".join(["auto"] * len(t.header))
+    width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
+    text_columns = [j for j in range(len(t.header)) if not t.numeric[j]]
+    widest = max(text_columns, key=width.__getitem__, default=None)
+    if widest is not None and width[widest] > WRAP_CHARS:  # long text takes the free width and wraps
+        columns = ", ".join("1fr" if j == widest else "auto" for j in range(len(t.header)))
+    body = (
+        f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: 2.5pt),"
+        f" stroke: 0.4pt + gray, table.header({', '.join(cells[:len(t.header)])}), {', '.join(cells[len(t.header):])})"
+    )
+    title = f"strong({string(t.title)}), " if t.title else ""
+    breakable = "true" if len(t.rows) > UNBREAKABLE_ROWS else "false"
+    return f"#block(breakable: {breakable}, width: 100%, stack(spacing: 4pt, {title}{body}))\n"
+
+
+def _block(block, figures: list[str]) -> str:
+    if isinstance(block, Paragraph):
+        return f"#par({string(block.text)})\n"
+    if isinstance(block, Table):
+        return _table(block)
+    if isinstance(block, Equation):
+        fix = f" #text(fill: rgb(\"#7a2000\"), {string('Correction: ' + block.correction)})" if block.correction else ""
+        return f"#block(breakable: false)[$ {block.typst} $ #text(size: 8pt)[#{string(block.source)}]{fix}]\n"
+    if isinstance(block, Figure):
+        name = f"figure{len(figures) + 1}.svg"
+        figures.append(block.svg)
+        return f"#figure(image({string(name)}, width: 100%), caption: {string(block.caption)})\n"
+    raise TypeError(type(block).__name__)
+
+
+def source(sheet: Sheet) -> tuple[str, list[str]]:
+    """The typst source of the sheet and the SVG texts of its figures (``figureN.svg``)."""
+    figures: list[str] = []
+    parts = [PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {string(sheet.title)}))\n"]
+    for section in sheet.sections:
+        parts.append(f"#heading(level: 1, {string(section.title)})\n")
+        parts += [_block(b, figures) for b in section.blocks]
+    return "".join(parts), figures
+
+
+def render(sheet: Sheet) -> bytes:
+    """The PDF bytes of the sheet."""
+    import typst
+
+    text, figures = source(sheet)
+    with tempfile.TemporaryDirectory(prefix="fcalc-report-") as folder:
+        root = Path(folder)
+        (root / "sheet.typ").write_text(text, encoding="utf-8")
+        for number, svg in enumerate(figures, 1):
+            (root / f"figure{number}.svg").write_text(svg, encoding="utf-8")
+        return typst.compile(str(root / "sheet.typ"), root=str(root), format="pdf")
