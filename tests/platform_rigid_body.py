@@ -91,8 +91,7 @@ def linear_history(state, t):
     """q(t) and q'(t) of a foundation_calc steady state, summed from its harmonics."""
     q = np.repeat(state.static[:, None], len(t), axis=1).astype(complex)
     qd = np.zeros_like(q)
-    for n, Q in state.harmonics.items():
-        w = state.system.frequency(n)
+    for w, Q in zip(state.omega, state.amplitudes):
         e = np.exp(1j * w * t)
         q += Q[:, None] * e
         qd += 1j * w * Q[:, None] * e

@@ -10,7 +10,9 @@ Impossible designs never get here (the design raises PhysicsError, exit 3). What
   the margin (Eq. (3.14));
 - natural frequencies: the six 6-DOF modes by the same rule: a translation inside the band
   fails, any mode within 5 % fails, another mode inside the band warns;
-- rocking: FAIL when the 6-DOF model's rocking exceeds ``limits.rocking_percent`` of u.
+- rocking: FAIL when the 6-DOF model's rocking exceeds ``limits.rocking_percent`` of u;
+- tolerances: FAIL when a build tolerance of the sensitivity table brings a combination of the
+  rotor speeds onto a natural frequency, WARN when one rocks the corners beyond the rocking limit.
 """
 
 from __future__ import annotations
@@ -132,23 +134,48 @@ def _modes(modes: Modes, omega, detuning: float) -> Finding:
     )
 
 
-def _rocking(v: Verification, limit: float, eta: float) -> Finding:
-    why = f" with loss factor η = {eta:g}" if eta > 0 else ""
+def damping_text(model: PlatformModel) -> str:
+    """The isolators' damping in words: "loss factor η = 0.01, damping ratio D = 0.02" or "none"."""
+    parts = [f"loss factor η = {model.eta:g}"] if model.eta > 0 else []
+    parts += [f"damping ratio D = {model.damping_ratio:g}"] if model.damping_ratio > 0 else []
+    return ", ".join(parts) or "none"
+
+
+def _rocking(v: Verification, limit: float, model: PlatformModel) -> Finding:
+    why = f" with the isolators' damping ({damping_text(model)})" if model.damped else ""
     text = f"rocking {v.rocking_percent:.3g} % of u{why} (limit {limit:g} %)"
     return Finding(
         "rocking", Outcome.FAIL if v.rocking_percent > limit else Outcome.PASS, text, f"{v.rocking_percent:.3g} % of u"
     )
 
 
+def _tolerances(rows, limit: float) -> Finding:
+    resonant = [r for r in rows if r.resonance]
+    if resonant:
+        return Finding(
+            "tolerances",
+            Outcome.FAIL,
+            "; ".join(f"resonant within {r.tolerance} {r.parameter}: {r.resonance}" for r in resonant),
+            f"{resonant[0].parameter} {resonant[0].tolerance}: {resonant[0].resonance}",
+        )
+    worst = rows[0]
+    text = (
+        f"the largest effect, {worst.tolerance} on {worst.parameter}, rocks or offsets the corners"
+        f" {worst.worst:.3g} % of u (rocking limit {limit:g} %)"
+    )
+    return Finding("tolerances", Outcome.WARN if worst.worst > limit else Outcome.PASS, text, f"{worst.parameter} {worst.worst:.3g} % of u")
+
+
 def check_platform(design: PlatformDesign, model: PlatformModel, limits, inertia_given: bool) -> PlatformReport:
     """Verify ``design`` on the 6-DOF model and compare with ``limits`` (a scene's [limits])."""
+    modes = natural_frequencies(*build(design, model))
     v = verify(design, model)
-    platform, rotors = build(design, model)
-    modes = natural_frequencies(platform, rotors)
+    rows = tuple(sensitivity(design, model, v))
     findings = (
         _height(design, limits.exciter_height_ratio),
         _regime(design, limits.detuning),
         _modes(modes, design.omega, limits.detuning),
-        _rocking(v, limits.rocking_percent, model.eta),
+        _rocking(v, limits.rocking_percent, model),
+        _tolerances(rows, limits.rocking_percent),
     )
-    return PlatformReport(design, model, inertia_given, v, modes, tuple(sensitivity(design, model)), findings)
+    return PlatformReport(design, model, inertia_given, v, modes, rows, findings)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from rich.markup import escape
 from rich.table import Table
 
-from foundation_calc.checks.platform import MODE_NAMES, PlatformReport, mode_margins
+from foundation_calc.checks.platform import MODE_NAMES, PlatformReport, damping_text, mode_margins
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
@@ -48,6 +48,7 @@ def verification_section(report: PlatformReport) -> dict:
     return {
         "inertia": {"central_moments": [float(x) for x in m.J_c], "source": "scene" if report.inertia_given else "estimate"},
         "loss_factor": m.eta,
+        "damping_ratio": m.damping_ratio,
         "product_height": m.product_height,
         "amplitudes": dict(zip(AXES, map(float, v.amplitudes))),
         "amplitudes_over_u": {k: float(a) / v.u for k, a in zip(AXES, v.amplitudes)},
@@ -63,7 +64,12 @@ def verification_section(report: PlatformReport) -> dict:
             {"position": [float(x) for x in p], "peak": float(a), "peak_over_u": float(a) / v.u}
             for p, a in zip(v.corners, v.corner_peaks)
         ],
-        "neumann_orders": v.orders,
+        "harmonic_balance": {
+            "order": v.order,
+            "frequencies": v.harmonics,
+            "truncation_error": v.truncation_error,
+            "truncation_error_over_u": v.truncation_error / v.u,
+        },
     }
 
 
@@ -85,6 +91,7 @@ def platform_document(report: PlatformReport, scene, source: str, given_as: str)
             {"dominant": dom, "mode": MODE_NAMES[dom], **speed_triplet(float(p)), "margin": mg}
             for p, dom, mg in zip(report.modes.frequencies, report.modes.dominant, mode_margins(report.modes, d.omega))
         ],
+        "sensitivity_with_damping": report.model.damped,
         "sensitivity": [
             {
                 "parameter": r.parameter,
@@ -93,6 +100,7 @@ def platform_document(report: PlatformReport, scene, source: str, given_as: str)
                 "rocking_percent_minus": r.rocking_minus,
                 "static_offset_percent_plus": r.static_plus,
                 "static_offset_percent_minus": r.static_minus,
+                "resonance": r.resonance,
             }
             for r in report.sensitivity
         ],
@@ -139,7 +147,7 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
     out.print(st)
 
     inertia = "scene" if report.inertia_given else "estimated: homogeneous block A × B × H"
-    vt = _table(f"6-DOF verification (inertia {inertia}; loss factor η = {report.model.eta:g})", "quantity", "value", "unit")
+    vt = _table(f"6-DOF verification (inertia {inertia}; damping: {damping_text(report.model)})", "quantity", "value", "unit")
     size = max(float(d.A), float(d.B))  # rotations are compared with u over the platform's size
     for axis, amp in zip(AXES, v.amplitudes):
         vt.add_row(f"amplitude of {axis}", fmt_scaled(amp, v.u, 6), f"m ({fmt_scaled(amp / v.u, 1.0, 6)} u)")
@@ -149,6 +157,8 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
     vt.add_row("static corner offset from the tilt", fmt_scaled(v.static_offset_percent, 100.0, 4), "% of u")
     vt.add_row("rocking: corner motion relative to the centre of mass", fmt_scaled(v.rocking_percent, 100.0, 4), "% of u")
     vt.add_row("spread of corner amplitudes (max - min)", fmt_scaled(v.spread_percent, 100.0, 4), "% of u")
+    vt.add_row(f"harmonic balance: order K = {v.order}, frequencies", str(v.harmonics), "-")
+    vt.add_row("truncation error of the harmonic balance (estimate)", fmt(v.truncation_error / v.u, 2), "u")
     out.print(vt)
 
     ft = _table("Natural frequencies (6-DOF, undamped)", "mode", "rad/s", "Hz", "rpm", "margin")
@@ -156,14 +166,19 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
         ft.add_row(MODE_NAMES[dom], fmt(p), fmt(hz_from_omega(p)), fmt(rpm_from_omega(p)), f"{mg:.1%}")
     out.print(ft)
 
+    damping = f"with the isolators' damping, {damping_text(report.model)}" if report.model.damped else "undamped"
+    resonant = any(r.resonance for r in report.sensitivity)
     se = _table(
-        "Sensitivity to build tolerances (largest first, no damping) [% of u]",
-        "parameter", "tolerance", "rocking +", "rocking -", "static +", "static -",
+        f"Sensitivity to build tolerances (largest first; {damping}) [% of u]",
+        "parameter", "tolerance", "rocking +", "rocking -", "static +", "static -", *(("resonance",) if resonant else ()),
     )
+    nominal = (v.rocking_percent, v.rocking_percent, v.static_offset_percent, v.static_offset_percent)
+    se.add_row("none (the design)", "-", *(fmt_scaled(x, 100.0, 3) for x in nominal), *(("",) if resonant else ()))
     for r in report.sensitivity:
         se.add_row(
-            r.parameter, r.tolerance,
-            *(fmt_scaled(x, 100.0, 3) for x in (r.rocking_plus, r.rocking_minus, r.static_plus, r.static_minus)),
+            escape(r.parameter), r.tolerance,
+            *("-" if x is None else fmt_scaled(x, 100.0, 3) for x in (r.rocking_plus, r.rocking_minus, r.static_plus, r.static_minus)),
+            *((escape(r.resonance),) if resonant else ()),
         )
     out.print(se)
 

@@ -96,6 +96,10 @@ class Isolators(SceneModel):
         4, [0.5, 0.5, 0.5, 0.5],
     )
     loss_factor: float = quantity("η", "-", "hysteretic loss factor of every spring", 0.0, ge=0, lt=1)
+    damping_ratio: float = quantity(
+        "D", "-", "viscous damping ratio at the operating speed: a dashpot 2 D c_ij / ω in parallel with every spring",
+        0.0, ge=0, lt=1,
+    )
 
     @field_validator("vertical")
     @classmethod
@@ -240,4 +244,6 @@ class PlatformScene(SceneModel):
             ExtraRotor(x.rotor_mass, x.eccentricity, tuple(x.position), x.axis[0], x.axis[1], x.speed_ratio, x.phase)
             for x in self.extra_exciters
         )
-        return PlatformModel(self.inertia, self.isolators.loss_factor, self.product_height, extra)
+        return PlatformModel(
+            self.inertia, self.isolators.loss_factor, self.product_height, extra, self.isolators.damping_ratio
+        )

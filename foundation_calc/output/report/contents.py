@@ -324,10 +324,14 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
         ("static corner offset", num(v["static_offset_percent"]), "% of u"),
         ("rocking of the corners", num(v["rocking_percent"]), "% of u"),
         ("spread of corner amplitudes", num(v["spread_percent"]), "% of u"),
+        ("harmonic balance: truncation order K", str(v["harmonic_balance"]["order"]), "-"),
+        ("harmonic balance: frequencies solved", str(v["harmonic_balance"]["frequencies"]), "-"),
+        ("harmonic balance: truncation error (estimate)", num(v["harmonic_balance"]["truncation_error_over_u"], 2), "u"),
     ]
     inertia = v["inertia"]["source"]
     verification = table(
-        f"6-DOF verification (inertia: {inertia}; loss factor {num(v['loss_factor'])})",
+        f"6-DOF verification (inertia: {inertia}; loss factor {num(v['loss_factor'])},"
+        f" damping ratio {num(v['damping_ratio'])})",
         ("quantity", "value", "unit"),
         rows,
         (False, True, False),
@@ -338,12 +342,13 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
         ("mode", f"[{sp}]", "margin"),
         ((f["mode"], _speed(units, f["omega"]), pct(f["margin"])) for f in doc["natural_frequencies"]),
     )
+    damping = "with the isolators' damping" if doc["sensitivity_with_damping"] else "undamped"
     sens = table(
-        "Sensitivity to build tolerances [% of u]",
+        f"Sensitivity to build tolerances ({damping}) [% of u]",
         ("parameter", "tolerance", "rocking +", "rocking −", "static +", "static −"),
         (
             (
-                s["parameter"], str(s["tolerance"]),
+                s["parameter"] + (f" (resonant: {s['resonance']})" if s["resonance"] else ""), str(s["tolerance"]),
                 *(num(s[k], 4) for k in ("rocking_percent_plus", "rocking_percent_minus",
                                          "static_offset_percent_plus", "static_offset_percent_minus")),
             )
@@ -363,6 +368,11 @@ def _platform_measures(doc: dict, limits: dict) -> dict[str, tuple[str, str, str
     d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
     detuning, height = limits["detuning"], limits["exciter_height_ratio"]
     closest = min(f["margin"] for f in doc["natural_frequencies"])
+    worst = max(
+        (x for s in doc["sensitivity"] for k, x in s.items() if k.startswith(("rocking_percent", "static_offset")) and x is not None),
+        default=0.0,
+    )
+    resonant = [s["parameter"] for s in doc["sensitivity"] if s["resonance"]]
     return {
         "exciter height": (
             (f"c/ζ = {num(d['c'] / zeta, 4)}", f"≤ {num(height)}", _ratio(d["c"] / zeta, height), "scene [limits] exciter_height_ratio")
@@ -379,6 +389,12 @@ def _platform_measures(doc: dict, limits: dict) -> dict[str, tuple[str, str, str
             f"{num(v['rocking_percent'], 4)} % of u",
             f"≤ {num(limits['rocking_percent'])} % of u",
             _ratio(v["rocking_percent"], limits["rocking_percent"]),
+            "scene [limits] rocking_percent",
+        ),
+        "tolerances": (
+            ("resonant: " + ", ".join(resonant)) if resonant else f"worst {num(worst, 4)} % of u",
+            f"no resonance, ≤ {num(limits['rocking_percent'])} % of u",
+            "-" if resonant else _ratio(worst, limits["rocking_percent"]),
             "scene [limits] rocking_percent",
         ),
     }
@@ -415,8 +431,11 @@ def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, limits: dict, 
             (
                 Paragraph(
                     "Design: closed forms (3.8)-(3.21), corrected. Verification: the steady state of the full"
-                    " linear 6-DOF equations solved directly (no series truncation); the rocking figures are"
-                    " the difference between this solution and the intended pure translation."
+                    " linear 6-DOF equations with periodic coefficients, solved by harmonic balance over the"
+                    f" combinations of the rotor speeds up to order K = {doc['verification']['harmonic_balance']['order']};"
+                    " the harmonics left out move the platform by an estimated"
+                    f" {num(doc['verification']['harmonic_balance']['truncation_error_over_u'], 2)} u. The rocking"
+                    " figures are the difference between this solution and the intended pure translation."
                 ),
             ),
         ),

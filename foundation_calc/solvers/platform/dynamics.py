@@ -23,13 +23,14 @@ M(t) q'' + G(t) q' + K(t) q = F(t) with, S_tot = M r_c + Σ m_j S_j and [v]× th
 
 K_springs = Σ_i T_iᵀ diag(c_i1, c_i2, c_i3) T_i with T_i = [I, -[r_i]×]; the last term of K is
 the weight's tilt stiffness about the static equilibrium (the weight's moment and the springs'
-preload combined). A hysteretic loss factor η multiplies K_springs by (1 + iη sign Ω). The rotor's
-own inertia about its axis is neglected (point masses), as in the paper's design (e × J e = 0).
+preload combined). Damping of the isolators: a hysteretic loss factor η multiplies K_springs by
+(1 + iη sign Ω) at frequency Ω; dashpots β c_ij in parallel with the springs add β K_springs q'.
+The rotor's own inertia about its axis is neglected (point masses), as in the paper's design
+(e × J e = 0).
 
-Steady state. Every coefficient is a trigonometric polynomial in the φ_j; the response is
-q = q_static + Σ Q_n exp(i n·φ) over integer harmonic vectors n. The constant parts are solved
-exactly at each frequency; the periodic parts (relative size m l / (M × platform size)) are
-resolved by a Neumann series, order by order, until the correction is below round-off.
+Every coefficient is a trigonometric polynomial in the φ_j (harmonic vectors 0, ±e_j, ±2e_j);
+:func:`periodic_system` returns their Fourier coefficients and
+:mod:`~foundation_calc.solvers.platform.harmonic_balance` solves for the steady state.
 
 References
 ----------
@@ -48,12 +49,6 @@ import numpy as np
 from foundation_calc.errors import ConvergenceError, PhysicsError
 
 E3 = np.array([0.0, 0.0, 1.0])
-
-#: Largest number of Neumann orders for the periodic terms.
-MAX_ORDERS = 40
-
-#: Relative size (of the first solve) below which a Neumann correction is dropped.
-NEUMANN_TOL = 1e-17
 
 #: Names of the six coordinates, in order.
 COORDINATES = ("x", "y", "z", "alpha", "beta", "gamma")
@@ -107,6 +102,7 @@ class RigidPlatform:
     stiffness : c_ij, 4×3, rows O1..O4, columns x, y, z [N/m]
     eta : hysteretic loss factor of the isolators [-]
     g : acceleration of gravity [m/s²]
+    beta : time constant of viscous dashpots β c_ij in parallel with the springs [s]
     """
 
     M: float
@@ -117,6 +113,7 @@ class RigidPlatform:
     stiffness: np.ndarray
     eta: float
     g: float
+    beta: float = 0.0
 
     @property
     def corners(self) -> np.ndarray:
@@ -185,27 +182,46 @@ def _series_map(a: dict, fn) -> dict:
 
 @dataclass(frozen=True)
 class PeriodicSystem:
-    """Fourier coefficients of M(t), G(t), K(t) (6×6) and F(t) (6) by harmonic vector."""
+    """Fourier coefficients of M(t), G(t), K(t) and F(t), as arrays over harmonic vectors.
+
+    Attributes
+    ----------
+    speeds : signed rotor speeds ω_j [rad/s], shape (N,)
+    keys : harmonic vectors k of the coefficients, shape (P, N); row 0 is k = 0
+    mass, gyro, stiff : M_k, G_k, K_k, shape (P, 6, 6) [kg, kg m, ...; N s/m, ...; N/m, ...]
+    force_keys, force : harmonic vectors and coefficients F_n of the forcing, shapes (F, N), (F, 6)
+    springs : K_springs, 6×6 [N/m, N, N m]
+    eta : hysteretic loss factor of the springs [-]
+    beta : time constant of the dashpots β c_ij in parallel with the springs [s]
+    static_load : weight and its moment about O1, the right side of the static equilibrium [N, N m]
+    """
 
     speeds: np.ndarray
-    mass: dict
-    gyro: dict
-    stiff: dict
-    force: dict
+    keys: np.ndarray
+    mass: np.ndarray
+    gyro: np.ndarray
+    stiff: np.ndarray
+    force_keys: np.ndarray
+    force: np.ndarray
     springs: np.ndarray
     eta: float
+    beta: float
     static_load: np.ndarray = field(repr=False)
 
-    def frequency(self, n) -> float:
-        """Ω = Σ n_j ω_j [rad/s]."""
-        return float(np.dot(n, self.speeds))
+    @property
+    def damped(self) -> bool:
+        """True when the isolators dissipate energy at every frequency but 0."""
+        return self.eta > 0.0 or self.beta > 0.0
 
-    def dynamic_matrix(self, n) -> np.ndarray:
-        """K0 + iΩ G0 - Ω² M0 at the frequency of harmonic vector n."""
-        zero = tuple(0 for _ in self.speeds)
-        w = self.frequency(n)
-        hyst = 1j * self.eta * np.sign(w) * self.springs
-        return self.stiff[zero] + hyst + 1j * w * self.gyro.get(zero, 0) - w * w * self.mass[zero]
+    def frequencies(self, n) -> np.ndarray:
+        """Ω = n·ω [rad/s] of harmonic vectors n (shape (..., N))."""
+        return np.asarray(n) @ self.speeds
+
+    def dynamic_matrices(self, omega) -> np.ndarray:
+        """D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0 for each Ω, shape (H, 6, 6)."""
+        w = np.asarray(omega, dtype=float)[:, None, None]
+        loss = 1j * (self.eta * np.sign(w) + self.beta * w)
+        return self.stiff[0] + loss * self.springs + 1j * w * self.gyro[0] - w * w * self.mass[0]
 
 
 def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
@@ -251,164 +267,25 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
         )
 
     springs = spring_stiffness(platform)
-    keys = set(S_tot) | set(J) | set(G_R) | set(G_P) | set(K_R) | set(K_P) | {zero}
-    mass, gyro, stiff = {}, {}, {}
-    for k in keys:
+    keys = [zero] + sorted((set(S_tot) | set(J) | set(G_R) | set(G_P) | set(K_R) | set(K_P)) - {zero})
+    z3 = np.zeros((3, 3))
+    mass = np.empty((len(keys), 6, 6), dtype=complex)
+    gyro, stiff = np.empty_like(mass), np.empty_like(mass)
+    for i, k in enumerate(keys):
         s = skew(S_tot.get(k, np.zeros(3)))
-        mass[k] = np.block([[np.eye(3) * (M_sigma if k == zero else 0.0), -s], [s, J.get(k, np.zeros((3, 3)))]])
-        gyro[k] = np.block([[np.zeros((3, 3)), G_R.get(k, np.zeros((3, 3)))], [np.zeros((3, 3)), G_P.get(k, np.zeros((3, 3)))]])
-        stiff[k] = np.block([[np.zeros((3, 3)), K_R.get(k, np.zeros((3, 3)))], [np.zeros((3, 3)), K_P.get(k, np.zeros((3, 3)))]])
-    stiff[zero] = stiff[zero] + springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
-    force = {k: np.concatenate([F_R.get(k, np.zeros(3)), F_P.get(k, np.zeros(3))]) for k in set(F_R) | set(F_P)}
+        mass[i] = np.block([[np.eye(3) * (M_sigma if k == zero else 0.0), -s], [s, J.get(k, z3)]])
+        gyro[i] = np.block([[z3, G_R.get(k, z3)], [z3, G_P.get(k, z3)]])
+        stiff[i] = np.block([[z3, K_R.get(k, z3)], [z3, K_P.get(k, z3)]])
+    stiff[0] += springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
+    force_keys = sorted(set(F_R) | set(F_P))
+    force = [np.concatenate([F_R.get(k, np.zeros(3)), F_P.get(k, np.zeros(3))]) for k in force_keys]
     S_mean = S_tot[zero].real
     static = np.concatenate([[0.0, 0.0, -M_sigma * platform.g], -platform.g * np.cross(S_mean, E3)])
-    return PeriodicSystem(speeds, mass, gyro, stiff, force, springs, platform.eta, static)
-
-
-@dataclass(frozen=True)
-class SteadyState:
-    """Steady response q(t) = static + Σ_n Q_n e^{i n·φ} (n and -n both present; q real).
-
-    Attributes
-    ----------
-    static : static equilibrium under gravity (x, y, z [m], α, β, γ [rad])
-    harmonics : {harmonic vector n: complex 6-vector Q_n}
-    system : the assembled equations
-    orders : Neumann orders used for the periodic terms
-    """
-
-    static: np.ndarray
-    harmonics: dict
-    system: PeriodicSystem
-    orders: int
-
-    def by_frequency(self) -> dict:
-        """{Ω >= 0 [rad/s]: complex 6-vector} merging harmonic vectors of equal frequency; the
-        real motion at Ω > 0 is 2 Re(Q e^{iΩt}), at Ω = 0 the mean offset Q."""
-        scale = max(float(np.max(np.abs(self.system.speeds))), 1.0)
-        out: dict = {}
-        for n, Q in self.harmonics.items():
-            w = self.system.frequency(n)
-            if w < -1e-12 * scale:
-                continue
-            key = round(w / scale, 9) * scale
-            out[key] = out.get(key, 0) + Q
-        return out
-
-    @property
-    def mean(self) -> np.ndarray:
-        """Static equilibrium plus the mean offset from the periodic terms."""
-        return self.static + self.by_frequency().get(0.0, np.zeros(6)).real
-
-    def peak(self, T: np.ndarray) -> float:
-        """Peak of |T q_dyn(t)| over time, summed over frequencies (exact for one frequency).
-
-        For one frequency the orbit of 2 Re(X e^{iθ}) is an ellipse with semi-major axis
-        sqrt(2 (|X|² + |X·X|)).
-        """
-        total = 0.0
-        for w, Q in self.by_frequency().items():
-            if w == 0.0:
-                continue
-            X = T @ Q
-            total += float(np.sqrt(2.0 * (np.vdot(X, X).real + abs(X @ X))))
-        return total
-
-
-def static_response(system: PeriodicSystem) -> np.ndarray:
-    """Static equilibrium q_s from K_springs q_s = weight and its moment about O1."""
-    return np.linalg.solve(system.springs, system.static_load)
-
-
-def combination_label(n) -> str:
-    """A harmonic vector of the rotor speeds as text: (2, -1) -> "2ω1 − ω2", (1,) -> "ω".
-
-    >>> combination_label((2, -1)), combination_label((1,)), combination_label((0, 3))
-    ('2ω1 − ω2', 'ω', '3ω2')
-    """
-    names = ["ω"] if len(n) == 1 else [f"ω{j + 1}" for j in range(len(n))]
-    text = ""
-    for k, name in zip(n, names):
-        if k == 0:
-            continue
-        sign = ("−" if k < 0 else "+") if text else ("−" if k < 0 else "")
-        term = f"{abs(k) if abs(k) != 1 else ''}{name}"
-        text += f" {sign} {term}" if text else f"{sign}{term}"
-    return text or "0"
-
-
-def _solve(system: PeriodicSystem, n, rhs) -> np.ndarray:
-    try:
-        return np.linalg.solve(system.dynamic_matrix(n), rhs)
-    except np.linalg.LinAlgError:
-        raise PhysicsError(
-            f"the 6-DOF response is undefined: {combination_label(n)} = {system.frequency(n):.6g} rad/s,"
-            " a combination of the rotor speeds, falls exactly on an undamped natural frequency"
-        ) from None
-
-
-def steady_state(platform: RigidPlatform, rotors) -> SteadyState:
-    """Steady-state response of the platform to its rotors (see module docstring).
-
-    Raises
-    ------
-    PhysicsError
-        when a harmonic of the rotor speeds meets an undamped natural frequency exactly.
-    ConvergenceError
-        when the periodic terms do not converge (a combination frequency next to a resonance).
-
-    >>> p = RigidPlatform(2e4, (1.5, 1.0, 0.65), inertia_about_corner(2e4, (1.5, 1.0, 0.65),
-    ...     block_inertia(2e4, 3.0, 2.0, 1.3)), 3.0, 2.0, np.full((4, 3), 1e8), 0.0, 9.81)
-    >>> s = steady_state(p, [Rotor(25.0, 0.2, (1.5, 1.0, 0.65), 0.0, 0.0, 100.0, 0.0)])
-    >>> round(float(s.static[2]) * 1e4, 4)
-    -4.9111
-    """
-    system = periodic_system(platform, rotors)
-    length = float(np.hypot(platform.A, platform.B))
-    weights = np.array([1.0, 1.0, 1.0, length, length, length])
-    periodic = [k for k in system.mass if any(k)]
-    periodic = sorted(set(periodic) | {k for k in system.gyro if any(k)} | {k for k in system.stiff if any(k)})
-    static = static_response(system)
-    # the periodic stiffness acting on the static state (e.g. centrifugal forces of a tilted rotor)
-    load: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
-    for n, f in system.force.items():
-        load[n] = load[n] + f
-    for k in periodic:
-        load[k] = load[k] - system.stiff.get(k, np.zeros((6, 6))) @ static
-    current = {n: _solve(system, n, f) for n, f in load.items()}
-    base = max(float(np.max(np.abs(Q * weights))) for Q in current.values())
-    total: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
-    sizes = []
-    for order in range(MAX_ORDERS):
-        for n, Q in current.items():
-            total[n] = total[n] + Q
-        size = max((float(np.max(np.abs(Q * weights))) for Q in current.values()), default=0.0)
-        sizes.append(size)
-        if size <= NEUMANN_TOL * base:
-            break
-        if order >= 3 and size > sizes[-2]:
-            worst = max(current, key=lambda n: float(np.max(np.abs(current[n] * weights))))
-            w = abs(system.frequency(worst))
-            modes = natural_frequencies(platform, rotors).frequencies
-            p = float(modes[np.argmin(np.abs(modes - w))])
-            raise ConvergenceError(
-                f"the rotors' periodic terms do not converge: the combination {combination_label(worst)}"
-                f" = {w:.6g} rad/s of the rotor speeds lies {abs(w - p) / p:.2%} from the natural"
-                f" frequency {p:.6g} rad/s of the platform"
-            )
-        residual: dict = defaultdict(lambda: np.zeros(6, dtype=complex))
-        for n, Q in current.items():
-            w = system.frequency(n)
-            for k in periodic:
-                op = system.stiff.get(k, 0) + 1j * w * system.gyro.get(k, 0) - w * w * system.mass.get(k, 0)
-                target = tuple(a + b for a, b in zip(n, k))
-                residual[target] = residual[target] - op @ Q
-        current = {n: _solve(system, n, r) for n, r in residual.items() if np.max(np.abs(r)) > 0.0}
-        if not current:
-            break
-    else:
-        raise ConvergenceError(f"the periodic terms did not converge in {MAX_ORDERS} orders")
-    return SteadyState(static, dict(total), system, len(sizes))
+    return PeriodicSystem(
+        speeds, np.array(keys, dtype=int).reshape(-1, N), mass, gyro, stiff,
+        np.array(force_keys, dtype=int).reshape(-1, N), np.array(force, dtype=complex).reshape(-1, 6),
+        springs, platform.eta, platform.beta, static,
+    )
 
 
 @dataclass(frozen=True)
@@ -434,10 +311,9 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
         when a squared frequency is not positive (the platform tips over under its weight).
     """
     system = periodic_system(platform, rotors)
-    zero = (0,) * len(rotors)
     # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
     D = np.diag([1.0, 1.0, 1.0] + [1.0 / float(np.hypot(platform.A, platform.B))] * 3)
-    M0, K0 = D @ system.mass[zero].real @ D, D @ system.stiff[zero].real @ D
+    M0, K0 = D @ system.mass[0].real @ D, D @ system.stiff[0].real @ D
     try:
         Lc = np.linalg.cholesky(0.5 * (M0 + M0.T))
         Li = np.linalg.inv(Lc)

@@ -12,20 +12,21 @@ dynamic displacement of the corners, in % of u.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from foundation_calc.solvers.platform.design import PlatformDesign
+from foundation_calc.errors import ConvergenceError, PhysicsError
 from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
     Rotor,
-    SteadyState,
     inertia_about_corner,
+    natural_frequencies,
     point_map,
     skew,
-    steady_state,
 )
+from foundation_calc.solvers.platform.harmonic_balance import SteadyState, combination_label, steady_state
 
 #: Tolerances of the sensitivity table: relative for stiffnesses and ζ, absolute [m] for a, b, c.
 STIFFNESS_TOLERANCE = 0.01
@@ -48,12 +49,27 @@ class ExtraRotor:
 
 @dataclass(frozen=True)
 class PlatformModel:
-    """Everything the 6-DOF model needs besides the design's stiffnesses."""
+    """Everything the 6-DOF model needs besides the design's stiffnesses.
+
+    Attributes
+    ----------
+    J_c : central principal moments of inertia [kg m²]
+    eta : hysteretic loss factor of the isolators [-]
+    product_height : height of the product box [m]
+    extra : further rotors (:class:`ExtraRotor`)
+    damping_ratio : viscous damping ratio D of the isolators at the operating speed: a dashpot
+        2 D c_ij / ω in parallel with every spring [-]
+    """
 
     J_c: tuple
     eta: float
     product_height: float
     extra: tuple = ()
+    damping_ratio: float = 0.0
+
+    @property
+    def damped(self) -> bool:
+        return self.eta > 0.0 or self.damping_ratio > 0.0
 
 
 def build(design: PlatformDesign, model: PlatformModel, stiffness=None, rho=None, zeta=None):
@@ -69,6 +85,7 @@ def build(design: PlatformDesign, model: PlatformModel, stiffness=None, rho=None
         stiffness=d.stiffness if stiffness is None else stiffness,
         eta=model.eta,
         g=d.g,
+        beta=2.0 * model.damping_ratio / abs(d.omega),
     )
     main = Rotor(d.m, d.l, (d.a, d.b, d.c) if rho is None else rho, 0.0, 0.0, d.omega, 0.0)
     extra = [Rotor(e.m, e.l, e.rho, e.delta1, e.delta2, e.speed_ratio * d.omega, e.phi0) for e in model.extra]
@@ -95,7 +112,10 @@ class Verification:
     static_offset : largest static displacement of a corner relative to the centre of mass,
         from the static tilt [m]
     u : required amplitude [m]
-    orders : Neumann orders used
+    state : the steady state measured
+    order : truncation order K of the harmonic balance (largest |n|₁ retained)
+    harmonics : number of harmonic vectors retained
+    truncation_error : estimated peak motion of the harmonics left out [m]
     """
 
     amplitudes: tuple
@@ -107,7 +127,10 @@ class Verification:
     rocking: float
     static_offset: float
     u: float
-    orders: int
+    state: SteadyState = field(repr=False)
+    order: int
+    harmonics: int
+    truncation_error: float
 
     @property
     def rocking_percent(self) -> float:
@@ -130,32 +153,34 @@ class Verification:
         return float(np.linalg.norm(self.static[3:]))
 
 
-def _unit_row(i) -> np.ndarray:
-    T = np.zeros((1, 6))
-    T[0, i] = 1.0
-    return T
-
-
 def measure(state: SteadyState, r_c, corners, u) -> Verification:
     """Amplitudes, rotations, rocking and corner peaks of a steady state."""
     rc = np.asarray(r_c, dtype=float)
-    relative = [np.hstack([np.zeros((3, 3)), -skew(p - rc)]) for p in corners]
+    relative = np.array([np.hstack([np.zeros((3, 3)), -skew(p - rc)]) for p in corners])
+    absolute = np.array([point_map(p) for p in corners])
+    unit = np.eye(6)[:, None, :]
+    peaks = state.peaks(np.concatenate([np.pad(unit, ((0, 0), (0, 2), (0, 0))), absolute, relative]))
+    n = len(corners)
     return Verification(
-        amplitudes=tuple(state.peak(_unit_row(i)) for i in range(3)),
-        rotations=tuple(state.peak(_unit_row(i)) for i in range(3, 6)),
+        amplitudes=tuple(float(x) for x in peaks[:3]),
+        rotations=tuple(float(x) for x in peaks[3:6]),
         static=state.static,
         mean=state.mean,
         corners=corners,
-        corner_peaks=np.array([state.peak(point_map(p)) for p in corners]),
-        rocking=max(state.peak(T) for T in relative),
-        static_offset=max(float(np.linalg.norm(T @ state.static)) for T in relative),
+        corner_peaks=peaks[6 : 6 + n],
+        rocking=float(np.max(peaks[6 + n :])),
+        static_offset=float(np.max(np.linalg.norm(relative @ state.static, axis=1))),
         u=float(u),
-        orders=state.orders,
+        state=state,
+        order=state.order,
+        harmonics=len(state.vectors),
+        truncation_error=state.truncation_error,
     )
 
 
-def verify(design: PlatformDesign, model: PlatformModel, **changes) -> Verification:
-    """Solve the 6-DOF model of ``design`` (``changes`` as for :func:`build`) and measure it.
+def verify(design: PlatformDesign, model: PlatformModel, start: SteadyState | None = None, **changes) -> Verification:
+    """Solve the 6-DOF model of ``design`` (``changes`` as for :func:`build`) and measure it;
+    ``start``: the steady state of a nearby system, to start the solve from.
 
     >>> import math
     >>> from foundation_calc.solvers.platform.design import design_from_position
@@ -167,35 +192,36 @@ def verify(design: PlatformDesign, model: PlatformModel, **changes) -> Verificat
     """
     platform, rotors = build(design, model, **changes)
     corners = product_corners(design.A, design.B, model.product_height)
-    return measure(steady_state(platform, rotors), platform.r_c, corners, design.u)
+    return measure(steady_state(platform, rotors, start), platform.r_c, corners, design.u)
+
+
+#: Combinations of the rotor speeds up to this order |n|₁ are watched for resonances under tolerances.
+WATCHED_ORDER = 2
 
 
 @dataclass(frozen=True)
 class SensitivityRow:
-    """Rocking and static corner offset caused by one tolerance, both signs (in % of u)."""
+    """Rocking and static corner offset caused by one tolerance, both signs (in % of u).
+
+    A number is None where that variant has no steady state (an undamped exact resonance);
+    ``resonance`` says which combination of the rotor speeds meets which natural frequency inside
+    the tolerance range ("2ω meets mode 4 at 113.3 rad/s"), empty when none does.
+    """
 
     parameter: str
     tolerance: str
-    rocking_plus: float
-    rocking_minus: float
-    static_plus: float
-    static_minus: float
+    rocking_plus: float | None
+    rocking_minus: float | None
+    static_plus: float | None
+    static_minus: float | None
+    resonance: str = ""
 
     @property
     def worst(self) -> float:
-        """The largest of the four numbers [% of u]."""
-        return max(self.rocking_plus, self.rocking_minus, self.static_plus, self.static_minus)
-
-
-def _row(parameter: str, tolerance: str, plus: Verification, minus: Verification) -> SensitivityRow:
-    return SensitivityRow(
-        parameter,
-        tolerance,
-        plus.rocking_percent,
-        minus.rocking_percent,
-        plus.static_offset_percent,
-        minus.static_offset_percent,
-    )
+        """The largest of the four numbers [% of u] (infinite for a resonant row)."""
+        if self.resonance:
+            return float("inf")
+        return max(x for x in (self.rocking_plus, self.rocking_minus, self.static_plus, self.static_minus) if x is not None)
 
 
 def _scaled(stiffness, cells, factor):
@@ -220,25 +246,59 @@ STIFFNESS_GROUPS = (
 )
 
 
-def sensitivity(design: PlatformDesign, model: PlatformModel) -> list[SensitivityRow]:
-    """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ.
-
-    Rows are sorted by their largest number, largest first.
-
-    Computed without isolator damping, so each row shows what the tolerance alone does.
-    """
-    d, model = design, replace(model, eta=0.0)
-    rows = []
+def _tolerance_variants(d: PlatformDesign):
+    """(name, tolerance text, changes for +, changes for -) of every row of the table."""
     for name, cells in STIFFNESS_GROUPS:
-        plus, minus = (
-            verify(d, model, stiffness=_scaled(d.stiffness, cells, 1.0 + s * STIFFNESS_TOLERANCE)) for s in (1.0, -1.0)
+        yield name, f"±{STIFFNESS_TOLERANCE:.0%}", *(
+            {"stiffness": _scaled(d.stiffness, cells, 1.0 + s * STIFFNESS_TOLERANCE)} for s in (1.0, -1.0)
         )
-        rows.append(_row(name, f"±{STIFFNESS_TOLERANCE:.0%}", plus, minus))
     rho = np.array([d.a, d.b, d.c], dtype=float)
     for i, name in enumerate(("a", "b", "c")):
-        shifted = [rho + s * POSITION_TOLERANCE * np.eye(3)[i] for s in (1.0, -1.0)]
-        plus, minus = (verify(d, model, rho=tuple(r)) for r in shifted)
-        rows.append(_row(name, f"±{POSITION_TOLERANCE * 100:.0f} cm", plus, minus))
-    plus, minus = (verify(d, model, zeta=d.zeta * (1.0 + s * ZETA_TOLERANCE)) for s in (1.0, -1.0))
-    rows.append(_row("ζ", f"±{ZETA_TOLERANCE:.0%}", plus, minus))
+        yield name, f"±{POSITION_TOLERANCE * 100:.0f} cm", *(
+            {"rho": tuple(rho + s * POSITION_TOLERANCE * np.eye(3)[i])} for s in (1.0, -1.0)
+        )
+    yield "ζ", f"±{ZETA_TOLERANCE:.0%}", *({"zeta": d.zeta * (1.0 + s * ZETA_TOLERANCE)} for s in (1.0, -1.0))
+
+
+def _crossing(watched, nominal: np.ndarray, variants) -> str:
+    """The first watched combination (label, Ω) that a natural frequency (by its rank) passes
+    between the variants and the nominal design, as text."""
+    for label, w in watched:
+        for i in range(len(nominal)):
+            side = {bool(x[i] > w) for x in (nominal, *variants)}
+            if len(side) > 1:
+                return f"{label} meets mode {i + 1} at {w:.4g} rad/s"
+    return ""
+
+
+def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verification) -> list[SensitivityRow]:
+    """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ,
+    computed with the isolators' damping of ``model``, each solve started from ``nominal``.
+
+    A row whose range makes a natural frequency (undamped, mean system) cross a combination of
+    the rotor speeds of order |n|₁ <= 2 is marked resonant, and so is a row with a variant that
+    an undamped platform cannot answer. Rows are sorted resonant first, then by their largest
+    number.
+    """
+    state = nominal.state
+    watched = [
+        (combination_label(tuple(int(x) for x in n)), float(w))
+        for n, w in zip(state.vectors, state.omega)
+        if w > 0 and 0 < np.abs(n).sum() <= WATCHED_ORDER
+    ]
+    modes = natural_frequencies(*build(design, model)).frequencies
+    rows = []
+    for name, tolerance, *changes in _tolerance_variants(design):
+        numbers, variant_modes, failure = [], [], ""
+        for change in changes:
+            try:
+                variant_modes.append(natural_frequencies(*build(design, model, **change)).frequencies)
+                v = verify(design, model, state, **change)
+                numbers.append((v.rocking_percent, v.static_offset_percent))
+            except (PhysicsError, ConvergenceError) as exc:  # e.g. an undamped variant exactly at resonance
+                numbers.append((None, None))
+                failure = str(exc)
+        resonance = _crossing(watched, modes, variant_modes) or failure
+        (rp, sp), (rm, sm) = numbers
+        rows.append(SensitivityRow(name, tolerance, rp, rm, sp, sm, resonance))
     return sorted(rows, key=lambda r: -r.worst)

@@ -1,0 +1,393 @@
+"""Steady state of the platform by harmonic balance over the combination frequencies of its rotors.
+
+The linearised equations M(t) q'' + G(t) q' + K(t) q = F(t) of
+:mod:`~foundation_calc.solvers.platform.dynamics` have coefficients that are trigonometric
+polynomials in the rotor angles (harmonic vectors k = 0, ±e_j, ±2e_j). Their steady state is
+q = q_s + Σ_n Q_n exp(i n·ω t) over integer harmonic vectors n, with q_s the static equilibrium
+K_springs q_s = weight. Balancing harmonic m gives one block row of a sparse linear system::
+
+    D(Ω_m) Q_m + Σ_{k≠0} A_k(Ω_{m-k}) Q_{m-k} = F_m - K_m q_s,        Ω_n = n·ω,        (HB)
+    D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0,
+    A_k(Ω) = K_k + iΩ G_k - Ω² M_k.
+
+Truncation. The retained harmonics grow from the forced ones: after each solve, the residual r_m
+that the solution leaves on a neighbouring harmonic m gives the estimate D(Ω_m)⁻¹ r_m of Q_m;
+every harmonic whose estimate exceeds :data:`TRUNCATION_TOL` times the largest response is
+added and the system solved again, until none is. The order K is the largest |n|₁ retained; the
+estimates left out, summed as peaks, are the reported truncation error. Harmonics next to a
+resonance are large and therefore retained: the direct solve answers where a Neumann series in
+the periodic terms diverges (a lightly damped combination resonance).
+
+Solution. Up to :data:`DENSE_UNKNOWNS` unknowns the system is factorised densely; larger ones
+(many rotors) are solved by GMRES preconditioned with the exact inverses of the diagonal blocks
+D(Ω_m), which capture the resonant harmonics, starting from the previous solution.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.errors import ConvergenceError, PhysicsError
+from foundation_calc.solvers.platform.dynamics import PeriodicSystem, periodic_system
+
+#: A harmonic is retained when its estimated size exceeds this fraction of the largest one [-].
+TRUNCATION_TOL = 1e-12
+
+#: At most this many harmonic vectors are retained; beyond it the error estimate says what is lost.
+MAX_HARMONICS = 6000
+
+#: Systems with at most this many unknowns (6 per harmonic) are solved by dense LU.
+DENSE_UNKNOWNS = 720
+
+#: Frequencies closer than this fraction of the largest rotor speed are one frequency [-].
+FREQUENCY_TOL = 1e-9
+
+#: Relative residual at which GMRES stops [-].
+GMRES_TOL = 1e-14
+
+#: An undamped diagonal block whose reciprocal condition number is below this is an exact resonance.
+SINGULAR_RCOND = 1e-13
+
+
+def combination_label(n) -> str:
+    """A harmonic vector of the rotor speeds as text: (2, -1) -> "2ω1 − ω2", (1,) -> "ω".
+
+    >>> combination_label((2, -1)), combination_label((1,)), combination_label((0, 3))
+    ('2ω1 − ω2', 'ω', '3ω2')
+    """
+    names = ["ω"] if len(n) == 1 else [f"ω{j + 1}" for j in range(len(n))]
+    text = ""
+    for k, name in zip(n, names):
+        if k == 0:
+            continue
+        sign = ("−" if k < 0 else "+") if text else ("−" if k < 0 else "")
+        term = f"{abs(k) if abs(k) != 1 else ''}{name}"
+        text += f" {sign} {term}" if text else f"{sign}{term}"
+    return text or "0"
+
+
+class HarmonicSet:
+    """Distinct frequencies Ω = n·ω of harmonic vectors n, with an exact lookup by frequency.
+
+    Harmonic vectors of equal frequency (rotors at equal speeds: ω1 and ω2 = ω1 give e1 and e2)
+    are one unknown of (HB): its equations only see time. Each frequency keeps the vector of lowest
+    order |n|₁ that reached it, for the truncation order and for naming a resonance.
+    """
+
+    def __init__(self, vectors, omega, tolerance: float) -> None:
+        order = np.argsort(omega, kind="stable")
+        self.vectors = np.asarray(vectors, dtype=int)[order]
+        self.omega = np.asarray(omega, dtype=float)[order]
+        self.tolerance = tolerance
+
+    def __len__(self) -> int:
+        return len(self.omega)
+
+    def find(self, omega) -> np.ndarray:
+        """Row number of each frequency in the set (within the tolerance), -1 where absent."""
+        omega = np.asarray(omega, dtype=float)
+        last = len(self.omega) - 1
+        if last < 0:
+            return np.full(omega.shape, -1)
+        pos = np.searchsorted(self.omega, omega)
+        lo, hi = np.clip(pos - 1, 0, last), np.clip(pos, 0, last)
+        nearest = np.where(np.abs(self.omega[lo] - omega) <= np.abs(self.omega[hi] - omega), lo, hi)
+        return np.where(np.abs(self.omega[nearest] - omega) <= self.tolerance, nearest, -1)
+
+    def neighbours(self, keys, speeds) -> "HarmonicSet":
+        """The frequencies n·ω + k·ω (n in the set, k in ``keys``) not yet in the set."""
+        near = (self.vectors[:, None, :] + np.asarray(keys)[None, :, :]).reshape(-1, self.vectors.shape[1])
+        found = distinct(near, near @ speeds, self.tolerance)
+        return found.subset(found.find_in(self) < 0)
+
+    def find_in(self, other: "HarmonicSet") -> np.ndarray:
+        """Row numbers of this set's frequencies in ``other`` (-1 where absent)."""
+        return other.find(self.omega)
+
+    def subset(self, rows) -> "HarmonicSet":
+        return HarmonicSet(self.vectors[rows], self.omega[rows], self.tolerance)
+
+    def union(self, more: "HarmonicSet", Q, more_Q):
+        """This set and the disjoint set ``more``, with their amplitudes (rows) merged alike."""
+        joined = HarmonicSet(np.vstack([self.vectors, more.vectors]), np.concatenate([self.omega, more.omega]), self.tolerance)
+        order = np.argsort(np.concatenate([self.omega, more.omega]), kind="stable")
+        return joined, np.vstack([Q, more_Q])[order]
+
+
+def distinct(vectors, omega, tolerance: float) -> HarmonicSet:
+    """One row per distinct frequency (gaps above ``tolerance`` separate them), keeping the vector
+    of lowest order |n|₁ of each."""
+    vectors, omega = np.asarray(vectors, dtype=int), np.asarray(omega, dtype=float)
+    if len(omega) == 0:
+        return HarmonicSet(vectors, omega, tolerance)
+    by_omega = np.argsort(omega, kind="stable")
+    cluster = np.empty(len(omega), dtype=int)
+    cluster[by_omega] = np.cumsum(np.concatenate([[1], np.diff(omega[by_omega]) > tolerance])) - 1
+    order = np.lexsort((np.abs(vectors).sum(axis=1), cluster))
+    first = order[np.concatenate([[True], np.diff(cluster[order]) > 0])]
+    return HarmonicSet(vectors[first], omega[first], tolerance)
+
+
+@dataclass(frozen=True)
+class SteadyState:
+    """Steady response q(t) = static + Σ Q(Ω) e^{iΩt} over the retained frequencies (Ω and -Ω both
+    present; q real).
+
+    Attributes
+    ----------
+    static : static equilibrium under gravity (x, y, z [m], α, β, γ [rad])
+    vectors : a harmonic vector n of each frequency (the one of lowest order), shape (H, N)
+    omega : the frequencies Ω = n·ω, ascending, shape (H,) [rad/s]
+    amplitudes : their complex amplitudes Q(Ω), shape (H, 6) [m, rad]
+    system : the assembled equations
+    order : truncation order K, the largest |n|₁ retained
+    truncation_error : estimated peak motion of the harmonics left out [m]
+    """
+
+    static: np.ndarray
+    vectors: np.ndarray
+    omega: np.ndarray
+    amplitudes: np.ndarray
+    system: PeriodicSystem
+    order: int
+    truncation_error: float
+
+    def _at_zero(self) -> np.ndarray:
+        return np.abs(self.omega) <= FREQUENCY_TOL * max(float(np.max(np.abs(self.system.speeds))), 1.0)
+
+    @property
+    def mean(self) -> np.ndarray:
+        """Static equilibrium plus the mean offset from the periodic terms."""
+        return self.static + self.amplitudes[self._at_zero()].sum(axis=0).real
+
+    def peaks(self, maps) -> np.ndarray:
+        """Peak over time of |T q_dyn(t)| for each map T in ``maps`` (shape (C, k, 6)), summed over
+        frequencies (exact for one frequency: the orbit of 2 Re(X e^{iθ}) is an ellipse with
+        semi-major axis sqrt(2 (|X|² + |X·X|)))."""
+        positive = (self.omega > 0) & ~self._at_zero()
+        X = np.einsum("ckj,fj->cfk", np.asarray(maps, dtype=float), self.amplitudes[positive])
+        size = np.abs(X) ** 2
+        return np.sqrt(2.0 * (size.sum(axis=2) + np.abs((X * X).sum(axis=2)))).sum(axis=1)
+
+    def peak(self, T) -> float:
+        """Peak of |T q_dyn(t)| for one map T (shape (k, 6))."""
+        return float(self.peaks(np.asarray(T, dtype=float)[None])[0])
+
+
+def _weights(length: float) -> np.ndarray:
+    """Sizes of (x, y, z, α, β, γ) in metres: rotations times the platform's diagonal."""
+    return np.array([1.0, 1.0, 1.0, length, length, length])
+
+
+@dataclass(frozen=True)
+class _Couplings:
+    """The periodic coefficients of (HB) merged by frequency: offsets Ω_k (k ≠ 0) and, for each,
+    K_k, G_k, M_k summed over the harmonic vectors k of that frequency."""
+
+    offsets: HarmonicSet
+    stiff: np.ndarray
+    gyro: np.ndarray
+    mass: np.ndarray
+
+    @property
+    def stacked(self) -> np.ndarray:
+        """[K_kᵀ; G_kᵀ; M_kᵀ] (18×6 each), so that [Q, iΩQ, -Ω²Q] @ W_k = (A_k(Ω) Q)ᵀ."""
+        return np.concatenate([self.stiff, self.gyro, self.mass], axis=2).transpose(0, 2, 1)
+
+
+def _couplings(system: PeriodicSystem, tolerance: float) -> _Couplings:
+    keys = system.keys[1:]
+    offsets = distinct(keys, system.frequencies(keys), tolerance)
+    row = offsets.find(system.frequencies(keys))
+    merged = []
+    for part in (system.stiff[1:], system.gyro[1:], system.mass[1:]):
+        total = np.zeros((len(offsets), 6, 6), dtype=complex)
+        np.add.at(total, row, part)
+        merged.append(total)
+    return _Couplings(offsets, *merged)
+
+
+class _Operator:
+    """The left side of (HB) on a set of harmonics (block rows and columns)."""
+
+    def __init__(self, system: PeriodicSystem, couplings: _Couplings, harmonics: HarmonicSet) -> None:
+        self.couplings = couplings
+        self.harmonics = harmonics
+        self.diagonal = system.dynamic_matrices(harmonics.omega)
+        self.blocks = couplings.stacked
+        self.links = self.links_for(harmonics.omega)
+
+    def links_for(self, omega) -> list[tuple[np.ndarray, np.ndarray]]:
+        """For each coupling offset Ω_k: which of the frequencies ``omega`` (Ω_m) have Ω_m - Ω_k in
+        the set, and the set's row numbers of those."""
+        links = []
+        for w_k in self.couplings.offsets.omega:
+            src = self.harmonics.find(omega - w_k)
+            hit = np.nonzero(src >= 0)[0]
+            links.append((hit, src[hit]))
+        return links
+
+    def coupled(self, Q, links, rows: int) -> np.ndarray:
+        """Σ_{k≠0} A_k(Ω_m - Ω_k) Q(Ω_m - Ω_k) for ``rows`` block rows described by ``links``."""
+        w = self.harmonics.omega[:, None]
+        Z = np.concatenate([Q, 1j * w * Q, -w * w * Q], axis=1)
+        out = np.zeros((rows, 6), dtype=complex)
+        for W, (hit, src) in zip(self.blocks, links):
+            if len(hit):
+                out[hit] += Z[src] @ W
+        return out
+
+    def apply(self, Q) -> np.ndarray:
+        """(HB) left side for amplitudes Q (shape (H, 6))."""
+        return np.einsum("hij,hj->hi", self.diagonal, Q) + self.coupled(Q, self.links, len(Q))
+
+    def dense(self) -> np.ndarray:
+        """The whole matrix, shape (6H, 6H)."""
+        H = len(self.harmonics)
+        A = np.zeros((H, 6, H, 6), dtype=complex)
+        idx = np.arange(H)
+        A[idx, :, idx, :] = self.diagonal
+        c = self.couplings
+        for p, (hit, src) in enumerate(self.links):
+            w = self.harmonics.omega[src][:, None, None]
+            A[hit, :, src, :] += c.stiff[p] + 1j * w * c.gyro[p] - w * w * c.mass[p]
+        return A.reshape(6 * H, 6 * H)
+
+
+def _loads(system: PeriodicSystem, static: np.ndarray, tolerance: float) -> tuple[HarmonicSet, np.ndarray]:
+    """Frequencies and values of the right side F_m - K_m q_s of (HB)."""
+    vectors = np.concatenate([system.force_keys, system.keys[1:]])
+    values = np.concatenate([system.force, -(system.stiff[1:] @ static)])
+    where = distinct(vectors, system.frequencies(vectors), tolerance)
+    out = np.zeros((len(where), 6), dtype=complex)
+    np.add.at(out, where.find(system.frequencies(vectors)), values)
+    return where, out
+
+
+def _right_side(harmonics: HarmonicSet, loads) -> np.ndarray:
+    where, values = loads
+    rhs = np.zeros((len(harmonics), 6), dtype=complex)
+    row = harmonics.find(where.omega)
+    rhs[row[row >= 0]] = values[row >= 0]
+    return rhs
+
+
+def _solve(op: _Operator, rhs: np.ndarray, guess: np.ndarray) -> np.ndarray:
+    H = len(rhs)
+    if 6 * H <= DENSE_UNKNOWNS:
+        return np.linalg.solve(op.dense(), rhs.ravel()).reshape(H, 6)
+    from scipy.sparse.linalg import LinearOperator, gmres
+
+    inverse = np.linalg.inv(op.diagonal)
+    n = 6 * H
+    A = LinearOperator((n, n), matvec=lambda x: op.apply(x.reshape(H, 6)).ravel(), dtype=complex)
+    P = LinearOperator((n, n), matvec=lambda x: np.einsum("hij,hj->hi", inverse, x.reshape(H, 6)).ravel(), dtype=complex)
+    x, info = gmres(A, rhs.ravel(), x0=guess.ravel(), rtol=GMRES_TOL, atol=0.0, restart=60, maxiter=20, M=P)
+    if info != 0:
+        raise ConvergenceError(f"the harmonic balance over {H} frequencies did not converge (GMRES, {info} iterations)")
+    return x.reshape(H, 6)
+
+
+def _require_regular(system: PeriodicSystem, harmonics: HarmonicSet, diagonal, length: float, natural) -> None:
+    """Raise PhysicsError when an undamped diagonal block is singular (an exact resonance)."""
+    if system.damped or len(harmonics) == 0:
+        return
+    scale = np.diag(1.0 / _weights(length))
+    rcond = 1.0 / np.linalg.cond(scale @ diagonal @ scale)
+    bad = np.nonzero(~(rcond > SINGULAR_RCOND))[0]
+    if len(bad) == 0:
+        return
+    row = bad[np.argmin(rcond[bad])]
+    n, w = harmonics.vectors[row], abs(float(harmonics.omega[row]))
+    modes = natural()
+    p = float(modes[np.argmin(np.abs(modes - w))])
+    raise PhysicsError(
+        f"the 6-DOF response is undefined: the combination {combination_label(tuple(int(x) for x in n))}"
+        f" = {w:.6g} rad/s of the rotor speeds falls on the natural frequency {p:.6g} rad/s of the"
+        " undamped platform",
+        field="isolators.loss_factor",
+        hint="move the speeds or the stiffnesses, or give the isolators' damping (loss_factor > 0)",
+    )
+
+
+def steady_state(platform, rotors, start: SteadyState | None = None) -> SteadyState:
+    """Steady-state response of the platform to its rotors by harmonic balance (module docstring).
+
+    ``start``: a solution of a nearby system (a tolerance variant) whose harmonics and amplitudes
+    seed the set and the iteration.
+
+    Raises
+    ------
+    PhysicsError
+        when the platform is not restrained (its spring stiffness matrix is singular) or, without
+        damping, a combination of the rotor speeds falls exactly on a natural frequency.
+    ConvergenceError
+        when the iterative solve of a very large harmonic set fails to converge.
+
+    >>> from foundation_calc.solvers.platform.dynamics import RigidPlatform, Rotor, block_inertia, inertia_about_corner
+    >>> p = RigidPlatform(2e4, (1.5, 1.0, 0.65), inertia_about_corner(2e4, (1.5, 1.0, 0.65),
+    ...     block_inertia(2e4, 3.0, 2.0, 1.3)), 3.0, 2.0, np.full((4, 3), 1e8), 0.0, 9.81)
+    >>> s = steady_state(p, [Rotor(25.0, 0.2, (1.5, 1.0, 0.65), 0.0, 0.0, 100.0, 0.0)])
+    >>> round(float(s.static[2]) * 1e4, 4), s.order
+    (-4.9111, 5)
+    """
+    from foundation_calc.solvers.platform.dynamics import natural_frequencies
+
+    system = periodic_system(platform, rotors)
+    length = float(np.hypot(platform.A, platform.B))
+    weights = _weights(length)
+    tolerance = FREQUENCY_TOL * max(float(np.max(np.abs(system.speeds))), 1.0)
+    couplings = _couplings(system, tolerance)
+    static = _static(system)
+    loads = _loads(system, static, tolerance)
+    if start is not None:
+        harmonics, Q = HarmonicSet(start.vectors, start.omega, tolerance), start.amplitudes
+    else:
+        zero = HarmonicSet(np.zeros_like(system.keys[:1]), np.zeros(1), tolerance)
+        forced = loads[0].subset(loads[0].find_in(zero) < 0)
+        harmonics, Q = zero.union(forced, np.zeros((1, 6), dtype=complex), np.zeros((len(forced), 6), dtype=complex))
+
+    def natural():
+        return natural_frequencies(platform, rotors).frequencies
+
+    while True:
+        op = _Operator(system, couplings, harmonics)
+        _require_regular(system, harmonics, op.diagonal, length, natural)
+        Q = _solve(op, _right_side(harmonics, loads), Q)
+        candidates = harmonics.neighbours(couplings.offsets.vectors, system.speeds)
+        estimate = _estimates(system, op, candidates, Q, loads, length, natural)
+        size = np.max(np.abs(estimate * weights), axis=1)
+        # keep the largest, leave out the smallest while their sum stays within the tolerance
+        by_size = np.argsort(size)
+        left = np.cumsum(size[by_size]) <= TRUNCATION_TOL * float(np.max(np.abs(Q * weights)))
+        wanted = by_size[~left][::-1][: MAX_HARMONICS - len(harmonics)]
+        if len(wanted) == 0:
+            break
+        harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
+    order = int(np.max(np.abs(harmonics.vectors).sum(axis=1)))
+    # a harmonic left out would move a point by at most twice its amplitude
+    return SteadyState(static, harmonics.vectors, harmonics.omega, Q, system, order, 2.0 * float(np.sum(size)))
+
+
+def _estimates(system, op: _Operator, candidates: HarmonicSet, Q, loads, length, natural) -> np.ndarray:
+    """D(Ω_m)⁻¹ r_m for harmonics m outside the set: their estimate from the residual r_m = the
+    right side minus what the retained harmonics spill onto m."""
+    spill = op.coupled(Q, op.links_for(candidates.omega), len(candidates))
+    residual = _right_side(candidates, loads) - spill
+    diagonal = system.dynamic_matrices(candidates.omega)
+    _require_regular(system, candidates, diagonal, length, natural)
+    return np.linalg.solve(diagonal, residual[..., None])[..., 0]
+
+
+def _static(system: PeriodicSystem) -> np.ndarray:
+    """Static equilibrium q_s from K_springs q_s = weight and its moment about O1."""
+    try:
+        return np.linalg.solve(system.springs, system.static_load)
+    except np.linalg.LinAlgError:
+        raise PhysicsError(
+            "the platform is not restrained: the isolators' stiffness matrix is singular",
+            field="isolators",
+            hint="every direction needs a spring: check the horizontal sums and the vertical stiffnesses",
+        ) from None
