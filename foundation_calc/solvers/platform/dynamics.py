@@ -50,6 +50,10 @@ from foundation_calc.errors import ConvergenceError, PhysicsError
 
 E3 = np.array([0.0, 0.0, 1.0])
 
+#: A mode whose squared natural frequency is within this fraction of the stiffest one from zero
+#: has no restraint: double precision cannot tell its stiffness from nothing [-].
+UNRESTRAINED = 1e-12
+
 #: Names of the six coordinates, in order.
 COORDINATES = ("x", "y", "z", "alpha", "beta", "gamma")
 
@@ -308,7 +312,8 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
     Raises
     ------
     PhysicsError
-        when a squared frequency is not positive (the platform tips over under its weight).
+        when a squared frequency vanishes (a direction without springs) or is negative (the
+        platform tips over under its weight).
     """
     system = periodic_system(platform, rotors)
     # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
@@ -323,17 +328,24 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
             "the 6-DOF natural frequencies cannot be computed in double precision: the platform's"
             " masses, sizes and stiffnesses span too many orders of magnitude"
         ) from None
-    if np.any(p2 <= 0.0):
-        raise PhysicsError(
-            f"the platform is unstable: a squared natural frequency is {float(p2.min()):.6g} rad²/s²"
-            " (the weight's tilting moment exceeds the isolators' rocking stiffness)",
-            field="isolators.vertical",
-            hint="stiffen the vertical isolators or lower the centre of mass ζ",
-        )
     shapes = D @ Li.T @ v
     r_c = np.asarray(platform.r_c, dtype=float)
     J_c = platform.J_O1 - platform.M * (r_c @ r_c * np.eye(3) - np.outer(r_c, r_c))
     at_cog = shapes[:3] - skew(r_c) @ shapes[3:]  # translation of the centre of mass
     energy = np.vstack([platform.M * at_cog**2, np.diag(J_c)[:, None] * shapes[3:] ** 2])
     dominant = tuple(COORDINATES[int(np.argmax(energy[:, i]))] for i in range(6))
+    if p2[0] <= UNRESTRAINED * p2[-1] and p2[0] > -UNRESTRAINED * p2[-1]:
+        raise PhysicsError(
+            f"the platform is not restrained in {dominant[0]}: the isolators give that motion no stiffness"
+            f" (squared natural frequency {float(p2[0]):.3g} rad²/s², {float(p2[0] / p2[-1]):.1e} of the stiffest mode)",
+            field="isolators",
+            hint="every direction needs a spring: check the horizontal stiffness sums and the vertical stiffnesses",
+        )
+    if p2[0] <= 0.0:
+        raise PhysicsError(
+            f"the platform is unstable: a squared natural frequency is {float(p2.min()):.6g} rad²/s²"
+            " (the weight's tilting moment exceeds the isolators' rocking stiffness)",
+            field="isolators.vertical",
+            hint="stiffen the vertical isolators or lower the centre of mass ζ",
+        )
     return Modes(np.sqrt(p2), dominant, shapes)

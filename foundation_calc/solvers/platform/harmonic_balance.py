@@ -299,7 +299,7 @@ def _require_regular(system: PeriodicSystem, harmonics: HarmonicSet, diagonal, l
     bad = np.nonzero(~(rcond > SINGULAR_RCOND))[0]
     if len(bad) == 0:
         return
-    row = bad[np.argmin(rcond[bad])]
+    row = bad[np.lexsort((rcond[bad], harmonics.omega[bad] < 0))[0]]  # the positive frequency first
     n, w = harmonics.vectors[row], abs(float(harmonics.omega[row]))
     modes = natural()
     p = float(modes[np.argmin(np.abs(modes - w))])
@@ -312,11 +312,12 @@ def _require_regular(system: PeriodicSystem, harmonics: HarmonicSet, diagonal, l
     )
 
 
-def steady_state(platform, rotors, start: SteadyState | None = None) -> SteadyState:
+def steady_state(platform, rotors, start: SteadyState | None = None, max_order: int | None = None) -> SteadyState:
     """Steady-state response of the platform to its rotors by harmonic balance (module docstring).
 
     ``start``: a solution of a nearby system (a tolerance variant) whose harmonics and amplitudes
-    seed the set and the iteration.
+    seed the set and the iteration. ``max_order``: retain no harmonic of order |n|₁ above it
+    (for convergence studies; by default the tolerance alone decides).
 
     Raises
     ------
@@ -362,7 +363,12 @@ def steady_state(platform, rotors, start: SteadyState | None = None) -> SteadySt
         # keep the largest, leave out the smallest while their sum stays within the tolerance
         by_size = np.argsort(size)
         left = np.cumsum(size[by_size]) <= TRUNCATION_TOL * float(np.max(np.abs(Q * weights)))
-        wanted = by_size[~left][::-1][: MAX_HARMONICS - len(harmonics)]
+        wanted = by_size[~left][::-1]
+        if max_order is not None:
+            wanted = wanted[np.abs(candidates.vectors[wanted]).sum(axis=1) <= max_order]
+        wanted = wanted[: MAX_HARMONICS - len(harmonics)]
+        mirror = candidates.find(-candidates.omega[wanted])  # q is real: Q(-Ω) = conj Q(Ω)
+        wanted = np.union1d(wanted, mirror[mirror >= 0])
         if len(wanted) == 0:
             break
         harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
