@@ -366,7 +366,7 @@ def steady_state(platform, rotors, start: SteadyState | None = None, max_order: 
         wanted = by_size[~left][::-1]
         if max_order is not None:
             wanted = wanted[np.abs(candidates.vectors[wanted]).sum(axis=1) <= max_order]
-        wanted = wanted[: MAX_HARMONICS - len(harmonics)]
+        wanted = wanted[: max(MAX_HARMONICS - len(harmonics), 0)]
         mirror = candidates.find(-candidates.omega[wanted])  # q is real: Q(-Ω) = conj Q(Ω)
         wanted = np.union1d(wanted, mirror[mirror >= 0])
         if len(wanted) == 0:
