@@ -171,10 +171,6 @@ class SteadyState:
         size = np.abs(X) ** 2
         return np.sqrt(2.0 * (size.sum(axis=2) + np.abs((X * X).sum(axis=2)))).sum(axis=1)
 
-    def peak(self, T) -> float:
-        """Peak of |T q_dyn(t)| for one map T (shape (k, 6))."""
-        return float(self.peaks(np.asarray(T, dtype=float)[None])[0])
-
 
 def _weights(length: float) -> np.ndarray:
     """Sizes of (x, y, z, α, β, γ) in metres: rotations times the platform's diagonal."""
