@@ -130,7 +130,8 @@ def test_damping_leaves_rocking_roughly_proportional_to_eta():
 
 
 def test_sensitivity_table_orders_and_finds_the_known_contributors():
-    rows = sensitivity(paper(), model(), verify(paper(), model()))
+    d, m = paper(), model()
+    rows = sensitivity(d, m, verify(d, m), natural_frequencies(*build(d, m)).frequencies)
     worst = [r.worst for r in rows]
     assert worst == sorted(worst, reverse=True)
     by_name = {r.parameter: r for r in rows}

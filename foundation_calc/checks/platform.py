@@ -170,7 +170,7 @@ def check_platform(design: PlatformDesign, model: PlatformModel, limits, inertia
     """Verify ``design`` on the 6-DOF model and compare with ``limits`` (a scene's [limits])."""
     modes = natural_frequencies(*build(design, model))
     v = verify(design, model)
-    rows = tuple(sensitivity(design, model, v))
+    rows = tuple(sensitivity(design, model, v, modes.frequencies))
     findings = (
         _height(design, limits.exciter_height_ratio),
         _regime(design, limits.detuning),

@@ -303,11 +303,12 @@ class Modes:
     shapes: np.ndarray
 
 
-def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
+def natural_frequencies(platform: RigidPlatform, rotors, system: PeriodicSystem | None = None) -> Modes:
     """The six natural frequencies of the mean (time-averaged) system without damping.
 
     Solves K0 v = p² M0 v with M0, K0 the constant parts of M(t), K(t) (rotor masses at their
-    mean inertia, the weight's tilt stiffness included, gyroscopic terms left out).
+    mean inertia, the weight's tilt stiffness included, gyroscopic terms left out). ``system``:
+    the equations of ``platform`` and ``rotors`` when already assembled.
 
     Raises
     ------
@@ -315,7 +316,7 @@ def natural_frequencies(platform: RigidPlatform, rotors) -> Modes:
         when a squared frequency vanishes (a direction without springs) or is negative (the
         platform tips over under its weight).
     """
-    system = periodic_system(platform, rotors)
+    system = system if system is not None else periodic_system(platform, rotors)
     # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
     D = np.diag([1.0, 1.0, 1.0] + [1.0 / float(np.hypot(platform.A, platform.B))] * 3)
     M0, K0 = D @ system.mass[0].real @ D, D @ system.stiff[0].real @ D

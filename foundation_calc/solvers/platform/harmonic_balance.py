@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError, PhysicsError
-from foundation_calc.solvers.platform.dynamics import PeriodicSystem, periodic_system
+from foundation_calc.solvers.platform.dynamics import PeriodicSystem, natural_frequencies, periodic_system
 
 #: A harmonic is retained when its estimated size exceeds this fraction of the largest one [-].
 TRUNCATION_TOL = 1e-12
@@ -100,11 +100,7 @@ class HarmonicSet:
         """The frequencies n·ω + k·ω (n in the set, k in ``keys``) not yet in the set."""
         near = (self.vectors[:, None, :] + np.asarray(keys)[None, :, :]).reshape(-1, self.vectors.shape[1])
         found = distinct(near, near @ speeds, self.tolerance)
-        return found.subset(found.find_in(self) < 0)
-
-    def find_in(self, other: "HarmonicSet") -> np.ndarray:
-        """Row numbers of this set's frequencies in ``other`` (-1 where absent)."""
-        return other.find(self.omega)
+        return found.subset(self.find(found.omega) < 0)
 
     def subset(self, rows) -> "HarmonicSet":
         return HarmonicSet(self.vectors[rows], self.omega[rows], self.tolerance)
@@ -330,8 +326,6 @@ def steady_state(platform, rotors, start: SteadyState | None = None, max_order: 
     >>> round(float(s.static[2]) * 1e4, 4), s.order
     (-4.9111, 5)
     """
-    from foundation_calc.solvers.platform.dynamics import natural_frequencies
-
     system = periodic_system(platform, rotors)
     length = float(np.hypot(platform.A, platform.B))
     weights = _weights(length)
@@ -343,11 +337,11 @@ def steady_state(platform, rotors, start: SteadyState | None = None, max_order: 
         harmonics, Q = HarmonicSet(start.vectors, start.omega, tolerance), start.amplitudes
     else:
         zero = HarmonicSet(np.zeros_like(system.keys[:1]), np.zeros(1), tolerance)
-        forced = loads[0].subset(loads[0].find_in(zero) < 0)
+        forced = loads[0].subset(zero.find(loads[0].omega) < 0)
         harmonics, Q = zero.union(forced, np.zeros((1, 6), dtype=complex), np.zeros((len(forced), 6), dtype=complex))
 
     def natural():
-        return natural_frequencies(platform, rotors).frequencies
+        return natural_frequencies(platform, rotors, system).frequencies
 
     while True:
         op = _Operator(system, couplings, harmonics)

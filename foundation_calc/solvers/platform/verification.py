@@ -271,9 +271,10 @@ def _crossing(watched, nominal: np.ndarray, variants) -> str:
     return ""
 
 
-def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verification) -> list[SensitivityRow]:
+def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verification, modes: np.ndarray) -> list[SensitivityRow]:
     """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ,
-    computed with the isolators' damping of ``model``, each solve started from ``nominal``.
+    computed with the isolators' damping of ``model``, each solve started from ``nominal``;
+    ``modes``: the design's natural frequencies [rad/s].
 
     A row whose range makes a natural frequency (undamped, mean system) cross a combination of
     the rotor speeds of order |n|₁ <= 2 is marked resonant, and so is a row with a variant that
@@ -286,14 +287,13 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
         for n, w in zip(state.vectors, state.omega)
         if w > 0 and 0 < np.abs(n).sum() <= WATCHED_ORDER
     ]
-    modes = natural_frequencies(*build(design, model)).frequencies
     rows = []
     for name, tolerance, *changes in _tolerance_variants(design):
         numbers, variant_modes, failure = [], [], ""
         for change in changes:
             try:
-                variant_modes.append(natural_frequencies(*build(design, model, **change)).frequencies)
                 v = verify(design, model, state, **change)
+                variant_modes.append(natural_frequencies(*build(design, model, **change), v.state.system).frequencies)
                 numbers.append((v.rocking_percent, v.static_offset_percent))
             except (PhysicsError, ConvergenceError) as exc:  # e.g. an undamped variant exactly at resonance
                 numbers.append((None, None))
