@@ -42,7 +42,7 @@ References
 from __future__ import annotations
 
 from collections import defaultdict
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -220,6 +220,12 @@ class PeriodicSystem:
     def frequencies(self, n) -> np.ndarray:
         """Ω = n·ω [rad/s] of harmonic vectors n (shape (..., N))."""
         return np.asarray(n) @ self.speeds
+
+    def with_springs(self, springs: np.ndarray) -> "PeriodicSystem":
+        """The same system on other isolators (K_springs replaced, the rotors' terms kept)."""
+        stiff = self.stiff.copy()
+        stiff[0] += springs - self.springs
+        return replace(self, stiff=stiff, springs=springs)
 
     def dynamic_matrices(self, omega) -> np.ndarray:
         """D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0 for each Ω, shape (H, 6, 6)."""

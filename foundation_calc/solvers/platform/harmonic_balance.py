@@ -25,7 +25,7 @@ D(Ω_m), which capture the resonant harmonics, starting from the previous soluti
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -44,8 +44,8 @@ DENSE_UNKNOWNS = 720
 #: Frequencies closer than this fraction of the largest rotor speed are one frequency [-].
 FREQUENCY_TOL = 1e-9
 
-#: Relative residual at which GMRES stops [-].
-GMRES_TOL = 1e-14
+#: Relative residual at which GMRES stops [-]: the truncation tolerance, below which no harmonic counts.
+GMRES_TOL = TRUNCATION_TOL
 
 #: An undamped diagonal block whose reciprocal condition number is below this is an exact resonance.
 SINGULAR_RCOND = 1e-13
@@ -140,6 +140,8 @@ class SteadyState:
     system : the assembled equations
     order : truncation order K, the largest |n|₁ retained
     truncation_error : estimated peak motion of the harmonics left out [m]
+    links : which retained frequencies each coupling offset connects (:meth:`_Operator.links_for`),
+        reused by the solves of nearby systems on the same frequencies
     """
 
     static: np.ndarray
@@ -149,9 +151,10 @@ class SteadyState:
     system: PeriodicSystem
     order: int
     truncation_error: float
+    links: list = field(repr=False, compare=False, default_factory=list)
 
     def _at_zero(self) -> np.ndarray:
-        return np.abs(self.omega) <= FREQUENCY_TOL * max(float(np.max(np.abs(self.system.speeds))), 1.0)
+        return np.abs(self.omega) <= _tolerance(self.system)
 
     @property
     def mean(self) -> np.ndarray:
@@ -204,12 +207,12 @@ def _couplings(system: PeriodicSystem, tolerance: float) -> _Couplings:
 class _Operator:
     """The left side of (HB) on a set of harmonics (block rows and columns)."""
 
-    def __init__(self, system: PeriodicSystem, couplings: _Couplings, harmonics: HarmonicSet) -> None:
+    def __init__(self, system: PeriodicSystem, couplings: _Couplings, harmonics: HarmonicSet, links=None) -> None:
         self.couplings = couplings
         self.harmonics = harmonics
         self.diagonal = system.dynamic_matrices(harmonics.omega)
         self.blocks = couplings.stacked
-        self.links = self.links_for(harmonics.omega)
+        self.links = links if links is not None else self.links_for(harmonics.omega)
 
     def links_for(self, omega) -> list[tuple[np.ndarray, np.ndarray]]:
         """For each coupling offset Ω_k: which of the frequencies ``omega`` (Ω_m) have Ω_m - Ω_k in
@@ -304,12 +307,11 @@ def _require_regular(system: PeriodicSystem, harmonics: HarmonicSet, diagonal, l
     )
 
 
-def steady_state(platform, rotors, start: SteadyState | None = None, max_order: int | None = None) -> SteadyState:
+def steady_state(platform, rotors, max_order: int | None = None) -> SteadyState:
     """Steady-state response of the platform to its rotors by harmonic balance (module docstring).
 
-    ``start``: a solution of a nearby system (a tolerance variant) whose harmonics and amplitudes
-    seed the set and the iteration. ``max_order``: retain no harmonic of order |n|₁ above it
-    (for convergence studies; by default the tolerance alone decides).
+    ``max_order``: retain no harmonic of order |n|₁ above it (for convergence studies; by default
+    the tolerance alone decides).
 
     Raises
     ------
@@ -329,16 +331,13 @@ def steady_state(platform, rotors, start: SteadyState | None = None, max_order: 
     system = periodic_system(platform, rotors)
     length = float(np.hypot(platform.A, platform.B))
     weights = _weights(length)
-    tolerance = FREQUENCY_TOL * max(float(np.max(np.abs(system.speeds))), 1.0)
+    tolerance = _tolerance(system)
     couplings = _couplings(system, tolerance)
     static = _static(system)
     loads = _loads(system, static, tolerance)
-    if start is not None:
-        harmonics, Q = HarmonicSet(start.vectors, start.omega, tolerance), start.amplitudes
-    else:
-        zero = HarmonicSet(np.zeros_like(system.keys[:1]), np.zeros(1), tolerance)
-        forced = loads[0].subset(zero.find(loads[0].omega) < 0)
-        harmonics, Q = zero.union(forced, np.zeros((1, 6), dtype=complex), np.zeros((len(forced), 6), dtype=complex))
+    zero = HarmonicSet(np.zeros_like(system.keys[:1]), np.zeros(1), tolerance)
+    forced = loads[0].subset(zero.find(loads[0].omega) < 0)
+    harmonics, Q = zero.union(forced, np.zeros((1, 6), dtype=complex), np.zeros((len(forced), 6), dtype=complex))
 
     def natural():
         return natural_frequencies(platform, rotors, system).frequencies
@@ -364,7 +363,43 @@ def steady_state(platform, rotors, start: SteadyState | None = None, max_order: 
         harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
     order = int(np.max(np.abs(harmonics.vectors).sum(axis=1)))
     # a harmonic left out would move a point by at most twice its amplitude
-    return SteadyState(static, harmonics.vectors, harmonics.omega, Q, system, order, 2.0 * float(np.sum(size)))
+    return SteadyState(static, harmonics.vectors, harmonics.omega, Q, system, order, 2.0 * float(np.sum(size)), op.links)
+
+
+def steady_state_near(nominal: SteadyState, platform, rotors, system: PeriodicSystem | None = None) -> SteadyState:
+    """Steady state of a system close to the one of ``nominal`` (a tolerance variant: the same rotor
+    speeds, stiffnesses or positions changed by a per cent) on the nominal's frequencies, started
+    from its amplitudes, without growing the set. ``system``: the variant's equations when already
+    assembled.
+
+    The variant's truncation error is taken as the nominal's: a change that makes a left-out
+    harmonic resonant would need a natural frequency to cross a combination of order above the
+    nominal's, which the sensitivity table watches separately (:data:`verification.WATCHED_ORDER`).
+
+    Raises
+    ------
+    PhysicsError
+        as :func:`steady_state`.
+    """
+    system = system if system is not None else periodic_system(platform, rotors)
+    length = float(np.hypot(platform.A, platform.B))
+    tolerance = _tolerance(system)
+    couplings = _couplings(system, tolerance)
+    if not (np.array_equal(system.speeds, nominal.system.speeds) and np.array_equal(system.keys, nominal.system.keys)):
+        raise ValueError("steady_state_near needs the nominal's rotors and speeds")
+    static = _static(system)
+    harmonics = HarmonicSet(nominal.vectors, nominal.omega, tolerance)
+    op = _Operator(system, couplings, harmonics, nominal.links or None)
+    _require_regular(system, harmonics, op.diagonal, length, lambda: natural_frequencies(platform, rotors, system).frequencies)
+    Q = _solve(op, _right_side(harmonics, _loads(system, static, tolerance)), nominal.amplitudes)
+    return SteadyState(
+        static, nominal.vectors, nominal.omega, Q, system, nominal.order, nominal.truncation_error, op.links
+    )
+
+
+def _tolerance(system: PeriodicSystem) -> float:
+    """:data:`FREQUENCY_TOL` in rad/s for the rotor speeds of ``system``."""
+    return FREQUENCY_TOL * max(float(np.max(np.abs(system.speeds))), 1.0)
 
 
 def _estimates(system, op: _Operator, candidates: HarmonicSet, Q, loads, length, natural) -> np.ndarray:

@@ -25,8 +25,9 @@ from foundation_calc.solvers.platform.dynamics import (
     natural_frequencies,
     point_map,
     skew,
+    spring_stiffness,
 )
-from foundation_calc.solvers.platform.harmonic_balance import SteadyState, combination_label, steady_state
+from foundation_calc.solvers.platform.harmonic_balance import SteadyState, combination_label, steady_state, steady_state_near
 
 #: Tolerances of the sensitivity table: relative for stiffnesses and ζ, absolute [m] for a, b, c.
 STIFFNESS_TOLERANCE = 0.01
@@ -178,9 +179,8 @@ def measure(state: SteadyState, r_c, corners, u) -> Verification:
     )
 
 
-def verify(design: PlatformDesign, model: PlatformModel, start: SteadyState | None = None, **changes) -> Verification:
-    """Solve the 6-DOF model of ``design`` (``changes`` as for :func:`build`) and measure it;
-    ``start``: the steady state of a nearby system, to start the solve from.
+def verify(design: PlatformDesign, model: PlatformModel, **changes) -> Verification:
+    """Solve the 6-DOF model of ``design`` (``changes`` as for :func:`build`) and measure it.
 
     >>> import math
     >>> from foundation_calc.solvers.platform.design import design_from_position
@@ -191,8 +191,21 @@ def verify(design: PlatformDesign, model: PlatformModel, start: SteadyState | No
     (1.0, True)
     """
     platform, rotors = build(design, model, **changes)
+    return _measured(steady_state(platform, rotors), design, model, platform)
+
+
+def _measured(state: SteadyState, design: PlatformDesign, model: PlatformModel, platform) -> Verification:
     corners = product_corners(design.A, design.B, model.product_height)
-    return measure(steady_state(platform, rotors, start), platform.r_c, corners, design.u)
+    return measure(state, platform.r_c, corners, design.u)
+
+
+def _variant(design: PlatformDesign, model: PlatformModel, nominal: Verification, changes: dict):
+    """The verification and the natural frequencies of a tolerance variant, solved on the nominal's
+    harmonics (:func:`steady_state_near`); a change of stiffness alone keeps the rotors' terms."""
+    platform, rotors = build(design, model, **changes)
+    system = nominal.state.system.with_springs(spring_stiffness(platform)) if changes.keys() == {"stiffness"} else None
+    state = steady_state_near(nominal.state, platform, rotors, system)
+    return _measured(state, design, model, platform), natural_frequencies(platform, rotors, state.system).frequencies
 
 
 #: Combinations of the rotor speeds up to this order |n|₁ are watched for resonances under tolerances.
@@ -273,7 +286,7 @@ def _crossing(watched, nominal: np.ndarray, variants) -> str:
 
 def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verification, modes: np.ndarray) -> list[SensitivityRow]:
     """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ,
-    computed with the isolators' damping of ``model``, each solve started from ``nominal``;
+    computed with the isolators' damping of ``model`` on the harmonics of ``nominal``;
     ``modes``: the design's natural frequencies [rad/s].
 
     A row whose range makes a natural frequency (undamped, mean system) cross a combination of
@@ -292,8 +305,8 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
         numbers, variant_modes, failure = [], [], ""
         for change in changes:
             try:
-                v = verify(design, model, state, **change)
-                variant_modes.append(natural_frequencies(*build(design, model, **change), v.state.system).frequencies)
+                v, frequencies = _variant(design, model, nominal, change)
+                variant_modes.append(frequencies)
                 numbers.append((v.rocking_percent, v.static_offset_percent))
             except (PhysicsError, ConvergenceError) as exc:  # e.g. an undamped variant exactly at resonance
                 numbers.append((None, None))
