@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -23,7 +24,7 @@ from foundation_calc.solvers.platform.dynamics import (
     natural_frequencies,
     periodic_system,
 )
-from foundation_calc.solvers.platform.harmonic_balance import steady_state
+from foundation_calc.solvers.platform.harmonic_balance import VARIANT_TOL, VariantBasis, steady_state, steady_state_near
 from foundation_calc.solvers.platform.verification import build
 from tests.platform_linear_time import harmonic_history, integrate_from_rest
 
@@ -129,6 +130,31 @@ def test_equal_speeds_share_one_frequency():
     assert len(rotors) == 17
     assert np.allclose(state.omega / W, np.round(state.omega / W))  # only multiples of ω
     assert len(state.omega) == 2 * state.order + 1
+
+
+def _peaks(state):
+    """Peak over time of each coordinate x, y, z [m], α, β, γ [rad]."""
+    return state.peaks(np.eye(6)[:, None, :])
+
+
+@pytest.mark.parametrize("factor", [1.01, 1.5])  # a tolerance variant; one far away (direct-solve fallback)
+@pytest.mark.parametrize("extra_count", [2, 16])  # dense refinement; GMRES with the nominal's preconditioner
+def test_a_variant_on_the_nominal_basis_matches_its_own_full_solve(factor, extra_count):
+    speeds = [-1.0, 0.673] if extra_count == 2 else [(0.55 + 0.9 * ((j + 1) * 0.618034 % 1.0)) * (-1) ** j for j in range(16)]
+    extras = tuple({"rotor_mass": 5.0 + j, "eccentricity": 0.1, "position": [0.2 * j, 1.5 - 0.08 * j, 0.3],
+                    "speed_ratio": r, "phase": 0.3 * j} for j, r in enumerate(speeds))
+    platform, rotors = scene([9e3, 1.7e4, 2.2e4], extras, damping_ratio=0.01)
+    nominal = steady_state(platform, rotors)
+    basis = VariantBasis(nominal, float(np.hypot(platform.A, platform.B)))
+    assert basis.dense == (extra_count == 2)
+    assert len(basis.harmonics) < len(nominal.omega)
+    changed = replace(platform, stiffness=platform.stiffness * np.array([factor, 1.0, 1.0]))
+    near = steady_state_near(basis, changed, rotors)
+    full = steady_state(changed, rotors)
+    scale = np.max(np.abs(full.amplitudes[:, :3]))
+    # the basis drops harmonics worth VARIANT_TOL of the largest; the rest is solved to 1e-9
+    assert near.truncation_error >= nominal.truncation_error
+    np.testing.assert_allclose(_peaks(near), _peaks(full), rtol=0, atol=2 * VARIANT_TOL * scale * 3.6)
 
 
 def _undamped_paper_platform():

@@ -18,16 +18,20 @@ class Measurement:
     calls: int
 
 
-def measure(fn: Callable[[], object], *, min_time: float = 0.2, max_calls: int = 10_000) -> Measurement:
-    """Time ``fn`` by repeated calls (at least ``min_time`` s in all) and trace one call's memory.
+def measure(
+    fn: Callable[[], object], *, min_time: float = 0.2, max_calls: int = 10_000, min_calls: int = 3, warm_up: bool = True
+) -> Measurement:
+    """Time ``fn`` by repeated calls (at least ``min_time`` s and ``min_calls`` calls in all, after
+    one untimed call when ``warm_up``) and trace one call's memory.
 
     The median of the per-call times is reported, so a stray slow call (garbage collection,
     another process) does not move the figure.
     """
-    fn()  # warm-up: imports, caches
+    if warm_up:
+        fn()  # imports, caches
     times: list[float] = []
     start = time.perf_counter()
-    while len(times) < max_calls and (time.perf_counter() - start < min_time or len(times) < 3):
+    while len(times) < max_calls and (time.perf_counter() - start < min_time or len(times) < min_calls):
         t0 = time.perf_counter()
         fn()
         times.append(time.perf_counter() - t0)

@@ -13,6 +13,7 @@ from foundation_calc.cli.guard import reports_errors
 
 class Section(str, Enum):
     accuracy = "accuracy"
+    harmonic_balance = "harmonic_balance"
     throughput = "throughput"
     startup = "startup"
 
@@ -78,7 +79,9 @@ def bench(
     Methods: the paper's corrected first approximation, the averaged-operator closed form,
     harmonic balance at K = 1, 2, 4, 8, 16 harmonics, shooting with scipy's solve_ivp, and the
     converged harmonic balance that is the reference (error = largest relative error of the x, y,
-    θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Then the
+    θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Platform
+    harmonic balance on built-in rigs of 1, 3 and 17 exciters: time and error against the
+    truncation order K, and the whole check of each rig against one exciter. Then the
     designs per second of one vectorised call against a Python loop, and fcalc's start-up against
     its frameworks' — all measured in this run, on the first crank scene.
     """
@@ -103,8 +106,9 @@ def bench(
     methods = _chosen(METHODS, method)
     steps = len(cranks) * len(methods) if Section.accuracy not in skipped else 0
     steps += len(platforms) if Section.accuracy not in skipped else 0
+    steps += 3 * (Section.harmonic_balance not in skipped)
     steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
-    results, platform_results, throughput, startup = [], [], None, None
+    results, platform_results, throughput, startup, truncation = [], [], None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -118,6 +122,10 @@ def bench(
                 for path, scene in platforms:
                     step(f"{path.name}: design + 6-DOF verification")
                     platform_results.append(benchmark_platform(str(path), scene, min_time=MIN_TIME[quick]))
+        if Section.harmonic_balance not in skipped:
+            from foundation_calc.benchmarks.harmonic_balance import benchmark_truncation
+
+            truncation = benchmark_truncation(MIN_TIME[quick], on_rig=step)
         if Section.throughput not in skipped:
             from foundation_calc.benchmarks.throughput import amplitude_throughput, resonance_throughput
 
@@ -138,9 +146,9 @@ def bench(
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report.bench_document(results, platform_results, throughput, startup))
+        print_json(report.bench_document(results, platform_results, throughput, startup, truncation))
     else:
-        report.print_bench(results, platform_results, throughput, startup)
+        report.print_bench(results, platform_results, throughput, startup, truncation)
         if plot is not None:
             from foundation_calc.output.console import stderr
 

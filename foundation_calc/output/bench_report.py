@@ -67,7 +67,34 @@ def _throughput_document(t) -> dict:
     }
 
 
-def bench_document(scenes, platforms, throughput, startup) -> dict:
+def _truncation_document(truncation) -> dict | None:
+    if truncation is None:
+        return None
+    rows, checks = truncation
+    return {
+        "error_definition": "largest difference of the peaks (x, y, z, rocking, product corners) from the"
+        " converged solve, relative to the required amplitude u; estimate: the solver's own",
+        "orders": [
+            {
+                "exciters": r.exciters,
+                "order_cap": r.cap,
+                "order": r.order,
+                "harmonics": r.harmonics,
+                "seconds": r.seconds,
+                "peak_bytes": r.peak_bytes,
+                "error_over_u": r.error,
+                "estimate_over_u": r.estimate,
+            }
+            for r in rows
+        ],
+        "whole_check": [
+            {"exciters": c.exciters, "seconds": c.seconds, "peak_bytes": c.peak_bytes, "ratio_to_one_exciter": c.ratio_to_one_exciter}
+            for c in checks
+        ],
+    }
+
+
+def bench_document(scenes, platforms, throughput, startup, truncation=None) -> dict:
     """The whole benchmark as one JSON-ready dict (seconds, bytes, relative errors)."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
@@ -95,6 +122,7 @@ def bench_document(scenes, platforms, throughput, startup) -> dict:
             }
             for p in platforms
         ],
+        "platform_harmonic_balance": _truncation_document(truncation),
         "throughput": None if throughput is None else {k: _throughput_document(t) for k, t in throughput.items()},
         "startup": None
         if startup is None
@@ -152,7 +180,36 @@ def _platform_table(platforms):
     return table
 
 
-def print_bench(scenes, platforms, throughput, startup) -> None:
+def _truncation_tables(truncation):
+    from rich.table import Table
+
+    rows, checks = truncation
+    orders = Table(
+        title="Platform harmonic balance: time and error against the truncation order K (error in units of u)",
+        title_justify="left",
+    )
+    for name in ("exciters", "K cap", "K", "harmonics", "time", "peak memory", "error", "estimate"):
+        orders.add_column(name, justify="right")
+    for r in rows:
+        orders.add_row(
+            str(r.exciters),
+            "converged" if r.cap is None else str(r.cap),
+            str(r.order),
+            str(r.harmonics),
+            seconds_text(r.seconds),
+            bytes_text(r.peak_bytes),
+            "reference" if r.error is None else f"{r.error:.1e}",
+            f"{r.estimate:.1e}",
+        )
+    whole = Table(title="Whole platform check (6-DOF verification and 28 tolerance variants)", title_justify="left")
+    for name in ("exciters", "time", "peak memory", "× one exciter"):
+        whole.add_column(name, justify="right")
+    for c in checks:
+        whole.add_row(str(c.exciters), seconds_text(c.seconds), bytes_text(c.peak_bytes), f"{c.ratio_to_one_exciter:.2f}")
+    return orders, whole
+
+
+def print_bench(scenes, platforms, throughput, startup, truncation=None) -> None:
     """The benchmark as rich tables on stdout."""
     from rich.table import Table
 
@@ -165,6 +222,10 @@ def print_bench(scenes, platforms, throughput, startup) -> None:
     if platforms:
         out.print(_platform_table(platforms))
         out.print()
+    if truncation is not None:
+        for table in _truncation_tables(truncation):
+            out.print(table)
+            out.print()
     if throughput:
         table = Table(title="Throughput: one vectorised call against a Python loop, same run", title_justify="left")
         for name in ("computation", "designs", "vectorised", "scalar loop", "speed-up", "peak memory (vectorised)"):

@@ -25,7 +25,7 @@ D(Ω_m), which capture the resonant harmonics, starting from the previous soluti
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -46,6 +46,16 @@ FREQUENCY_TOL = 1e-9
 
 #: Relative residual at which GMRES stops [-]: the truncation tolerance, below which no harmonic counts.
 GMRES_TOL = TRUNCATION_TOL
+
+#: Tolerance variants drop nominal harmonics whose peaks sum to less than this fraction of the largest [-].
+VARIANT_TOL = 1e-6
+
+#: Relative residual at which a tolerance variant's solve stops [-] (well below VARIANT_TOL).
+VARIANT_GMRES_TOL = 1e-9
+
+#: Iterative refinement of a variant: at most this many steps, each shrinking the residual by this factor.
+REFINEMENT_STEPS = 20
+REFINEMENT_CONTRACTION = 0.5
 
 #: An undamped diagonal block whose reciprocal condition number is below this is an exact resonance.
 SINGULAR_RCOND = 1e-13
@@ -140,8 +150,6 @@ class SteadyState:
     system : the assembled equations
     order : truncation order K, the largest |n|₁ retained
     truncation_error : estimated peak motion of the harmonics left out [m]
-    links : which retained frequencies each coupling offset connects (:meth:`_Operator.links_for`),
-        reused by the solves of nearby systems on the same frequencies
     """
 
     static: np.ndarray
@@ -151,7 +159,6 @@ class SteadyState:
     system: PeriodicSystem
     order: int
     truncation_error: float
-    links: list = field(repr=False, compare=False, default_factory=list)
 
     def _at_zero(self) -> np.ndarray:
         return np.abs(self.omega) <= _tolerance(self.system)
@@ -269,7 +276,9 @@ def _right_side(harmonics: HarmonicSet, loads) -> np.ndarray:
     return rhs
 
 
-def _solve(op: _Operator, rhs: np.ndarray, guess: np.ndarray) -> np.ndarray:
+def _solve(op: _Operator, rhs: np.ndarray, guess: np.ndarray, rtol: float = GMRES_TOL) -> np.ndarray:
+    """Solve (HB): dense LU for small sets, else GMRES from ``guess`` preconditioned by the inverses
+    of the diagonal blocks, to relative residual ``rtol``."""
     H = len(rhs)
     if 6 * H <= DENSE_UNKNOWNS:
         return np.linalg.solve(op.dense(), rhs.ravel()).reshape(H, 6)
@@ -279,7 +288,7 @@ def _solve(op: _Operator, rhs: np.ndarray, guess: np.ndarray) -> np.ndarray:
     n = 6 * H
     A = LinearOperator((n, n), matvec=lambda x: op.apply(x.reshape(H, 6)).ravel(), dtype=complex)
     P = LinearOperator((n, n), matvec=lambda x: np.einsum("hij,hj->hi", inverse, x.reshape(H, 6)).ravel(), dtype=complex)
-    x, info = gmres(A, rhs.ravel(), x0=guess.ravel(), rtol=GMRES_TOL, atol=0.0, restart=60, maxiter=20, M=P)
+    x, info = gmres(A, rhs.ravel(), x0=guess.ravel(), rtol=rtol, atol=0.0, restart=60, maxiter=20, M=P)
     if info != 0:
         raise ConvergenceError(f"the harmonic balance over {H} frequencies did not converge (GMRES, {info} iterations)")
     return x.reshape(H, 6)
@@ -363,18 +372,51 @@ def steady_state(platform, rotors, max_order: int | None = None) -> SteadyState:
         harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
     order = int(np.max(np.abs(harmonics.vectors).sum(axis=1)))
     # a harmonic left out would move a point by at most twice its amplitude
-    return SteadyState(static, harmonics.vectors, harmonics.omega, Q, system, order, 2.0 * float(np.sum(size)), op.links)
+    return SteadyState(static, harmonics.vectors, harmonics.omega, Q, system, order, 2.0 * float(np.sum(size)))
 
 
-def steady_state_near(nominal: SteadyState, platform, rotors, system: PeriodicSystem | None = None) -> SteadyState:
-    """Steady state of a system close to the one of ``nominal`` (a tolerance variant: the same rotor
-    speeds, stiffnesses or positions changed by a per cent) on the nominal's frequencies, started
-    from its amplitudes, without growing the set. ``system``: the variant's equations when already
-    assembled.
+class VariantBasis:
+    """What the tolerance variants of a design share: the nominal's frequencies that matter, the
+    index tables of the operator on them and, for a small set, the nominal operator's inverse.
 
-    The variant's truncation error is taken as the nominal's: a change that makes a left-out
-    harmonic resonant would need a natural frequency to cross a combination of order above the
-    nominal's, which the sensitivity table watches separately (:data:`verification.WATCHED_ORDER`).
+    Harmonics are dropped from the nominal set, smallest first, while the sum of their peaks stays
+    below :data:`VARIANT_TOL` times the largest: a variant's numbers are then exact to that
+    fraction of the response plus the nominal's truncation error, which is its ``truncation_error``.
+    Up to :data:`DENSE_UNKNOWNS` unknowns the inverse is kept (dense); larger sets are solved by
+    GMRES from the nominal amplitudes.
+    """
+
+    def __init__(self, nominal: SteadyState, length: float) -> None:
+        weights = _weights(length)
+        size = np.max(np.abs(nominal.amplitudes * weights), axis=1)
+        by_size = np.argsort(size)
+        dropped = by_size[np.cumsum(size[by_size]) <= VARIANT_TOL * float(np.max(size))]
+        keep = np.ones(len(size), dtype=bool)
+        keep[dropped] = False
+        tolerance = _tolerance(nominal.system)
+        whole = HarmonicSet(nominal.vectors, nominal.omega, tolerance)
+        keep[whole.find(-nominal.omega[keep])] = True  # q is real: Ω and -Ω together
+        keep[nominal.omega == 0.0] = True
+        self.system = nominal.system
+        self.harmonics = whole.subset(keep)
+        self.amplitudes = nominal.amplitudes[keep]
+        self.order = nominal.order
+        self.truncation_error = nominal.truncation_error + 2.0 * float(np.sum(size[~keep]))
+        op = _Operator(nominal.system, _couplings(nominal.system, tolerance), self.harmonics)
+        self.links = op.links
+        self.dense = 6 * len(self.harmonics) <= DENSE_UNKNOWNS
+        self.inverse = np.linalg.inv(op.dense()) if self.dense else None
+
+
+def steady_state_near(basis: VariantBasis, platform, rotors, system: PeriodicSystem | None = None) -> SteadyState:
+    """Steady state of a system close to the nominal one of ``basis`` (a tolerance variant: the same
+    rotors and speeds, stiffnesses or positions changed by a per cent), on the basis' frequencies,
+    started from the nominal amplitudes (refined with the nominal operator's inverse, or by GMRES).
+    ``system``: the variant's equations when already assembled.
+
+    A change that makes a dropped harmonic resonant needs a natural frequency to cross a
+    combination of the speeds of high order; the sensitivity table watches the low orders
+    (:data:`~foundation_calc.solvers.platform.verification.WATCHED_ORDER`) separately.
 
     Raises
     ------
@@ -382,19 +424,32 @@ def steady_state_near(nominal: SteadyState, platform, rotors, system: PeriodicSy
         as :func:`steady_state`.
     """
     system = system if system is not None else periodic_system(platform, rotors)
+    if not (np.array_equal(system.speeds, basis.system.speeds) and np.array_equal(system.keys, basis.system.keys)):
+        raise ValueError("steady_state_near needs the nominal's rotors and speeds")
     length = float(np.hypot(platform.A, platform.B))
     tolerance = _tolerance(system)
-    couplings = _couplings(system, tolerance)
-    if not (np.array_equal(system.speeds, nominal.system.speeds) and np.array_equal(system.keys, nominal.system.keys)):
-        raise ValueError("steady_state_near needs the nominal's rotors and speeds")
-    static = _static(system)
-    harmonics = HarmonicSet(nominal.vectors, nominal.omega, tolerance)
-    op = _Operator(system, couplings, harmonics, nominal.links or None)
-    _require_regular(system, harmonics, op.diagonal, length, lambda: natural_frequencies(platform, rotors, system).frequencies)
-    Q = _solve(op, _right_side(harmonics, _loads(system, static, tolerance)), nominal.amplitudes)
-    return SteadyState(
-        static, nominal.vectors, nominal.omega, Q, system, nominal.order, nominal.truncation_error, op.links
-    )
+    op = _Operator(system, _couplings(system, tolerance), basis.harmonics, basis.links)
+    _require_regular(system, basis.harmonics, op.diagonal, length, lambda: natural_frequencies(platform, rotors, system).frequencies)
+    rhs = _right_side(basis.harmonics, _loads(system, _static(system), tolerance))
+    Q = _refined(op, rhs, basis) if basis.dense else _solve(op, rhs, basis.amplitudes, VARIANT_GMRES_TOL)
+    vectors, omega = basis.harmonics.vectors, basis.harmonics.omega
+    return SteadyState(_static(system), vectors, omega, Q, system, basis.order, basis.truncation_error)
+
+
+def _refined(op: _Operator, rhs: np.ndarray, basis: VariantBasis) -> np.ndarray:
+    """Iterative refinement Q ← Q + A₀⁻¹ (F - A Q) from the nominal amplitudes, with the nominal
+    inverse A₀⁻¹; a direct solve when it does not contract (a variant far from the nominal)."""
+    Q, last, goal = basis.amplitudes, np.inf, VARIANT_GMRES_TOL * float(np.linalg.norm(rhs))
+    for _ in range(REFINEMENT_STEPS):
+        residual = rhs - op.apply(Q)
+        size = float(np.linalg.norm(residual))
+        if size <= goal:
+            return Q
+        if size > REFINEMENT_CONTRACTION * last:
+            break
+        last = size
+        Q = Q + (basis.inverse @ residual.ravel()).reshape(Q.shape)
+    return _solve(op, rhs, Q)
 
 
 def _tolerance(system: PeriodicSystem) -> float:

@@ -27,7 +27,7 @@ from foundation_calc.solvers.platform.dynamics import (
     skew,
     spring_stiffness,
 )
-from foundation_calc.solvers.platform.harmonic_balance import SteadyState, combination_label, steady_state, steady_state_near
+from foundation_calc.solvers.platform.harmonic_balance import SteadyState, VariantBasis, combination_label, steady_state, steady_state_near
 
 #: Tolerances of the sensitivity table: relative for stiffnesses and ζ, absolute [m] for a, b, c.
 STIFFNESS_TOLERANCE = 0.01
@@ -199,12 +199,12 @@ def _measured(state: SteadyState, design: PlatformDesign, model: PlatformModel, 
     return measure(state, platform.r_c, corners, design.u)
 
 
-def _variant(design: PlatformDesign, model: PlatformModel, nominal: Verification, changes: dict):
+def _variant(design: PlatformDesign, model: PlatformModel, basis: VariantBasis, changes: dict):
     """The verification and the natural frequencies of a tolerance variant, solved on the nominal's
     harmonics (:func:`steady_state_near`); a change of stiffness alone keeps the rotors' terms."""
     platform, rotors = build(design, model, **changes)
-    system = nominal.state.system.with_springs(spring_stiffness(platform)) if changes.keys() == {"stiffness"} else None
-    state = steady_state_near(nominal.state, platform, rotors, system)
+    system = basis.system.with_springs(spring_stiffness(platform)) if changes.keys() == {"stiffness"} else None
+    state = steady_state_near(basis, platform, rotors, system)
     return _measured(state, design, model, platform), natural_frequencies(platform, rotors, state.system).frequencies
 
 
@@ -286,7 +286,8 @@ def _crossing(watched, nominal: np.ndarray, variants) -> str:
 
 def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verification, modes: np.ndarray) -> list[SensitivityRow]:
     """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ,
-    computed with the isolators' damping of ``model`` on the harmonics of ``nominal``;
+    computed with the isolators' damping of ``model`` on the harmonics of ``nominal`` that matter
+    (:class:`VariantBasis`);
     ``modes``: the design's natural frequencies [rad/s].
 
     A row whose range makes a natural frequency (undamped, mean system) cross a combination of
@@ -295,6 +296,7 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
     number.
     """
     state = nominal.state
+    basis = VariantBasis(state, float(np.hypot(design.A, design.B)))
     watched = [
         (combination_label(tuple(int(x) for x in n)), float(w))
         for n, w in zip(state.vectors, state.omega)
@@ -305,7 +307,7 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
         numbers, variant_modes, failure = [], [], ""
         for change in changes:
             try:
-                v, frequencies = _variant(design, model, nominal, change)
+                v, frequencies = _variant(design, model, basis, change)
                 variant_modes.append(frequencies)
                 numbers.append((v.rocking_percent, v.static_offset_percent))
             except (PhysicsError, ConvergenceError) as exc:  # e.g. an undamped variant exactly at resonance
