@@ -26,7 +26,8 @@ from foundation_calc.solvers.numerics.trig_series import peak, sample
 
 def make_design(m=1.5e3, omega=45.0, r=0.1, l=1.2, l1=0.9, rho=0.35, a=2.0, c1=2.8e7, drive_on=True, M=1.0e5):
     return CrankDesign(
-        M=M, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4.0e7, c1=c1, omega=omega, r=r, l=l, a=a,
+        M=M, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4.0e7, c1=c1, c_phi=4.0e7, C_x=0.0, C_z=0.0, C_phi=0.0,
+        omega=omega, r=r, l=l, a=a,
         rod=lump_slider(m, l, l1, rho, 0.0), drive_on_foundation=drive_on, g=9.81,
     )
 

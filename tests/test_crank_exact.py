@@ -27,7 +27,8 @@ sp = pytest.importorskip("sympy")
 
 def make_design(drive_on=True, m=1.5e3, omega=31.41592653589793, a=2.0, r=0.3, l=1.2, l1=1.0, rho=0.35, m1=0.0):
     return CrankDesign(
-        M=1.0e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4.0e7, c1=2.8e7, omega=omega, r=r, l=l, a=a,
+        M=1.0e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4.0e7, c1=2.8e7, c_phi=4.0e7,
+        C_x=0.0, C_z=0.0, C_phi=0.0, omega=omega, r=r, l=l, a=a,
         rod=lump_slider(m, l, l1, rho, m1), drive_on_foundation=drive_on, g=9.81,
     )
 

@@ -16,6 +16,7 @@ from pydantic import ValidationInfo, field_validator, model_validator
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
+from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
 #: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
 #: method of the paper is claimed to hold.
@@ -37,10 +38,25 @@ class Foundation(SceneModel):
 
 
 class Soil(SceneModel):
-    """Barkan's elastic half-space coefficients of the soil under the base."""
+    """Barkan's elastic half-space coefficients of the soil under the base, and its damping."""
 
     c_z: float = quantity("c", "N/m³", "coefficient of elastic uniform compression", gt=0)
     c_x: float = quantity("c1", "N/m³", "coefficient of elastic uniform shear", gt=0)
+    c_phi: float | None = quantity(
+        "c_φ", "N/m³", "coefficient of elastic non-uniform compression (rocking); default c_z, the paper's choice",
+        None, gt=0, examples=[8.0e7],
+    )
+    damping: tuple[float, float, float] | None = quantity(
+        "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] of the vertical, horizontal and rocking modes;"
+        " default: undamped", None, examples=[[0.1, 0.1, 0.05]],
+    )
+
+    @field_validator("damping")
+    @classmethod
+    def _ratios_in_range(cls, damping):
+        if damping is not None and not all(0.0 <= xi < 1.0 for xi in damping):
+            raise ValueError(f"each damping ratio must be in [0, 1): got {list(damping)}")
+        return damping
 
 
 class Mechanism(SpeedFields):
@@ -181,9 +197,26 @@ class CrankScene(SceneModel):
             )
         return self
 
+    def _dashpots(self, c_phi: float, rod_mass: float) -> dict[str, float]:
+        """C_x, C_z, C_phi from ``soil.damping`` (:func:`dashpots_from_ratios`), 0 when undamped."""
+        f, s = self.foundation, self.soil
+        if s.damping is None:
+            return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
+        M_tot = f.mass + rod_mass
+        d = dashpots_from_ratios(
+            *s.damping,
+            K_z=s.c_z * f.base_area,
+            K_x=s.c_x * f.base_area,
+            K_phi=c_phi * f.base_second_moment,
+            M_tot=M_tot,
+            I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
+        )
+        return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
+
     def design(self) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod)."""
         f, s, mech = self.foundation, self.soil, self.mechanism
+        c_phi = s.c_z if s.c_phi is None else s.c_phi
         rod = lump_slider(
             m=mech.rod_mass,
             l=mech.rod_length,
@@ -199,6 +232,8 @@ class CrankScene(SceneModel):
             I1=f.base_second_moment,
             c=s.c_z,
             c1=s.c_x,
+            c_phi=c_phi,
+            **self._dashpots(c_phi, rod.m),
             omega=mech.omega_rad_s,
             r=mech.crank_radius,
             l=mech.rod_length,

@@ -139,7 +139,8 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
         when the foundation is unstable in rocking.
 
     >>> from foundation_calc.solvers.crank.mechanism import lump_slider
-    >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7, omega=31.4159,
+    >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7, c_phi=4e7,
+    ...                 C_x=0.0, C_z=0.0, C_phi=0.0, omega=31.4159,
     ...                 r=0.3, l=1.2, a=2.0, rod=lump_slider(1.5e3, 1.2, 1.0, 0.35, 0.0),
     ...                 drive_on_foundation=True, g=9.81)
     >>> res = averaged_response(d)

@@ -24,7 +24,7 @@ def design_first_approximation(design: CrankDesign) -> FirstApproximation:
     ``g* = g`` when the motor's reaction acts on the foundation, 0 otherwise (the paper's (3.7)).
 
     >>> from foundation_calc.solvers.crank.mechanism import lump_slider
-    >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7,
+    >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7, c_phi=4e7, C_x=0.0, C_z=0.0, C_phi=0.0,
     ...                 omega=np.array([31.41592653589793, 40.0]), r=0.3, l=1.2, a=2.0,
     ...                 rod=lump_slider(1.5e3, 1.2, 1.0, 0.35, 0.0), drive_on_foundation=True, g=9.81)
     >>> design_first_approximation(d).y1
@@ -48,13 +48,13 @@ def first_approximation_motion(design: CrankDesign) -> tuple[PeriodicMotion, np.
 
 
 def varied(design: CrankDesign, *, omega=None, soil_factor=None) -> CrankDesign:
-    """``design`` with its speed replaced by ``omega`` [rad/s] and/or both soil coefficients c, c1
-    multiplied by ``soil_factor`` [-] (either may be an array: one design per element)."""
+    """``design`` with its speed replaced by ``omega`` [rad/s] and/or the soil coefficients c, c1,
+    c_phi multiplied by ``soil_factor`` [-] (either may be an array: one design per element)."""
     if omega is not None:
         design = replace(design, omega=np.asarray(omega, dtype=float))
     if soil_factor is not None:
         factor = np.asarray(soil_factor, dtype=float)
-        design = replace(design, c=design.c * factor, c1=design.c1 * factor)
+        design = replace(design, c=design.c * factor, c1=design.c1 * factor, c_phi=design.c_phi * factor)
     return design
 
 

@@ -8,9 +8,11 @@ The rod's centre of mass C1 sits at body position p(φ), φ = ωt::
 
     p = (-(l''/l) r sin φ,  -a + r cos φ + l' cos ψ),   sin ψ = λ sin φ
 
-Soil (Barkan, as in (3.2)-(3.4), linear, weight term destabilising)::
+Soil (Barkan, as in (3.2)-(3.4), linear, weight term destabilising; the paper's c I1 generalised
+to c_φ I1), with base dashpots C_x, C_z, C_φ in parallel with the springs::
 
-    Q_x = -c1 S (x - hθ),  Q_y = -c S y,  Q_θ = c1 h S x - (c1 h² S + c I1 - P h) θ,  P = M_tot g
+    Q_x = -c1 S (x - hθ) - C_x (x' - hθ'),   Q_y = -c S y - C_z y',   P = M_tot g
+    Q_θ = -h Q_x - (c_φ I1 - P h) θ - C_φ θ'
 
 Motor on the foundation (the crank's rheonomic constraint is ideal)::
 
@@ -118,9 +120,10 @@ def residual(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
     ax, ay = ddq[0], ddq[1] - d.g
     ext = np.array([ct * ax + st * ay, -st * ax + ct * ay])
     P = d.M_tot * d.g
-    soil_x = -d.c1 * d.S * (x - d.h * th)
-    soil_y = -d.c * d.S * y
-    soil_th = d.c1 * d.h * d.S * x - (d.c1 * d.h * d.h * d.S + d.c * d.I1 - P * d.h) * th
+    dx, dy = dq[0], dq[1]
+    soil_x = -d.c1 * d.S * (x - d.h * th) - d.C_x * (dx - d.h * dth)
+    soil_y = -d.c * d.S * y - d.C_z * dy
+    soil_th = -d.h * soil_x - (d.c_phi * d.I1 - P * d.h) * th - d.C_phi * dth
     res_x = d.M_tot * ddq[0] + m * (ct * rel[0] - st * rel[1]) - soil_x
     res_y = d.M_tot * ddq[1] + m * (st * rel[0] + ct * rel[1]) - soil_y
     res_th = (

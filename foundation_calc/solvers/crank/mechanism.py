@@ -27,8 +27,14 @@ class CrankDesign:
     h : height of C above the base [m]
     S : base area [m²]
     I1 : second moment of the base area about its centroidal axis [m⁴]
-    c : coefficient of elastic uniform compression [N/m³]
-    c1 : coefficient of elastic uniform shear [N/m³]
+    c : coefficient of elastic uniform compression [N/m³]; vertical spring K_z = c S
+    c1 : coefficient of elastic uniform shear [N/m³]; horizontal spring K_x = c1 S at the base
+    c_phi : coefficient of elastic non-uniform compression [N/m³]; rocking spring K_φ = c_phi I1
+        (the paper takes c_phi = c)
+    C_x : horizontal base dashpot [N s/m], acting on x' - h θ' like K_x on x - h θ
+    C_z : vertical base dashpot [N s/m]
+    C_phi : rocking base dashpot [N m s/rad] about the base's centroidal axis (0, 0, 0: undamped,
+        the paper's model)
     omega : crank speed relative to the foundation [rad/s]
     r : crank radius [m]
     l : rod length [m]
@@ -45,6 +51,10 @@ class CrankDesign:
     I1: float
     c: float
     c1: float
+    c_phi: float
+    C_x: float
+    C_z: float
+    C_phi: float
     omega: float
     r: float
     l: float
