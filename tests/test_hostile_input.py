@@ -273,7 +273,7 @@ MALFORMED = [
     ("tiny_shear", ("soil", "c_x"), 5e-324, ["soil.c_x", "magnitude", "1e-15"]),
     ("huge_integer", ("foundation", "mass"), 10**30, ["foundation.mass", "[kg]"]),
     ("missing_mass", ("foundation", "mass"), None, ["foundation.mass", "missing", "allowed > 0", "[kg]"]),
-    ("missing_soil", ("soil",), None, ["soil", "missing (a table with c_z, c_x)"]),
+    ("missing_soil", ("soil",), None, ["soil", "missing (a table with c_z, c_x", "method"]),
     ("soil_not_table", ("soil",), 5, ["soil", "valid dictionary"]),
     ("typo_key", ("foundation", "masse"), 1.0, ["foundation.masse", "unknown key"]),
     ("unknown_table", ("damping",), {"ratio": 0.05}, ["damping", "unknown key"]),

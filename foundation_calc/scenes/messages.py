@@ -69,7 +69,8 @@ def _missing_table(info: FieldInfo | None) -> str:
     if not (isinstance(nested, type) and issubclass(nested, BaseModel)):
         return ""
     required = [name for name, field in nested.model_fields.items() if field.is_required()]
-    return f"a table with {', '.join(required)}" if required else "a table"
+    keys = getattr(nested, "required_keys_text", None) or ", ".join(required)
+    return f"a table with {keys}" if keys else "a table"
 
 
 def allowed_range(info: FieldInfo) -> str:

@@ -1,0 +1,169 @@
+"""The ``[soil]`` table of a crank-foundation scene: one method and the keys that method takes.
+
+``method = "coefficients"`` (the default when ``c_z`` is given) takes Barkan's coefficients as the
+paper does; ``"lysmer"`` and ``"gazetas"`` take the soil's shear modulus (or shear wave
+velocity), density and Poisson's ratio; ``"sp26"`` takes the static deformation modulus and the
+soil class. A key of another method, or a misspelt one, is an error that lists the method's keys.
+"""
+
+from __future__ import annotations
+
+import difflib
+from typing import ClassVar, Literal
+
+from pydantic import field_validator, model_validator
+
+from foundation_calc.scenes.common import SceneModel, quantity
+from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS
+
+SoilMethod = Literal["coefficients", "lysmer", "gazetas", "sp26"]
+SOIL_METHODS: tuple[str, ...] = ("coefficients", "lysmer", "gazetas", "sp26")
+
+_HALF_SPACE_KEYS = ("shear_modulus", "shear_wave_velocity", "density", "poisson", "material_damping")
+
+#: The keys each method takes (besides ``method``), in the order the messages list them.
+METHOD_KEYS: dict[str, tuple[str, ...]] = {
+    "coefficients": ("c_z", "c_x", "c_phi", "damping"),
+    "lysmer": _HALF_SPACE_KEYS,
+    "gazetas": _HALF_SPACE_KEYS,
+    "sp26": ("deformation_modulus", "soil_class"),
+}
+
+#: The keys each method cannot do without (lysmer and gazetas need one of G, V_s besides).
+METHOD_REQUIRED: dict[str, tuple[str, ...]] = {
+    "coefficients": ("c_z", "c_x"),
+    "lysmer": ("density", "poisson"),
+    "gazetas": ("density", "poisson"),
+    "sp26": ("deformation_modulus", "soil_class"),
+}
+
+
+def _method_keys(method: str) -> str:
+    return ", ".join(METHOD_KEYS[method])
+
+
+class Soil(SceneModel):
+    """The soil under the base: Barkan's coefficients or soil data, and the method that uses them."""
+
+    #: What a missing ``[soil]`` table needs, for the message (no single key is required).
+    required_keys_text: ClassVar[str] = (
+        'c_z, c_x (Barkan\'s coefficients), or method = "lysmer", "gazetas" or "sp26" and its keys'
+    )
+
+    method: SoilMethod | None = quantity(
+        "-", "-", 'how the springs are found: "coefficients" (Barkan\'s c_z, c_x given), "lysmer"'
+        ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "sp26" (SP 26.13330 from the static'
+        ' modulus); default "coefficients" when c_z is given', None, examples=["lysmer"],
+    )
+    c_z: float | None = quantity("c", "N/m³", "coefficient of elastic uniform compression", None, gt=0)
+    c_x: float | None = quantity("c1", "N/m³", "coefficient of elastic uniform shear", None, gt=0)
+    c_phi: float | None = quantity(
+        "c_φ", "N/m³", "coefficient of elastic non-uniform compression (rocking); default c_z, the paper's choice",
+        None, gt=0, examples=[8.0e7],
+    )
+    damping: tuple[float, float, float] | None = quantity(
+        "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] of the vertical, horizontal and rocking modes;"
+        " default: undamped", None, examples=[[0.1, 0.1, 0.05]],
+    )
+    shear_modulus: float | None = quantity(
+        "G", "Pa", "small-strain shear modulus of the soil (or give shear_wave_velocity)", None, gt=0,
+        examples=[7.2e7],
+    )
+    shear_wave_velocity: float | None = quantity(
+        "V_s", "m/s", "shear wave velocity of the soil, G = ρ V_s² (or give shear_modulus)", None, gt=0,
+        examples=[200.0],
+    )
+    density: float | None = quantity("ρ_s", "kg/m³", "mass density of the soil", None, gt=0, examples=[1800.0])
+    poisson: float | None = quantity("ν", "-", "Poisson's ratio of the soil", None, ge=0, lt=0.5, examples=[0.33])
+    material_damping: float = quantity(
+        "D_m", "-", "material (hysteretic) damping ratio of the soil, added to each radiation damping"
+        " ratio; typically 0.02-0.05", 0.0, ge=0, le=0.3,
+    )
+    deformation_modulus: float | None = quantity(
+        "E", "Pa", "static deformation modulus of the soil from the site investigation (not 2G(1+ν) from V_s)",
+        None, gt=0, examples=[3.0e7],
+    )
+    soil_class: Literal["sand", "sandy_loam", "loam", "clay", "coarse"] | None = quantity(
+        "-", "-", "soil class of SP 26.13330, sets b0 [1/m]: "
+        + ", ".join(f"{k} {v:g}" for k, v in B0_BY_CLASS.items()), None, examples=["sand"],
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _keys_of_the_method(cls, data):
+        if not isinstance(data, dict):
+            return data
+        method = data.get("method")
+        if method is None:
+            if "c_z" not in data:
+                raise ValueError(
+                    'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
+                    " coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
+                )
+            method = "coefficients"
+        if method not in METHOD_KEYS:
+            return data  # the field's own validation names the allowed methods
+        allowed = set(METHOD_KEYS[method]) | {"method"}
+        for key in data:
+            if key in allowed:
+                continue
+            owners = [m for m, keys in METHOD_KEYS.items() if key in keys]
+            if owners:
+                raise ValueError(
+                    f"soil.{key} is a key of method {' and '.join(map(repr, owners))}, not of"
+                    f" {method!r}; the keys of {method!r} are {_method_keys(method)}"
+                )
+            close = difflib.get_close_matches(str(key), sorted(allowed), n=1, cutoff=0.6)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise ValueError(
+                f"soil.{key!s:.60} is not a key of method {method!r}{hint}; its keys are {_method_keys(method)}"
+            )
+        return data
+
+    @field_validator("damping")
+    @classmethod
+    def _ratios_in_range(cls, damping):
+        if damping is not None and not all(0.0 <= xi < 1.0 for xi in damping):
+            raise ValueError(f"each damping ratio must be in [0, 1): got {list(damping)}")
+        return damping
+
+    @model_validator(mode="after")
+    def _method_has_its_data(self):
+        method = self.method_used
+        missing = [k for k in METHOD_REQUIRED[method] if getattr(self, k) is None]
+        if missing:
+            raise ValueError(
+                f"method {method!r} needs {', '.join('soil.' + k for k in missing)}"
+                f" (its keys: {_method_keys(method)})"
+            )
+        if method in ("lysmer", "gazetas") and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
+            raise ValueError(
+                f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and"
+                " soil.shear_wave_velocity [m/s]"
+            )
+        return self
+
+    @property
+    def method_used(self) -> str:
+        """The method in force: the one given, else ``"coefficients"``."""
+        return self.method or "coefficients"
+
+    @property
+    def G(self) -> float:
+        """Shear modulus [Pa], given or ρ V_s² (half-space methods only)."""
+        if self.shear_modulus is not None:
+            return self.shear_modulus
+        return self.density * self.shear_wave_velocity**2
+
+    @property
+    def V_s(self) -> float:
+        """Shear wave velocity [m/s], given or sqrt(G/ρ) (half-space methods only)."""
+        if self.shear_wave_velocity is not None:
+            return self.shear_wave_velocity
+        return (self.shear_modulus / self.density) ** 0.5
+
+    def methods_allowed(self) -> tuple[str, ...]:
+        """Every method the data allow: the half-space data feed both Lysmer and Gazetas."""
+        if self.method_used in ("lysmer", "gazetas"):
+            return ("lysmer", "gazetas")
+        return (self.method_used,)
