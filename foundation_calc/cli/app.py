@@ -13,6 +13,7 @@ from foundation_calc.cli.platform import platform
 from foundation_calc.cli.report import report
 from foundation_calc.cli.resonance import resonance
 from foundation_calc.cli.schema import schema
+from foundation_calc.cli.soil import soil
 from foundation_calc.cli.sweep import sweep
 
 EXIT_CODES_HELP = (
@@ -32,6 +33,7 @@ app = typer.Typer(
 )
 app.command(epilog=EXIT_CODES_HELP)(resonance)
 app.command(epilog=EXIT_CODES_HELP)(amplitudes)
+app.command(epilog=EXIT_CODES_HELP)(soil)
 app.command(epilog=EXIT_CODES_HELP)(check)
 app.command(epilog=EXIT_CODES_HELP)(init)
 app.command(epilog=EXIT_CODES_HELP)(schema)

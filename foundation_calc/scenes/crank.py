@@ -111,8 +111,9 @@ class Foundation(SceneModel):
     base_width: float | None = quantity(
         "B", "m", "base width, normal to the plane of motion", None, gt=0, examples=[5.0]
     )
-    embedment: float = quantity(
-        "D", "m", "depth of the base below the ground surface, sidewalls in contact (Gazetas' method)", 0.0, ge=0
+    embedment: float | None = quantity(
+        "D", "m", "depth of the base below the ground surface, sidewalls in contact (Gazetas' method);"
+        " default 0, a surface footing", None, ge=0, examples=[1.0],
     )
     block: Block | None = quantity("-", "-", "the block whose mass properties are computed", None)
     machine: Machine | None = quantity("-", "-", "the machine on the block (needs [foundation.block])", None)
@@ -302,7 +303,9 @@ class CrankScene(SceneModel):
         """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s).
 
         A length of the machine or a point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
-        × the foundation's size sqrt(S) away, or ``omega`` above what crank machines run at.
+        × the foundation's size sqrt(S) away, ``omega`` above what crank machines run at, or a
+        soil modulus that looks static where a dynamic one is meant or the reverse
+        (:meth:`Soil.modulus_warnings`).
         """
         size = self.foundation.base_area**0.5
         mech = self.mechanism
@@ -320,6 +323,7 @@ class CrankScene(SceneModel):
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
+        found += self.soil.modulus_warnings()
         if mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
             found.append(
                 f"mechanism.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
@@ -363,8 +367,8 @@ class CrankScene(SceneModel):
         L, B = f.dimensions
         I_0 = f.moment_of_inertia + M_tot * f.cog_height**2
         solver = lysmer_springs if method == "lysmer" else gazetas_springs
-        extra = () if method == "lysmer" else (f.embedment,)
-        return solver(s.G, s.density, s.poisson, L, B, *extra, M_tot, I_0, s.material_damping)
+        extra = () if method == "lysmer" else (f.embedment or 0.0,)
+        return solver(s.G, s.density, s.poisson, L, B, *extra, M_tot, I_0, s.material_damping or 0.0)
 
     def design(self) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).

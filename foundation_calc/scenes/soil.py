@@ -38,6 +38,17 @@ METHOD_REQUIRED: dict[str, tuple[str, ...]] = {
 }
 
 
+#: Static deformation modulus [Pa] above which an ``sp26`` scene probably holds a dynamic modulus:
+#: site reports give static moduli of about 5-60 MPa for sands and clays, while E = 2 G (1 + ν)
+#: from a shear wave velocity of 200 m/s is about 190 MPa.
+STATIC_MODULUS_PLAUSIBLE = 1.0e8
+
+#: Shear wave velocity [m/s] below which a half-space scene probably holds a static modulus:
+#: soils that carry machine foundations have V_s above about 100 m/s; G = E/(2(1 + ν)) from a
+#: static E of 20 MPa gives 65 m/s.
+SHEAR_WAVE_VELOCITY_PLAUSIBLE = 100.0
+
+
 def _method_keys(method: str) -> str:
     return ", ".join(METHOD_KEYS[method])
 
@@ -75,9 +86,9 @@ class Soil(SceneModel):
     )
     density: float | None = quantity("ρ_s", "kg/m³", "mass density of the soil", None, gt=0, examples=[1800.0])
     poisson: float | None = quantity("ν", "-", "Poisson's ratio of the soil", None, ge=0, lt=0.5, examples=[0.33])
-    material_damping: float = quantity(
+    material_damping: float | None = quantity(
         "D_m", "-", "material (hysteretic) damping ratio of the soil, added to each radiation damping"
-        " ratio; typically 0.02-0.05", 0.0, ge=0, le=0.3,
+        " ratio; typically 0.02-0.05; default 0", None, ge=0, le=0.3, examples=[0.03],
     )
     deformation_modulus: float | None = quantity(
         "E", "Pa", "static deformation modulus of the soil from the site investigation (not 2G(1+ν) from V_s)",
@@ -161,6 +172,26 @@ class Soil(SceneModel):
         if self.shear_wave_velocity is not None:
             return self.shear_wave_velocity
         return (self.shear_modulus / self.density) ** 0.5
+
+    def modulus_warnings(self) -> list[str]:
+        """The static-versus-dynamic modulus trap, when the numbers look like it (never an error)."""
+        method = self.method_used
+        if method == "sp26" and self.deformation_modulus > STATIC_MODULUS_PLAUSIBLE:
+            return [
+                f"soil.deformation_modulus = {self.deformation_modulus / 1e6:.4g} MPa is above the static"
+                f" deformation moduli of site reports (about 5-60 MPa; flagged above"
+                f" {STATIC_MODULUS_PLAUSIBLE / 1e6:g} MPa); if it is E = 2G(1 + ν) from a shear wave"
+                " velocity, it is a dynamic modulus and SP 26's springs come out several times too stiff"
+                " (4.7 × Lysmer's for V_s = 200 m/s): give the static E, or use method \"lysmer\" with the V_s"
+            ]
+        if method in ("lysmer", "gazetas") and self.V_s < SHEAR_WAVE_VELOCITY_PLAUSIBLE:
+            return [
+                f"the soil's shear wave velocity V_s = {self.V_s:.4g} m/s (G = {self.G / 1e6:.4g} MPa) is below"
+                f" {SHEAR_WAVE_VELOCITY_PLAUSIBLE:g} m/s, slow for soil under a machine foundation; if G was"
+                " taken from a static deformation modulus as E/(2(1 + ν)), the springs come out several"
+                " times too soft: give the small-strain G or V_s of the site investigation"
+            ]
+        return []
 
     def methods_allowed(self) -> tuple[str, ...]:
         """Every method the data allow: the half-space data feed both Lysmer and Gazetas."""

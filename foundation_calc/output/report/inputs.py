@@ -36,7 +36,7 @@ def _value(value) -> str:
 def _rows(group: str, model: BaseModel, units: DisplayUnits):
     for key, field in type(model).model_fields.items():
         value = getattr(model, key)
-        if value is None:
+        if value is None or isinstance(value, BaseModel):  # a nested table has its own block
             continue
         match = _DESCRIPTION.match(field.description or "")
         symbol, unit, meaning = match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
@@ -53,9 +53,32 @@ def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
     for name in type(scene).model_fields:
         value = getattr(scene, name)
         groups = [(f"[{name}]", value)] if isinstance(value, BaseModel) else []
+        groups += [
+            (f"[{name}.{key}]", getattr(value, key))
+            for key in (type(value).model_fields if isinstance(value, BaseModel) else ())
+            if isinstance(getattr(value, key), BaseModel)
+        ]
         if isinstance(value, (list, tuple)):
             groups = [(f"[[{name}]] {i + 1}", item) for i, item in enumerate(value) if isinstance(item, BaseModel)]
         for title, model in groups:
             rows = list(_rows(title.strip("[]").split("]")[0], model, units))
             blocks.append(table(title, header, rows, (False, False, True, False, False)))
+        if name == "soil" and hasattr(scene, "soil_springs"):
+            blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))
+
+
+def _springs_table(scene) -> object:
+    """The base springs and damping ratios the scene's soil method gives (what the solvers use)."""
+    springs = scene.soil_springs()
+    rows = [
+        ("K_z", "vertical spring", "N/m"), ("K_x", "horizontal spring at the base", "N/m"),
+        ("K_phi", "rocking spring about the base axis", "N m/rad"), ("xi_z", "vertical damping ratio", "-"),
+        ("xi_x", "horizontal damping ratio", "-"), ("xi_phi", "rocking damping ratio", "-"),
+    ]
+    return table(
+        f"[soil] springs by method {scene.soil.method_used!r}",
+        ("quantity", "value", "unit", "meaning"),
+        [(key, _value(float(getattr(springs, key))), unit, meaning) for key, meaning, unit in rows],
+        (False, True, False, False),
+    )

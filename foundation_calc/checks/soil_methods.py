@@ -1,0 +1,127 @@
+"""``fcalc soil``: the springs, damping and frequencies of every soil method the scene's data allow.
+
+Each method ends in K_z, K_x, K_φ and damping ratios (:mod:`foundation_calc.solvers.soil`); here
+they become the equivalent coefficients c_z = K_z/S, c_x = K_x/S, c_φ = K_φ/I1, the base
+dashpots, the uncoupled frequencies of the block and the coupled k0, p1, p2 of the paper's
+zero-order operator (4.5)-(4.7), and methods that disagree by more than
+:data:`DISAGREEMENT_FACTOR` are named.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from foundation_calc.solvers.constants import GRAVITY
+from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, zero_order_frequencies
+from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
+from foundation_calc.solvers.soil.springs import uncoupled_frequencies
+
+#: Two methods whose springs differ by more than this factor are flagged [-]: the spread of
+#: the published methods for one site is about ±30 %, a factor of 2 means a wrong input or a
+#: method outside its range.
+DISAGREEMENT_FACTOR = 2.0
+
+#: The springs compared between methods, with their names in messages.
+SPRINGS = {"K_z": "vertical", "K_x": "horizontal", "K_phi": "rocking"}
+
+
+@dataclass(frozen=True)
+class MethodResult:
+    """One soil method applied to the scene (SI units; frequencies in rad/s).
+
+    ``p1``, ``p2``, ``omega_phi`` are nan when the method's rocking spring does not exceed the
+    weight's overturning moment (``rocking_stability_margin`` <= 0).
+    """
+
+    method: str
+    K_z: float
+    K_x: float
+    K_phi: float
+    c_z: float
+    c_x: float
+    c_phi: float
+    xi_z: float
+    xi_x: float
+    xi_phi: float
+    C_z: float
+    C_x: float
+    C_phi: float
+    omega_z: float
+    omega_x: float
+    omega_phi: float
+    k0: float
+    p1: float
+    p2: float
+    rocking_stability_margin: float
+
+
+@dataclass(frozen=True)
+class SoilComparison:
+    """Every method the scene's data allow, the one the scene uses, and what to look at."""
+
+    used: str
+    results: tuple[MethodResult, ...]
+    #: the static-versus-dynamic modulus trap (also among the scene's plausibility warnings)
+    modulus_warnings: tuple[str, ...]
+    #: methods that disagree by more than DISAGREEMENT_FACTOR, methods that tip the block over
+    findings: tuple[str, ...]
+
+
+def _method_result(scene, method: str) -> MethodResult:
+    f = scene.foundation
+    s = scene.soil_springs(method)
+    M_tot, g, h = scene.total_mass, GRAVITY, f.cog_height
+    I_0 = f.moment_of_inertia + M_tot * h**2
+    K_z, K_x, K_phi = float(s.K_z), float(s.K_x), float(s.K_phi)
+    c, c1, c_phi = K_z / f.base_area, K_x / f.base_area, K_phi / f.base_second_moment
+    d = dashpots_from_ratios(s.xi_z, s.xi_x, s.xi_phi, K_z, K_x, K_phi, M_tot, I_0)
+    u = uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, g)
+    margin = rocking_stability_margin(c_phi, f.base_second_moment, M_tot * g, h)
+    p1 = p2 = math.nan
+    if margin > 0.0:
+        # The rocking spring enters (4.7) only through the product c I1 of the rocking row, so
+        # the method's c_φ takes c's place there; k0 = sqrt(K_z/M_tot) keeps the vertical c.
+        coupled = zero_order_frequencies(M_tot, f.moment_of_inertia, h, f.base_area, f.base_second_moment,
+                                         c_phi, c1, g)
+        p1, p2 = float(coupled.p1), float(coupled.p2)
+    return MethodResult(
+        method=method, K_z=K_z, K_x=K_x, K_phi=K_phi, c_z=c, c_x=c1, c_phi=c_phi,
+        xi_z=float(s.xi_z), xi_x=float(s.xi_x), xi_phi=float(s.xi_phi),
+        C_z=float(d.C_z), C_x=float(d.C_x), C_phi=float(d.C_phi),
+        omega_z=float(u.omega_z), omega_x=float(u.omega_x), omega_phi=float(u.omega_phi),
+        k0=math.sqrt(K_z / M_tot), p1=p1, p2=p2, rocking_stability_margin=float(margin),
+    )
+
+
+def _disagreements(results: tuple[MethodResult, ...]) -> list[str]:
+    found = []
+    for i, a in enumerate(results):
+        for b in results[i + 1:]:
+            for key, name in SPRINGS.items():
+                low, high = sorted((getattr(a, key), getattr(b, key)))
+                if high > DISAGREEMENT_FACTOR * low:
+                    found.append(
+                        f"the {name} springs {key} of {a.method!r} and {b.method!r} differ by a factor of"
+                        f" {high / low:.3g} (more than {DISAGREEMENT_FACTOR:g}): check the soil data and"
+                        " each method's range before choosing"
+                    )
+    return found
+
+
+def compare_soil_methods(scene) -> SoilComparison:
+    """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`)."""
+    results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
+    findings = _disagreements(results)
+    findings += [
+        f"method {r.method!r}: the rocking spring K_phi = {r.K_phi:.4g} N m/rad does not exceed the weight's"
+        f" overturning moment M_tot g h (margin {r.rocking_stability_margin:.3g}): the block tips over"
+        for r in results
+        if r.rocking_stability_margin <= 0.0
+    ]
+    return SoilComparison(
+        used=scene.soil.method_used,
+        results=results,
+        modulus_warnings=tuple(scene.soil.modulus_warnings()),
+        findings=tuple(findings),
+    )
