@@ -85,7 +85,9 @@ class Soil(SceneModel):
         examples=[200.0],
     )
     density: float | None = quantity("ρ_s", "kg/m³", "mass density of the soil", None, gt=0, examples=[1800.0])
-    poisson: float | None = quantity("ν", "-", "Poisson's ratio of the soil", None, ge=0, lt=0.5, examples=[0.33])
+    poisson: float | None = quantity(
+        "ν", "-", "Poisson's ratio of the soil (0.5: saturated clay, undrained)", None, ge=0, le=0.5, examples=[0.33]
+    )
     material_damping: float | None = quantity(
         "D_m", "-", "material (hysteretic) damping ratio of the soil, added to each radiation damping"
         " ratio; typically 0.02-0.05; default 0", None, ge=0, le=0.3, examples=[0.03],

@@ -1,0 +1,184 @@
+"""Scene keys of issue 11: the base from its length and width, mass properties from the block and
+the machine, the [soil] method and its keys; and the CLI command ``fcalc soil``."""
+
+from __future__ import annotations
+
+import copy
+import json
+
+import pytest
+import tomli_w
+
+from foundation_calc.cli.app import app
+from foundation_calc.errors import SceneError
+from foundation_calc.scenes import parse_scene, read_toml
+from tests.conftest import CONFIGS
+from tests.test_soil_methods import DAS_SCENE
+
+LYSMER = CONFIGS / "compressor_medium_sand_lysmer.toml"
+SP26 = CONFIGS / "compressor_medium_sand_sp26.toml"
+
+
+def _scene(**changes) -> dict:
+    """DAS_SCENE with tables replaced or (value None) removed."""
+    scene = copy.deepcopy(DAS_SCENE)
+    for table, value in changes.items():
+        if value is None:
+            scene.pop(table, None)
+        else:
+            scene[table] = value
+    return scene
+
+
+def _problems(document: dict) -> str:
+    with pytest.raises(SceneError) as info:
+        parse_scene(document)
+    return str(info.value)
+
+
+def _foundation(**keys) -> dict:
+    base = {"mass": 3.48e4, "moment_of_inertia": 5.0e4, "cog_height": 1.0}
+    return {**base, **keys}
+
+
+def test_base_area_and_second_moment_from_length_and_width():
+    f = parse_scene(_scene(foundation=_foundation(base_length=4.0, base_width=2.0))).foundation
+    assert (f.base_area, f.base_second_moment) == (8.0, 2.0 * 4.0**3 / 12.0)
+    again = parse_scene(_scene(foundation=_foundation(base_length=4.0, base_width=2.0, base_area=8.0,
+                                                     base_second_moment=10.67))).foundation
+    assert again.base_second_moment == 10.67  # within 0.5 %: the given value stands
+
+
+def test_base_from_area_and_second_moment_gives_its_rectangle():
+    f = parse_scene(_scene(foundation=_foundation(base_area=8.0, base_second_moment=2.0 * 4.0**3 / 12.0))).foundation
+    assert f.dimensions == pytest.approx((4.0, 2.0), rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    ("keys", "fragments"),
+    [
+        ({"base_length": 4.0, "base_width": 2.0, "base_area": 9.0}, ["foundation.base_area = 9 m²", "8 m²", "12.50%", "0.5%"]),
+        ({"base_length": 4.0, "base_width": 2.0, "base_second_moment": 2.667},
+         ["foundation.base_second_moment", "10.6667 m⁴", "0.5%"]),
+        ({"base_length": 4.0}, ["give both foundation.base_length and foundation.base_width"]),
+        ({"base_area": 8.0}, ["foundation.base_second_moment is missing", "[m⁴]", "base_length"]),
+    ],
+)
+def test_base_disagreements_and_gaps_name_the_field(keys, fragments):
+    message = _problems(_scene(foundation=_foundation(**keys)))
+    for fragment in fragments:
+        assert fragment in message, message
+
+
+def test_mass_properties_from_block_and_machine():
+    f = parse_scene(DAS_SCENE).foundation
+    assert (f.mass, f.base_area) == (34800.0, 8.0)
+    assert f.cog_height == pytest.approx((28800.0 * 0.75 + 6000.0 * 2.0) / 34800.0, rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    ("foundation", "fragments"),
+    [
+        ({**DAS_SCENE["foundation"], "mass": 30000.0}, ["foundation.mass = 30000 kg", "34800 kg", "0.5%"]),
+        ({**DAS_SCENE["foundation"], "base_length": 5.0, "base_width": 2.0}, ["foundation.base_length", "footprint"]),
+        ({"machine": DAS_SCENE["foundation"]["machine"], "base_length": 4.0, "base_width": 2.0},
+         ["foundation.machine needs [foundation.block]"]),
+        ({"base_length": 4.0, "base_width": 2.0}, ["foundation.mass is missing", "[kg]", "[foundation.block]"]),
+    ],
+)
+def test_mass_property_errors(foundation, fragments):
+    message = _problems(_scene(foundation=foundation))
+    for fragment in fragments:
+        assert fragment in message, message
+
+
+@pytest.mark.parametrize(
+    ("soil", "fragments"),
+    [
+        ({"method": "lysmer", "c_z": 4e7, "density": 1800.0, "poisson": 0.3, "shear_modulus": 7e7},
+         ["soil.c_z is a key of method 'coefficients', not of 'lysmer'", "shear_modulus, shear_wave_velocity"]),
+        ({"method": "lysmer", "shear_modulos": 7e7, "density": 1800.0, "poisson": 0.3},
+         ["soil.shear_modulos is not a key of method 'lysmer'", "did you mean shear_modulus"]),
+        ({"method": "gazetas", "density": 1800.0, "poisson": 0.3}, ["exactly one of soil.shear_modulus"]),
+        ({"method": "gazetas", "density": 1800.0, "poisson": 0.3, "shear_modulus": 7e7, "shear_wave_velocity": 200.0},
+         ["exactly one of soil.shear_modulus"]),
+        ({"method": "sp26", "deformation_modulus": 3e7}, ["method 'sp26' needs soil.soil_class"]),
+        ({"method": "sp26", "deformation_modulus": 3e7, "soil_class": "peat"}, ["soil.soil_class", "sand"]),
+        ({"method": "sp26", "deformation_modulus": 3e7, "soil_class": "sand", "poisson": 0.3},
+         ["soil.poisson is a key of method 'lysmer' and 'gazetas', not of 'sp26'", "deformation_modulus, soil_class"]),
+        ({"shear_modulus": 7e7}, ['give soil.method = "lysmer"', "c_z and soil.c_x"]),
+        ({"method": "lysmer", "shear_modulus": 7e7, "density": 1800.0, "poisson": 0.6}, ["soil.poisson", "less than or equal to 0.5"]),
+    ],
+)
+def test_soil_method_keys(soil, fragments):
+    message = _problems(_scene(soil=soil))
+    for fragment in fragments:
+        assert fragment in message, message
+
+
+def test_coefficients_scenes_keep_their_numbers_exactly():
+    """Barkan's coefficients pass into the design unchanged (no c_z S / S round trip), undamped."""
+    scene = parse_scene(read_toml(CONFIGS / "frame_saw.toml"))
+    d = scene.design()
+    assert (d.c, d.c1, d.c_phi, d.C_x, d.C_z, d.C_phi) == (scene.soil.c_z, scene.soil.c_x, scene.soil.c_z, 0.0, 0.0, 0.0)
+
+
+def test_a_soil_method_maps_into_the_design():
+    """c = K_z/S, c1 = K_x/S, c_phi = K_φ/I1 and C = 2 ξ sqrt(K m) of each mode."""
+    scene = parse_scene(read_toml(LYSMER))
+    d, s, f = scene.design(), scene.soil_springs(), scene.foundation
+    assert (d.c * f.base_area, d.c1 * f.base_area, d.c_phi * f.base_second_moment) == pytest.approx(
+        (float(s.K_z), float(s.K_x), float(s.K_phi)), rel=1e-14
+    )
+    I_0 = f.moment_of_inertia + d.M_tot * f.cog_height**2
+    assert d.C_z == pytest.approx(2.0 * float(s.xi_z) * (float(s.K_z) * d.M_tot) ** 0.5, rel=1e-14)
+    assert d.C_phi == pytest.approx(2.0 * float(s.xi_phi) * (float(s.K_phi) * I_0) ** 0.5, rel=1e-14)
+    assert float(s.xi_x) > scene.soil.material_damping > 0.0
+
+
+def _write(tmp_path, document: dict):
+    path = tmp_path / "scene.toml"
+    path.write_text(tomli_w.dumps(document), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("config", [LYSMER, SP26, CONFIGS / "frame_saw.toml"], ids=lambda p: p.name)
+def test_fcalc_soil_tables_and_json(runner, config):
+    table = runner.invoke(app, ["soil", str(config)])
+    assert table.exit_code == 0, table.output
+    document = json.loads(runner.invoke(app, ["soil", str(config), "--json"]).stdout)
+    used = document["method"]
+    assert f"{used} *" in table.stdout
+    expected = {"lysmer": ["lysmer", "gazetas"], "sp26": ["sp26"], "coefficients": ["coefficients"]}[used]
+    assert list(document["methods"]) == expected
+    numbers = document["methods"][used]
+    assert numbers["K_z"] == pytest.approx(numbers["c_z"] * document["base"]["area"], rel=1e-14)
+    assert f"{numbers['K_z'] / 1e6:.5g}" in table.stdout
+
+
+def test_fcalc_soil_warns_of_the_static_dynamic_trap(runner, tmp_path):
+    """E = 2G(1 + ν) = 135 MPa from the site's V_s given as SP 26's static modulus."""
+    document = read_toml(SP26)
+    document["soil"]["deformation_modulus"] = 135.0e6
+    result = runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"])
+    assert result.exit_code == 0
+    assert "dynamic modulus" in result.stderr
+    assert any("dynamic modulus" in w for w in json.loads(result.stdout)["warnings"])
+    assert "dynamic modulus" in runner.invoke(app, ["resonance", str(_write(tmp_path, document))]).stderr
+
+
+def test_fcalc_soil_warns_of_a_static_modulus_given_as_shear_modulus(runner, tmp_path):
+    document = read_toml(LYSMER)
+    del document["soil"]["shear_wave_velocity"]
+    document["soil"]["shear_modulus"] = 35.0e6 / (2.0 * 1.3)  # G from the static E = 35 MPa
+    result = runner.invoke(app, ["soil", str(_write(tmp_path, document))])
+    assert result.exit_code == 0 and "static deformation modulus" in result.stderr
+
+
+def test_fcalc_soil_names_methods_that_disagree_by_more_than_2(runner, tmp_path):
+    """A deep embedment stiffens Gazetas' springs; Lysmer's analogs are for a surface footing."""
+    document = read_toml(LYSMER)
+    document["foundation"]["embedment"] = 2.0
+    result = runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"])
+    findings = json.loads(result.stdout)["warnings"]
+    assert any("'lysmer' and 'gazetas' differ by a factor of" in w for w in findings), findings
