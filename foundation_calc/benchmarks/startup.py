@@ -75,6 +75,7 @@ def _commands(scene: str) -> dict[str, tuple[str, ...]]:
         "typer + TOML + pydantic model + rich table": (py, "-c", FRAMEWORK_FLOOR, scene),
         "fcalc resonance SCENE": (py, "-m", "foundation_calc", "resonance", scene),
         "fcalc resonance SCENE --json": (py, "-m", "foundation_calc", "resonance", scene, "--json"),
+        "fcalc soil SCENE": (py, "-m", "foundation_calc", "soil", scene),
     }
 
 
