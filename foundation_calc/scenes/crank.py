@@ -17,8 +17,6 @@ from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERS
 from foundation_calc.scenes.soil import Soil
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
-from foundation_calc.solvers.soil.gazetas import gazetas_springs
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
 from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
 from foundation_calc.solvers.soil.springs import SoilSprings
@@ -366,9 +364,26 @@ class CrankScene(SceneModel):
             return sp26_springs(s.deformation_modulus, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
         L, B = f.dimensions
         I_0 = f.moment_of_inertia + M_tot * f.cog_height**2
-        solver = lysmer_springs if method == "lysmer" else gazetas_springs
-        extra = () if method == "lysmer" else (f.embedment or 0.0,)
-        return solver(s.G, s.density, s.poisson, L, B, *extra, M_tot, I_0, s.material_damping or 0.0)
+        if method == "lysmer":
+            return lysmer_springs(s.G, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
+        from foundation_calc.solvers.soil.gazetas import gazetas_springs  # numpy: only when asked for
+
+        return gazetas_springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0,
+                               s.material_damping or 0.0)
+
+    def _dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
+        """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
+        if springs.xi_z == springs.xi_x == springs.xi_phi == 0.0:
+            return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
+        from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
+
+        f = self.foundation
+        d = dashpots_from_ratios(
+            springs.xi_z, springs.xi_x, springs.xi_phi,
+            K_z=springs.K_z, K_x=springs.K_x, K_phi=springs.K_phi,
+            M_tot=M_tot, I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
+        )
+        return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
 
     def design(self) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
@@ -392,12 +407,7 @@ class CrankScene(SceneModel):
             c = float(springs.K_z) / f.base_area
             c1 = float(springs.K_x) / f.base_area
             c_phi = float(springs.K_phi) / f.base_second_moment
-        M_tot = f.mass + rod.m
-        dashpots = dashpots_from_ratios(
-            springs.xi_z, springs.xi_x, springs.xi_phi,
-            K_z=springs.K_z, K_x=springs.K_x, K_phi=springs.K_phi,
-            M_tot=M_tot, I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
-        )
+        dashpots = self._dashpots(springs, f.mass + rod.m)
         return CrankDesign(
             M=f.mass,
             I_c=f.moment_of_inertia,
@@ -407,9 +417,7 @@ class CrankScene(SceneModel):
             c=c,
             c1=c1,
             c_phi=c_phi,
-            C_x=float(dashpots.C_x),
-            C_z=float(dashpots.C_z),
-            C_phi=float(dashpots.C_phi),
+            **dashpots,
             omega=mech.omega_rad_s,
             r=mech.crank_radius,
             l=mech.rod_length,

@@ -19,7 +19,7 @@ each (Richart et al., 10.3; ACI 351.3R-18, 4.5.1.3).
 
 from __future__ import annotations
 
-import numpy as np
+import math
 
 from foundation_calc.solvers.soil.springs import SoilSprings
 
@@ -39,7 +39,7 @@ def equivalent_radii(L, B):
     >>> round(float(r0), 4), round(float(r0_psi), 4)
     (1.5958, 1.9197)
     """
-    return np.sqrt(B * L / np.pi), (B * L**3 / (3.0 * np.pi)) ** 0.25
+    return (B * L / math.pi) ** 0.5, (B * L**3 / (3.0 * math.pi)) ** 0.25
 
 
 def lysmer_springs(G, rho, nu, L, B, M_tot, I_0, material_damping) -> SoilSprings:
@@ -58,7 +58,7 @@ def lysmer_springs(G, rho, nu, L, B, M_tot, I_0, material_damping) -> SoilSpring
 
     Notes
     -----
-    The analogs hold for a rigid base on the surface of a uniform half-space; the damping ratios
+    Arithmetic operators only: floats or numpy arrays alike. The analogs hold for a rigid base on the surface of a uniform half-space; the damping ratios
     are frequency-independent (Richart et al. fit them over the dimensionless frequencies of
     block foundations, a0 < 1.5).
 
@@ -74,9 +74,9 @@ def lysmer_springs(G, rho, nu, L, B, M_tot, I_0, material_damping) -> SoilSpring
         K_z=4.0 * G * r0 / (1.0 - nu),
         K_x=32.0 * (1.0 - nu) * G * r0 / (7.0 - 8.0 * nu),
         K_phi=8.0 * G * r0_psi**3 / (3.0 * (1.0 - nu)),
-        xi_z=0.425 / np.sqrt(B_z) + material_damping,
-        xi_x=0.2875 / np.sqrt(B_x) + material_damping,
-        xi_phi=0.15 / ((1.0 + B_phi) * np.sqrt(B_phi)) + material_damping,
+        xi_z=0.425 / B_z**0.5 + material_damping,
+        xi_x=0.2875 / B_x**0.5 + material_damping,
+        xi_phi=0.15 / ((1.0 + B_phi) * B_phi**0.5) + material_damping,
     )
 
 

@@ -23,8 +23,6 @@ E = 2 G (1 + ν) from a shear wave velocity gives springs several times stiffer.
 
 from __future__ import annotations
 
-import numpy as np
-
 from foundation_calc.solvers.soil.springs import SoilSprings
 
 #: Reference area A10 of the formula for C_z [m²].
@@ -48,12 +46,14 @@ def sp26_springs(E, b0, A, I, p_m) -> SoilSprings:
     I : second moment of the base area about its axis normal to the plane of motion [m⁴]
     p_m : mean static pressure under the base, weight over area [Pa]
 
+    Arithmetic operators only: floats or numpy arrays alike, and no numpy import for a scene.
+
     >>> s = sp26_springs(3.0e7, 1.0, 10.0, 10.0, 1.0e5)
     >>> float(s.K_z), float(s.K_x), float(s.K_phi), round(float(s.xi_z), 6)
     (600000000.0, 420000000.0, 1200000000.0, 0.2)
     """
-    C_z = b0 * E * (1.0 + np.sqrt(A10 / A))
-    xi_z = 2.0 / np.sqrt(p_m / PA_PER_KPA)
+    C_z = b0 * E * (1.0 + (A10 / A) ** 0.5)
+    xi_z = 2.0 / (p_m / PA_PER_KPA) ** 0.5
     return SoilSprings(
         K_z=C_z * A,
         K_x=0.7 * C_z * A,

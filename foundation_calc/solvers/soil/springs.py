@@ -9,8 +9,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 
 @dataclass(frozen=True)
 class SoilSprings:
@@ -73,6 +71,8 @@ def uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, g) -> UncoupledFrequen
     >>> float(f.omega_z), float(f.omega_x), float(f.omega_phi)
     (20.0, 10.0, 14.142135623730951)
     """
+    import numpy as np  # here, not at the top: the dataclasses above serve scenes that need no numpy
+
     net = np.asarray(K_phi - M_tot * g * h, dtype=float)
     return UncoupledFrequencies(
         omega_z=np.sqrt(K_z / M_tot),
