@@ -62,8 +62,11 @@ def test_every_key_is_written_under_its_description(kind):
 def test_crank_template_names_symbols_units_and_ranges():
     text = scene_template("crank_foundation")
     for fragment in (
-        "# M [kg]: block and machine frame, without rod and slider; allowed > 0\nmass = 100000.0",
-        "# c [N/m³]: coefficient of elastic uniform compression; allowed > 0\nc_z = 70000000.0",
+        "# M [kg]: block and machine frame, without rod and slider (or from [foundation.block]); allowed > 0;"
+        " optional\nmass = 100000.0",
+        "# c [N/m³]: coefficient of elastic uniform compression; allowed > 0; optional\nc_z = 70000000.0",
+        '# method = "lysmer"',
+        "# [foundation.block]",
         "speed_rpm = 250.0",
         "# omega = 26.179939",  # the alternatives, commented out, with the same speed
         "# frequency_hz = 4.166667",
@@ -133,7 +136,7 @@ def test_every_commented_out_key_is_valid_toml(kind):
         assert "..." not in line
         tomllib.loads(line)  # raises on invalid TOML
     uncommented = "\n".join(
-        line[2:] if re.match(r"# (\w+ = |\[\[)", line) and "omega" not in line and "frequency_hz" not in line else line
+        line[2:] if re.match(r"# (\w+ = |\[)", line) and "omega" not in line and "frequency_hz" not in line else line
         for line in scene_template(kind).splitlines()
     )
     tomllib.loads(uncommented)
