@@ -182,3 +182,4 @@ def test_fcalc_soil_names_methods_that_disagree_by_more_than_2(runner, tmp_path)
     result = runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"])
     findings = json.loads(result.stdout)["warnings"]
     assert any("'lysmer' and 'gazetas' differ by a factor of" in w for w in findings), findings
+    assert any("used by method 'gazetas' only" in w for w in findings), findings

@@ -113,6 +113,11 @@ def compare_soil_methods(scene) -> SoilComparison:
     """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`)."""
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
+    if scene.foundation.embedment and scene.soil.method_used != "gazetas":
+        findings.append(
+            f"foundation.embedment = {scene.foundation.embedment:g} m is used by method 'gazetas' only;"
+            f" method {scene.soil.method_used!r} takes the base as a surface footing"
+        )
     findings += [
         f"method {r.method!r}: the rocking spring K_phi = {r.K_phi:.4g} N m/rad does not exceed the weight's"
         f" overturning moment M_tot g h (margin {r.rocking_stability_margin:.3g}): the block tips over"

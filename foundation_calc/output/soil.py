@@ -77,7 +77,7 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
     derived = "" if f.base_length is not None or f.block is not None else ", from S and I1"
     out.print(
         f"base {fmt(L)} m × {fmt(B)} m{derived} (S = {fmt(f.base_area)} m², I1 = {fmt(f.base_second_moment)} m⁴,"
-        f" embedment {fmt(f.embedment or 0.0)} m), M_tot = {fmt(scene.total_mass)} kg", soft_wrap=True,
+        f" embedment {fmt(f.embedment or 0.0)} m), M_tot = {fmt(scene.total_mass, 7)} kg", soft_wrap=True,
     )
     table = Table(title="Springs and damping by soil method (* the scene's)", title_justify="left")
     table.add_column("quantity")
