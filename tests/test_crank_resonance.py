@@ -26,14 +26,18 @@ def _run_json(runner, tmp_path, doc, *args):
 
 
 def _reference_modes(doc):
-    """(k0, p1, p2) zero-order and averaged, from the independent reference model."""
-    f, s, m = doc["foundation"], doc["soil"], doc["mechanism"]
-    M_tot = f["mass"] + m["rod_mass"] + m.get("slider_mass", 0.0)
-    soil = dict(M_tot=M_tot, h=f["cog_height"], S=f["base_area"], I1=f["base_second_moment"], c=s["c_z"], c1=s["c_x"])
+    """(k0, p1, p2) zero-order and averaged, from the independent reference model.
+
+    The foundation's numbers and the soil coefficients are the scene's (given, or computed from
+    the block and the soil method, which tests/test_soil_*.py verify)."""
+    m = doc["mechanism"]
+    d = parse_scene(doc).design()
+    M_tot = d.M + m["rod_mass"] + m.get("slider_mass", 0.0)
+    soil = dict(M_tot=M_tot, h=d.h, S=d.S, I1=d.I1, c=d.c, c1=d.c1)
     K = ref.stiffness_matrix(**soil)
-    zero = np.diag([M_tot, M_tot, f["moment_of_inertia"]])
+    zero = np.diag([M_tot, M_tot, d.I_c])
     avg = ref.averaged_mass_matrix(
-        M=f["mass"], I_c=f["moment_of_inertia"], m=m["rod_mass"], l1=m["rod_cog_to_crank_pin"],
+        M=d.M, I_c=d.I_c, m=m["rod_mass"], l1=m["rod_cog_to_crank_pin"],
         rho=m["rod_radius_of_gyration"], m1=m.get("slider_mass", 0.0), a=m["crank_axis_to_cog"],
         r=m["crank_radius"], l=m["rod_length"],
     )
