@@ -183,3 +183,13 @@ def test_fcalc_soil_names_methods_that_disagree_by_more_than_2(runner, tmp_path)
     findings = json.loads(result.stdout)["warnings"]
     assert any("'lysmer' and 'gazetas' differ by a factor of" in w for w in findings), findings
     assert any("used by method 'gazetas' only" in w for w in findings), findings
+
+
+def test_fcalc_soil_names_an_operating_speed_beyond_the_dampings_range(runner, tmp_path):
+    """a0 = ω B'/V_s: 150 rpm on a 4 m wide base over V_s = 170 m/s is 0.18; 1500 rpm is 1.85."""
+    document = read_toml(LYSMER)
+    quiet = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
+    assert not any("a0 =" in w for w in quiet["warnings"])
+    document["mechanism"]["speed_rpm"] = 1500.0
+    loud = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
+    assert any("a0 = ω B'/V_s = 1.85" in w for w in loud["warnings"]), loud["warnings"]

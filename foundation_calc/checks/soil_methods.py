@@ -109,10 +109,32 @@ def _disagreements(results: tuple[MethodResult, ...]) -> list[str]:
     return found
 
 
+#: Dimensionless frequency a0 = ω B'/V_s up to which the half-space methods' frequency-independent
+#: damping holds: Gazetas' dashpot coefficients stay within about 10 % of their low-frequency
+#: limit below it, and Richart, Hall & Woods fit the analogs' damping over a0 < 1.5 [-].
+A0_RANGE = 1.0
+
+
+def _frequency_range(scene) -> list[str]:
+    """The operating speed's a0 when it is beyond :data:`A0_RANGE` (half-space methods only)."""
+    if scene.soil.method_used not in ("lysmer", "gazetas"):
+        return []
+    half_width = min(scene.foundation.dimensions) / 2.0
+    a0 = scene.mechanism.omega_rad_s * half_width / scene.soil.V_s
+    if a0 <= A0_RANGE:
+        return []
+    return [
+        f"a0 = ω B'/V_s = {a0:.3g} at the operating speed is beyond {A0_RANGE:g}: the frequency-independent"
+        " damping of the half-space methods over-states the radiation there; check with frequency-dependent"
+        " impedances"
+    ]
+
+
 def compare_soil_methods(scene) -> SoilComparison:
     """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`)."""
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
+    findings += _frequency_range(scene)
     if scene.foundation.embedment and scene.soil.method_used != "gazetas":
         findings.append(
             f"foundation.embedment = {scene.foundation.embedment:g} m is used by method 'gazetas' only;"
