@@ -73,6 +73,15 @@ def test_gazetas_square_footing_against_the_exact_rigid_circle():
     assert float(s.K_phi) == pytest.approx(8.0 * G * R_phi**3 / (3.0 * (1.0 - nu)), rel=0.07)
 
 
+@pytest.mark.parametrize(("L", "B", "K_phi"), [(3.0, 2.0, 422150729.0333), (2.0, 3.0, 218027424.1324)])
+def test_gazetas_rocking_against_an_independent_implementation(L, B, K_phi):
+    """Surface rocking of a 3 m × 2 m footing, G = 30 MPa, ν = 0.3, about either axis, as the open
+    implementation eng-tools/geofound computes it (tests/test_stiffness.py, test_rotation; its own
+    code, printed to 4 decimals): K_ry when the motion runs along the long side, K_rx across it."""
+    s = gazetas_springs(30.0e6, 1800.0, 0.3, L, B, 0.0, 1.0e5, 1.0e5, 0.0)
+    assert float(s.K_phi) == pytest.approx(K_phi, rel=1e-12)
+
+
 def test_gazetas_takes_the_side_in_the_plane_of_motion():
     """Sliding along the long side is softer than across it (K_x < K_y) and rocking about the short
     axis stiffer than about the long one; K_z does not care; an array call equals the loop."""
