@@ -193,3 +193,15 @@ def test_fcalc_soil_names_an_operating_speed_beyond_the_dampings_range(runner, t
     document["mechanism"]["speed_rpm"] = 1500.0
     loud = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
     assert any("a0 = ω B'/V_s = 1.85" in w for w in loud["warnings"]), loud["warnings"]
+
+
+def test_fcalc_soil_reports_a_block_that_tips_over(runner, tmp_path):
+    """A rocking spring below the weight's overturning moment: no p1, p2, f_φ, and a note; not a crash."""
+    document = read_toml(CONFIGS / "frame_saw.toml")
+    document["soil"]["c_phi"] = 1.0e4
+    path = _write(tmp_path, document)
+    table = runner.invoke(app, ["soil", str(path)])
+    assert table.exit_code == 0 and "tips over" in table.stdout
+    numbers = json.loads(runner.invoke(app, ["soil", str(path), "--json"]).stdout)
+    assert numbers["methods"]["coefficients"]["p1"] is None and numbers["methods"]["coefficients"]["omega_phi"] is None
+    assert any("the block tips over" in w for w in numbers["warnings"])

@@ -14,7 +14,6 @@ from dataclasses import dataclass
 
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, zero_order_frequencies
-from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 from foundation_calc.solvers.soil.springs import uncoupled_frequencies
 
 #: Two methods whose springs differ by more than this factor are flagged [-]: the spread of
@@ -75,21 +74,21 @@ def _method_result(scene, method: str) -> MethodResult:
     I_0 = f.moment_of_inertia + M_tot * h**2
     K_z, K_x, K_phi = float(s.K_z), float(s.K_x), float(s.K_phi)
     c, c1, c_phi = K_z / f.base_area, K_x / f.base_area, K_phi / f.base_second_moment
-    d = dashpots_from_ratios(s.xi_z, s.xi_x, s.xi_phi, K_z, K_x, K_phi, M_tot, I_0)
+    d = scene.base_dashpots(s, M_tot)  # no numpy import for an undamped scene
     u = uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, g)
     margin = rocking_stability_margin(c_phi, f.base_second_moment, M_tot * g, h)
-    p1 = p2 = math.nan
+    omega_phi = p1 = p2 = math.nan
     if margin > 0.0:
         # The rocking spring enters (4.7) only through the product c I1 of the rocking row, so
         # the method's c_φ takes c's place there; k0 = sqrt(K_z/M_tot) keeps the vertical c.
         coupled = zero_order_frequencies(M_tot, f.moment_of_inertia, h, f.base_area, f.base_second_moment,
                                          c_phi, c1, g)
-        p1, p2 = float(coupled.p1), float(coupled.p2)
+        p1, p2, omega_phi = float(coupled.p1), float(coupled.p2), float(u.omega_phi)
     return MethodResult(
         method=method, K_z=K_z, K_x=K_x, K_phi=K_phi, c_z=c, c_x=c1, c_phi=c_phi,
         xi_z=float(s.xi_z), xi_x=float(s.xi_x), xi_phi=float(s.xi_phi),
-        C_z=float(d.C_z), C_x=float(d.C_x), C_phi=float(d.C_phi),
-        omega_z=float(u.omega_z), omega_x=float(u.omega_x), omega_phi=float(u.omega_phi),
+        C_z=d["C_z"], C_x=d["C_x"], C_phi=d["C_phi"],
+        omega_z=float(u.omega_z), omega_x=float(u.omega_x), omega_phi=omega_phi,
         k0=math.sqrt(K_z / M_tot), p1=p1, p2=p2, rocking_stability_margin=float(margin),
     )
 

@@ -371,7 +371,7 @@ class CrankScene(SceneModel):
         return gazetas_springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0,
                                s.material_damping or 0.0)
 
-    def _dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
+    def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
         if springs.xi_z == springs.xi_x == springs.xi_phi == 0.0:
             return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
@@ -407,7 +407,7 @@ class CrankScene(SceneModel):
             c = float(springs.K_z) / f.base_area
             c1 = float(springs.K_x) / f.base_area
             c_phi = float(springs.K_phi) / f.base_second_moment
-        dashpots = self._dashpots(springs, f.mass + rod.m)
+        dashpots = self.base_dashpots(springs, f.mass + rod.m)
         return CrankDesign(
             M=f.mass,
             I_c=f.moment_of_inertia,

@@ -65,19 +65,18 @@ def uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, g) -> UncoupledFrequen
     h : height of the centre of mass above the base [m]
     g : acceleration of gravity [m/s²]
 
-    Returns ω_φ = nan where K_φ <= M_tot g h (the block tips over; the scene reports that).
+    Returns ω_φ = 0 where K_φ <= M_tot g h (the block tips over; the caller reports that).
+    Arithmetic operators only: floats or numpy arrays alike.
 
     >>> f = uncoupled_frequencies(4.0e6, 1.0e6, 2.0e6, 1.0e4, 1.0e4, 0.0, 9.81)
     >>> float(f.omega_z), float(f.omega_x), float(f.omega_phi)
     (20.0, 10.0, 14.142135623730951)
     """
-    import numpy as np  # here, not at the top: the dataclasses above serve scenes that need no numpy
-
-    net = np.asarray(K_phi - M_tot * g * h, dtype=float)
+    net = K_phi - M_tot * g * h
     return UncoupledFrequencies(
-        omega_z=np.sqrt(K_z / M_tot),
-        omega_x=np.sqrt(K_x / M_tot),
-        omega_phi=np.sqrt(np.where(net > 0.0, net, np.nan) / I_0),
+        omega_z=(K_z / M_tot) ** 0.5,
+        omega_x=(K_x / M_tot) ** 0.5,
+        omega_phi=(net * (net > 0.0) / I_0) ** 0.5,
     )
 
 
