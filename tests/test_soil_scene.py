@@ -198,7 +198,7 @@ def test_fcalc_soil_names_an_operating_speed_beyond_the_dampings_range(runner, t
 def test_fcalc_soil_reports_a_block_that_tips_over(runner, tmp_path):
     """A rocking spring below the weight's overturning moment: no p1, p2, f_φ, and a note; not a crash."""
     document = read_toml(CONFIGS / "frame_saw.toml")
-    document["soil"]["c_phi"] = 1.0e4
+    document["soil"]["c_phi"] = 1.0e3  # K_φ = 2.1e5 N m/rad < M_tot g h = 1.5e6 N m
     path = _write(tmp_path, document)
     table = runner.invoke(app, ["soil", str(path)])
     assert table.exit_code == 0 and "tips over" in table.stdout
