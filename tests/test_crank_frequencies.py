@@ -30,7 +30,7 @@ def _soil(design):
 
 def _zero_order(design):
     d = design
-    return zero_order_frequencies(d["M_tot"], d["I_c"], d["h"], d["S"], d["I1"], d["c"], d["c1"], ref.G)
+    return zero_order_frequencies(d["M_tot"], d["I_c"], d["h"], d["S"], d["I1"], d["c"], d["c1"], d["c"], ref.G)
 
 
 def _reference_zero_order(design):
@@ -138,7 +138,7 @@ def test_averaged_inertia_against_numerical_time_average(mech):
     base = dict(FRAME_SAW, M_tot=M + m + m1)
     rod = lump_slider(m=m, l=l, l1=l1, rho=rho, m1=m1)
     got = averaged_inertia_frequencies(
-        base["M_tot"], base["I_c"], base["h"], base["S"], base["I1"], base["c"], base["c1"], ref.G,
+        base["M_tot"], base["I_c"], base["h"], base["S"], base["I1"], base["c"], base["c1"], base["c"], ref.G,
         rod.m, a, r, l, rod.l1, rod.rho,
     )
     Mm = ref.averaged_mass_matrix(M=M, I_c=base["I_c"], m=m, l1=l1, rho=rho, m1=m1, a=a, r=r, l=l)
@@ -153,7 +153,7 @@ def test_averaged_inertia_moves_rocking_by_order_mu():
     zero = _zero_order(FRAME_SAW)
     rod = lump_slider(m=1.5e3, l=1.2, l1=1.0, rho=0.35, m1=0.0)
     avg = averaged_inertia_frequencies(
-        *(FRAME_SAW[k] for k in ("M_tot", "I_c", "h", "S", "I1", "c", "c1")), ref.G,
+        *(FRAME_SAW[k] for k in ("M_tot", "I_c", "h", "S", "I1", "c", "c1", "c")), ref.G,
         rod.m, 2.0, 0.3, 1.2, rod.l1, rod.rho,
     )
     mu = 1.5e3 / FRAME_SAW["M_tot"]

@@ -95,7 +95,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
     title = f"{escape(name or scene_path)} — {METHOD}"
     table = Table(title=title, title_justify="left")
     if report.variable == "soil_factor":
-        table.add_column("soil factor (c_z, c_x)", justify="right")
+        table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
     table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
     for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
         table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
@@ -146,7 +146,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
         ax.set_xlabel(f"crank speed [{units.label('speed')}]")
     else:
         xs = report.values
-        ax.set_xlabel("factor on the soil coefficients c_z, c_x [-]")
+        ax.set_xlabel("factor on the soil coefficients c_z, c_x, c_phi [-]")
     ok = ~report.resonant
     for i, dof in enumerate(("x", "y")):
         amps = np.where(ok, [units.convert("amplitude", v) for v in report.peaks[:, i]], np.nan)

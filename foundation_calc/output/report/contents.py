@@ -107,7 +107,7 @@ def _crank_derived(res: dict, units: DisplayUnits) -> Section:
         ("m, moving mass", num(d["moving_mass"]), "kg"),
         ("ρ1 = sqrt(I_c/M_tot)", num(d["rho1"]), "m"),
         ("κ = l'l'' − ρ²", num(d["kappa"]), "m²"),
-        ("rocking stability margin c·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
+        ("rocking stability margin c_φ·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
     )
     return Section("Derived quantities", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
 
