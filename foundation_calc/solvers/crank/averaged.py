@@ -36,7 +36,7 @@ import numpy as np
 
 from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import PeriodicMotion
@@ -115,12 +115,6 @@ FREQUENCY_FIELDS = (
     "foundation.mass, foundation.moment_of_inertia, foundation.cog_height, foundation.base_area,"
     " foundation.base_second_moment, soil.c_z, soil.c_x, soil.c_phi"
 )
-
-
-#: Modal damping ratio [-] below which a mode counts as undamped: at a harmonic on it the
-#: averaged operator is singular to round-off ("resonant"). Any ratio above it gives a finite
-#: amplitude, at most about 1/(2 ratio) times the static one.
-UNDAMPED_RATIO = 1e-12
 
 
 def base_dashpot_matrix(design: CrankDesign) -> np.ndarray:
@@ -220,7 +214,6 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
 __all__ = [
     "FORCING_HARMONICS",
     "FORCING_SAMPLES",
-    "UNDAMPED_RATIO",
     "AveragedResponse",
     "LinearOperator",
     "averaged_response",

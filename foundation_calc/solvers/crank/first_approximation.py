@@ -70,6 +70,11 @@ from foundation_calc.solvers.crank.response import PeriodicMotion
 #: model can carry). A damped mode is never resonant in this sense: its amplitude is finite.
 RESONANT_MARGIN = 1e-6
 
+#: Damping ratio [-] below which a mode counts as undamped (and so can be resonant): any ratio
+#: above it gives a finite amplitude, at most about 1/(2 ratio) times the static one, far from
+#: overflow; below it the amplitude would be the round-off of a singular denominator.
+UNDAMPED_RATIO = 1e-12
+
 #: The resonance conditions whose denominators appear in the first approximation.
 FIRST_APPROXIMATION_CONDITIONS = tuple(c for c in CONDITIONS if c.source == "paper")
 
@@ -176,7 +181,8 @@ def first_approximation(
     term and the rod couple are truncated at O(λ²) relative). At a resonance of the list
     (ω = k0, 2ω = k0, ω = p1, p2, 3ω = p1, p2) an undamped mode has no periodic solution:
     ``resonant``. The vertical mode is damped when C_z > 0; both sliding-rocking modes are
-    damped when C_x > 0 or C_φ > 0 (no mode shape leaves both x - hθ and θ at rest).
+    damped when C_x > 0 or C_φ > 0 (no mode shape leaves both x - hθ and θ at rest); a damping
+    ratio below :data:`UNDAMPED_RATIO` counts as none.
 
     >>> fa = first_approximation(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 4.0e7, 0.0, 0.0, 0.0,
     ...                          9.81, 9.81, 31.41592653589793, 1.5e3, 0.3, 1.2, 1.0, 0.35, 2.0)
@@ -203,7 +209,12 @@ def first_approximation(
         cond.label: relative_detuning(cond.harmonic * omega, getattr(freqs, cond.mode))
         for cond in FIRST_APPROXIMATION_CONDITIONS
     }
-    undamped = {"k0": np.asarray(C_z) == 0.0, "p": (np.asarray(C_x) == 0.0) & (np.asarray(C_phi) == 0.0)}
+    I_0 = I_c + M_tot * h * h  # ratios of the uncoupled modes, as the soil note defines them
+    undamped = {
+        "k0": C_z <= 2.0 * UNDAMPED_RATIO * np.sqrt(c * S * M_tot),
+        "p": (C_x <= 2.0 * UNDAMPED_RATIO * np.sqrt(c1 * S * M_tot))
+        & (C_phi <= 2.0 * UNDAMPED_RATIO * np.sqrt(np.abs(k_phi) * I_c * I_0)),
+    }
     resonant = np.logical_or.reduce([
         (np.asarray(margins[cond.label]) < RESONANT_MARGIN) & undamped["k0" if cond.mode == "k0" else "p"]
         for cond in FIRST_APPROXIMATION_CONDITIONS
@@ -250,4 +261,4 @@ def first_approximation(
     )
 
 
-__all__ = ["RESONANT_MARGIN", "FirstApproximation", "complex_quotient", "first_approximation"]
+__all__ = ["RESONANT_MARGIN", "UNDAMPED_RATIO", "FirstApproximation", "complex_quotient", "first_approximation"]
