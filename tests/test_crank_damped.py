@@ -20,23 +20,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foundation_calc.solvers.crank.averaged import averaged_response
-from foundation_calc.solvers.crank.closed_form import design_first_approximation
+from foundation_calc.solvers.crank.closed_form import design_first_approximation, with_damping
 from foundation_calc.solvers.crank.exact import exact_periodic_solution
 from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
 from foundation_calc.solvers.numerics.trig_series import analyse
-from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 from tests.test_crank_exact import design_args, make_design, reference_equations
 
 
 def damped(design, xi_z, xi_x=None, xi_phi=None):
     """``design`` with the dashpots of damping ratios ξ (the scene's soil.damping)."""
-    xi_x = xi_z if xi_x is None else xi_x
-    xi_phi = xi_z if xi_phi is None else xi_phi
-    d = design
-    b = dashpots_from_ratios(
-        xi_z, xi_x, xi_phi, d.c * d.S, d.c1 * d.S, d.c_phi * d.I1, d.M_tot, d.I_c + d.M_tot * d.h**2
-    )
-    return replace(d, C_x=float(b.C_x), C_z=float(b.C_z), C_phi=float(b.C_phi))
+    return with_damping(design, xi_z, xi_z if xi_x is None else xi_x, xi_z if xi_phi is None else xi_phi)
 
 
 def harmonic(motion, dof, n):

@@ -16,6 +16,7 @@ import numpy as np
 from foundation_calc.solvers.crank.first_approximation import FirstApproximation, first_approximation
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import PeriodicMotion
+from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
 
 def design_first_approximation(design: CrankDesign) -> FirstApproximation:
@@ -67,4 +68,16 @@ def varied(design: CrankDesign, *, omega=None, soil_factor=None) -> CrankDesign:
     return design
 
 
-__all__ = ["design_first_approximation", "first_approximation_motion", "varied"]
+def with_damping(design: CrankDesign, xi_z, xi_x, xi_phi) -> CrankDesign:
+    """``design`` with the base dashpots of damping ratios ξ_z, ξ_x, ξ_φ [-] of its uncoupled
+    vertical, horizontal and rocking modes (:func:`~foundation_calc.solvers.soil.dashpots.dashpots_from_ratios`,
+    I_0 = I_c + M_tot h²), as the scene's ``soil.damping`` gives them."""
+    d = design
+    b = dashpots_from_ratios(
+        xi_z, xi_x, xi_phi, K_z=d.c * d.S, K_x=d.c1 * d.S, K_phi=d.c_phi * d.I1, M_tot=d.M_tot,
+        I_0=d.I_c + d.M_tot * d.h * d.h,
+    )
+    return replace(d, C_x=b.C_x, C_z=b.C_z, C_phi=b.C_phi)
+
+
+__all__ = ["design_first_approximation", "first_approximation_motion", "varied", "with_damping"]
