@@ -34,11 +34,14 @@ class Throughput:
 
 
 def perturbed_designs(design: CrankDesign, n: int, seed: int = 0) -> CrankDesign:
-    """``n`` variants of a design as one CrankDesign of arrays: soil coefficients ±50 %, speed ±30 %."""
+    """``n`` variants of a design as one CrankDesign of arrays: soil coefficients ±50 % (c_phi
+    with c's factor), speed ±30 %."""
     rng = np.random.default_rng(seed)
+    factor = rng.uniform(0.5, 1.5, n)
     return replace(
         design,
-        c=design.c * rng.uniform(0.5, 1.5, n),
+        c=design.c * factor,
+        c_phi=design.c_phi * factor,
         c1=design.c1 * rng.uniform(0.5, 1.5, n),
         omega=design.omega * rng.uniform(0.7, 1.3, n),
     )
@@ -55,7 +58,7 @@ def batch_throughput(
     sample of them one by one, measured in the same run."""
     batch = perturbed_designs(design, designs)
     sample = [
-        replace(design, c=float(batch.c[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
+        replace(design, c=float(batch.c[i]), c_phi=float(batch.c_phi[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
         for i in range(scalar_designs)
     ]
 
