@@ -77,11 +77,19 @@ def test_frame_saw_against_eigen_solve():
 @example(  # nearly equal p1 and p2: a0 ≈ b1 and weak coupling (short block, tall inertia)
     {"M_tot": 1e5, "I_c_ratio": 20.0, "h": 0.05, "S": 30.0, "I1_ratio": 0.0101, "c": 4e7, "c1_ratio": 0.5}
 )
+@example(  # 1.3e-5 above the rocking stability limit: stable, and not compared (see below)
+    {"M_tot": 30211908.0, "I_c_ratio": 1.0, "h": 13.234375, "S": 1 / 3, "I1_ratio": 6.078125, "c": 5808031548.0,
+     "c1_ratio": 1.0}
+)
 def test_random_designs_against_eigen_solve(raw):
     d = _materialise(raw)
-    if d["c"] * d["I1"] <= d["M_tot"] * ref.G * d["h"] * 1.001:
+    reserve = d["c"] * d["I1"] / (d["M_tot"] * ref.G * d["h"]) - 1.0
+    if reserve <= 0.0:
         with pytest.raises(PhysicsError):
             _zero_order(d)
+        return
+    if reserve < 1e-3:  # p1 → 0: the reference's small eigenvalue is round-off of the large one
+        assert 0.0 < _zero_order(d).p1 < _zero_order(d).p2
         return
     got = _zero_order(d)
     k0, (p1, p2), _ = _reference_zero_order(d)
