@@ -152,10 +152,11 @@ def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
 
 
 def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
-    """ζ_j = v_j·C v_j / (2 p_j v_j·M v_j) [-] of each mode shape v_j (columns of ``shapes``)."""
-    return np.einsum("ij,ik,kj->j", shapes, C, shapes) / (
-        2.0 * natural * np.einsum("ij,ik,kj->j", shapes, M, shapes)
-    )
+    """ζ_j = v_j·C v_j / (2 p_j v_j·M v_j) [-] of each mode shape v_j (columns of ``shapes``);
+    0 for a shape of no modal mass (round-off), never NaN."""
+    damping = np.einsum("ij,ik,kj->j", shapes, C, shapes)
+    inertia = 2.0 * natural * np.einsum("ij,ik,kj->j", shapes, M, shapes)
+    return np.where(inertia > 0.0, damping / np.where(inertia > 0.0, inertia, 1.0), 0.0)
 
 
 def averaged_response(design: CrankDesign) -> AveragedResponse:
