@@ -14,13 +14,15 @@ from scipy.linalg import eigh
 G = 9.81
 
 
-def soil_forces(q, *, M_tot, h, S, I1, c, c1, g=G):
-    """Generalized soil forces (x, y, θ) for a small displacement q, y downward (paper (3.2)-(3.4))."""
+def soil_forces(q, *, M_tot, h, S, I1, c, c1, c_phi=None, g=G):
+    """Generalized soil forces (x, y, θ) for a small displacement q, y downward (paper (3.2)-(3.4));
+    rocking spring c_phi I1 (default c I1, the paper's)."""
     x, y, th = q
     P = M_tot * g
+    c_phi = c if c_phi is None else c_phi
     fx = -c1 * S * (x - h * th)
     fy = -c * S * y
-    mth = h * c1 * S * x - (c1 * h * h * S + c * I1 - P * h) * th
+    mth = h * c1 * S * x - (c1 * h * h * S + c_phi * I1 - P * h) * th
     return np.array([fx, fy, mth])
 
 

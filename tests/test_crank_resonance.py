@@ -33,7 +33,7 @@ def _reference_modes(doc):
     m = doc["mechanism"]
     d = parse_scene(doc).design()
     M_tot = d.M + m["rod_mass"] + m.get("slider_mass", 0.0)
-    soil = dict(M_tot=M_tot, h=d.h, S=d.S, I1=d.I1, c=d.c, c1=d.c1)
+    soil = dict(M_tot=M_tot, h=d.h, S=d.S, I1=d.I1, c=d.c, c1=d.c1, c_phi=d.c_phi)
     K = ref.stiffness_matrix(**soil)
     zero = np.diag([M_tot, M_tot, d.I_c])
     avg = ref.averaged_mass_matrix(

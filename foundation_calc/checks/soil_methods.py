@@ -79,10 +79,8 @@ def _method_result(scene, method: str) -> MethodResult:
     margin = rocking_stability_margin(c_phi, f.base_second_moment, M_tot * g, h)
     omega_phi = p1 = p2 = math.nan
     if margin > 0.0:
-        # The rocking spring enters (4.7) only through the product c I1 of the rocking row, so
-        # the method's c_φ takes c's place there; k0 = sqrt(K_z/M_tot) keeps the vertical c.
         coupled = zero_order_frequencies(M_tot, f.moment_of_inertia, h, f.base_area, f.base_second_moment,
-                                         c_phi, c1, g)
+                                         c, c1, c_phi, g)
         p1, p2, omega_phi = float(coupled.p1), float(coupled.p2), float(u.omega_phi)
     return MethodResult(
         method=method, K_z=K_z, K_x=K_x, K_phi=K_phi, c_z=c, c_x=c1, c_phi=c_phi,
