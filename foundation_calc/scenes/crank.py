@@ -16,7 +16,6 @@ from pydantic import ValidationInfo, field_validator, model_validator
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
 #: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
 #: method of the paper is claimed to hold.
@@ -202,6 +201,7 @@ class CrankScene(SceneModel):
         f, s = self.foundation, self.soil
         if s.damping is None:
             return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
+        from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios  # numpy: only for damped soil
         M_tot = f.mass + rod_mass
         d = dashpots_from_ratios(
             *s.damping,
