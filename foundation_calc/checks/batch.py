@@ -146,26 +146,30 @@ def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[Sc
     """``finish(run_scene(file))`` for every file of :func:`scene_files`, yielded in their order as
     they are done; files found in folders that are no scenes are skipped.
 
-    With ``jobs`` > 1 the scenes are spread over that many worker processes (fork); the results
-    are the same, in the same order, as the serial run's (each scene is checked on its own, and
-    errors stay per scene). ``finish`` runs in the worker: it turns a scene's run into what the
+    With ``jobs`` > 1 the scenes after the first are spread over that many worker processes
+    (fork); the results are the same, in the same order, as the serial run's (each scene is
+    checked on its own, and errors stay per scene). ``finish`` runs in the worker: it turns a scene's run into what the
     caller keeps (e.g. :meth:`SceneRun.light` and the scene's JSON text), so that a batch of many
     scenes neither holds nor ships whole reports; it must be picklable (a module-level function or
     a ``functools.partial`` of one).
     """
-    files = scene_files(paths)
-    jobs = min(jobs, len(files))
+    files = list(scene_files(paths).items())
+    jobs = min(jobs, len(files) - 1)
     if jobs <= 1:
-        for path, searched in files.items():
+        for path, searched in files:
             yield finish(run_scene(path, searched))
         return
     import itertools
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    chunk = max(1, min(16, len(files) // (4 * jobs)))
+    # the first scene is checked here: what its kind imports is then loaded once, before the fork
+    yield finish(run_scene(*files[0]))
+    rest = files[1:]
+    chunk = max(1, min(16, len(rest) // (4 * jobs)))
     with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-        yield from pool.map(_run_and_finish, files.keys(), files.values(), itertools.repeat(finish), chunksize=chunk)
+        paths_, searched_ = zip(*rest)
+        yield from pool.map(_run_and_finish, paths_, searched_, itertools.repeat(finish), chunksize=chunk)
 
 
 def exit_code(scenes: Iterable[SceneRun], strict: bool = False) -> ExitCode:

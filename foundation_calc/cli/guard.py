@@ -44,6 +44,8 @@ def warn_implausible(scene, source: str = "") -> None:
 
 def print_warnings(texts, source: str = "") -> None:
     """Print plausibility warnings ``texts`` of the scene read from ``source`` on stderr."""
+    if not texts:
+        return  # nothing to import or set up: most scenes have no warning
     from rich.markup import escape
 
     from foundation_calc.output.console import stderr

@@ -42,6 +42,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -185,9 +186,11 @@ def _product(a, b, kind: str) -> np.ndarray:
     return out
 
 
+@lru_cache(maxsize=256)
 def _rotor_terms(rot: Rotor, g: float) -> dict:
     """One rotor's parts of S_tot, J, G, K and F (module docstring) at the offsets -2..2 of its
-    angle, each of shape (5, ...)."""
+    angle, each of shape (5, ...), read-only: kept for the next system with this rotor (the
+    tolerance variants of a design change one rotor at most)."""
     lam, w, m = rot.eccentric_phasor(), rot.omega, rot.m
     L = np.array([lam.conj(), np.zeros(3), lam])  # offsets -1, 0, 1
     Ld = np.array([-1j * w * lam.conj(), np.zeros(3), 1j * w * lam])
@@ -199,7 +202,7 @@ def _rotor_terms(rot: Rotor, g: float) -> dict:
 
     L5, Ldd5 = wide(L), wide(Ldd)
     tilt = np.einsum("oi,j->oij", L5, E3) - L5[:, 2, None, None] * np.eye(3)
-    return {
+    terms = {
         "S": m * wide(S),
         "J": m * _product(S, S, "inertia"),
         "G_R": -2.0 * m * skews(wide(Ld)),
@@ -209,6 +212,9 @@ def _rotor_terms(rot: Rotor, g: float) -> dict:
         "F_R": -m * Ldd5,
         "F_P": -m * _product(S, Ldd, "cross") - g * m * (skews(L5) @ E3),
     }
+    for value in terms.values():
+        value.setflags(write=False)
+    return terms
 
 
 @dataclass(frozen=True)

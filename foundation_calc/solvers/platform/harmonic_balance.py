@@ -103,7 +103,7 @@ class HarmonicSet:
         if last < 0:
             return np.full(omega.shape, -1)
         pos = np.searchsorted(self.omega, omega)
-        lo, hi = np.clip(pos - 1, 0, last), np.clip(pos, 0, last)
+        lo, hi = np.maximum(pos - 1, 0), np.minimum(pos, last)  # (np.clip costs more on small sets)
         nearest = np.where(np.abs(self.omega[lo] - omega) <= np.abs(self.omega[hi] - omega), lo, hi)
         return np.where(np.abs(self.omega[nearest] - omega) <= self.tolerance, nearest, -1)
 
@@ -400,7 +400,10 @@ def steady_state(platform, rotors, max_order: int | None = None) -> SteadyState:
             wanted = wanted[np.abs(candidates.vectors[wanted]).sum(axis=1) <= max_order]
         wanted = wanted[: max(MAX_HARMONICS - len(harmonics), 0)]
         mirror = candidates.find(-candidates.omega[wanted])  # q is real: Q(-Ω) = conj Q(Ω)
-        wanted = np.union1d(wanted, mirror[mirror >= 0])
+        chosen = np.zeros(len(candidates), dtype=bool)  # wanted ∪ mirror, ascending (np.union1d imports numpy.ma)
+        chosen[wanted] = True
+        chosen[mirror[mirror >= 0]] = True
+        wanted = np.flatnonzero(chosen)
         if len(wanted) == 0:
             break
         harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
