@@ -85,7 +85,7 @@ class Rotor:
         s1, c1, s2, c2 = np.sin(self.delta1), np.cos(self.delta1), np.sin(self.delta2), np.cos(self.delta2)
         t1 = np.array([s1, -c1, 0.0])
         t2 = np.array([c1 * c2, s1 * c2, -s2])
-        return t1, t2, np.cross(t1, t2)
+        return t1, t2, np.array([c1 * s2, s1 * s2, c2])  # t1 × t2
 
     def eccentric_phasor(self) -> np.ndarray:
         """λ with L(t) = λ e^{iφ} + conj: λ = l (t1 - i t2) e^{iφ0} / 2 [m]."""
@@ -154,8 +154,8 @@ def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
 
 def spring_stiffness(platform: RigidPlatform) -> np.ndarray:
     """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m]."""
-    T = np.concatenate([np.broadcast_to(np.eye(3), (4, 3, 3)), -skews(platform.corners)], axis=2)
-    return np.einsum("iak,ia,ial->kl", T, np.asarray(platform.stiffness, dtype=float), T)
+    T = np.concatenate([np.broadcast_to(np.eye(3), (4, 3, 3)), -skews(platform.corners)], axis=2).reshape(12, 6)
+    return T.T @ (np.asarray(platform.stiffness, dtype=float).reshape(12, 1) * T)
 
 
 # ---- trigonometric polynomials of one rotor: arrays over the offsets -2..2 of its angle ----
@@ -322,7 +322,7 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
     stiff[0] += springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
     by_key = np.lexsort(keys.T[::-1])
     S_mean = S_tot[0].real
-    static = np.concatenate([[0.0, 0.0, -M_sigma * platform.g], -platform.g * np.cross(S_mean, E3)])
+    static = np.array([0.0, 0.0, -M_sigma * platform.g, -platform.g * S_mean[1], platform.g * S_mean[0], 0.0])  # -g S × e3
     return PeriodicSystem(
         speeds, keys, mass, gyro, stiff, keys[by_key], F[by_key],
         springs, platform.eta, platform.beta, static,
