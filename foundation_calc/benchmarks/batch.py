@@ -24,15 +24,16 @@ from foundation_calc.benchmarks.processes import ProcessRun, bytecode_env, run_p
 
 @dataclass(frozen=True)
 class BatchRow:
-    """One ``fcalc check`` command line: scenes, jobs and its median measurements."""
+    """One ``fcalc check`` command line: scenes, jobs and its median measurements (seconds), the
+    largest peaks over its runs (bytes; see :class:`~foundation_calc.benchmarks.processes.ProcessRun`)."""
 
     label: str
     scenes: int
     jobs: int
     seconds: float
     cpu_seconds: float
-    peak_bytes: int
-    tree_peak_bytes: int | None
+    peak_bytes_largest_process: int
+    peak_bytes_all_processes: int | None
     runs: int
 
 
@@ -44,7 +45,9 @@ class BatchBenchmark:
     ----------
     one, many, many_two_jobs, large : the rows (``large`` None when not run)
     marginal_seconds : (t(N) - t(1)) / (N - 1), one job: what one more platform scene costs [s]
+    marginal_cpu_seconds : the same in CPU time, which other work on the machine disturbs less [s]
     many_over_one : t(N) / t(1), one job [-]
+    cpu_many_over_one : the same in CPU time [-]
     many_two_jobs_over_one : t(N) with two jobs / t(1) [-]
     jobs_speedup : t(N, one job) / t(N, two jobs) [-]
     """
@@ -59,8 +62,16 @@ class BatchBenchmark:
         return (self.many.seconds - self.one.seconds) / (self.many.scenes - 1)
 
     @property
+    def marginal_cpu_seconds(self) -> float:
+        return (self.many.cpu_seconds - self.one.cpu_seconds) / (self.many.scenes - 1)
+
+    @property
     def many_over_one(self) -> float:
         return self.many.seconds / self.one.seconds
+
+    @property
+    def cpu_many_over_one(self) -> float:
+        return self.many.cpu_seconds / self.one.cpu_seconds
 
     @property
     def many_two_jobs_over_one(self) -> float:

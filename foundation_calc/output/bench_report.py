@@ -94,31 +94,18 @@ def _truncation_document(truncation) -> dict | None:
     }
 
 
-def _batch_row_document(row) -> dict | None:
-    if row is None:
-        return None
-    return {
-        "label": row.label,
-        "scenes": row.scenes,
-        "jobs": row.jobs,
-        "seconds": row.seconds,
-        "cpu_seconds": row.cpu_seconds,
-        "peak_bytes_largest_process": row.peak_bytes,
-        "peak_bytes_all_processes": row.tree_peak_bytes,
-        "runs": row.runs,
-    }
-
-
 def _batch_document(batch) -> dict | None:
     if batch is None:
         return None
+    from dataclasses import asdict
+
+    rows = {"one": batch.one, "many": batch.many, "many_two_jobs": batch.many_two_jobs, "large": batch.large}
     return {
-        "one": _batch_row_document(batch.one),
-        "many": _batch_row_document(batch.many),
-        "many_two_jobs": _batch_row_document(batch.many_two_jobs),
-        "large": _batch_row_document(batch.large),
+        **{key: None if row is None else asdict(row) for key, row in rows.items()},
         "marginal_seconds_per_platform_scene": batch.marginal_seconds,
+        "marginal_cpu_seconds_per_platform_scene": batch.marginal_cpu_seconds,
         "ratio_many_to_one": batch.many_over_one,
+        "cpu_ratio_many_to_one": batch.cpu_many_over_one,
         "ratio_many_two_jobs_to_one": batch.many_two_jobs_over_one,
         "speedup_two_jobs": batch.jobs_speedup,
     }
@@ -252,15 +239,17 @@ def _batch_tables(batch):
         rows.add_column(name, justify="left" if name == "scenes" else "right")
     for row in (batch.one, batch.many, batch.many_two_jobs, batch.large):
         if row is not None:
-            tree = "-" if row.tree_peak_bytes is None else bytes_text(row.tree_peak_bytes)
+            tree = "-" if row.peak_bytes_all_processes is None else bytes_text(row.peak_bytes_all_processes)
             rows.add_row(Text(row.label), str(row.jobs), seconds_text(row.seconds), seconds_text(row.cpu_seconds),
-                         bytes_text(row.peak_bytes), tree)
+                         bytes_text(row.peak_bytes_largest_process), tree)
     n = batch.many.scenes
     ratios = Table(title="Batch: ratios measured in this run", title_justify="left")
     ratios.add_column("figure")
     ratios.add_column("value", justify="right")
     ratios.add_row(f"marginal cost of a platform scene, (t({n}) - t(1))/{n - 1}, 1 job", seconds_text(batch.marginal_seconds))
+    ratios.add_row("the same in CPU time, 1 job", seconds_text(batch.marginal_cpu_seconds))
     ratios.add_row(f"t({n} scenes) / t(1 scene), 1 job", f"{batch.many_over_one:.2f}")
+    ratios.add_row("the same in CPU time, 1 job", f"{batch.cpu_many_over_one:.2f}")
     ratios.add_row(f"t({n} scenes) / t(1 scene), 2 jobs", f"{batch.many_two_jobs_over_one:.2f}")
     ratios.add_row(f"t({n} scenes, 1 job) / t({n} scenes, 2 jobs)", f"{batch.jobs_speedup:.2f}")
     return rows, ratios
