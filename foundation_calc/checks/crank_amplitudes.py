@@ -20,19 +20,23 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone
+from foundation_calc.checks.limits import QUANTITIES, exceeds, limit_key, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.units import rpm_from_omega
 from foundation_calc.solvers.crank.response import (
     DIRECTIONS,
     DOFS,
     PeriodicMotion,
     Peaks,
+    Rms,
     motion_peaks,
     point_peaks,
+    point_rms,
     relative_error,
 )
 
@@ -51,7 +55,8 @@ class Approximation:
     """One approximation of the steady state.
 
     ``motion`` is None when ``resonant``; ``peaks`` has x, y, θ on its arrays' last axis;
-    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks.
+    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks, ``rms`` to its
+    (horizontal, vertical) RMS values.
     """
 
     key: str
@@ -61,6 +66,7 @@ class Approximation:
     nearest: str
     peaks: Peaks | None
     points: dict
+    rms: dict
 
     @property
     def title(self) -> str:
@@ -74,7 +80,7 @@ class Approximation:
 
 @dataclass(frozen=True)
 class LimitRow:
-    """A peak of one point, direction and quantity against its limit (SI units)."""
+    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
 
     point: str
     direction: str
@@ -86,6 +92,44 @@ class LimitRow:
     @property
     def ratio(self) -> float:
         return self.value / self.limit
+
+    @property
+    def source(self) -> str:
+        return f"scene [limits] {limit_key(self.quantity)}"
+
+
+@dataclass(frozen=True)
+class CodeRow:
+    """The zone of one point's RMS velocity in a code's table.
+
+    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s]; the larger
+    one (``governing``) gives the zone. ``limit``: the boundary over which the design fails [m/s].
+    """
+
+    point: str
+    horizontal: float
+    vertical: float
+    governing: str
+    zone: str
+    table: ZoneTable
+    limit: float
+    outcome: Outcome
+
+    @property
+    def value(self) -> float:
+        return max(self.horizontal, self.vertical)
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    @property
+    def verdict_text(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid: zone C, 3.1 mm/s RMS > 2.8"`` (mm/s, the code's unit)."""
+        i = ZONES.index(self.zone)
+        mm_s = f"{self.value * 1e3:.3g} mm/s RMS"
+        bound = f"> {self.table.boundaries_mm_s[i - 1]:g}" if i else f"<= {self.table.boundaries_mm_s[0]:g}"
+        return f"{self.table.title}: zone {self.zone}, {mm_s} {bound} ({self.governing})"
 
 
 @dataclass(frozen=True)
@@ -107,6 +151,8 @@ class AmplitudeReport:
     rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
+    code_rows: tuple[CodeRow, ...] = ()
+    code_warnings: tuple[str, ...] = ()
 
     @property
     def resonant(self) -> bool:
@@ -116,31 +162,34 @@ class AmplitudeReport:
     def outcome(self) -> Outcome:
         if self.resonant:
             return Outcome.FAIL
-        return worst(row.outcome for row in self.rows)
+        noted = (Outcome.WARN,) if self.code_warnings else ()
+        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted))
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
 POINT_CHUNK = 1024
 
 
-def _located(motion, points) -> dict[str, Peaks]:
-    """Peaks of C and of every point, all points of a chunk in one array operation."""
+def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
+    """Peaks and RMS values of C and of every point, all points of a chunk in one array operation."""
     names = ["C", *(p.name for p in points)]
     horizontal = np.array([0.0, *(p.horizontal for p in points)])
     height = np.array([0.0, *(p.height for p in points)])
-    located = {}
+    located, rms = {}, {}
     for start in range(0, len(names), POINT_CHUNK):
         chunk = slice(start, start + POINT_CHUNK)
         pk = point_peaks(motion, horizontal[chunk], height[chunk])
+        rm = point_rms(motion, horizontal[chunk], height[chunk])
         for i, name in enumerate(names[chunk]):
             located[name] = Peaks(pk.displacement[i], pk.velocity[i], pk.acceleration[i])
-    return located
+            rms[name] = Rms(rm.displacement[i], rm.velocity[i], rm.acceleration[i])
+    return located, rms
 
 
 def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
     if resonant:
-        return Approximation(key, None, True, margin, nearest, None, {})
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), _located(motion, points))
+        return Approximation(key, None, True, margin, nearest, None, {}, {})
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points))
 
 
 def _first(design: CrankDesign, points) -> Approximation:
@@ -190,12 +239,47 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     if approx.resonant:
         return ()
     for quantity, limit in limited_quantities(limits).items():
-        for name, pk in approx.points.items():
+        statistic, field = (approx.rms, quantity[:-4]) if quantity.endswith("_rms") else (approx.points, quantity)
+        for name, values in statistic.items():
             for i, direction in enumerate(DIRECTIONS):
-                value = float(getattr(pk, quantity)[i])
+                value = float(getattr(values, field)[i])
                 outcome = Outcome.FAIL if exceeds(value, limit) else Outcome.PASS
                 rows.append(LimitRow(name, direction, quantity, value, limit, outcome))
     return tuple(rows)
+
+
+def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
+    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
+
+    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
+    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
+    """
+    i = ZONES.index(zone_name)
+    if acceptable is None:
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
+    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+
+
+def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
+    """Zone of every point's RMS velocity in the scene's code table, and why the code may not apply."""
+    code = getattr(limits, "code", None)
+    if code is None:
+        return (), ()
+    table = TABLES[code, limits.machine_group, limits.foundation]
+    power = None if limits.machine_power is None else limits.machine_power / 1e3
+    notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
+    if approx.resonant:
+        return (), notes
+    highest = limits.acceptable_zone or "B"  # zone B warns by default: C is the first that fails
+    limit = table.boundaries[ZONES.index(highest)]
+    rows = []
+    for name, values in approx.rms.items():
+        horizontal, vertical = (float(v) for v in values.velocity)
+        governing = "horizontal" if horizontal >= vertical else "vertical"
+        z = zone(max(horizontal, vertical), table)
+        rows.append(CodeRow(name, horizontal, vertical, governing, z, table, limit, zone_outcome(z, limits.acceptable_zone)))
+    return tuple(rows), notes
 
 
 def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -> AmplitudeReport:
@@ -230,6 +314,7 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator")
         }
+    code_rows, code_warnings = _code_rows(approximations[checked], limits, design.omega)
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -237,7 +322,9 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         rows=_rows(approximations[checked], limits),
         exact_info=info,
         errors=errors,
+        code_rows=code_rows,
+        code_warnings=code_warnings,
     )
 
 
-__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "LimitRow", "check_amplitudes"]
+__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "CodeRow", "LimitRow", "check_amplitudes", "zone_outcome"]

@@ -7,6 +7,7 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -48,7 +49,42 @@ def _approximation_document(approx: Approximation) -> dict:
         name: {d: {q: float(getattr(pk, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
         for name, pk in approx.points.items()
     }
+    doc["points_rms"] = {
+        name: {d: {q: float(getattr(rm, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
+        for name, rm in approx.rms.items()
+    }
     return doc
+
+
+def code_document(report: AmplitudeReport, limits) -> dict | None:
+    """The ``code`` part of the JSON documents: the table used, its zones per point, warnings."""
+    if getattr(limits, "code", None) is None:
+        return None
+    rows = report.code_rows
+    table = rows[0].table if rows else None
+    return {
+        "code": limits.code,
+        "machine_group": limits.machine_group,
+        "foundation": limits.foundation,
+        "acceptable_zone": limits.acceptable_zone,
+        "clause": table.clause if table else None,
+        "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
+        "points": [
+            {
+                "point": row.point,
+                "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
+                "governing": row.governing,
+                "value": row.value,
+                "zone": row.zone,
+                "limit": row.limit,
+                "ratio": row.ratio,
+                "verdict": row.outcome.value,
+                "reason": row.verdict_text,
+            }
+            for row in rows
+        ],
+        "warnings": list(report.code_warnings),
+    }
 
 
 def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
@@ -75,9 +111,11 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
                 "limit": row.limit,
                 "ratio": row.ratio,
                 "verdict": row.outcome.value,
+                "source": row.source,
             }
             for row in report.rows
         ],
+        "code": code_document(report, scene.limits),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:
@@ -149,13 +187,30 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
 
 def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
-    for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
-        table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
+    for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
+        table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
     for row in report.rows:
-        shown = DISPLAY_QUANTITY[row.quantity]
+        shown = display_quantity(row.quantity)
         table.add_row(
             Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
             f"{row.ratio:.3f}", verdict_text(row.outcome.value),
+        )
+    return table
+
+
+def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    rows = report.code_rows
+    t = rows[0].table
+    bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
+    table = Table(
+        title=f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s)", title_justify="left"
+    )
+    for col in ("point", "horizontal", "vertical", "governs", "zone", "fails over", "verdict"):
+        table.add_column(col, justify="right" if col in ("horizontal", "vertical", "fails over") else "left")
+    for row in rows:
+        table.add_row(
+            Text(row.point), units.show("velocity", row.horizontal), units.show("velocity", row.vertical),
+            row.governing, row.zone, units.show("velocity", row.limit), verdict_text(row.outcome.value),
         )
     return table
 
@@ -165,13 +220,16 @@ def summary_line(report: AmplitudeReport) -> str:
     if report.resonant:
         where = "exactly at the speed" if approx.margin == 0 else f"{approx.margin:.3g} (relative) from the speed"
         return f"{verdict_text('fail')}: resonant — {approx.nearest} is {where}; no steady state without damping"
-    if not report.rows:
+    if not report.rows and not report.code_rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
-    top = max(report.rows, key=lambda r: r.ratio)
-    return (
-        f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
-        f" ({escape(top.point)}, {top.direction} {top.quantity})"
-    )
+    parts = []
+    if report.rows:
+        top = max(report.rows, key=lambda r: r.ratio)
+        parts.append(f"largest value/limit {top.ratio:.3f} ({escape(top.point)}, {top.direction} {top.quantity})")
+    if report.code_rows:
+        top = max(report.code_rows, key=lambda r: r.ratio)
+        parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
+    return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 
 def print_amplitudes_report(
@@ -198,4 +256,8 @@ def print_amplitudes_report(
         out.print(_points_table(report, units))
     if report.rows:
         out.print(_limits_table(report, units))
+    if report.code_rows:
+        out.print(_code_table(report, units))
+    for warning in report.code_warnings:
+        out.print(Text(f"warning: {warning}", style="yellow"))
     out.print(summary_line(report))

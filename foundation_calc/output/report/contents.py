@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, Sheet, table
@@ -200,9 +201,8 @@ def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
         )
         for r in res["resonances"]
     ]
-    shown = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
     for row in amp["limits"]:
-        q = shown[row["quantity"]]
+        q = display_quantity(row["quantity"])
         rows.append(
             (
                 f"{row['point']} {row['direction']} {row['quantity']}",
@@ -210,7 +210,19 @@ def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
                 f"≤ {num(units.convert(q, row['limit']))} {units.label(q)}",
                 num(row["ratio"], 4),
                 row["verdict"].upper(),
-                f"scene [limits] {q}",
+                row["source"],
+            )
+        )
+    code = amp.get("code")
+    for row in (code or {}).get("points", ()):
+        rows.append(
+            (
+                f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
+                f"{num(units.convert('velocity', row['value']))} {units.label('velocity')}",
+                f"≤ {num(units.convert('velocity', row['limit']))} {units.label('velocity')}",
+                num(row["ratio"], 4),
+                row["verdict"].upper(),
+                f"{code['code']}, group {code['machine_group']}, {code['foundation']} ({code['clause']})",
             )
         )
     checks = table(

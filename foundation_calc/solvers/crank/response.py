@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.numerics.trig_series import analyse, derivative, peak, sample
+from foundation_calc.solvers.numerics.trig_series import analyse, derivative, peak, rms, sample
 
 #: Degrees of freedom in the order of the first axis of :class:`PeriodicMotion` arrays.
 DOFS = ("x", "y", "theta")
@@ -60,6 +60,27 @@ def peaks(cos, sin, omega) -> Peaks:
     )
 
 
+@dataclass(frozen=True)
+class Rms:
+    """RMS over one revolution of a displacement, its velocity and acceleration, the mean left out.
+
+    Arrays of the shape of the signals' leading dimensions [m, m/s, m/s²] (rad for θ).
+    """
+
+    displacement: object
+    velocity: object
+    acceleration: object
+
+
+def rms_values(cos, sin, omega) -> Rms:
+    """RMS of a series and of its first two time derivatives (see :func:`trig_series.rms`)."""
+    return Rms(
+        displacement=rms(cos, sin),
+        velocity=rms(*derivative(cos, sin, omega, 1)),
+        acceleration=rms(*derivative(cos, sin, omega, 2)),
+    )
+
+
 def motion_peaks(motion: PeriodicMotion) -> Peaks:
     """Peaks of x, y, θ (last axis of the result's arrays: x, y, θ)."""
     return peaks(motion.cos, motion.sin, np.asarray(motion.omega)[..., None])
@@ -91,6 +112,12 @@ def point_peaks(motion: PeriodicMotion, horizontal, height) -> Peaks:
     return peaks(cos, sin, np.asarray(motion.omega)[..., None])
 
 
+def point_rms(motion: PeriodicMotion, horizontal, height) -> Rms:
+    """RMS values of a point's horizontal and vertical motion (last axis: horizontal, vertical)."""
+    cos, sin = point_series(motion, horizontal, height)
+    return rms_values(cos, sin, np.asarray(motion.omega)[..., None])
+
+
 def relative_error(approx, exact):
     """|approx - exact| / |exact| [-] (arrays or complex); 0 where both are 0."""
     diff = np.abs(np.asarray(approx) - np.asarray(exact))
@@ -103,9 +130,12 @@ __all__ = [
     "DOFS",
     "PeriodicMotion",
     "Peaks",
+    "Rms",
     "motion_peaks",
     "peaks",
     "point_peaks",
+    "point_rms",
     "point_series",
     "relative_error",
+    "rms_values",
 ]
