@@ -26,8 +26,8 @@ from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, load_conditions, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.units import rpm_from_omega
 from foundation_calc.solvers.crank.response import (
     DIRECTIONS,
     DOFS,
@@ -38,7 +38,9 @@ from foundation_calc.solvers.crank.response import (
     point_peaks,
     point_rms,
     relative_error,
+    superpose,
 )
+from foundation_calc.units import rpm_from_omega
 
 #: Harmonics whose coefficients are reported and compared (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("y", 3), ("y", 4), ("x", 1), ("x", 2), ("x", 3), ("theta", 1), ("theta", 2), ("theta", 3))
@@ -47,7 +49,11 @@ TITLES = {
     "first_approximation": "paper's first approximation, corrected (Eqs. 4.11-4.14)",
     "averaged_operator": "closed form: averaged operator, exact forcing",
     "exact": "exact periodic solution (harmonic balance)",
+    "loads": "vendor loads: linear steady state of the block (K - n²ω²M + i nωC) Z = F",
 }
+
+#: Appended to the title of a mechanism's approximation when the scene's [[loads]] are added to it.
+WITH_LOADS = " + vendor loads (linear)"
 
 
 @dataclass(frozen=True)
@@ -67,10 +73,11 @@ class Approximation:
     peaks: Peaks | None
     points: dict
     rms: dict
+    with_loads: bool = False
 
     @property
     def title(self) -> str:
-        return TITLES[self.key]
+        return TITLES[self.key] + (WITH_LOADS if self.with_loads and self.key != "loads" else "")
 
     def harmonic(self, dof: str, n: int) -> complex:
         """Complex coefficient cos - i sin of harmonic n of ``dof`` (0 when absent)."""
@@ -144,8 +151,19 @@ class ExactInfo:
 
 
 @dataclass(frozen=True)
+class VendorLoads:
+    """A scene's ``[[loads]]`` with the block they act on and the speed ω [rad/s]."""
+
+    block: RigidBlock
+    loads: HarmonicLoads
+    omega: float
+
+
+@dataclass(frozen=True)
 class AmplitudeReport:
-    design: CrankDesign
+    """``design`` is None for a machine given by its loads only (``vendor`` then holds them)."""
+
+    design: CrankDesign | None
     approximations: dict
     checked: str
     rows: tuple[LimitRow, ...]
@@ -153,6 +171,12 @@ class AmplitudeReport:
     errors: dict | None
     code_rows: tuple[CodeRow, ...] = ()
     code_warnings: tuple[str, ...] = ()
+    vendor: VendorLoads | None = None
+
+    @property
+    def omega(self) -> float:
+        """The speed [rad/s]."""
+        return self.design.omega if self.design is not None else self.vendor.omega
 
     @property
     def resonant(self) -> bool:
@@ -186,28 +210,53 @@ def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
     return located, rms
 
 
-def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
+@dataclass(frozen=True)
+class _LoadsPart:
+    """The loads' steady state, added to each approximation of a mechanism (linear superposition)."""
+
+    motion: PeriodicMotion
+    resonant: bool
+    margin: float
+    nearest: str
+
+
+def _loads_part(vendor: VendorLoads) -> _LoadsPart:
+    res = loads_response(vendor.block, vendor.omega, vendor.loads)
+    n, mode, _ = load_conditions(vendor.loads)[int(res.nearest)]
+    label = f"{n if n > 1 else ''}ω = {mode} (loads)"
+    return _LoadsPart(res.motion, bool(res.resonant), float(res.margin), label)
+
+
+def _approximation(key, motion, resonant, margin, nearest, points, loads: _LoadsPart | None = None) -> Approximation:
+    if loads is not None:
+        if loads.margin < margin:
+            margin, nearest = loads.margin, loads.nearest
+        resonant = resonant or loads.resonant
+        if not resonant:
+            motion = loads.motion if motion is None else superpose(motion, loads.motion)
+    with_loads = loads is not None
     if resonant:
-        return Approximation(key, None, True, margin, nearest, None, {}, {})
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points))
+        return Approximation(key, None, True, margin, nearest, None, {}, {}, with_loads)
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points), with_loads)
 
 
-def _first(design: CrankDesign, points) -> Approximation:
+def _first(design: CrankDesign, points, loads=None) -> Approximation:
     fa = design_first_approximation(design)
     label = min(fa.margins, key=lambda k: fa.margins[k])
     return _approximation(
-        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points
+        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points,
+        loads,
     )
 
 
-def _averaged(design: CrankDesign, points) -> Approximation:
+def _averaged(design: CrankDesign, points, loads=None) -> Approximation:
     res = averaged_response(design)
     n, mode = res.nearest
     w = float(res.natural[mode])
     zero, _ = design_frequencies(design)  # name the averaged mode after the nearest k0, p1, p2
     name = min(("k0", "p1", "p2"), key=lambda k: abs(float(getattr(zero, k)) - w))
     label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
-    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points)
+    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads)
 
 
 def _errors(approx: Approximation, exact: Approximation) -> dict | None:
@@ -282,11 +331,15 @@ def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeR
     return tuple(rows), notes
 
 
-def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -> AmplitudeReport:
+def check_amplitudes(
+    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None
+) -> AmplitudeReport:
     """Amplitudes of ``design`` by every approximation asked for, and the limit rows.
 
-    ``limits``: an object with ``amplitude``, ``velocity``, ``acceleration`` [m, m/s, m/s²] or
-    None; ``points``: objects with ``name``, ``horizontal``, ``height`` [m].
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²], a code) or None;
+    ``points``: objects with ``name``, ``horizontal``, ``height`` [m]. ``vendor``: the scene's
+    ``[[loads]]``, whose linear steady state is added to every approximation of the mechanism,
+    or is the only one (``"loads"``) when ``design`` is None.
 
     Raises
     ------
@@ -295,10 +348,20 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
     ConvergenceError
         ``exact`` and the harmonic balance fails (away from the averaged operator's resonances).
     """
-    approximations = {"first_approximation": _first(design, points), "averaged_operator": _averaged(design, points)}
-    checked = "averaged_operator"
+    loads = None if vendor is None else _loads_part(vendor)
     info = errors = None
-    if exact and not approximations["averaged_operator"].resonant:
+    if design is None:
+        approximations = {"loads": _approximation("loads", None, False, loads.margin, loads.nearest, points, loads)}
+        checked = "loads"
+        omega = vendor.omega
+    else:
+        omega = design.omega
+        approximations = {
+            "first_approximation": _first(design, points, loads),
+            "averaged_operator": _averaged(design, points, loads),
+        }
+        checked = "averaged_operator"
+    if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
 
         from foundation_calc.solvers.crank.exact import exact_periodic_solution
@@ -308,13 +371,13 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         seconds = time.perf_counter() - start
         info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds)
         averaged = approximations["averaged_operator"]
-        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points)
+        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points, loads)
         checked = "exact"
         errors = {
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator")
         }
-    code_rows, code_warnings = _code_rows(approximations[checked], limits, design.omega)
+    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega)
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -324,7 +387,31 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         errors=errors,
         code_rows=code_rows,
         code_warnings=code_warnings,
+        vendor=vendor,
     )
 
 
-__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "CodeRow", "LimitRow", "check_amplitudes", "zone_outcome"]
+def scene_vendor_loads(scene) -> VendorLoads | None:
+    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads."""
+    loads = scene.harmonic_loads()
+    return None if loads is None else VendorLoads(scene.block(), loads, scene.speed.omega_rad_s)
+
+
+def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    design = None if scene.mechanism is None else scene.design()
+    return check_amplitudes(design, scene.limits, scene.points, exact=exact, vendor=scene_vendor_loads(scene))
+
+
+__all__ = [
+    "RESONANT_MARGIN",
+    "AmplitudeReport",
+    "Approximation",
+    "CodeRow",
+    "LimitRow",
+    "VendorLoads",
+    "check_amplitudes",
+    "check_scene_amplitudes",
+    "scene_vendor_loads",
+    "zone_outcome",
+]

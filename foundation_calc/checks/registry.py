@@ -51,11 +51,11 @@ class Finding:
 
 def crank_resonance(scene) -> Finding:
     """Margin of the crank speed from every resonance (``fcalc resonance``)."""
-    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
 
-    report = check_resonances(scene.design(), scene.limits.detuning)
+    report = check_scene_resonances(scene)
     near = report.nearest
-    speed = ("speed", report.design.omega)
+    speed = ("speed", report.omega)
     values = {"speed": speed}
     if report.outcome is Outcome.PASS:
         values["critical"] = critical = ("speed", near.critical_zero_order)
@@ -73,12 +73,12 @@ def crank_resonance(scene) -> Finding:
 def crank_amplitudes(scene) -> Finding:
     """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
     zones of a vibration code (``fcalc amplitudes``)."""
-    from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.limits import display_quantity
 
-    report = check_amplitudes(scene.design(), scene.limits, scene.points)
+    report = check_scene_amplitudes(scene)
     approx = report.approximations[report.checked]
-    speed = ("speed", report.design.omega)
+    speed = ("speed", report.omega)
     values = {"speed": speed}
     if report.resonant:
         reason = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state",)

@@ -27,7 +27,7 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
     closed forms' relative errors. Fails (exit 1) when a peak exceeds [limits] amplitude, velocity
     or acceleration, or when the speed is resonant.
     """
-    from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.output import crank_amplitudes as report_out
     from foundation_calc.scenes import load_scene
@@ -35,7 +35,7 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
     shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
-    report = check_amplitudes(loaded.design(), loaded.limits, loaded.points, exact=exact)
+    report = check_scene_amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json
 

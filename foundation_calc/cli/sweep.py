@@ -110,7 +110,10 @@ def sweep(
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    report = run_sweep(loaded.design(), variable, values, loaded.limits, loaded.limits.detuning, points)
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+
+    design = None if loaded.mechanism is None else loaded.design()
+    report = run_sweep(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
     if csv is not None:
         from foundation_calc.output.files import write_atomically
 

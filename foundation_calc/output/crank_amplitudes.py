@@ -21,7 +21,8 @@ DISPLAY_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "accele
 FIRST_KEYS = (("y", 1, "cos"), ("y", 2, "cos"), ("x", 1, "sin"), ("x", 3, "sin"), ("theta", 1, "sin"), ("theta", 3, "sin"))
 
 
-def _approximation_document(approx: Approximation) -> dict:
+def _approximation_document(approx: Approximation, harmonics: int = 5) -> dict:
+    """One approximation's part of the JSON document: harmonics 0 ... ``harmonics`` - 1."""
     doc = {
         "title": approx.title,
         "resonant": approx.resonant,
@@ -40,7 +41,7 @@ def _approximation_document(approx: Approximation) -> dict:
             "sin": float(approx.motion.coefficient(dof, n)[1]),
             "magnitude": abs(approx.harmonic(dof, n)),
         }
-        for dof, n in ((d, n) for d in DOFS for n in range(0, 5))
+        for dof, n in ((d, n) for d in DOFS for n in range(0, harmonics))
     }
     doc["peaks"] = {
         dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
@@ -87,21 +88,47 @@ def code_document(report: AmplitudeReport, limits) -> dict | None:
     }
 
 
+def loads_document(vendor) -> dict:
+    """The scene's loads as generalised forces about C (Q_x, Q_y [N], Q_θ [N m]) and the block's matrices."""
+    from foundation_calc.solvers.crank.loads import matrices
+
+    q = vendor.loads.generalized()
+    M, K, C = matrices(vendor.block)
+    return {
+        "model": "(K - n²ω²M + i nωC) Z_n = Σ Q e^{iφ}; loads F cos(nωt + φ); Q_θ = H F_x + u F_y + M",
+        "generalized_forces": [
+            {"order": int(n), "x": {"re": v[0].real, "im": v[0].imag}, "y": {"re": v[1].real, "im": v[1].imag},
+             "theta": {"re": v[2].real, "im": v[2].imag}}
+            for n, v in zip(vendor.loads.order, q)
+        ],
+        "mass_matrix": M.tolist(),
+        "stiffness_matrix": K.tolist(),
+        "damping_matrix": C.tolist(),
+    }
+
+
 def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc amplitudes`` (every number SI)."""
     d = report.design
+    shown = 5 if report.vendor is None else max(5, int(report.vendor.loads.order.max()) + 1)
+    derived = (
+        {"total_mass": report.vendor.block.M_tot}
+        if d is None
+        else {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m}
+    )
     doc = {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "amplitudes",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
-        "derived": {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m},
+        "speed": {**speed_triplet(report.omega), "given_as": scene.speed.speed_given_as},
+        "derived": derived,
+        "loads": None if report.vendor is None else loads_document(report.vendor),
         "conventions": "y positive downward; theta turns +x toward +y; x, y of the centre of mass C;"
         " a point's displacement is the rigid-body motion X + (R(theta) - I)(horizontal, -height),"
         " to first order (x + height·theta, y + horizontal·theta)",
         "resonant_margin": RESONANT_MARGIN,
         "checked_with": report.checked,
-        "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
+        "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
         "limits": [
             {
                 "point": row.point,
@@ -132,36 +159,46 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
 
 
 def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
-    table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
+    # a mechanism alone moves y as cosines and x, θ as sines; loads bring both parts: show magnitudes
+    signed = report.vendor is None
+    title = "signed coefficient of cos nωt for y, of sin nωt for x and θ" if signed else "magnitude of each harmonic"
+    table = Table(title=f"Harmonics ({title})", title_justify="left")
     table.add_column("harmonic")
     shown = [a for a in report.approximations.values()]
+    harmonics = HARMONICS
+    if not signed:
+        extra = sorted({int(n) for n in report.vendor.loads.order} - {n for _, n in HARMONICS})
+        harmonics = tuple(sorted(HARMONICS + tuple((dof, n) for dof in DOFS for n in extra), key=lambda h: (DOFS.index(h[0]), h[1])))
+
+    def value_of(a, dof, n):
+        return float(a.motion.coefficient(dof, n)[0 if dof == "y" else 1]) if signed else abs(a.harmonic(dof, n))
+
     for a in shown:
         table.add_column(a.key.replace("_", " "), justify="right")
     if report.errors:
         for key in report.errors:
             table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
     scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
-        (a.key, dof): max(abs(float(a.motion.coefficient(dof, k)[0 if dof == "y" else 1])) for d, k in HARMONICS if d == dof)
+        (a.key, dof): max(abs(value_of(a, dof, k)) for d, k in harmonics if d == dof)
         for a in shown
         if not a.resonant
         for dof in DOFS
     }
-    for dof, n in HARMONICS:
-        part = 0 if dof == "y" else 1
+    for dof, n in harmonics:
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
         cells = [f"{dof}{n} \\[{unit}]"]
         for a in shown:
             if a.resonant:
                 cells.append("resonant")
                 continue
-            value = float(a.motion.coefficient(dof, n)[part])
+            value = value_of(a, dof, n)
             scale = scales[a.key, dof]
             if dof != "theta":
                 value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
             cells.append(fmt_scaled(value, scale, 6))
         if report.errors:
             for err in report.errors.values():
-                cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")
+                cells.append("-" if err is None else f"{err['harmonics'].get(f'{dof}{n}', 0.0):.2e}")
         table.add_row(*cells)
     return table
 
@@ -236,11 +273,12 @@ def print_amplitudes_report(
     report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits()
 ) -> None:
     """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI)."""
-    d = report.design
+    d, w = report.design, report.omega
     out = stdout()
+    machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
     out.print(
-        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
-        f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
+        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', w)} = {fmt(rpm_from_omega(w))} rpm,"
+        f" {machine}; y positive downward"
     )
     for a in report.approximations.values():
         note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"

@@ -118,6 +118,17 @@ def point_rms(motion: PeriodicMotion, horizontal, height) -> Rms:
     return rms_values(cos, sin, np.asarray(motion.omega)[..., None])
 
 
+def superpose(a: PeriodicMotion, b: PeriodicMotion) -> PeriodicMotion:
+    """The sum of two periodic motions at the same speed (linear superposition), harmonics padded
+    to the longer series."""
+    K = max(a.cos.shape[-1], b.cos.shape[-1])
+
+    def padded(c):
+        return np.concatenate([c, np.zeros(c.shape[:-1] + (K - c.shape[-1],))], axis=-1)
+
+    return PeriodicMotion(a.omega, padded(a.cos) + padded(b.cos), padded(a.sin) + padded(b.sin))
+
+
 def relative_error(approx, exact):
     """|approx - exact| / |exact| [-] (arrays or complex); 0 where both are 0."""
     diff = np.abs(np.asarray(approx) - np.asarray(exact))
@@ -138,4 +149,5 @@ __all__ = [
     "point_series",
     "relative_error",
     "rms_values",
+    "superpose",
 ]
