@@ -173,9 +173,10 @@ def loads_response(block: RigidBlock, omega, loads: HarmonicLoads) -> LoadsRespo
     """Steady state of Eq. (2) at the speeds ``omega`` [rad/s] (a float or an array, which
     broadcasts with the block's fields).
 
-    A speed whose harmonic n ω lies within :data:`RESONANT_MARGIN` (relative) of an undamped
-    mode (:func:`modal_damping` zero) driven by a load of that order has no steady state: it is
-    ``resonant`` and its coefficients are NaN, never a solve of a singular matrix.
+    A speed whose harmonic n ω of a load lies within :data:`RESONANT_MARGIN` (relative) of an
+    undamped mode (:func:`modal_damping` zero) has no steady state (or, for a mode no load
+    drives, one the slightest imperfection destroys): it is ``resonant`` and its coefficients
+    are NaN, never a solve of a singular matrix.
 
     >>> block = RigidBlock(1.0, 1.0, 1.0, 1.0, 4.0, 10.0, 0.0, 0.0, 0.0, 1.0)
     >>> loads = HarmonicLoads(*(np.array([v]) for v in (1, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0)))
@@ -191,11 +192,10 @@ def loads_response(block: RigidBlock, omega, loads: HarmonicLoads) -> LoadsRespo
     modal = np.broadcast_to(modal_damping(block), shape + (3,))
     conditions = load_conditions(loads)
     margins, singular = [], []
-    for n, mode, driven in conditions:
-        i = MODES.index(mode)
+    for n, mode, _ in conditions:
         natural = np.asarray(getattr(freqs, mode))
         margins.append(np.abs(n * omega - natural) / natural)
-        singular.append(driven & (modal[..., i] <= 0.0))
+        singular.append(modal[..., MODES.index(mode)] <= 0.0)
     margins = np.stack(margins)
     resonant = ((margins < RESONANT_MARGIN) & np.stack(singular)).any(axis=0)
     nearest = np.argmin(margins, axis=0)
