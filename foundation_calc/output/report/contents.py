@@ -100,15 +100,18 @@ def _equation_section(eqs) -> Section:
 
 def _crank_derived(res: dict, units: DisplayUnits) -> Section:
     d, s = res["derived"], res["speed"]
+    named = (  # a machine given by its loads has no mechanism: μ, λ, m, κ are absent
+        ("mu", "μ = m/M_tot, moving-mass ratio", "-"),
+        ("lambda", "λ = r/l, crank-to-rod ratio", "-"),
+        ("total_mass", "M_tot, total mass", "kg"),
+        ("moving_mass", "m, moving mass", "kg"),
+        ("rho1", "ρ1 = sqrt(I_c/M_tot)", "m"),
+        ("kappa", "κ = l'l'' − ρ²", "m²"),
+        ("rocking_stability_margin", "rocking stability margin c·I1/(P·h) − 1", "-"),
+    )
     rows = (
-        ("ω, crank speed", _speed(units, s["omega"]), units.label("speed")),
-        ("μ = m/M_tot, moving-mass ratio", num(d["mu"]), "-"),
-        ("λ = r/l, crank-to-rod ratio", num(d["lambda"]), "-"),
-        ("M_tot, total mass", num(d["total_mass"]), "kg"),
-        ("m, moving mass", num(d["moving_mass"]), "kg"),
-        ("ρ1 = sqrt(I_c/M_tot)", num(d["rho1"]), "m"),
-        ("κ = l'l'' − ρ²", num(d["kappa"]), "m²"),
-        ("rocking stability margin c·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
+        ("ω, speed", _speed(units, s["omega"]), units.label("speed")),
+        *((text, num(d[key]), unit) for key, text, unit in named if key in d),
     )
     return Section("Derived quantities", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
 
@@ -123,7 +126,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     )
     rows = (
         (
-            r["condition"] + ("" if r["source"] == "paper" else " (extra)"),
+            r["condition"] + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[r["source"]],
             r["mode_name"],
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
@@ -278,7 +281,7 @@ def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figure
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
         _crank_checks(res, amp, units),
-        _equation_section(equations.CRANK),
+        _equation_section(equations.CRANK + (equations.LOADS if amp.get("loads") else ())),
         Section("Plots", figures),
         _crank_accuracy(amp),
     )
