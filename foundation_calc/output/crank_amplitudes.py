@@ -242,12 +242,13 @@ def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     table = Table(
         title=f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s)", title_justify="left"
     )
-    for col in ("point", "horizontal", "vertical", "governs", "zone", "fails over", "verdict"):
-        table.add_column(col, justify="right" if col in ("horizontal", "vertical", "fails over") else "left")
+    unit = units.label("velocity")
+    for col in ("point", f"horizontal [{unit}]", f"vertical [{unit}]", "governs", "zone", f"fails over [{unit}]", "verdict"):
+        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col else "left")
     for row in rows:
         table.add_row(
-            Text(row.point), units.show("velocity", row.horizontal), units.show("velocity", row.vertical),
-            row.governing, row.zone, units.show("velocity", row.limit), verdict_text(row.outcome.value),
+            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
+            row.governing, row.zone, fmt(units.convert("velocity", row.limit)), verdict_text(row.outcome.value),
         )
     return table
 

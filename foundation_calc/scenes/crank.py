@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING, Literal
 
 from pydantic import ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.errors import PhysicsError
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
@@ -289,9 +289,9 @@ class CrankScene(SceneModel):
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
-        if mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
+        if self.mechanism is not None and mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
             found.append(
-                f"{self.speed_section}.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
+                f"mechanism.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
                 f" machine; if you meant {mech.omega:g} rpm, write speed_rpm = {mech.omega:g}"
             )
         return found
@@ -305,11 +305,6 @@ class CrankScene(SceneModel):
         if self.mechanism is None and self.operation is None:
             raise ValueError("a machine given by its [[loads]] needs its speed: [operation] speed_rpm, omega or frequency_hz")
         return self
-
-    @property
-    def speed_section(self) -> str:
-        """The scene section that gives the speed: ``"mechanism"`` or ``"operation"``."""
-        return "mechanism" if self.mechanism is not None else "operation"
 
     @property
     def speed(self) -> SpeedFields:

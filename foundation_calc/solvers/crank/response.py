@@ -51,34 +51,24 @@ class Peaks:
     acceleration: object
 
 
+class Rms(Peaks):
+    """RMS over one revolution of a displacement, its velocity and acceleration, the mean left out
+    (fields as :class:`Peaks`)."""
+
+
+def _with_derivatives(kind, measure, cos, sin, omega):
+    """``kind(measure(q), measure(q'), measure(q''))`` of a series q."""
+    return kind(*(measure(*derivative(cos, sin, omega, order)) for order in range(3)))
+
+
 def peaks(cos, sin, omega) -> Peaks:
     """Peaks of a series and of its first two time derivatives (see :func:`trig_series.peak`)."""
-    return Peaks(
-        displacement=peak(cos, sin),
-        velocity=peak(*derivative(cos, sin, omega, 1)),
-        acceleration=peak(*derivative(cos, sin, omega, 2)),
-    )
-
-
-@dataclass(frozen=True)
-class Rms:
-    """RMS over one revolution of a displacement, its velocity and acceleration, the mean left out.
-
-    Arrays of the shape of the signals' leading dimensions [m, m/s, m/s²] (rad for θ).
-    """
-
-    displacement: object
-    velocity: object
-    acceleration: object
+    return _with_derivatives(Peaks, peak, cos, sin, omega)
 
 
 def rms_values(cos, sin, omega) -> Rms:
     """RMS of a series and of its first two time derivatives (see :func:`trig_series.rms`)."""
-    return Rms(
-        displacement=rms(cos, sin),
-        velocity=rms(*derivative(cos, sin, omega, 1)),
-        acceleration=rms(*derivative(cos, sin, omega, 2)),
-    )
+    return _with_derivatives(Rms, rms, cos, sin, omega)
 
 
 def motion_peaks(motion: PeriodicMotion) -> Peaks:
