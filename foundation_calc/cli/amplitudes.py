@@ -24,8 +24,9 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
     operator; --exact adds the exact periodic solution, checks the limits with it and reports the
-    closed forms' relative errors. Fails (exit 1) when a peak exceeds [limits] amplitude, velocity
-    or acceleration, or when the speed is resonant.
+    closed forms' relative errors. A machine given by its [[loads]] adds (or alone gives) the
+    block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits] key,
+    when a point is in zone C or D of [limits] code (ISO 10816-3), or when the speed is resonant.
     """
     from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code
@@ -35,6 +36,10 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
     shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
+    if exact and loaded.mechanism is None:
+        from foundation_calc.output.console import stderr
+
+        stderr().print("note: --exact applies to a [mechanism]; the loads' steady state is already exact for the linear model")
     report = check_scene_amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json

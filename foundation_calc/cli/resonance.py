@@ -20,7 +20,8 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     """Natural frequencies k0, p1, p2 and the margin of the crank speed from every resonance.
 
     Checks the paper's conditions ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2 (fail inside the
-    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn).
+    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn); with
+    [[loads]], n ω = k0, p1, p2 for every order n of the loads.
     """
     from foundation_calc.checks.crank_resonance import check_scene_resonances
     from foundation_calc.checks.outcomes import exit_code
