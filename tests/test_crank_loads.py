@@ -220,3 +220,17 @@ def test_shipped_vendor_loads_config_passes_every_command(runner):
         assert result.exit_code == 0, (command, result.output)
     doc = json.loads(runner.invoke(app, ["amplitudes", path, "--json"]).stdout)
     assert {p["zone"] for p in doc["code"]["points"]} == {"A"} and doc["code"]["warnings"] == []
+
+
+def test_sweep_points_equal_the_single_speed_answer(runner):
+    """A speed sweep and a soil sweep through the scene's own speed and soil give the peaks of
+    ``fcalc amplitudes`` there (the sweep's vectorised path against the single solve)."""
+    path = str(CONFIGS / "compressor_vendor_loads.toml")
+    single = json.loads(runner.invoke(app, ["amplitudes", path, "--json"]).stdout)["approximations"]["loads"]
+    speed = json.loads(runner.invoke(app, ["sweep", path, "--speed", "1400:1500:3", "--json"]).stdout)["points"][-1]
+    soil = json.loads(runner.invoke(app, ["sweep", path, "--soil", "0.5:1:3", "--json"]).stdout)["points"][-1]
+    for point in (speed, soil):
+        assert point["x_peak"] == pytest.approx(single["peaks"]["x"]["displacement"], rel=1e-12)
+        assert point["theta_peak"] == pytest.approx(single["peaks"]["theta"]["displacement"], rel=1e-12)
+        bearing = point["points"]["crankshaft bearing"]
+        assert bearing["horizontal"] == pytest.approx(single["points"]["crankshaft bearing"]["horizontal"]["displacement"], rel=1e-12)
