@@ -119,7 +119,7 @@ def print_resonance_report(
         )
     out.print(freqs)
 
-    res = Table(title="Resonances (critical crank speeds)", title_justify="left")
+    res = Table(title="Resonances (critical speeds)", title_justify="left")
     res.add_column("condition")
     res.add_column("mode")
     speed = units.label("speed")

@@ -155,7 +155,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
     fig, ax = new_figure()
     if report.variable == "omega":
         xs = np.array([units.convert("speed", w) for w in report.values])
-        ax.set_xlabel(f"crank speed [{units.label('speed')}]")
+        ax.set_xlabel(f"speed [{units.label('speed')}]")
     else:
         xs = report.values
         ax.set_xlabel("factor on the soil coefficients c_z, c_x [-]")
