@@ -9,8 +9,10 @@ Three approximations of the same periodic steady state are computed for one desi
   the closed forms' errors).
 
 The limits are checked with the best approximation computed (exact, else averaged operator),
-for the centre of mass C and every point of the scene, horizontally and vertically. A speed
-within a hair of a resonance of the checked approximation fails as "resonant" with its margin.
+for the centre of mass C and every point of the scene, horizontally and vertically. With base
+dashpots every approximation is finite at and through every resonance and is judged on its
+amplitudes; an undamped speed within a hair of a resonance of the checked approximation fails as
+"resonant" with its margin.
 """
 
 from __future__ import annotations
@@ -83,6 +85,11 @@ class Approximation:
         """Complex coefficient cos - i sin of harmonic n of ``dof`` (0 when absent)."""
         c, s = self.motion.coefficient(dof, n)
         return complex(c) - 1j * complex(s)
+
+    def phase(self, dof: str, n: int) -> float:
+        """Phase lag φ [rad] of harmonic n of ``dof``: the harmonic is A cos(nωt - φ), φ in (-π, π]."""
+        c, s = self.motion.coefficient(dof, n)
+        return float(np.arctan2(float(s), float(c)))
 
 
 @dataclass(frozen=True)
@@ -160,6 +167,19 @@ class VendorLoads:
 
 
 @dataclass(frozen=True)
+class Damping:
+    """The base dashpots of a design and the modal damping ratios they give.
+
+    ``dashpots``: C_x [N s/m], C_z [N s/m], C_phi [N m s/rad]; ``natural``: natural frequencies of
+    the averaged operator [rad/s], ascending; ``modal_ratios``: each mode's damping ratio [-].
+    """
+
+    dashpots: dict
+    natural: tuple[float, ...]
+    modal_ratios: tuple[float, ...]
+
+
+@dataclass(frozen=True)
 class AmplitudeReport:
     """``design`` is None for a machine given by its loads only (``vendor`` then holds them)."""
 
@@ -169,6 +189,7 @@ class AmplitudeReport:
     rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
+    damping: Damping | None = None
     code_rows: tuple[CodeRow, ...] = ()
     code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
@@ -177,6 +198,11 @@ class AmplitudeReport:
     def omega(self) -> float:
         """The speed [rad/s]."""
         return self.design.omega if self.design is not None else self.vendor.omega
+
+    @property
+    def damped(self) -> bool:
+        """The design has base dashpots: its response is finite at every resonance."""
+        return self.damping is not None
 
     @property
     def resonant(self) -> bool:
@@ -249,14 +275,18 @@ def _first(design: CrankDesign, points, loads=None) -> Approximation:
     )
 
 
-def _averaged(design: CrankDesign, points, loads=None) -> Approximation:
+def _averaged(design: CrankDesign, points, loads=None) -> tuple[Approximation, Damping | None]:
     res = averaged_response(design)
     n, mode = res.nearest
     w = float(res.natural[mode])
     zero, _ = design_frequencies(design)  # name the averaged mode after the nearest k0, p1, p2
     name = min(("k0", "p1", "p2"), key=lambda k: abs(float(getattr(zero, k)) - w))
     label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
-    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads)
+    damping = None
+    dashpots = {"C_x": float(design.C_x), "C_z": float(design.C_z), "C_phi": float(design.C_phi)}
+    if any(value > 0.0 for value in dashpots.values()):
+        damping = Damping(dashpots, tuple(map(float, res.natural)), tuple(map(float, res.damping_ratios)))
+    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads), damping
 
 
 def _errors(approx: Approximation, exact: Approximation) -> dict | None:
@@ -350,16 +380,15 @@ def check_amplitudes(
     """
     loads = None if vendor is None else _loads_part(vendor)
     info = errors = None
+    damping = None
     if design is None:
         approximations = {"loads": _approximation("loads", None, False, loads.margin, loads.nearest, points, loads)}
         checked = "loads"
         omega = vendor.omega
     else:
         omega = design.omega
-        approximations = {
-            "first_approximation": _first(design, points, loads),
-            "averaged_operator": _averaged(design, points, loads),
-        }
+        averaged, damping = _averaged(design, points, loads)
+        approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
         checked = "averaged_operator"
     if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
@@ -385,6 +414,7 @@ def check_amplitudes(
         rows=_rows(approximations[checked], limits),
         exact_info=info,
         errors=errors,
+        damping=damping,
         code_rows=code_rows,
         code_warnings=code_warnings,
         vendor=vendor,
@@ -408,6 +438,7 @@ __all__ = [
     "AmplitudeReport",
     "Approximation",
     "CodeRow",
+    "Damping",
     "LimitRow",
     "VendorLoads",
     "check_amplitudes",

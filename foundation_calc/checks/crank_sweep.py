@@ -3,8 +3,9 @@
 One call of the corrected first approximation on arrays (no Python object per point) gives the
 peaks of x, y and θ at every point; the margins of every resonance condition come from the same
 arithmetic as ``fcalc resonance`` (nearer of the zero-order and the averaged-inertia critical
-speed). A point whose margin is below the first approximation's resonant margin has no periodic
-solution: it is reported as resonant, never as an infinite amplitude.
+speed). With base dashpots every point has a finite amplitude and a phase, at and through each
+resonance; without them a point whose margin is below the first approximation's resonant margin
+has no periodic solution: it is reported as resonant, never as an infinite amplitude.
 """
 
 from __future__ import annotations
@@ -31,6 +32,9 @@ CHUNK = 4096
 
 #: Status of a point, worst last.
 STATUSES = ("pass", "warn", "fail", "resonant")
+
+#: Harmonics of the first approximation reported per point (dof, n).
+HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 
 @dataclass(frozen=True)
@@ -63,6 +67,9 @@ class SweepReport:
         acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
     over_quantities : limited quantity -> where its peak exceeds the limit
     status : one of :data:`STATUSES` per point
+    harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
+        [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
+    damped : the design has base dashpots
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     """
 
@@ -77,6 +84,8 @@ class SweepReport:
     over_limit: np.ndarray
     over_quantities: dict
     status: np.ndarray
+    harmonics: dict
+    damped: bool
     critical: tuple[CriticalSpeed, ...]
     limits: dict
     detuning: float
@@ -93,20 +102,33 @@ def _peaks(cos, sin):
     return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
 
 
-def _over(motion, omega, points, limits: dict) -> dict:
-    """Limited quantity -> bool array: a peak or RMS value of C (x, y) or of a point exceeds the limit."""
+def _over(motion, omega, points, limits: dict, displacements) -> dict:
+    """Limited quantity -> bool array: a peak or RMS value of C (x, y) or of a point exceeds the limit.
+
+    ``displacements``: the displacement peaks already found, (n, ≥ 2) arrays of C (x, y first)
+    and of each point; they are reused, not searched again.
+    """
     series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
     series += [point_series(motion, u, H) for _, u, H in points]
     over = {}
     w = omega[:, None]
     for order, quantity in enumerate(QUANTITIES):
         if quantity in limits:
-            largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
+            if order == 0:
+                largest = np.max([peaks[:, :2].max(axis=1) for peaks in displacements], axis=0)
+            else:
+                largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
             over[quantity] = exceeds(largest, limits[quantity])
         if f"{quantity}_rms" in limits:
             largest = np.max([rms(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
             over[f"{quantity}_rms"] = exceeds(largest, limits[f"{quantity}_rms"])
     return over
+
+
+def _complex(coefficient):
+    """cos - i sin of a (cos, sin) pair of arrays."""
+    c, s = coefficient
+    return c - 1j * s
 
 
 def _varied_block(block, variable: str, values):
@@ -166,6 +188,7 @@ def sweep(
         loads_motion = PeriodicMotion(omega, np.nan_to_num(res.motion.cos), np.nan_to_num(res.motion.sin))
         motion = loads_motion if motion is None else superpose(motion, loads_motion)
         resonant = res.resonant if resonant is None else resonant | res.resonant
+    dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
     located = {name: _peaks(*point_series(motion, u, H)) for name, u, H in points}
     margins = np.stack(margins)
@@ -175,7 +198,7 @@ def sweep(
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
-    over_quantities = _over(motion, omega, points, limited)
+    over_quantities = _over(motion, omega, points, limited, [peaks, *located.values()])
     over = np.zeros(values.shape, dtype=bool)
     for mask in over_quantities.values():
         over |= mask
@@ -201,6 +224,8 @@ def sweep(
         over_limit=over,
         over_quantities=over_quantities,
         status=status,
+        harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
+        damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
         critical=critical,
         limits=limited,
         detuning=detuning,
@@ -208,4 +233,4 @@ def sweep(
     )
 
 
-__all__ = ["STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]

@@ -98,6 +98,8 @@ def crank_amplitudes(scene) -> Finding:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
+        if report.damped:
+            reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
     details = tuple(

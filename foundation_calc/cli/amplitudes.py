@@ -24,9 +24,11 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
     operator; --exact adds the exact periodic solution, checks the limits with it and reports the
-    closed forms' relative errors. A machine given by its [[loads]] adds (or alone gives) the
-    block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits] key,
-    when a point is in zone C or D of [limits] code (ISO 10816-3), or when the speed is resonant.
+    closed forms' relative errors. With soil.damping every method gives finite amplitudes and
+    phases at and through every resonance. A machine given by its [[loads]] adds (or alone gives)
+    the block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits]
+    key, when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped
+    scene's speed is resonant.
     """
     from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code

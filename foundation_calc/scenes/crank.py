@@ -49,9 +49,9 @@ class Soil(SceneModel):
         "c_φ", "N/m³", "coefficient of elastic non-uniform compression (rocking); default c_z, the paper's choice",
         None, gt=0, examples=[8.0e7],
     )
-    damping: tuple[float, float, float] | None = quantity(
+    damping: list[float] | None = quantity(
         "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] of the vertical, horizontal and rocking modes;"
-        " default: undamped", None, examples=[[0.1, 0.1, 0.05]], strict=False,  # TOML gives a list
+        " default: undamped", None, min_length=3, max_length=3, examples=[[0.1, 0.1, 0.05]],
     )
 
     @field_validator("damping")

@@ -134,12 +134,12 @@ def matrices(block: RigidBlock) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def block_frequencies(block: RigidBlock) -> NaturalFrequencies:
     """Undamped k0, p1, p2 [rad/s] of Eq. (2): the zero-order operator, Eqs. (4.5)-(4.7) of
-    Krichever & Makarov, with the springs K_z, K_x, K_φ in place of c S, c1 S, c I1.
+    Krichever & Makarov, with the springs K_z, K_x, K_φ in place of c S, c1 S, c_φ I1.
 
     Raises PhysicsError when K_φ <= P h (unstable in rocking).
     """
     b = block
-    return zero_order_frequencies(b.M_tot, b.I_c, b.h, 1.0, b.K_phi / b.K_z, b.K_z, b.K_x, b.g)
+    return zero_order_frequencies(b.M_tot, b.I_c, b.h, 1.0, 1.0, b.K_z, b.K_x, b.K_phi, b.g)
 
 
 def load_conditions(loads: HarmonicLoads) -> tuple[tuple[int, str, bool], ...]:
