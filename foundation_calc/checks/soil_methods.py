@@ -117,7 +117,7 @@ def _frequency_range(scene) -> list[str]:
     if scene.soil.method_used not in ("lysmer", "gazetas"):
         return []
     half_width = min(scene.foundation.dimensions) / 2.0
-    a0 = scene.mechanism.omega_rad_s * half_width / scene.soil.V_s
+    a0 = scene.speed.omega_rad_s * half_width / scene.soil.V_s
     if a0 <= A0_RANGE:
         return []
     return [
