@@ -205,3 +205,17 @@ def test_fcalc_soil_reports_a_block_that_tips_over(runner, tmp_path):
     numbers = json.loads(runner.invoke(app, ["soil", str(path), "--json"]).stdout)
     assert numbers["methods"]["coefficients"]["p1"] is None and numbers["methods"]["coefficients"]["omega_phi"] is None
     assert any("the block tips over" in w for w in numbers["warnings"])
+
+
+def test_a_machine_given_by_its_loads_stands_on_the_soil_methods_springs(runner, tmp_path):
+    """Vendor loads (no mechanism): the block's springs and dashpots are the soil method's."""
+    document = read_toml(CONFIGS / "compressor_vendor_loads.toml")
+    document["soil"] = {"method": "lysmer", "shear_wave_velocity": 170.0, "density": 1800.0, "poisson": 0.3,
+                        "material_damping": 0.03}
+    scene = parse_scene(document)
+    block, springs = scene.block(), scene.soil_springs()
+    assert (block.K_z, block.K_x, block.K_phi) == (float(springs.K_z), float(springs.K_x), float(springs.K_phi))
+    assert block.C_z == pytest.approx(2.0 * float(springs.xi_z) * (float(springs.K_z) * scene.total_mass) ** 0.5)
+    path = _write(tmp_path, document)
+    assert runner.invoke(app, ["soil", str(path)]).exit_code == 0
+    assert runner.invoke(app, ["amplitudes", str(path)]).exit_code in (0, 1)
