@@ -15,7 +15,7 @@ within a hair of a resonance of the checked approximation fails as "resonant" wi
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -128,13 +128,10 @@ def _located(motion, points) -> dict[str, Peaks]:
     names = ["C", *(p.name for p in points)]
     horizontal = np.array([0.0, *(p.horizontal for p in points)])
     height = np.array([0.0, *(p.height for p in points)])
-    located = {}
-    for start in range(0, len(names), POINT_CHUNK):
-        chunk = slice(start, start + POINT_CHUNK)
-        pk = point_peaks(motion, horizontal[chunk], height[chunk])
-        for i, name in enumerate(names[chunk]):
-            located[name] = Peaks(pk.displacement[i], pk.velocity[i], pk.acceleration[i])
-    return located
+    chunks = [point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK])
+              for i in range(0, len(names), POINT_CHUNK)]
+    arrays = {f.name: np.concatenate([getattr(pk, f.name) for pk in chunks]) for f in fields(Peaks)}
+    return {name: Peaks(**{q: values[i] for q, values in arrays.items()}) for i, name in enumerate(names)}
 
 
 def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
@@ -172,29 +169,31 @@ def _errors(approx: Approximation, exact: Approximation) -> dict | None:
         q: {dof: float(relative_error(getattr(approx.peaks, q)[i], getattr(exact.peaks, q)[i])) for i, dof in enumerate(DOFS)}
         for q in QUANTITIES
     }
-    points = {
-        name: {
-            q: {
-                d: float(relative_error(getattr(pk, q)[i], getattr(exact.points[name], q)[i]))
-                for i, d in enumerate(DIRECTIONS)
-            }
-            for q in QUANTITIES
-        }
-        for name, pk in approx.points.items()
-    }
+    points = {name: {} for name in approx.points}
+    for q in QUANTITIES:  # every point at once: (points, directions) arrays
+        errors = relative_error(_stacked(approx, q), _stacked(exact, q)).tolist()
+        for row, name in zip(errors, points):
+            points[name][q] = dict(zip(DIRECTIONS, row))
     return {"harmonics": harmonics, "peaks": peaks, "points": points}
 
 
+def _stacked(approx: Approximation, quantity: str) -> np.ndarray:
+    """Peaks of ``quantity`` of C and every point, shape (points, directions)."""
+    return np.array([getattr(pk, quantity) for pk in approx.points.values()])
+
+
 def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
-    rows = []
     if approx.resonant:
         return ()
+    rows = []
     for quantity, limit in limited_quantities(limits).items():
-        for name, pk in approx.points.items():
-            for i, direction in enumerate(DIRECTIONS):
-                value = float(getattr(pk, quantity)[i])
-                outcome = Outcome.FAIL if exceeds(value, limit) else Outcome.PASS
-                rows.append(LimitRow(name, direction, quantity, value, limit, outcome))
+        values = _stacked(approx, quantity)
+        over = exceeds(values, limit).tolist()
+        for name, value, fails in zip(approx.points, values.tolist(), over):
+            rows += [
+                LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if f else Outcome.PASS)
+                for direction, v, f in zip(DIRECTIONS, value, fails)
+            ]
     return tuple(rows)
 
 

@@ -73,20 +73,31 @@ def magnitude(cos, sin):
     return np.hypot(cos, sin)
 
 
-def _values(cos, sin, n, phi):
-    """q, dq/dφ and d²q/dφ² of C series (rows of ``cos``, ``sin``, shape (C, K + 1)) at one phase
-    each (``phi``, shape (C,)). The powers e^{inφ} are repeated products of e^{iφ}: n roundings
-    each, so the term of harmonic n carries a relative error of about n × 1e-16."""
-    powers = np.empty(cos.shape, dtype=complex)
-    powers[:, 0] = 1.0
-    powers[:, 1:] = np.exp(1j * phi)[:, None]
-    np.cumprod(powers[:, 1:], axis=1, out=powers[:, 1:])
-    c, s = powers.real, powers.imag
-    terms = cos * c + sin * s
-    q = terms.sum(1)
-    dq = (n * (sin * c - cos * s)).sum(1)
-    ddq = -(n * n * terms).sum(1)
-    return q, dq, ddq
+def _horner(coefficients, z):
+    """Σ_n coefficients[n] z^n for every column: ``coefficients`` (K + 1, C), ``z`` (C,).
+    Horner's scheme: its rounding error is about 1e-16 Σ_n (n + 1)|coefficients[n]|."""
+    total = coefficients[-1].copy()
+    for row in coefficients[-2::-1]:
+        total *= z
+        total += row
+    return total
+
+
+def _values(a, phi):
+    """q, dq/dφ and d²q/dφ² of series at one phase each: ``a`` = cos - i sin, shape (K + 1, C)
+    (a column per series), ``phi`` (C,). q = Re Σ a_n e^{inφ}, and each φ-derivative brings i n."""
+    z = np.exp(1j * phi)
+    n = np.arange(a.shape[0])[:, None]
+    return _horner(a, z).real, -_horner(n * a, z).imag, -_horner(n * n * a, z).real
+
+
+def _searched(slopes) -> int:
+    """:func:`searched_harmonics` from n |c_n|, shape (K + 1, B): a column per series."""
+    # tail[k] = Σ_{n>k} n|c_n|, accumulated from the top so that small terms add first
+    tail = np.zeros_like(slopes)
+    tail[:-1] = np.cumsum(slopes[:0:-1], axis=0)[::-1]
+    enough = (tail <= _TAIL * slopes.sum(0)).all(1)
+    return int(np.argmax(enough))
 
 
 def searched_harmonics(cos, sin) -> int:
@@ -101,12 +112,7 @@ def searched_harmonics(cos, sin) -> int:
     """
     cos, sin = np.asarray(cos, dtype=float), np.asarray(sin, dtype=float)
     K = cos.shape[-1] - 1
-    weight = (np.arange(K + 1) * np.hypot(cos, sin)).reshape(-1, K + 1)
-    # tail[:, k] = Σ_{n>k} weight_n, accumulated from the top so that small terms add first
-    tail = np.zeros_like(weight)
-    tail[:, :-1] = np.cumsum(weight[:, :0:-1], axis=1)[:, ::-1]
-    enough = (tail <= _TAIL * weight.sum(1)[:, None]).all(0)
-    return int(np.argmax(enough))
+    return _searched((np.arange(K + 1) * magnitude(cos, sin)).reshape(-1, K + 1).T)
 
 
 def grid_size(K: int) -> int:
@@ -139,36 +145,40 @@ def peak(cos, sin):
     """
     cos, sin = np.broadcast_arrays(np.asarray(cos, dtype=float), np.asarray(sin, dtype=float))
     batch, K = cos.shape[:-1], cos.shape[-1] - 1
-    cos, sin = cos.reshape(-1, K + 1), sin.reshape(-1, K + 1)
-    n = np.arange(K + 1)
-    Ks = searched_harmonics(cos, sin)
+    # harmonics and samples on the first axis, a column per series: Horner's scheme and the
+    # candidates' gather then run over contiguous rows
+    a = np.empty((K + 1, int(np.prod(batch))), dtype=complex)  # a_n = cos_n - i sin_n
+    a.real = cos.reshape(-1, K + 1).T
+    np.negative(sin.reshape(-1, K + 1).T, out=a.imag)
+    n = np.arange(K + 1)[:, None]
+    slopes = n * np.abs(a)  # Σ n|c_n| bounds |dq/dφ|, Σ n²|c_n| bounds |d²q/dφ²|
+    Ks = _searched(slopes)
     N = grid_size(Ks)
     step = 2.0 * np.pi / N
-    spectrum = np.zeros((cos.shape[0], N // 2 + 1), dtype=complex)
-    spectrum[:, : Ks + 1] = (N / 2.0) * (cos[:, : Ks + 1] - 1j * sin[:, : Ks + 1])
-    spectrum[:, 0] = N * cos[:, 0]
-    sampled = np.abs(np.fft.irfft(spectrum, N, axis=1))
-    size = n * np.hypot(cos, sin)  # n |c_n|: Σ bounds |dq/dφ|, Σ n × bounds |d²q/dφ²|
-    reach = (n * size).sum(1) * step * step / 8.0 + 2.0 * _TAIL * size.sum(1)
-    left, right = np.roll(sampled, 1, 1), np.roll(sampled, -1, 1)
+    spectrum = np.zeros((N // 2 + 1, a.shape[1]), dtype=complex)
+    spectrum[: Ks + 1] = (N / 2.0) * a[: Ks + 1]
+    spectrum[0] = N * a[0].real
+    sampled = np.abs(np.fft.irfft(spectrum, N, axis=0))
+    reach = (n * slopes).sum(0) * step * step / 8.0 + 2.0 * _TAIL * slopes.sum(0)
+    ring = np.concatenate([sampled[-1:], sampled, sampled[:1]])  # the period closes on itself
+    below, above = ring[:-2], ring[2:]
     # a plateau of equal samples counts once (its first sample); a constant series has none
-    candidate = (sampled > left) & (sampled >= right)
-    candidate &= sampled >= (sampled.max(1) - reach)[:, None]
-    row, j = np.nonzero(candidate)
-    below, top, above = left[row, j], sampled[row, j], right[row, j]
-    bend = below - 2.0 * top + above  # < 0 at a strict local maximum
-    shift = np.where(bend < 0.0, 0.5 * (below - above) / np.where(bend < 0.0, bend, -1.0), 0.0)
+    candidate = (sampled > below) & (sampled >= above) & (sampled >= sampled.max(0) - reach)
+    j, col = np.nonzero(candidate)
+    low, top, high = below[j, col], sampled[j, col], above[j, col]
+    bend = low - 2.0 * top + high  # < 0 at a strict local maximum
+    shift = np.where(bend < 0.0, 0.5 * (low - high) / np.where(bend < 0.0, bend, -1.0), 0.0)
     phi = (j + np.clip(shift, -0.5, 0.5)) * step
-    head_cos, head_sin = cos[row, : Ks + 1], sin[row, : Ks + 1]
+    a = a[:, col]  # a column per candidate
     for _ in range(_NEWTON_STEPS):
-        q, dq, ddq = _values(head_cos, head_sin, n[: Ks + 1], phi)
+        q, dq, ddq = _values(a[: Ks + 1], phi)
         concave = q * ddq < 0.0  # |q| has a maximum nearby
         move = np.clip(np.where(concave, dq / np.where(concave, ddq, 1.0), 0.0), -step, step)
         phi = phi - move
         if not np.any(np.abs(move) * max(Ks, 1) > 1e-9):
             break
-    result = np.abs(cos[:, 0])  # the mean: a lower bound, and the peak of a constant series
-    np.maximum.at(result, row, np.abs(_values(cos[row], sin[row], n, phi)[0]))
+    result = np.abs(cos.reshape(-1, K + 1)[:, 0])  # the mean: a lower bound, the peak of a constant
+    np.maximum.at(result, col, np.abs(_horner(a, np.exp(1j * phi)).real))
     return result.reshape(batch) if batch else result[0]
 
 
