@@ -73,6 +73,7 @@ def crank_resonance(scene) -> Finding:
 def crank_amplitudes(scene) -> Finding:
     """Steady-state peaks of C and the scene's points against [limits] (``fcalc amplitudes``)."""
     from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.governing import tally
     from foundation_calc.checks.limits import QUANTITIES
 
     report = check_amplitudes(scene.design(), scene.limits, scene.points)
@@ -91,6 +92,9 @@ def crank_amplitudes(scene) -> Finding:
             f"largest peak {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
             " of the limit ", values["limit"],
         )
+        count = tally(report.rows)
+        if count.failed_rows > 1:
+            reason += (f"; {count.failed_rows} of {count.rows} peaks over their limits, at {count.failed_points} points",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
         if row.outcome is Outcome.PASS

@@ -7,6 +7,7 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.governing import governing_points, tally, worst_rows
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -128,14 +129,37 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     return table
 
 
-def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+#: Points besides C up to which the tables list every point and limit row; with more, they show
+#: the governing points and the largest peak/limit ratios (every row with --all-points or --json).
+ALL_POINTS_UP_TO = 12
+
+#: Limit rows shown for a scene with more points: the largest ratios (and each quantity's largest).
+WORST_ROWS = 10
+
+EVERY_ROW = "every row: --all-points or --json"
+
+
+def _summarised(report: AmplitudeReport, all_points: bool) -> bool:
+    return not all_points and len(report.approximations[report.checked].points) - 1 > ALL_POINTS_UP_TO
+
+
+def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
     approx = report.approximations[report.checked]
-    table = Table(title=f"Peaks over one revolution ({approx.title})", title_justify="left")
+    title = f"Peaks over one revolution ({approx.title})"
+    shown = list(approx.points)
+    if _summarised(report, all_points):
+        shown = ["C", *governing_points(approx.points)]
+        title += (
+            f": C and the {len(shown) - 1} points with the largest peaks,"
+            f" of the scene's {len(approx.points) - 1} points ({EVERY_ROW})"
+        )
+    table = Table(title=title, title_justify="left")
     table.add_column("point")
     table.add_column("direction")
     for q in QUANTITIES:
         table.add_column(f"{q} \\[{units.label(DISPLAY_QUANTITY[q])}]", justify="right")
-    for name, pk in approx.points.items():
+    for name in shown:
+        pk = approx.points[name]
         for i, direction in enumerate(DIRECTIONS):
             table.add_row(
                 Text(name), direction,
@@ -147,11 +171,19 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     return table
 
 
-def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
-    table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
+def _limits_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
+    title = f"Limits (checked with: {report.approximations[report.checked].title})"
+    rows = report.rows
+    if _summarised(report, all_points):
+        rows = worst_rows(report.rows, WORST_ROWS)
+        title += (
+            f": {len(rows)} of {len(report.rows)} rows, the {WORST_ROWS} largest peak/limit ratios and the"
+            f" largest of each quantity ({EVERY_ROW})"
+        )
+    table = Table(title=title, title_justify="left")
     for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
         table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
-    for row in report.rows:
+    for row in rows:
         shown = DISPLAY_QUANTITY[row.quantity]
         table.add_row(
             Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
@@ -168,16 +200,25 @@ def summary_line(report: AmplitudeReport) -> str:
     if not report.rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
     top = max(report.rows, key=lambda r: r.ratio)
-    return (
+    line = (
         f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
         f" ({escape(top.point)}, {top.direction} {top.quantity})"
     )
+    count = tally(report.rows)
+    if count.failed_rows:
+        line += (
+            f"; {count.failed_rows} of {count.rows} peaks over their limits,"
+            f" at {count.failed_points} of {count.points} points (C included)"
+        )
+    return line
 
 
 def print_amplitudes_report(
-    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits()
+    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits(), all_points: bool = False
 ) -> None:
-    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI)."""
+    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI): every point
+    and limit row, or with more than :data:`ALL_POINTS_UP_TO` points (and not ``all_points``)
+    the governing points and the largest peak/limit ratios."""
     d = report.design
     out = stdout()
     out.print(
@@ -195,7 +236,7 @@ def print_amplitudes_report(
         )
     out.print(_harmonics_table(report, units))
     if not report.resonant:
-        out.print(_points_table(report, units))
+        out.print(_points_table(report, units, all_points))
     if report.rows:
-        out.print(_limits_table(report, units))
+        out.print(_limits_table(report, units, all_points))
     out.print(summary_line(report))
