@@ -45,10 +45,10 @@ def _approximation_document(approx: Approximation) -> dict:
     doc["peaks"] = {
         dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
     }
-    doc["points"] = {
-        name: {d: {q: float(getattr(pk, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
-        for name, pk in approx.points.items()
-    }
+    doc["points"] = {}
+    for name, pk in approx.points.items():
+        values = {q: getattr(pk, q).tolist() for q in QUANTITIES}  # per direction, as Python floats
+        doc["points"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
     return doc
 
 

@@ -93,11 +93,13 @@ def _values(a, phi):
 
 def _searched(slopes) -> int:
     """:func:`searched_harmonics` from n |c_n|, shape (K + 1, B): a column per series."""
-    # tail[k] = Σ_{n>k} n|c_n|, accumulated from the top so that small terms add first
-    tail = np.zeros_like(slopes)
-    tail[:-1] = np.cumsum(slopes[:0:-1], axis=0)[::-1]
-    enough = (tail <= _TAIL * slopes.sum(0)).all(1)
-    return int(np.argmax(enough))
+    total = slopes.sum(0)
+    # the largest share of each harmonic over the batch: a tail of these shares bounds every
+    # series' tail; summed from the top so that small terms add first
+    share = (slopes / np.where(total > 0.0, total, 1.0)).max(1)
+    tail = np.zeros_like(share)
+    tail[:-1] = np.cumsum(share[:0:-1])[::-1]
+    return int(np.argmax(tail <= _TAIL))
 
 
 def searched_harmonics(cos, sin) -> int:
