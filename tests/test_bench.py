@@ -29,7 +29,7 @@ SCENE = CONFIGS / "frame_saw_extra_resonance.toml"
 def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
-    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup"]
+    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "points"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
     try:

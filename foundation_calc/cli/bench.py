@@ -16,6 +16,7 @@ class Section(str, Enum):
     harmonic_balance = "harmonic_balance"
     throughput = "throughput"
     startup = "startup"
+    points = "points"
 
 
 ScenesArg = Annotated[
@@ -45,6 +46,7 @@ SkipOpt = Annotated[
 #: Seconds each method is timed for (at least 3 calls after a warm-up), normal and --quick.
 MIN_TIME = {False: 0.2, True: 0.02}
 STARTUP_RUNS = {False: 20, True: 5}
+POINTS_RUNS = {False: 3, True: 1}
 
 
 def _default_scenes() -> list[Path]:
@@ -82,8 +84,9 @@ def bench(
     θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Platform
     harmonic balance on built-in rigs of 1, 3 and 17 exciters: time and error against the
     truncation order K, and the whole check of each rig against one exciter. Then the
-    designs per second of one vectorised call against a Python loop, and fcalc's start-up against
-    its frameworks' — all measured in this run, on the first crank scene.
+    designs per second of one vectorised call against a Python loop, fcalc's start-up against
+    its frameworks', and whole fcalc processes on that scene with 10, 1 000 and 15 000 points
+    (time and memory against 10 points) — all measured in this run, on the first crank scene.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -97,8 +100,8 @@ def bench(
     loaded = [(path, load_scene(path)) for path in paths]
     cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
-    if not cranks:  # throughput and start-up are measured on the first crank scene
-        skipped |= {Section.throughput, Section.startup}
+    if not cranks:  # throughput, start-up and points are measured on the first crank scene
+        skipped |= {Section.throughput, Section.startup, Section.points}
 
     from foundation_calc.benchmarks.accuracy import METHODS, benchmark_scene
     from foundation_calc.output import bench_report as report
@@ -108,7 +111,8 @@ def bench(
     steps += len(platforms) if Section.accuracy not in skipped else 0
     steps += 3 * (Section.harmonic_balance not in skipped)
     steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
-    results, platform_results, throughput, startup, truncation = [], [], None, None, None
+    steps += Section.points not in skipped
+    results, platform_results, throughput, startup, truncation, points = [], [], None, None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -141,14 +145,28 @@ def bench(
 
             step("start-up: fcalc resonance against typer, pydantic, rich")
             startup = startup_times(str(cranks[0][0]), runs=STARTUP_RUNS[quick])
+        if Section.points not in skipped:
+            from foundation_calc.benchmarks.points import POINT_COUNTS, points_scaling
+
+            step(f"points: {', '.join(map(str, POINT_COUNTS))} points, tables, JSON and check")
+            points = points_scaling(str(cranks[0][0]), runs=POINTS_RUNS[quick])
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report.bench_document(results, platform_results, throughput, startup, truncation))
+        document = report.bench_document(results, platform_results, throughput, startup, truncation)
+        if points is not None:
+            from foundation_calc.output.bench_points import points_document
+
+            document["points_scaling"] = points_document(points)
+        print_json(document)
     else:
         report.print_bench(results, platform_results, throughput, startup, truncation)
+        if points is not None:
+            from foundation_calc.output.bench_points import print_points
+
+            print_points(points)
         if plot is not None:
             from foundation_calc.output.console import stderr
 
