@@ -89,18 +89,34 @@ def _peaks(cos, sin):
     return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
 
 
-def _over(motion, omega, points, limits: dict) -> dict:
-    """Limited quantity -> bool array: a peak of C (x, y) or of a point exceeds the limit."""
-    series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
-    series += [point_series(motion, u, H) for _, u, H in points]
-    over = {}
-    for order, quantity in enumerate(QUANTITIES):
-        if quantity not in limits:
-            continue
-        w = omega[:, None]
-        largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
-        over[quantity] = exceeds(largest, limits[quantity])
-    return over
+def _located(motion, omega, points, limits: dict):
+    """Peak displacements of every point, name -> (n, 2) [m], and, per limited quantity, whether
+    a peak of C (x, y) or of a point exceeds the limit (bool (n,)).
+
+    The points go through :func:`point_series` and :func:`peak` together, as many at a time as
+    make :data:`CHUNK` sweep points' worth of series.
+    """
+    w = omega[:, None]
+    largest = {}
+    for order, quantity in enumerate(QUANTITIES):  # C: x and y
+        if quantity in limits:
+            largest[quantity] = _peaks(*derivative(motion.cos[..., :2, :], motion.sin[..., :2, :], w, order)).max(axis=1)
+    located = {}
+    names = [name for name, _, _ in points]
+    horizontal = np.array([u for _, u, _ in points], dtype=float)[:, None]
+    height = np.array([H for _, _, H in points], dtype=float)[:, None]
+    step = max(1, CHUNK // max(len(omega), 1))
+    for i in range(0, len(names), step):
+        cos, sin = point_series(motion, horizontal[i : i + step], height[i : i + step])  # (points, n, 2, K + 1)
+        for order, quantity in enumerate(QUANTITIES):
+            if order and quantity not in limits:
+                continue
+            found = peak(*derivative(cos, sin, w, order))  # (points, n, 2)
+            if order == 0:
+                located.update(zip(names[i : i + step], found))
+            if quantity in limits:
+                largest[quantity] = np.maximum(largest[quantity], found.max(axis=(0, 2)))
+    return located, {quantity: exceeds(value, limits[quantity]) for quantity, value in largest.items()}
 
 
 def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, points=()) -> SweepReport:
@@ -122,7 +138,6 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
     batch = varied(design, **{variable: values})
     motion, resonant = first_approximation_motion(batch)
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
-    located = {name: _peaks(*point_series(motion, u, H)) for name, u, H in points}
     zero, averaged = design_frequencies(batch)
     omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
     margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
@@ -132,7 +147,7 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
-    over_quantities = _over(motion, omega, points, limited)
+    located, over_quantities = _located(motion, omega, points, limited)
     over = np.zeros(values.shape, dtype=bool)
     for mask in over_quantities.values():
         over |= mask
