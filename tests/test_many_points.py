@@ -155,3 +155,24 @@ def test_the_summary_table_cuts_no_number_on_a_terminal(many_points):
     assert "…" not in out
     assert "peaks over their limits" in " ".join(out.split())  # the summary line wraps at 80
     assert max(len(line) for line in out.splitlines()) <= 90  # the tables fit (a few cells wider at most)
+
+
+def test_sweep_points_among_many_have_the_peaks_they_have_alone(frame_saw):
+    """fcalc sweep evaluates its points together; each must come out as if it were alone."""
+    from types import SimpleNamespace
+
+    from foundation_calc.checks.crank_sweep import sweep
+    from foundation_calc.scenes.crank import CrankScene
+
+    design = CrankScene.model_validate(frame_saw).design()
+    speeds = np.linspace(15.0, 40.0, 37)
+    points = [(p["name"], p["horizontal"], p["height"]) for p in _points(9)]
+    limits = SimpleNamespace(amplitude=1.4e-4, velocity=4.0e-3, acceleration=None)
+    together = sweep(design, "omega", speeds, limits, 0.2, points)
+    over = np.zeros(speeds.shape, dtype=bool)
+    for point in points:
+        alone = sweep(design, "omega", speeds, limits, 0.2, [point])
+        np.testing.assert_allclose(together.points[point[0]], alone.points[point[0]], rtol=1e-14, atol=0)
+        over |= alone.over_quantities["velocity"]
+    np.testing.assert_array_equal(together.over_quantities["velocity"], over)
+    assert over.any() and not over.all()
