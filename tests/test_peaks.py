@@ -98,6 +98,10 @@ def test_peaks_with_a_closed_form(cos, sin, expected):
     assert peak(np.array(cos), np.array(sin)) == pytest.approx(expected, rel=1e-15, abs=0)
 
 
+def test_an_empty_batch_has_no_peaks():
+    assert peak(np.zeros((0, 2, 5)), np.zeros((0, 2, 5))).shape == (0, 2)
+
+
 def test_equal_peaks_of_both_signs_are_found():
     """An odd series (x and θ of an undamped crank foundation) peaks equally at +q and -q."""
     cos = np.zeros(4)

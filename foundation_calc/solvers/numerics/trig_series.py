@@ -96,7 +96,7 @@ def _searched(slopes) -> int:
     total = slopes.sum(0)
     # the largest share of each harmonic over the batch: a tail of these shares bounds every
     # series' tail; summed from the top so that small terms add first
-    share = (slopes / np.where(total > 0.0, total, 1.0)).max(1)
+    share = (slopes / np.where(total > 0.0, total, 1.0)).max(1, initial=0.0)
     tail = np.zeros_like(share)
     tail[:-1] = np.cumsum(share[:0:-1])[::-1]
     return int(np.argmax(tail <= _TAIL))
