@@ -27,6 +27,7 @@ _TAIL = 1e-9
 _SAMPLES_PER_PERIOD = 8
 _MIN_SAMPLES = 64
 
+
 def phases(N: int) -> np.ndarray:
     """N equally spaced phases ωt_j = 2πj/N over one period [rad]."""
     return 2.0 * np.pi * np.arange(N) / N
