@@ -176,3 +176,10 @@ def test_sweep_points_among_many_have_the_peaks_they_have_alone(frame_saw):
         over |= alone.over_quantities["velocity"]
     np.testing.assert_array_equal(together.over_quantities["velocity"], over)
     assert over.any() and not over.all()
+
+
+def test_the_help_names_the_number_of_points_listed(runner):
+    from foundation_calc.cli.app import app
+
+    result = runner.invoke(app, ["amplitudes", "--help"], env={"COLUMNS": "200"})
+    assert f"more than {ALL_POINTS_UP_TO} points" in " ".join(result.stdout.split())
