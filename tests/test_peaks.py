@@ -162,3 +162,17 @@ def test_point_series_is_the_rigid_body_motion_to_round_off():
         )
     # θ³ harmonics beyond 2K are left out: |θ| ~ 1e-5 makes them ~1e-15 θ, far below 1e-19 m
     np.testing.assert_allclose(got, want, rtol=0, atol=1e-19)  # 2e-15 of the peak
+    # accelerations: d²/dφ² of x + u (cos θ - 1) + H sin θ, and of the vertical likewise
+    got = sample(*derivative(pc, ps, 1.0, 2), 40)
+    x2, y2, th2 = sample(*derivative(cos, sin, 1.0, 2), 40)
+    _, _, th1 = sample(*derivative(cos, sin, 1.0, 1), 40)
+    with mpmath.workdps(50):
+        bend = [(-mpmath.sin(t) * b - mpmath.cos(t) * s * s, mpmath.cos(t) * b - mpmath.sin(t) * s * s)
+                for t, s, b in zip(th, th1, th2)]  # (cos θ)'' and (sin θ)''
+        want = np.array(
+            [
+                [float(mpmath.mpf(a) + c * u + d * H) for a, (c, d) in zip(x2, bend)],
+                [float(mpmath.mpf(a) + d * u - c * H) for a, (c, d) in zip(y2, bend)],
+            ]
+        )
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-19)
