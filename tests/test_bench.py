@@ -29,7 +29,7 @@ SCENE = CONFIGS / "frame_saw_extra_resonance.toml"
 def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
-    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "points"]
+    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch", "--skip", "points"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
     try:
@@ -108,13 +108,15 @@ def test_plot_without_matplotlib_is_a_usage_error(runner, monkeypatch, tmp_path)
 
 
 def test_throughput_section(runner):
-    result = runner.invoke(app, ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"])
+    args = ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"]
+    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "points"])
     assert result.exit_code == 0, result.output
     doc = json.loads(result.stdout)
     assert doc["scenes"] == [] and doc["startup"] is None
-    for key in ("resonance_check", "closed_form_amplitudes"):
+    designs = {"resonance_check": 2000, "closed_form_amplitudes": 2000, "closed_form_amplitudes_damped": 2000, "sweep_damped": 200}
+    for key, count in designs.items():
         t = doc["throughput"][key]
-        assert t["designs"] == 2000
+        assert t["designs"] == count
         assert t["speedup"] == pytest.approx(t["vectorised_designs_per_second"] / t["scalar_designs_per_second"])
 
 
@@ -125,3 +127,40 @@ def test_startup_rows_are_side_by_side():
     floor = next(r.seconds for r in rows if r.label == "import typer, pydantic, rich")
     for row in rows:
         assert row.ratio_to_import_floor == pytest.approx(row.seconds / floor)
+
+
+def test_batch_rows_are_side_by_side_and_write_nothing_into_the_project(tmp_path, monkeypatch):
+    from foundation_calc.benchmarks.batch import batch_benchmark
+    from foundation_calc.output.bench_report import bench_document
+
+    monkeypatch.chdir(tmp_path)  # scenes go to a temporary folder of their own, not here
+    platform = CONFIGS / "platform_paper_example.toml"
+    batch = batch_benchmark(platform, [platform, SCENE], many=3, large=4, repeats=1)
+    assert list(tmp_path.iterdir()) == []
+    assert (batch.one.scenes, batch.many.scenes, batch.many_two_jobs.jobs, batch.large.scenes) == (1, 3, 2, 4)
+    assert batch.marginal_seconds == pytest.approx((batch.many.seconds - batch.one.seconds) / 2)
+    assert batch.jobs_speedup == pytest.approx(batch.many.seconds / batch.many_two_jobs.seconds)
+    for row in (batch.one, batch.many, batch.many_two_jobs, batch.large):
+        assert row.seconds > 0 and row.cpu_seconds > 0 and row.peak_bytes_largest_process > 1e6
+    document = json.loads(json.dumps(bench_document([], [], None, None, None, batch)))
+    assert document["batch"]["large"]["scenes"] == 4
+    assert document["batch"]["ratio_many_to_one"] == pytest.approx(batch.many_over_one)
+
+
+def test_damped_scene_errors_agree_with_shooting():
+    """The damped shipped scene (0.9 % from ω = p1): the closed forms' bench errors against the
+    damped exact solution are what shooting (time integration) gives, and the averaged operator
+    beats the first approximation near the resonance."""
+    from foundation_calc.benchmarks.accuracy import benchmark_scene
+
+    scene = CONFIGS / "compressor_damped_near_resonance.toml"
+    design = load_scene(scene).design()
+    chosen = [m for m in METHODS if m.key in ("first_approximation", "averaged_operator")]
+    bench = benchmark_scene(str(scene), "damped", design, methods=chosen, min_time=0.0)
+    independent = motion_peaks(shooting_solution(design).motion).displacement
+    errors = {}
+    for result in bench.results:
+        peaks = motion_peaks(result.method.solve(design)).displacement
+        errors[result.method.key] = np.max(np.abs(peaks - independent) / independent)
+        assert result.error == pytest.approx(errors[result.method.key], rel=1e-4, abs=1e-8)
+    assert errors["averaged_operator"] < errors["first_approximation"] / 10

@@ -11,11 +11,9 @@ import tomli_w
 from typer.testing import CliRunner
 
 from foundation_calc.cli.app import app
+from tests.conftest import mechanism_configs
 
-CONFIGS = sorted(
-    p for p in (Path(__file__).parent.parent / "configs").glob("*.toml")
-    if tomllib.loads(p.read_text("utf-8")).get("kind") == "crank_foundation"
-)
+CONFIGS = mechanism_configs()  # a machine given by its loads only: tests/test_crank_loads.py
 
 
 BASE = Path(__file__).parent.parent / "configs" / "frame_saw_extra_resonance.toml"
@@ -91,6 +89,32 @@ def test_resonant_speed_fails_with_its_margin(tmp_path):
     assert doc["verdict"] == "fail"
     tables = run(path)
     assert tables.exit_code == 1 and "resonant" in tables.stdout
+
+
+def test_damped_scene_at_exact_resonance_gives_finite_amplitudes_and_phases(tmp_path):
+    """The resonant scene above with soil.damping: every method (--exact too) answers, the limits
+    judge the amplitudes, and the JSON carries the phases and the damping."""
+    data = tomllib.loads(BASE.read_text("utf-8"))
+    f, s, m = data["foundation"], data["soil"], data["mechanism"]
+    k0 = (s["c_z"] * f["base_area"] / (f["mass"] + m["rod_mass"] + m.get("slider_mass", 0.0))) ** 0.5
+    mech = {k: v for k, v in m.items() if k not in ("omega", "frequency_hz", "speed_rpm")}
+    data["mechanism"] = {**mech, "omega": k0}
+    data["soil"]["damping"] = [0.1, 0.1, 0.05]
+    data["limits"]["amplitude"] = 1.0
+    path = tmp_path / "damped.toml"
+    path.write_text(tomli_w.dumps(data), "utf-8")
+    result = run(path, "--json", "--exact")
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc["damping"]["dashpots"]["C_z"] > 0 and len(doc["damping"]["modal_damping_ratios"]) == 3
+    for approx in doc["approximations"].values():
+        assert approx["resonant"] is False
+        y1 = approx["harmonics"]["y1"]
+        assert 0 < y1["magnitude"] < 1.0
+        # ω = k0: the vertical harmonic lags the crank-pin force by 90°
+        assert abs(abs(y1["phase"]) - 1.5707963) < 0.01, y1
+    tables = run(path, "--exact")
+    assert tables.exit_code == 0 and "phase lag" in tables.stdout and "resonant" not in tables.stdout
 
 
 def test_duplicate_point_names_are_an_invalid_scene(tmp_path):

@@ -68,9 +68,9 @@ def test_the_table_names_the_worst_point_and_counts_the_failures(runner, many_po
     result = _amplitudes(runner, many_points)
     assert result.exit_code == 1
     out = result.stdout
-    assert f"largest peak/limit {worst['ratio']:.3f} ({worst['point']}, {worst['direction']} {worst['quantity']})" in out
+    assert f"largest value/limit {worst['ratio']:.3f} ({worst['point']}, {worst['direction']} {worst['quantity']})" in out
     failed_points = {r["point"] for r in failed}
-    assert f"{len(failed)} of {len(rows)} peaks over their limits, at {len(failed_points)} of {POINTS + 1} points" in out
+    assert f"{len(failed)} of {len(rows)} values over their limits, at {len(failed_points)} of {POINTS + 1} points" in out
     assert f"of the scene's {POINTS} points" in out
     # the governing points: the largest of each quantity and direction, and no more
     points = doc["approximations"][doc["checked_with"]]["points"]
@@ -103,7 +103,7 @@ def test_check_counts_the_failures(runner, many_points):
     doc = json.loads(runner.invoke(app, ["check", str(many_points), "--json"]).stdout)
     amplitudes = next(c for c in doc["scenes"][0]["checks"] if c["check"] == "amplitudes")
     failed = [r for r in amplitudes["result"]["limits"] if r["verdict"] == "fail"]
-    assert f"{len(failed)} of {3 * 2 * (POINTS + 1)} peaks over their limits" in amplitudes["reason"]
+    assert f"{len(failed)} of {3 * 2 * (POINTS + 1)} values over their limits" in amplitudes["reason"]
 
 
 def test_a_point_has_the_same_peaks_among_many_as_alone(runner, many_points, frame_saw, tmp_path):
@@ -153,7 +153,7 @@ def test_the_summary_table_cuts_no_number_on_a_terminal(many_points):
     assert process.wait() == 1, process.stderr.read()
     out = b"".join(chunks).decode("utf-8")
     assert "…" not in out
-    assert "peaks over their limits" in " ".join(out.split())  # the summary line wraps at 80
+    assert "values over their limits" in " ".join(out.split())  # the summary line wraps at 80
     assert max(len(line) for line in out.splitlines()) <= 90  # the tables fit (a few cells wider at most)
 
 

@@ -10,10 +10,10 @@ import pytest
 from foundation_calc.benchmarks.throughput import perturbed_designs
 from foundation_calc.checks.crank_resonance import check_resonances, design_frequencies, paper_margin
 from foundation_calc.scenes import load_scene
-from tests.conftest import configs_of_kind
+from tests.conftest import mechanism_configs
 
 
-@pytest.mark.parametrize("config", configs_of_kind("crank_foundation"), ids=lambda p: p.name)
+@pytest.mark.parametrize("config", mechanism_configs(), ids=lambda p: p.name)
 def test_batch_matches_scalar(config):
     design = load_scene(config).design()
     batch = perturbed_designs(design, 200, seed=1)
@@ -21,7 +21,7 @@ def test_batch_matches_scalar(config):
     zero, avg = design_frequencies(batch)
     assert isinstance(margins, np.ndarray) and margins.shape == (200,)
     for i in range(0, 200, 7):
-        one = replace(design, c=float(batch.c[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
+        one = replace(design, c=float(batch.c[i]), c_phi=float(batch.c_phi[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
         report = check_resonances(one, 0.2)
         expected = min(r.margin for r in report.rows if r.condition.source == "paper")
         assert margins[i] == pytest.approx(expected, rel=1e-14, abs=1e-15)

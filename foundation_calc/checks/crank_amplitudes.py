@@ -9,8 +9,10 @@ Three approximations of the same periodic steady state are computed for one desi
   the closed forms' errors).
 
 The limits are checked with the best approximation computed (exact, else averaged operator),
-for the centre of mass C and every point of the scene, horizontally and vertically. A speed
-within a hair of a resonance of the checked approximation fails as "resonant" with its margin.
+for the centre of mass C and every point of the scene, horizontally and vertically. With base
+dashpots every approximation is finite at and through every resonance and is judged on its
+amplitudes; an undamped speed within a hair of a resonance of the checked approximation fails as
+"resonant" with its margin.
 """
 
 from __future__ import annotations
@@ -20,21 +22,27 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone
+from foundation_calc.checks.limits import QUANTITIES, exceeds, limit_key, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, load_conditions, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import (
     DIRECTIONS,
     DOFS,
     PeriodicMotion,
     Peaks,
+    Rms,
     motion_peaks,
     point_peaks,
+    point_rms,
     relative_error,
+    superpose,
 )
+from foundation_calc.units import rpm_from_omega
 
 #: Harmonics whose coefficients are reported and compared (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("y", 3), ("y", 4), ("x", 1), ("x", 2), ("x", 3), ("theta", 1), ("theta", 2), ("theta", 3))
@@ -43,7 +51,11 @@ TITLES = {
     "first_approximation": "paper's first approximation, corrected (Eqs. 4.11-4.14)",
     "averaged_operator": "closed form: averaged operator, exact forcing",
     "exact": "exact periodic solution (harmonic balance)",
+    "loads": "vendor loads: linear steady state of the block (K - n²ω²M + i nωC) Z = F",
 }
+
+#: Appended to the title of a mechanism's approximation when the scene's [[loads]] are added to it.
+WITH_LOADS = " + vendor loads (linear)"
 
 
 @dataclass(frozen=True)
@@ -51,7 +63,8 @@ class Approximation:
     """One approximation of the steady state.
 
     ``motion`` is None when ``resonant``; ``peaks`` has x, y, θ on its arrays' last axis;
-    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks.
+    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks, ``rms`` to its
+    (horizontal, vertical) RMS values.
     """
 
     key: str
@@ -61,20 +74,27 @@ class Approximation:
     nearest: str
     peaks: Peaks | None
     points: dict
+    rms: dict
+    with_loads: bool = False
 
     @property
     def title(self) -> str:
-        return TITLES[self.key]
+        return TITLES[self.key] + (WITH_LOADS if self.with_loads and self.key != "loads" else "")
 
     def harmonic(self, dof: str, n: int) -> complex:
         """Complex coefficient cos - i sin of harmonic n of ``dof`` (0 when absent)."""
         c, s = self.motion.coefficient(dof, n)
         return complex(c) - 1j * complex(s)
 
+    def phase(self, dof: str, n: int) -> float:
+        """Phase lag φ [rad] of harmonic n of ``dof``: the harmonic is A cos(nωt - φ), φ in (-π, π]."""
+        c, s = self.motion.coefficient(dof, n)
+        return float(np.arctan2(float(s), float(c)))
+
 
 @dataclass(frozen=True)
 class LimitRow:
-    """A peak of one point, direction and quantity against its limit (SI units)."""
+    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
 
     point: str
     direction: str
@@ -86,6 +106,44 @@ class LimitRow:
     @property
     def ratio(self) -> float:
         return self.value / self.limit
+
+    @property
+    def source(self) -> str:
+        return f"scene [limits] {limit_key(self.quantity)}"
+
+
+@dataclass(frozen=True)
+class CodeRow:
+    """The zone of one point's RMS velocity in a code's table.
+
+    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s]; the larger
+    one (``governing``) gives the zone. ``limit``: the boundary over which the design fails [m/s].
+    """
+
+    point: str
+    horizontal: float
+    vertical: float
+    governing: str
+    zone: str
+    table: ZoneTable
+    limit: float
+    outcome: Outcome
+
+    @property
+    def value(self) -> float:
+        return max(self.horizontal, self.vertical)
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    @property
+    def verdict_text(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid: zone C, 3.1 mm/s RMS > 2.8"`` (mm/s, the code's unit)."""
+        i = ZONES.index(self.zone)
+        mm_s = f"{self.value * 1e3:.3g} mm/s RMS"
+        bound = f"> {self.table.boundaries_mm_s[i - 1]:g}" if i else f"<= {self.table.boundaries_mm_s[0]:g}"
+        return f"{self.table.title}: zone {self.zone}, {mm_s} {bound} ({self.governing})"
 
 
 @dataclass(frozen=True)
@@ -100,13 +158,51 @@ class ExactInfo:
 
 
 @dataclass(frozen=True)
+class VendorLoads:
+    """A scene's ``[[loads]]`` with the block they act on and the speed ω [rad/s]."""
+
+    block: RigidBlock
+    loads: HarmonicLoads
+    omega: float
+
+
+@dataclass(frozen=True)
+class Damping:
+    """The base dashpots of a design and the modal damping ratios they give.
+
+    ``dashpots``: C_x [N s/m], C_z [N s/m], C_phi [N m s/rad]; ``natural``: natural frequencies of
+    the averaged operator [rad/s], ascending; ``modal_ratios``: each mode's damping ratio [-].
+    """
+
+    dashpots: dict
+    natural: tuple[float, ...]
+    modal_ratios: tuple[float, ...]
+
+
+@dataclass(frozen=True)
 class AmplitudeReport:
-    design: CrankDesign
+    """``design`` is None for a machine given by its loads only (``vendor`` then holds them)."""
+
+    design: CrankDesign | None
     approximations: dict
     checked: str
     rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
+    damping: Damping | None = None
+    code_rows: tuple[CodeRow, ...] = ()
+    code_warnings: tuple[str, ...] = ()
+    vendor: VendorLoads | None = None
+
+    @property
+    def omega(self) -> float:
+        """The speed [rad/s]."""
+        return self.design.omega if self.design is not None else self.vendor.omega
+
+    @property
+    def damped(self) -> bool:
+        """The design has base dashpots: its response is finite at every resonance."""
+        return self.damping is not None
 
     @property
     def resonant(self) -> bool:
@@ -116,46 +212,83 @@ class AmplitudeReport:
     def outcome(self) -> Outcome:
         if self.resonant:
             return Outcome.FAIL
-        return worst(row.outcome for row in self.rows)
+        noted = (Outcome.WARN,) if self.code_warnings else ()
+        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted))
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
 POINT_CHUNK = 1024
 
 
-def _located(motion, points) -> dict[str, Peaks]:
-    """Peaks of C and of every point, all points of a chunk in one array operation."""
+def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
+    """Peaks and RMS values of C and of every point, all points of a chunk in one array operation."""
     names = ["C", *(p.name for p in points)]
     horizontal = np.array([0.0, *(p.horizontal for p in points)])
     height = np.array([0.0, *(p.height for p in points)])
-    chunks = [point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK])
-              for i in range(0, len(names), POINT_CHUNK)]
-    arrays = {f.name: np.concatenate([getattr(pk, f.name) for pk in chunks]) for f in fields(Peaks)}
-    return {name: Peaks(**{q: values[i] for q, values in arrays.items()}) for i, name in enumerate(names)}
-
-
-def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
-    if resonant:
-        return Approximation(key, None, True, margin, nearest, None, {})
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), _located(motion, points))
-
-
-def _first(design: CrankDesign, points) -> Approximation:
-    fa = design_first_approximation(design)
-    label = min(fa.margins, key=lambda k: fa.margins[k])
-    return _approximation(
-        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points
+    chunks = [
+        (point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]),
+         point_rms(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]))
+        for i in range(0, len(names), POINT_CHUNK)
+    ]
+    peaks = {f.name: np.concatenate([getattr(pk, f.name) for pk, _ in chunks]) for f in fields(Peaks)}
+    rms = {f.name: np.concatenate([getattr(rm, f.name) for _, rm in chunks]) for f in fields(Rms)}
+    return (
+        {name: Peaks(**{q: values[i] for q, values in peaks.items()}) for i, name in enumerate(names)},
+        {name: Rms(**{q: values[i] for q, values in rms.items()}) for i, name in enumerate(names)},
     )
 
 
-def _averaged(design: CrankDesign, points) -> Approximation:
+@dataclass(frozen=True)
+class _LoadsPart:
+    """The loads' steady state, added to each approximation of a mechanism (linear superposition)."""
+
+    motion: PeriodicMotion
+    resonant: bool
+    margin: float
+    nearest: str
+
+
+def _loads_part(vendor: VendorLoads) -> _LoadsPart:
+    res = loads_response(vendor.block, vendor.omega, vendor.loads)
+    n, mode, _ = load_conditions(vendor.loads)[int(res.nearest)]
+    label = f"{n if n > 1 else ''}ω = {mode} (loads)"
+    return _LoadsPart(res.motion, bool(res.resonant), float(res.margin), label)
+
+
+def _approximation(key, motion, resonant, margin, nearest, points, loads: _LoadsPart | None = None) -> Approximation:
+    if loads is not None:
+        if loads.margin < margin:
+            margin, nearest = loads.margin, loads.nearest
+        resonant = resonant or loads.resonant
+        if not resonant:
+            motion = loads.motion if motion is None else superpose(motion, loads.motion)
+    with_loads = loads is not None
+    if resonant:
+        return Approximation(key, None, True, margin, nearest, None, {}, {}, with_loads)
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points), with_loads)
+
+
+def _first(design: CrankDesign, points, loads=None) -> Approximation:
+    fa = design_first_approximation(design)
+    label = min(fa.margins, key=lambda k: fa.margins[k])
+    return _approximation(
+        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points,
+        loads,
+    )
+
+
+def _averaged(design: CrankDesign, points, loads=None) -> tuple[Approximation, Damping | None]:
     res = averaged_response(design)
     n, mode = res.nearest
     w = float(res.natural[mode])
     zero, _ = design_frequencies(design)  # name the averaged mode after the nearest k0, p1, p2
     name = min(("k0", "p1", "p2"), key=lambda k: abs(float(getattr(zero, k)) - w))
     label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
-    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points)
+    damping = None
+    dashpots = {"C_x": float(design.C_x), "C_z": float(design.C_z), "C_phi": float(design.C_phi)}
+    if any(value > 0.0 for value in dashpots.values()):
+        damping = Damping(dashpots, tuple(map(float, res.natural)), tuple(map(float, res.damping_ratios)))
+    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads), damping
 
 
 def _errors(approx: Approximation, exact: Approximation) -> dict | None:
@@ -171,15 +304,15 @@ def _errors(approx: Approximation, exact: Approximation) -> dict | None:
     }
     points = {name: {} for name in approx.points}
     for q in QUANTITIES:  # every point at once: (points, directions) arrays
-        errors = relative_error(_stacked(approx, q), _stacked(exact, q)).tolist()
+        errors = relative_error(_stacked(approx.points, q), _stacked(exact.points, q)).tolist()
         for row, name in zip(errors, points):
             points[name][q] = dict(zip(DIRECTIONS, row))
     return {"harmonics": harmonics, "peaks": peaks, "points": points}
 
 
-def _stacked(approx: Approximation, quantity: str) -> np.ndarray:
-    """Peaks of ``quantity`` of C and every point, shape (points, directions)."""
-    return np.array([getattr(pk, quantity) for pk in approx.points.values()])
+def _stacked(by_point: dict, quantity: str) -> np.ndarray:
+    """``quantity`` of C and every point (peaks or RMS values), shape (points, directions)."""
+    return np.array([getattr(values, quantity) for values in by_point.values()])
 
 
 def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
@@ -187,9 +320,10 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
         return ()
     rows = []
     for quantity, limit in limited_quantities(limits).items():
-        values = _stacked(approx, quantity)
+        statistic, field = (approx.rms, quantity[:-4]) if quantity.endswith("_rms") else (approx.points, quantity)
+        values = _stacked(statistic, field)
         over = exceeds(values, limit).tolist()
-        for name, value, fails in zip(approx.points, values.tolist(), over):
+        for name, value, fails in zip(statistic, values.tolist(), over):
             rows += [
                 LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if f else Outcome.PASS)
                 for direction, v, f in zip(DIRECTIONS, value, fails)
@@ -197,11 +331,49 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -> AmplitudeReport:
+def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
+    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
+
+    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
+    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
+    """
+    i = ZONES.index(zone_name)
+    if acceptable is None:
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
+    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+
+
+def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
+    """Zone of every point's RMS velocity in the scene's code table, and why the code may not apply."""
+    code = getattr(limits, "code", None)
+    if code is None:
+        return (), ()
+    table = TABLES[code, limits.machine_group, limits.foundation]
+    power = None if limits.machine_power is None else limits.machine_power / 1e3
+    notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
+    if approx.resonant:
+        return (), notes
+    highest = limits.acceptable_zone or "B"  # zone B warns by default: C is the first that fails
+    limit = table.boundaries[ZONES.index(highest)]
+    rows = []
+    for name, values in approx.rms.items():
+        horizontal, vertical = (float(v) for v in values.velocity)
+        governing = "horizontal" if horizontal >= vertical else "vertical"
+        z = zone(max(horizontal, vertical), table)
+        rows.append(CodeRow(name, horizontal, vertical, governing, z, table, limit, zone_outcome(z, limits.acceptable_zone)))
+    return tuple(rows), notes
+
+
+def check_amplitudes(
+    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None
+) -> AmplitudeReport:
     """Amplitudes of ``design`` by every approximation asked for, and the limit rows.
 
-    ``limits``: an object with ``amplitude``, ``velocity``, ``acceleration`` [m, m/s, m/s²] or
-    None; ``points``: objects with ``name``, ``horizontal``, ``height`` [m].
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²], a code) or None;
+    ``points``: objects with ``name``, ``horizontal``, ``height`` [m]. ``vendor``: the scene's
+    ``[[loads]]``, whose linear steady state is added to every approximation of the mechanism,
+    or is the only one (``"loads"``) when ``design`` is None.
 
     Raises
     ------
@@ -210,10 +382,19 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
     ConvergenceError
         ``exact`` and the harmonic balance fails (away from the averaged operator's resonances).
     """
-    approximations = {"first_approximation": _first(design, points), "averaged_operator": _averaged(design, points)}
-    checked = "averaged_operator"
+    loads = None if vendor is None else _loads_part(vendor)
     info = errors = None
-    if exact and not approximations["averaged_operator"].resonant:
+    damping = None
+    if design is None:
+        approximations = {"loads": _approximation("loads", None, False, loads.margin, loads.nearest, points, loads)}
+        checked = "loads"
+        omega = vendor.omega
+    else:
+        omega = design.omega
+        averaged, damping = _averaged(design, points, loads)
+        approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
+        checked = "averaged_operator"
+    if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
 
         from foundation_calc.solvers.crank.exact import exact_periodic_solution
@@ -223,12 +404,13 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         seconds = time.perf_counter() - start
         info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds)
         averaged = approximations["averaged_operator"]
-        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points)
+        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points, loads)
         checked = "exact"
         errors = {
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator")
         }
+    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega)
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -236,7 +418,35 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         rows=_rows(approximations[checked], limits),
         exact_info=info,
         errors=errors,
+        damping=damping,
+        code_rows=code_rows,
+        code_warnings=code_warnings,
+        vendor=vendor,
     )
 
 
-__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "LimitRow", "check_amplitudes"]
+def scene_vendor_loads(scene) -> VendorLoads | None:
+    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads."""
+    loads = scene.harmonic_loads()
+    return None if loads is None else VendorLoads(scene.block(), loads, scene.speed.omega_rad_s)
+
+
+def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    design = None if scene.mechanism is None else scene.design()
+    return check_amplitudes(design, scene.limits, scene.points, exact=exact, vendor=scene_vendor_loads(scene))
+
+
+__all__ = [
+    "RESONANT_MARGIN",
+    "AmplitudeReport",
+    "Approximation",
+    "CodeRow",
+    "Damping",
+    "LimitRow",
+    "VendorLoads",
+    "check_amplitudes",
+    "check_scene_amplitudes",
+    "scene_vendor_loads",
+    "zone_outcome",
+]

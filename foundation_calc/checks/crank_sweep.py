@@ -3,24 +3,26 @@
 One call of the corrected first approximation on arrays (no Python object per point) gives the
 peaks of x, y and θ at every point; the margins of every resonance condition come from the same
 arithmetic as ``fcalc resonance`` (nearer of the zero-order and the averaged-inertia critical
-speed). A point whose margin is below the first approximation's resonant margin has no periodic
-solution: it is reported as resonant, never as an infinite amplitude.
+speed). With base dashpots every point has a finite amplitude and a phase, at and through each
+resonance; without them a point whose margin is below the first approximation's resonant margin
+has no periodic solution: it is reported as resonant, never as an infinite amplitude.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies
+from foundation_calc.checks.crank_resonance import design_frequencies, load_resonance_conditions
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import resonance_masks
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
-from foundation_calc.solvers.crank.response import point_series
-from foundation_calc.solvers.numerics.trig_series import derivative, peak
+from foundation_calc.solvers.crank.response import PeriodicMotion, point_series, superpose
+from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -30,6 +32,9 @@ CHUNK = 4096
 
 #: Status of a point, worst last.
 STATUSES = ("pass", "warn", "fail", "resonant")
+
+#: Harmonics of the first approximation reported per point (dof, n).
+HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 
 @dataclass(frozen=True)
@@ -54,12 +59,17 @@ class SweepReport:
     peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
     resonant : no periodic solution of the first approximation (margin < 1e-6)
     margin : smallest relative distance from a resonance condition [-]
-    nearest : index into :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` of that one
+    nearest : index into ``conditions`` of that one
+    conditions : the resonance conditions checked: the mechanism's
+        (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
     over_limit : a peak of C (x, y) or of a point exceeds its limit (displacement, velocity or
         acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
     over_quantities : limited quantity -> where its peak exceeds the limit
     status : one of :data:`STATUSES` per point
+    harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
+        [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
+    damped : the design has base dashpots
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     """
 
@@ -74,9 +84,12 @@ class SweepReport:
     over_limit: np.ndarray
     over_quantities: dict
     status: np.ndarray
+    harmonics: dict
+    damped: bool
     critical: tuple[CriticalSpeed, ...]
     limits: dict
     detuning: float
+    conditions: tuple = CONDITIONS
 
     @property
     def amplitude_limit(self) -> float | None:
@@ -90,17 +103,21 @@ def _peaks(cos, sin):
 
 
 def _located(motion, omega, points, limits: dict):
-    """Peak displacements of every point, name -> (n, 2) [m], and, per limited quantity, whether
-    a peak of C (x, y) or of a point exceeds the limit (bool (n,)).
+    """Peak displacements of every point, name -> (n, 2) [m], and, per limited quantity (peak or
+    RMS), whether a value of C (x, y) or of a point exceeds the limit (bool (n,)).
 
     The points go through :func:`point_series` and :func:`peak` together, as many at a time as
     make :data:`CHUNK` sweep points' worth of series.
     """
     w = omega[:, None]
+    orders = {}  # every quantity a limit may bound -> (order of the time derivative, a peak or not)
+    for order, quantity in enumerate(QUANTITIES):
+        orders[quantity], orders[f"{quantity}_rms"] = (order, True), (order, False)
     largest = {}
-    for order, quantity in enumerate(QUANTITIES):  # C: x and y
-        if quantity in limits:
-            largest[quantity] = _peaks(*derivative(motion.cos[..., :2, :], motion.sin[..., :2, :], w, order)).max(axis=1)
+    for key in limits:  # C: x and y
+        order, is_peak = orders[key]
+        cos, sin = derivative(motion.cos[..., :2, :], motion.sin[..., :2, :], w, order)
+        largest[key] = (_peaks(cos, sin) if is_peak else rms(cos, sin)).max(axis=1)
     located = {}
     names = [name for name, _, _ in points]
     horizontal = np.array([u for _, u, _ in points], dtype=float)[:, None]
@@ -108,24 +125,45 @@ def _located(motion, omega, points, limits: dict):
     step = max(1, CHUNK // max(len(omega), 1))
     for i in range(0, len(names), step):
         cos, sin = point_series(motion, horizontal[i : i + step], height[i : i + step])  # (points, n, 2, K + 1)
-        for order, quantity in enumerate(QUANTITIES):
-            if order and quantity not in limits:
-                continue
-            found = peak(*derivative(cos, sin, w, order))  # (points, n, 2)
-            if order == 0:
+        for key in {"displacement", *limits}:
+            order, is_peak = orders[key]
+            found = (peak if is_peak else rms)(*derivative(cos, sin, w, order))  # (points, n, 2)
+            if key == "displacement":
                 located.update(zip(names[i : i + step], found))
-            if quantity in limits:
-                largest[quantity] = np.maximum(largest[quantity], found.max(axis=(0, 2)))
-    return located, {quantity: exceeds(value, limits[quantity]) for quantity, value in largest.items()}
+            if key in limits:
+                largest[key] = np.maximum(largest[key], found.max(axis=(0, 2)))
+    return located, {key: exceeds(value, limits[key]) for key, value in largest.items()}
 
 
-def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, points=()) -> SweepReport:
+def _complex(coefficient):
+    """cos - i sin of a (cos, sin) pair of arrays."""
+    c, s = coefficient
+    return c - 1j * s
+
+
+def _varied_block(block, variable: str, values):
+    """The loads' block at each point of the sweep: soil springs × factor, dashpots × sqrt(factor)
+    (C = 2 ξ sqrt(K m) at fixed damping ratios); unchanged for a speed sweep."""
+    if variable != "soil_factor":
+        return block
+    f = np.asarray(values, dtype=float)
+    r = np.sqrt(f)
+    return replace(block, K_x=block.K_x * f, K_z=block.K_z * f, K_phi=block.K_phi * f,
+                   C_x=block.C_x * r, C_z=block.C_z * r, C_phi=block.C_phi * r)
+
+
+def sweep(
+    design: CrankDesign | None, variable: str, values, limits, detuning: float, points=(), vendor=None
+) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
 
-    ``limits``: the scene's ``[limits]`` (amplitude, velocity, acceleration [m, m/s, m/s²] or
-    None), checked as ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height)
-    [m] of body points relative to C, as the scene's ``[[points]]``; their peaks come from the
-    same series (rigid-body motion, exact in θ).
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²] or None), checked as
+    ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height) [m] of body points
+    relative to C, as the scene's ``[[points]]``; their peaks come from the same series
+    (rigid-body motion, exact in θ). ``vendor``: the scene's ``[[loads]]``
+    (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
+    is added to the mechanism's, or is the whole motion when ``design`` is None; their
+    conditions n ω = k0, p1, p2 join the mechanism's.
 
     Raises
     ------
@@ -135,15 +173,37 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
     if variable not in VARIABLES:
         raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
     values = np.asarray(values, dtype=float)
-    batch = varied(design, **{variable: values})
-    motion, resonant = first_approximation_motion(batch)
+    conditions, margins, drivens, criticals = [], [], [], []
+    motion = resonant = None
+    if design is not None:
+        batch = varied(design, **{variable: values})
+        motion, resonant = first_approximation_motion(batch)
+        resonant = np.asarray(resonant, dtype=bool)
+        zero, averaged = design_frequencies(batch)
+        omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
+        conditions += CONDITIONS
+        margins += [np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS]
+        drivens += [c.source == "paper" for c in CONDITIONS]
+        criticals += [(c, zero, averaged) for c in CONDITIONS]
+    if vendor is not None:
+        block = _varied_block(vendor.block, variable, values)
+        omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
+        res = loads_response(block, omega, vendor.loads)
+        own = load_resonance_conditions(vendor.loads)
+        freqs = block_frequencies(block)
+        conditions += own
+        margins += [np.broadcast_to(condition_margin(omega, freqs, freqs, c), values.shape) for c in own]
+        drivens += [c.driven for c in own]
+        criticals += [(c, freqs, freqs) for c in own]
+        loads_motion = PeriodicMotion(omega, np.nan_to_num(res.motion.cos), np.nan_to_num(res.motion.sin))
+        motion = loads_motion if motion is None else superpose(motion, loads_motion)
+        resonant = res.resonant if resonant is None else resonant | res.resonant
+    dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
-    zero, averaged = design_frequencies(batch)
-    omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
-    margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
+    margins = np.stack(margins)
     nearest = np.argmin(margins, axis=0)
     margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
-    driven = np.array([c.source == "paper" for c in CONDITIONS])[:, None]
+    driven = np.array(drivens)[:, None]
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
@@ -157,7 +217,7 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
         lo, hi = values.min(), values.max()
         critical = tuple(
             CriticalSpeed(c.label, c.source, float(w0), float(w1))
-            for c in CONDITIONS
+            for c, zero, averaged in criticals
             for w0, w1 in [(critical_speed(getattr(zero, c.mode), c.harmonic), critical_speed(getattr(averaged, c.mode), c.harmonic))]
             if lo <= max(w0, w1) and min(w0, w1) <= hi
         )
@@ -173,10 +233,13 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
         over_limit=over,
         over_quantities=over_quantities,
         status=status,
+        harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
+        damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
         critical=critical,
         limits=limited,
         detuning=detuning,
+        conditions=tuple(conditions),
     )
 
 
-__all__ = ["STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]

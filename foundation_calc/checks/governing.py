@@ -41,7 +41,7 @@ def governing_points(points: Mapping[str, Peaks], exclude: Iterable[str] = ("C",
 
 
 def worst_rows(rows: Sequence, count: int) -> list:
-    """The ``count`` limit rows with the largest peak/limit ratio, and the largest of each quantity
+    """The ``count`` limit rows with the largest value/limit ratio, and the largest of each quantity
     besides, by ratio from the largest (a row has ``quantity`` and ``ratio``).
 
     >>> from types import SimpleNamespace as Row

@@ -17,6 +17,7 @@ class Section(str, Enum):
     throughput = "throughput"
     startup = "startup"
     points = "points"
+    batch = "batch"
 
 
 ScenesArg = Annotated[
@@ -39,6 +40,11 @@ MethodOpt = Annotated[
                  " first_approximation, averaged_operator, harmonic_balance_K4, shooting_solve_ivp)."
                  " The converged reference is always computed.", show_default=False),
 ]
+BatchOpt = Annotated[
+    Optional[int],
+    typer.Option("--batch-scenes", min=0, help="Scenes in the large fcalc check batch (0: leave it out)."
+                 " Default: 10000 (1000 with --quick).", show_default=False),
+]
 SkipOpt = Annotated[
     Optional[list[Section]], typer.Option("--skip", help="Leave out a section (repeatable).", show_default=False)
 ]
@@ -47,6 +53,8 @@ SkipOpt = Annotated[
 MIN_TIME = {False: 0.2, True: 0.02}
 STARTUP_RUNS = {False: 20, True: 5}
 POINTS_RUNS = {False: 3, True: 1}
+#: fcalc check batch: platform scenes in the small runs, their rounds, scenes in the large batch.
+BATCH_MANY, BATCH_ROUNDS, BATCH_LARGE = 100, {False: 5, True: 2}, {False: 10_000, True: 1_000}
 
 
 def _default_scenes() -> list[Path]:
@@ -75,6 +83,7 @@ def bench(
     quick: QuickOpt = False,
     skip: SkipOpt = None,
     method: MethodOpt = None,
+    batch_scenes: BatchOpt = None,
 ) -> None:
     """Time every amplitude method on each crank scene and report its error against the exact solution.
 
@@ -84,9 +93,12 @@ def bench(
     θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Platform
     harmonic balance on built-in rigs of 1, 3 and 17 exciters: time and error against the
     truncation order K, and the whole check of each rig against one exciter. Then the
-    designs per second of one vectorised call against a Python loop, fcalc's start-up against
+    designs per second of one vectorised call against a Python loop (closed-form amplitudes
+    undamped and damped, and a damped speed sweep of a tenth as many speeds), fcalc's start-up against
     its frameworks', and whole fcalc processes on that scene with 10, 1 000 and 15 000 points
-    (time and memory against 10 points) — all measured in this run, on the first crank scene.
+    (time and memory against 10 points) — all measured in this run, on the first crank scene. Last,
+    fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
+    of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -102,6 +114,8 @@ def bench(
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
     if not cranks:  # throughput, start-up and points are measured on the first crank scene
         skipped |= {Section.throughput, Section.startup, Section.points}
+    if not platforms:  # the batch's marginal cost is that of a platform scene
+        skipped.add(Section.batch)
 
     from foundation_calc.benchmarks.accuracy import METHODS, benchmark_scene
     from foundation_calc.output import bench_report as report
@@ -110,9 +124,11 @@ def bench(
     steps = len(cranks) * len(methods) if Section.accuracy not in skipped else 0
     steps += len(platforms) if Section.accuracy not in skipped else 0
     steps += 3 * (Section.harmonic_balance not in skipped)
-    steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
+    steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
     steps += Section.points not in skipped
-    results, platform_results, throughput, startup, truncation, points = [], [], None, None, None, None
+    large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
+    steps += (1 + (large > 0)) * (Section.batch not in skipped)
+    results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -131,7 +147,13 @@ def bench(
 
             truncation = benchmark_truncation(MIN_TIME[quick], on_rig=step)
         if Section.throughput not in skipped:
-            from foundation_calc.benchmarks.throughput import amplitude_throughput, resonance_throughput
+            from foundation_calc.benchmarks.throughput import (
+                amplitude_throughput,
+                damped_variant,
+                resonance_throughput,
+                sweep_throughput,
+                undamped_variant,
+            )
 
             design = cranks[0][1].design()
             n = designs or (100_000 if quick else 1_000_000)
@@ -139,7 +161,12 @@ def bench(
             step(f"throughput: resonance check, {n:.3g} designs")
             throughput = {"resonance_check": resonance_throughput(design, n, sample)}
             step(f"throughput: closed-form amplitudes, {n:.3g} designs")
-            throughput["closed_form_amplitudes"] = amplitude_throughput(design, n, sample)
+            throughput["closed_form_amplitudes"] = amplitude_throughput(undamped_variant(design), n, sample)
+            damped = damped_variant(design)
+            step(f"throughput: damped closed-form amplitudes, {n:.3g} designs")
+            throughput["closed_form_amplitudes_damped"] = amplitude_throughput(damped, n, sample)
+            step(f"throughput: damped speed sweep, {n // 10:.3g} speeds")
+            throughput["sweep_damped"] = sweep_throughput(damped, n // 10, min(sample, 200))
         if Section.startup not in skipped:
             from foundation_calc.benchmarks.startup import startup_times
 
@@ -150,19 +177,23 @@ def bench(
 
             step(f"points: {', '.join(map(str, POINT_COUNTS))} points, tables, JSON and check")
             points = points_scaling(str(cranks[0][0]), runs=POINTS_RUNS[quick])
+        if Section.batch not in skipped:
+            from foundation_calc.benchmarks.batch import batch_benchmark
+
+            batch = batch_benchmark(platforms[0][0], paths, BATCH_MANY, large, BATCH_ROUNDS[quick], on_step=step)
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
         from foundation_calc.output.console import print_json
 
-        document = report.bench_document(results, platform_results, throughput, startup, truncation)
+        document = report.bench_document(results, platform_results, throughput, startup, truncation, batch)
         if points is not None:
             from foundation_calc.output.bench_points import points_document
 
             document["points_scaling"] = points_document(points)
         print_json(document)
     else:
-        report.print_bench(results, platform_results, throughput, startup, truncation)
+        report.print_bench(results, platform_results, throughput, startup, truncation, batch)
         if points is not None:
             from foundation_calc.output.bench_points import print_points
 

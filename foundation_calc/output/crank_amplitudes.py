@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import math
+
 from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally, worst_rows
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -21,7 +24,8 @@ DISPLAY_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "accele
 FIRST_KEYS = (("y", 1, "cos"), ("y", 2, "cos"), ("x", 1, "sin"), ("x", 3, "sin"), ("theta", 1, "sin"), ("theta", 3, "sin"))
 
 
-def _approximation_document(approx: Approximation) -> dict:
+def _approximation_document(approx: Approximation, harmonics: int = 5) -> dict:
+    """One approximation's part of the JSON document: harmonics 0 ... ``harmonics`` - 1."""
     doc = {
         "title": approx.title,
         "resonant": approx.resonant,
@@ -33,14 +37,15 @@ def _approximation_document(approx: Approximation) -> dict:
     if approx.key == "first_approximation":
         coefficients = {f"{dof}{n}": float(approx.motion.coefficient(dof, n)[part == "sin"]) for dof, n, part in FIRST_KEYS}
         doc["coefficients"] = coefficients
-        doc["magnitudes"] = {k: abs(v) for k, v in coefficients.items()}
+        doc["magnitudes"] = {f"{dof}{n}": abs(approx.harmonic(dof, n)) for dof, n, _ in FIRST_KEYS}
     doc["harmonics"] = {
         f"{dof}{n}": {
             "cos": float(approx.motion.coefficient(dof, n)[0]),
             "sin": float(approx.motion.coefficient(dof, n)[1]),
             "magnitude": abs(approx.harmonic(dof, n)),
+            "phase": approx.phase(dof, n),
         }
-        for dof, n in ((d, n) for d in DOFS for n in range(0, 5))
+        for dof, n in ((d, n) for d in DOFS for n in range(0, harmonics))
     }
     doc["peaks"] = {
         dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
@@ -49,24 +54,92 @@ def _approximation_document(approx: Approximation) -> dict:
     for name, pk in approx.points.items():
         values = {q: getattr(pk, q).tolist() for q in QUANTITIES}  # per direction, as Python floats
         doc["points"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
+    doc["points_rms"] = {}
+    for name, rm in approx.rms.items():
+        values = {q: getattr(rm, q).tolist() for q in QUANTITIES}
+        doc["points_rms"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
     return doc
+
+
+def code_document(report: AmplitudeReport, limits) -> dict | None:
+    """The ``code`` part of the JSON documents: the table used, its zones per point, warnings."""
+    if getattr(limits, "code", None) is None:
+        return None
+    rows = report.code_rows
+    table = rows[0].table if rows else None
+    return {
+        "code": limits.code,
+        "machine_group": limits.machine_group,
+        "foundation": limits.foundation,
+        "acceptable_zone": limits.acceptable_zone,
+        "clause": table.clause if table else None,
+        "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
+        "points": [
+            {
+                "point": row.point,
+                "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
+                "governing": row.governing,
+                "value": row.value,
+                "zone": row.zone,
+                "limit": row.limit,
+                "ratio": row.ratio,
+                "verdict": row.outcome.value,
+                "reason": row.verdict_text,
+            }
+            for row in rows
+        ],
+        "warnings": list(report.code_warnings),
+    }
+
+
+def loads_document(vendor) -> dict:
+    """The scene's loads as generalised forces about C (Q_x, Q_y [N], Q_θ [N m]) and the block's matrices."""
+    from foundation_calc.solvers.crank.loads import matrices
+
+    q = vendor.loads.generalized()
+    M, K, C = matrices(vendor.block)
+    return {
+        "model": "(K - n²ω²M + i nωC) Z_n = Σ Q e^{iφ}; loads F cos(nωt + φ); Q_θ = H F_x + u F_y + M",
+        "generalized_forces": [
+            {"order": int(n), "x": {"re": v[0].real, "im": v[0].imag}, "y": {"re": v[1].real, "im": v[1].imag},
+             "theta": {"re": v[2].real, "im": v[2].imag}}
+            for n, v in zip(vendor.loads.order, q)
+        ],
+        "mass_matrix": M.tolist(),
+        "stiffness_matrix": K.tolist(),
+        "damping_matrix": C.tolist(),
+    }
 
 
 def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc amplitudes`` (every number SI)."""
     d = report.design
+    shown = 5 if report.vendor is None else max(5, int(report.vendor.loads.order.max()) + 1)
+    derived = (
+        {"total_mass": report.vendor.block.M_tot}
+        if d is None
+        else {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m}
+    )
     doc = {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "amplitudes",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
-        "derived": {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m},
+        "speed": {**speed_triplet(report.omega), "given_as": scene.speed.speed_given_as},
+        "derived": derived,
+        "loads": None if report.vendor is None else loads_document(report.vendor),
         "conventions": "y positive downward; theta turns +x toward +y; x, y of the centre of mass C;"
         " a point's displacement is the rigid-body motion X + (R(theta) - I)(horizontal, -height),"
         " to first order (x + height·theta, y + horizontal·theta)",
         "resonant_margin": RESONANT_MARGIN,
+        "damping": None
+        if report.damping is None
+        else {
+            "dashpots": report.damping.dashpots,
+            "natural_frequencies": list(report.damping.natural),
+            "modal_damping_ratios": list(report.damping.modal_ratios),
+        },
         "checked_with": report.checked,
-        "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
+        "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
         "limits": [
             {
                 "point": row.point,
@@ -76,9 +149,11 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
                 "limit": row.limit,
                 "ratio": row.ratio,
                 "verdict": row.outcome.value,
+                "source": row.source,
             }
             for row in report.rows
         ],
+        "code": code_document(report, scene.limits),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:
@@ -95,42 +170,93 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
 
 
 def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
-    table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
+    if report.damped:
+        return _damped_harmonics_table(report, units)
+    # a mechanism alone moves y as cosines and x, θ as sines; loads bring both parts: show magnitudes
+    signed = report.vendor is None
+    title = "signed coefficient of cos nωt for y, of sin nωt for x and θ" if signed else "magnitude of each harmonic"
+    table = Table(title=f"Harmonics ({title})", title_justify="left")
     table.add_column("harmonic")
     shown = [a for a in report.approximations.values()]
+    harmonics = HARMONICS
+    if not signed:
+        extra = sorted({int(n) for n in report.vendor.loads.order} - {n for _, n in HARMONICS})
+        harmonics = tuple(sorted(HARMONICS + tuple((dof, n) for dof in DOFS for n in extra), key=lambda h: (DOFS.index(h[0]), h[1])))
+
+    def value_of(a, dof, n):
+        return float(a.motion.coefficient(dof, n)[0 if dof == "y" else 1]) if signed else abs(a.harmonic(dof, n))
+
     for a in shown:
         table.add_column(a.key.replace("_", " "), justify="right")
-    if report.errors:
-        for key in report.errors:
-            table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+    _error_columns(table, report)
     scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
-        (a.key, dof): max(abs(float(a.motion.coefficient(dof, k)[0 if dof == "y" else 1])) for d, k in HARMONICS if d == dof)
+        (a.key, dof): max(abs(value_of(a, dof, k)) for d, k in harmonics if d == dof)
         for a in shown
         if not a.resonant
         for dof in DOFS
     }
-    for dof, n in HARMONICS:
-        part = 0 if dof == "y" else 1
+    for dof, n in harmonics:
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
         cells = [f"{dof}{n} \\[{unit}]"]
         for a in shown:
             if a.resonant:
                 cells.append("resonant")
                 continue
-            value = float(a.motion.coefficient(dof, n)[part])
+            value = value_of(a, dof, n)
             scale = scales[a.key, dof]
             if dof != "theta":
                 value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
             cells.append(fmt_scaled(value, scale, 6))
-        if report.errors:
-            for err in report.errors.values():
-                cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")
-        table.add_row(*cells)
+        table.add_row(*cells, *_error_cells(report, dof, n))
+    return table
+
+
+def _error_columns(table: Table, report: AmplitudeReport) -> None:
+    for key in report.errors or ():
+        table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+
+
+def _error_cells(report: AmplitudeReport, dof: str, n: int) -> list[str]:
+    errors = ((report.errors or {}).values())
+    return ["-" if err is None or f"{dof}{n}" not in err["harmonics"] else f"{err['harmonics'][f'{dof}{n}']:.2e}" for err in errors]
+
+
+def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    """Amplitude A and phase lag φ of each harmonic, q_n(t) = A cos(nωt - φ), for every method."""
+    table = Table(
+        title="Harmonics, damped: amplitude A and phase lag φ, q_n(t) = A cos(nωt − φ)", title_justify="left"
+    )
+    table.add_column("harmonic")
+    shown = list(report.approximations.values())
+    for a in shown:
+        name = a.key.replace("_", " ")
+        table.add_column(f"A, {name}", justify="right")
+        table.add_column(f"φ [°], {name}", justify="right")
+    _error_columns(table, report)
+    scales = {
+        (a.key, dof): max(abs(a.harmonic(d, k)) for d, k in HARMONICS if d == dof)
+        for a in shown
+        if not a.resonant
+        for dof in DOFS
+    }
+    for dof, n in HARMONICS:
+        unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
+        cells = [f"{dof}{n} \\[{unit}]"]
+        for a in shown:
+            if a.resonant:
+                cells += ["resonant", "-"]
+                continue
+            value, scale = abs(a.harmonic(dof, n)), scales[a.key, dof]
+            if dof != "theta":
+                value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
+            amplitude = fmt_scaled(value, scale, 6)
+            cells += [amplitude, "-" if amplitude == "0" else f"{math.degrees(a.phase(dof, n)):.1f}"]
+        table.add_row(*cells, *_error_cells(report, dof, n))
     return table
 
 
 #: Points besides C up to which the tables list every point and limit row; with more, they show
-#: the governing points and the largest peak/limit ratios (every row with --all-points or --json).
+#: the governing points and the largest value/limit ratios (every row with --all-points or --json).
 ALL_POINTS_UP_TO = 12
 
 #: Limit rows shown for a scene with more points: the largest ratios (and each quantity's largest).
@@ -177,17 +303,35 @@ def _limits_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool
     if _summarised(report, all_points):
         rows = worst_rows(report.rows, WORST_ROWS)
         title += (
-            f": {len(rows)} of {len(report.rows)} rows, the {WORST_ROWS} largest peak/limit ratios and the"
+            f": {len(rows)} of {len(report.rows)} rows, the {WORST_ROWS} largest value/limit ratios and the"
             f" largest of each quantity ({EVERY_ROW})"
         )
     table = Table(title=title, title_justify="left")
-    for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
-        table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
+    for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
+        table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
     for row in rows:
-        shown = DISPLAY_QUANTITY[row.quantity]
+        shown = display_quantity(row.quantity)
         table.add_row(
             Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
             f"{row.ratio:.3f}", verdict_text(row.outcome.value),
+        )
+    return table
+
+
+def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    rows = report.code_rows
+    t = rows[0].table
+    bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
+    table = Table(
+        title=f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s)", title_justify="left"
+    )
+    unit = units.label("velocity")
+    for col in ("point", f"horizontal [{unit}]", f"vertical [{unit}]", "governs", "zone", f"fails over [{unit}]", "verdict"):
+        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col else "left")
+    for row in rows:
+        table.add_row(
+            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
+            row.governing, row.zone, fmt(units.convert("velocity", row.limit)), verdict_text(row.outcome.value),
         )
     return table
 
@@ -197,20 +341,24 @@ def summary_line(report: AmplitudeReport) -> str:
     if report.resonant:
         where = "exactly at the speed" if approx.margin == 0 else f"{approx.margin:.3g} (relative) from the speed"
         return f"{verdict_text('fail')}: resonant — {approx.nearest} is {where}; no steady state without damping"
-    if not report.rows:
+    if not report.rows and not report.code_rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
-    top = max(report.rows, key=lambda r: r.ratio)
-    line = (
-        f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
-        f" ({escape(top.point)}, {top.direction} {top.quantity})"
-    )
-    count = tally(report.rows)
-    if count.failed_rows:
-        line += (
-            f"; {count.failed_rows} of {count.rows} peaks over their limits,"
-            f" at {count.failed_points} of {count.points} points (C included)"
-        )
-    return line
+    parts = []
+    if report.rows:
+        top = max(report.rows, key=lambda r: r.ratio)
+        parts.append(f"largest value/limit {top.ratio:.3f} ({escape(top.point)}, {top.direction} {top.quantity})")
+        count = tally(report.rows)
+        if count.failed_rows:
+            parts.append(
+                f"{count.failed_rows} of {count.rows} values over their limits,"
+                f" at {count.failed_points} of {count.points} points (C included)"
+            )
+    if report.code_rows:
+        top = max(report.code_rows, key=lambda r: r.ratio)
+        parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
+    if report.damped:
+        parts.append(f"damped response, {approx.margin:.2%} from {escape(approx.nearest)}")
+    return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 
 def print_amplitudes_report(
@@ -218,16 +366,24 @@ def print_amplitudes_report(
 ) -> None:
     """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI): every point
     and limit row, or with more than :data:`ALL_POINTS_UP_TO` points (and not ``all_points``)
-    the governing points and the largest peak/limit ratios."""
-    d = report.design
+    the governing points and the largest value/limit ratios."""
+    d, w = report.design, report.omega
     out = stdout()
+    machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
     out.print(
-        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
-        f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
+        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', w)} = {fmt(rpm_from_omega(w))} rpm,"
+        f" {machine}; y positive downward"
     )
     for a in report.approximations.values():
         note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"
         out.print(f"  {a.key.replace('_', ' ')}: {a.title} ({note})")
+    if report.damping is not None:
+        damping = report.damping
+        modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
+        out.print(
+            f"  damped (base dashpots C_x = {fmt(damping.dashpots['C_x'])} N s/m, C_z = {fmt(damping.dashpots['C_z'])} N s/m,"
+            f" C_φ = {fmt(damping.dashpots['C_phi'])} N m s/rad); modes of the averaged operator: {modes}"
+        )
     if report.exact_info is not None:
         info = report.exact_info
         out.print(
@@ -239,4 +395,8 @@ def print_amplitudes_report(
         out.print(_points_table(report, units, all_points))
     if report.rows:
         out.print(_limits_table(report, units, all_points))
+    if report.code_rows:
+        out.print(_code_table(report, units))
+    for warning in report.code_warnings:
+        out.print(Text(f"warning: {warning}", style="yellow"))
     out.print(summary_line(report))

@@ -1,18 +1,43 @@
-"""Table, CSV, JSON and plot of ``fcalc sweep``. Resonant points carry no amplitude (empty / null)."""
+"""Table, CSV, JSON and plot of ``fcalc sweep``. Resonant points (undamped only) carry no amplitude
+(empty / null); a damped sweep adds each harmonic's amplitude and phase lag."""
 
 from __future__ import annotations
 
 import csv
 import io
+import math
 from pathlib import Path
 
-from foundation_calc.checks.limits import QUANTITIES
+import numpy as np
+
+from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
-from foundation_calc.solvers.crank.resonance import CONDITIONS
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
+LOADS_METHOD = "vendor loads, linear steady state"
 STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
+
+
+def method(report) -> str:
+    """What computed the sweep's amplitudes: the mechanism's closed form, the loads' steady state or both."""
+    sources = {c.source for c in report.conditions}
+    parts = ([METHOD] if sources - {"loads"} else []) + ([LOADS_METHOD] if "loads" in sources else [])
+    return " + ".join(parts)
+
+
+def _condition_label(condition) -> str:
+    """A condition's label, with "(loads)" for a harmonic of the scene's [[loads]]."""
+    return condition.label + (" (loads)" if condition.source == "loads" else "")
+
+
+def _harmonics(report, i: int) -> dict | None:
+    """Amplitude [m or rad] and phase lag [rad] of each harmonic at point i; None where resonant."""
+    if report.resonant[i]:
+        return None
+    return {
+        key: {"amplitude": float(abs(z[i])), "phase": float(-np.angle(z[i]))} for key, z in report.harmonics.items()
+    }
 
 
 def _rows(report):
@@ -30,9 +55,10 @@ def _rows(report):
             "x_peak": x,
             "y_peak": y,
             "theta_peak": th,
+            "harmonics": _harmonics(report, i),
             "points": points,
             "resonant": resonant,
-            "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
+            "nearest_condition": _condition_label(report.conditions[int(report.nearest[i])]),
             "margin": float(report.margin[i]),
             "over_limit": bool(report.over_limit[i]),
             "over_limits": [q for q, mask in report.over_quantities.items() if mask[i]],
@@ -46,10 +72,10 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
         "schema_version": JSON_SCHEMA_VERSION,
         "scene": scene_path,
         "name": name,
-        "method": METHOD,
+        "method": method(report),
         "variable": report.variable,
         "limits": {
-            **{key: report.limits.get(quantity) for quantity, key in QUANTITIES.items()},
+            **{key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
             "detuning": report.detuning,
         },
         "critical_speeds": [
@@ -66,6 +92,7 @@ def sweep_csv(report) -> str:
     writer = csv.writer(buffer, lineterminator="\n")
     header = [report.variable if report.variable != "omega" else "omega_rad_s", "speed_hz", "speed_rpm",
               "x_peak_m", "y_peak_m", "theta_peak_rad",
+              *(f"{key}_{part}" for key in report.harmonics for part in ("amplitude", "phase_rad")),
               *(f"{name}_{d}_peak_m" for name in report.points for d in ("horizontal", "vertical")),
               "resonant", "nearest_condition", "margin", "over_limit", "status"]
     if report.variable != "omega":
@@ -77,6 +104,9 @@ def sweep_csv(report) -> str:
             cells.append(row["omega"])
         cells += [hz_from_omega(row["omega"]), rpm_from_omega(row["omega"])]
         cells += ["" if row[k] is None else repr(row[k]) for k in ("x_peak", "y_peak", "theta_peak")]
+        for key in report.harmonics:
+            h = row["harmonics"]
+            cells += ["", ""] if h is None else [repr(h[key]["amplitude"]), repr(h[key]["phase"])]
         for name in report.points:
             p = row["points"][name]
             cells += ["", ""] if p is None else [repr(p["horizontal"]), repr(p["vertical"])]
@@ -92,15 +122,17 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
 
     out = stdout()
     speed_unit, amp_unit = units.label("speed"), units.label("amplitude")
-    title = f"{escape(name or scene_path)} — {METHOD}"
+    title = f"{escape(name or scene_path)} — {method(report)}"
     table = Table(title=title, title_justify="left")
     if report.variable == "soil_factor":
-        table.add_column("soil factor (c_z, c_x)", justify="right")
+        table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
     table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
     for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
         table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
     for name in report.points:
         table.add_column(escape(f"{name} peak h/v [{amp_unit}]"), justify="right")
+    if report.damped:
+        table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
     table.add_column("nearest resonance, margin")
     table.add_column("status")
     for row in _rows(report):
@@ -115,6 +147,9 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
                 " / ".join(fmt(units.convert("amplitude", p[k]), 4) for k in ("horizontal", "vertical"))
                 for p in row["points"].values()
             ]
+        if report.damped:
+            h = row["harmonics"]
+            cells.append("-" if h is None else f"{math.degrees(h['x1']['phase']):.1f} / {math.degrees(h['y1']['phase']):.1f}")
         cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
         over = ", ".join(row["over_limits"])
         status = row["status"] + (f" (over {over} limit)" if over else "")
@@ -128,9 +163,9 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         for c in report.critical:
             crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
-    limits = "; ".join(f"{q} {units.show(QUANTITIES[q], v)}" for q, v in report.limits.items()) or "none"
+    limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
-        f"peak limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
+        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
     )
 
 
@@ -143,10 +178,10 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
     fig, ax = new_figure()
     if report.variable == "omega":
         xs = np.array([units.convert("speed", w) for w in report.values])
-        ax.set_xlabel(f"crank speed [{units.label('speed')}]")
+        ax.set_xlabel(f"speed [{units.label('speed')}]")
     else:
         xs = report.values
-        ax.set_xlabel("factor on the soil coefficients c_z, c_x [-]")
+        ax.set_xlabel("factor on the soil coefficients c_z, c_x, c_phi [-]")
     ok = ~report.resonant
     for i, dof in enumerate(("x", "y")):
         amps = np.where(ok, [units.convert("amplitude", v) for v in report.peaks[:, i]], np.nan)
@@ -159,7 +194,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
         ax.text(units.convert("speed", c.zero_order), 1.0, c.label, rotation=90, va="top", ha="right", fontsize=7,
                 transform=ax.get_xaxis_transform())
     ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
-    ax.set_title(f"{name}: {METHOD}", fontsize=9)
+    ax.set_title(f"{name}: {method(report)}", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, path)

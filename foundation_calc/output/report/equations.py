@@ -12,11 +12,12 @@ from foundation_calc.output.report.model import Equation
 CRANK = (
     Equation(
         'k_0^2 = c S / M_"tot", quad a_0 = c_1 S / M_"tot", quad b_0 = c_1 h S / M_"tot", quad'
-        ' a_1 = c_1 h S / I_c, quad b_1 = (c_1 h^2 S + c I_1 - P_"tot" h) / I_c',
+        ' a_1 = c_1 h S / I_c, quad b_1 = (c_1 h^2 S + c_phi I_1 - P_"tot" h) / I_c',
         "k0² = c S/M_tot, a0 = c1 S/M_tot, b0 = c1 h S/M_tot, a1 = c1 h S/I_c,"
-        " b1 = (c1 h² S + c I1 − P_tot h)/I_c",
+        " b1 = (c1 h² S + c_φ I1 − P_tot h)/I_c",
         "[KM] Eq. (4.5), with (3.4)",
-        "(3.4): the weight term of the rocking stiffness is −P h (printed +P h); ∫z³ is ∫z².",
+        "(3.4): the weight term of the rocking stiffness is −P h (printed +P h); ∫z³ is ∫z²;"
+        " the paper's c I1 is generalised to c_φ I1 (c_φ = c unless soil.c_phi is given).",
     ),
     Equation(
         'p_(1,2)^2 = (a_0 + b_1)/2 minus.plus sqrt(((a_0 + b_1)/2)^2 - (a_0 b_1 - a_1 b_0))',
@@ -46,6 +47,15 @@ CRANK = (
         "[KM] Eqs. (4.11)–(4.14)",
         "(4.12): A′ lacks 1/l on the crank term and has the wrong sign on the rod-couple term;"
         " (4.13): A‴ has the wrong sign; \"c_1\" in (4.14) is θ1.",
+    ),
+)
+
+LOADS = (
+    Equation(
+        '(K - n^2 omega^2 M + i n omega C) Z_n = sum Q e^(i phi), quad'
+        ' Q = (F_x, F_y, H F_x + u F_y + M)',
+        "(K − n²ω² M + i nω C) Z_n = Σ Q e^{iφ},  Q = (F_x, F_y, H F_x + u F_y + M)  (loads F cos(nωt + φ) at (u, H) from C)",
+        "vendor loads: rigid block about C, K of [KM] (3.2)–(3.4) corrected, C the base dashpots",
     ),
 )
 

@@ -74,6 +74,19 @@ def magnitude(cos, sin):
     return np.hypot(cos, sin)
 
 
+def rms(cos, sin):
+    """RMS over one period of the oscillating part of a series [unit of q]: sqrt(Σ_{n≥1} (c_n² + s_n²)/2).
+
+    The mean (n = 0) is left out: it is a static offset, not vibration (ISO 10816-1, 3.3: the
+    r.m.s. of the vibration). Parseval's identity over one period.
+
+    >>> round(float(rms(np.array([5.0, 3.0, 0.0]), np.array([0.0, 0.0, 4.0]))), 12)  # 3 cos φ + 4 sin 2φ
+    3.535533905933
+    """
+    cos, sin = np.asarray(cos, dtype=float), np.asarray(sin, dtype=float)
+    return np.sqrt(0.5 * (cos[..., 1:] ** 2 + sin[..., 1:] ** 2).sum(-1))
+
+
 def _horner(coefficients, z):
     """Σ_n coefficients[n] z^n for every column: ``coefficients`` (K + 1, C), ``z`` (C,).
     Horner's scheme: its rounding error is about 1e-16 Σ_n (n + 1)|coefficients[n]|."""
@@ -185,4 +198,4 @@ def peak(cos, sin):
     return result.reshape(batch) if batch else result[0]
 
 
-__all__ = ["analyse", "basis", "derivative", "grid_size", "magnitude", "peak", "phases", "sample", "searched_harmonics"]
+__all__ = ["analyse", "basis", "derivative", "grid_size", "magnitude", "peak", "phases", "rms", "sample", "searched_harmonics"]
