@@ -12,6 +12,7 @@ from foundation_calc.cli.init import init
 from foundation_calc.cli.platform import platform
 from foundation_calc.cli.report import report
 from foundation_calc.cli.resonance import resonance
+from foundation_calc.cli.runup import runup
 from foundation_calc.cli.schema import schema
 from foundation_calc.cli.sweep import sweep
 
@@ -39,6 +40,7 @@ app.command(epilog=EXIT_CODES_HELP)(platform)
 app.command(epilog=EXIT_CODES_HELP)(bench)
 app.command(epilog=EXIT_CODES_HELP)(sweep)
 app.command(epilog=EXIT_CODES_HELP)(report)
+app.command(epilog=EXIT_CODES_HELP)(runup)
 
 
 def _version(value: bool) -> None:

@@ -46,9 +46,9 @@ class Soil(SceneModel):
         "c_φ", "N/m³", "coefficient of elastic non-uniform compression (rocking); default c_z, the paper's choice",
         None, gt=0, examples=[8.0e7],
     )
-    damping: tuple[float, float, float] | None = quantity(
+    damping: list[float] | None = quantity(
         "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] of the vertical, horizontal and rocking modes;"
-        " default: undamped", None, examples=[[0.1, 0.1, 0.05]],
+        " default: undamped", None, examples=[[0.1, 0.1, 0.05]], min_length=3, max_length=3,
     )
 
     @field_validator("damping")
@@ -113,6 +113,21 @@ class Limits(SceneModel):
     detuning: float = quantity(
         "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
     )
+    transient_amplitude: float | None = quantity(
+        "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
+        " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
+    )
+
+
+class Operation(SceneModel):
+    """Start-up and run-down of the machine (fcalc runup)."""
+
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed", None, gt=0, examples=[10.0]
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest", None, gt=0, examples=[20.0]
+    )
 
 
 class Point(SceneModel):
@@ -144,6 +159,7 @@ class CrankScene(SceneModel):
     soil: Soil
     mechanism: Mechanism
     limits: Limits = Limits()
+    operation: Operation = Operation()
     points: list[Point] = quantity(
         "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
     )

@@ -79,6 +79,14 @@ class Operation(SpeedFields):
     regime: Literal["above", "below"] = quantity(
         "-", "-", '"above" resonance (sign - in (3.14)) or "below" (sign +)', "above"
     )
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
+        examples=[5.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
+        examples=[10.0],
+    )
 
 
 class Isolators(SceneModel):
@@ -142,6 +150,10 @@ class Limits(SceneModel):
     )
     exciter_height_ratio: float = quantity(
         "c/ζ", "-", "warn when the exciter is more than this many ζ above the support plane", 3.0, gt=0
+    )
+    transient_amplitude: float | None = quantity(
+        "u_tr", "m", "largest allowed displacement of the centre of mass and the product's corners during"
+        " start-up and run-down (fcalc runup); default: none", None, gt=0, examples=[5.0e-3],
     )
 
 

@@ -41,6 +41,10 @@ HOLD_FRACTION = 0.25
 #: the unbalance on a balanced platform) [-].
 NEGLIGIBLE = 1e-9
 
+#: A passage whose closed-form peak (Lewis' when undamped) is below this fraction of the steady
+#: operating amplitude is not listed: the harmonic barely drives the mode [-].
+INSIGNIFICANT = 1e-3
+
 #: Samples of the steady state at the operating speed (over :data:`STEADY_PERIODS` periods of
 #: its slowest harmonic) from which its peak is taken [-].
 STEADY_SAMPLES = 16384
@@ -233,11 +237,12 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
                 integrated=modal_peak * float(reach[p]), peak_time=peak_time, total=total, window=(float(edges[k]), float(edges[k + 1])),
             )
         )
+    shown = [p for p in passages if max(p.closed_form, p.lewis if p.zeta == 0.0 else 0.0) >= INSIGNIFICANT * steady_points.max()]
     return RunupResult(
         direction=direction, duration=float(duration), omega=float(omega), natural=natural,
-        passages=tuple(passages), steady_points=steady_points, transient_points=response.point_peaks,
+        passages=tuple(shown), steady_points=steady_points, transient_points=response.point_peaks,
         response=response, damped=structure.damped,
     )
 
 
-__all__ = ["HOLD_FRACTION", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
+__all__ = ["HOLD_FRACTION", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
