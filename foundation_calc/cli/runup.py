@@ -19,23 +19,31 @@ DownOpt = Annotated[
     typer.Option("--down", min=1e-6, help="Run-down time [s] from the operating speed to rest; overrides [operation] run_down_time.", show_default=False),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
+PlotOpt = Annotated[
+    Optional[Path],
+    typer.Option("--plot", metavar="FILE.png", help="Draw the displacement against time with the resonances marked; needs the plot extra.", show_default=False),
+]
 
 
 @reports_errors
-def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: JsonOpt = False) -> None:
+def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: JsonOpt = False, plot: PlotOpt = None) -> None:
     """Peak vibration while the machine starts up (and runs down) through its resonances.
 
     The speed ramps linearly from rest to the operating speed in the run-up time (and back in
-    the run-down time). For every mode passed: its frequency, the sweep rate η = Ω'/ω_n², the
+    the run-down time); with a [drive] the speed follows the motor's torque against the load
+    and a motor that would stick at a resonance fails (Sommerfeld). For every mode passed: its frequency, the sweep rate η = Ω'/ω_n², the
     peak by a closed form and by time integration of the damped linear model (6 DOF platform,
     3 DOF crank foundation), the time of the peak and its ratio to the steady amplitude. Fails
-    (exit 1) when a point moves more than [limits] transient_amplitude [m].
+    (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks.
     """
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.checks.runup import check_runup
     from foundation_calc.output import runup as report_out
+    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
     from foundation_calc.scenes import load_scene
 
+    if plot is not None and not plotting_available():
+        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
     loaded = load_scene(scene)
     warn_implausible(loaded)
     operation = loaded.operation
@@ -48,4 +56,6 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
         print_json(report_out.runup_document(report, loaded, str(scene)))
     else:
         report_out.print_runup_report(report, loaded, str(scene))
+    if plot is not None:
+        report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
     raise typer.Exit(int(exit_code(report.outcome)))

@@ -31,6 +31,25 @@ def _passage_document(p, result: RunupResult, points) -> dict:
     }
 
 
+def _motor_document(report: RunupReport) -> dict | None:
+    m = report.motor
+    if m is None:
+        return None
+    return {
+        "torque": m.torque,
+        "inertia": m.inertia,
+        "reached": m.reached,
+        "time": m.time,
+        "stuck_speed": m.stuck_speed,
+        "transient_points": {n: float(v) for n, v in zip(report.points, m.transient_points)},
+        "sommerfeld": [
+            {"mode": t.mode + 1, "harmonic": t.ratio, "speed": t.speed, "torque_needed": t.needed,
+             "torque_available": t.available, "ratio": t.needed / t.available, "verdict": t.outcome.value}
+            for t in report.torques
+        ],
+    }
+
+
 def runup_document(report: RunupReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc runup`` (every number SI)."""
     return {
@@ -39,6 +58,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
         "speed": speed_triplet(report.omega),
         "points": list(report.points),
+        "steady_points": {n: float(v) for n, v in zip(report.points, report.steady_points)},
         "runs": {
             key: {
                 "duration": r.duration,
@@ -52,6 +72,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
             }
             for key, r in report.runs.items()
         },
+        "motor": _motor_document(report),
         "limits": [
             {"point": row.point, "run": row.run, "value": row.value, "limit": row.limit, "ratio": row.ratio,
              "verdict": row.outcome.value}
@@ -80,6 +101,27 @@ def _passages_table(key: str, r: RunupResult, points) -> Table:
     return table
 
 
+def _motor_table(report: RunupReport) -> Table:
+    m = report.motor
+    outcome = (
+        f"reaches the operating speed at t = {fmt(m.time, 4)} s" if m.reached
+        else f"sticks at Ω ≈ {fmt(m.stuck_speed, 4)} rad/s (not at the operating speed after {fmt(m.time, 4)} s)"
+    )
+    title = (
+        f"Motor start-up (Sommerfeld): torque {fmt(m.torque, 5)} N m, shaft inertia {fmt(m.inertia, 5)} kg m²;"
+        f" {outcome}"
+    )
+    table = Table(title=title, title_justify="left")
+    for name in ("mode", "harmonic", "speed [rad/s]", "torque needed [N m]", "available [N m]", "ratio", "verdict"):
+        table.add_column(escape(name), justify="right")
+    for t in report.torques:
+        table.add_row(
+            str(t.mode + 1), f"{t.ratio:g}ω", fmt(t.speed), fmt(t.needed, 4), fmt(t.available, 4),
+            fmt(t.needed / t.available, 3), verdict_text(t.outcome.value),
+        )
+    return table
+
+
 def print_runup_report(report: RunupReport, scene, source: str) -> None:
     """Tables for people: per run the passages, then the points against the limit."""
     from foundation_calc.output.console import stderr
@@ -97,11 +139,13 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         " integration: the same mode's motion in the time integration of the whole linear model;"
         " all modes: largest displacement of any point in the passage's window"
     )
+    if report.motor is not None:
+        out.print(_motor_table(report))
     table = Table(title="Largest displacement during the runs", title_justify="left")
     for name in ("point", "run", "steady [m]", "transient [m]", "limit [m]", "ratio", "verdict"):
         table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
     for row in report.rows:
-        steady = report.runs[row.run].steady_points[report.points.index(row.point)]
+        steady = report.steady_points[report.points.index(row.point)]
         table.add_row(
             escape(row.point), RUN_TITLES[row.run], fmt(float(steady), 4), fmt(row.value, 4),
             fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
@@ -114,3 +158,71 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
 
 
 __all__ = ["print_runup_report", "runup_document"]
+
+
+#: Points of the envelope drawn per run [-].
+ENVELOPE_POINTS = 2000
+
+
+def _envelope(t, values, period):
+    """(times, envelope) of a record: the running maximum over one ``period`` [s] (the operating
+    speed's), thinned to about :data:`ENVELOPE_POINTS` points."""
+    import numpy as np
+    from scipy.ndimage import maximum_filter1d
+
+    step = float(np.median(np.diff(t))) if len(t) > 1 else 1.0
+    width = max(1, int(round(period / step)))
+    upper = maximum_filter1d(values, size=width, origin=(width - 1) // 2) if width > 1 else values
+    stride = max(1, len(values) // ENVELOPE_POINTS)
+    return t[::stride], upper[::stride]
+
+
+def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> None:
+    """The envelope of the largest displacement against time for every run, the shaft speed, the
+    resonances passed marked, the steady amplitude and the limit drawn (``--plot``)."""
+    import numpy as np
+
+    from foundation_calc.output.plots import new_figure, save
+
+    records = []
+    for key, r in report.runs.items():
+        speed = r.omega * (r.response.t / r.duration if r.direction > 0 else 1.0 - r.response.t / r.duration)
+        records.append((RUN_TITLES[key], r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
+                        [(p.time, p) for p in r.passages]))
+    if report.motor is not None:
+        m = report.motor
+        marks = []
+        for t in report.torques:
+            crossed = np.nonzero(m.speed >= t.speed)[0]
+            if crossed.size:
+                marks.append((float(m.t[crossed[0]]), t))
+        records.append((RUN_TITLES["motor"], m.t, m.magnitude, m.speed, marks))
+    fig, _ = new_figure(9.0, 1.0 + 3.0 * len(records))
+    fig.clf()
+    axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]
+    period = 2.0 * np.pi / report.omega
+    for ax, (name, t, values, speed, marks) in zip(axes, records):
+        et, ev = _envelope(t, values, period)
+        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)")
+        ax.axhline(float(report.steady_points.max()) * 1e3, color="tab:green", ls="--", lw=1,
+                   label="steady, operating speed")
+        if limit is not None:
+            ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
+        for k, (when, p) in enumerate(marks):
+            ax.axvline(when, color="0.6", lw=0.8)
+            ax.annotate(f"mode {p.mode + 1}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
+                        xytext=(2, -10 - 9 * (k % 3)), textcoords="offset points", fontsize=7, color="0.3")
+        twin = ax.twinx()
+        twin.plot(t, speed, color="0.45", lw=0.9, ls="-.", label="shaft speed")
+        twin.set_ylabel("shaft speed [rad/s]", color="0.35")
+        twin.set_ylim(bottom=0.0)
+        ax.set_title(name, fontsize=10, loc="left")
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("displacement [mm]")
+        ax.set_ylim(bottom=0.0, top=max(float(ev.max()) * 1e3, (limit or 0.0) * 1e3) * 1.25)
+        ax.grid(alpha=0.3)
+    handles = axes[0].get_legend_handles_labels()
+    speed_line = twin.get_legend_handles_labels()
+    fig.legend(handles[0] + speed_line[0], handles[1] + speed_line[1], loc="outside lower center", ncol=2, fontsize=8)
+    fig.suptitle(title, fontsize=11)
+    save(fig, path)

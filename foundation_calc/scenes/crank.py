@@ -13,7 +13,7 @@ from typing import Literal
 
 from pydantic import ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
@@ -160,6 +160,7 @@ class CrankScene(SceneModel):
     mechanism: Mechanism
     limits: Limits = Limits()
     operation: Operation = Operation()
+    drive: Drive | None = None
     points: list[Point] = quantity(
         "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
     )

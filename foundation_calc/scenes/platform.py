@@ -17,7 +17,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -178,6 +178,7 @@ class PlatformScene(SceneModel):
         default_factory=list, description="- [-]: further rotors for the 6-DOF verification", max_length=16
     )
     limits: Limits = Limits()
+    drive: Drive | None = None
 
     def plausibility_warnings(self) -> list[str]:
         """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s)."""

@@ -17,6 +17,7 @@ import numpy as np
 
 from foundation_calc.errors import ConvergenceError
 from foundation_calc.solvers.crank.averaged import linearise
+from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Structure
@@ -71,4 +72,15 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     return Structure(mass=M, damping=C, stiffness=K, load=load, points=points)
 
 
-__all__ = ["structure"]
+def mechanism_inertia(design: CrankDesign) -> float:
+    """Mean inertia of the rod (slider lumped in) referred to the crank shaft [kg m²]:
+    ⟨m |∂p/∂φ|² + m ρ² (∂ψ/∂φ)²⟩ over a revolution, ∂ψ/∂φ = λ cos φ / cos ψ (twice its mean
+    kinetic energy at unit speed)."""
+    phi = phases(SAMPLES)
+    motion = mechanism_motion(phi, 1.0, design.r, design.l, design.rod.l1)
+    rod = design.rod
+    dpsi = design.lam * np.cos(phi) / motion.cos_psi
+    return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
+
+
+__all__ = ["mechanism_inertia", "structure"]

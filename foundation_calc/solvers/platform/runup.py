@@ -81,4 +81,9 @@ def structure(design: PlatformDesign, model: PlatformModel) -> tuple[Structure, 
     return Structure(mass=M, damping=C, stiffness=K, load=load, points=points), names
 
 
-__all__ = ["structure"]
+def unbalance_inertia(design: PlatformDesign, model: PlatformModel) -> float:
+    """Σ m_j l_j² r_j²: the exciters' point masses referred to the main shaft [kg m²]."""
+    return design.m * design.l**2 + sum(x.m * x.l**2 * x.speed_ratio**2 for x in model.extra)
+
+
+__all__ = ["structure", "unbalance_inertia"]
