@@ -133,3 +133,48 @@ def test_cli_runup_exit_codes_and_json(runner, tmp_path):
     bare.write_text(open("configs/frame_saw.toml").read())
     result = runner.invoke(app, ["runup", str(bare)])
     assert result.exit_code == 3 and "run_up_time" in result.output
+
+
+def one_mode_with_unbalance(zeta):
+    """M = 1000 kg on k = M (100 rad/s)², damping ratio ζ, unbalance m e = 1 kg m."""
+    from foundation_calc.solvers.numerics.runup import Structure
+
+    M, w = 1000.0, 100.0
+    load = RotatingLoad(np.array([1.0]), np.array([[1.0 + 0j]]), np.array([[0j]]))
+    return Structure(np.array([[M]]), np.array([[2 * zeta * M * w]]), np.array([[M * w * w]]), load, np.ones((1, 1, 1)))
+
+
+def test_steady_torque_near_resonance_is_the_notes_estimate():
+    from foundation_calc.solvers.numerics.sommerfeld import torque_needs
+
+    # (m e)² ω_n²/(4 ζ M) = 50 N m at ζ = 0.05: the leading term of the exact steady curve's peak
+    (need,) = torque_needs(one_mode_with_unbalance(0.05), 150.0)
+    assert need.torque == pytest.approx(50.0, rel=0.01) and need.speed == pytest.approx(100.0, rel=0.01)
+
+
+@pytest.mark.parametrize("factor, reached", [(0.8, False), (1.25, True)], ids=["sticks", "passes"])
+def test_motor_sticks_below_the_torque_threshold_and_passes_above(factor, reached):
+    from foundation_calc.solvers.numerics.sommerfeld import motor_runup, torque_needs
+
+    structure = one_mode_with_unbalance(0.1)
+    (need,) = torque_needs(structure, 150.0)
+    torque = factor * need.torque
+    inertia = torque / (4e-3 * 100.0**2)  # a slow approach (η = 4e-3 < ζ²): no passing on inertia
+    run = motor_runup(structure, 150.0, torque, inertia)
+    assert run.reached is reached
+    if not reached:
+        assert 0.9 * need.speed < run.stuck_speed < need.speed  # held on the resonance's rising flank
+
+
+@pytest.mark.parametrize(
+    "drive, message",
+    [("power = 5e3\ninertia = 1.0", "rated_speed"), ("torque = 100.0\npower = 5e3\ninertia = 1.0", "exactly one"),
+     ("torque = 100.0", "inertia")],
+)
+def test_drive_keys_are_validated(runner, tmp_path, drive, message):
+    from foundation_calc.cli.app import app
+
+    scene = tmp_path / "motor.toml"
+    scene.write_text(open("configs/frame_saw_soft_soil_runup.toml").read() + f"\n[drive]\n{drive}\n")
+    result = runner.invoke(app, ["runup", str(scene)])
+    assert result.exit_code == 3 and message in result.output

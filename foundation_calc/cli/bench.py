@@ -14,6 +14,7 @@ from foundation_calc.cli.guard import reports_errors
 class Section(str, Enum):
     accuracy = "accuracy"
     harmonic_balance = "harmonic_balance"
+    runup = "runup"
     throughput = "throughput"
     startup = "startup"
 
@@ -81,7 +82,9 @@ def bench(
     converged harmonic balance that is the reference (error = largest relative error of the x, y,
     θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Platform
     harmonic balance on built-in rigs of 1, 3 and 17 exciters: time and error against the
-    truncation order K, and the whole check of each rig against one exciter. Then the
+    truncation order K, and the whole check of each rig against one exciter. Start-up: the
+    closed form of every resonance passed against the time integration (exponential integrator
+    and scipy's DOP853) on a platform and a crank rig. Then the
     designs per second of one vectorised call against a Python loop, and fcalc's start-up against
     its frameworks' — all measured in this run, on the first crank scene.
     """
@@ -107,8 +110,9 @@ def bench(
     steps = len(cranks) * len(methods) if Section.accuracy not in skipped else 0
     steps += len(platforms) if Section.accuracy not in skipped else 0
     steps += 3 * (Section.harmonic_balance not in skipped)
+    steps += 3 * (Section.runup not in skipped)
     steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
-    results, platform_results, throughput, startup, truncation = [], [], None, None, None
+    results, platform_results, throughput, startup, truncation, runups = [], [], None, None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -126,6 +130,10 @@ def bench(
             from foundation_calc.benchmarks.harmonic_balance import benchmark_truncation
 
             truncation = benchmark_truncation(MIN_TIME[quick], on_rig=step)
+        if Section.runup not in skipped:
+            from foundation_calc.benchmarks.runup import benchmark_runup
+
+            runups = benchmark_runup(MIN_TIME[quick], on_rig=step)
         if Section.throughput not in skipped:
             from foundation_calc.benchmarks.throughput import amplitude_throughput, resonance_throughput
 
@@ -146,9 +154,9 @@ def bench(
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report.bench_document(results, platform_results, throughput, startup, truncation))
+        print_json(report.bench_document(results, platform_results, throughput, startup, truncation, runups))
     else:
-        report.print_bench(results, platform_results, throughput, startup, truncation)
+        report.print_bench(results, platform_results, throughput, startup, truncation, runups)
         if plot is not None:
             from foundation_calc.output.console import stderr
 

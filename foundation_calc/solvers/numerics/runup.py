@@ -17,7 +17,7 @@ integration has both.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy.linalg import eigh
@@ -108,10 +108,10 @@ class Passage:
     closed_form: float
     lewis: float
     point: int
-    integrated: float
-    peak_time: float
-    total: float
-    window: tuple
+    integrated: float | None
+    peak_time: float | None
+    total: float | None
+    window: tuple | None
 
 
 @dataclass(frozen=True)
@@ -177,6 +177,41 @@ def _windows(times, t_end) -> np.ndarray:
     return np.concatenate([[0.0], 0.5 * (times[1:] + times[:-1]), [t_end]])
 
 
+def closed_form(structure: Structure, omega, duration, direction) -> tuple[Passage, ...]:
+    """Every passage of a ramp of ``duration`` [s] between rest and ``omega`` [rad/s] with its
+    closed-form and Lewis peaks (one vectorised call; the integration fields are None).
+
+    A harmonic's share of a mode at or below :data:`NEGLIGIBLE` of the largest is no passage.
+    """
+    load = _moving(structure.load)
+    natural, shapes = modes(structure)
+    zeta = np.einsum("ni,nm,mi->i", shapes, structure.damping, shapes) / (2.0 * natural)
+    inertial = np.einsum("ni,hn->hi", shapes, load.inertial)  # φ_iᵀ A_h
+    constant = np.einsum("ni,hn->hi", shapes, load.constant)
+    modal = np.abs(inertial * omega**2 + constant)
+    speed = natural[None, :] / np.where(load.ratio > 0.0, load.ratio, np.inf)[:, None]
+    h, i = np.nonzero((speed > 0.0) & (speed < omega) & (modal > NEGLIGIBLE * modal.max()))
+    r, w, ws = load.ratio[h], natural[i], speed[h, i]
+    a, b = inertial[h, i] * ws * ws, constant[h, i]
+    eta = r * omega / (duration * w * w)
+    peak = passage_peak(zeta[i], eta, a, b, direction).ratio
+    static = np.abs(a + b) / (w * w)  # modal static deflection at the passage
+    reach = np.linalg.norm(np.einsum("pdn,ni->pid", structure.points, shapes), axis=2)  # |T_p φ_i|
+    point = np.argmax(reach, axis=0)[i]
+    scale = static * reach[point, i]
+    time = duration * (ws / omega if direction > 0 else 1.0 - ws / omega)
+    passages = [
+        Passage(
+            mode=int(i[k]), ratio=float(r[k]), natural=float(w[k]), speed=float(ws[k]), time=float(time[k]),
+            eta=float(eta[k]), zeta=float(zeta[i[k]]), closed_form=float(peak[k] * scale[k]),
+            lewis=float(lewis_peak(eta[k]) * scale[k]), point=int(point[k]), integrated=None, peak_time=None,
+            total=None, window=None,
+        )
+        for k in range(len(h))
+    ]
+    return tuple(sorted(passages, key=lambda p: p.time))
+
+
 def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     """Run the structure up from rest to ``omega`` [rad/s] in ``duration`` [s] (``direction``
     +1), or down from the steady state at ``omega`` to rest (-1); module docstring.
@@ -187,7 +222,6 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     load = _moving(structure.load)
     M, C, K = structure.mass, structure.damping, structure.stiffness
     natural, shapes = modes(structure)
-    zeta = np.einsum("ni,nm,mi->i", shapes, C, shapes) / (2.0 * natural)
     steady_points, (q_ss, v_ss) = steady_peaks(structure, omega)
     if direction > 0:
         ramp = Ramp(0.0, omega, duration)
@@ -199,43 +233,18 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     t_end = duration * (1.0 + HOLD_FRACTION)
     step = time_step(M, K, load, omega)
     response = integrate(M, C, K, load, ramp, t_end, step, q0, v0, structure.points, shapes.T @ M)
-
-    modal = np.abs(np.einsum("ni,hn->hi", shapes, load.inertial) * omega**2 + np.einsum("ni,hn->hi", shapes, load.constant))
-    found = []
-    for h, r in enumerate(load.ratio):
-        if r <= 0.0:
-            continue
-        for i, w_i in enumerate(natural):
-            speed = w_i / r
-            if not speed < omega or modal[h, i] <= NEGLIGIBLE * modal.max():
-                continue
-            time = duration * (speed / omega if direction > 0 else 1.0 - speed / omega)
-            found.append((time, i, h))
-    found.sort()
-    edges = _windows([f[0] for f in found], t_end)
+    found = closed_form(structure, omega, duration, direction)
+    edges = _windows([p.time for p in found], t_end)
     passages = []
-    for k, (time, i, h) in enumerate(found):
-        r = float(load.ratio[h])
-        speed = natural[i] / r
-        phi = shapes[:, i]
-        a = phi @ load.inertial[h] * speed * speed
-        b = phi @ load.constant[h]
-        eta = r * omega / (duration * natural[i] ** 2)
-        peak = passage_peak(zeta[i], eta, a, b, direction)
-        static = abs(a + b) / natural[i] ** 2  # modal static deflection at the passage
-        reach = np.linalg.norm(structure.points @ phi, axis=1)  # |T_p φ_i| per point
-        p = int(np.argmax(reach))
-        own = [f[0] for f in found if f[1] == i]  # the mode's coordinate sees only its passages
-        lo, hi = _windows(own, t_end)[own.index(time) : own.index(time) + 2]
-        modal_peak, peak_time = refined_peak(response.t, response.observed[i], lo, hi)
+    for k, p in enumerate(found):
+        own = [f.time for f in found if f.mode == p.mode]  # the mode's coordinate sees only its passages
+        lo, hi = _windows(own, t_end)[own.index(p.time) : own.index(p.time) + 2]
+        modal_peak, peak_time = refined_peak(response.t, response.observed[p.mode], lo, hi)
         total, _ = refined_peak(response.t, response.magnitude, edges[k], edges[k + 1])
+        reach = float(np.linalg.norm(structure.points[p.point] @ shapes[:, p.mode]))
         passages.append(
-            Passage(
-                mode=i, ratio=r, natural=float(natural[i]), speed=float(speed), time=float(time),
-                eta=float(eta), zeta=float(zeta[i]), closed_form=float(peak.ratio * static * reach[p]),
-                lewis=float(lewis_peak(eta) * static * reach[p]), point=p,
-                integrated=modal_peak * float(reach[p]), peak_time=peak_time, total=total, window=(float(edges[k]), float(edges[k + 1])),
-            )
+            replace(p, integrated=modal_peak * reach, peak_time=peak_time, total=total,
+                    window=(float(edges[k]), float(edges[k + 1])))
         )
     shown = [p for p in passages if max(p.closed_form, p.lewis if p.zeta == 0.0 else 0.0) >= INSIGNIFICANT * steady_points.max()]
     return RunupResult(
@@ -245,4 +254,4 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     )
 
 
-__all__ = ["HOLD_FRACTION", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
+__all__ = ["HOLD_FRACTION", "closed_form", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
