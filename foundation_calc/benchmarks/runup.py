@@ -59,7 +59,7 @@ def _dop853_peak(structure, omega, duration) -> float:
     """Largest point displacement of the same run-up by scipy's DOP853 (independent integrator)."""
     from scipy.integrate import solve_ivp
 
-    from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, _moving
+    from foundation_calc.solvers.numerics.runup import _moving, modes, run_end
     from foundation_calc.solvers.numerics.sweep_response import Ramp
 
     load = _moving(structure.load)
@@ -74,7 +74,7 @@ def _dop853_peak(structure, omega, duration) -> float:
         return np.concatenate([y[n:], Minv @ (f - C @ y[n:] - K @ y[:n])])
 
     q0 = np.linalg.solve(K, load.at(np.zeros(1), np.zeros(1), np.zeros(1))[:, 0])
-    t_end = duration * (1.0 + HOLD_FRACTION)
+    t_end = run_end(duration, modes(structure)[0])
     sol = solve_ivp(rhs, (0.0, t_end), np.concatenate([q0, np.zeros(n)]), method="DOP853", rtol=1e-9,
                     atol=1e-12, dense_output=True)
     t = np.linspace(0.0, t_end, 400_001)

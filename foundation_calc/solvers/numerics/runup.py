@@ -32,9 +32,11 @@ from foundation_calc.solvers.numerics.sweep_response import (
     time_step,
 )
 
-#: Fraction of the ramp time the run continues at the final speed, so that a mode passed just
-#: before the end reaches its peak inside the run [-].
+#: The run continues at the final speed for this fraction of the ramp time, and at least
+#: :data:`HOLD_PERIODS` periods of the lowest mode, so that a mode passed just before the end
+#: (or the free vibration of a sudden start) reaches its peak inside the run [-].
 HOLD_FRACTION = 0.25
+HOLD_PERIODS = 20
 
 #: A harmonic, or a mode's share of it, smaller than this fraction of the largest is not a
 #: load: it is round-off of the loads' assembly (the static tilt's coupling at 2ω is 1e-20 of
@@ -212,12 +214,18 @@ def closed_form(structure: Structure, omega, duration, direction) -> tuple[Passa
     return tuple(sorted(passages, key=lambda p: p.time))
 
 
+def run_end(duration, natural) -> float:
+    """End of a run [s]: the ramp's ``duration`` [s] and the hold after it (:data:`HOLD_FRACTION`,
+    :data:`HOLD_PERIODS` of the lowest of the ``natural`` frequencies [rad/s])."""
+    return duration + max(HOLD_FRACTION * duration, HOLD_PERIODS * 2.0 * np.pi / float(np.min(natural)))
+
+
 def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     """Run the structure up from rest to ``omega`` [rad/s] in ``duration`` [s] (``direction``
     +1), or down from the steady state at ``omega`` to rest (-1); module docstring.
 
     The run-up starts at rest in the static equilibrium (the rotating weight at φ = 0); the run
-    continues :data:`HOLD_FRACTION` × ``duration`` at the final speed.
+    continues at the final speed (:func:`run_end`).
     """
     load = _moving(structure.load)
     M, C, K = structure.mass, structure.damping, structure.stiffness
@@ -230,7 +238,7 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     else:
         ramp = Ramp(omega, 0.0, duration)
         q0, v0 = q_ss, v_ss
-    t_end = duration * (1.0 + HOLD_FRACTION)
+    t_end = run_end(duration, natural)
     step = time_step(M, K, load, omega)
     response = integrate(M, C, K, load, ramp, t_end, step, q0, v0, structure.points, shapes.T @ M)
     found = closed_form(structure, omega, duration, direction)
@@ -254,4 +262,4 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     )
 
 
-__all__ = ["HOLD_FRACTION", "closed_form", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
+__all__ = ["HOLD_FRACTION", "HOLD_PERIODS", "closed_form", "run_end", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]

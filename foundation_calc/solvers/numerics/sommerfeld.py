@@ -12,7 +12,7 @@ mean torque exactly, by the power balance, and its fluctuation approximately). J
 inertia of everything the shaft turns, the unbalances included; substituting q'' gives
 (J - V·M⁻¹V) Ω' = T - V·M⁻¹(Ω² U + B - C q' - K q). The motor gives the constant torque T until
 the operating speed is reached; then its control holds the speed (the run goes on for
-:data:`HOLD_FRACTION` of the run-up time, so that the last passage's peak is in the record).
+:data:`~.runup.HOLD_FRACTION` of the run-up time, so that the last passage's peak is in the record).
 
 Sommerfeld: in the steady state at speed Ω the shaft needs the mean torque
 
@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from foundation_calc.solvers.numerics.runup import Structure, _moving, modes
+from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, HOLD_PERIODS, Structure, _moving, modes
 
 #: Speeds of the steady torque curve from rest to the operating speed, plus this many around
 #: every resonance (within ±5 ζ of it) [-].
@@ -41,11 +41,6 @@ RESONANCE_SAMPLES = 401
 #: The motor run stops, stuck, after this many times the unloaded run-up time J Ω_op / T [-]:
 #: a drive that needs longer than that at full torque overheats in practice.
 PATIENCE = 3.0
-
-#: After reaching the operating speed the run goes on at that speed for this fraction of the
-#: run-up time, and at least this many periods of the lowest mode [-].
-HOLD_FRACTION = 0.25
-HOLD_PERIODS = 20
 
 #: Relative and absolute tolerance of the integration (DOP853) [-].
 RTOL = 1e-8
