@@ -60,7 +60,7 @@ def _dop853_peak(structure, omega, duration) -> float:
     from scipy.integrate import solve_ivp
 
     from foundation_calc.solvers.numerics.runup import _moving, modes, run_end
-    from foundation_calc.solvers.numerics.sweep_response import Ramp
+    from foundation_calc.solvers.numerics.sweep_response import Ramp, point_displacements
 
     load = _moving(structure.load)
     M, C, K = structure.mass, structure.damping, structure.stiffness
@@ -79,7 +79,7 @@ def _dop853_peak(structure, omega, duration) -> float:
                     atol=1e-12, dense_output=True)
     t = np.linspace(0.0, t_end, 400_001)
     q = sol.sol(t)[:n]
-    return float(np.linalg.norm(np.einsum("pdn,nt->pdt", structure.points, q), axis=1).max())
+    return float(point_displacements(structure.points, q).max())
 
 
 def benchmark_runup(min_time: float, on_rig=lambda text: None) -> list[RunupBenchmark]:

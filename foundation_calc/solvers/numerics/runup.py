@@ -28,6 +28,7 @@ from foundation_calc.solvers.numerics.sweep_response import (
     RotatingLoad,
     SweepResponse,
     integrate,
+    point_displacements,
     refined_peak,
     time_step,
 )
@@ -162,7 +163,7 @@ def steady_peaks(structure: Structure, omega) -> tuple[np.ndarray, np.ndarray]:
     span = STEADY_PERIODS * 2.0 * np.pi / slowest if np.isfinite(slowest) else 1.0
     t = np.linspace(0.0, span, STEADY_SAMPLES, endpoint=False)
     q = (Z.T @ np.exp(1j * np.outer(w, t))).real
-    disp = np.linalg.norm(np.einsum("pdn,nt->pdt", structure.points, q), axis=1)
+    disp = point_displacements(structure.points, q)
     state = (Z.sum(axis=0).real, (1j * w[:, None] * Z).sum(axis=0).real)
     return disp.max(axis=1), state
 
@@ -171,6 +172,12 @@ def modes(structure: Structure):
     """Undamped natural frequencies [rad/s] and mass-normalised mode shapes (columns)."""
     p2, shapes = eigh(structure.stiffness, structure.mass)
     return np.sqrt(p2), shapes
+
+
+def modal_damping(structure: Structure, natural, shapes) -> np.ndarray:
+    """ζ_i = φ_iᵀ C φ_i / (2 ω_i) of the mass-normalised undamped modes [-] (the diagonal of the
+    modal damping; exact for proportional damping)."""
+    return np.einsum("ni,nm,mi->i", shapes, structure.damping, shapes) / (2.0 * natural)
 
 
 def _windows(times, t_end) -> np.ndarray:
@@ -187,7 +194,7 @@ def closed_form(structure: Structure, omega, duration, direction) -> tuple[Passa
     """
     load = _moving(structure.load)
     natural, shapes = modes(structure)
-    zeta = np.einsum("ni,nm,mi->i", shapes, structure.damping, shapes) / (2.0 * natural)
+    zeta = modal_damping(structure, natural, shapes)
     inertial = np.einsum("ni,hn->hi", shapes, load.inertial)  # φ_iᵀ A_h
     constant = np.einsum("ni,hn->hi", shapes, load.constant)
     modal = np.abs(inertial * omega**2 + constant)
@@ -262,4 +269,4 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     )
 
 
-__all__ = ["HOLD_FRACTION", "HOLD_PERIODS", "closed_form", "run_end", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modes", "runup", "steady_peaks"]
+__all__ = ["HOLD_FRACTION", "HOLD_PERIODS", "closed_form", "run_end", "INSIGNIFICANT", "NEGLIGIBLE", "Passage", "RunupResult", "Structure", "modal_damping", "modes", "runup", "steady_peaks"]

@@ -31,7 +31,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, HOLD_PERIODS, Structure, _moving, modes
+from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, HOLD_PERIODS, Structure, _moving, modal_damping, modes
+from foundation_calc.solvers.numerics.sweep_response import point_displacements
 
 #: Speeds of the steady torque curve from rest to the operating speed, plus this many around
 #: every resonance (within ±5 ζ of it) [-].
@@ -110,7 +111,7 @@ def steady_torque(structure: Structure, speeds) -> np.ndarray:
 def torque_needs(structure: Structure, omega) -> tuple[TorqueNeed, ...]:
     """Peak of T_s near every resonance passed below ``omega`` [rad/s]."""
     natural, shapes = modes(structure)
-    zeta = np.einsum("ni,nm,mi->i", shapes, structure.damping, shapes) / (2.0 * natural)
+    zeta = modal_damping(structure, natural, shapes)
     needs = []
     for r in structure.load.ratio:
         if r <= 0.0:
@@ -194,7 +195,7 @@ def motor_runup(structure: Structure, omega, torque, inertia) -> MotorRun:
         held = solve_ivp(lambda s, x: rhs(s, x, True), (t[-1], t[-1] + hold), y[:, -1], **options)
         t, y = np.concatenate([t, held.t[1:]]), np.concatenate([y, held.y[:, 1:]], axis=1)
     q = y[:n]
-    disp = np.linalg.norm(np.einsum("pdn,nt->pdt", structure.points, q), axis=1)
+    disp = point_displacements(structure.points, q)
     tail = sol.t >= 0.9 * sol.t[-1]  # the record up to arrival or the end of patience
     return MotorRun(
         torque=float(torque), inertia=float(inertia), needs=torque_needs(structure, omega), reached=bool(reached),

@@ -112,6 +112,12 @@ class SweepResponse:
     step: float
 
 
+def point_displacements(points, q) -> np.ndarray:
+    """|T_p q| of every point at every time [m], shape (P, N), for maps ``points`` (P, d, n)
+    and states ``q`` (n, N)."""
+    return np.linalg.norm(np.einsum("pdn,nt->pdt", points, q), axis=1)
+
+
 def time_step(M, K, load: RotatingLoad, omega_max, steps_per_period=STEPS_PER_PERIOD) -> float:
     """Step [s]: ``steps_per_period`` per shortest period, natural or forcing (at ``omega_max``
     [rad/s])."""
@@ -191,7 +197,7 @@ def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, poin
                 z[k], _ = lfilter([b1[k], b0[k]], [1.0, -E[k]], u, zi=zi)
         z_prev, u_prev = z[:, -1], u_all[:, -1]
         q = (back @ z).real
-        disp = np.linalg.norm(np.einsum("pdn,nt->pdt", points, q), axis=1)
+        disp = point_displacements(points, q)
         magnitude[start : start + tc.size] = disp.max(axis=0)
         observed[:, start : start + tc.size] = np.abs(observers @ q)
         point_peaks = np.maximum(point_peaks, disp.max(axis=1))
@@ -214,4 +220,4 @@ def refined_peak(t, values, lo, hi):
     return float(values[i]), float(t[i])
 
 
-__all__ = ["CHUNK", "MAX_STEPS", "STEPS_PER_PERIOD", "Ramp", "RotatingLoad", "SweepResponse", "integrate", "refined_peak", "time_step"]
+__all__ = ["CHUNK", "point_displacements", "MAX_STEPS", "STEPS_PER_PERIOD", "Ramp", "RotatingLoad", "SweepResponse", "integrate", "refined_peak", "time_step"]
