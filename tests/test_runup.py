@@ -133,6 +133,8 @@ def test_cli_runup_exit_codes_and_json(runner, tmp_path):
     bare.write_text(open("configs/frame_saw.toml").read())
     result = runner.invoke(app, ["runup", str(bare)])
     assert result.exit_code == 3 and "run_up_time" in result.output
+    result = runner.invoke(app, ["runup", str(bare), "--time", "2", "--json"])  # no soil damping
+    assert result.exit_code == 0 and "undamped" in result.stderr and json.loads(result.stdout)["warnings"]
 
 
 def one_mode_with_unbalance(zeta):

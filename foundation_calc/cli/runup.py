@@ -56,6 +56,7 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
         print_json(report_out.runup_document(report, loaded, str(scene)))
     else:
         report_out.print_runup_report(report, loaded, str(scene))
+    report_out.print_warnings(report)
     if plot is not None:
         report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
     raise typer.Exit(int(exit_code(report.outcome)))

@@ -122,10 +122,16 @@ def _motor_table(report: RunupReport) -> Table:
     return table
 
 
-def print_runup_report(report: RunupReport, scene, source: str) -> None:
-    """Tables for people: per run the passages, then the points against the limit."""
+def print_warnings(report: RunupReport) -> None:
+    """The report's warnings on stderr (also with --json, whose stdout holds only the document)."""
     from foundation_calc.output.console import stderr
 
+    for text in report.warnings:
+        stderr().print(f"[bold yellow]warning[/]: {escape(text)}", soft_wrap=True)
+
+
+def print_runup_report(report: RunupReport, scene, source: str) -> None:
+    """Tables for people: per run the passages, then the points against the limit."""
     out = stdout()
     out.print(f"[bold]{escape(scene.name or source)}[/]  ({escape(source)}, {scene.kind})")
     out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
@@ -152,12 +158,10 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
             verdict_text(row.outcome.value),
         )
     out.print(table)
-    for text in report.warnings:
-        stderr().print(f"[bold yellow]warning[/]: {escape(text)}", soft_wrap=True)
     out.print(f"Verdict: {verdict_text(report.outcome.value)}")
 
 
-__all__ = ["print_runup_report", "runup_document"]
+__all__ = ["plot_runup", "print_runup_report", "print_warnings", "runup_document"]
 
 
 #: Points of the envelope drawn per run [-].
