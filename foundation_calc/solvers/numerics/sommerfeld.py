@@ -34,8 +34,8 @@ from scipy.integrate import solve_ivp
 from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, HOLD_PERIODS, Structure, _moving, modal_damping, modes
 from foundation_calc.solvers.numerics.sweep_response import point_displacements
 
-#: Speeds of the steady torque curve from rest to the operating speed, plus this many around
-#: every resonance (within ±5 ζ of it) [-].
+#: Speeds of the steady torque curve from rest to the operating speed, and around every
+#: resonance [-].
 CURVE_SAMPLES = 2000
 RESONANCE_SAMPLES = 401
 
@@ -109,22 +109,33 @@ def steady_torque(structure: Structure, speeds) -> np.ndarray:
 
 
 def torque_needs(structure: Structure, omega) -> tuple[TorqueNeed, ...]:
-    """Peak of T_s near every resonance passed below ``omega`` [rad/s]."""
+    """Every peak of T_s below ``omega`` [rad/s], named after the passage nearest in speed.
+
+    T_s is sampled on :data:`CURVE_SAMPLES` speeds from rest to ``omega`` and on
+    :data:`RESONANCE_SAMPLES` speeds within ±3ζ of every passage (the half-power band is ±ζ);
+    a peak is a sample higher than both neighbours.
+    """
     natural, shapes = modes(structure)
     zeta = modal_damping(structure, natural, shapes)
+    passages = [
+        (w_i / r, i, float(r))
+        for r in structure.load.ratio if r > 0.0
+        for i, w_i in enumerate(natural) if w_i / r < omega
+    ]
+    grids = [np.linspace(0.0, omega, CURVE_SAMPLES)]
+    for centre, i, _ in passages:
+        half = max(3.0 * zeta[i], 1e-3) * centre
+        grids.append(np.linspace(max(centre - half, 0.0), min(centre + half, omega), RESONANCE_SAMPLES))
+    speeds = np.unique(np.concatenate(grids))
+    T = steady_torque(structure, speeds)
+    peaks = np.nonzero((T[1:-1] > T[:-2]) & (T[1:-1] >= T[2:]))[0] + 1
+    centres = np.array([p[0] for p in passages])
     needs = []
-    for r in structure.load.ratio:
-        if r <= 0.0:
-            continue
-        for i, w_i in enumerate(natural):
-            centre = w_i / r
-            if not centre < omega:
-                continue
-            half = max(5.0 * zeta[i], 1e-3) * centre
-            grid = np.linspace(max(centre - half, 0.0), min(centre + half, omega), RESONANCE_SAMPLES)
-            T = steady_torque(structure, grid)
-            k = int(np.argmax(T))
-            needs.append(TorqueNeed(i, float(r), float(grid[k]), float(T[k])))
+    for k in peaks:
+        if not passages:
+            break
+        _, i, r = passages[int(np.argmin(np.abs(centres - speeds[k])))]
+        needs.append(TorqueNeed(i, r, float(speeds[k]), float(T[k])))
     return tuple(needs)
 
 
