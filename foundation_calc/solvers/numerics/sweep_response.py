@@ -21,8 +21,9 @@ a step::
 The only error is the hold's: relative (ωh)²/12 at frequency ω; with :data:`STEPS_PER_PERIOD`
 steps per shortest period (natural or forcing) it is 5e-5, and halving the step moves a peak by
 less than 1e-4 (tested). The Schur form needs no distinct eigenvalues (equal natural frequencies
-of a symmetric platform) and no proportional damping. Memory is bounded: the run is processed in
-chunks of :data:`CHUNK` steps, keeping only the magnitudes asked for.
+of a symmetric platform) and no proportional damping. The run is processed in chunks of
+:data:`CHUNK` steps; the record keeps, per step, the largest point displacement and the observed
+magnitudes (modal coordinates), so a run is limited to :data:`MAX_STEPS` steps.
 """
 
 from __future__ import annotations
