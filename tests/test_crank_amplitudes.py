@@ -35,7 +35,10 @@ def make_design(m=1.5e3, omega=45.0, r=0.1, l=1.2, l1=0.9, rho=0.35, a=2.0, c1=2
 def first(d: CrankDesign):
     g_star = d.g if d.drive_on_foundation else 0.0
     rod = d.rod
-    return first_approximation(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g, g_star, d.omega, rod.m, d.r, d.l, rod.l1, rod.rho, d.a)
+    return first_approximation(
+        d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.C_x, d.C_z, d.C_phi, d.g, g_star, d.omega,
+        rod.m, d.r, d.l, rod.l1, rod.rho, d.a,
+    )
 
 
 def harmonic(motion, dof, n):
@@ -158,7 +161,7 @@ def test_vertical_response_does_not_depend_on_soil_shear(c1):
 def test_first_approximation_takes_arrays():
     omegas = np.array([30.0, 45.0, 80.0])
     d = make_design()
-    args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g, d.g)
+    args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.C_x, d.C_z, d.C_phi, d.g, d.g)
     rest = (d.rod.m, d.r, d.l, d.rod.l1, d.rod.rho, d.a)
     batch = first_approximation(*args, omegas, *rest)
     for i, w in enumerate(omegas):
@@ -169,7 +172,7 @@ def test_first_approximation_takes_arrays():
 
 def test_resonant_speed_is_flagged_not_divided():
     d = make_design()
-    k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g).k0
+    k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g).k0
     fa = first(replace(d, omega=k0 * (1 + 1e-12)))
     assert bool(fa.resonant)
     assert fa.margins["ω = k0"] < 1e-9
@@ -251,7 +254,7 @@ def test_three_omega_equal_k0_is_a_weak_resonance_of_the_exact_equations():
     from foundation_calc.solvers.crank.frequencies import zero_order_frequencies
 
     d = load_scene("configs/frame_saw_extra_resonance.toml").design()
-    k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g).k0
+    k0 = zero_order_frequencies(d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g).k0
     ratios = []
     for offset in (1e-4, 1e-3):
         design = replace(d, omega=k0 / 3 * (1 + offset))

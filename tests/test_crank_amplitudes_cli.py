@@ -93,6 +93,32 @@ def test_resonant_speed_fails_with_its_margin(tmp_path):
     assert tables.exit_code == 1 and "resonant" in tables.stdout
 
 
+def test_damped_scene_at_exact_resonance_gives_finite_amplitudes_and_phases(tmp_path):
+    """The resonant scene above with soil.damping: every method (--exact too) answers, the limits
+    judge the amplitudes, and the JSON carries the phases and the damping."""
+    data = tomllib.loads(BASE.read_text("utf-8"))
+    f, s, m = data["foundation"], data["soil"], data["mechanism"]
+    k0 = (s["c_z"] * f["base_area"] / (f["mass"] + m["rod_mass"] + m.get("slider_mass", 0.0))) ** 0.5
+    mech = {k: v for k, v in m.items() if k not in ("omega", "frequency_hz", "speed_rpm")}
+    data["mechanism"] = {**mech, "omega": k0}
+    data["soil"]["damping"] = [0.1, 0.1, 0.05]
+    data["limits"]["amplitude"] = 1.0
+    path = tmp_path / "damped.toml"
+    path.write_text(tomli_w.dumps(data), "utf-8")
+    result = run(path, "--json", "--exact")
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc["damping"]["dashpots"]["C_z"] > 0 and len(doc["damping"]["modal_damping_ratios"]) == 3
+    for approx in doc["approximations"].values():
+        assert approx["resonant"] is False
+        y1 = approx["harmonics"]["y1"]
+        assert 0 < y1["magnitude"] < 1.0
+        # ω = k0: the vertical harmonic lags the crank-pin force by 90°
+        assert abs(abs(y1["phase"]) - 1.5707963) < 0.01, y1
+    tables = run(path, "--exact")
+    assert tables.exit_code == 0 and "phase lag" in tables.stdout and "resonant" not in tables.stdout
+
+
 def test_duplicate_point_names_are_an_invalid_scene(tmp_path):
     path = _scene(tmp_path, points=[{"name": "a", "horizontal": 1.0, "height": 0.0}] * 2)
     result = run(path)

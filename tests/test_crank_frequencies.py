@@ -30,7 +30,7 @@ def _soil(design):
 
 def _zero_order(design):
     d = design
-    return zero_order_frequencies(d["M_tot"], d["I_c"], d["h"], d["S"], d["I1"], d["c"], d["c1"], ref.G)
+    return zero_order_frequencies(d["M_tot"], d["I_c"], d["h"], d["S"], d["I1"], d["c"], d["c1"], d["c"], ref.G)
 
 
 def _reference_zero_order(design):
@@ -77,11 +77,19 @@ def test_frame_saw_against_eigen_solve():
 @example(  # nearly equal p1 and p2: a0 ≈ b1 and weak coupling (short block, tall inertia)
     {"M_tot": 1e5, "I_c_ratio": 20.0, "h": 0.05, "S": 30.0, "I1_ratio": 0.0101, "c": 4e7, "c1_ratio": 0.5}
 )
+@example(  # 1.3e-5 above the rocking stability limit: stable, and not compared (see below)
+    {"M_tot": 30211908.0, "I_c_ratio": 1.0, "h": 13.234375, "S": 1 / 3, "I1_ratio": 6.078125, "c": 5808031548.0,
+     "c1_ratio": 1.0}
+)
 def test_random_designs_against_eigen_solve(raw):
     d = _materialise(raw)
-    if d["c"] * d["I1"] <= d["M_tot"] * ref.G * d["h"] * 1.001:
+    reserve = d["c"] * d["I1"] / (d["M_tot"] * ref.G * d["h"]) - 1.0
+    if reserve <= 0.0:
         with pytest.raises(PhysicsError):
             _zero_order(d)
+        return
+    if reserve < 1e-3:  # p1 → 0: the reference's small eigenvalue is round-off of the large one
+        assert 0.0 < _zero_order(d).p1 < _zero_order(d).p2
         return
     got = _zero_order(d)
     k0, (p1, p2), _ = _reference_zero_order(d)
@@ -138,7 +146,7 @@ def test_averaged_inertia_against_numerical_time_average(mech):
     base = dict(FRAME_SAW, M_tot=M + m + m1)
     rod = lump_slider(m=m, l=l, l1=l1, rho=rho, m1=m1)
     got = averaged_inertia_frequencies(
-        base["M_tot"], base["I_c"], base["h"], base["S"], base["I1"], base["c"], base["c1"], ref.G,
+        base["M_tot"], base["I_c"], base["h"], base["S"], base["I1"], base["c"], base["c1"], base["c"], ref.G,
         rod.m, a, r, l, rod.l1, rod.rho,
     )
     Mm = ref.averaged_mass_matrix(M=M, I_c=base["I_c"], m=m, l1=l1, rho=rho, m1=m1, a=a, r=r, l=l)
@@ -153,7 +161,7 @@ def test_averaged_inertia_moves_rocking_by_order_mu():
     zero = _zero_order(FRAME_SAW)
     rod = lump_slider(m=1.5e3, l=1.2, l1=1.0, rho=0.35, m1=0.0)
     avg = averaged_inertia_frequencies(
-        *(FRAME_SAW[k] for k in ("M_tot", "I_c", "h", "S", "I1", "c", "c1")), ref.G,
+        *(FRAME_SAW[k] for k in ("M_tot", "I_c", "h", "S", "I1", "c", "c1", "c")), ref.G,
         rod.m, 2.0, 0.3, 1.2, rod.l1, rod.rho,
     )
     mu = 1.5e3 / FRAME_SAW["M_tot"]

@@ -34,6 +34,6 @@ def test_shooting_matches_harmonic_balance(frame_saw, drive_on):
 
 
 def test_unstable_rocking_is_a_physics_error(frame_saw):
-    design = replace(parse_scene(frame_saw).design(), c=1e3)
+    design = replace(parse_scene(frame_saw).design(), c_phi=1e3)
     with pytest.raises(PhysicsError):
         shooting_solution(design)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import re
 import subprocess
 import sys
@@ -191,3 +192,18 @@ def test_missing_report_extra_is_a_usage_error(runner, tmp_path, monkeypatch):
     result = runner.invoke(app, ["report", str(CONFIGS / "frame_saw.toml"), "-o", str(tmp_path / "x.pdf")])
     assert result.exit_code == 2
     assert "foundation_calc[report]" in result.output
+
+
+def test_damped_sheet_shows_the_phases_and_the_damping(runner, tmp_path):
+    scene = CONFIGS / "compressor_damped_near_resonance.toml"
+    out = tmp_path / "sheet.md"
+    assert runner.invoke(app, ["report", str(scene), "-o", str(out)]).exit_code == 1
+    text = out.read_text(encoding="utf-8")
+    amp = json_of(runner, "amplitudes", scene)
+    assert "Phase lag φ per harmonic" in text
+    checked = amp["approximations"][amp["checked_with"]]
+    for name in ("x1", "y1", "theta1"):
+        assert f"{math.degrees(checked['harmonics'][name]['phase']):.1f}" in text, name
+    expected = {f"ratio {i}": z for i, z in enumerate(amp["damping"]["modal_damping_ratios"])}
+    shown = numbers(text)
+    assert all(any(abs(x - z) <= 5e-3 * z for x in shown) for z in expected.values())

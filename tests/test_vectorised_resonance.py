@@ -21,7 +21,7 @@ def test_batch_matches_scalar(config):
     zero, avg = design_frequencies(batch)
     assert isinstance(margins, np.ndarray) and margins.shape == (200,)
     for i in range(0, 200, 7):
-        one = replace(design, c=float(batch.c[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
+        one = replace(design, c=float(batch.c[i]), c_phi=float(batch.c_phi[i]), c1=float(batch.c1[i]), omega=float(batch.omega[i]))
         report = check_resonances(one, 0.2)
         expected = min(r.margin for r in report.rows if r.condition.source == "paper")
         assert margins[i] == pytest.approx(expected, rel=1e-14, abs=1e-15)

@@ -9,8 +9,10 @@ Three approximations of the same periodic steady state are computed for one desi
   the closed forms' errors).
 
 The limits are checked with the best approximation computed (exact, else averaged operator),
-for the centre of mass C and every point of the scene, horizontally and vertically. A speed
-within a hair of a resonance of the checked approximation fails as "resonant" with its margin.
+for the centre of mass C and every point of the scene, horizontally and vertically. With base
+dashpots every approximation is finite at and through every resonance and is judged on its
+amplitudes; an undamped speed within a hair of a resonance of the checked approximation fails as
+"resonant" with its margin.
 """
 
 from __future__ import annotations
@@ -71,6 +73,11 @@ class Approximation:
         c, s = self.motion.coefficient(dof, n)
         return complex(c) - 1j * complex(s)
 
+    def phase(self, dof: str, n: int) -> float:
+        """Phase lag φ [rad] of harmonic n of ``dof``: the harmonic is A cos(nωt - φ), φ in (-π, π]."""
+        c, s = self.motion.coefficient(dof, n)
+        return float(np.arctan2(float(s), float(c)))
+
 
 @dataclass(frozen=True)
 class LimitRow:
@@ -100,6 +107,19 @@ class ExactInfo:
 
 
 @dataclass(frozen=True)
+class Damping:
+    """The base dashpots of a design and the modal damping ratios they give.
+
+    ``dashpots``: C_x [N s/m], C_z [N s/m], C_phi [N m s/rad]; ``natural``: natural frequencies of
+    the averaged operator [rad/s], ascending; ``modal_ratios``: each mode's damping ratio [-].
+    """
+
+    dashpots: dict
+    natural: tuple[float, ...]
+    modal_ratios: tuple[float, ...]
+
+
+@dataclass(frozen=True)
 class AmplitudeReport:
     design: CrankDesign
     approximations: dict
@@ -107,6 +127,12 @@ class AmplitudeReport:
     rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
+    damping: Damping | None
+
+    @property
+    def damped(self) -> bool:
+        """The design has base dashpots: its response is finite at every resonance."""
+        return self.damping is not None
 
     @property
     def resonant(self) -> bool:
@@ -151,14 +177,18 @@ def _first(design: CrankDesign, points) -> Approximation:
     )
 
 
-def _averaged(design: CrankDesign, points) -> Approximation:
+def _averaged(design: CrankDesign, points) -> tuple[Approximation, Damping | None]:
     res = averaged_response(design)
     n, mode = res.nearest
     w = float(res.natural[mode])
     zero, _ = design_frequencies(design)  # name the averaged mode after the nearest k0, p1, p2
     name = min(("k0", "p1", "p2"), key=lambda k: abs(float(getattr(zero, k)) - w))
     label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
-    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points)
+    damping = None
+    dashpots = {"C_x": float(design.C_x), "C_z": float(design.C_z), "C_phi": float(design.C_phi)}
+    if any(value > 0.0 for value in dashpots.values()):
+        damping = Damping(dashpots, tuple(map(float, res.natural)), tuple(map(float, res.damping_ratios)))
+    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points), damping
 
 
 def _errors(approx: Approximation, exact: Approximation) -> dict | None:
@@ -211,7 +241,8 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
     ConvergenceError
         ``exact`` and the harmonic balance fails (away from the averaged operator's resonances).
     """
-    approximations = {"first_approximation": _first(design, points), "averaged_operator": _averaged(design, points)}
+    averaged, damping = _averaged(design, points)
+    approximations = {"first_approximation": _first(design, points), "averaged_operator": averaged}
     checked = "averaged_operator"
     info = errors = None
     if exact and not approximations["averaged_operator"].resonant:
@@ -237,7 +268,8 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         rows=_rows(approximations[checked], limits),
         exact_info=info,
         errors=errors,
+        damping=damping,
     )
 
 
-__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "LimitRow", "check_amplitudes"]
+__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "Damping", "LimitRow", "check_amplitudes"]

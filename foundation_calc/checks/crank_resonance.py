@@ -63,7 +63,7 @@ class ResonanceReport:
 def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
     """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays)."""
     d, rod = design, design.rod
-    soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.g)
+    soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g)
     zero = zero_order_frequencies(*soil_args)
     averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho)
     return zero, averaged
@@ -97,6 +97,6 @@ def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
         design=design,
         zero_order=zero,
         averaged=averaged,
-        stability_margin=rocking_stability_margin(d.c, d.I1, d.M_tot * d.g, d.h),
+        stability_margin=rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h),
         rows=tuple(rows),
     )

@@ -3,8 +3,9 @@
 One call of the corrected first approximation on arrays (no Python object per point) gives the
 peaks of x, y and θ at every point; the margins of every resonance condition come from the same
 arithmetic as ``fcalc resonance`` (nearer of the zero-order and the averaged-inertia critical
-speed). A point whose margin is below the first approximation's resonant margin has no periodic
-solution: it is reported as resonant, never as an infinite amplitude.
+speed). With base dashpots every point has a finite amplitude and a phase, at and through each
+resonance; without them a point whose margin is below the first approximation's resonant margin
+has no periodic solution: it is reported as resonant, never as an infinite amplitude.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from foundation_calc.checks.outcomes import resonance_masks
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
-from foundation_calc.solvers.crank.response import point_series
+from foundation_calc.solvers.crank.response import DOFS, point_series
 from foundation_calc.solvers.numerics.trig_series import derivative, peak
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
@@ -30,6 +31,9 @@ CHUNK = 4096
 
 #: Status of a point, worst last.
 STATUSES = ("pass", "warn", "fail", "resonant")
+
+#: Harmonics of the first approximation reported per point (dof, n).
+HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 
 @dataclass(frozen=True)
@@ -60,6 +64,9 @@ class SweepReport:
         acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
     over_quantities : limited quantity -> where its peak exceeds the limit
     status : one of :data:`STATUSES` per point
+    harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
+        [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
+    damped : the design has base dashpots
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     """
 
@@ -74,6 +81,8 @@ class SweepReport:
     over_limit: np.ndarray
     over_quantities: dict
     status: np.ndarray
+    harmonics: dict
+    damped: bool
     critical: tuple[CriticalSpeed, ...]
     limits: dict
     detuning: float
@@ -89,16 +98,23 @@ def _peaks(cos, sin):
     return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
 
 
-def _over(motion, omega, points, limits: dict) -> dict:
-    """Limited quantity -> bool array: a peak of C (x, y) or of a point exceeds the limit."""
+def _over(motion, omega, points, limits: dict, displacements) -> dict:
+    """Limited quantity -> bool array: a peak of C (x, y) or of a point exceeds the limit.
+
+    ``displacements``: the displacement peaks already found, (n, ≥ 2) arrays of C (x, y first)
+    and of each point; they are reused, not searched again.
+    """
     series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
     series += [point_series(motion, u, H) for _, u, H in points]
     over = {}
     for order, quantity in enumerate(QUANTITIES):
         if quantity not in limits:
             continue
-        w = omega[:, None]
-        largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
+        if order == 0:
+            largest = np.max([peaks[:, :2].max(axis=1) for peaks in displacements], axis=0)
+        else:
+            w = omega[:, None]
+            largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
         over[quantity] = exceeds(largest, limits[quantity])
     return over
 
@@ -132,7 +148,7 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
-    over_quantities = _over(motion, omega, points, limited)
+    over_quantities = _over(motion, omega, points, limited, [peaks, *located.values()])
     over = np.zeros(values.shape, dtype=bool)
     for mask in over_quantities.values():
         over |= mask
@@ -158,10 +174,15 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
         over_limit=over,
         over_quantities=over_quantities,
         status=status,
+        harmonics={
+            f"{dof}{n}": motion.cos[..., DOFS.index(dof), n] - 1j * motion.sin[..., DOFS.index(dof), n]
+            for dof, n in HARMONICS
+        },
+        damped=bool(np.any(np.array([design.C_x, design.C_z, design.C_phi]) > 0.0)),
         critical=critical,
         limits=limited,
         detuning=detuning,
     )
 
 
-__all__ = ["STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]

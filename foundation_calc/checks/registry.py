@@ -91,6 +91,8 @@ def crank_amplitudes(scene) -> Finding:
             f"largest peak {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
             " of the limit ", values["limit"],
         )
+        if report.damped:
+            reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
         if row.outcome is Outcome.PASS

@@ -24,8 +24,9 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
     operator; --exact adds the exact periodic solution, checks the limits with it and reports the
-    closed forms' relative errors. Fails (exit 1) when a peak exceeds [limits] amplitude, velocity
-    or acceleration, or when the speed is resonant.
+    closed forms' relative errors. With soil.damping every method gives finite amplitudes and
+    phases at and through every resonance. Fails (exit 1) when a peak exceeds [limits] amplitude,
+    velocity or acceleration, or when an undamped scene's speed is resonant.
     """
     from foundation_calc.checks.crank_amplitudes import check_amplitudes
     from foundation_calc.checks.outcomes import exit_code

@@ -85,7 +85,8 @@ def bench(
     truncation order K, and the whole check of each rig against one exciter. Start-up: the
     closed form of every resonance passed against the time integration (exponential integrator
     and scipy's DOP853) on a platform and a crank rig. Then the
-    designs per second of one vectorised call against a Python loop, and fcalc's start-up against
+    designs per second of one vectorised call against a Python loop (closed-form amplitudes
+    undamped and damped, and a damped speed sweep of a tenth as many speeds), and fcalc's start-up against
     its frameworks' — all measured in this run, on the first crank scene.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
@@ -111,7 +112,7 @@ def bench(
     steps += len(platforms) if Section.accuracy not in skipped else 0
     steps += 3 * (Section.harmonic_balance not in skipped)
     steps += 3 * (Section.runup not in skipped)
-    steps += 2 * (Section.throughput not in skipped) + (Section.startup not in skipped)
+    steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
     results, platform_results, throughput, startup, truncation, runups = [], [], None, None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
@@ -135,7 +136,13 @@ def bench(
 
             runups = benchmark_runup(MIN_TIME[quick], on_rig=step)
         if Section.throughput not in skipped:
-            from foundation_calc.benchmarks.throughput import amplitude_throughput, resonance_throughput
+            from foundation_calc.benchmarks.throughput import (
+                amplitude_throughput,
+                damped_variant,
+                resonance_throughput,
+                sweep_throughput,
+                undamped_variant,
+            )
 
             design = cranks[0][1].design()
             n = designs or (100_000 if quick else 1_000_000)
@@ -143,7 +150,12 @@ def bench(
             step(f"throughput: resonance check, {n:.3g} designs")
             throughput = {"resonance_check": resonance_throughput(design, n, sample)}
             step(f"throughput: closed-form amplitudes, {n:.3g} designs")
-            throughput["closed_form_amplitudes"] = amplitude_throughput(design, n, sample)
+            throughput["closed_form_amplitudes"] = amplitude_throughput(undamped_variant(design), n, sample)
+            damped = damped_variant(design)
+            step(f"throughput: damped closed-form amplitudes, {n:.3g} designs")
+            throughput["closed_form_amplitudes_damped"] = amplitude_throughput(damped, n, sample)
+            step(f"throughput: damped speed sweep, {n // 10:.3g} speeds")
+            throughput["sweep_damped"] = sweep_throughput(damped, n // 10, min(sample, 200))
         if Section.startup not in skipped:
             from foundation_calc.benchmarks.startup import startup_times
 

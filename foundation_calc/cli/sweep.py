@@ -28,7 +28,7 @@ SpeedOpt = Annotated[
 SoilOpt = Annotated[
     Optional[str],
     typer.Option("--soil", metavar="FROM:TO[:N]", show_default=False,
-                 help="Sweep a factor on both soil coefficients c_z and c_x, e.g. 0.5:1.5:41 (soil known to ±50 %)."),
+                 help="Sweep a factor on the soil coefficients c_z, c_x and c_phi, e.g. 0.5:1.5:41 (soil known to ±50 %)."),
 ]
 CsvOpt = Annotated[Optional[Path], typer.Option("--csv", metavar="FILE", help="Write the points as CSV (SI units).", show_default=False)]
 PlotOpt = Annotated[Optional[Path], typer.Option("--plot", metavar="FILE.png", help="Draw the amplitudes; needs the plot extra.", show_default=False)]

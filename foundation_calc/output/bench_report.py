@@ -274,7 +274,9 @@ def print_bench(scenes, platforms, throughput, startup, truncation=None, runups=
         for name in ("computation", "designs", "vectorised", "scalar loop", "speed-up", "peak memory (vectorised)"):
             table.add_column(name, justify="left" if name == "computation" else "right")
         labels = {"resonance_check": "resonance check (k0, p1, p2, margins)",
-                  "closed_form_amplitudes": "closed-form amplitudes (first approximation)"}
+                  "closed_form_amplitudes": "closed-form amplitudes (first approximation), undamped",
+                  "closed_form_amplitudes_damped": "the same, damped (base dashpots)",
+                  "sweep_damped": "speed sweep, damped: amplitudes, peaks, margins, status"}
         for key, t in throughput.items():
             table.add_row(
                 labels.get(key, key),

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
@@ -32,12 +34,13 @@ def _approximation_document(approx: Approximation) -> dict:
     if approx.key == "first_approximation":
         coefficients = {f"{dof}{n}": float(approx.motion.coefficient(dof, n)[part == "sin"]) for dof, n, part in FIRST_KEYS}
         doc["coefficients"] = coefficients
-        doc["magnitudes"] = {k: abs(v) for k, v in coefficients.items()}
+        doc["magnitudes"] = {f"{dof}{n}": abs(approx.harmonic(dof, n)) for dof, n, _ in FIRST_KEYS}
     doc["harmonics"] = {
         f"{dof}{n}": {
             "cos": float(approx.motion.coefficient(dof, n)[0]),
             "sin": float(approx.motion.coefficient(dof, n)[1]),
             "magnitude": abs(approx.harmonic(dof, n)),
+            "phase": approx.phase(dof, n),
         }
         for dof, n in ((d, n) for d in DOFS for n in range(0, 5))
     }
@@ -64,6 +67,13 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         " a point's displacement is the rigid-body motion X + (R(theta) - I)(horizontal, -height),"
         " to first order (x + height·theta, y + horizontal·theta)",
         "resonant_margin": RESONANT_MARGIN,
+        "damping": None
+        if report.damping is None
+        else {
+            "dashpots": report.damping.dashpots,
+            "natural_frequencies": list(report.damping.natural),
+            "modal_damping_ratios": list(report.damping.modal_ratios),
+        },
         "checked_with": report.checked,
         "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
         "limits": [
@@ -94,14 +104,14 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
 
 
 def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    if report.damped:
+        return _damped_harmonics_table(report, units)
     table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
     table.add_column("harmonic")
     shown = [a for a in report.approximations.values()]
     for a in shown:
         table.add_column(a.key.replace("_", " "), justify="right")
-    if report.errors:
-        for key in report.errors:
-            table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+    _error_columns(table, report)
     scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
         (a.key, dof): max(abs(float(a.motion.coefficient(dof, k)[0 if dof == "y" else 1])) for d, k in HARMONICS if d == dof)
         for a in shown
@@ -121,10 +131,50 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
             if dof != "theta":
                 value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
             cells.append(fmt_scaled(value, scale, 6))
-        if report.errors:
-            for err in report.errors.values():
-                cells.append("-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}")
-        table.add_row(*cells)
+        table.add_row(*cells, *_error_cells(report, dof, n))
+    return table
+
+
+def _error_columns(table: Table, report: AmplitudeReport) -> None:
+    for key in report.errors or ():
+        table.add_column(f"error, {key.replace('_', ' ')}", justify="right")
+
+
+def _error_cells(report: AmplitudeReport, dof: str, n: int) -> list[str]:
+    return ["-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}" for err in (report.errors or {}).values()]
+
+
+def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    """Amplitude A and phase lag φ of each harmonic, q_n(t) = A cos(nωt - φ), for every method."""
+    table = Table(
+        title="Harmonics, damped: amplitude A and phase lag φ, q_n(t) = A cos(nωt − φ)", title_justify="left"
+    )
+    table.add_column("harmonic")
+    shown = list(report.approximations.values())
+    for a in shown:
+        name = a.key.replace("_", " ")
+        table.add_column(f"A, {name}", justify="right")
+        table.add_column(f"φ [°], {name}", justify="right")
+    _error_columns(table, report)
+    scales = {
+        (a.key, dof): max(abs(a.harmonic(d, k)) for d, k in HARMONICS if d == dof)
+        for a in shown
+        if not a.resonant
+        for dof in DOFS
+    }
+    for dof, n in HARMONICS:
+        unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
+        cells = [f"{dof}{n} \\[{unit}]"]
+        for a in shown:
+            if a.resonant:
+                cells += ["resonant", "-"]
+                continue
+            value, scale = abs(a.harmonic(dof, n)), scales[a.key, dof]
+            if dof != "theta":
+                value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
+            amplitude = fmt_scaled(value, scale, 6)
+            cells += [amplitude, "-" if amplitude == "0" else f"{math.degrees(a.phase(dof, n)):.1f}"]
+        table.add_row(*cells, *_error_cells(report, dof, n))
     return table
 
 
@@ -168,9 +218,10 @@ def summary_line(report: AmplitudeReport) -> str:
     if not report.rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
     top = max(report.rows, key=lambda r: r.ratio)
+    damped = f"; damped response, {approx.margin:.2%} from {approx.nearest}" if report.damped else ""
     return (
         f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
-        f" ({escape(top.point)}, {top.direction} {top.quantity})"
+        f" ({escape(top.point)}, {top.direction} {top.quantity}){damped}"
     )
 
 
@@ -187,6 +238,13 @@ def print_amplitudes_report(
     for a in report.approximations.values():
         note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"
         out.print(f"  {a.key.replace('_', ' ')}: {a.title} ({note})")
+    if report.damping is not None:
+        damping = report.damping
+        modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
+        out.print(
+            f"  damped (base dashpots C_x = {fmt(damping.dashpots['C_x'])} N s/m, C_z = {fmt(damping.dashpots['C_z'])} N s/m,"
+            f" C_φ = {fmt(damping.dashpots['C_phi'])} N m s/rad); modes of the averaged operator: {modes}"
+        )
     if report.exact_info is not None:
         info = report.exact_info
         out.print(

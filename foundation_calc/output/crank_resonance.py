@@ -90,7 +90,7 @@ def print_resonance_report(
     design.add_row("λ = r/l, crank-to-rod ratio", fmt(d.lam, 4), "-")
     design.add_row("M_tot, total mass", fmt(d.M_tot), "kg")
     design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt(d.rho1_sq**0.5, 4), "m")
-    design.add_row("rocking stability margin c·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
+    design.add_row("rocking stability margin c_φ·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
     out.print(design)
 
     freqs = Table(title="Natural frequencies", title_justify="left")

@@ -1,10 +1,14 @@
-"""Table, CSV, JSON and plot of ``fcalc sweep``. Resonant points carry no amplitude (empty / null)."""
+"""Table, CSV, JSON and plot of ``fcalc sweep``. Resonant points (undamped only) carry no amplitude
+(empty / null); a damped sweep adds each harmonic's amplitude and phase lag."""
 
 from __future__ import annotations
 
 import csv
 import io
+import math
 from pathlib import Path
+
+import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
@@ -13,6 +17,15 @@ from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
 STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
+
+
+def _harmonics(report, i: int) -> dict | None:
+    """Amplitude [m or rad] and phase lag [rad] of each harmonic at point i; None where resonant."""
+    if report.resonant[i]:
+        return None
+    return {
+        key: {"amplitude": float(abs(z[i])), "phase": float(-np.angle(z[i]))} for key, z in report.harmonics.items()
+    }
 
 
 def _rows(report):
@@ -30,6 +43,7 @@ def _rows(report):
             "x_peak": x,
             "y_peak": y,
             "theta_peak": th,
+            "harmonics": _harmonics(report, i),
             "points": points,
             "resonant": resonant,
             "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
@@ -66,6 +80,7 @@ def sweep_csv(report) -> str:
     writer = csv.writer(buffer, lineterminator="\n")
     header = [report.variable if report.variable != "omega" else "omega_rad_s", "speed_hz", "speed_rpm",
               "x_peak_m", "y_peak_m", "theta_peak_rad",
+              *(f"{key}_{part}" for key in report.harmonics for part in ("amplitude", "phase_rad")),
               *(f"{name}_{d}_peak_m" for name in report.points for d in ("horizontal", "vertical")),
               "resonant", "nearest_condition", "margin", "over_limit", "status"]
     if report.variable != "omega":
@@ -77,6 +92,9 @@ def sweep_csv(report) -> str:
             cells.append(row["omega"])
         cells += [hz_from_omega(row["omega"]), rpm_from_omega(row["omega"])]
         cells += ["" if row[k] is None else repr(row[k]) for k in ("x_peak", "y_peak", "theta_peak")]
+        for key in report.harmonics:
+            h = row["harmonics"]
+            cells += ["", ""] if h is None else [repr(h[key]["amplitude"]), repr(h[key]["phase"])]
         for name in report.points:
             p = row["points"][name]
             cells += ["", ""] if p is None else [repr(p["horizontal"]), repr(p["vertical"])]
@@ -95,12 +113,14 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
     title = f"{escape(name or scene_path)} — {METHOD}"
     table = Table(title=title, title_justify="left")
     if report.variable == "soil_factor":
-        table.add_column("soil factor (c_z, c_x)", justify="right")
+        table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
     table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
     for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
         table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
     for name in report.points:
         table.add_column(escape(f"{name} peak h/v [{amp_unit}]"), justify="right")
+    if report.damped:
+        table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
     table.add_column("nearest resonance, margin")
     table.add_column("status")
     for row in _rows(report):
@@ -115,6 +135,9 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
                 " / ".join(fmt(units.convert("amplitude", p[k]), 4) for k in ("horizontal", "vertical"))
                 for p in row["points"].values()
             ]
+        if report.damped:
+            h = row["harmonics"]
+            cells.append("-" if h is None else f"{math.degrees(h['x1']['phase']):.1f} / {math.degrees(h['y1']['phase']):.1f}")
         cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
         over = ", ".join(row["over_limits"])
         status = row["status"] + (f" (over {over} limit)" if over else "")
@@ -146,7 +169,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
         ax.set_xlabel(f"crank speed [{units.label('speed')}]")
     else:
         xs = report.values
-        ax.set_xlabel("factor on the soil coefficients c_z, c_x [-]")
+        ax.set_xlabel("factor on the soil coefficients c_z, c_x, c_phi [-]")
     ok = ~report.resonant
     for i, dof in enumerate(("x", "y")):
         amps = np.where(ok, [units.convert("amplitude", v) for v in report.peaks[:, i]], np.nan)

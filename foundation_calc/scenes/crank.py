@@ -48,7 +48,7 @@ class Soil(SceneModel):
     )
     damping: list[float] | None = quantity(
         "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] of the vertical, horizontal and rocking modes;"
-        " default: undamped", None, examples=[[0.1, 0.1, 0.05]], min_length=3, max_length=3,
+        " default: undamped", None, min_length=3, max_length=3, examples=[[0.1, 0.1, 0.05]],
     )
 
     @field_validator("damping")

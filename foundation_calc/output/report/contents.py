@@ -6,6 +6,8 @@ fixed here once. Numbers are shown with 6 significant figures in the chosen disp
 
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 
 from foundation_calc.output.display_units import DisplayUnits
@@ -107,7 +109,7 @@ def _crank_derived(res: dict, units: DisplayUnits) -> Section:
         ("m, moving mass", num(d["moving_mass"]), "kg"),
         ("ρ1 = sqrt(I_c/M_tot)", num(d["rho1"]), "m"),
         ("κ = l'l'' − ρ²", num(d["kappa"]), "m²"),
-        ("rocking stability margin c·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
+        ("rocking stability margin c_φ·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
     )
     return Section("Derived quantities", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
 
@@ -159,7 +161,7 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
         return Section("Amplitudes", tuple(blocks))
     shown = [(key, a) for key, a in approximations.items() if not a["resonant"]]
     au = units.label("amplitude")
-    rows = []
+    rows, phase_rows = [], []
     largest = [_largest_harmonics(a) for _, a in shown]
     for name in checked["harmonics"]:
         dof = name.rstrip("0123456789")
@@ -170,9 +172,23 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
         unit = "rad" if dof == "theta" else au
         scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
         rows.append((f"{name} [{unit}]", *(num(scale(x)) for x in h)))
-    blocks.append(
-        table("Amplitude per harmonic (magnitude)", ("harmonic", *(k.replace("_", " ") for k, _ in shown)), rows)
-    )
+        if not name.endswith("0"):  # the mean has a sign, not a phase
+            phase_rows.append(
+                (name, *(f"{math.degrees(a['harmonics'][name]['phase']):.1f}" if x else "-" for (_, a), x in zip(shown, h)))
+            )
+    methods = tuple(k.replace("_", " ") for k, _ in shown)
+    blocks.append(table("Amplitude per harmonic (magnitude)", ("harmonic", *methods), rows))
+    if amp["damping"] is not None:
+        d = amp["damping"]
+        modes = ", ".join(
+            f"{num(w)} rad/s: ζ = {num(z, 3)}" for w, z in zip(d["natural_frequencies"], d["modal_damping_ratios"])
+        )
+        blocks.append(Paragraph(
+            f"Damped: base dashpots C_x = {num(d['dashpots']['C_x'])} N s/m, C_z = {num(d['dashpots']['C_z'])} N s/m,"
+            f" C_φ = {num(d['dashpots']['C_phi'])} N m s/rad; modes of the averaged operator and their damping"
+            f" ratios: {modes}. Each harmonic is A cos(nωt − φ)."
+        ))
+        blocks.append(table("Phase lag φ per harmonic [°]", ("harmonic", *methods), phase_rows))
     quantity_units = {
         "displacement": ("amplitude", au),
         "velocity": ("velocity", units.label("velocity")),

@@ -12,11 +12,12 @@ from foundation_calc.output.report.model import Equation
 CRANK = (
     Equation(
         'k_0^2 = c S / M_"tot", quad a_0 = c_1 S / M_"tot", quad b_0 = c_1 h S / M_"tot", quad'
-        ' a_1 = c_1 h S / I_c, quad b_1 = (c_1 h^2 S + c I_1 - P_"tot" h) / I_c',
+        ' a_1 = c_1 h S / I_c, quad b_1 = (c_1 h^2 S + c_phi I_1 - P_"tot" h) / I_c',
         "k0² = c S/M_tot, a0 = c1 S/M_tot, b0 = c1 h S/M_tot, a1 = c1 h S/I_c,"
-        " b1 = (c1 h² S + c I1 − P_tot h)/I_c",
+        " b1 = (c1 h² S + c_φ I1 − P_tot h)/I_c",
         "[KM] Eq. (4.5), with (3.4)",
-        "(3.4): the weight term of the rocking stiffness is −P h (printed +P h); ∫z³ is ∫z².",
+        "(3.4): the weight term of the rocking stiffness is −P h (printed +P h); ∫z³ is ∫z²;"
+        " the paper's c I1 is generalised to c_φ I1 (c_φ = c unless soil.c_phi is given).",
     ),
     Equation(
         'p_(1,2)^2 = (a_0 + b_1)/2 minus.plus sqrt(((a_0 + b_1)/2)^2 - (a_0 b_1 - a_1 b_0))',

@@ -11,7 +11,10 @@ mechanism with the rod's mean position, M̄_xθ = m (a - l'⟨cos ψ⟩), M̄_θ
 K̄ adds the rod weight's mean moment to the soil's stiffness), and the exact forcing -r0(t) is
 expanded in a Fourier series by sampling one revolution (this brings the exact slider motion,
 e.g. the vertical 4ω harmonic, and, with the motor off the foundation, the drive's reaction).
-Each harmonic then solves (K̄ + i nω C̄ - n²ω² M̄) Z_n = F_n.
+Each harmonic then solves (K̄ + i nω C̄ - n²ω² M̄) Z_n = F_n. C̄ holds the soil's base dashpots
+(and the mechanism's mean gyroscopic terms), so a damped design has a finite response at and
+through every resonance; only a mode the dashpots leave undamped is "resonant" (no steady state)
+when a harmonic falls on it.
 
 What is left out is the periodic part of K, C, M acting on the response. It couples the
 harmonics (for instance the vertical 2ω motion drives rocking at ω through the rod's horizontal
@@ -33,7 +36,7 @@ import numpy as np
 
 from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import PeriodicMotion
@@ -87,6 +90,8 @@ class AveragedResponse:
     margin : smallest relative distance |nω - p|/p over harmonics and modes [-]
     nearest : (n, index of the mode in ``natural``) of that smallest margin
     resonant : margin < :data:`~foundation_calc.solvers.crank.first_approximation.RESONANT_MARGIN`
+        and that mode's damping ratio below :data:`UNDAMPED_RATIO`
+    damping_ratios : modal damping ratio of each mode from the base dashpots [-] (3,)
     mass, damping, stiffness : the averaged matrices (3, 3), order x, y, θ
     """
 
@@ -95,6 +100,7 @@ class AveragedResponse:
     margin: float
     nearest: tuple[int, int]
     resonant: bool
+    damping_ratios: np.ndarray
     mass: np.ndarray
     damping: np.ndarray
     stiffness: np.ndarray
@@ -107,19 +113,34 @@ RESOLVED_FREQUENCY_RATIO = 1e-7
 #: Scene fields whose values set the natural frequencies, named when they cannot be resolved.
 FREQUENCY_FIELDS = (
     "foundation.mass, foundation.moment_of_inertia, foundation.cog_height, foundation.base_area,"
-    " foundation.base_second_moment, soil.c_z, soil.c_x"
+    " foundation.base_second_moment, soil.c_z, soil.c_x, soil.c_phi"
 )
 
 
-def _natural_frequencies(M, K) -> np.ndarray:
-    """Ascending natural frequencies [rad/s] of (K, M), or :class:`PhysicsError` when double
-    precision cannot resolve them (a singular mass matrix, or frequencies more than
-    1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is round-off)."""
+def base_dashpot_matrix(design: CrankDesign) -> np.ndarray:
+    """Damping matrix [N s/m, N s, N m s] of the base dashpots in the order x, y, θ (soil note)::
+
+        [[C_x, 0, -h C_x], [0, C_z, 0], [-h C_x, 0, C_φ + h² C_x]]
+    """
+    d = design
+    return np.array(
+        [[d.C_x, 0.0, -d.h * d.C_x], [0.0, d.C_z, 0.0], [-d.h * d.C_x, 0.0, d.C_phi + d.h * d.h * d.C_x]],
+        dtype=float,
+    )
+
+
+def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
+    """Ascending natural frequencies [rad/s] of (K, M) and their mode shapes (columns), or
+    :class:`PhysicsError` when double precision cannot resolve them (a singular mass matrix, or
+    frequencies more than 1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is
+    round-off)."""
     try:
-        squared = np.linalg.eigvals(np.linalg.solve(M, K)).real
+        squared, shapes = np.linalg.eig(np.linalg.solve(M, K))
     except np.linalg.LinAlgError:
-        squared = np.zeros(3)
-    natural = np.sort(np.sqrt(np.abs(squared)))
+        squared, shapes = np.zeros(3), np.eye(3)
+    order = np.argsort(np.abs(squared.real))
+    natural = np.sqrt(np.abs(squared.real[order]))
+    shapes = shapes.real[:, order]
     if not np.all(np.isfinite(natural)) or natural[0] <= RESOLVED_FREQUENCY_RATIO * natural[-1]:
         raise PhysicsError(
             f"the natural frequencies of the averaged operator ({', '.join(f'{w:.3g}' for w in natural)} rad/s)"
@@ -127,7 +148,15 @@ def _natural_frequencies(M, K) -> np.ndarray:
             " the masses, lengths and soil stiffness of the scene are orders of magnitude apart",
             field=FREQUENCY_FIELDS,
         )
-    return natural
+    return natural, shapes
+
+
+def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
+    """ζ_j = v_j·C v_j / (2 p_j v_j·M v_j) [-] of each mode shape v_j (columns of ``shapes``);
+    0 for a shape of no modal mass (round-off), never NaN."""
+    damping = np.einsum("ij,ik,kj->j", shapes, C, shapes)
+    inertia = 2.0 * natural * np.einsum("ij,ik,kj->j", shapes, M, shapes)
+    return np.where(inertia > 0.0, damping / np.where(inertia > 0.0, inertia, 1.0), 0.0)
 
 
 def averaged_response(design: CrankDesign) -> AveragedResponse:
@@ -147,17 +176,19 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
     >>> f"{res.motion.cos[1, 1]:.6e} {res.motion.sin[0, 1]:.6e}"
     '4.038206e-04 -2.451694e-04'
     """
-    require_stable_rocking(design.c, design.I1, design.M_tot * design.g, design.h)
+    require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
     lin = linearise(design, phases(FORCING_SAMPLES))
     M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
-    natural = _natural_frequencies(M, K)
+    natural, shapes = _modes(M, K)
+    ratios = modal_damping_ratios(M, base_dashpot_matrix(design), natural, shapes)
     n = np.arange(FORCING_HARMONICS + 1)
     w = n * design.omega
     margins = np.abs(w[1:, None] - natural) / natural
     flat = int(np.argmin(margins))
     nearest = (flat // 3 + 1, flat % 3)
     margin = float(margins.min())
-    resonant = margin < RESONANT_MARGIN
+    undamped = margins[:, ratios < UNDAMPED_RATIO]
+    resonant = bool(undamped.size) and float(undamped.min()) < RESONANT_MARGIN
     fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
     if resonant:
         Z = np.zeros((3, FORCING_HARMONICS + 1), dtype=complex)
@@ -174,10 +205,20 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
         margin=margin,
         nearest=nearest,
         resonant=resonant,
+        damping_ratios=ratios,
         mass=M,
         damping=C,
         stiffness=K,
     )
 
 
-__all__ = ["FORCING_HARMONICS", "FORCING_SAMPLES", "AveragedResponse", "LinearOperator", "averaged_response", "linearise"]
+__all__ = [
+    "FORCING_HARMONICS",
+    "FORCING_SAMPLES",
+    "AveragedResponse",
+    "LinearOperator",
+    "averaged_response",
+    "base_dashpot_matrix",
+    "linearise",
+    "modal_damping_ratios",
+]

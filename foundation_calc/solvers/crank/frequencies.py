@@ -1,17 +1,18 @@
 """Natural frequencies of a block foundation on Barkan's soil springs, with a crank mechanism.
 
 Source: Krichever & Makarov [1]_, Eqs. (4.5)-(4.7) (printed ρ1, ρ2 there are p1, p2), with the
-gravity term of (3.4) taken as destabilising (-P h, not +P h).
+gravity term of (3.4) taken as destabilising (-P h, not +P h), and the paper's rocking spring c I1
+generalised to c_φ I1 (the paper takes c_φ = c; Barkan and SP 26 take c_φ ≈ 2 c).
 
 Zero-order operator (foundation with the whole mass M_tot = M + m, rocking inertia I_c)::
 
     k0² = c S / M_tot
     a0 = c1 S / M_tot,   b0 = c1 h S / M_tot,   a1 = c1 h S / I_c
-    b1 = (c1 h² S + c I1 - P h) / I_c,          P = M_tot g
+    b1 = (c1 h² S + c_φ I1 - P h) / I_c,        P = M_tot g
     p1², p2² = (a0 + b1)/2 ∓ sqrt(((a0 - b1)/2)² + a1 b0)                         (4.7)
 
-The foundation is stable in rocking only when a0 b1 - a1 b0 = c1 S (c I1 - P h)/(M_tot I_c) > 0,
-that is, when the soil's rocking stiffness c I1 exceeds the overturning moment of the weight P h.
+The foundation is stable in rocking only when a0 b1 - a1 b0 = c1 S (c_φ I1 - P h)/(M_tot I_c) > 0,
+that is, when the soil's rocking stiffness c_φ I1 exceeds the overturning moment of the weight P h.
 
 Every function here uses arithmetic operators only, so its arguments may be floats or numpy arrays.
 
@@ -47,34 +48,35 @@ def _any(mask) -> bool:
     return bool(mask.any()) if hasattr(mask, "any") else bool(mask)
 
 
-def rocking_stability_margin(c, I1, P, h):
-    """Relative reserve of the soil's rocking stiffness over the overturning moment, c I1/(P h) - 1.
+def rocking_stability_margin(c_phi, I1, P, h):
+    """Relative reserve of the soil's rocking stiffness over the overturning moment, c_φ I1/(P h) - 1.
 
     Positive: stable. Zero or negative: the foundation tips over (p1² <= 0).
 
     Parameters
     ----------
-    c : coefficient of elastic uniform compression [N/m³]
+    c_phi : coefficient of elastic non-uniform compression (rocking) [N/m³]
     I1 : second moment of the base area [m⁴]
     P : total weight M_tot g [N]
     h : height of the centre of mass above the base [m]
 
-    >>> rocking_stability_margin(c=4.0e7, I1=90.0, P=1.0e6, h=1.5)
+    >>> rocking_stability_margin(c_phi=4.0e7, I1=90.0, P=1.0e6, h=1.5)
     2399.0
     """
-    return c * I1 / (P * h) - 1.0
+    return c_phi * I1 / (P * h) - 1.0
 
 
-def require_stable_rocking(c, I1, P, h):
+def require_stable_rocking(c_phi, I1, P, h):
     """Raise :class:`PhysicsError` when ``rocking_stability_margin`` is not positive."""
-    margin = rocking_stability_margin(c, I1, P, h)
+    margin = rocking_stability_margin(c_phi, I1, P, h)
     if _any(margin <= 0.0):
         raise PhysicsError(
-            "the foundation is unstable in rocking: the soil's rocking stiffness c·I1 does not"
-            " exceed the overturning moment of the weight P·h (c·I1/(P·h) - 1 ="
+            "the foundation is unstable in rocking: the soil's rocking stiffness c_φ·I1 does not"
+            " exceed the overturning moment of the weight P·h (c_φ·I1/(P·h) - 1 ="
             f" {_first(margin):.4g})",
             field="foundation.base_second_moment",
-            hint="increase soil.c_z or the base's second moment I1, or lower the centre of mass h",
+            hint="increase soil.c_phi (default soil.c_z) or the base's second moment I1, or lower the"
+            " centre of mass h",
         )
     return margin
 
@@ -84,11 +86,11 @@ def _first(values):
     return float(values.min()) if hasattr(values, "min") else float(values)
 
 
-def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, g) -> NaturalFrequencies:
-    """k0, p1, p2 of the zero-order operator, Eqs. (4.5)-(4.7) of [1]_.
+def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g) -> NaturalFrequencies:
+    """k0, p1, p2 of the zero-order operator, Eqs. (4.5)-(4.7) of [1]_ (c I1 → c_φ I1).
 
     The smaller root is taken as p1² = (a0 b1 - a1 b0)/p2², and a0 b1 - a1 b0 is evaluated as
-    c1 S (c I1 - P h)/(M_tot I_c), so neither root suffers cancellation.
+    c1 S (c_φ I1 - P h)/(M_tot I_c), so neither root suffers cancellation.
 
     Parameters
     ----------
@@ -99,29 +101,30 @@ def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, g) -> NaturalFrequencies
     I1 : second moment of the base area about its centroidal axis [m⁴]
     c : coefficient of elastic uniform compression [N/m³]
     c1 : coefficient of elastic uniform shear [N/m³]
+    c_phi : coefficient of elastic non-uniform compression (rocking spring c_φ I1) [N/m³]
     g : acceleration of gravity [m/s²]
 
     Raises
     ------
     PhysicsError
-        when the foundation is unstable in rocking (c I1 <= M_tot g h).
+        when the foundation is unstable in rocking (c_φ I1 <= M_tot g h).
 
-    >>> f = zero_order_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 9.81)
+    >>> f = zero_order_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 4.0e7, 9.81)
     >>> round(f.k0, 6), round(f.p1, 6), round(f.p2, 6)
     (108.732056, 63.428974, 128.254857)
     """
     P = M_tot * g
-    require_stable_rocking(c, I1, P, h)
+    require_stable_rocking(c_phi, I1, P, h)
     a0 = c1 * S / M_tot
     b0 = c1 * h * S / M_tot
     a1 = c1 * h * S / I_c
-    b1 = (c1 * h * h * S + c * I1 - P * h) / I_c
-    det = c1 * S * (c * I1 - P * h) / (M_tot * I_c)
+    b1 = (c1 * h * h * S + c_phi * I1 - P * h) / I_c
+    det = c1 * S * (c_phi * I1 - P * h) / (M_tot * I_c)
     p2_sq = (a0 + b1) / 2.0 + (((a0 - b1) / 2.0) ** 2 + a1 * b0) ** 0.5
     return NaturalFrequencies(k0=(c * S / M_tot) ** 0.5, p1=(det / p2_sq) ** 0.5, p2=p2_sq**0.5)
 
 
-def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, g, m, a, r, l, l1, rho) -> NaturalFrequencies:
+def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r, l, l1, rho) -> NaturalFrequencies:
     """k0, p1, p2 with the mechanism's inertia averaged over one revolution.
 
     The zero-order operator of [1]_ gives the rod's mass to x and y but no rocking inertia, so
@@ -143,21 +146,21 @@ def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, g, m, a, r, l, l1,
     l1 : l', rod centre of mass to crank pin (slider lumped in) [m]
     rho : rod radius of gyration about its centre of mass (slider lumped in) [m]
 
-    >>> f = averaged_inertia_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 9.81,
+    >>> f = averaged_inertia_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 4.0e7, 9.81,
     ...                                  1.5e3, 2.0, 0.3, 1.2, 1.0, 0.35)
     >>> round(f.p1, 6), round(f.p2, 6)
     (63.172362, 128.522152)
     """
     P = M_tot * g
-    require_stable_rocking(c, I1, P, h)
+    require_stable_rocking(c_phi, I1, P, h)
     mean_cos = mean_cos_psi(r / l)
     m12 = -m * mean_position_v(a, l1, mean_cos)
     m22 = I_c + m * (rho * rho + mean_square_distance(a, r, l, l1, mean_cos))
     k11 = c1 * S
     k12 = -c1 * h * S
-    k22 = c1 * h * h * S + c * I1 - P * h
+    k22 = c1 * h * h * S + c_phi * I1 - P * h
     det_m = M_tot * m22 - m12 * m12
-    det_k = c1 * S * (c * I1 - P * h)
+    det_k = c1 * S * (c_phi * I1 - P * h)
     trace = k11 * m22 + k22 * M_tot - 2.0 * k12 * m12
     disc = trace * trace - 4.0 * det_m * det_k
     disc = (disc + abs(disc)) / 2.0  # rounding can make it -0 when p1 ≈ p2

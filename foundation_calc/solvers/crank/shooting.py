@@ -92,7 +92,7 @@ def shooting_solution(design: CrankDesign, *, rtol: float = RTOL) -> ShootingSol
     """
     from scipy.integrate import solve_ivp
 
-    require_stable_rocking(design.c, design.I1, design.M_tot * design.g, design.h)
+    require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
     w = design.omega
     period = 2.0 * np.pi / w
     scale = np.array([1.0, 1.0, 1.0, w, w, w])

@@ -16,6 +16,9 @@ import numpy as np
 #: Newton steps that refine a sampled extremum; from a sample spacing of 2π/N quadratic
 #: convergence reaches round-off in 4-5 steps, the rest is margin.
 _NEWTON_STEPS = 8
+#: A Newton step [rad] below which the extremum's phase is exact to round-off after it: the
+#: error after a step of δ is about (K δ)², and |q| at the peak moves by its square.
+_CONVERGED_STEP = 1e-8
 
 
 def phases(N: int) -> np.ndarray:
@@ -68,10 +71,8 @@ def _values(cos, sin, n, phi):
     """q, dq/dφ and d²q/dφ² at phases ``phi`` (shape (P,)) of P series (shape (P, K + 1))."""
     arg = phi[:, None] * n
     c, s = np.cos(arg), np.sin(arg)
-    q = (cos * c + sin * s).sum(-1)
-    dq = (n * (sin * c - cos * s)).sum(-1)
-    ddq = (-n * n * (cos * c + sin * s)).sum(-1)
-    return q, dq, ddq
+    terms = cos * c + sin * s
+    return terms.sum(-1), (sin * c - cos * s) @ n, terms @ (-n * n)
 
 
 def peak(cos, sin):
@@ -112,7 +113,10 @@ def peak(cos, sin):
     for _ in range(_NEWTON_STEPS):
         _, dq, ddq = _values(flat_cos, flat_sin, n, phi)
         safe = np.where(ddq == 0.0, 1.0, ddq)
-        phi = phi - np.clip(np.where(ddq == 0.0, 0.0, dq / safe), -step, step)
+        change = np.clip(np.where(ddq == 0.0, 0.0, dq / safe), -step, step)
+        phi = phi - change
+        if not np.any(np.abs(change) > _CONVERGED_STEP):
+            break  # quadratic convergence: the next step would be below 1e-16 rad
     refined = np.abs(_values(flat_cos, flat_sin, n, phi)[0])
     flat_best = best.reshape(-1)
     owner = np.ravel_multi_index(tuple(where), batch) if batch else np.zeros(j.shape, dtype=int)
