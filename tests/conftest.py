@@ -19,6 +19,11 @@ def configs_of_kind(kind: str) -> list[Path]:
     return sorted(p for p in CONFIGS.glob("*.toml") if read_toml(p).get("kind") == kind)
 
 
+def mechanism_configs() -> list[Path]:
+    """The crank_foundation files in configs/ with a [mechanism] (not a machine given by its loads only)."""
+    return [p for p in configs_of_kind("crank_foundation") if "mechanism" in read_toml(p)]
+
+
 @pytest.fixture
 def runner() -> CliRunner:
     return CliRunner()

@@ -29,7 +29,8 @@ SCENE = CONFIGS / "frame_saw_extra_resonance.toml"
 def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
-    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "runup"]
+    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch"]
+    args += ["--skip", "runup"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
     try:
@@ -109,7 +110,7 @@ def test_plot_without_matplotlib_is_a_usage_error(runner, monkeypatch, tmp_path)
 
 def test_throughput_section(runner):
     args = ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"]
-    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "runup"])
+    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "runup"])
     assert result.exit_code == 0, result.output
     doc = json.loads(result.stdout)
     assert doc["scenes"] == [] and doc["startup"] is None
@@ -137,6 +138,24 @@ def test_runup_rows_render_in_json_and_tables():
     (doc,) = _runup_document([row])
     assert doc["integration_seconds"] == 0.4 and doc["closed_form_error"] == 1.2e-2
     assert _runup_table([row]).row_count == 1
+
+
+def test_batch_rows_are_side_by_side_and_write_nothing_into_the_project(tmp_path, monkeypatch):
+    from foundation_calc.benchmarks.batch import batch_benchmark
+    from foundation_calc.output.bench_report import bench_document
+
+    monkeypatch.chdir(tmp_path)  # scenes go to a temporary folder of their own, not here
+    platform = CONFIGS / "platform_paper_example.toml"
+    batch = batch_benchmark(platform, [platform, SCENE], many=3, large=4, repeats=1)
+    assert list(tmp_path.iterdir()) == []
+    assert (batch.one.scenes, batch.many.scenes, batch.many_two_jobs.jobs, batch.large.scenes) == (1, 3, 2, 4)
+    assert batch.marginal_seconds == pytest.approx((batch.many.seconds - batch.one.seconds) / 2)
+    assert batch.jobs_speedup == pytest.approx(batch.many.seconds / batch.many_two_jobs.seconds)
+    for row in (batch.one, batch.many, batch.many_two_jobs, batch.large):
+        assert row.seconds > 0 and row.cpu_seconds > 0 and row.peak_bytes_largest_process > 1e6
+    document = json.loads(json.dumps(bench_document([], [], None, None, None, batch)))
+    assert document["batch"]["large"]["scenes"] == 4
+    assert document["batch"]["ratio_many_to_one"] == pytest.approx(batch.many_over_one)
 
 
 def test_damped_scene_errors_agree_with_shooting():

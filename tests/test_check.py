@@ -215,3 +215,18 @@ def test_jobs_give_the_serial_result_in_the_same_order(runner, tmp_path):
     assert serial.exit_code == parallel.exit_code == 3
     assert json.loads(serial.stdout) == json.loads(parallel.stdout)
     assert [s["source"].rsplit("/", 1)[-1] for s in json.loads(parallel.stdout)["scenes"]][0] == "broken.toml"
+
+
+def test_streamed_document_is_the_whole_documents_text(quick_checks, mixed_folder):
+    """fcalc check --json writes the document scene by scene, keeping only light runs; the text is
+    exactly the dump of the document built from the full runs (skipped files included)."""
+    from foundation_calc.checks.batch import run_scenes
+    from foundation_calc.output import check_report
+
+    scenes = run_scenes([mixed_folder])
+    whole = json.dumps(check_report.check_document(scenes, True), indent=2, ensure_ascii=False) + "\n"
+    parts = []
+    light = check_report.stream_check_json((check_report.json_entry(s, True) for s in scenes), True, parts.append)
+    assert "".join(parts) == whole
+    assert all(s.scene is None and all(r.report is None for r in s.runs) for s in light)
+    assert [s.source for s in light] == [s.source for s in scenes]

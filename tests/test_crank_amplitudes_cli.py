@@ -11,11 +11,9 @@ import tomli_w
 from typer.testing import CliRunner
 
 from foundation_calc.cli.app import app
+from tests.conftest import mechanism_configs
 
-CONFIGS = sorted(
-    p for p in (Path(__file__).parent.parent / "configs").glob("*.toml")
-    if tomllib.loads(p.read_text("utf-8")).get("kind") == "crank_foundation"
-)
+CONFIGS = mechanism_configs()  # a machine given by its loads only: tests/test_crank_loads.py
 
 
 BASE = Path(__file__).parent.parent / "configs" / "frame_saw_extra_resonance.toml"

@@ -133,7 +133,7 @@ def test_every_commented_out_key_is_valid_toml(kind):
         assert "..." not in line
         tomllib.loads(line)  # raises on invalid TOML
     uncommented = "\n".join(
-        line[2:] if re.match(r"# (\w+ = |\[\[)", line) and "omega" not in line and "frequency_hz" not in line else line
+        line[2:] if re.match(r"# (\w+ = |\[)", line) and "omega" not in line and "frequency_hz" not in line else line
         for line in scene_template(kind).splitlines()
     )
     tomllib.loads(uncommented)

@@ -22,6 +22,7 @@ HOSTILE = [
     "%s %d",
     "[b]bold[/b] [de]",
     "Compressor [k-101]",
+    "Pump :fire: line",
     "\x1b[31mred\x1b[0m",
     "\u202eright-to-left\u202c",
 ]

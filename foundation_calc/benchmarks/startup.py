@@ -1,6 +1,8 @@
 """Start-up cost of ``fcalc`` measured side by side with the cost of its frameworks.
 
-Three references are run interleaved with fcalc, many times each, and compared by the median:
+Three references are run interleaved with fcalc, many times each (after one untimed round that
+fills the bytecode cache, as an installed package has it), and compared by the median of the
+wall time and of the CPU time (user + system, less disturbed by other work on the machine):
 
 - ``import typer, pydantic, rich`` — the import floor (typer and pydantic import lazily, so this
   line loads little of either);
@@ -13,10 +15,11 @@ Three references are run interleaved with fcalc, many times each, and compared b
 from __future__ import annotations
 
 import statistics
-import subprocess
 import sys
-import time
+import tempfile
 from dataclasses import dataclass
+
+from foundation_calc.benchmarks.processes import bytecode_env, run_process
 
 FRAMEWORK_FLOOR = """
 import sys
@@ -58,13 +61,16 @@ app()
 
 @dataclass(frozen=True)
 class StartupRow:
-    """Median wall time [s] of one command line and its ratio to the import floor."""
+    """Median wall time [s] of one command line and its ratios to the import floor and to the
+    framework floor; the same for the CPU time [s]."""
 
     label: str
     command: tuple[str, ...]
     seconds: float
     ratio_to_import_floor: float
     ratio_to_framework_floor: float
+    cpu_seconds: float
+    cpu_ratio_to_framework_floor: float
 
 
 def _commands(scene: str) -> dict[str, tuple[str, ...]]:
@@ -81,15 +87,19 @@ def _commands(scene: str) -> dict[str, tuple[str, ...]]:
 def startup_times(scene: str, runs: int = 20) -> list[StartupRow]:
     """Run every command ``runs`` times, interleaved, and return the medians and ratios."""
     commands = _commands(scene)
-    samples: dict[str, list[float]] = {label: [] for label in commands}
-    for _ in range(runs):
-        for label, cmd in commands.items():
-            t0 = time.perf_counter()
-            subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-            samples[label].append(time.perf_counter() - t0)
-    medians = {label: statistics.median(ts) for label, ts in samples.items()}
-    floor = medians["import typer, pydantic, rich"]
-    framework = medians["typer + TOML + pydantic model + rich table"]
+    samples: dict[str, list] = {label: [] for label in commands}
+    with tempfile.TemporaryDirectory(prefix="fcalc-bytecode-") as cache:
+        env = bytecode_env(cache)
+        for round_ in range(runs + 1):
+            for label, cmd in commands.items():
+                run = run_process(cmd, env)
+                if round_:
+                    samples[label].append(run)
+    wall = {label: statistics.median(r.seconds for r in rs) for label, rs in samples.items()}
+    cpu = {label: statistics.median(r.cpu_seconds for r in rs) for label, rs in samples.items()}
+    floor = wall["import typer, pydantic, rich"]
+    framework = "typer + TOML + pydantic model + rich table"
     return [
-        StartupRow(label, commands[label], t, t / floor, t / framework) for label, t in medians.items()
+        StartupRow(label, commands[label], t, t / floor, t / wall[framework], cpu[label], cpu[label] / cpu[framework])
+        for label, t in wall.items()
     ]

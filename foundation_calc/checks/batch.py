@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -62,6 +62,11 @@ class SceneRun:
 
     def exit_code(self, strict: bool) -> ExitCode:
         return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
+
+    def light(self) -> "SceneRun":
+        """This run without the scene model and the checks' reports: what a summary table, the
+        exit code and JUnit read, small enough to keep for ten thousand scenes."""
+        return replace(self, scene=None, runs=tuple(replace(run, report=None) for run in self.runs))
 
 
 def scene_files(paths: Iterable[str | Path]) -> dict[Path, bool]:
@@ -125,22 +130,46 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
 
 
 def run_scenes(paths: Iterable[str | Path], jobs: int = 1) -> list[SceneRun]:
-    """:func:`run_scene` on every file of :func:`scene_files`, in their order; files found in
-    folders that are no scenes are skipped.
+    """:func:`run_scene` on every file of :func:`scene_files`, in their order (:func:`iter_scenes`)."""
+    return list(iter_scenes(paths, jobs))
 
-    With ``jobs`` > 1 the scenes are spread over that many worker processes; the result is the
-    same list as the serial run's (each scene is checked on its own, and errors stay per scene).
+
+def _unchanged(scene: SceneRun) -> SceneRun:
+    return scene
+
+
+def _run_and_finish(path: Path, searched: bool, finish: Callable[[SceneRun], Any]) -> Any:
+    return finish(run_scene(path, searched))
+
+
+def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[SceneRun], Any] = _unchanged) -> Iterator[Any]:
+    """``finish(run_scene(file))`` for every file of :func:`scene_files`, yielded in their order as
+    they are done; files found in folders that are no scenes are skipped.
+
+    With ``jobs`` > 1 the scenes after the first are spread over that many worker processes
+    (fork); the results are the same, in the same order, as the serial run's (each scene is
+    checked on its own, and errors stay per scene). ``finish`` runs in the worker: it turns a scene's run into what the
+    caller keeps (e.g. :meth:`SceneRun.light` and the scene's JSON text), so that a batch of many
+    scenes neither holds nor ships whole reports; it must be picklable (a module-level function or
+    a ``functools.partial`` of one).
     """
-    files = scene_files(paths)
-    jobs = min(jobs, len(files))
+    files = list(scene_files(paths).items())
+    jobs = min(jobs, len(files) - 1)
     if jobs <= 1:
-        return [run_scene(path, searched) for path, searched in files.items()]
+        for path, searched in files:
+            yield finish(run_scene(path, searched))
+        return
+    import itertools
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    chunk = max(1, len(files) // (4 * jobs))
+    # the first scene is checked here: what its kind imports is then loaded once, before the fork
+    yield finish(run_scene(*files[0]))
+    rest = files[1:]
+    chunk = max(1, min(16, len(rest) // (4 * jobs)))
     with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-        return list(pool.map(run_scene, files.keys(), files.values(), chunksize=chunk))
+        paths_, searched_ = zip(*rest)
+        yield from pool.map(_run_and_finish, paths_, searched_, itertools.repeat(finish), chunksize=chunk)
 
 
 def exit_code(scenes: Iterable[SceneRun], strict: bool = False) -> ExitCode:

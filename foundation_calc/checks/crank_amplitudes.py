@@ -22,21 +22,27 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone
+from foundation_calc.checks.limits import QUANTITIES, exceeds, limit_key, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
+from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, load_conditions, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import (
     DIRECTIONS,
     DOFS,
     PeriodicMotion,
     Peaks,
+    Rms,
     motion_peaks,
     point_peaks,
+    point_rms,
     relative_error,
+    superpose,
 )
+from foundation_calc.units import rpm_from_omega
 
 #: Harmonics whose coefficients are reported and compared (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("y", 3), ("y", 4), ("x", 1), ("x", 2), ("x", 3), ("theta", 1), ("theta", 2), ("theta", 3))
@@ -45,7 +51,11 @@ TITLES = {
     "first_approximation": "paper's first approximation, corrected (Eqs. 4.11-4.14)",
     "averaged_operator": "closed form: averaged operator, exact forcing",
     "exact": "exact periodic solution (harmonic balance)",
+    "loads": "vendor loads: linear steady state of the block (K - n²ω²M + i nωC) Z = F",
 }
+
+#: Appended to the title of a mechanism's approximation when the scene's [[loads]] are added to it.
+WITH_LOADS = " + vendor loads (linear)"
 
 
 @dataclass(frozen=True)
@@ -53,7 +63,8 @@ class Approximation:
     """One approximation of the steady state.
 
     ``motion`` is None when ``resonant``; ``peaks`` has x, y, θ on its arrays' last axis;
-    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks.
+    ``points`` maps "C" and each scene point to its (horizontal, vertical) peaks, ``rms`` to its
+    (horizontal, vertical) RMS values.
     """
 
     key: str
@@ -63,10 +74,12 @@ class Approximation:
     nearest: str
     peaks: Peaks | None
     points: dict
+    rms: dict
+    with_loads: bool = False
 
     @property
     def title(self) -> str:
-        return TITLES[self.key]
+        return TITLES[self.key] + (WITH_LOADS if self.with_loads and self.key != "loads" else "")
 
     def harmonic(self, dof: str, n: int) -> complex:
         """Complex coefficient cos - i sin of harmonic n of ``dof`` (0 when absent)."""
@@ -81,7 +94,7 @@ class Approximation:
 
 @dataclass(frozen=True)
 class LimitRow:
-    """A peak of one point, direction and quantity against its limit (SI units)."""
+    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
 
     point: str
     direction: str
@@ -94,6 +107,44 @@ class LimitRow:
     def ratio(self) -> float:
         return self.value / self.limit
 
+    @property
+    def source(self) -> str:
+        return f"scene [limits] {limit_key(self.quantity)}"
+
+
+@dataclass(frozen=True)
+class CodeRow:
+    """The zone of one point's RMS velocity in a code's table.
+
+    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s]; the larger
+    one (``governing``) gives the zone. ``limit``: the boundary over which the design fails [m/s].
+    """
+
+    point: str
+    horizontal: float
+    vertical: float
+    governing: str
+    zone: str
+    table: ZoneTable
+    limit: float
+    outcome: Outcome
+
+    @property
+    def value(self) -> float:
+        return max(self.horizontal, self.vertical)
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    @property
+    def verdict_text(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid: zone C, 3.1 mm/s RMS > 2.8"`` (mm/s, the code's unit)."""
+        i = ZONES.index(self.zone)
+        mm_s = f"{self.value * 1e3:.3g} mm/s RMS"
+        bound = f"> {self.table.boundaries_mm_s[i - 1]:g}" if i else f"<= {self.table.boundaries_mm_s[0]:g}"
+        return f"{self.table.title}: zone {self.zone}, {mm_s} {bound} ({self.governing})"
+
 
 @dataclass(frozen=True)
 class ExactInfo:
@@ -104,6 +155,15 @@ class ExactInfo:
     harmonic_change: float
     residual: float
     seconds: float
+
+
+@dataclass(frozen=True)
+class VendorLoads:
+    """A scene's ``[[loads]]`` with the block they act on and the speed ω [rad/s]."""
+
+    block: RigidBlock
+    loads: HarmonicLoads
+    omega: float
 
 
 @dataclass(frozen=True)
@@ -121,13 +181,23 @@ class Damping:
 
 @dataclass(frozen=True)
 class AmplitudeReport:
-    design: CrankDesign
+    """``design`` is None for a machine given by its loads only (``vendor`` then holds them)."""
+
+    design: CrankDesign | None
     approximations: dict
     checked: str
     rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
-    damping: Damping | None
+    damping: Damping | None = None
+    code_rows: tuple[CodeRow, ...] = ()
+    code_warnings: tuple[str, ...] = ()
+    vendor: VendorLoads | None = None
+
+    @property
+    def omega(self) -> float:
+        """The speed [rad/s]."""
+        return self.design.omega if self.design is not None else self.vendor.omega
 
     @property
     def damped(self) -> bool:
@@ -142,42 +212,70 @@ class AmplitudeReport:
     def outcome(self) -> Outcome:
         if self.resonant:
             return Outcome.FAIL
-        return worst(row.outcome for row in self.rows)
+        noted = (Outcome.WARN,) if self.code_warnings else ()
+        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted))
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
 POINT_CHUNK = 1024
 
 
-def _located(motion, points) -> dict[str, Peaks]:
-    """Peaks of C and of every point, all points of a chunk in one array operation."""
+def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
+    """Peaks and RMS values of C and of every point, all points of a chunk in one array operation."""
     names = ["C", *(p.name for p in points)]
     horizontal = np.array([0.0, *(p.horizontal for p in points)])
     height = np.array([0.0, *(p.height for p in points)])
-    located = {}
+    located, rms = {}, {}
     for start in range(0, len(names), POINT_CHUNK):
         chunk = slice(start, start + POINT_CHUNK)
         pk = point_peaks(motion, horizontal[chunk], height[chunk])
+        rm = point_rms(motion, horizontal[chunk], height[chunk])
         for i, name in enumerate(names[chunk]):
             located[name] = Peaks(pk.displacement[i], pk.velocity[i], pk.acceleration[i])
-    return located
+            rms[name] = Rms(rm.displacement[i], rm.velocity[i], rm.acceleration[i])
+    return located, rms
 
 
-def _approximation(key, motion, resonant, margin, nearest, points) -> Approximation:
+@dataclass(frozen=True)
+class _LoadsPart:
+    """The loads' steady state, added to each approximation of a mechanism (linear superposition)."""
+
+    motion: PeriodicMotion
+    resonant: bool
+    margin: float
+    nearest: str
+
+
+def _loads_part(vendor: VendorLoads) -> _LoadsPart:
+    res = loads_response(vendor.block, vendor.omega, vendor.loads)
+    n, mode, _ = load_conditions(vendor.loads)[int(res.nearest)]
+    label = f"{n if n > 1 else ''}ω = {mode} (loads)"
+    return _LoadsPart(res.motion, bool(res.resonant), float(res.margin), label)
+
+
+def _approximation(key, motion, resonant, margin, nearest, points, loads: _LoadsPart | None = None) -> Approximation:
+    if loads is not None:
+        if loads.margin < margin:
+            margin, nearest = loads.margin, loads.nearest
+        resonant = resonant or loads.resonant
+        if not resonant:
+            motion = loads.motion if motion is None else superpose(motion, loads.motion)
+    with_loads = loads is not None
     if resonant:
-        return Approximation(key, None, True, margin, nearest, None, {})
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), _located(motion, points))
+        return Approximation(key, None, True, margin, nearest, None, {}, {}, with_loads)
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points), with_loads)
 
 
-def _first(design: CrankDesign, points) -> Approximation:
+def _first(design: CrankDesign, points, loads=None) -> Approximation:
     fa = design_first_approximation(design)
     label = min(fa.margins, key=lambda k: fa.margins[k])
     return _approximation(
-        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points
+        "first_approximation", fa.motion(design.omega), bool(fa.resonant), float(fa.margins[label]), label, points,
+        loads,
     )
 
 
-def _averaged(design: CrankDesign, points) -> tuple[Approximation, Damping | None]:
+def _averaged(design: CrankDesign, points, loads=None) -> tuple[Approximation, Damping | None]:
     res = averaged_response(design)
     n, mode = res.nearest
     w = float(res.natural[mode])
@@ -188,7 +286,7 @@ def _averaged(design: CrankDesign, points) -> tuple[Approximation, Damping | Non
     dashpots = {"C_x": float(design.C_x), "C_z": float(design.C_z), "C_phi": float(design.C_phi)}
     if any(value > 0.0 for value in dashpots.values()):
         damping = Damping(dashpots, tuple(map(float, res.natural)), tuple(map(float, res.damping_ratios)))
-    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points), damping
+    return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads), damping
 
 
 def _errors(approx: Approximation, exact: Approximation) -> dict | None:
@@ -220,19 +318,58 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     if approx.resonant:
         return ()
     for quantity, limit in limited_quantities(limits).items():
-        for name, pk in approx.points.items():
+        statistic, field = (approx.rms, quantity[:-4]) if quantity.endswith("_rms") else (approx.points, quantity)
+        for name, values in statistic.items():
             for i, direction in enumerate(DIRECTIONS):
-                value = float(getattr(pk, quantity)[i])
+                value = float(getattr(values, field)[i])
                 outcome = Outcome.FAIL if exceeds(value, limit) else Outcome.PASS
                 rows.append(LimitRow(name, direction, quantity, value, limit, outcome))
     return tuple(rows)
 
 
-def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -> AmplitudeReport:
+def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
+    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
+
+    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
+    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
+    """
+    i = ZONES.index(zone_name)
+    if acceptable is None:
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
+    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+
+
+def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
+    """Zone of every point's RMS velocity in the scene's code table, and why the code may not apply."""
+    code = getattr(limits, "code", None)
+    if code is None:
+        return (), ()
+    table = TABLES[code, limits.machine_group, limits.foundation]
+    power = None if limits.machine_power is None else limits.machine_power / 1e3
+    notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
+    if approx.resonant:
+        return (), notes
+    highest = limits.acceptable_zone or "B"  # zone B warns by default: C is the first that fails
+    limit = table.boundaries[ZONES.index(highest)]
+    rows = []
+    for name, values in approx.rms.items():
+        horizontal, vertical = (float(v) for v in values.velocity)
+        governing = "horizontal" if horizontal >= vertical else "vertical"
+        z = zone(max(horizontal, vertical), table)
+        rows.append(CodeRow(name, horizontal, vertical, governing, z, table, limit, zone_outcome(z, limits.acceptable_zone)))
+    return tuple(rows), notes
+
+
+def check_amplitudes(
+    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None
+) -> AmplitudeReport:
     """Amplitudes of ``design`` by every approximation asked for, and the limit rows.
 
-    ``limits``: an object with ``amplitude``, ``velocity``, ``acceleration`` [m, m/s, m/s²] or
-    None; ``points``: objects with ``name``, ``horizontal``, ``height`` [m].
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²], a code) or None;
+    ``points``: objects with ``name``, ``horizontal``, ``height`` [m]. ``vendor``: the scene's
+    ``[[loads]]``, whose linear steady state is added to every approximation of the mechanism,
+    or is the only one (``"loads"``) when ``design`` is None.
 
     Raises
     ------
@@ -241,11 +378,19 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
     ConvergenceError
         ``exact`` and the harmonic balance fails (away from the averaged operator's resonances).
     """
-    averaged, damping = _averaged(design, points)
-    approximations = {"first_approximation": _first(design, points), "averaged_operator": averaged}
-    checked = "averaged_operator"
+    loads = None if vendor is None else _loads_part(vendor)
     info = errors = None
-    if exact and not approximations["averaged_operator"].resonant:
+    damping = None
+    if design is None:
+        approximations = {"loads": _approximation("loads", None, False, loads.margin, loads.nearest, points, loads)}
+        checked = "loads"
+        omega = vendor.omega
+    else:
+        omega = design.omega
+        averaged, damping = _averaged(design, points, loads)
+        approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
+        checked = "averaged_operator"
+    if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
 
         from foundation_calc.solvers.crank.exact import exact_periodic_solution
@@ -255,12 +400,13 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         seconds = time.perf_counter() - start
         info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds)
         averaged = approximations["averaged_operator"]
-        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points)
+        approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points, loads)
         checked = "exact"
         errors = {
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator")
         }
+    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega)
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -269,7 +415,34 @@ def check_amplitudes(design: CrankDesign, limits, points, exact: bool = False) -
         exact_info=info,
         errors=errors,
         damping=damping,
+        code_rows=code_rows,
+        code_warnings=code_warnings,
+        vendor=vendor,
     )
 
 
-__all__ = ["RESONANT_MARGIN", "AmplitudeReport", "Approximation", "Damping", "LimitRow", "check_amplitudes"]
+def scene_vendor_loads(scene) -> VendorLoads | None:
+    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads."""
+    loads = scene.harmonic_loads()
+    return None if loads is None else VendorLoads(scene.block(), loads, scene.speed.omega_rad_s)
+
+
+def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    design = None if scene.mechanism is None else scene.design()
+    return check_amplitudes(design, scene.limits, scene.points, exact=exact, vendor=scene_vendor_loads(scene))
+
+
+__all__ = [
+    "RESONANT_MARGIN",
+    "AmplitudeReport",
+    "Approximation",
+    "CodeRow",
+    "Damping",
+    "LimitRow",
+    "VendorLoads",
+    "check_amplitudes",
+    "check_scene_amplitudes",
+    "scene_vendor_loads",
+    "zone_outcome",
+]

@@ -42,13 +42,18 @@ class ResonanceRow:
 
 @dataclass(frozen=True)
 class ResonanceReport:
-    """Natural frequencies of a design and its resonance rows."""
+    """Natural frequencies of a design and its resonance rows.
 
-    design: CrankDesign
+    ``design`` is None for a machine given by its loads only; ``averaged`` is then the same as
+    ``zero_order`` (there is no mechanism whose inertia could be averaged).
+    """
+
+    design: CrankDesign | None
     zero_order: NaturalFrequencies
     averaged: NaturalFrequencies
     stability_margin: float
     rows: tuple[ResonanceRow, ...]
+    omega: float
 
     @property
     def outcome(self) -> Outcome:
@@ -82,21 +87,68 @@ def paper_margin(design: CrankDesign):
     return smallest
 
 
-def check_resonances(design: CrankDesign, detuning: float) -> ResonanceReport:
-    """Natural frequencies of ``design`` and the margin of its speed from every resonance."""
+def _row(omega, zero, averaged, cond: ResonanceCondition, detuning: float) -> ResonanceRow:
+    w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
+    w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
+    margin = condition_margin(omega, zero, averaged, cond)
+    outcome = resonance_outcome(margin, detuning, driven=cond.source == "paper" or cond.driven)
+    return ResonanceRow(cond, w0, w1, margin, detuning, outcome)
+
+
+def check_resonances(design: CrankDesign, detuning: float, loads=None) -> ResonanceReport:
+    """Natural frequencies of ``design`` and the margin of its speed from every resonance; with
+    ``loads`` (:class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`) also from n ω of
+    every order n of the loads (:func:`load_resonance_conditions`)."""
     d = design
     zero, averaged = design_frequencies(design)
-    rows = []
-    for cond in CONDITIONS:
-        w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
-        w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
-        margin = condition_margin(d.omega, zero, averaged, cond)
-        outcome = resonance_outcome(margin, detuning, driven=cond.source == "paper")
-        rows.append(ResonanceRow(cond, w0, w1, margin, detuning, outcome))
+    conditions = CONDITIONS + (() if loads is None else load_resonance_conditions(loads))
     return ResonanceReport(
         design=design,
         zero_order=zero,
         averaged=averaged,
         stability_margin=rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h),
-        rows=tuple(rows),
+        rows=tuple(_row(d.omega, zero, averaged, cond, detuning) for cond in conditions),
+        omega=d.omega,
     )
+
+
+#: What drives a mode, for the rows of the loads.
+_LOAD_EXCITATION = {"k0": "vertical force", "p1": "horizontal force or moment about C", "p2": "horizontal force or moment about C"}
+
+
+def load_resonance_conditions(loads) -> tuple[ResonanceCondition, ...]:
+    """n ω = k0, p1, p2 for every order n of the loads; driven where a load of order n has a
+    component that drives the mode (:func:`~foundation_calc.solvers.crank.loads.load_conditions`)."""
+    from foundation_calc.solvers.crank.loads import load_conditions
+
+    return tuple(
+        ResonanceCondition(
+            f"{n if n > 1 else ''}ω = {mode}", n, mode, "loads",
+            f"loads of order {n}: {_LOAD_EXCITATION[mode]}" + ("" if driven else " (none given)"), driven,
+        )
+        for n, mode, driven in load_conditions(loads)
+    )
+
+
+def check_block_resonances(block, omega: float, loads, detuning: float) -> ResonanceReport:
+    """Resonances of a machine given by its loads only: n ω of every order n of ``loads``
+    against the natural frequencies of the block (``RigidBlock``) at the speed ``omega`` [rad/s]."""
+    from foundation_calc.solvers.crank.loads import block_frequencies
+
+    freqs = block_frequencies(block)
+    return ResonanceReport(
+        design=None,
+        zero_order=freqs,
+        averaged=freqs,
+        stability_margin=rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h),
+        rows=tuple(_row(omega, freqs, freqs, cond, detuning) for cond in load_resonance_conditions(loads)),
+        omega=omega,
+    )
+
+
+def check_scene_resonances(scene) -> ResonanceReport:
+    """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    loads = scene.harmonic_loads()
+    if scene.mechanism is None:
+        return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning)
+    return check_resonances(scene.design(), scene.limits.detuning, loads)

@@ -10,18 +10,19 @@ has no periodic solution: it is reported as resonant, never as an infinite ampli
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies
+from foundation_calc.checks.crank_resonance import design_frequencies, load_resonance_conditions
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import resonance_masks
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
-from foundation_calc.solvers.crank.response import DOFS, point_series
-from foundation_calc.solvers.numerics.trig_series import derivative, peak
+from foundation_calc.solvers.crank.response import PeriodicMotion, point_series, superpose
+from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -58,7 +59,9 @@ class SweepReport:
     peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
     resonant : no periodic solution of the first approximation (margin < 1e-6)
     margin : smallest relative distance from a resonance condition [-]
-    nearest : index into :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` of that one
+    nearest : index into ``conditions`` of that one
+    conditions : the resonance conditions checked: the mechanism's
+        (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
     over_limit : a peak of C (x, y) or of a point exceeds its limit (displacement, velocity or
         acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
@@ -86,6 +89,7 @@ class SweepReport:
     critical: tuple[CriticalSpeed, ...]
     limits: dict
     detuning: float
+    conditions: tuple = CONDITIONS
 
     @property
     def amplitude_limit(self) -> float | None:
@@ -99,7 +103,7 @@ def _peaks(cos, sin):
 
 
 def _over(motion, omega, points, limits: dict, displacements) -> dict:
-    """Limited quantity -> bool array: a peak of C (x, y) or of a point exceeds the limit.
+    """Limited quantity -> bool array: a peak or RMS value of C (x, y) or of a point exceeds the limit.
 
     ``displacements``: the displacement peaks already found, (n, ≥ 2) arrays of C (x, y first)
     and of each point; they are reused, not searched again.
@@ -107,25 +111,49 @@ def _over(motion, omega, points, limits: dict, displacements) -> dict:
     series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
     series += [point_series(motion, u, H) for _, u, H in points]
     over = {}
+    w = omega[:, None]
     for order, quantity in enumerate(QUANTITIES):
-        if quantity not in limits:
-            continue
-        if order == 0:
-            largest = np.max([peaks[:, :2].max(axis=1) for peaks in displacements], axis=0)
-        else:
-            w = omega[:, None]
-            largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
-        over[quantity] = exceeds(largest, limits[quantity])
+        if quantity in limits:
+            if order == 0:
+                largest = np.max([peaks[:, :2].max(axis=1) for peaks in displacements], axis=0)
+            else:
+                largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
+            over[quantity] = exceeds(largest, limits[quantity])
+        if f"{quantity}_rms" in limits:
+            largest = np.max([rms(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
+            over[f"{quantity}_rms"] = exceeds(largest, limits[f"{quantity}_rms"])
     return over
 
 
-def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, points=()) -> SweepReport:
+def _complex(coefficient):
+    """cos - i sin of a (cos, sin) pair of arrays."""
+    c, s = coefficient
+    return c - 1j * s
+
+
+def _varied_block(block, variable: str, values):
+    """The loads' block at each point of the sweep: soil springs × factor, dashpots × sqrt(factor)
+    (C = 2 ξ sqrt(K m) at fixed damping ratios); unchanged for a speed sweep."""
+    if variable != "soil_factor":
+        return block
+    f = np.asarray(values, dtype=float)
+    r = np.sqrt(f)
+    return replace(block, K_x=block.K_x * f, K_z=block.K_z * f, K_phi=block.K_phi * f,
+                   C_x=block.C_x * r, C_z=block.C_z * r, C_phi=block.C_phi * r)
+
+
+def sweep(
+    design: CrankDesign | None, variable: str, values, limits, detuning: float, points=(), vendor=None
+) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
 
-    ``limits``: the scene's ``[limits]`` (amplitude, velocity, acceleration [m, m/s, m/s²] or
-    None), checked as ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height)
-    [m] of body points relative to C, as the scene's ``[[points]]``; their peaks come from the
-    same series (rigid-body motion, exact in θ).
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²] or None), checked as
+    ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height) [m] of body points
+    relative to C, as the scene's ``[[points]]``; their peaks come from the same series
+    (rigid-body motion, exact in θ). ``vendor``: the scene's ``[[loads]]``
+    (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
+    is added to the mechanism's, or is the whole motion when ``design`` is None; their
+    conditions n ω = k0, p1, p2 join the mechanism's.
 
     Raises
     ------
@@ -135,16 +163,38 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
     if variable not in VARIABLES:
         raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
     values = np.asarray(values, dtype=float)
-    batch = varied(design, **{variable: values})
-    motion, resonant = first_approximation_motion(batch)
+    conditions, margins, drivens, criticals = [], [], [], []
+    motion = resonant = None
+    if design is not None:
+        batch = varied(design, **{variable: values})
+        motion, resonant = first_approximation_motion(batch)
+        resonant = np.asarray(resonant, dtype=bool)
+        zero, averaged = design_frequencies(batch)
+        omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
+        conditions += CONDITIONS
+        margins += [np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS]
+        drivens += [c.source == "paper" for c in CONDITIONS]
+        criticals += [(c, zero, averaged) for c in CONDITIONS]
+    if vendor is not None:
+        block = _varied_block(vendor.block, variable, values)
+        omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
+        res = loads_response(block, omega, vendor.loads)
+        own = load_resonance_conditions(vendor.loads)
+        freqs = block_frequencies(block)
+        conditions += own
+        margins += [np.broadcast_to(condition_margin(omega, freqs, freqs, c), values.shape) for c in own]
+        drivens += [c.driven for c in own]
+        criticals += [(c, freqs, freqs) for c in own]
+        loads_motion = PeriodicMotion(omega, np.nan_to_num(res.motion.cos), np.nan_to_num(res.motion.sin))
+        motion = loads_motion if motion is None else superpose(motion, loads_motion)
+        resonant = res.resonant if resonant is None else resonant | res.resonant
+    dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
     located = {name: _peaks(*point_series(motion, u, H)) for name, u, H in points}
-    zero, averaged = design_frequencies(batch)
-    omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
-    margins = np.stack([np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS])
+    margins = np.stack(margins)
     nearest = np.argmin(margins, axis=0)
     margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
-    driven = np.array([c.source == "paper" for c in CONDITIONS])[:, None]
+    driven = np.array(drivens)[:, None]
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
@@ -158,7 +208,7 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
         lo, hi = values.min(), values.max()
         critical = tuple(
             CriticalSpeed(c.label, c.source, float(w0), float(w1))
-            for c in CONDITIONS
+            for c, zero, averaged in criticals
             for w0, w1 in [(critical_speed(getattr(zero, c.mode), c.harmonic), critical_speed(getattr(averaged, c.mode), c.harmonic))]
             if lo <= max(w0, w1) and min(w0, w1) <= hi
         )
@@ -174,14 +224,12 @@ def sweep(design: CrankDesign, variable: str, values, limits, detuning: float, p
         over_limit=over,
         over_quantities=over_quantities,
         status=status,
-        harmonics={
-            f"{dof}{n}": motion.cos[..., DOFS.index(dof), n] - 1j * motion.sin[..., DOFS.index(dof), n]
-            for dof, n in HARMONICS
-        },
-        damped=bool(np.any(np.array([design.C_x, design.C_z, design.C_phi]) > 0.0)),
+        harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
+        damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
         critical=critical,
         limits=limited,
         detuning=detuning,
+        conditions=tuple(conditions),
     )
 
 

@@ -1,24 +1,48 @@
-"""The limit check shared by every command: which quantities a scene limits, and when a peak
+"""The limit check shared by every command: which quantities a scene limits, and when a value
 exceeds its limit. ``fcalc amplitudes``, ``fcalc check`` and ``fcalc sweep`` all call these, so
-a scene that fails on velocity in one command fails on it in every other."""
+a scene that fails on velocity in one command fails on it in every other.
+
+Two statistics of the periodic motion are limited: the **peak** over one revolution (keys
+``amplitude``, ``velocity``, ``acceleration``) and the **RMS** over one revolution of the
+vibration, the mean (static) part left out (keys ``amplitude_rms``, ``velocity_rms``,
+``acceleration_rms``), sqrt(Σ_{n≥1} |Q_n|²/2) of the harmonics Q_n.
+"""
 
 from __future__ import annotations
 
-#: Quantities a limit may bound, with the scene's ``[limits]`` key of each (peak values) [m, m/s, m/s²].
+#: Peak quantities a limit may bound, with the scene's ``[limits]`` key of each [m, m/s, m/s²].
 QUANTITIES = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
+
+#: RMS quantities a limit may bound, with the scene's ``[limits]`` key of each [m, m/s, m/s²].
+RMS_QUANTITIES = {f"{quantity}_rms": f"{key}_rms" for quantity, key in QUANTITIES.items()}
 
 
 def limited_quantities(limits) -> dict[str, float]:
-    """``quantity -> limit`` for every quantity the scene's ``[limits]`` bounds (SI units).
+    """``quantity -> limit`` for every peak or RMS quantity the scene's ``[limits]`` bounds (SI).
 
     >>> from types import SimpleNamespace
-    >>> limited_quantities(SimpleNamespace(amplitude=2e-4, velocity=None, acceleration=0.3))
-    {'displacement': 0.0002, 'acceleration': 0.3}
+    >>> limited_quantities(SimpleNamespace(amplitude=2e-4, velocity=None, acceleration=0.3, velocity_rms=2e-3))
+    {'displacement': 0.0002, 'acceleration': 0.3, 'velocity_rms': 0.002}
     """
-    found = {quantity: getattr(limits, key, None) for quantity, key in QUANTITIES.items()}
+    keys = QUANTITIES | RMS_QUANTITIES
+    found = {quantity: getattr(limits, key, None) for quantity, key in keys.items()}
     return {quantity: limit for quantity, limit in found.items() if limit is not None}
 
 
-def exceeds(peak, limit):
-    """Whether a peak exceeds its limit (arrays of peaks welcome): equal to the limit passes."""
-    return peak > limit
+def display_quantity(quantity: str) -> str:
+    """The display quantity (``output.display_units``) of a limited quantity, peak or RMS.
+
+    >>> display_quantity("displacement_rms"), display_quantity("velocity")
+    ('amplitude', 'velocity')
+    """
+    return QUANTITIES[quantity.removesuffix("_rms")]
+
+
+def limit_key(quantity: str) -> str:
+    """The scene's ``[limits]`` key of a limited quantity (``"velocity_rms"`` -> ``"velocity_rms"``)."""
+    return (QUANTITIES | RMS_QUANTITIES)[quantity]
+
+
+def exceeds(value, limit):
+    """Whether a value exceeds its limit (arrays welcome): equal to the limit passes."""
+    return value > limit

@@ -168,8 +168,8 @@ def _tolerances(rows, limit: float) -> Finding:
 
 def check_platform(design: PlatformDesign, model: PlatformModel, limits, inertia_given: bool) -> PlatformReport:
     """Verify ``design`` on the 6-DOF model and compare with ``limits`` (a scene's [limits])."""
-    modes = natural_frequencies(*build(design, model))
     v = verify(design, model)
+    modes = natural_frequencies(*build(design, model), v.state.system)
     rows = tuple(sensitivity(design, model, v, modes.frequencies))
     findings = (
         _height(design, limits.exciter_height_ratio),

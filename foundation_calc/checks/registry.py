@@ -51,11 +51,11 @@ class Finding:
 
 def crank_resonance(scene) -> Finding:
     """Margin of the crank speed from every resonance (``fcalc resonance``)."""
-    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
 
-    report = check_resonances(scene.design(), scene.limits.detuning)
+    report = check_scene_resonances(scene)
     near = report.nearest
-    speed = ("speed", report.design.omega)
+    speed = ("speed", report.omega)
     values = {"speed": speed}
     if report.outcome is Outcome.PASS:
         values["critical"] = critical = ("speed", near.critical_zero_order)
@@ -71,34 +71,43 @@ def crank_resonance(scene) -> Finding:
 
 
 def crank_amplitudes(scene) -> Finding:
-    """Steady-state peaks of C and the scene's points against [limits] (``fcalc amplitudes``)."""
-    from foundation_calc.checks.crank_amplitudes import check_amplitudes
-    from foundation_calc.checks.limits import QUANTITIES
+    """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
+    zones of a vibration code (``fcalc amplitudes``)."""
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.limits import display_quantity
 
-    report = check_amplitudes(scene.design(), scene.limits, scene.points)
+    report = check_scene_amplitudes(scene)
     approx = report.approximations[report.checked]
-    speed = ("speed", report.design.omega)
+    speed = ("speed", report.omega)
     values = {"speed": speed}
     if report.resonant:
-        reason = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state")
-    elif not report.rows:
+        reason = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state",)
+    elif not report.rows and not report.code_rows:
         reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
-        top = max(report.rows, key=lambda row: row.ratio)
-        quantity = QUANTITIES[top.quantity]  # the limit's key names its display quantity
-        values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
-        reason = (
-            f"largest peak {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
-            " of the limit ", values["limit"],
-        )
+        reason = ()
+        if report.rows:
+            top = max(report.rows, key=lambda row: row.ratio)
+            quantity = display_quantity(top.quantity)
+            values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
+            reason = (
+                f"largest {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
+                " of the limit ", values["limit"],
+            )
+        if report.code_rows:
+            worst_zone = max(report.code_rows, key=lambda row: row.ratio)
+            values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
+            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
         if report.damped:
             reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
+    if report.code_warnings:
+        reason += ("; " + "; ".join(report.code_warnings),)
     details = tuple(
-        f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g} <= {row.limit:.4g} [SI]"
-        if row.outcome is Outcome.PASS
-        else f"FAIL {row.point} {row.direction} {row.quantity}: {row.value:.4g} > {row.limit:.4g} [SI]"
+        f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
+        f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
-    )
+    ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
+    details += tuple(f"WARN {warning}" for warning in report.code_warnings)
     return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 

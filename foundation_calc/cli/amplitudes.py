@@ -25,10 +25,12 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
     Always shows the paper's corrected first approximation and the closed form with the averaged
     operator; --exact adds the exact periodic solution, checks the limits with it and reports the
     closed forms' relative errors. With soil.damping every method gives finite amplitudes and
-    phases at and through every resonance. Fails (exit 1) when a peak exceeds [limits] amplitude,
-    velocity or acceleration, or when an undamped scene's speed is resonant.
+    phases at and through every resonance. A machine given by its [[loads]] adds (or alone gives)
+    the block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits]
+    key, when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped
+    scene's speed is resonant.
     """
-    from foundation_calc.checks.crank_amplitudes import check_amplitudes
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.output import crank_amplitudes as report_out
     from foundation_calc.scenes import load_scene
@@ -36,7 +38,11 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
     shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
-    report = check_amplitudes(loaded.design(), loaded.limits, loaded.points, exact=exact)
+    if exact and loaded.mechanism is None:
+        from foundation_calc.output.console import stderr
+
+        stderr().print("note: --exact applies to a [mechanism]; the loads' steady state is already exact for the linear model")
+    report = check_scene_amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -1,46 +1,29 @@
-"""The ``fcalc`` application: one module per command, heavy imports inside the commands."""
+"""The ``fcalc`` application: one module per command, heavy imports inside the commands.
+
+``fcalc NAME ...`` imports the module of command NAME alone (:func:`main`); ``app`` (every
+command, for ``fcalc --help`` and the tests) is built on first use.
+"""
 
 from __future__ import annotations
+
+import importlib
+import sys
 
 import typer
 
 from foundation_calc import __version__
-from foundation_calc.cli.amplitudes import amplitudes
-from foundation_calc.cli.bench import bench
-from foundation_calc.cli.check import check
-from foundation_calc.cli.init import init
-from foundation_calc.cli.platform import platform
-from foundation_calc.cli.report import report
-from foundation_calc.cli.resonance import resonance
-from foundation_calc.cli.runup import runup
-from foundation_calc.cli.schema import schema
-from foundation_calc.cli.sweep import sweep
+
+#: The commands in the order of ``fcalc --help``: name -> module defining a function of that name.
+COMMANDS = {
+    name: f"foundation_calc.cli.{name}"
+    for name in ("resonance", "amplitudes", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup")
+}
 
 EXIT_CODES_HELP = (
     "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
     " 3 invalid scene (unreadable, bad TOML, failed validation, physically impossible);"
     " 4 internal error; 141 stdout closed by its reader (fcalc ... | head)."
 )
-
-app = typer.Typer(
-    name="fcalc",
-    help="Dynamics of machine foundations and vibrating platforms.\n\n" + EXIT_CODES_HELP,
-    no_args_is_help=True,
-    add_completion=False,
-    pretty_exceptions_enable=False,
-    epilog=EXIT_CODES_HELP,
-    rich_markup_mode=None,  # help text is plain: units in brackets ([m], [[points]]) print as written
-)
-app.command(epilog=EXIT_CODES_HELP)(resonance)
-app.command(epilog=EXIT_CODES_HELP)(amplitudes)
-app.command(epilog=EXIT_CODES_HELP)(check)
-app.command(epilog=EXIT_CODES_HELP)(init)
-app.command(epilog=EXIT_CODES_HELP)(schema)
-app.command(epilog=EXIT_CODES_HELP)(platform)
-app.command(epilog=EXIT_CODES_HELP)(bench)
-app.command(epilog=EXIT_CODES_HELP)(sweep)
-app.command(epilog=EXIT_CODES_HELP)(report)
-app.command(epilog=EXIT_CODES_HELP)(runup)
 
 
 def _version(value: bool) -> None:
@@ -49,13 +32,37 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
-@app.callback()
 def _root(
     version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Show the version."),
 ) -> None:
     """Dynamics of machine foundations and vibrating platforms."""
 
 
+def build_app(names=tuple(COMMANDS)) -> typer.Typer:
+    """The ``fcalc`` application with the commands ``names`` (all by default)."""
+    application = typer.Typer(
+        name="fcalc",
+        help="Dynamics of machine foundations and vibrating platforms.\n\n" + EXIT_CODES_HELP,
+        no_args_is_help=True,
+        add_completion=False,
+        pretty_exceptions_enable=False,
+        epilog=EXIT_CODES_HELP,
+        rich_markup_mode=None,  # help text is plain: units in brackets ([m], [[points]]) print as written
+    )
+    for name in names:
+        application.command(epilog=EXIT_CODES_HELP)(getattr(importlib.import_module(COMMANDS[name]), name))
+    application.callback()(_root)
+    return application
+
+
+def __getattr__(name: str):
+    if name == "app":
+        globals()["app"] = build_app()
+        return globals()["app"]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 def main() -> None:
-    """Console-script entry point."""
-    app()
+    """Console-script entry point: only the module of the command asked for is imported."""
+    command = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
+    build_app((command,) if command in COMMANDS else tuple(COMMANDS))()

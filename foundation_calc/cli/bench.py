@@ -17,6 +17,7 @@ class Section(str, Enum):
     runup = "runup"
     throughput = "throughput"
     startup = "startup"
+    batch = "batch"
 
 
 ScenesArg = Annotated[
@@ -39,6 +40,11 @@ MethodOpt = Annotated[
                  " first_approximation, averaged_operator, harmonic_balance_K4, shooting_solve_ivp)."
                  " The converged reference is always computed.", show_default=False),
 ]
+BatchOpt = Annotated[
+    Optional[int],
+    typer.Option("--batch-scenes", min=0, help="Scenes in the large fcalc check batch (0: leave it out)."
+                 " Default: 10000 (1000 with --quick).", show_default=False),
+]
 SkipOpt = Annotated[
     Optional[list[Section]], typer.Option("--skip", help="Leave out a section (repeatable).", show_default=False)
 ]
@@ -46,6 +52,8 @@ SkipOpt = Annotated[
 #: Seconds each method is timed for (at least 3 calls after a warm-up), normal and --quick.
 MIN_TIME = {False: 0.2, True: 0.02}
 STARTUP_RUNS = {False: 20, True: 5}
+#: fcalc check batch: platform scenes in the small runs, their rounds, scenes in the large batch.
+BATCH_MANY, BATCH_ROUNDS, BATCH_LARGE = 100, {False: 5, True: 2}, {False: 10_000, True: 1_000}
 
 
 def _default_scenes() -> list[Path]:
@@ -74,6 +82,7 @@ def bench(
     quick: QuickOpt = False,
     skip: SkipOpt = None,
     method: MethodOpt = None,
+    batch_scenes: BatchOpt = None,
 ) -> None:
     """Time every amplitude method on each crank scene and report its error against the exact solution.
 
@@ -87,7 +96,9 @@ def bench(
     and scipy's DOP853) on a platform and a crank rig. Then the
     designs per second of one vectorised call against a Python loop (closed-form amplitudes
     undamped and damped, and a damped speed sweep of a tenth as many speeds), and fcalc's start-up against
-    its frameworks' — all measured in this run, on the first crank scene.
+    its frameworks' — all measured in this run, on the first crank scene. Last, fcalc check on
+    copies of the first platform scene (1 and 100; one job and two: the marginal cost of a scene
+    and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -103,6 +114,8 @@ def bench(
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
     if not cranks:  # throughput and start-up are measured on the first crank scene
         skipped |= {Section.throughput, Section.startup}
+    if not platforms:  # the batch's marginal cost is that of a platform scene
+        skipped.add(Section.batch)
 
     from foundation_calc.benchmarks.accuracy import METHODS, benchmark_scene
     from foundation_calc.output import bench_report as report
@@ -113,7 +126,10 @@ def bench(
     steps += 3 * (Section.harmonic_balance not in skipped)
     steps += 3 * (Section.runup not in skipped)
     steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
-    results, platform_results, throughput, startup, truncation, runups = [], [], None, None, None, None
+    large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
+    steps += (1 + (large > 0)) * (Section.batch not in skipped)
+    results, platform_results, throughput, startup, truncation, batch = [], [], None, None, None, None
+    runups = None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -161,14 +177,18 @@ def bench(
 
             step("start-up: fcalc resonance against typer, pydantic, rich")
             startup = startup_times(str(cranks[0][0]), runs=STARTUP_RUNS[quick])
+        if Section.batch not in skipped:
+            from foundation_calc.benchmarks.batch import batch_benchmark
+
+            batch = batch_benchmark(platforms[0][0], paths, BATCH_MANY, large, BATCH_ROUNDS[quick], on_step=step)
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report.bench_document(results, platform_results, throughput, startup, truncation, runups))
+        print_json(report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups))
     else:
-        report.print_bench(results, platform_results, throughput, startup, truncation, runups)
+        report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
         if plot is not None:
             from foundation_calc.output.console import stderr
 

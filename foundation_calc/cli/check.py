@@ -35,12 +35,11 @@ VerboseOpt = Annotated[
 
 def _report_problems(scenes) -> None:
     """Every scene that could not be checked, on stderr, as the single-scene commands print it."""
-    from foundation_calc.cli.guard import report_error, report_internal, warn_implausible
+    from foundation_calc.cli.guard import print_warnings, report_error, report_internal
     from foundation_calc.errors import SceneError
 
     for scene in scenes:
-        if scene.scene is not None:
-            warn_implausible(scene.scene, scene.source)
+        print_warnings(scene.warnings, scene.source)
         for run in scene.runs:
             if run.verdict == "invalid":
                 report_error(SceneError(scene.source, list(run.problems)))
@@ -90,17 +89,23 @@ def check(
     crash inside one scene's check is reported as an internal error (exit 4). The exit code is
     the worst over all scenes: 4 internal error, 3 invalid scene, 1 a check fails, 0 all pass.
     """
-    from foundation_calc.checks.batch import exit_code, run_scenes
+    import functools
+    import os
+
+    from foundation_calc.checks.batch import SceneRun, exit_code, iter_scenes
     from foundation_calc.output import check_report
 
     shown = display_units(units)
-    import os
-
     if report_dir is not None:
         from foundation_calc.cli.report import check_output
 
         check_output(report_dir / "sheet.pdf", "'--report-dir'")
-    scenes = run_scenes(paths, jobs or os.cpu_count() or 1)
+    jobs = jobs or os.cpu_count() or 1
+    if json:  # the document is written while the scenes are checked; only their verdicts are kept
+        entries = iter_scenes(paths, jobs, functools.partial(check_report.json_entry, strict=strict))
+        scenes = check_report.stream_check_json(entries, strict)
+    else:
+        scenes = list(iter_scenes(paths, jobs, SceneRun.light))
     if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)
@@ -111,10 +116,6 @@ def check(
             raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
     if report_dir is not None:
         _write_sheets(scenes, report_dir, shown)
-    if json:
-        from foundation_calc.output.console import print_json
-
-        print_json(check_report.check_document(scenes, strict))
-    else:
+    if not json:
         check_report.print_check_table(scenes, shown, strict, verbose)
     raise typer.Exit(int(exit_code(scenes, strict)))

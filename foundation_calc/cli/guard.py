@@ -39,11 +39,18 @@ def report_error(exc: FcalcError) -> None:
 def warn_implausible(scene, source: str = "") -> None:
     """Print the scene's plausibility warnings (probably a wrong unit) on stderr; they never
     change the exit code."""
+    print_warnings(scene.plausibility_warnings(), source)
+
+
+def print_warnings(texts, source: str = "") -> None:
+    """Print plausibility warnings ``texts`` of the scene read from ``source`` on stderr."""
+    if not texts:
+        return  # nothing to import or set up: most scenes have no warning
     from rich.markup import escape
 
     from foundation_calc.output.console import stderr
 
-    for text in scene.plausibility_warnings():
+    for text in texts:
         where = f"{escape(source)}: " if source else ""
         stderr().print(f"[bold yellow]warning[/]: {where}{escape(text)}", soft_wrap=True)
 

@@ -20,9 +20,10 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     """Natural frequencies k0, p1, p2 and the margin of the crank speed from every resonance.
 
     Checks the paper's conditions ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2 (fail inside the
-    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn).
+    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn); with
+    [[loads]], n ω = k0, p1, p2 for every order n of the loads.
     """
-    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.output import crank_resonance as report_out
     from foundation_calc.scenes import load_scene
@@ -30,7 +31,7 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     shown = display_units(units)
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
-    report = check_resonances(loaded.design(), loaded.limits.detuning)
+    report = check_scene_resonances(loaded)
     if json:
         from foundation_calc.output.console import print_json
 

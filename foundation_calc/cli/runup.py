@@ -46,9 +46,9 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
         raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
     loaded = load_scene(scene)
     warn_implausible(loaded)
-    operation = loaded.operation
-    up = time if time is not None else operation.run_up_time
-    down_time = down if down is not None else operation.run_down_time
+    operation = loaded.operation  # None in a crank scene without the table
+    up = time if time is not None else getattr(operation, "run_up_time", None)
+    down_time = down if down is not None else getattr(operation, "run_down_time", None)
     report = check_runup(loaded, up, down_time)
     if json:
         from foundation_calc.output.console import print_json

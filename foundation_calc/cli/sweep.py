@@ -75,7 +75,8 @@ def sweep(
     Every point is computed in one vectorised call of the corrected first approximation; each
     row shows the peaks of x, y (of C), θ and of the scene's [[points]], the nearest resonance condition and its margin,
     and a status: resonant (no periodic solution), fail (inside the detuning band of a paper
-    condition, or over the amplitude limit), warn (inside the band of an extra condition), pass.
+    condition, or over a peak or RMS limit), warn (inside the band of an extra condition), pass.
+    A scene's [[loads]] add their linear steady state and their resonance conditions.
     A sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
     """
     if (speed is None) == (soil is None):
@@ -110,7 +111,10 @@ def sweep(
     loaded = load_scene(scene, expect="crank_foundation")
     warn_implausible(loaded)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    report = run_sweep(loaded.design(), variable, values, loaded.limits, loaded.limits.detuning, points)
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+
+    design = None if loaded.mechanism is None else loaded.design()
+    report = run_sweep(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
     if csv is not None:
         from foundation_calc.output.files import write_atomically
 

@@ -133,7 +133,24 @@ def _runup_table(runups):
     return table
 
 
-def bench_document(scenes, platforms, throughput, startup, truncation=None, runups=None) -> dict:
+def _batch_document(batch) -> dict | None:
+    if batch is None:
+        return None
+    from dataclasses import asdict
+
+    rows = {"one": batch.one, "many": batch.many, "many_two_jobs": batch.many_two_jobs, "large": batch.large}
+    return {
+        **{key: None if row is None else asdict(row) for key, row in rows.items()},
+        "marginal_seconds_per_platform_scene": batch.marginal_seconds,
+        "marginal_cpu_seconds_per_platform_scene": batch.marginal_cpu_seconds,
+        "ratio_many_to_one": batch.many_over_one,
+        "cpu_ratio_many_to_one": batch.cpu_many_over_one,
+        "ratio_many_two_jobs_to_one": batch.many_two_jobs_over_one,
+        "speedup_two_jobs": batch.jobs_speedup,
+    }
+
+
+def bench_document(scenes, platforms, throughput, startup, truncation=None, batch=None, runups=None) -> dict:
     """The whole benchmark as one JSON-ready dict (seconds, bytes, relative errors)."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
@@ -172,9 +189,12 @@ def bench_document(scenes, platforms, throughput, startup, truncation=None, runu
                 "seconds": row.seconds,
                 "ratio_to_import_floor": row.ratio_to_import_floor,
                 "ratio_to_framework_floor": row.ratio_to_framework_floor,
+                "cpu_seconds": row.cpu_seconds,
+                "cpu_ratio_to_framework_floor": row.cpu_ratio_to_framework_floor,
             }
             for row in startup
         ],
+        "batch": _batch_document(batch),
     }
 
 
@@ -249,7 +269,33 @@ def _truncation_tables(truncation):
     return orders, whole
 
 
-def print_bench(scenes, platforms, throughput, startup, truncation=None, runups=None) -> None:
+def _batch_tables(batch):
+    """The batch rows and the ratios measured between them."""
+    from rich.table import Table
+    from rich.text import Text
+
+    rows = Table(title="Batch: fcalc check, whole processes (medians of interleaved runs)", title_justify="left")
+    for name in ("scenes", "jobs", "time", "CPU time", "peak memory, largest process", "peak memory, all processes"):
+        rows.add_column(name, justify="left" if name == "scenes" else "right")
+    for row in (batch.one, batch.many, batch.many_two_jobs, batch.large):
+        if row is not None:
+            tree = "-" if row.peak_bytes_all_processes is None else bytes_text(row.peak_bytes_all_processes)
+            rows.add_row(Text(row.label), str(row.jobs), seconds_text(row.seconds), seconds_text(row.cpu_seconds),
+                         bytes_text(row.peak_bytes_largest_process), tree)
+    n = batch.many.scenes
+    ratios = Table(title="Batch: ratios measured in this run", title_justify="left")
+    ratios.add_column("figure")
+    ratios.add_column("value", justify="right")
+    ratios.add_row(f"marginal cost of a platform scene, (t({n}) - t(1))/{n - 1}, 1 job", seconds_text(batch.marginal_seconds))
+    ratios.add_row("the same in CPU time, 1 job", seconds_text(batch.marginal_cpu_seconds))
+    ratios.add_row(f"t({n} scenes) / t(1 scene), 1 job", f"{batch.many_over_one:.2f}")
+    ratios.add_row("the same in CPU time, 1 job", f"{batch.cpu_many_over_one:.2f}")
+    ratios.add_row(f"t({n} scenes) / t(1 scene), 2 jobs", f"{batch.many_two_jobs_over_one:.2f}")
+    ratios.add_row(f"t({n} scenes, 1 job) / t({n} scenes, 2 jobs)", f"{batch.jobs_speedup:.2f}")
+    return rows, ratios
+
+
+def print_bench(scenes, platforms, throughput, startup, truncation=None, batch=None, runups=None) -> None:
     """The benchmark as rich tables on stdout."""
     from rich.table import Table
 
@@ -289,14 +335,22 @@ def print_bench(scenes, platforms, throughput, startup, truncation=None, runups=
         out.print(table)
         out.print()
     if startup:
-        table = Table(title="Start-up: median wall time of a whole process, interleaved runs", title_justify="left")
-        for name in ("command", "time", "× import typer, pydantic, rich", "× typer + TOML + pydantic + rich table"):
+        table = Table(title="Start-up: medians of whole processes, interleaved runs", title_justify="left")
+        for name in ("command", "time", "× import typer, pydantic, rich", "× framework floor", "CPU time", "CPU × framework floor"):
             table.add_column(name, justify="left" if name == "command" else "right")
         for row in startup:
             table.add_row(
-                row.label, seconds_text(row.seconds), f"{row.ratio_to_import_floor:.2f}", f"{row.ratio_to_framework_floor:.2f}"
+                row.label, seconds_text(row.seconds), f"{row.ratio_to_import_floor:.2f}", f"{row.ratio_to_framework_floor:.2f}",
+                seconds_text(row.cpu_seconds), f"{row.cpu_ratio_to_framework_floor:.2f}",
             )
         out.print(table)
+        out.print("framework floor: a typer command that reads a TOML scene, validates a small pydantic model"
+                  " and prints one rich table", soft_wrap=True)
+        out.print()
+    if batch is not None:
+        for table in _batch_tables(batch):
+            out.print(table)
+            out.print()
 
 
 def plot_bench(scenes, path: str | Path) -> None:

@@ -10,7 +10,9 @@ load has a single test case, ``load``.
 
 from __future__ import annotations
 
+import json
 import re
+from collections.abc import Iterable
 import xml.etree.ElementTree as ET
 from collections import Counter
 from pathlib import Path, PurePath
@@ -137,40 +139,85 @@ def result_document(check: str, report, scene) -> dict:
     return {k: v for k, v in document.items() if k not in ("schema_version", "command", "scene")}
 
 
-def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
-    """The JSON document of ``fcalc check`` (every number SI)."""
+def scene_entry(scene: SceneRun, strict: bool = False) -> dict:
+    """One entry of the ``scenes`` list of the ``fcalc check`` document."""
     return {
-        "schema_version": JSON_SCHEMA_VERSION,
-        "command": "check",
-        "strict": strict,
+        "source": scene.source,
+        "kind": scene.kind or None,
+        "name": scene.name,
+        "exit_code": int(scene.exit_code(strict)),
+        "warnings": list(scene.warnings),
+        "checks": [
+            {
+                "check": run.check,
+                "verdict": _verdict(run, strict),
+                "reason": _reason(run, _SI),
+                "values": _values_si(run.values),
+                "problems": [{"field": loc, "message": msg} for loc, msg in run.problems],
+                "details": list(run.details),
+                "result": result_document(run.check, run.report, scene.scene),
+            }
+            for run in scene.runs
+        ],
+    }
+
+
+def _summary(scenes: list[SceneRun], strict: bool) -> dict:
+    return {
+        "skipped": [scene.source for scene in scenes if scene.skipped],
         "exit_code": int(exit_code(scenes, strict)),
         "counts": counts(scenes, strict),
         "scene_counts": scene_counts(scenes, strict),
-        "skipped": [scene.source for scene in scenes if scene.skipped],
-        "scenes": [
-            {
-                "source": scene.source,
-                "kind": scene.kind or None,
-                "name": scene.name,
-                "exit_code": int(scene.exit_code(strict)),
-                "warnings": list(scene.warnings),
-                "checks": [
-                    {
-                        "check": run.check,
-                        "verdict": _verdict(run, strict),
-                        "reason": _reason(run, _SI),
-                        "values": _values_si(run.values),
-                        "problems": [{"field": loc, "message": msg} for loc, msg in run.problems],
-                        "details": list(run.details),
-                        "result": result_document(run.check, run.report, scene.scene),
-                    }
-                    for run in scene.runs
-                ],
-            }
-            for scene in scenes
-            if not scene.skipped
-        ],
     }
+
+
+def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
+    """The JSON document of ``fcalc check`` (every number SI); :func:`stream_check_json` writes the
+    same text scene by scene."""
+    head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
+    return {**head, "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
+
+
+def _dumped(value) -> str:
+    return json.dumps(value, indent=2, ensure_ascii=False, allow_nan=False)
+
+
+def json_entry(scene: SceneRun, strict: bool = False) -> tuple[SceneRun, str | None]:
+    """A checked scene as :meth:`~foundation_calc.checks.batch.SceneRun.light` and its entry of
+    the document as JSON text (None for a skipped file): what a batch keeps of a scene."""
+    return scene.light(), None if scene.skipped else _dumped(scene_entry(scene, strict))
+
+
+def _member(key: str, value) -> str:
+    """``"key": value`` as a member of the top-level object of an ``indent=2`` dump."""
+    return "\n  " + _dumped(key) + ": " + _dumped(value).replace("\n", "\n  ")
+
+
+def stream_check_json(entries: Iterable[tuple[SceneRun, str | None]], strict: bool = False, write=None) -> list[SceneRun]:
+    """Write the ``fcalc check`` document (the text of ``json.dumps(check_document(...), indent=2)``)
+    while the scenes of ``entries`` (from :func:`json_entry`) come in, holding only their light
+    runs, which it returns. Nothing is written when no entry is a scene."""
+    write = write or _stdout_write
+    scenes: list[SceneRun] = []
+    opened = False
+    for scene, text in entries:
+        scenes.append(scene)
+        if text is None:
+            continue
+        if not opened:
+            head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
+            write("{" + ",".join(_member(k, v) for k, v in head.items()) + ',\n  "scenes": [')
+        write(("," if opened else "") + "\n    " + text.replace("\n", "\n    "))
+        opened = True
+    if opened:
+        write("\n  ]" + "".join("," + _member(k, v) for k, v in _summary(scenes, strict).items()) + "\n}\n")
+    return scenes
+
+
+def _stdout_write(text: str) -> None:
+    import sys
+
+    sys.stdout.write(text)
 
 
 #: Characters XML 1.0 cannot carry at all (control characters, surrogates, U+FFFE/U+FFFF).

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 from functools import cache
 from typing import TYPE_CHECKING
 
@@ -58,7 +57,7 @@ def stdout() -> Console:
             super().print(*objects, **kwargs)
 
     width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
-    return ResultConsole(highlight=False, width=width)
+    return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
 
 
 @cache
@@ -79,6 +78,8 @@ def verdict_text(outcome: str, strict: bool = False) -> str:
 
 def print_json(document: dict) -> None:
     """Write one JSON document to stdout. NaN or inf in it is a bug, so it raises."""
+    import json
+
     print(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
 
 

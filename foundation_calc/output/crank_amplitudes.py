@@ -9,6 +9,7 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -22,7 +23,8 @@ DISPLAY_QUANTITY = {"displacement": "amplitude", "velocity": "velocity", "accele
 FIRST_KEYS = (("y", 1, "cos"), ("y", 2, "cos"), ("x", 1, "sin"), ("x", 3, "sin"), ("theta", 1, "sin"), ("theta", 3, "sin"))
 
 
-def _approximation_document(approx: Approximation) -> dict:
+def _approximation_document(approx: Approximation, harmonics: int = 5) -> dict:
+    """One approximation's part of the JSON document: harmonics 0 ... ``harmonics`` - 1."""
     doc = {
         "title": approx.title,
         "resonant": approx.resonant,
@@ -42,7 +44,7 @@ def _approximation_document(approx: Approximation) -> dict:
             "magnitude": abs(approx.harmonic(dof, n)),
             "phase": approx.phase(dof, n),
         }
-        for dof, n in ((d, n) for d in DOFS for n in range(0, 5))
+        for dof, n in ((d, n) for d in DOFS for n in range(0, harmonics))
     }
     doc["peaks"] = {
         dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
@@ -51,18 +53,79 @@ def _approximation_document(approx: Approximation) -> dict:
         name: {d: {q: float(getattr(pk, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
         for name, pk in approx.points.items()
     }
+    doc["points_rms"] = {
+        name: {d: {q: float(getattr(rm, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
+        for name, rm in approx.rms.items()
+    }
     return doc
+
+
+def code_document(report: AmplitudeReport, limits) -> dict | None:
+    """The ``code`` part of the JSON documents: the table used, its zones per point, warnings."""
+    if getattr(limits, "code", None) is None:
+        return None
+    rows = report.code_rows
+    table = rows[0].table if rows else None
+    return {
+        "code": limits.code,
+        "machine_group": limits.machine_group,
+        "foundation": limits.foundation,
+        "acceptable_zone": limits.acceptable_zone,
+        "clause": table.clause if table else None,
+        "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
+        "points": [
+            {
+                "point": row.point,
+                "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
+                "governing": row.governing,
+                "value": row.value,
+                "zone": row.zone,
+                "limit": row.limit,
+                "ratio": row.ratio,
+                "verdict": row.outcome.value,
+                "reason": row.verdict_text,
+            }
+            for row in rows
+        ],
+        "warnings": list(report.code_warnings),
+    }
+
+
+def loads_document(vendor) -> dict:
+    """The scene's loads as generalised forces about C (Q_x, Q_y [N], Q_θ [N m]) and the block's matrices."""
+    from foundation_calc.solvers.crank.loads import matrices
+
+    q = vendor.loads.generalized()
+    M, K, C = matrices(vendor.block)
+    return {
+        "model": "(K - n²ω²M + i nωC) Z_n = Σ Q e^{iφ}; loads F cos(nωt + φ); Q_θ = H F_x + u F_y + M",
+        "generalized_forces": [
+            {"order": int(n), "x": {"re": v[0].real, "im": v[0].imag}, "y": {"re": v[1].real, "im": v[1].imag},
+             "theta": {"re": v[2].real, "im": v[2].imag}}
+            for n, v in zip(vendor.loads.order, q)
+        ],
+        "mass_matrix": M.tolist(),
+        "stiffness_matrix": K.tolist(),
+        "damping_matrix": C.tolist(),
+    }
 
 
 def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc amplitudes`` (every number SI)."""
     d = report.design
+    shown = 5 if report.vendor is None else max(5, int(report.vendor.loads.order.max()) + 1)
+    derived = (
+        {"total_mass": report.vendor.block.M_tot}
+        if d is None
+        else {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m}
+    )
     doc = {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "amplitudes",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
-        "derived": {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m},
+        "speed": {**speed_triplet(report.omega), "given_as": scene.speed.speed_given_as},
+        "derived": derived,
+        "loads": None if report.vendor is None else loads_document(report.vendor),
         "conventions": "y positive downward; theta turns +x toward +y; x, y of the centre of mass C;"
         " a point's displacement is the rigid-body motion X + (R(theta) - I)(horizontal, -height),"
         " to first order (x + height·theta, y + horizontal·theta)",
@@ -75,7 +138,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             "modal_damping_ratios": list(report.damping.modal_ratios),
         },
         "checked_with": report.checked,
-        "approximations": {key: _approximation_document(a) for key, a in report.approximations.items()},
+        "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
         "limits": [
             {
                 "point": row.point,
@@ -85,9 +148,11 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
                 "limit": row.limit,
                 "ratio": row.ratio,
                 "verdict": row.outcome.value,
+                "source": row.source,
             }
             for row in report.rows
         ],
+        "code": code_document(report, scene.limits),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:
@@ -106,27 +171,37 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
 def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     if report.damped:
         return _damped_harmonics_table(report, units)
-    table = Table(title="Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)", title_justify="left")
+    # a mechanism alone moves y as cosines and x, θ as sines; loads bring both parts: show magnitudes
+    signed = report.vendor is None
+    title = "signed coefficient of cos nωt for y, of sin nωt for x and θ" if signed else "magnitude of each harmonic"
+    table = Table(title=f"Harmonics ({title})", title_justify="left")
     table.add_column("harmonic")
     shown = [a for a in report.approximations.values()]
+    harmonics = HARMONICS
+    if not signed:
+        extra = sorted({int(n) for n in report.vendor.loads.order} - {n for _, n in HARMONICS})
+        harmonics = tuple(sorted(HARMONICS + tuple((dof, n) for dof in DOFS for n in extra), key=lambda h: (DOFS.index(h[0]), h[1])))
+
+    def value_of(a, dof, n):
+        return float(a.motion.coefficient(dof, n)[0 if dof == "y" else 1]) if signed else abs(a.harmonic(dof, n))
+
     for a in shown:
         table.add_column(a.key.replace("_", " "), justify="right")
     _error_columns(table, report)
     scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
-        (a.key, dof): max(abs(float(a.motion.coefficient(dof, k)[0 if dof == "y" else 1])) for d, k in HARMONICS if d == dof)
+        (a.key, dof): max(abs(value_of(a, dof, k)) for d, k in harmonics if d == dof)
         for a in shown
         if not a.resonant
         for dof in DOFS
     }
-    for dof, n in HARMONICS:
-        part = 0 if dof == "y" else 1
+    for dof, n in harmonics:
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
         cells = [f"{dof}{n} \\[{unit}]"]
         for a in shown:
             if a.resonant:
                 cells.append("resonant")
                 continue
-            value = float(a.motion.coefficient(dof, n)[part])
+            value = value_of(a, dof, n)
             scale = scales[a.key, dof]
             if dof != "theta":
                 value, scale = units.convert("amplitude", value), units.convert("amplitude", scale)
@@ -141,7 +216,8 @@ def _error_columns(table: Table, report: AmplitudeReport) -> None:
 
 
 def _error_cells(report: AmplitudeReport, dof: str, n: int) -> list[str]:
-    return ["-" if err is None else f"{err['harmonics'][f'{dof}{n}']:.2e}" for err in (report.errors or {}).values()]
+    errors = ((report.errors or {}).values())
+    return ["-" if err is None or f"{dof}{n}" not in err["harmonics"] else f"{err['harmonics'][f'{dof}{n}']:.2e}" for err in errors]
 
 
 def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
@@ -199,13 +275,31 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
 
 def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
-    for col in ("point", "direction", "quantity", "peak", "limit", "peak/limit", "verdict"):
-        table.add_column(col, justify="right" if col in ("peak", "limit", "peak/limit") else "left")
+    for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
+        table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
     for row in report.rows:
-        shown = DISPLAY_QUANTITY[row.quantity]
+        shown = display_quantity(row.quantity)
         table.add_row(
             Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
             f"{row.ratio:.3f}", verdict_text(row.outcome.value),
+        )
+    return table
+
+
+def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+    rows = report.code_rows
+    t = rows[0].table
+    bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
+    table = Table(
+        title=f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s)", title_justify="left"
+    )
+    unit = units.label("velocity")
+    for col in ("point", f"horizontal [{unit}]", f"vertical [{unit}]", "governs", "zone", f"fails over [{unit}]", "verdict"):
+        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col else "left")
+    for row in rows:
+        table.add_row(
+            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
+            row.governing, row.zone, fmt(units.convert("velocity", row.limit)), verdict_text(row.outcome.value),
         )
     return table
 
@@ -215,25 +309,30 @@ def summary_line(report: AmplitudeReport) -> str:
     if report.resonant:
         where = "exactly at the speed" if approx.margin == 0 else f"{approx.margin:.3g} (relative) from the speed"
         return f"{verdict_text('fail')}: resonant — {approx.nearest} is {where}; no steady state without damping"
-    if not report.rows:
+    if not report.rows and not report.code_rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
-    top = max(report.rows, key=lambda r: r.ratio)
-    damped = f"; damped response, {approx.margin:.2%} from {approx.nearest}" if report.damped else ""
-    return (
-        f"{verdict_text(report.outcome.value)}: largest peak/limit {top.ratio:.3f}"
-        f" ({escape(top.point)}, {top.direction} {top.quantity}){damped}"
-    )
+    parts = []
+    if report.rows:
+        top = max(report.rows, key=lambda r: r.ratio)
+        parts.append(f"largest value/limit {top.ratio:.3f} ({escape(top.point)}, {top.direction} {top.quantity})")
+    if report.code_rows:
+        top = max(report.code_rows, key=lambda r: r.ratio)
+        parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
+    if report.damped:
+        parts.append(f"damped response, {approx.margin:.2%} from {escape(approx.nearest)}")
+    return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 
 def print_amplitudes_report(
     report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits()
 ) -> None:
     """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI)."""
-    d = report.design
+    d, w = report.design, report.omega
     out = stdout()
+    machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
     out.print(
-        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', d.omega)} = {fmt(rpm_from_omega(d.omega))} rpm,"
-        f" μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}; y positive downward"
+        f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', w)} = {fmt(rpm_from_omega(w))} rpm,"
+        f" {machine}; y positive downward"
     )
     for a in report.approximations.values():
         note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"
@@ -256,4 +355,8 @@ def print_amplitudes_report(
         out.print(_points_table(report, units))
     if report.rows:
         out.print(_limits_table(report, units))
+    if report.code_rows:
+        out.print(_code_table(report, units))
+    for warning in report.code_warnings:
+        out.print(Text(f"warning: {warning}", style="yellow"))
     out.print(summary_line(report))

@@ -17,7 +17,7 @@ def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUn
     """One sentence that says whether the speed is far enough from every resonance (the speed in
     ``units``, as ``fcalc check`` words it)."""
     near = report.nearest
-    speed = units.show("speed", report.design.omega)
+    speed = units.show("speed", report.omega)
     outcome = report.outcome.value
     if outcome == "pass":
         return (
@@ -32,12 +32,15 @@ def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUn
 def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc resonance`` (every number SI: rad/s, kg, m)."""
     d = report.design
-    return {
-        "schema_version": JSON_SCHEMA_VERSION,
-        "command": "resonance",
-        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "speed": {**speed_triplet(d.omega), "given_as": scene.mechanism.speed_given_as},
-        "derived": {
+    if d is None:  # a machine given by its loads: no mechanism
+        block = scene.block()
+        derived = {
+            "total_mass": block.M_tot,
+            "rho1": (block.I_c / block.M_tot) ** 0.5,
+            "rocking_stability_margin": report.stability_margin,
+        }
+    else:
+        derived = {
             "mu": d.mu,
             "lambda": d.lam,
             "total_mass": d.M_tot,
@@ -45,7 +48,13 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
             "rho1": d.rho1_sq**0.5,
             "kappa": d.rod.kappa,
             "rocking_stability_margin": report.stability_margin,
-        },
+        }
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "resonance",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "speed": {**speed_triplet(report.omega), "given_as": scene.speed.speed_given_as},
+        "derived": derived,
         "natural_frequencies": _frequencies(report.zero_order),
         "natural_frequencies_averaged_inertia": _frequencies(report.averaged),
         "resonances": [
@@ -75,21 +84,26 @@ def print_resonance_report(
     from rich.markup import escape
     from rich.table import Table
 
-    d = report.design
+    d, w = report.design, report.omega
     out = stdout()
     title = scene.name or source
     out.print(
-        f"[bold]{escape(title)}[/]  speed {fmt(d.omega)} rad/s = {fmt(hz_from_omega(d.omega))} Hz"
-        f" = {fmt(rpm_from_omega(d.omega))} rpm (given as {scene.mechanism.speed_given_as})"
+        f"[bold]{escape(title)}[/]  speed {fmt(w)} rad/s = {fmt(hz_from_omega(w))} Hz"
+        f" = {fmt(rpm_from_omega(w))} rpm (given as {scene.speed.speed_given_as})"
     )
 
     design = Table(title="Design", title_justify="left")
     for col in ("quantity", "value", "unit"):
         design.add_column(col, justify="right" if col == "value" else "left")
-    design.add_row("μ = m/M_tot, moving-mass ratio", fmt(d.mu, 4), "-")
-    design.add_row("λ = r/l, crank-to-rod ratio", fmt(d.lam, 4), "-")
-    design.add_row("M_tot, total mass", fmt(d.M_tot), "kg")
-    design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt(d.rho1_sq**0.5, 4), "m")
+    if d is None:
+        block = scene.block()
+        design.add_row("M_tot, total mass (machine given by its loads)", fmt(block.M_tot), "kg")
+        design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt((block.I_c / block.M_tot) ** 0.5, 4), "m")
+    else:
+        design.add_row("μ = m/M_tot, moving-mass ratio", fmt(d.mu, 4), "-")
+        design.add_row("λ = r/l, crank-to-rod ratio", fmt(d.lam, 4), "-")
+        design.add_row("M_tot, total mass", fmt(d.M_tot), "kg")
+        design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt(d.rho1_sq**0.5, 4), "m")
     design.add_row("rocking stability margin c_φ·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
     out.print(design)
 
@@ -105,7 +119,7 @@ def print_resonance_report(
         )
     out.print(freqs)
 
-    res = Table(title="Resonances (critical crank speeds)", title_justify="left")
+    res = Table(title="Resonances (critical speeds)", title_justify="left")
     res.add_column("condition")
     res.add_column("mode")
     speed = units.label("speed")
@@ -113,7 +127,7 @@ def print_resonance_report(
         res.add_column(col, justify="right")
     res.add_column("verdict")
     for row in report.rows:
-        label = row.condition.label + ("" if row.condition.source == "paper" else " (extra)")
+        label = row.condition.label + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[row.condition.source]
         res.add_row(
             label,
             MODE_NAMES[row.condition.mode],

@@ -10,13 +10,25 @@ from pathlib import Path
 
 import numpy as np
 
-from foundation_calc.checks.limits import QUANTITIES
+from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
-from foundation_calc.solvers.crank.resonance import CONDITIONS
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
+LOADS_METHOD = "vendor loads, linear steady state"
 STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
+
+
+def method(report) -> str:
+    """What computed the sweep's amplitudes: the mechanism's closed form, the loads' steady state or both."""
+    sources = {c.source for c in report.conditions}
+    parts = ([METHOD] if sources - {"loads"} else []) + ([LOADS_METHOD] if "loads" in sources else [])
+    return " + ".join(parts)
+
+
+def _condition_label(condition) -> str:
+    """A condition's label, with "(loads)" for a harmonic of the scene's [[loads]]."""
+    return condition.label + (" (loads)" if condition.source == "loads" else "")
 
 
 def _harmonics(report, i: int) -> dict | None:
@@ -46,7 +58,7 @@ def _rows(report):
             "harmonics": _harmonics(report, i),
             "points": points,
             "resonant": resonant,
-            "nearest_condition": CONDITIONS[int(report.nearest[i])].label,
+            "nearest_condition": _condition_label(report.conditions[int(report.nearest[i])]),
             "margin": float(report.margin[i]),
             "over_limit": bool(report.over_limit[i]),
             "over_limits": [q for q, mask in report.over_quantities.items() if mask[i]],
@@ -60,10 +72,10 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
         "schema_version": JSON_SCHEMA_VERSION,
         "scene": scene_path,
         "name": name,
-        "method": METHOD,
+        "method": method(report),
         "variable": report.variable,
         "limits": {
-            **{key: report.limits.get(quantity) for quantity, key in QUANTITIES.items()},
+            **{key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
             "detuning": report.detuning,
         },
         "critical_speeds": [
@@ -110,7 +122,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
 
     out = stdout()
     speed_unit, amp_unit = units.label("speed"), units.label("amplitude")
-    title = f"{escape(name or scene_path)} — {METHOD}"
+    title = f"{escape(name or scene_path)} — {method(report)}"
     table = Table(title=title, title_justify="left")
     if report.variable == "soil_factor":
         table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
@@ -151,9 +163,9 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         for c in report.critical:
             crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
-    limits = "; ".join(f"{q} {units.show(QUANTITIES[q], v)}" for q, v in report.limits.items()) or "none"
+    limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
-        f"peak limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
+        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
     )
 
 
@@ -166,7 +178,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
     fig, ax = new_figure()
     if report.variable == "omega":
         xs = np.array([units.convert("speed", w) for w in report.values])
-        ax.set_xlabel(f"crank speed [{units.label('speed')}]")
+        ax.set_xlabel(f"speed [{units.label('speed')}]")
     else:
         xs = report.values
         ax.set_xlabel("factor on the soil coefficients c_z, c_x, c_phi [-]")
@@ -182,7 +194,7 @@ def plot_sweep(report, path: str | Path, units, name: str) -> None:
         ax.text(units.convert("speed", c.zero_order), 1.0, c.label, rotation=90, va="top", ha="right", fontsize=7,
                 transform=ax.get_xaxis_transform())
     ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
-    ax.set_title(f"{name}: {METHOD}", fontsize=9)
+    ax.set_title(f"{name}: {method(report)}", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, path)

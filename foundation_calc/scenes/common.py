@@ -56,9 +56,9 @@ def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraint
 class SpeedFields(SceneModel):
     """The operating speed, given as exactly one of ``omega``, ``frequency_hz``, ``speed_rpm``."""
 
-    omega: float | None = quantity("ω", "rad/s", "angular speed of the shaft", None, gt=0)
-    frequency_hz: float | None = quantity("f", "Hz", "rotation frequency of the shaft", None, gt=0)
-    speed_rpm: float | None = quantity("n", "rpm", "shaft speed in revolutions per minute", None, gt=0)
+    omega: float | None = quantity("ω", "rad/s", "angular speed of the shaft", None, gt=0, examples=[31.4159])
+    frequency_hz: float | None = quantity("f", "Hz", "rotation frequency of the shaft", None, gt=0, examples=[5.0])
+    speed_rpm: float | None = quantity("n", "rpm", "shaft speed in revolutions per minute", None, gt=0, examples=[300.0])
 
     @model_validator(mode="after")
     def _exactly_one_speed(self):

@@ -8,15 +8,17 @@ message names the field to change.
 from __future__ import annotations
 
 import math
-
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from pydantic import ValidationInfo, field_validator, model_validator
 
+from foundation_calc.errors import PhysicsError
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
+
+if TYPE_CHECKING:
+    from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock
 
 #: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
 #: method of the paper is claimed to hold.
@@ -98,17 +100,47 @@ class Mechanism(SpeedFields):
         return l1
 
 
+#: Vibration codes with zone tables (``checks/codes.py`` holds the tables; a test keeps the two equal).
+CODE_NAMES = ("ISO 10816-3",)
+
+
 class Limits(SceneModel):
-    """What the checks compare against."""
+    """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
-        "u_max", "m", "largest allowed displacement amplitude of any reported point", None, gt=0
+        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0
     )
     velocity: float | None = quantity(
-        "v_max", "m/s", "largest allowed velocity amplitude", None, gt=0, examples=[5.0e-3]
+        "v_max", "m/s", "largest allowed peak velocity", None, gt=0, examples=[5.0e-3]
     )
     acceleration: float | None = quantity(
-        "a_max", "m/s²", "largest allowed acceleration amplitude", None, gt=0, examples=[0.3]
+        "a_max", "m/s²", "largest allowed peak acceleration", None, gt=0, examples=[0.3]
+    )
+    amplitude_rms: float | None = quantity(
+        "u_rms,max", "m", "largest allowed RMS displacement (mean left out), each point and direction", None, gt=0,
+        examples=[5.0e-5],
+    )
+    velocity_rms: float | None = quantity(
+        "v_rms,max", "m/s", "largest allowed RMS velocity, each point and direction", None, gt=0, examples=[2.8e-3]
+    )
+    acceleration_rms: float | None = quantity(
+        "a_rms,max", "m/s²", "largest allowed RMS acceleration, each point and direction", None, gt=0, examples=[0.2]
+    )
+    code: Literal[CODE_NAMES] | None = quantity(
+        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity of C and of every point", None,
+        examples=["ISO 10816-3"],
+    )
+    machine_group: Literal[1, 2] | None = quantity(
+        "-", "-", "machine group of the code (ISO 10816-3: 1 above 300 kW, 2 from 15 to 300 kW)", None, examples=[2]
+    )
+    foundation: Literal["rigid", "flexible"] | None = quantity(
+        "-", "-", "support class of the code (ISO 10816-3, 3.4)", None, examples=["rigid"]
+    )
+    acceptable_zone: Literal["A", "B"] | None = quantity(
+        "-", "-", "highest zone that passes; default: A passes, B warns, C and D fail", None, examples=["B"]
+    )
+    machine_power: float | None = quantity(
+        "P", "W", "rated power of the machine, to check its group of the code", None, gt=0, examples=[160e3]
     )
     detuning: float = quantity(
         "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
@@ -117,17 +149,94 @@ class Limits(SceneModel):
         "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
         " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
     )
+    @field_validator("code", mode="before")
+    @classmethod
+    def _known_code(cls, code):
+        if code == "ISO 20816-3":
+            raise ValueError(
+                "ISO 20816-3 is not available: its zone tables have not been checked against ISO 10816-3's;"
+                ' write code = "ISO 10816-3" to judge with ISO 10816-3:2009, Annex A'
+            )
+        return code
+
+    @model_validator(mode="after")
+    def _code_class_complete(self):
+        given = {k: getattr(self, k) for k in ("machine_group", "foundation", "acceptable_zone", "machine_power")}
+        if self.code is None:
+            stray = [k for k, v in given.items() if v is not None]
+            if stray:
+                raise ValueError(f"{', '.join(stray)} need code (e.g. code = \"ISO 10816-3\")")
+        else:
+            missing = [k for k in ("machine_group", "foundation") if given[k] is None]
+            if missing:
+                raise ValueError(
+                    f"code = {self.code!r} needs {' and '.join(missing)}"
+                    " (machine_group = 1 or 2, foundation = \"rigid\" or \"flexible\")"
+                )
+        return self
 
 
-class Operation(SceneModel):
-    """Start-up and run-down of the machine (fcalc runup)."""
+class PointOfAction(SceneModel):
+    """Where a load acts on the block, relative to its centre of mass C."""
+
+    horizontal: float = quantity("u", "m", "horizontal offset from C, positive in +x", 0.0, examples=[0.8])
+    height: float = quantity("H", "m", "height above C (negative: below C)", 0.0, examples=[1.2])
+
+
+class Load(SceneModel):
+    """A harmonic load of the machine on the block (vendor data): amplitude · cos(n ω t + φ).
+
+    Each component (horizontal, vertical force, moment) varies as its amplitude · cos(n ω t + φ).
+    """
+
+    name: str = quantity("-", "-", "label shown in reports", "", max_length=80, examples=["1st order, crank"])
+    order: int = quantity(
+        "n", "-", "multiple of the speed: 1 at the speed, 2 at twice it, ...", ge=1, le=64, examples=[1]
+    )
+    horizontal: float = quantity("F_x", "N", "amplitude of the horizontal force, along +x", 0.0, examples=[12.0e3])
+    vertical: float = quantity(
+        "F_y", "N", "amplitude of the vertical force, along +y (positive downward)", 0.0, examples=[4.0e3]
+    )
+    moment: float = quantity("M", "N m", "amplitude of a couple turning +x toward +y", 0.0, examples=[2.0e3])
+    phase: float = quantity(
+        "φ", "rad", "phase φ at t = 0 (crank angle 0 when there is a [mechanism])", 0.0, examples=[1.5708]
+    )
+    at: PointOfAction = quantity("-", "-", "point of action of the forces; default C", PointOfAction())
+
+    @model_validator(mode="after")
+    def _something_acts(self):
+        if self.horizontal == 0 and self.vertical == 0 and self.moment == 0:
+            raise ValueError("give at least one of horizontal [N], vertical [N], moment [N m] (all are 0)")
+        return self
+
+
+class Operation(SpeedFields):
+    """The machine's speed, for a scene whose machine is given by its loads only, and its start-up
+    and run-down (fcalc runup)."""
 
     run_up_time: float | None = quantity(
-        "T_up", "s", "time of the linear speed ramp from rest to the operating speed", None, gt=0, examples=[10.0]
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
+        examples=[10.0],
     )
     run_down_time: float | None = quantity(
-        "T_down", "s", "time of the linear speed ramp from the operating speed to rest", None, gt=0, examples=[20.0]
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
+        examples=[20.0],
     )
+
+    @model_validator(mode="after")
+    def _exactly_one_speed(self):  # replaces SpeedFields': with a [mechanism] the table has no speed
+        given = [k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None]
+        if len(given) > 1:
+            raise ValueError(
+                "give the speed as exactly one of omega [rad/s], frequency_hz [Hz] or speed_rpm [rpm]"
+                f" (got {' and '.join(given)})"
+            )
+        return self
+
+    @property
+    def gives_speed(self) -> bool:
+        """True when the table gives the speed (a machine given by its loads)."""
+        return any(getattr(self, k) is not None for k in ("omega", "frequency_hz", "speed_rpm"))
 
 
 class Point(SceneModel):
@@ -157,9 +266,17 @@ class CrankScene(SceneModel):
     name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
     foundation: Foundation
     soil: Soil
-    mechanism: Mechanism
+    mechanism: Mechanism | None = quantity(
+        "-", "-", "the crank-slider machine; leave out when the machine is given by its [[loads]]", None
+    )
+    operation: Operation | None = quantity(
+        "-", "-", "the speed, when there is no [mechanism] (omega, frequency_hz or speed_rpm); run_up_time and"
+        " run_down_time for fcalc runup", None
+    )
+    loads: list[Load] = quantity(
+        "-", "-", "harmonic loads of the machine on the block (vendor data), instead of or beside [mechanism]", []
+    )
     limits: Limits = Limits()
-    operation: Operation = Operation()
     drive: Drive | None = None
     points: list[Point] = quantity(
         "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
@@ -181,12 +298,17 @@ class CrankScene(SceneModel):
         × the foundation's size sqrt(S) away, or ``omega`` above what crank machines run at.
         """
         size = self.foundation.base_area**0.5
-        mech = self.mechanism
-        lengths = {
-            "foundation.cog_height": self.foundation.cog_height,
+        mech = self.mechanism or self.operation
+        machine = {} if self.mechanism is None else {
             "mechanism.crank_radius": mech.crank_radius,
             "mechanism.rod_length": mech.rod_length,
             "mechanism.crank_axis_to_cog": mech.crank_axis_to_cog,
+        }
+        lengths = {
+            "foundation.cog_height": self.foundation.cog_height,
+            **machine,
+            **{f"loads[{i}].at.horizontal": load.at.horizontal for i, load in enumerate(self.loads)},
+            **{f"loads[{i}].at.height": load.at.height for i, load in enumerate(self.loads)},
             **{f"points.{p.name!r}.horizontal": p.horizontal for p in self.points},
             **{f"points.{p.name!r}.height": p.height for p in self.points},
         }
@@ -196,7 +318,7 @@ class CrankScene(SceneModel):
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
-        if mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
+        if self.mechanism is not None and mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
             found.append(
                 f"mechanism.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
                 f" machine; if you meant {mech.omega:g} rpm, write speed_rpm = {mech.omega:g}"
@@ -204,7 +326,27 @@ class CrankScene(SceneModel):
         return found
 
     @model_validator(mode="after")
+    def _machine_and_speed(self):
+        if self.mechanism is None and not self.loads:
+            raise ValueError("give the machine as [mechanism] or by its [[loads]] (or both)")
+        if self.mechanism is not None and self.operation is not None and self.operation.gives_speed:
+            raise ValueError(
+                "[mechanism] gives the speed: leave the speed out of [operation] (it is for a machine given by its"
+                " loads; run_up_time and run_down_time may stay)"
+            )
+        if self.mechanism is None and (self.operation is None or not self.operation.gives_speed):
+            raise ValueError("a machine given by its [[loads]] needs its speed: [operation] speed_rpm, omega or frequency_hz")
+        return self
+
+    @property
+    def speed(self) -> SpeedFields:
+        """The section that gives the speed (its ``omega_rad_s``, ``speed_given_as``)."""
+        return self.mechanism if self.mechanism is not None else self.operation
+
+    @model_validator(mode="after")
     def _mechanism_is_small(self):
+        if self.mechanism is None:
+            return self
         moving = self.mechanism.rod_mass + self.mechanism.slider_mass
         mu = moving / (self.foundation.mass + moving)
         if mu > MU_MAX:
@@ -219,6 +361,7 @@ class CrankScene(SceneModel):
         f, s = self.foundation, self.soil
         if s.damping is None:
             return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
+        from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios  # numpy: only for damped soil
         M_tot = f.mass + rod_mass
         d = dashpots_from_ratios(
             *s.damping,
@@ -230,9 +373,46 @@ class CrankScene(SceneModel):
         )
         return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
 
-    def design(self) -> CrankDesign:
-        """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod)."""
+    def block(self) -> RigidBlock:
+        """The block (with the whole machine's mass) on its springs and dashpots, for the loads."""
+        from foundation_calc.solvers.crank.loads import RigidBlock
+
         f, s, mech = self.foundation, self.soil, self.mechanism
+        moving = 0.0 if mech is None else mech.rod_mass + mech.slider_mass
+        c_phi = s.c_z if s.c_phi is None else s.c_phi
+        return RigidBlock(
+            M_tot=f.mass + moving,
+            I_c=f.moment_of_inertia,
+            h=f.cog_height,
+            K_x=s.c_x * f.base_area,
+            K_z=s.c_z * f.base_area,
+            K_phi=c_phi * f.base_second_moment,
+            **self._dashpots(c_phi, moving),
+            g=GRAVITY,
+        )
+
+    def harmonic_loads(self) -> HarmonicLoads | None:
+        """The scene's ``[[loads]]`` as solver arrays (None without loads)."""
+        if not self.loads:
+            return None
+        import numpy as np
+
+        from foundation_calc.solvers.crank.loads import HarmonicLoads
+
+        columns = zip(*((ld.order, ld.horizontal, ld.vertical, ld.moment, ld.phase, ld.at.horizontal, ld.at.height) for ld in self.loads))
+        return HarmonicLoads(*(np.array(c, dtype=int if i == 0 else float) for i, c in enumerate(columns)))
+
+    def design(self) -> CrankDesign:
+        """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
+
+        Raises PhysicsError naming ``mechanism`` for a machine given by its loads only.
+        """
+        f, s, mech = self.foundation, self.soil, self.mechanism
+        if mech is None:
+            raise PhysicsError(
+                "this command needs the crank mechanism; the scene gives the machine by its [[loads]] only",
+                field="mechanism",
+            )
         c_phi = s.c_z if s.c_phi is None else s.c_phi
         rod = lump_slider(
             m=mech.rod_mass,

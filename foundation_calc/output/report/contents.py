@@ -10,6 +10,7 @@ import math
 
 from dataclasses import dataclass
 
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, Sheet, table
@@ -101,15 +102,18 @@ def _equation_section(eqs) -> Section:
 
 def _crank_derived(res: dict, units: DisplayUnits) -> Section:
     d, s = res["derived"], res["speed"]
+    named = (  # a machine given by its loads has no mechanism: μ, λ, m, κ are absent
+        ("mu", "μ = m/M_tot, moving-mass ratio", "-"),
+        ("lambda", "λ = r/l, crank-to-rod ratio", "-"),
+        ("total_mass", "M_tot, total mass", "kg"),
+        ("moving_mass", "m, moving mass", "kg"),
+        ("rho1", "ρ1 = sqrt(I_c/M_tot)", "m"),
+        ("kappa", "κ = l'l'' − ρ²", "m²"),
+        ("rocking_stability_margin", "rocking stability margin c_φ·I1/(P·h) − 1", "-"),
+    )
     rows = (
-        ("ω, crank speed", _speed(units, s["omega"]), units.label("speed")),
-        ("μ = m/M_tot, moving-mass ratio", num(d["mu"]), "-"),
-        ("λ = r/l, crank-to-rod ratio", num(d["lambda"]), "-"),
-        ("M_tot, total mass", num(d["total_mass"]), "kg"),
-        ("m, moving mass", num(d["moving_mass"]), "kg"),
-        ("ρ1 = sqrt(I_c/M_tot)", num(d["rho1"]), "m"),
-        ("κ = l'l'' − ρ²", num(d["kappa"]), "m²"),
-        ("rocking stability margin c_φ·I1/(P·h) − 1", num(d["rocking_stability_margin"]), "-"),
+        ("ω, speed", _speed(units, s["omega"]), units.label("speed")),
+        *((text, num(d[key]), unit) for key, text, unit in named if key in d),
     )
     return Section("Derived quantities", (table("", ("quantity", "value", "unit"), rows, (False, True, False)),))
 
@@ -124,7 +128,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     )
     rows = (
         (
-            r["condition"] + ("" if r["source"] == "paper" else " (extra)"),
+            r["condition"] + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[r["source"]],
             r["mode_name"],
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
@@ -216,9 +220,8 @@ def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
         )
         for r in res["resonances"]
     ]
-    shown = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
     for row in amp["limits"]:
-        q = shown[row["quantity"]]
+        q = display_quantity(row["quantity"])
         rows.append(
             (
                 f"{row['point']} {row['direction']} {row['quantity']}",
@@ -226,7 +229,19 @@ def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
                 f"≤ {num(units.convert(q, row['limit']))} {units.label(q)}",
                 num(row["ratio"], 4),
                 row["verdict"].upper(),
-                f"scene [limits] {q}",
+                row["source"],
+            )
+        )
+    code = amp.get("code")
+    for row in (code or {}).get("points", ()):
+        rows.append(
+            (
+                f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
+                f"{num(units.convert('velocity', row['value']))} {units.label('velocity')}",
+                f"≤ {num(units.convert('velocity', row['limit']))} {units.label('velocity')}",
+                num(row["ratio"], 4),
+                row["verdict"].upper(),
+                f"{code['code']}, group {code['machine_group']}, {code['foundation']} ({code['clause']})",
             )
         )
     checks = table(
@@ -282,7 +297,7 @@ def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figure
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
         _crank_checks(res, amp, units),
-        _equation_section(equations.CRANK),
+        _equation_section(equations.CRANK + (equations.LOADS if amp.get("loads") else ())),
         Section("Plots", figures),
         _crank_accuracy(amp),
     )

@@ -34,19 +34,19 @@ def crank_documents(loaded, source: str, exact: bool) -> dict:
     """The ``resonance``, ``amplitudes`` and speed-``sweep`` JSON documents of a crank scene."""
     import numpy as np
 
-    from foundation_calc.checks.crank_amplitudes import check_amplitudes
-    from foundation_calc.checks.crank_resonance import check_resonances
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes, scene_vendor_loads
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
     from foundation_calc.checks.crank_sweep import sweep
     from foundation_calc.output.crank_amplitudes import amplitudes_document
     from foundation_calc.output.crank_resonance import resonance_document
     from foundation_calc.output.sweep_report import sweep_document
 
-    design = loaded.design()
-    resonance = check_resonances(design, loaded.limits.detuning)
-    amplitudes = check_amplitudes(design, loaded.limits, loaded.points, exact=exact)
-    omegas = design.omega * np.linspace(*SWEEP_RANGE, SWEEP_POINTS)
+    resonance = check_scene_resonances(loaded)
+    amplitudes = check_scene_amplitudes(loaded, exact=exact)
+    design = None if loaded.mechanism is None else loaded.design()
+    omegas = loaded.speed.omega_rad_s * np.linspace(*SWEEP_RANGE, SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    swept = sweep(design, "omega", omegas, loaded.limits.amplitude, loaded.limits.detuning, points)
+    swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
     return {
         "resonance": resonance_document(resonance, loaded, source),
         "amplitudes": amplitudes_document(amplitudes, loaded, source),

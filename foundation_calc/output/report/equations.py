@@ -50,6 +50,15 @@ CRANK = (
     ),
 )
 
+LOADS = (
+    Equation(
+        '(K - n^2 omega^2 M + i n omega C) Z_n = sum Q e^(i phi), quad'
+        ' Q = (F_x, F_y, H F_x + u F_y + M)',
+        "(K − n²ω² M + i nω C) Z_n = Σ Q e^{iφ},  Q = (F_x, F_y, H F_x + u F_y + M)  (loads F cos(nωt + φ) at (u, H) from C)",
+        "vendor loads: rigid block about C, K of [KM] (3.2)–(3.4) corrected, C the base dashpots",
+    ),
+)
+
 PLATFORM = (
     Equation(
         'c_0 = c_1 = c_2 = M_Sigma omega^2 plus.minus (m l omega^2) / u',

@@ -27,8 +27,11 @@ class ResonanceCondition:
     label : as written in the paper, e.g. ``"3ω = p1"``
     harmonic : n, the harmonic of the crank speed that excites the mode
     mode : ``"k0"``, ``"p1"`` or ``"p2"``
-    source : ``"paper"`` (the paper's list) or ``"extra"`` (resonances of the exact equations)
+    source : ``"paper"`` (the paper's list), ``"extra"`` (resonances of the exact equations) or
+        ``"loads"`` (a harmonic of the scene's [[loads]])
     excitation : what drives this harmonic
+    driven : whether a load of this harmonic drives the mode (``"loads"`` only; the paper's
+        conditions are driven by the mechanism, the extra ones only weakly)
     """
 
     label: str
@@ -36,6 +39,7 @@ class ResonanceCondition:
     mode: str
     source: str
     excitation: str
+    driven: bool = False
 
 
 MODE_NAMES = {

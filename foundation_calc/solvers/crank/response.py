@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.numerics.trig_series import analyse, derivative, peak, sample
+from foundation_calc.solvers.numerics.trig_series import analyse, derivative, peak, rms, sample
 
 #: Degrees of freedom in the order of the first axis of :class:`PeriodicMotion` arrays.
 DOFS = ("x", "y", "theta")
@@ -51,13 +51,24 @@ class Peaks:
     acceleration: object
 
 
+class Rms(Peaks):
+    """RMS over one revolution of a displacement, its velocity and acceleration, the mean left out
+    (fields as :class:`Peaks`)."""
+
+
+def _with_derivatives(kind, measure, cos, sin, omega):
+    """``kind(measure(q), measure(q'), measure(q''))`` of a series q."""
+    return kind(*(measure(*derivative(cos, sin, omega, order)) for order in range(3)))
+
+
 def peaks(cos, sin, omega) -> Peaks:
     """Peaks of a series and of its first two time derivatives (see :func:`trig_series.peak`)."""
-    return Peaks(
-        displacement=peak(cos, sin),
-        velocity=peak(*derivative(cos, sin, omega, 1)),
-        acceleration=peak(*derivative(cos, sin, omega, 2)),
-    )
+    return _with_derivatives(Peaks, peak, cos, sin, omega)
+
+
+def rms_values(cos, sin, omega) -> Rms:
+    """RMS of a series and of its first two time derivatives (see :func:`trig_series.rms`)."""
+    return _with_derivatives(Rms, rms, cos, sin, omega)
 
 
 def motion_peaks(motion: PeriodicMotion) -> Peaks:
@@ -91,6 +102,23 @@ def point_peaks(motion: PeriodicMotion, horizontal, height) -> Peaks:
     return peaks(cos, sin, np.asarray(motion.omega)[..., None])
 
 
+def point_rms(motion: PeriodicMotion, horizontal, height) -> Rms:
+    """RMS values of a point's horizontal and vertical motion (last axis: horizontal, vertical)."""
+    cos, sin = point_series(motion, horizontal, height)
+    return rms_values(cos, sin, np.asarray(motion.omega)[..., None])
+
+
+def superpose(a: PeriodicMotion, b: PeriodicMotion) -> PeriodicMotion:
+    """The sum of two periodic motions at the same speed (linear superposition), harmonics padded
+    to the longer series."""
+    K = max(a.cos.shape[-1], b.cos.shape[-1])
+
+    def padded(c):
+        return np.concatenate([c, np.zeros(c.shape[:-1] + (K - c.shape[-1],))], axis=-1)
+
+    return PeriodicMotion(a.omega, padded(a.cos) + padded(b.cos), padded(a.sin) + padded(b.sin))
+
+
 def relative_error(approx, exact):
     """|approx - exact| / |exact| [-] (arrays or complex); 0 where both are 0."""
     diff = np.abs(np.asarray(approx) - np.asarray(exact))
@@ -103,9 +131,13 @@ __all__ = [
     "DOFS",
     "PeriodicMotion",
     "Peaks",
+    "Rms",
     "motion_peaks",
     "peaks",
     "point_peaks",
+    "point_rms",
     "point_series",
     "relative_error",
+    "rms_values",
+    "superpose",
 ]

@@ -67,6 +67,19 @@ def magnitude(cos, sin):
     return np.hypot(cos, sin)
 
 
+def rms(cos, sin):
+    """RMS over one period of the oscillating part of a series [unit of q]: sqrt(Σ_{n≥1} (c_n² + s_n²)/2).
+
+    The mean (n = 0) is left out: it is a static offset, not vibration (ISO 10816-1, 3.3: the
+    r.m.s. of the vibration). Parseval's identity over one period.
+
+    >>> round(float(rms(np.array([5.0, 3.0, 0.0]), np.array([0.0, 0.0, 4.0]))), 12)  # 3 cos φ + 4 sin 2φ
+    3.535533905933
+    """
+    cos, sin = np.asarray(cos, dtype=float), np.asarray(sin, dtype=float)
+    return np.sqrt(0.5 * (cos[..., 1:] ** 2 + sin[..., 1:] ** 2).sum(-1))
+
+
 def _values(cos, sin, n, phi):
     """q, dq/dφ and d²q/dφ² at phases ``phi`` (shape (P,)) of P series (shape (P, K + 1))."""
     arg = phi[:, None] * n
@@ -124,4 +137,4 @@ def peak(cos, sin):
     return flat_best.reshape(batch) if batch else flat_best[0]
 
 
-__all__ = ["analyse", "basis", "derivative", "magnitude", "peak", "phases", "sample"]
+__all__ = ["analyse", "basis", "derivative", "magnitude", "peak", "phases", "rms", "sample"]

@@ -41,8 +41,8 @@ References
 
 from __future__ import annotations
 
-from collections import defaultdict
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -85,7 +85,7 @@ class Rotor:
         s1, c1, s2, c2 = np.sin(self.delta1), np.cos(self.delta1), np.sin(self.delta2), np.cos(self.delta2)
         t1 = np.array([s1, -c1, 0.0])
         t2 = np.array([c1 * c2, s1 * c2, -s2])
-        return t1, t2, np.cross(t1, t2)
+        return t1, t2, np.array([c1 * s2, s1 * s2, c2])  # t1 × t2
 
     def eccentric_phasor(self) -> np.ndarray:
         """λ with L(t) = λ e^{iφ} + conj: λ = l (t1 - i t2) e^{iφ0} / 2 [m]."""
@@ -154,34 +154,67 @@ def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
 
 def spring_stiffness(platform: RigidPlatform) -> np.ndarray:
     """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m]."""
-    K = np.zeros((6, 6))
-    for r_i, c_i in zip(platform.corners, platform.stiffness):
-        T = point_map(r_i)
-        K += T.T @ np.diag(c_i) @ T
-    return K
+    T = np.concatenate([np.broadcast_to(np.eye(3), (4, 3, 3)), -skews(platform.corners)], axis=2).reshape(12, 6)
+    return T.T @ (np.asarray(platform.stiffness, dtype=float).reshape(12, 1) * T)
 
 
-# ---- trigonometric polynomials: dict {harmonic vector (tuple of ints): complex coefficient} ----
+# ---- trigonometric polynomials of one rotor: arrays over the offsets -2..2 of its angle ----
 
 
-def _series_product(a: dict, b: dict, op) -> dict:
-    out: dict = defaultdict(lambda: 0)
-    for ka, va in a.items():
-        for kb, vb in b.items():
-            out[tuple(x + y for x, y in zip(ka, kb))] = out[tuple(x + y for x, y in zip(ka, kb))] + op(va, vb)
-    return dict(out)
+def skews(v) -> np.ndarray:
+    """:func:`skew` of each vector of a stack, shape (..., 3) -> (..., 3, 3)."""
+    v = np.asarray(v)
+    out = np.zeros(v.shape + (3,), dtype=v.dtype)
+    out[..., 0, 1], out[..., 0, 2], out[..., 1, 2] = -v[..., 2], v[..., 1], -v[..., 0]
+    out[..., 1, 0], out[..., 2, 0], out[..., 2, 1] = v[..., 2], -v[..., 1], v[..., 0]
+    return out
 
 
-def _series_add(*terms) -> dict:
-    out: dict = defaultdict(lambda: 0)
-    for scale, series in terms:
-        for k, v in series.items():
-            out[k] = out[k] + scale * v
-    return dict(out)
+def _product(a, b, kind: str) -> np.ndarray:
+    """The coefficients at offsets -2..2 (shape (5, ...)) of the product of two series a, b given at
+    offsets -1..1 (shape (3, 3) each) with the bilinear ``kind``: "inertia" (a·b) I - a bᵀ,
+    "gyro" (a·b) I - b aᵀ, "moment" a bᵀ - b aᵀ, "cross" a × b."""
+    if kind == "cross":
+        pairs = np.einsum("ikl,jl->ijk", skews(a), b)
+    else:
+        dot = np.einsum("ik,jk->ij", a, b)[..., None, None] * np.eye(3)
+        ab, ba = np.einsum("ik,jl->ijkl", a, b), np.einsum("jk,il->ijkl", b, a)
+        pairs = {"inertia": dot - ab, "gyro": dot - ba, "moment": ab - ba}[kind]
+    out = np.zeros((5,) + pairs.shape[2:], dtype=complex)
+    for i in range(3):
+        out[i : i + 3] += pairs[i]
+    return out
 
 
-def _series_map(a: dict, fn) -> dict:
-    return {k: fn(v) for k, v in a.items()}
+@lru_cache(maxsize=256)
+def _rotor_terms(rot: Rotor, g: float) -> dict:
+    """One rotor's parts of S_tot, J, G, K and F (module docstring) at the offsets -2..2 of its
+    angle, each of shape (5, ...), read-only: kept for the next system with this rotor (the
+    tolerance variants of a design change one rotor at most)."""
+    lam, w, m = rot.eccentric_phasor(), rot.omega, rot.m
+    L = np.array([lam.conj(), np.zeros(3), lam])  # offsets -1, 0, 1
+    Ld = np.array([-1j * w * lam.conj(), np.zeros(3), 1j * w * lam])
+    Ldd = -w * w * L
+    S = L + np.array([0.0, 1.0, 0.0])[:, None] * np.asarray(rot.rho, dtype=float)
+
+    def wide(x):  # offsets -1..1 -> -2..2
+        return np.concatenate([np.zeros((1,) + x.shape[1:], dtype=complex), x, np.zeros((1,) + x.shape[1:], dtype=complex)])
+
+    L5, Ldd5 = wide(L), wide(Ldd)
+    tilt = np.einsum("oi,j->oij", L5, E3) - L5[:, 2, None, None] * np.eye(3)
+    terms = {
+        "S": m * wide(S),
+        "J": m * _product(S, S, "inertia"),
+        "G_R": -2.0 * m * skews(wide(Ld)),
+        "G_P": 2.0 * m * _product(S, Ld, "gyro"),
+        "K_R": -m * skews(Ldd5),
+        "K_P": m * _product(S, Ldd, "moment") + g * m * tilt,
+        "F_R": -m * Ldd5,
+        "F_P": -m * _product(S, Ldd, "cross") - g * m * (skews(L5) @ E3),
+    }
+    for value in terms.values():
+        value.setflags(write=False)
+    return terms
 
 
 @dataclass(frozen=True)
@@ -228,72 +261,70 @@ class PeriodicSystem:
         return replace(self, stiff=stiff, springs=springs)
 
     def dynamic_matrices(self, omega) -> np.ndarray:
-        """D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0 for each Ω, shape (H, 6, 6)."""
+        """D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0 for each Ω, shape (H, 6, 6)
+        (of a stack of systems: (V, H, 6, 6))."""
         w = np.asarray(omega, dtype=float)[:, None, None]
         loss = 1j * (self.eta * np.sign(w) + self.beta * w)
-        return self.stiff[0] + loss * self.springs + 1j * w * self.gyro[0] - w * w * self.mass[0]
+        K0, G0, M0 = (x[..., :1, :, :] for x in (self.stiff, self.gyro, self.mass))
+        return K0 + loss * self.springs[..., None, :, :] + 1j * w * G0 - w * w * M0
+
+
+def stack(systems) -> PeriodicSystem:
+    """Systems of equal rotors and speeds as one: every coefficient array gains a leading axis
+    (V, ...) over the systems; ``speeds`` and the harmonic vectors are those of the first."""
+    first = systems[0]
+    arrays = {
+        name: np.stack([getattr(s, name) for s in systems])
+        for name in ("mass", "gyro", "stiff", "force", "springs", "static_load")
+    }
+    return replace(first, **arrays)
 
 
 def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
-    """Assemble the Fourier coefficients of the linearised equations (module docstring)."""
+    """Assemble the Fourier coefficients of the linearised equations (module docstring).
+
+    Rotor j contributes at the harmonic vectors 0, ±e_j and ±2e_j only; ``keys`` are 0 followed by
+    the others in ascending order, ``force_keys`` all of them in ascending order.
+    """
     N = len(rotors)
-    zero = (0,) * N
+    offsets = [(j, o) for j in range(N) for o in (-2, -1, 1, 2)]
+    vectors = sorted(tuple(o if k == j else 0 for k in range(N)) for j, o in offsets)
+    keys = np.array([(0,) * N] + vectors, dtype=int).reshape(-1, N)
+    row = {tuple(k): i for i, k in enumerate(keys.tolist())}
+    P = len(keys)
     speeds = np.array([r.omega for r in rotors], dtype=float)
     M_sigma = platform.M + sum(r.m for r in rotors)
     r_c = np.asarray(platform.r_c, dtype=float)
-
-    def unit(j, s):
-        return tuple(s if k == j else 0 for k in range(N))
-
-    S_tot = {zero: platform.M * r_c + 0j}
-    J = {zero: platform.J_O1 + 0j}
-    G_R, G_P, K_R, K_P = {}, {}, {}, {}
-    F_R, F_P = {}, {}
+    S_tot = np.zeros((P, 3), dtype=complex)
+    S_tot[0] = platform.M * r_c
+    parts = {name: np.zeros((P, 3, 3), dtype=complex) for name in ("J", "G_R", "G_P", "K_R", "K_P")}
+    parts["J"][0] = platform.J_O1
+    F = np.zeros((P, 6), dtype=complex)
     zeta_s = platform.M * r_c[2]
     for j, rot in enumerate(rotors):
-        lam, w = rot.eccentric_phasor(), rot.omega
-        L = {unit(j, 1): lam, unit(j, -1): lam.conj()}
-        Ld = {unit(j, 1): 1j * w * lam, unit(j, -1): -1j * w * lam.conj()}
-        Ldd = _series_map(L, lambda v, w=w: -w * w * v)
-        S = _series_add((1.0, {zero: np.asarray(rot.rho, dtype=float) + 0j}), (1.0, L))
-        m = rot.m
-        zeta_s += m * rot.rho[2]
-        S_tot = _series_add((1.0, S_tot), (m, S))
-        SS = _series_product(S, S, lambda a, b: (a @ b) * np.eye(3) - np.outer(a, b))
-        J = _series_add((1.0, J), (m, SS))
-        G_R = _series_add((1.0, G_R), (-2.0 * m, _series_map(Ld, skew)))
-        G_P = _series_add((1.0, G_P), (2.0 * m, _series_product(S, Ld, lambda s, d: (s @ d) * np.eye(3) - np.outer(d, s))))
-        K_R = _series_add((1.0, K_R), (-m, _series_map(Ldd, skew)))
-        K_P = _series_add(
-            (1.0, K_P),
-            (m, _series_product(S, Ldd, lambda s, d: np.outer(s, d) - np.outer(d, s))),
-            (platform.g * m, _series_map(L, lambda v: np.outer(v, E3) - v[2] * np.eye(3))),
-        )
-        F_R = _series_add((1.0, F_R), (-m, Ldd))
-        F_P = _series_add(
-            (1.0, F_P),
-            (-m, _series_product(S, Ldd, np.cross)),
-            (-platform.g * m, _series_map(L, lambda v: np.cross(v, E3))),
-        )
+        at = [row[tuple(o if k == j else 0 for k in range(N))] for o in (-2, -1, 0, 1, 2)]
+        terms = _rotor_terms(rot, platform.g)
+        zeta_s += rot.m * rot.rho[2]
+        S_tot[at] += terms["S"]
+        for name, total in parts.items():
+            total[at] += terms[name]
+        F[at, :3] += terms["F_R"]
+        F[at, 3:] += terms["F_P"]
 
     springs = spring_stiffness(platform)
-    keys = [zero] + sorted((set(S_tot) | set(J) | set(G_R) | set(G_P) | set(K_R) | set(K_P)) - {zero})
-    z3 = np.zeros((3, 3))
-    mass = np.empty((len(keys), 6, 6), dtype=complex)
-    gyro, stiff = np.empty_like(mass), np.empty_like(mass)
-    for i, k in enumerate(keys):
-        s = skew(S_tot.get(k, np.zeros(3)))
-        mass[i] = np.block([[np.eye(3) * (M_sigma if k == zero else 0.0), -s], [s, J.get(k, z3)]])
-        gyro[i] = np.block([[z3, G_R.get(k, z3)], [z3, G_P.get(k, z3)]])
-        stiff[i] = np.block([[z3, K_R.get(k, z3)], [z3, K_P.get(k, z3)]])
+    s = skews(S_tot)
+    mass = np.zeros((P, 6, 6), dtype=complex)
+    mass[0, :3, :3] = M_sigma * np.eye(3)
+    mass[:, :3, 3:], mass[:, 3:, :3], mass[:, 3:, 3:] = -s, s, parts["J"]
+    gyro, stiff = np.zeros_like(mass), np.zeros_like(mass)
+    gyro[:, :3, 3:], gyro[:, 3:, 3:] = parts["G_R"], parts["G_P"]
+    stiff[:, :3, 3:], stiff[:, 3:, 3:] = parts["K_R"], parts["K_P"]
     stiff[0] += springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
-    force_keys = sorted(set(F_R) | set(F_P))
-    force = [np.concatenate([F_R.get(k, np.zeros(3)), F_P.get(k, np.zeros(3))]) for k in force_keys]
-    S_mean = S_tot[zero].real
-    static = np.concatenate([[0.0, 0.0, -M_sigma * platform.g], -platform.g * np.cross(S_mean, E3)])
+    by_key = np.lexsort(keys.T[::-1])
+    S_mean = S_tot[0].real
+    static = np.array([0.0, 0.0, -M_sigma * platform.g, -platform.g * S_mean[1], platform.g * S_mean[0], 0.0])  # -g S × e3
     return PeriodicSystem(
-        speeds, np.array(keys, dtype=int).reshape(-1, N), mass, gyro, stiff,
-        np.array(force_keys, dtype=int).reshape(-1, N), np.array(force, dtype=complex).reshape(-1, 6),
+        speeds, keys, mass, gyro, stiff, keys[by_key], F[by_key],
         springs, platform.eta, platform.beta, static,
     )
 
@@ -323,19 +354,7 @@ def natural_frequencies(platform: RigidPlatform, rotors, system: PeriodicSystem 
         platform tips over under its weight).
     """
     system = system if system is not None else periodic_system(platform, rotors)
-    # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
-    D = np.diag([1.0, 1.0, 1.0] + [1.0 / float(np.hypot(platform.A, platform.B))] * 3)
-    M0, K0 = D @ system.mass[0].real @ D, D @ system.stiff[0].real @ D
-    try:
-        Lc = np.linalg.cholesky(0.5 * (M0 + M0.T))
-        Li = np.linalg.inv(Lc)
-        p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + K0.T)) @ Li.T)
-    except np.linalg.LinAlgError:
-        raise ConvergenceError(
-            "the 6-DOF natural frequencies cannot be computed in double precision: the platform's"
-            " masses, sizes and stiffnesses span too many orders of magnitude"
-        ) from None
-    shapes = D @ Li.T @ v
+    p2, shapes = _mean_eigen(system, float(np.hypot(platform.A, platform.B)))
     r_c = np.asarray(platform.r_c, dtype=float)
     J_c = platform.J_O1 - platform.M * (r_c @ r_c * np.eye(3) - np.outer(r_c, r_c))
     at_cog = shapes[:3] - skew(r_c) @ shapes[3:]  # translation of the centre of mass
@@ -356,3 +375,36 @@ def natural_frequencies(platform: RigidPlatform, rotors, system: PeriodicSystem 
             hint="stiffen the vertical isolators or lower the centre of mass ζ",
         )
     return Modes(np.sqrt(p2), dominant, shapes)
+
+
+def _mean_eigen(system: PeriodicSystem, length: float):
+    """p² (ascending) and mass-normalised shapes of K0 v = p² M0 v (:func:`natural_frequencies`), for
+    one system or a stack; ``length``: the platform's diagonal [m]."""
+    # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
+    D = np.diag([1.0, 1.0, 1.0] + [1.0 / length] * 3)
+    M0, K0 = D @ system.mass[..., 0, :, :].real @ D, D @ system.stiff[..., 0, :, :].real @ D
+    try:
+        Li = np.linalg.inv(np.linalg.cholesky(0.5 * (M0 + np.swapaxes(M0, -1, -2))))
+        p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + np.swapaxes(K0, -1, -2))) @ np.swapaxes(Li, -1, -2))
+    except np.linalg.LinAlgError:
+        raise ConvergenceError(
+            "the 6-DOF natural frequencies cannot be computed in double precision: the platform's"
+            " masses, sizes and stiffnesses span too many orders of magnitude"
+        ) from None
+    return p2, D @ np.swapaxes(Li, -1, -2) @ v
+
+
+def stacked_frequencies(system: PeriodicSystem, length: float) -> np.ndarray:
+    """Natural frequencies [rad/s] of each system of a :func:`stack` (as :func:`natural_frequencies`,
+    without mode shapes); ``length``: the platform's diagonal [m].
+
+    Raises
+    ------
+    PhysicsError
+        when a system has a vanishing or negative squared frequency (:func:`natural_frequencies`
+        says which and why).
+    """
+    p2 = _mean_eigen(system, length)[0]
+    if not np.all(p2[..., 0] > UNRESTRAINED * p2[..., -1]):
+        raise PhysicsError("a squared natural frequency vanishes or is negative", field="isolators")
+    return np.sqrt(p2)

@@ -25,12 +25,13 @@ D(Ω_m), which capture the resonant harmonics, starting from the previous soluti
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError, PhysicsError
-from foundation_calc.solvers.platform.dynamics import PeriodicSystem, natural_frequencies, periodic_system
+from foundation_calc.solvers.platform.dynamics import PeriodicSystem, natural_frequencies, periodic_system, stack
 
 #: A harmonic is retained when its estimated size exceeds this fraction of the largest one [-].
 TRUNCATION_TOL = 1e-12
@@ -102,7 +103,7 @@ class HarmonicSet:
         if last < 0:
             return np.full(omega.shape, -1)
         pos = np.searchsorted(self.omega, omega)
-        lo, hi = np.clip(pos - 1, 0, last), np.clip(pos, 0, last)
+        lo, hi = np.maximum(pos - 1, 0), np.minimum(pos, last)  # (np.clip costs more on small sets)
         nearest = np.where(np.abs(self.omega[lo] - omega) <= np.abs(self.omega[hi] - omega), lo, hi)
         return np.where(np.abs(self.omega[nearest] - omega) <= self.tolerance, nearest, -1)
 
@@ -172,10 +173,22 @@ class SteadyState:
         """Peak over time of |T q_dyn(t)| for each map T in ``maps`` (shape (C, k, 6)), summed over
         frequencies (exact for one frequency: the orbit of 2 Re(X e^{iθ}) is an ellipse with
         semi-major axis sqrt(2 (|X|² + |X·X|)))."""
-        positive = (self.omega > 0) & ~self._at_zero()
-        X = np.einsum("ckj,fj->cfk", np.asarray(maps, dtype=float), self.amplitudes[positive])
-        size = np.abs(X) ** 2
-        return np.sqrt(2.0 * (size.sum(axis=2) + np.abs((X * X).sum(axis=2)))).sum(axis=1)
+        return orbit_peaks(maps, self.amplitudes[self.positive])
+
+    @property
+    def positive(self) -> np.ndarray:
+        """Which frequencies are positive (not round-off of zero): the amplitudes that make the motion."""
+        return (self.omega > 0) & ~self._at_zero()
+
+
+def orbit_peaks(maps, amplitudes) -> np.ndarray:
+    """Peak over time of |T q(t)| for q(t) = Σ 2 Re(Q_f e^{iΩ_f t}) over ``amplitudes`` Q_f of positive
+    frequencies (shape (..., F, 6)) and each map T of ``maps`` (shape (..., C, k, 6)): the sum of the
+    semi-major axes sqrt(2 (|X|² + |X·X|)), X = T Q_f, of the orbits (exact for one frequency); shape
+    (..., C) [m]."""
+    X = np.einsum("...ckj,...fj->...cfk", np.asarray(maps, dtype=float), amplitudes)
+    size = np.abs(X) ** 2
+    return np.sqrt(2.0 * (size.sum(axis=-1) + np.abs((X * X).sum(axis=-1)))).sum(axis=-1)
 
 
 def _weights(length: float) -> np.ndarray:
@@ -196,19 +209,26 @@ class _Couplings:
     @property
     def stacked(self) -> np.ndarray:
         """[K_kᵀ; G_kᵀ; M_kᵀ] (18×6 each), so that [Q, iΩQ, -Ω²Q] @ W_k = (A_k(Ω) Q)ᵀ."""
-        return np.concatenate([self.stiff, self.gyro, self.mass], axis=2).transpose(0, 2, 1)
+        return np.swapaxes(np.concatenate([self.stiff, self.gyro, self.mass], axis=-1), -1, -2)
+
+
+def _gathered(rows, values, size: int) -> np.ndarray:
+    """Σ of ``values`` (shape (..., n, k...)) into ``size`` rows along axis -3 (for k = (6, 6)) or
+    -2 (for k = (6,)), row ``rows[i]`` receiving ``values[..., i, ...]``, in order of i."""
+    axis = -3 if values.ndim >= 3 and values.shape[-2:] == (6, 6) else -2
+    moved = np.moveaxis(values, axis, 0)
+    total = np.zeros((size,) + moved.shape[1:], dtype=complex)
+    np.add.at(total, rows, moved)
+    return np.moveaxis(total, 0, axis)
 
 
 def _couplings(system: PeriodicSystem, tolerance: float) -> _Couplings:
+    """(Of a single system or of a :func:`~foundation_calc.solvers.platform.dynamics.stack`.)"""
     keys = system.keys[1:]
     offsets = distinct(keys, system.frequencies(keys), tolerance)
     row = offsets.find(system.frequencies(keys))
-    merged = []
-    for part in (system.stiff[1:], system.gyro[1:], system.mass[1:]):
-        total = np.zeros((len(offsets), 6, 6), dtype=complex)
-        np.add.at(total, row, part)
-        merged.append(total)
-    return _Couplings(offsets, *merged)
+    parts = (system.stiff[..., 1:, :, :], system.gyro[..., 1:, :, :], system.mass[..., 1:, :, :])
+    return _Couplings(offsets, *(_gathered(row, part, len(offsets)) for part in parts))
 
 
 class _Operator:
@@ -220,6 +240,14 @@ class _Operator:
         self.diagonal = system.dynamic_matrices(harmonics.omega)
         self.blocks = couplings.stacked
         self.links = links if links is not None else self.links_for(harmonics.omega)
+
+    def part(self, i: int) -> "_Operator":
+        """The operator of system ``i`` of a stack."""
+        c = self.couplings
+        one = copy.copy(self)
+        one.couplings = _Couplings(c.offsets, c.stiff[i], c.gyro[i], c.mass[i])
+        one.diagonal, one.blocks = self.diagonal[i], self.blocks[i]
+        return one
 
     def links_for(self, omega) -> list[tuple[np.ndarray, np.ndarray]]:
         """For each coupling offset Ω_k: which of the frequencies ``omega`` (Ω_m) have Ω_m - Ω_k in
@@ -234,45 +262,46 @@ class _Operator:
     def coupled(self, Q, links, rows: int) -> np.ndarray:
         """Σ_{k≠0} A_k(Ω_m - Ω_k) Q(Ω_m - Ω_k) for ``rows`` block rows described by ``links``."""
         w = self.harmonics.omega[:, None]
-        Z = np.concatenate([Q, 1j * w * Q, -w * w * Q], axis=1)
-        out = np.zeros((rows, 6), dtype=complex)
-        for W, (hit, src) in zip(self.blocks, links):
+        Z = np.concatenate([Q, 1j * w * Q, -w * w * Q], axis=-1)
+        out = np.zeros(Q.shape[:-2] + (rows, 6), dtype=complex)
+        for p, (hit, src) in enumerate(links):
             if len(hit):
-                out[hit] += Z[src] @ W
+                out[..., hit, :] += Z[..., src, :] @ self.blocks[..., p, :, :]
         return out
 
     def apply(self, Q) -> np.ndarray:
-        """(HB) left side for amplitudes Q (shape (H, 6))."""
-        return np.einsum("hij,hj->hi", self.diagonal, Q) + self.coupled(Q, self.links, len(Q))
+        """(HB) left side for amplitudes Q (shape (H, 6); of a stack of systems (V, H, 6))."""
+        return np.einsum("...hij,...hj->...hi", self.diagonal, Q) + self.coupled(Q, self.links, Q.shape[-2])
 
     def dense(self) -> np.ndarray:
-        """The whole matrix, shape (6H, 6H)."""
+        """The whole matrix, shape (6H, 6H) (of a stack of systems: (V, 6H, 6H))."""
         H = len(self.harmonics)
-        A = np.zeros((H, 6, H, 6), dtype=complex)
+        lead = self.diagonal.shape[:-3]
+        A = np.zeros(lead + (H, H, 6, 6), dtype=complex)
         idx = np.arange(H)
-        A[idx, :, idx, :] = self.diagonal
+        A[..., idx, idx, :, :] = self.diagonal
         c = self.couplings
         for p, (hit, src) in enumerate(self.links):
             w = self.harmonics.omega[src][:, None, None]
-            A[hit, :, src, :] += c.stiff[p] + 1j * w * c.gyro[p] - w * w * c.mass[p]
-        return A.reshape(6 * H, 6 * H)
+            at = (Ellipsis, p, None, slice(None), slice(None))
+            A[..., hit, src, :, :] += c.stiff[at] + 1j * w * c.gyro[at] - w * w * c.mass[at]
+        return np.swapaxes(A, -3, -2).reshape(lead + (6 * H, 6 * H))
 
 
 def _loads(system: PeriodicSystem, static: np.ndarray, tolerance: float) -> tuple[HarmonicSet, np.ndarray]:
     """Frequencies and values of the right side F_m - K_m q_s of (HB)."""
     vectors = np.concatenate([system.force_keys, system.keys[1:]])
-    values = np.concatenate([system.force, -(system.stiff[1:] @ static)])
+    spill = -(system.stiff[..., 1:, :, :] @ static[..., None, :, None])[..., 0]
+    values = np.concatenate([system.force, spill], axis=-2)
     where = distinct(vectors, system.frequencies(vectors), tolerance)
-    out = np.zeros((len(where), 6), dtype=complex)
-    np.add.at(out, where.find(system.frequencies(vectors)), values)
-    return where, out
+    return where, _gathered(where.find(system.frequencies(vectors)), values, len(where))
 
 
 def _right_side(harmonics: HarmonicSet, loads) -> np.ndarray:
     where, values = loads
-    rhs = np.zeros((len(harmonics), 6), dtype=complex)
+    rhs = np.zeros(values.shape[:-2] + (len(harmonics), 6), dtype=complex)
     row = harmonics.find(where.omega)
-    rhs[row[row >= 0]] = values[row >= 0]
+    rhs[..., row[row >= 0], :] = values[..., row >= 0, :]
     return rhs
 
 
@@ -295,11 +324,16 @@ def _solve(op: _Operator, rhs: np.ndarray, guess: np.ndarray, rtol: float = GMRE
 
 
 def _require_regular(system: PeriodicSystem, harmonics: HarmonicSet, diagonal, length: float, natural) -> None:
-    """Raise PhysicsError when an undamped diagonal block is singular (an exact resonance)."""
+    """Raise PhysicsError when an undamped diagonal block is singular (an exact resonance); of a
+    stack of systems, for the first system that has one (``natural(i)`` its frequencies)."""
     if system.damped or len(harmonics) == 0:
         return
     scale = np.diag(1.0 / _weights(length))
     rcond = 1.0 / np.linalg.cond(scale @ diagonal @ scale)
+    if rcond.ndim > 1:
+        for i in np.nonzero(~np.all(rcond > SINGULAR_RCOND, axis=1))[0][:1]:
+            _require_regular(system, harmonics, diagonal[i], length, lambda: natural(i))
+        return
     bad = np.nonzero(~(rcond > SINGULAR_RCOND))[0]
     if len(bad) == 0:
         return
@@ -366,7 +400,10 @@ def steady_state(platform, rotors, max_order: int | None = None) -> SteadyState:
             wanted = wanted[np.abs(candidates.vectors[wanted]).sum(axis=1) <= max_order]
         wanted = wanted[: max(MAX_HARMONICS - len(harmonics), 0)]
         mirror = candidates.find(-candidates.omega[wanted])  # q is real: Q(-Ω) = conj Q(Ω)
-        wanted = np.union1d(wanted, mirror[mirror >= 0])
+        chosen = np.zeros(len(candidates), dtype=bool)  # wanted ∪ mirror, ascending (np.union1d imports numpy.ma)
+        chosen[wanted] = True
+        chosen[mirror[mirror >= 0]] = True
+        wanted = np.flatnonzero(chosen)
         if len(wanted) == 0:
             break
         harmonics, Q = harmonics.union(candidates.subset(wanted), Q, estimate[wanted])
@@ -398,12 +435,14 @@ class VariantBasis:
         keep[whole.find(-nominal.omega[keep])] = True  # q is real: Ω and -Ω together
         keep[nominal.omega == 0.0] = True
         self.system = nominal.system
+        self.length = length
         self.harmonics = whole.subset(keep)
         self.amplitudes = nominal.amplitudes[keep]
         self.order = nominal.order
         self.truncation_error = nominal.truncation_error + 2.0 * float(np.sum(size[~keep]))
         op = _Operator(nominal.system, _couplings(nominal.system, tolerance), self.harmonics)
         self.links = op.links
+        self.positive = self.harmonics.omega > tolerance
         self.dense = 6 * len(self.harmonics) <= DENSE_UNKNOWNS
         self.inverse = np.linalg.inv(op.dense()) if self.dense else None
 
@@ -424,32 +463,57 @@ def steady_state_near(basis: VariantBasis, platform, rotors, system: PeriodicSys
         as :func:`steady_state`.
     """
     system = system if system is not None else periodic_system(platform, rotors)
-    if not (np.array_equal(system.speeds, basis.system.speeds) and np.array_equal(system.keys, basis.system.keys)):
-        raise ValueError("steady_state_near needs the nominal's rotors and speeds")
-    length = float(np.hypot(platform.A, platform.B))
-    tolerance = _tolerance(system)
-    op = _Operator(system, _couplings(system, tolerance), basis.harmonics, basis.links)
-    _require_regular(system, basis.harmonics, op.diagonal, length, lambda: natural_frequencies(platform, rotors, system).frequencies)
-    rhs = _right_side(basis.harmonics, _loads(system, _static(system), tolerance))
-    Q = _refined(op, rhs, basis) if basis.dense else _solve(op, rhs, basis.amplitudes, VARIANT_GMRES_TOL)
+    static, Q = steady_states_near(basis, stack([system]), lambda i: natural_frequencies(platform, rotors, system).frequencies)
     vectors, omega = basis.harmonics.vectors, basis.harmonics.omega
-    return SteadyState(_static(system), vectors, omega, Q, system, basis.order, basis.truncation_error)
+    return SteadyState(static[0], vectors, omega, Q[0], system, basis.order, basis.truncation_error)
+
+
+def steady_states_near(basis: VariantBasis, systems: PeriodicSystem, natural) -> tuple[np.ndarray, np.ndarray]:
+    """Static equilibria (V, 6) and amplitudes (V, H, 6) on the basis' frequencies of a stack of
+    variants ``systems`` (:func:`~foundation_calc.solvers.platform.dynamics.stack`), solved
+    together as :func:`steady_state_near` solves one; ``natural(i)``: the natural frequencies of
+    variant i [rad/s], for the message of an exact resonance.
+
+    Raises
+    ------
+    PhysicsError
+        as :func:`steady_state`, for the first variant that has no steady state.
+    """
+    if not (np.array_equal(systems.speeds, basis.system.speeds) and np.array_equal(systems.keys, basis.system.keys)):
+        raise ValueError("steady_state_near needs the nominal's rotors and speeds")
+    tolerance = _tolerance(systems)
+    op = _Operator(systems, _couplings(systems, tolerance), basis.harmonics, basis.links)
+    _require_regular(systems, basis.harmonics, op.diagonal, basis.length, natural)
+    static = _static(systems)
+    rhs = _right_side(basis.harmonics, _loads(systems, static, tolerance))
+    return static, _refined(op, rhs, basis)
 
 
 def _refined(op: _Operator, rhs: np.ndarray, basis: VariantBasis) -> np.ndarray:
-    """Iterative refinement Q ← Q + A₀⁻¹ (F - A Q) from the nominal amplitudes, with the nominal
-    inverse A₀⁻¹; a direct solve when it does not contract (a variant far from the nominal)."""
-    Q, last, goal = basis.amplitudes, np.inf, VARIANT_GMRES_TOL * float(np.linalg.norm(rhs))
-    for _ in range(REFINEMENT_STEPS):
+    """Each variant of a stack (``rhs``: (V, H, 6)) from the nominal amplitudes: iterative refinement
+    Q ← Q + A₀⁻¹ (F - A Q) with the nominal inverse A₀⁻¹ until the residual is below
+    :data:`VARIANT_GMRES_TOL` of F; a direct solve (or GMRES for a large set) for a variant whose
+    residual does not contract (far from the nominal) and every variant of a set too large to keep
+    the inverse."""
+    V, H = rhs.shape[:2]
+    Q = np.array(np.broadcast_to(basis.amplitudes, rhs.shape))
+    goal = VARIANT_GMRES_TOL * np.linalg.norm(rhs, axis=(1, 2))
+    last, active, direct = np.full(V, np.inf), np.full(V, basis.dense), np.full(V, not basis.dense)
+    for _ in range(REFINEMENT_STEPS if basis.dense else 0):
         residual = rhs - op.apply(Q)
-        size = float(np.linalg.norm(residual))
-        if size <= goal:
-            return Q
-        if size > REFINEMENT_CONTRACTION * last:
+        size = np.linalg.norm(residual, axis=(1, 2))
+        active &= size > goal
+        stuck = active & (size > REFINEMENT_CONTRACTION * last)
+        direct |= stuck
+        active &= ~stuck
+        if not active.any():
             break
         last = size
-        Q = Q + (basis.inverse @ residual.ravel()).reshape(Q.shape)
-    return _solve(op, rhs, Q)
+        Q[active] += (residual[active].reshape(-1, 6 * H) @ basis.inverse.T).reshape(-1, H, 6)
+    direct |= active
+    for i in np.nonzero(direct)[0]:
+        Q[i] = _solve(op.part(i), rhs[i], Q[i], VARIANT_GMRES_TOL)
+    return Q
 
 
 def _tolerance(system: PeriodicSystem) -> float:
@@ -470,7 +534,7 @@ def _estimates(system, op: _Operator, candidates: HarmonicSet, Q, loads, length,
 def _static(system: PeriodicSystem) -> np.ndarray:
     """Static equilibrium q_s from K_springs q_s = weight and its moment about O1."""
     try:
-        return np.linalg.solve(system.springs, system.static_load)
+        return np.linalg.solve(system.springs, system.static_load[..., None])[..., 0]
     except np.linalg.LinAlgError:
         raise PhysicsError(
             "the platform is not restrained: the isolators' stiffness matrix is singular",

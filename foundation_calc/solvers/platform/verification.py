@@ -23,11 +23,22 @@ from foundation_calc.solvers.platform.dynamics import (
     Rotor,
     inertia_about_corner,
     natural_frequencies,
+    periodic_system,
     point_map,
-    skew,
+    skews,
     spring_stiffness,
+    stack,
+    stacked_frequencies,
 )
-from foundation_calc.solvers.platform.harmonic_balance import SteadyState, VariantBasis, combination_label, steady_state, steady_state_near
+from foundation_calc.solvers.platform.harmonic_balance import (
+    SteadyState,
+    VariantBasis,
+    combination_label,
+    orbit_peaks,
+    steady_state,
+    steady_state_near,
+    steady_states_near,
+)
 
 #: Tolerances of the sensitivity table: relative for stiffnesses and ζ, absolute [m] for a, b, c.
 STIFFNESS_TOLERANCE = 0.01
@@ -154,10 +165,16 @@ class Verification:
         return float(np.linalg.norm(self.static[3:]))
 
 
+def relative_maps(corners, r_c) -> np.ndarray:
+    """T with T q = motion of each corner p relative to the centre of mass r_c, [0, -[p - r_c]×];
+    ``corners`` (C, 3) [m], ``r_c`` (..., 3) [m]; shape (..., C, 3, 6)."""
+    arm = np.asarray(corners, dtype=float) - np.asarray(r_c, dtype=float)[..., None, :]
+    return np.concatenate([np.zeros(arm.shape + (3,)), -skews(arm)], axis=-1)
+
+
 def measure(state: SteadyState, r_c, corners, u) -> Verification:
     """Amplitudes, rotations, rocking and corner peaks of a steady state."""
-    rc = np.asarray(r_c, dtype=float)
-    relative = np.array([np.hstack([np.zeros((3, 3)), -skew(p - rc)]) for p in corners])
+    relative = relative_maps(corners, r_c)
     absolute = np.array([point_map(p) for p in corners])
     unit = np.eye(6)[:, None, :]
     peaks = state.peaks(np.concatenate([np.pad(unit, ((0, 0), (0, 2), (0, 0))), absolute, relative]))
@@ -199,13 +216,41 @@ def _measured(state: SteadyState, design: PlatformDesign, model: PlatformModel, 
     return measure(state, platform.r_c, corners, design.u)
 
 
+def _variant_system(basis: VariantBasis, changes: dict, platform, rotors):
+    """The equations of a tolerance variant: a change of stiffness alone keeps the rotors' terms."""
+    if changes.keys() == {"stiffness"}:
+        return basis.system.with_springs(spring_stiffness(platform))
+    return periodic_system(platform, rotors)
+
+
 def _variant(design: PlatformDesign, model: PlatformModel, basis: VariantBasis, changes: dict):
-    """The verification and the natural frequencies of a tolerance variant, solved on the nominal's
-    harmonics (:func:`steady_state_near`); a change of stiffness alone keeps the rotors' terms."""
+    """(rocking %, static offset %) and the natural frequencies of one tolerance variant, solved on
+    the nominal's harmonics (:func:`steady_state_near`)."""
     platform, rotors = build(design, model, **changes)
-    system = basis.system.with_springs(spring_stiffness(platform)) if changes.keys() == {"stiffness"} else None
-    state = steady_state_near(basis, platform, rotors, system)
-    return _measured(state, design, model, platform), natural_frequencies(platform, rotors, state.system).frequencies
+    state = steady_state_near(basis, platform, rotors, _variant_system(basis, changes, platform, rotors))
+    v = _measured(state, design, model, platform)
+    return (v.rocking_percent, v.static_offset_percent), natural_frequencies(platform, rotors, state.system).frequencies
+
+
+def _variants_together(design: PlatformDesign, model: PlatformModel, basis: VariantBasis, changes: list[dict]):
+    """(rocking %, static offset %) (shape (V, 2)) and natural frequencies (V, 6) of every tolerance
+    variant, as :func:`_variant` gives them one by one, from one stacked solve
+    (:func:`steady_states_near`) and stacked eigenproblems.
+
+    Raises
+    ------
+    PhysicsError, ConvergenceError
+        when any variant has no steady state or no six positive natural frequencies.
+    """
+    built = [build(design, model, **c) for c in changes]
+    systems = [_variant_system(basis, c, platform, rotors) for c, (platform, rotors) in zip(changes, built)]
+    together = stack(systems)
+    static, Q = steady_states_near(basis, together, lambda i: natural_frequencies(*built[i], systems[i]).frequencies)
+    frequencies = stacked_frequencies(together, basis.length)
+    relative = relative_maps(product_corners(design.A, design.B, model.product_height), [p.r_c for p, _ in built])
+    rocking = orbit_peaks(relative, Q[:, basis.positive]).max(axis=1)
+    offset = np.linalg.norm(relative @ static[:, None, :, None], axis=(2, 3)).max(axis=1)
+    return 100.0 * np.stack([rocking, offset], axis=1) / design.u, frequencies
 
 
 #: Combinations of the rotor speeds up to this order |n|₁ are watched for resonances under tolerances.
@@ -235,6 +280,14 @@ class SensitivityRow:
         if self.resonance:
             return float("inf")
         return max(x for x in (self.rocking_plus, self.rocking_minus, self.static_plus, self.static_minus) if x is not None)
+
+
+def _one_variant(design: PlatformDesign, model: PlatformModel, basis: VariantBasis, change: dict):
+    """:func:`_variant`, or ((None, None), the message) for a variant without a steady state."""
+    try:
+        return _variant(design, model, basis, change)
+    except (PhysicsError, ConvergenceError) as exc:
+        return (None, None), str(exc)
 
 
 def _scaled(stiffness, cells, factor):
@@ -288,7 +341,9 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
     """Rocking and static tilt from ±1 % on each stiffness group, ±1 cm on a, b, c, ±1 % on ζ,
     computed with the isolators' damping of ``model`` on the harmonics of ``nominal`` that matter
     (:class:`VariantBasis`);
-    ``modes``: the design's natural frequencies [rad/s].
+    ``modes``: the design's natural frequencies [rad/s]. On a small basis (most designs) the 28
+    variants are solved together (:func:`_variants_together`); on a large one, or when one of
+    them has no steady state, one at a time.
 
     A row whose range makes a natural frequency (undamped, mean system) cross a combination of
     the rotor speeds of order |n|₁ <= 2 is marked resonant, and so is a row with a variant that
@@ -302,18 +357,23 @@ def sensitivity(design: PlatformDesign, model: PlatformModel, nominal: Verificat
         for n, w in zip(state.vectors, state.omega)
         if w > 0 and 0 < np.abs(n).sum() <= WATCHED_ORDER
     ]
+    table = list(_tolerance_variants(design))
+    changes = [change for _, _, *pair in table for change in pair]
+    solved = None
+    if basis.dense:  # a large set is solved by GMRES, variant by variant: stacking would only cost memory
+        try:
+            numbers, frequencies = _variants_together(design, model, basis, changes)
+            solved = [((float(r), float(s)), f) for (r, s), f in zip(numbers, frequencies)]
+        except (PhysicsError, ConvergenceError):  # e.g. an undamped variant exactly at resonance: which one, and why
+            pass
+    if solved is None:
+        solved = [_one_variant(design, model, basis, change) for change in changes]
     rows = []
-    for name, tolerance, *changes in _tolerance_variants(design):
-        numbers, variant_modes, failure = [], [], ""
-        for change in changes:
-            try:
-                v, frequencies = _variant(design, model, basis, change)
-                variant_modes.append(frequencies)
-                numbers.append((v.rocking_percent, v.static_offset_percent))
-            except (PhysicsError, ConvergenceError) as exc:  # e.g. an undamped variant exactly at resonance
-                numbers.append((None, None))
-                failure = str(exc)
+    for k, (name, tolerance, *_) in enumerate(table):
+        pair = solved[2 * k : 2 * k + 2]
+        variant_modes = [f for _, f in pair if not isinstance(f, str)]
+        failure = next((f for _, f in reversed(pair) if isinstance(f, str)), "")
         resonance = _crossing(watched, modes, variant_modes) or failure
-        (rp, sp), (rm, sm) = numbers
+        (rp, sp), (rm, sm) = (n for n, _ in pair)
         rows.append(SensitivityRow(name, tolerance, rp, rm, sp, sm, resonance))
     return sorted(rows, key=lambda r: -r.worst)

@@ -1,0 +1,115 @@
+"""Vibration codes a scene may name in ``[limits] code``: their zone tables, stored as data.
+
+ISO 10816-3:2009, *Mechanical vibration — Evaluation of machine vibration by measurements on
+non-rotating parts — Part 3: Industrial machines with nominal power above 15 kW and nominal
+speeds between 120 r/min and 15 000 r/min when measured in situ*, Annex A (normative):
+
+- Table A.1, group 1: large machines, rated power above 300 kW up to 50 MW;
+- Table A.2, group 2: medium-size machines, rated power above 15 kW up to 300 kW.
+
+Each table gives the zone boundaries A/B, B/C, C/D of the broad-band r.m.s. vibration velocity
+[mm/s] for a rigid and a flexible support (clause 3.4: rigid when the lowest natural frequency
+of the machine on its support is at least 25 % above the main excitation frequency). Zones
+(clause 6.2.2): A, newly commissioned machines; B, unrestricted long-term operation; C, not
+suitable for long-term continuous operation; D, severe enough to cause damage. A value equal to
+a boundary belongs to the lower zone.
+
+The tables' displacement boundaries (r.m.s. µm, the governing criterion below 600 r/min) are
+not stored. ISO 20816-3:2022, which replaced ISO 10816-3, is not accepted: its tables have not
+been checked against these.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: Zone names in order of severity.
+ZONES = ("A", "B", "C", "D")
+
+
+@dataclass(frozen=True)
+class ZoneTable:
+    """The zone boundaries of one code, machine group and support class.
+
+    Attributes
+    ----------
+    code : the code's name as a scene writes it, e.g. ``"ISO 10816-3"``
+    clause : edition, annex and table the boundaries come from
+    group : machine group (1 or 2)
+    foundation : support class, ``"rigid"`` or ``"flexible"``
+    boundaries_mm_s : r.m.s. velocity at the zone boundaries A/B, B/C, C/D [mm/s]
+    speed_range_rpm : range of machine speeds the code applies to [rpm]
+    power_range_kw : range of rated power of the group, (above, up to and including) [kW]
+    """
+
+    code: str
+    clause: str
+    group: int
+    foundation: str
+    boundaries_mm_s: tuple[float, float, float]
+    speed_range_rpm: tuple[float, float]
+    power_range_kw: tuple[float, float]
+
+    @property
+    def boundaries(self) -> tuple[float, float, float]:
+        """The zone boundaries A/B, B/C, C/D [m/s]."""
+        return tuple(b / 1e3 for b in self.boundaries_mm_s)
+
+    @property
+    def title(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid"``."""
+        return f"{self.code}, group {self.group}, {self.foundation}"
+
+
+_ISO_10816_3 = dict(code="ISO 10816-3", speed_range_rpm=(120.0, 15000.0))
+_GROUP_1 = dict(group=1, clause="ISO 10816-3:2009, Annex A, Table A.1", power_range_kw=(300.0, 50000.0))
+_GROUP_2 = dict(group=2, clause="ISO 10816-3:2009, Annex A, Table A.2", power_range_kw=(15.0, 300.0))
+
+#: (code, group, foundation) -> zone table.
+TABLES: dict[tuple[str, int, str], ZoneTable] = {
+    (t.code, t.group, t.foundation): t
+    for t in (
+        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="rigid", boundaries_mm_s=(2.3, 4.5, 7.1)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="flexible", boundaries_mm_s=(3.5, 7.1, 11.0)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="rigid", boundaries_mm_s=(1.4, 2.8, 4.5)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="flexible", boundaries_mm_s=(2.3, 4.5, 7.1)),
+    )
+}
+
+#: Code names that have tables (the scene model's ``code`` choices must be these).
+CODES = tuple(sorted({code for code, _, _ in TABLES}))
+
+
+def zone(velocity_rms: float, table: ZoneTable) -> str:
+    """The zone of an r.m.s. velocity [m/s] in ``table``; a boundary value belongs to the lower zone.
+
+    >>> zone(2.8e-3, TABLES["ISO 10816-3", 2, "rigid"]), zone(2.81e-3, TABLES["ISO 10816-3", 2, "rigid"])
+    ('B', 'C')
+    """
+    return ZONES[sum(velocity_rms > b for b in table.boundaries)]
+
+
+def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
+    """Why the code may not apply to this machine: speed outside its range, power unknown or
+    outside the group's range. Empty when it applies."""
+    found = []
+    lo, hi = table.speed_range_rpm
+    if not lo <= speed_rpm <= hi:
+        found.append(
+            f"{table.code} applies to speeds of {lo:g} to {hi:g} rpm; the machine runs at {speed_rpm:.6g} rpm"
+        )
+    above, upto = table.power_range_kw
+    if power_kw is None:
+        found.append(
+            f"the machine's rated power is not given ([limits] machine_power): group {table.group}"
+            f" ({above:g} kW < P <= {upto:g} kW) is not verified"
+        )
+    elif not above < power_kw <= upto:
+        found.append(
+            f"machine_power = {power_kw:.6g} kW is outside group {table.group} of {table.code}"
+            f" ({above:g} kW < P <= {upto:g} kW)"
+        )
+    return found
+
+
+__all__ = ["CODES", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone"]
