@@ -64,8 +64,11 @@ def test_variants_solved_together_match_one_at_a_time(name):
         np.testing.assert_allclose(modes, want_modes, rtol=1e-12)
 
 
-@pytest.mark.parametrize("name", ["platform_damped", "three_rotors_damped"])
+@pytest.mark.parametrize(
+    "name", ["platform_damped", "three_rotors_damped", "platform_paper_example", "platform_explicit_vertical"]
+)
 def test_variants_solved_together_match_their_own_full_solve(name):
+    """Also for purely translating designs, whose nominal needs ω alone but whose variants rock."""
     design, model, nominal, basis, changes = _variants(name)
     numbers, frequencies = verification._variants_together(design, model, basis, changes)
     largest = max(nominal.amplitudes)  # [m]

@@ -7,6 +7,7 @@ command, for ``fcalc --help`` and the tests) is built on first use.
 from __future__ import annotations
 
 import importlib
+import os
 import sys
 
 import typer
@@ -24,6 +25,12 @@ EXIT_CODES_HELP = (
     " 3 invalid scene (unreadable, bad TOML, failed validation, physically impossible);"
     " 4 internal error; 141 stdout closed by its reader (fcalc ... | head)."
 )
+
+
+#: Threads of the linear-algebra library, unless the environment sets them: fcalc's matrices have
+#: at most a few hundred unknowns, where threads cost more than they give (several times the time
+#: of a platform check on a busy machine); batches run in processes instead (``check --jobs``).
+BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 
 
 def _version(value: bool) -> None:
@@ -63,6 +70,9 @@ def __getattr__(name: str):
 
 
 def main() -> None:
-    """Console-script entry point: only the module of the command asked for is imported."""
+    """Console-script entry point: only the module of the command asked for is imported, with one
+    linear-algebra thread (:data:`BLAS_THREAD_VARIABLES`) unless the environment says otherwise."""
+    for variable in BLAS_THREAD_VARIABLES:
+        os.environ.setdefault(variable, "1")
     command = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
     build_app((command,) if command in COMMANDS else tuple(COMMANDS))()

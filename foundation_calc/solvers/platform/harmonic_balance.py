@@ -51,6 +51,13 @@ GMRES_TOL = TRUNCATION_TOL
 #: Tolerance variants drop nominal harmonics whose peaks sum to less than this fraction of the largest [-].
 VARIANT_TOL = 1e-6
 
+#: Layers of neighbouring frequencies added to a small basis of the tolerance variants, and the
+#: size up to which they are added [-]: a variant rocks where a purely translating nominal does
+#: not, and its rocking couples the forced harmonics to their neighbours (2ω ... 5ω of a single
+#: rotor), which the nominal never needed. A larger basis came from a nominal that rocks already.
+VARIANT_LAYERS = 2
+VARIANT_SMALL_SET = 13
+
 #: Relative residual at which a tolerance variant's solve stops [-] (well below VARIANT_TOL).
 VARIANT_GMRES_TOL = 1e-9
 
@@ -417,10 +424,10 @@ class VariantBasis:
     index tables of the operator on them and, for a small set, the nominal operator's inverse.
 
     Harmonics are dropped from the nominal set, smallest first, while the sum of their peaks stays
-    below :data:`VARIANT_TOL` times the largest: a variant's numbers are then exact to that
-    fraction of the response plus the nominal's truncation error, which is its ``truncation_error``.
-    Up to :data:`DENSE_UNKNOWNS` unknowns the inverse is kept (dense); larger sets are solved by
-    GMRES from the nominal amplitudes.
+    below :data:`VARIANT_TOL` times the largest; then up to :data:`VARIANT_LAYERS` layers of
+    neighbouring frequencies are added while the set has at most :data:`VARIANT_SMALL_SET`, since
+    a variant may rock where the nominal does not. Up to :data:`DENSE_UNKNOWNS` unknowns the inverse is kept (dense);
+    larger sets are solved by GMRES from the nominal amplitudes.
     """
 
     def __init__(self, nominal: SteadyState, length: float) -> None:
@@ -434,13 +441,20 @@ class VariantBasis:
         whole = HarmonicSet(nominal.vectors, nominal.omega, tolerance)
         keep[whole.find(-nominal.omega[keep])] = True  # q is real: Ω and -Ω together
         keep[nominal.omega == 0.0] = True
+        couplings = _couplings(nominal.system, tolerance)
+        harmonics, amplitudes = whole.subset(keep), nominal.amplitudes[keep]
+        for _ in range(VARIANT_LAYERS):
+            more = harmonics.neighbours(couplings.offsets.vectors, nominal.system.speeds)
+            if len(more) == 0 or len(harmonics) + len(more) > VARIANT_SMALL_SET:
+                break
+            harmonics, amplitudes = harmonics.union(more, amplitudes, np.zeros((len(more), 6), dtype=complex))
         self.system = nominal.system
         self.length = length
-        self.harmonics = whole.subset(keep)
-        self.amplitudes = nominal.amplitudes[keep]
-        self.order = nominal.order
+        self.harmonics = harmonics
+        self.amplitudes = amplitudes
+        self.order = max(nominal.order, int(np.max(np.abs(harmonics.vectors).sum(axis=1))))
         self.truncation_error = nominal.truncation_error + 2.0 * float(np.sum(size[~keep]))
-        op = _Operator(nominal.system, _couplings(nominal.system, tolerance), self.harmonics)
+        op = _Operator(nominal.system, couplings, self.harmonics)
         self.links = op.links
         self.positive = self.harmonics.omega > tolerance
         self.dense = 6 * len(self.harmonics) <= DENSE_UNKNOWNS
