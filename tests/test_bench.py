@@ -29,7 +29,7 @@ SCENE = CONFIGS / "frame_saw_extra_resonance.toml"
 def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
-    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch"]
+    args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch", "--skip", "points"]
     args += ["--skip", "runup"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
@@ -110,7 +110,7 @@ def test_plot_without_matplotlib_is_a_usage_error(runner, monkeypatch, tmp_path)
 
 def test_throughput_section(runner):
     args = ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"]
-    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "runup"])
+    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "points", "--skip", "runup"])
     assert result.exit_code == 0, result.output
     doc = json.loads(result.stdout)
     assert doc["scenes"] == [] and doc["startup"] is None

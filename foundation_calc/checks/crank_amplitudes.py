@@ -17,7 +17,7 @@ amplitudes; an undamped speed within a hair of a resonance of the checked approx
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -225,15 +225,17 @@ def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
     names = ["C", *(p.name for p in points)]
     horizontal = np.array([0.0, *(p.horizontal for p in points)])
     height = np.array([0.0, *(p.height for p in points)])
-    located, rms = {}, {}
-    for start in range(0, len(names), POINT_CHUNK):
-        chunk = slice(start, start + POINT_CHUNK)
-        pk = point_peaks(motion, horizontal[chunk], height[chunk])
-        rm = point_rms(motion, horizontal[chunk], height[chunk])
-        for i, name in enumerate(names[chunk]):
-            located[name] = Peaks(pk.displacement[i], pk.velocity[i], pk.acceleration[i])
-            rms[name] = Rms(rm.displacement[i], rm.velocity[i], rm.acceleration[i])
-    return located, rms
+    chunks = [
+        (point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]),
+         point_rms(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]))
+        for i in range(0, len(names), POINT_CHUNK)
+    ]
+    peaks = {f.name: np.concatenate([getattr(pk, f.name) for pk, _ in chunks]) for f in fields(Peaks)}
+    rms = {f.name: np.concatenate([getattr(rm, f.name) for _, rm in chunks]) for f in fields(Rms)}
+    return (
+        {name: Peaks(**{q: values[i] for q, values in peaks.items()}) for i, name in enumerate(names)},
+        {name: Rms(**{q: values[i] for q, values in rms.items()}) for i, name in enumerate(names)},
+    )
 
 
 @dataclass(frozen=True)
@@ -300,30 +302,32 @@ def _errors(approx: Approximation, exact: Approximation) -> dict | None:
         q: {dof: float(relative_error(getattr(approx.peaks, q)[i], getattr(exact.peaks, q)[i])) for i, dof in enumerate(DOFS)}
         for q in QUANTITIES
     }
-    points = {
-        name: {
-            q: {
-                d: float(relative_error(getattr(pk, q)[i], getattr(exact.points[name], q)[i]))
-                for i, d in enumerate(DIRECTIONS)
-            }
-            for q in QUANTITIES
-        }
-        for name, pk in approx.points.items()
-    }
+    points = {name: {} for name in approx.points}
+    for q in QUANTITIES:  # every point at once: (points, directions) arrays
+        errors = relative_error(_stacked(approx.points, q), _stacked(exact.points, q)).tolist()
+        for row, name in zip(errors, points):
+            points[name][q] = dict(zip(DIRECTIONS, row))
     return {"harmonics": harmonics, "peaks": peaks, "points": points}
 
 
+def _stacked(by_point: dict, quantity: str) -> np.ndarray:
+    """``quantity`` of C and every point (peaks or RMS values), shape (points, directions)."""
+    return np.array([getattr(values, quantity) for values in by_point.values()])
+
+
 def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
-    rows = []
     if approx.resonant:
         return ()
+    rows = []
     for quantity, limit in limited_quantities(limits).items():
         statistic, field = (approx.rms, quantity[:-4]) if quantity.endswith("_rms") else (approx.points, quantity)
-        for name, values in statistic.items():
-            for i, direction in enumerate(DIRECTIONS):
-                value = float(getattr(values, field)[i])
-                outcome = Outcome.FAIL if exceeds(value, limit) else Outcome.PASS
-                rows.append(LimitRow(name, direction, quantity, value, limit, outcome))
+        values = _stacked(statistic, field)
+        over = exceeds(values, limit).tolist()
+        for name, value, fails in zip(statistic, values.tolist(), over):
+            rows += [
+                LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if f else Outcome.PASS)
+                for direction, v, f in zip(DIRECTIONS, value, fails)
+            ]
     return tuple(rows)
 
 

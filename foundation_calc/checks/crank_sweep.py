@@ -102,27 +102,37 @@ def _peaks(cos, sin):
     return np.concatenate([peak(cos[i : i + CHUNK], sin[i : i + CHUNK]) for i in range(0, len(cos), CHUNK)])
 
 
-def _over(motion, omega, points, limits: dict, displacements) -> dict:
-    """Limited quantity -> bool array: a peak or RMS value of C (x, y) or of a point exceeds the limit.
+def _located(motion, omega, points, limits: dict):
+    """Peak displacements of every point, name -> (n, 2) [m], and, per limited quantity (peak or
+    RMS), whether a value of C (x, y) or of a point exceeds the limit (bool (n,)).
 
-    ``displacements``: the displacement peaks already found, (n, ≥ 2) arrays of C (x, y first)
-    and of each point; they are reused, not searched again.
+    The points go through :func:`point_series` and :func:`peak` together, as many at a time as
+    make :data:`CHUNK` sweep points' worth of series.
     """
-    series = [(motion.cos[..., :2, :], motion.sin[..., :2, :])]  # x, y of C
-    series += [point_series(motion, u, H) for _, u, H in points]
-    over = {}
     w = omega[:, None]
+    orders = {}  # every quantity a limit may bound -> (order of the time derivative, a peak or not)
     for order, quantity in enumerate(QUANTITIES):
-        if quantity in limits:
-            if order == 0:
-                largest = np.max([peaks[:, :2].max(axis=1) for peaks in displacements], axis=0)
-            else:
-                largest = np.max([_peaks(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
-            over[quantity] = exceeds(largest, limits[quantity])
-        if f"{quantity}_rms" in limits:
-            largest = np.max([rms(*derivative(c, s, w, order)).max(axis=1) for c, s in series], axis=0)
-            over[f"{quantity}_rms"] = exceeds(largest, limits[f"{quantity}_rms"])
-    return over
+        orders[quantity], orders[f"{quantity}_rms"] = (order, True), (order, False)
+    largest = {}
+    for key in limits:  # C: x and y
+        order, is_peak = orders[key]
+        cos, sin = derivative(motion.cos[..., :2, :], motion.sin[..., :2, :], w, order)
+        largest[key] = (_peaks(cos, sin) if is_peak else rms(cos, sin)).max(axis=1)
+    located = {}
+    names = [name for name, _, _ in points]
+    horizontal = np.array([u for _, u, _ in points], dtype=float)[:, None]
+    height = np.array([H for _, _, H in points], dtype=float)[:, None]
+    step = max(1, CHUNK // max(len(omega), 1))
+    for i in range(0, len(names), step):
+        cos, sin = point_series(motion, horizontal[i : i + step], height[i : i + step])  # (points, n, 2, K + 1)
+        for key in {"displacement", *limits}:
+            order, is_peak = orders[key]
+            found = (peak if is_peak else rms)(*derivative(cos, sin, w, order))  # (points, n, 2)
+            if key == "displacement":
+                located.update(zip(names[i : i + step], found))
+            if key in limits:
+                largest[key] = np.maximum(largest[key], found.max(axis=(0, 2)))
+    return located, {key: exceeds(value, limits[key]) for key, value in largest.items()}
 
 
 def _complex(coefficient):
@@ -190,7 +200,6 @@ def sweep(
         resonant = res.resonant if resonant is None else resonant | res.resonant
     dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
-    located = {name: _peaks(*point_series(motion, u, H)) for name, u, H in points}
     margins = np.stack(margins)
     nearest = np.argmin(margins, axis=0)
     margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
@@ -198,7 +207,7 @@ def sweep(
     fails, inside = resonance_masks(margins, detuning, driven)
     fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
     limited = limited_quantities(limits)
-    over_quantities = _over(motion, omega, points, limited, [peaks, *located.values()])
+    located, over_quantities = _located(motion, omega, points, limited)
     over = np.zeros(values.shape, dtype=bool)
     for mask in over_quantities.values():
         over |= mask

@@ -74,6 +74,7 @@ def crank_amplitudes(scene) -> Finding:
     """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
     zones of a vibration code (``fcalc amplitudes``)."""
     from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.governing import tally
     from foundation_calc.checks.limits import display_quantity
 
     report = check_scene_amplitudes(scene)
@@ -94,6 +95,9 @@ def crank_amplitudes(scene) -> Finding:
                 f"largest {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
                 " of the limit ", values["limit"],
             )
+            count = tally(report.rows)
+            if count.failed_rows > 1:
+                reason += (f"; {count.failed_rows} of {count.rows} values over their limits, at {count.failed_points} points",)
         if report.code_rows:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}

@@ -16,10 +16,17 @@ ExactOpt = Annotated[
     bool,
     typer.Option("--exact", help="Also solve the exact equations (harmonic balance) and report the closed forms' errors."),
 ]
+AllPointsOpt = Annotated[
+    bool,
+    typer.Option("--all-points", help="List every point and limit row; by default a scene with more than 12 points"
+                 " shows its governing points and largest value/limit ratios (JSON always lists every point)."),
+]
 
 
 @reports_errors
-def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None) -> None:
+def amplitudes(
+    scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None, all_points: AllPointsOpt = False
+) -> None:
     """Steady-state amplitudes per harmonic, peaks of C and of the scene's [[points]], and limits.
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
@@ -48,5 +55,5 @@ def amplitudes(scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, 
 
         print_json(report_out.amplitudes_document(report, loaded, str(scene)))
     else:
-        report_out.print_amplitudes_report(report, loaded, str(scene), shown)
+        report_out.print_amplitudes_report(report, loaded, str(scene), shown, all_points)
     raise typer.Exit(int(exit_code(report.outcome)))

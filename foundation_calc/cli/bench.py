@@ -17,6 +17,7 @@ class Section(str, Enum):
     runup = "runup"
     throughput = "throughput"
     startup = "startup"
+    points = "points"
     batch = "batch"
 
 
@@ -52,6 +53,7 @@ SkipOpt = Annotated[
 #: Seconds each method is timed for (at least 3 calls after a warm-up), normal and --quick.
 MIN_TIME = {False: 0.2, True: 0.02}
 STARTUP_RUNS = {False: 20, True: 5}
+POINTS_RUNS = {False: 3, True: 1}
 #: fcalc check batch: platform scenes in the small runs, their rounds, scenes in the large batch.
 BATCH_MANY, BATCH_ROUNDS, BATCH_LARGE = 100, {False: 5, True: 2}, {False: 10_000, True: 1_000}
 
@@ -95,10 +97,11 @@ def bench(
     closed form of every resonance passed against the time integration (exponential integrator
     and scipy's DOP853) on a platform and a crank rig. Then the
     designs per second of one vectorised call against a Python loop (closed-form amplitudes
-    undamped and damped, and a damped speed sweep of a tenth as many speeds), and fcalc's start-up against
-    its frameworks' — all measured in this run, on the first crank scene. Last, fcalc check on
-    copies of the first platform scene (1 and 100; one job and two: the marginal cost of a scene
-    and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
+    undamped and damped, and a damped speed sweep of a tenth as many speeds), fcalc's start-up against
+    its frameworks', and whole fcalc processes on that scene with 10, 1 000 and 15 000 points
+    (time and memory against 10 points) — all measured in this run, on the first crank scene. Last,
+    fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
+    of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -112,8 +115,8 @@ def bench(
     loaded = [(path, load_scene(path)) for path in paths]
     cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
-    if not cranks:  # throughput and start-up are measured on the first crank scene
-        skipped |= {Section.throughput, Section.startup}
+    if not cranks:  # throughput, start-up and points are measured on the first crank scene
+        skipped |= {Section.throughput, Section.startup, Section.points}
     if not platforms:  # the batch's marginal cost is that of a platform scene
         skipped.add(Section.batch)
 
@@ -126,9 +129,10 @@ def bench(
     steps += 3 * (Section.harmonic_balance not in skipped)
     steps += 3 * (Section.runup not in skipped)
     steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
+    steps += Section.points not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
-    results, platform_results, throughput, startup, truncation, batch = [], [], None, None, None, None
+    results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
     runups = None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
@@ -177,6 +181,11 @@ def bench(
 
             step("start-up: fcalc resonance against typer, pydantic, rich")
             startup = startup_times(str(cranks[0][0]), runs=STARTUP_RUNS[quick])
+        if Section.points not in skipped:
+            from foundation_calc.benchmarks.points import POINT_COUNTS, points_scaling
+
+            step(f"points: {', '.join(map(str, POINT_COUNTS))} points, tables, JSON and check")
+            points = points_scaling(str(cranks[0][0]), runs=POINTS_RUNS[quick])
         if Section.batch not in skipped:
             from foundation_calc.benchmarks.batch import batch_benchmark
 
@@ -186,9 +195,18 @@ def bench(
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups))
+        document = report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups)
+        if points is not None:
+            from foundation_calc.output.bench_points import points_document
+
+            document["points_scaling"] = points_document(points)
+        print_json(document)
     else:
         report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
+        if points is not None:
+            from foundation_calc.output.bench_points import print_points
+
+            print_points(points)
         if plot is not None:
             from foundation_calc.output.console import stderr
 

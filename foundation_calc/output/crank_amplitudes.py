@@ -9,6 +9,7 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.governing import governing_points, tally, worst_rows
 from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
@@ -49,14 +50,14 @@ def _approximation_document(approx: Approximation, harmonics: int = 5) -> dict:
     doc["peaks"] = {
         dof: {q: float(getattr(approx.peaks, q)[i]) for q in QUANTITIES} for i, dof in enumerate(DOFS)
     }
-    doc["points"] = {
-        name: {d: {q: float(getattr(pk, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
-        for name, pk in approx.points.items()
-    }
-    doc["points_rms"] = {
-        name: {d: {q: float(getattr(rm, q)[i]) for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
-        for name, rm in approx.rms.items()
-    }
+    doc["points"] = {}
+    for name, pk in approx.points.items():
+        values = {q: getattr(pk, q).tolist() for q in QUANTITIES}  # per direction, as Python floats
+        doc["points"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
+    doc["points_rms"] = {}
+    for name, rm in approx.rms.items():
+        values = {q: getattr(rm, q).tolist() for q in QUANTITIES}
+        doc["points_rms"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
     return doc
 
 
@@ -254,14 +255,37 @@ def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Tab
     return table
 
 
-def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
+#: Points besides C up to which the tables list every point and limit row; with more, they show
+#: the governing points and the largest value/limit ratios (every row with --all-points or --json).
+ALL_POINTS_UP_TO = 12
+
+#: Limit rows shown for a scene with more points: the largest ratios (and each quantity's largest).
+WORST_ROWS = 10
+
+EVERY_ROW = "every row: --all-points or --json"
+
+
+def _summarised(report: AmplitudeReport, all_points: bool) -> bool:
+    return not all_points and len(report.approximations[report.checked].points) - 1 > ALL_POINTS_UP_TO
+
+
+def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
     approx = report.approximations[report.checked]
-    table = Table(title=f"Peaks over one revolution ({approx.title})", title_justify="left")
+    title = f"Peaks over one revolution ({approx.title})"
+    shown = list(approx.points)
+    if _summarised(report, all_points):
+        shown = ["C", *governing_points(approx.points)]
+        title += (
+            f": C and the {len(shown) - 1} points with the largest peaks,"
+            f" of the scene's {len(approx.points) - 1} points ({EVERY_ROW})"
+        )
+    table = Table(title=title, title_justify="left")
     table.add_column("point")
     table.add_column("direction")
     for q in QUANTITIES:
         table.add_column(f"{q} \\[{units.label(DISPLAY_QUANTITY[q])}]", justify="right")
-    for name, pk in approx.points.items():
+    for name in shown:
+        pk = approx.points[name]
         for i, direction in enumerate(DIRECTIONS):
             table.add_row(
                 Text(name), direction,
@@ -273,11 +297,19 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     return table
 
 
-def _limits_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
-    table = Table(title=f"Limits (checked with: {report.approximations[report.checked].title})", title_justify="left")
+def _limits_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
+    title = f"Limits (checked with: {report.approximations[report.checked].title})"
+    rows = report.rows
+    if _summarised(report, all_points):
+        rows = worst_rows(report.rows, WORST_ROWS)
+        title += (
+            f": {len(rows)} of {len(report.rows)} rows, the {WORST_ROWS} largest value/limit ratios and the"
+            f" largest of each quantity ({EVERY_ROW})"
+        )
+    table = Table(title=title, title_justify="left")
     for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
         table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
-    for row in report.rows:
+    for row in rows:
         shown = display_quantity(row.quantity)
         table.add_row(
             Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
@@ -315,6 +347,12 @@ def summary_line(report: AmplitudeReport) -> str:
     if report.rows:
         top = max(report.rows, key=lambda r: r.ratio)
         parts.append(f"largest value/limit {top.ratio:.3f} ({escape(top.point)}, {top.direction} {top.quantity})")
+        count = tally(report.rows)
+        if count.failed_rows:
+            parts.append(
+                f"{count.failed_rows} of {count.rows} values over their limits,"
+                f" at {count.failed_points} of {count.points} points (C included)"
+            )
     if report.code_rows:
         top = max(report.code_rows, key=lambda r: r.ratio)
         parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
@@ -324,9 +362,11 @@ def summary_line(report: AmplitudeReport) -> str:
 
 
 def print_amplitudes_report(
-    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits()
+    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits(), all_points: bool = False
 ) -> None:
-    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI)."""
+    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI): every point
+    and limit row, or with more than :data:`ALL_POINTS_UP_TO` points (and not ``all_points``)
+    the governing points and the largest value/limit ratios."""
     d, w = report.design, report.omega
     out = stdout()
     machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
@@ -352,9 +392,9 @@ def print_amplitudes_report(
         )
     out.print(_harmonics_table(report, units))
     if not report.resonant:
-        out.print(_points_table(report, units))
+        out.print(_points_table(report, units, all_points))
     if report.rows:
-        out.print(_limits_table(report, units))
+        out.print(_limits_table(report, units, all_points))
     if report.code_rows:
         out.print(_code_table(report, units))
     for warning in report.code_warnings:

@@ -285,8 +285,10 @@ class CrankScene(SceneModel):
     @field_validator("points")
     @classmethod
     def _distinct_point_names(cls, points: list[Point]) -> list[Point]:
-        names = [p.name for p in points]
-        repeated = sorted({n for n in names if names.count(n) > 1} | ({"C"} & set(names)))
+        seen, repeated = {"C"}, set()  # C, the centre of mass, is always reported under that name
+        for point in points:
+            (repeated if point.name in seen else seen).add(point.name)
+        repeated = sorted(repeated)
         if repeated:
             raise ValueError(f"point names must be distinct and not 'C' (the centre of mass): {', '.join(repeated)}")
         return points

@@ -13,12 +13,19 @@ from __future__ import annotations
 
 import numpy as np
 
-#: Newton steps that refine a sampled extremum; from a sample spacing of 2π/N quadratic
-#: convergence reaches round-off in 4-5 steps, the rest is margin.
+#: Newton steps that refine a sampled extremum at most; from the parabola through the samples
+#: round the extremum, two or three reach round-off.
 _NEWTON_STEPS = 8
-#: A Newton step [rad] below which the extremum's phase is exact to round-off after it: the
-#: error after a step of δ is about (K δ)², and |q| at the peak moves by its square.
-_CONVERGED_STEP = 1e-8
+
+#: Fraction of a series' slope bound Σ n|c_n| below which its highest harmonics are left out of
+#: the search for its peak. The value at the peak is taken from the whole series, so the tail
+#: only shifts the phase found, by about its slope over q'', and the value by the square of that:
+#: below 1e-17 relative (the highest harmonics of every solver's series are round-off anyway).
+_TAIL = 1e-9
+
+#: Samples per period of the highest harmonic searched, and at least this many samples.
+_SAMPLES_PER_PERIOD = 8
+_MIN_SAMPLES = 64
 
 
 def phases(N: int) -> np.ndarray:
@@ -80,61 +87,115 @@ def rms(cos, sin):
     return np.sqrt(0.5 * (cos[..., 1:] ** 2 + sin[..., 1:] ** 2).sum(-1))
 
 
-def _values(cos, sin, n, phi):
-    """q, dq/dφ and d²q/dφ² at phases ``phi`` (shape (P,)) of P series (shape (P, K + 1))."""
-    arg = phi[:, None] * n
-    c, s = np.cos(arg), np.sin(arg)
-    terms = cos * c + sin * s
-    return terms.sum(-1), (sin * c - cos * s) @ n, terms @ (-n * n)
+def _horner(coefficients, z):
+    """Σ_n coefficients[n] z^n for every column: ``coefficients`` (K + 1, C), ``z`` (C,).
+    Horner's scheme: its rounding error is about 1e-16 Σ_n (n + 1)|coefficients[n]|."""
+    total = coefficients[-1].copy()
+    for row in coefficients[-2::-1]:
+        total *= z
+        total += row
+    return total
+
+
+def _values(a, phi):
+    """q, dq/dφ and d²q/dφ² of series at one phase each: ``a`` = cos - i sin, shape (K + 1, C)
+    (a column per series), ``phi`` (C,). q = Re Σ a_n e^{inφ}, and each φ-derivative brings i n."""
+    z = np.exp(1j * phi)
+    n = np.arange(a.shape[0])[:, None]
+    return _horner(a, z).real, -_horner(n * a, z).imag, -_horner(n * n * a, z).real
+
+
+def _searched(slopes) -> int:
+    """:func:`searched_harmonics` from n |c_n|, shape (K + 1, B): a column per series."""
+    total = slopes.sum(0)
+    # the largest share of each harmonic over the batch: a tail of these shares bounds every
+    # series' tail; summed from the top so that small terms add first
+    share = (slopes / np.where(total > 0.0, total, 1.0)).max(1, initial=0.0)
+    tail = np.zeros_like(share)
+    tail[:-1] = np.cumsum(share[:0:-1])[::-1]
+    return int(np.argmax(tail <= _TAIL))
+
+
+def searched_harmonics(cos, sin) -> int:
+    """Highest harmonic K_s that the search for the peaks of a batch of series needs.
+
+    Beyond K_s the tail of every series in the batch has a slope Σ_{n>K_s} n |c_n| of at most
+    1e-9 of the series' Σ_n n |c_n| (|c_n| = sqrt(cos_n² + sin_n²)); its value Σ_{n>K_s} |c_n| is
+    smaller still.
+
+    >>> searched_harmonics(np.array([[0.0, 1.0, 1e-3, 1e-12, 1e-21]]), np.zeros((1, 5)))
+    2
+    """
+    cos, sin = np.asarray(cos, dtype=float), np.asarray(sin, dtype=float)
+    K = cos.shape[-1] - 1
+    return _searched((np.arange(K + 1) * magnitude(cos, sin)).reshape(-1, K + 1).T)
+
+
+def grid_size(K: int) -> int:
+    """Samples per period for a search over harmonics 0 ... K: ``_SAMPLES_PER_PERIOD`` per period
+    of the highest, at least ``_MIN_SAMPLES``, a multiple of 16 (cheap FFT lengths)."""
+    return max(_MIN_SAMPLES, -(-_SAMPLES_PER_PERIOD * K // 16) * 16)
 
 
 def peak(cos, sin):
     """Largest |q(t)| over one period, to round-off (about 1e-15 relative).
 
-    The series is sampled by an inverse FFT on a grid of at least 16 points per period of the
-    highest harmonic; every sample that is a local maximum of |q| is refined by Newton steps on
-    dq/dφ = 0 (each step limited to one grid spacing). The global extremum lies within one
-    spacing of a local maximum of the samples, and refinement cannot lower the answer. Only the
-    local maxima that can hold the global one (within Σ n²|c_n| Δφ²/8 of the best sample, Taylor's
-    bound) are refined, gathered over the whole batch at once.
+    1. The search keeps the harmonics 0 ... K_s that matter (:func:`searched_harmonics`) and
+       samples them by an inverse FFT at N = :func:`grid_size` (K_s) phases, spacing Δφ = 2π/N.
+    2. The global maximum of |q| lies within Δφ/2 of a sample, which is then at most
+       max|q''| Δφ²/8 <= Σ n²|c_n| Δφ²/8 below it (Taylor), plus twice the tail left out. Only
+       the local maxima of the samples within that bound of the best can hold it; all of them,
+       over the whole batch at once, are refined: a parabola through the three samples places the
+       extremum, Newton steps on dq/dφ = 0 (each at most Δφ, none where |q| is not concave) reach
+       round-off in two or three steps.
+    3. The peak is |q| of the whole series at the refined phases (the left-out tail moves the
+       phase by about its slope over q'', and the value by the square of that).
+
+    ``cos``, ``sin``: coefficients of harmonics 0 ... K on the last axis (batches before it);
+    the result has the batch shape.
 
     >>> round(float(peak(np.array([0.0, 1.0, 0.5]), np.zeros(3))), 12)  # cos φ + cos 2φ / 2
     1.5
     >>> round(float(peak(np.array([0.0, 0.0]), np.array([0.0, 2.0]))), 12)
     2.0
     """
-    cos, sin = np.asarray(cos, dtype=float), np.asarray(sin, dtype=float)
-    cos, sin = np.broadcast_arrays(cos, sin)
+    cos, sin = np.broadcast_arrays(np.asarray(cos, dtype=float), np.asarray(sin, dtype=float))
     batch, K = cos.shape[:-1], cos.shape[-1] - 1
-    N = max(64, 16 * K)
-    spectrum = np.zeros(batch + (N // 2 + 1,), dtype=complex)
-    spectrum[..., : K + 1] = (N / 2.0) * (cos - 1j * sin)
-    spectrum[..., 0] = N * cos[..., 0]
-    sampled = np.abs(np.fft.irfft(spectrum, N, axis=-1))
-    best = sampled.max(-1)
-    n = np.arange(K + 1)
+    # harmonics and samples on the first axis, a column per series: Horner's scheme and the
+    # candidates' gather then run over contiguous rows
+    a = np.empty((K + 1, int(np.prod(batch))), dtype=complex)  # a_n = cos_n - i sin_n
+    a.real = cos.reshape(-1, K + 1).T
+    np.negative(sin.reshape(-1, K + 1).T, out=a.imag)
+    n = np.arange(K + 1)[:, None]
+    slopes = n * np.abs(a)  # Σ n|c_n| bounds |dq/dφ|, Σ n²|c_n| bounds |d²q/dφ²|
+    Ks = _searched(slopes)
+    N = grid_size(Ks)
     step = 2.0 * np.pi / N
-    # The global maximum lies within step/2 of a sample, which is then at most
-    # max|q''| step²/8 <= Σ n²|c_n| step²/8 below it: only local maxima within that of the best
-    # sample can hold it, and only they are refined (the answer is the same, the work smaller).
-    reach = (n * n * np.hypot(cos, sin)).sum(-1) * step * step / 8.0
-    is_peak = (sampled >= np.roll(sampled, 1, -1)) & (sampled >= np.roll(sampled, -1, -1))
-    is_peak &= sampled >= (best - reach)[..., None]
-    *where, j = np.nonzero(is_peak)
-    flat_cos, flat_sin = cos[tuple(where)], sin[tuple(where)]
-    phi = j * step
+    spectrum = np.zeros((N // 2 + 1, a.shape[1]), dtype=complex)
+    spectrum[: Ks + 1] = (N / 2.0) * a[: Ks + 1]
+    spectrum[0] = N * a[0].real
+    sampled = np.abs(np.fft.irfft(spectrum, N, axis=0))
+    reach = (n * slopes).sum(0) * step * step / 8.0 + 2.0 * _TAIL * slopes.sum(0)
+    ring = np.concatenate([sampled[-1:], sampled, sampled[:1]])  # the period closes on itself
+    below, above = ring[:-2], ring[2:]
+    # a plateau of equal samples counts once (its first sample); a constant series has none
+    candidate = (sampled > below) & (sampled >= above) & (sampled >= sampled.max(0) - reach)
+    j, col = np.nonzero(candidate)
+    low, top, high = below[j, col], sampled[j, col], above[j, col]
+    bend = low - 2.0 * top + high  # < 0 at a strict local maximum
+    shift = np.where(bend < 0.0, 0.5 * (low - high) / np.where(bend < 0.0, bend, -1.0), 0.0)
+    phi = (j + np.clip(shift, -0.5, 0.5)) * step
+    a = a[:, col]  # a column per candidate
     for _ in range(_NEWTON_STEPS):
-        _, dq, ddq = _values(flat_cos, flat_sin, n, phi)
-        safe = np.where(ddq == 0.0, 1.0, ddq)
-        change = np.clip(np.where(ddq == 0.0, 0.0, dq / safe), -step, step)
-        phi = phi - change
-        if not np.any(np.abs(change) > _CONVERGED_STEP):
-            break  # quadratic convergence: the next step would be below 1e-16 rad
-    refined = np.abs(_values(flat_cos, flat_sin, n, phi)[0])
-    flat_best = best.reshape(-1)
-    owner = np.ravel_multi_index(tuple(where), batch) if batch else np.zeros(j.shape, dtype=int)
-    np.maximum.at(flat_best, owner, refined)
-    return flat_best.reshape(batch) if batch else flat_best[0]
+        q, dq, ddq = _values(a[: Ks + 1], phi)
+        concave = q * ddq < 0.0  # |q| has a maximum nearby
+        move = np.clip(np.where(concave, dq / np.where(concave, ddq, 1.0), 0.0), -step, step)
+        phi = phi - move
+        if not np.any(np.abs(move) * max(Ks, 1) > 1e-9):
+            break
+    result = np.abs(cos.reshape(-1, K + 1)[:, 0])  # the mean: a lower bound, the peak of a constant
+    np.maximum.at(result, col, np.abs(_horner(a, np.exp(1j * phi)).real))
+    return result.reshape(batch) if batch else result[0]
 
 
-__all__ = ["analyse", "basis", "derivative", "magnitude", "peak", "phases", "rms", "sample"]
+__all__ = ["analyse", "basis", "derivative", "grid_size", "magnitude", "peak", "phases", "rms", "sample", "searched_harmonics"]
