@@ -30,6 +30,7 @@ def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
     args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch", "--skip", "points"]
+    args += ["--skip", "runup"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
     try:
@@ -109,7 +110,7 @@ def test_plot_without_matplotlib_is_a_usage_error(runner, monkeypatch, tmp_path)
 
 def test_throughput_section(runner):
     args = ["bench", str(SCENE), "--json", "--designs", "2000", "--skip", "accuracy", "--skip", "startup"]
-    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "points"])
+    result = runner.invoke(app, [*args, "--skip", "harmonic_balance", "--skip", "batch", "--skip", "points", "--skip", "runup"])
     assert result.exit_code == 0, result.output
     doc = json.loads(result.stdout)
     assert doc["scenes"] == [] and doc["startup"] is None
@@ -127,6 +128,16 @@ def test_startup_rows_are_side_by_side():
     floor = next(r.seconds for r in rows if r.label == "import typer, pydantic, rich")
     for row in rows:
         assert row.ratio_to_import_floor == pytest.approx(row.seconds / floor)
+
+
+def test_runup_rows_render_in_json_and_tables():
+    from foundation_calc.benchmarks.runup import RunupBenchmark
+    from foundation_calc.output.bench_report import _runup_document, _runup_table
+
+    row = RunupBenchmark("rig", 10.0, 2, 160000, 5e-4, 0.4, 6.0, 1.2e-2, 3e-6)
+    (doc,) = _runup_document([row])
+    assert doc["integration_seconds"] == 0.4 and doc["closed_form_error"] == 1.2e-2
+    assert _runup_table([row]).row_count == 1
 
 
 def test_batch_rows_are_side_by_side_and_write_nothing_into_the_project(tmp_path, monkeypatch):

@@ -14,6 +14,7 @@ from foundation_calc.cli.guard import reports_errors
 class Section(str, Enum):
     accuracy = "accuracy"
     harmonic_balance = "harmonic_balance"
+    runup = "runup"
     throughput = "throughput"
     startup = "startup"
     points = "points"
@@ -92,7 +93,9 @@ def bench(
     converged harmonic balance that is the reference (error = largest relative error of the x, y,
     θ peaks). Platform scenes: design and 6-DOF verification time, rotation residual. Platform
     harmonic balance on built-in rigs of 1, 3 and 17 exciters: time and error against the
-    truncation order K, and the whole check of each rig against one exciter. Then the
+    truncation order K, and the whole check of each rig against one exciter. Start-up: the
+    closed form of every resonance passed against the time integration (exponential integrator
+    and scipy's DOP853) on a platform and a crank rig. Then the
     designs per second of one vectorised call against a Python loop (closed-form amplitudes
     undamped and damped, and a damped speed sweep of a tenth as many speeds), fcalc's start-up against
     its frameworks', and whole fcalc processes on that scene with 10, 1 000 and 15 000 points
@@ -124,11 +127,13 @@ def bench(
     steps = len(cranks) * len(methods) if Section.accuracy not in skipped else 0
     steps += len(platforms) if Section.accuracy not in skipped else 0
     steps += 3 * (Section.harmonic_balance not in skipped)
+    steps += 3 * (Section.runup not in skipped)
     steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
     steps += Section.points not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
+    runups = None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -146,6 +151,10 @@ def bench(
             from foundation_calc.benchmarks.harmonic_balance import benchmark_truncation
 
             truncation = benchmark_truncation(MIN_TIME[quick], on_rig=step)
+        if Section.runup not in skipped:
+            from foundation_calc.benchmarks.runup import benchmark_runup
+
+            runups = benchmark_runup(MIN_TIME[quick], on_rig=step)
         if Section.throughput not in skipped:
             from foundation_calc.benchmarks.throughput import (
                 amplitude_throughput,
@@ -186,14 +195,14 @@ def bench(
     if json:
         from foundation_calc.output.console import print_json
 
-        document = report.bench_document(results, platform_results, throughput, startup, truncation, batch)
+        document = report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups)
         if points is not None:
             from foundation_calc.output.bench_points import points_document
 
             document["points_scaling"] = points_document(points)
         print_json(document)
     else:
-        report.print_bench(results, platform_results, throughput, startup, truncation, batch)
+        report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
         if points is not None:
             from foundation_calc.output.bench_points import print_points
 

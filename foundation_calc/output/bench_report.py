@@ -94,6 +94,45 @@ def _truncation_document(truncation) -> dict | None:
     }
 
 
+def _runup_document(runups) -> list | None:
+    if runups is None:
+        return None
+    return [
+        {
+            "rig": r.rig,
+            "duration": r.duration,
+            "passages": r.passages,
+            "steps": r.steps,
+            "closed_form_seconds": r.closed_form_seconds,
+            "integration_seconds": r.integration_seconds,
+            "dop853_seconds": r.dop853_seconds,
+            "closed_form_error": r.closed_form_error,
+            "integrator_difference": r.integrator_difference,
+        }
+        for r in runups
+    ]
+
+
+def _runup_table(runups):
+    from rich.table import Table
+
+    table = Table(
+        title="Start-up through resonance: closed form against time integration, same run"
+        " (error: largest passage's peak against the exponential integrator; difference: largest"
+        " displacement, exponential against DOP853)",
+        title_justify="left",
+    )
+    for name in ("rig", "passages", "closed form, all modes", "exponential integrator", "steps", "DOP853",
+                 "closed-form error", "integrator difference"):
+        table.add_column(name, justify="left" if name == "rig" else "right")
+    for r in runups:
+        table.add_row(
+            r.rig, str(r.passages), seconds_text(r.closed_form_seconds), seconds_text(r.integration_seconds),
+            str(r.steps), seconds_text(r.dop853_seconds), f"{r.closed_form_error:.1e}", f"{r.integrator_difference:.1e}",
+        )
+    return table
+
+
 def _batch_document(batch) -> dict | None:
     if batch is None:
         return None
@@ -111,7 +150,7 @@ def _batch_document(batch) -> dict | None:
     }
 
 
-def bench_document(scenes, platforms, throughput, startup, truncation=None, batch=None) -> dict:
+def bench_document(scenes, platforms, throughput, startup, truncation=None, batch=None, runups=None) -> dict:
     """The whole benchmark as one JSON-ready dict (seconds, bytes, relative errors)."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
@@ -140,6 +179,7 @@ def bench_document(scenes, platforms, throughput, startup, truncation=None, batc
             for p in platforms
         ],
         "platform_harmonic_balance": _truncation_document(truncation),
+        "runup": _runup_document(runups),
         "throughput": None if throughput is None else {k: _throughput_document(t) for k, t in throughput.items()},
         "startup": None
         if startup is None
@@ -255,7 +295,7 @@ def _batch_tables(batch):
     return rows, ratios
 
 
-def print_bench(scenes, platforms, throughput, startup, truncation=None, batch=None) -> None:
+def print_bench(scenes, platforms, throughput, startup, truncation=None, batch=None, runups=None) -> None:
     """The benchmark as rich tables on stdout."""
     from rich.table import Table
 
@@ -272,6 +312,9 @@ def print_bench(scenes, platforms, throughput, startup, truncation=None, batch=N
         for table in _truncation_tables(truncation):
             out.print(table)
             out.print()
+    if runups:
+        out.print(_runup_table(runups))
+        out.print()
     if throughput:
         table = Table(title="Throughput: one vectorised call against a Python loop, same run", title_justify="left")
         for name in ("computation", "designs", "vectorised", "scalar loop", "speed-up", "peak memory (vectorised)"):

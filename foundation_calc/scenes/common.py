@@ -84,3 +84,39 @@ class SpeedFields(SceneModel):
     def speed_given_as(self) -> str:
         """Which of the three keys the scene used."""
         return next(k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None)
+
+
+class Drive(SceneModel):
+    """A motor of limited torque that starts the machine (fcalc runup): the speed then follows
+    the torque against the load instead of a prescribed ramp."""
+
+    torque: float | None = quantity(
+        "T", "N m", "torque the motor gives from rest to the operating speed, referred to the exciter shaft",
+        None, gt=0, examples=[200.0],
+    )
+    power: float | None = quantity(
+        "P", "W", "rated power (instead of torque): T = power / rated_speed", None, gt=0, examples=[7.5e3]
+    )
+    rated_speed: float | None = quantity(
+        "ω_r", "rad/s", "speed at which the rated power is given, referred to the exciter shaft", None, gt=0,
+        examples=[157.0],
+    )
+    inertia: float = quantity(
+        "J", "kg m²", "moment of inertia of the motor, couplings and shafts referred to the exciter shaft;"
+        " fcalc adds the unbalances' (platform) or the crank mechanism's mean inertia", ge=0, examples=[5.0],
+    )
+
+    @model_validator(mode="after")
+    def _one_torque(self):
+        if (self.torque is None) == (self.power is None):
+            raise ValueError("give the motor as exactly one of torque [N m] or power [W] (with rated_speed [rad/s])")
+        if self.power is not None and self.rated_speed is None:
+            raise ValueError("power [W] needs rated_speed [rad/s], the speed at which it is rated")
+        if self.torque is not None and self.rated_speed is not None:
+            raise ValueError("rated_speed [rad/s] goes with power [W]; with torque [N m] leave it out")
+        return self
+
+    @property
+    def available_torque(self) -> float:
+        """T [N m]: the given torque, or power / rated_speed."""
+        return self.torque if self.torque is not None else self.power / self.rated_speed

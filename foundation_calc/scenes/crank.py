@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, ClassVar, Literal
 from pydantic import ValidationInfo, field_validator, model_validator
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
 from foundation_calc.scenes.soil import Soil
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
@@ -286,7 +286,10 @@ class Limits(SceneModel):
     detuning: float = quantity(
         "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
     )
-
+    transient_amplitude: float | None = quantity(
+        "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
+        " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
+    )
     @field_validator("code", mode="before")
     @classmethod
     def _known_code(cls, code):
@@ -349,7 +352,32 @@ class Load(SceneModel):
 
 
 class Operation(SpeedFields):
-    """The machine's speed, for a scene whose machine is given by its loads only."""
+    """The machine's speed, for a scene whose machine is given by its loads only, and its start-up
+    and run-down (fcalc runup)."""
+
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
+        examples=[10.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
+        examples=[20.0],
+    )
+
+    @model_validator(mode="after")
+    def _exactly_one_speed(self):  # replaces SpeedFields': with a [mechanism] the table has no speed
+        given = [k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None]
+        if len(given) > 1:
+            raise ValueError(
+                "give the speed as exactly one of omega [rad/s], frequency_hz [Hz] or speed_rpm [rpm]"
+                f" (got {' and '.join(given)})"
+            )
+        return self
+
+    @property
+    def gives_speed(self) -> bool:
+        """True when the table gives the speed (a machine given by its loads)."""
+        return any(getattr(self, k) is not None for k in ("omega", "frequency_hz", "speed_rpm"))
 
 
 class Point(SceneModel):
@@ -383,12 +411,14 @@ class CrankScene(SceneModel):
         "-", "-", "the crank-slider machine; leave out when the machine is given by its [[loads]]", None
     )
     operation: Operation | None = quantity(
-        "-", "-", "the speed, when there is no [mechanism] (omega, frequency_hz or speed_rpm)", None
+        "-", "-", "the speed, when there is no [mechanism] (omega, frequency_hz or speed_rpm); run_up_time and"
+        " run_down_time for fcalc runup", None
     )
     loads: list[Load] = quantity(
         "-", "-", "harmonic loads of the machine on the block (vendor data), instead of or beside [mechanism]", []
     )
     limits: Limits = Limits()
+    drive: Drive | None = None
     points: list[Point] = quantity(
         "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
     )
@@ -445,9 +475,12 @@ class CrankScene(SceneModel):
     def _machine_and_speed(self):
         if self.mechanism is None and not self.loads:
             raise ValueError("give the machine as [mechanism] or by its [[loads]] (or both)")
-        if self.mechanism is not None and self.operation is not None:
-            raise ValueError("[mechanism] gives the speed: leave out [operation] (it is for a machine given by its loads)")
-        if self.mechanism is None and self.operation is None:
+        if self.mechanism is not None and self.operation is not None and self.operation.gives_speed:
+            raise ValueError(
+                "[mechanism] gives the speed: leave the speed out of [operation] (it is for a machine given by its"
+                " loads; run_up_time and run_down_time may stay)"
+            )
+        if self.mechanism is None and (self.operation is None or not self.operation.gives_speed):
             raise ValueError("a machine given by its [[loads]] needs its speed: [operation] speed_rpm, omega or frequency_hz")
         return self
 

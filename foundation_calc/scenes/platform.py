@@ -17,7 +17,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -78,6 +78,14 @@ class Operation(SpeedFields):
     amplitude: float = quantity("u", "m", "required amplitude of the circular motion", gt=0)
     regime: Literal["above", "below"] = quantity(
         "-", "-", '"above" resonance (sign - in (3.14)) or "below" (sign +)', "above"
+    )
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
+        examples=[5.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
+        examples=[10.0],
     )
 
 
@@ -143,6 +151,10 @@ class Limits(SceneModel):
     exciter_height_ratio: float = quantity(
         "c/ζ", "-", "warn when the exciter is more than this many ζ above the support plane", 3.0, gt=0
     )
+    transient_amplitude: float | None = quantity(
+        "u_tr", "m", "largest allowed displacement of the centre of mass and the product's corners during"
+        " start-up and run-down (fcalc runup); default: none", None, gt=0, examples=[5.0e-3],
+    )
 
 
 #: Amplitude [m] above which u was probably typed in mm: vibro-tables vibrate 0.1-5 mm.
@@ -166,6 +178,7 @@ class PlatformScene(SceneModel):
         default_factory=list, description="- [-]: further rotors for the 6-DOF verification", max_length=16
     )
     limits: Limits = Limits()
+    drive: Drive | None = None
 
     def plausibility_warnings(self) -> list[str]:
         """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s)."""

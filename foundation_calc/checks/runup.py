@@ -1,0 +1,158 @@
+"""Start-up and run-down of either scene kind against ``[limits] transient_amplitude``.
+
+Builds the scene's linear structure (platform: :mod:`~foundation_calc.solvers.platform.runup`;
+crank foundation: :mod:`~foundation_calc.solvers.crank.runup`), runs it up and, when asked, down
+(:func:`~foundation_calc.solvers.numerics.runup.runup`), and compares the largest displacement of
+every point during each run with the limit. An undamped structure gets a warning: its passage
+peaks are Lewis' asymptote and the time integration's ringing never decays.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.errors import PhysicsError
+from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, RunupResult, runup, steady_peaks
+
+
+@dataclass(frozen=True)
+class LimitRow:
+    """One point in one run against the transient limit [m]."""
+
+    point: str
+    run: str
+    value: float
+    limit: float | None
+    ratio: float | None
+    outcome: Outcome
+
+
+@dataclass(frozen=True)
+class RunupReport:
+    """Every run of a scene, the points, the limit rows and the verdict.
+
+    Attributes
+    ----------
+    runs : {"run_up" | "run_down": RunupResult}
+    motor : the start-up by the scene's [drive] (MotorRun), or None
+    torques : Sommerfeld rows, one per resonance passed, when there is a motor
+    points : names of the measured points, in the order of the results' arrays
+    steady_points : peak displacement of each point in the steady state at ``omega`` [m]
+    omega : operating speed [rad/s]
+    rows : one per point and run
+    warnings : findings that do not change the verdict (undamped)
+    outcome : worst row (PASS without a limit)
+    """
+
+    runs: dict
+    motor: object
+    torques: tuple
+    points: tuple
+    steady_points: object
+    omega: float
+    rows: tuple
+    warnings: tuple
+    outcome: Outcome
+
+
+RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
+
+
+@dataclass(frozen=True)
+class TorqueRow:
+    """Sommerfeld check of one resonance: steady torque needed there against the motor's [N m]."""
+
+    mode: int
+    ratio: float
+    speed: float
+    needed: float
+    available: float
+    outcome: Outcome
+
+
+def _structure(scene):
+    """The scene's linear structure, the names of its points, the operating speed and the
+    inertia the shaft carries besides the drive's own [kg m²]."""
+    if scene.kind == "platform":
+        from foundation_calc.solvers.platform.runup import structure, unbalance_inertia
+
+        design, model = scene.design(), scene.model()
+        built, names = structure(design, model)
+        return built, names, design.omega, unbalance_inertia(design, model)
+    from foundation_calc.solvers.crank.runup import mechanism_inertia, structure
+
+    design = scene.design()
+    built = structure(design, [p.horizontal for p in scene.points], [p.height for p in scene.points])
+    return built, ("C", *(p.name for p in scene.points)), design.omega, mechanism_inertia(design)
+
+
+def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
+    """Run ``scene`` up in ``up`` [s] and down in ``down`` [s] (either may be None, not both).
+
+    Raises
+    ------
+    PhysicsError
+        when neither time is given, or a run is too long for the time integration.
+    """
+    drive = scene.drive
+    if up is None and down is None and drive is None:
+        raise PhysicsError(
+            "no run-up or run-down time: give [operation] run_up_time [s] (or run_down_time, or a [drive]) in"
+            " the scene, or --time / --down on the command line",
+            field="operation.run_up_time",
+        )
+    built, names, omega, carried = _structure(scene)
+    runs: dict[str, RunupResult] = {}
+    for key, duration, direction in (("run_up", up, 1), ("run_down", down, -1)):
+        if duration is None:
+            continue
+        try:
+            runs[key] = runup(built, omega, duration, direction)
+        except ValueError as exc:
+            field = "operation.run_up_time" if direction > 0 else "operation.run_down_time"
+            raise PhysicsError(str(exc), field=field, hint="shorten the ramp") from None
+    motor, torques = None, []
+    if drive is not None:
+        from foundation_calc.solvers.numerics.sommerfeld import motor_runup
+
+        available = drive.available_torque
+        try:
+            motor = motor_runup(built, omega, available, drive.inertia + carried)
+        except ValueError as exc:
+            raise PhysicsError(str(exc), field="drive.inertia") from None
+        largest = max((need.torque for need in motor.needs), default=0.0)
+        for need in (n for n in motor.needs if n.torque >= INSIGNIFICANT * largest):
+            short = need.torque > available
+            outcome = Outcome.FAIL if short and not motor.reached else Outcome.WARN if short else Outcome.PASS
+            torques.append(TorqueRow(need.mode, need.ratio, need.speed, need.torque, available, outcome))
+        if not motor.reached and torques and all(t.outcome is not Outcome.FAIL for t in torques):
+            # stuck although no steady need exceeds the torque: the passage nearest the stuck speed
+            k = min(range(len(torques)), key=lambda i: abs(torques[i].speed - motor.stuck_speed))
+            torques[k] = replace(torques[k], outcome=Outcome.FAIL)
+    limit = scene.limits.transient_amplitude
+    rows = []
+    peaks = [(key, result.transient_points) for key, result in runs.items()]
+    if motor is not None:
+        peaks.append(("motor", motor.transient_points))
+    for key, transient in peaks:
+        for name, value in zip(names, transient):
+            value = float(value)
+            ratio = value / limit if limit is not None else None
+            outcome = Outcome.FAIL if limit is not None and value > limit else Outcome.PASS
+            rows.append(LimitRow(name, key, value, limit, ratio, outcome))
+    warnings = []
+    if not built.damped:
+        warnings.append(
+            "the structure is undamped: a passage's peak is Lewis' asymptote 1.467/sqrt(η) × the static"
+            " deflection, and free vibration started by the ramp never decays; give damping"
+            + (" (isolators.loss_factor or damping_ratio)" if scene.kind == "platform" else " (soil.damping)")
+        )
+    return RunupReport(
+        runs=runs, motor=motor, torques=tuple(torques), points=tuple(names),
+        steady_points=steady_peaks(built, omega)[0], omega=float(omega), rows=tuple(rows), warnings=tuple(warnings),
+        outcome=worst([*(r.outcome for r in rows), *(t.outcome for t in torques)]),
+    )
+
+
+__all__ = ["RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup"]

@@ -1,0 +1,62 @@
+"""``fcalc runup SCENE``: start-up and run-down through the resonances, against a transient limit."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from foundation_calc.cli.guard import reports_errors, warn_implausible
+
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or platform.", show_default=False)]
+TimeOpt = Annotated[
+    Optional[float],
+    typer.Option("--time", min=1e-6, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),
+]
+DownOpt = Annotated[
+    Optional[float],
+    typer.Option("--down", min=1e-6, help="Run-down time [s] from the operating speed to rest; overrides [operation] run_down_time.", show_default=False),
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
+PlotOpt = Annotated[
+    Optional[Path],
+    typer.Option("--plot", metavar="FILE.png", help="Draw the displacement against time with the resonances marked; needs the plot extra.", show_default=False),
+]
+
+
+@reports_errors
+def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: JsonOpt = False, plot: PlotOpt = None) -> None:
+    """Peak vibration while the machine starts up (and runs down) through its resonances.
+
+    The speed ramps linearly from rest to the operating speed in the run-up time (and back in
+    the run-down time); with a [drive] the speed follows the motor's torque against the load
+    and a motor that would stick at a resonance fails (Sommerfeld). For every mode passed: its frequency, the sweep rate η = Ω'/ω_n², the
+    peak by a closed form and by time integration of the damped linear model (6 DOF platform,
+    3 DOF crank foundation), the time of the peak and its ratio to the steady amplitude. Fails
+    (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks.
+    """
+    from foundation_calc.checks.outcomes import exit_code
+    from foundation_calc.checks.runup import check_runup
+    from foundation_calc.output import runup as report_out
+    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
+    from foundation_calc.scenes import load_scene
+
+    if plot is not None and not plotting_available():
+        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    loaded = load_scene(scene)
+    warn_implausible(loaded)
+    operation = loaded.operation  # None in a crank scene without the table
+    up = time if time is not None else getattr(operation, "run_up_time", None)
+    down_time = down if down is not None else getattr(operation, "run_down_time", None)
+    report = check_runup(loaded, up, down_time)
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(report_out.runup_document(report, loaded, str(scene)))
+    else:
+        report_out.print_runup_report(report, loaded, str(scene))
+    report_out.print_warnings(report)
+    if plot is not None:
+        report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
+    raise typer.Exit(int(exit_code(report.outcome)))

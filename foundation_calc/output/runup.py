@@ -1,0 +1,232 @@
+"""Report of ``fcalc runup``: rich tables and the JSON document (SI units: m, rad/s, s)."""
+
+from __future__ import annotations
+
+from rich.markup import escape
+from rich.table import Table
+
+from foundation_calc.checks.runup import RUN_TITLES, RunupReport
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.solvers.numerics.runup import RunupResult
+from foundation_calc.units import speed_triplet
+
+
+def _passage_document(p, result: RunupResult, points) -> dict:
+    return {
+        "mode": p.mode + 1,
+        "natural_frequency": p.natural,
+        "harmonic": p.ratio,
+        "speed": p.speed,
+        "time": p.time,
+        "sweep_rate": p.eta,
+        "damping_ratio": p.zeta,
+        "point": points[p.point],
+        "closed_form_peak": p.closed_form,
+        "lewis_peak": p.lewis,
+        "integrated_peak": p.integrated,
+        "peak_time": p.peak_time,
+        "total_peak": p.total,
+        "ratio_to_steady": p.total / result.steady if result.steady > 0.0 else None,
+        "window": list(p.window),
+    }
+
+
+def _motor_document(report: RunupReport) -> dict | None:
+    m = report.motor
+    if m is None:
+        return None
+    return {
+        "torque": m.torque,
+        "inertia": m.inertia,
+        "reached": m.reached,
+        "time": m.time,
+        "stuck_speed": m.stuck_speed,
+        "transient_points": {n: float(v) for n, v in zip(report.points, m.transient_points)},
+        "sommerfeld": [
+            {"mode": t.mode + 1, "harmonic": t.ratio, "speed": t.speed, "torque_needed": t.needed,
+             "torque_available": t.available, "ratio": t.needed / t.available, "verdict": t.outcome.value}
+            for t in report.torques
+        ],
+    }
+
+
+def runup_document(report: RunupReport, scene, source: str) -> dict:
+    """The JSON document of ``fcalc runup`` (every number SI)."""
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "runup",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "speed": speed_triplet(report.omega),
+        "points": list(report.points),
+        "steady_points": {n: float(v) for n, v in zip(report.points, report.steady_points)},
+        "runs": {
+            key: {
+                "duration": r.duration,
+                "damped": r.damped,
+                "natural_frequencies": [float(w) for w in r.natural],
+                "steady_amplitude": r.steady,
+                "steady_points": {n: float(v) for n, v in zip(report.points, r.steady_points)},
+                "transient_points": {n: float(v) for n, v in zip(report.points, r.transient_points)},
+                "time_step": r.response.step,
+                "passages": [_passage_document(p, r, report.points) for p in r.passages],
+            }
+            for key, r in report.runs.items()
+        },
+        "motor": _motor_document(report),
+        "limits": [
+            {"point": row.point, "run": row.run, "value": row.value, "limit": row.limit, "ratio": row.ratio,
+             "verdict": row.outcome.value}
+            for row in report.rows
+        ],
+        "warnings": list(report.warnings),
+        "verdict": report.outcome.value,
+    }
+
+
+def _passages_table(key: str, r: RunupResult, points) -> Table:
+    title = (
+        f"{RUN_TITLES[key].capitalize()} in {fmt(r.duration)} s: every resonance passed"
+        f" (steady amplitude at the operating speed {fmt(r.steady)} m)"
+    )
+    table = Table(title=title, title_justify="left")
+    for name in ("mode", "ω_n [rad/s]", "harmonic", "speed [rad/s]", "η [-]", "ζ [-]", "closed form [m]",
+                 "Lewis, undamped [m]", "integration [m]", "at t [s]", "all modes [m]", "× steady", "point"):
+        table.add_column(escape(name), justify="left" if name == "point" else "right")
+    for p in r.passages:
+        table.add_row(
+            str(p.mode + 1), fmt(p.natural), f"{p.ratio:g}ω", fmt(p.speed), fmt(p.eta, 3), fmt(p.zeta, 3),
+            fmt(p.closed_form, 4), fmt(p.lewis, 4), fmt(p.integrated, 4), fmt(p.peak_time, 4), fmt(p.total, 4),
+            fmt(p.total / r.steady, 3) if r.steady > 0.0 else "-", escape(points[p.point]),
+        )
+    return table
+
+
+def _motor_table(report: RunupReport) -> Table:
+    m = report.motor
+    outcome = (
+        f"reaches the operating speed at t = {fmt(m.time, 4)} s" if m.reached
+        else f"sticks at Ω ≈ {fmt(m.stuck_speed, 4)} rad/s (not at the operating speed after {fmt(m.time, 4)} s)"
+    )
+    title = (
+        f"Motor start-up (Sommerfeld): torque {fmt(m.torque, 5)} N m, shaft inertia {fmt(m.inertia, 5)} kg m²;"
+        f" {outcome}"
+    )
+    table = Table(title=title, title_justify="left")
+    for name in ("mode", "harmonic", "speed [rad/s]", "torque needed [N m]", "available [N m]", "ratio", "verdict"):
+        table.add_column(escape(name), justify="right")
+    for t in report.torques:
+        table.add_row(
+            str(t.mode + 1), f"{t.ratio:g}ω", fmt(t.speed), fmt(t.needed, 4), fmt(t.available, 4),
+            fmt(t.needed / t.available, 3), verdict_text(t.outcome.value),
+        )
+    return table
+
+
+def print_warnings(report: RunupReport) -> None:
+    """The report's warnings on stderr (also with --json, whose stdout holds only the document)."""
+    from foundation_calc.output.console import stderr
+
+    for text in report.warnings:
+        stderr().print(f"[bold yellow]warning[/]: {escape(text)}", soft_wrap=True)
+
+
+def print_runup_report(report: RunupReport, scene, source: str) -> None:
+    """Tables for people: per run the passages, then the points against the limit."""
+    out = stdout()
+    out.print(f"[bold]{escape(scene.name or source)}[/]  ({escape(source)}, {scene.kind})")
+    out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
+    for key, r in report.runs.items():
+        if r.passages:
+            out.print(_passages_table(key, r, report.points))
+        else:
+            out.print(f"{RUN_TITLES[key].capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
+    out.print(
+        "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
+        " integration: the same mode's motion in the time integration of the whole linear model;"
+        " all modes: largest displacement of any point in the passage's window"
+    )
+    if report.motor is not None:
+        out.print(_motor_table(report))
+    table = Table(title="Largest displacement during the runs", title_justify="left")
+    for name in ("point", "run", "steady [m]", "transient [m]", "limit [m]", "ratio", "verdict"):
+        table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
+    for row in report.rows:
+        steady = report.steady_points[report.points.index(row.point)]
+        table.add_row(
+            escape(row.point), RUN_TITLES[row.run], fmt(float(steady), 4), fmt(row.value, 4),
+            fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
+            verdict_text(row.outcome.value),
+        )
+    out.print(table)
+    out.print(f"Verdict: {verdict_text(report.outcome.value)}")
+
+
+__all__ = ["plot_runup", "print_runup_report", "print_warnings", "runup_document"]
+
+
+#: Points of the envelope drawn per run [-].
+ENVELOPE_POINTS = 2000
+
+
+def _envelope(t, values, period):
+    """(times, envelope) of a record: the running maximum over one ``period`` [s] (the operating
+    speed's), thinned to about :data:`ENVELOPE_POINTS` points."""
+    import numpy as np
+    from scipy.ndimage import maximum_filter1d
+
+    step = float(np.median(np.diff(t))) if len(t) > 1 else 1.0
+    width = max(1, int(round(period / step)))
+    upper = maximum_filter1d(values, size=width, origin=(width - 1) // 2) if width > 1 else values
+    stride = max(1, len(values) // ENVELOPE_POINTS)
+    return t[::stride], upper[::stride]
+
+
+def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> None:
+    """The envelope of the largest displacement against time for every run, the shaft speed, the
+    resonances passed marked, the steady amplitude and the limit drawn (``--plot``)."""
+    import numpy as np
+
+    from foundation_calc.output.plots import new_figure, save
+
+    records = []
+    for key, r in report.runs.items():
+        speed = r.omega * (r.response.t / r.duration if r.direction > 0 else 1.0 - r.response.t / r.duration)
+        records.append((RUN_TITLES[key], r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
+                        [(p.time, p) for p in r.passages]))
+    if report.motor is not None:
+        m = report.motor
+        marks = []
+        for t in report.torques:
+            crossed = np.nonzero(m.speed >= t.speed)[0]
+            if crossed.size:
+                marks.append((float(m.t[crossed[0]]), t))
+        records.append((RUN_TITLES["motor"], m.t, m.magnitude, m.speed, marks))
+    fig, _ = new_figure(9.0, 1.0 + 3.0 * len(records))
+    fig.clf()
+    axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]
+    period = 2.0 * np.pi / report.omega
+    for ax, (name, t, values, speed, marks) in zip(axes, records):
+        et, ev = _envelope(t, values, period)
+        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)")
+        ax.axhline(float(report.steady_points.max()) * 1e3, color="tab:green", ls="--", lw=1,
+                   label="steady, operating speed")
+        if limit is not None:
+            ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
+        for k, (when, p) in enumerate(marks):
+            ax.axvline(when, color="0.6", lw=0.8)
+            ax.annotate(f"mode {p.mode + 1}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
+                        xytext=(2, -10 - 9 * (k % 3)), textcoords="offset points", fontsize=7, color="0.3")
+        twin = ax.twinx()
+        twin.plot(t, speed, color="0.45", lw=0.9, ls="-.", label="shaft speed")
+        twin.set_ylabel("shaft speed [rad/s]", color="0.35")
+        twin.set_ylim(bottom=0.0)
+        ax.set_title(name, fontsize=10, loc="left")
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("displacement [mm]")
+        ax.set_ylim(bottom=0.0, top=max(float(ev.max()) * 1e3, (limit or 0.0) * 1e3) * 1.25)
+        ax.grid(alpha=0.3)
+    handles = axes[0].get_legend_handles_labels()
+    speed_line = twin.get_legend_handles_labels()
+    fig.legend(handles[0] + speed_line[0], handles[1] + speed_line[1], loc="outside lower center", ncol=2, fontsize=8)
+    fig.suptitle(title, fontsize=11)
+    save(fig, path)

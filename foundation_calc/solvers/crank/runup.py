@@ -1,0 +1,86 @@
+"""The crank foundation as a linear structure for start-up and run-down.
+
+The exact equations linearised about rest with their coefficients averaged over a revolution
+(M̄, C̄, K̄ of :func:`~foundation_calc.solvers.crank.averaged.linearise`; C̄ holds the base
+dashpots) and the mechanism's exact forcing -r0(φ), expanded in harmonics n = 0 ... N of the
+crank angle φ(t) = ∫Ω dt. Each harmonic splits into a part ∝ Ω² (the mechanism's inertia) and a
+constant part (the weight of rod and slider), found from the forcing at ω and 2ω; the split is
+checked at 3ω. Points: the centre of mass C and the scene's points, displaced (x + H θ, y + u θ)
+to first order (README, "Model").
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from foundation_calc.errors import ConvergenceError
+from foundation_calc.solvers.crank.averaged import linearise
+from foundation_calc.solvers.crank.dynamics import mechanism_motion
+from foundation_calc.solvers.crank.frequencies import require_stable_rocking
+from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Structure
+from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
+from foundation_calc.solvers.numerics.trig_series import analyse, phases
+
+#: Samples of a revolution and the harmonics of the forcing kept (the slider's series falls
+#: by about λ per order; harmonics under :data:`NEGLIGIBLE` of the largest are dropped) [-].
+SAMPLES = 128
+HARMONICS = 8
+
+#: Largest relative mismatch of the split F(Ω) = Ω² A + B at 3ω before it counts as a bug [-].
+SPLIT_TOLERANCE = 1e-9
+
+
+def _forcing(design: CrankDesign, scale: float) -> np.ndarray:
+    """Complex harmonics c_n of -r0 = Σ Re(c_n e^{inφ}) at ``scale`` × ω, shape (N + 1, 3)."""
+    lin = linearise(replace(design, omega=design.omega * scale), phases(SAMPLES))
+    fc, fs = analyse(lin.forcing, HARMONICS)
+    return (fc - 1j * fs).T
+
+
+def structure(design: CrankDesign, horizontal, height) -> Structure:
+    """The foundation of ``design`` as a :class:`Structure`; points: C, then those at
+    ``horizontal`` [m] from C and ``height`` [m] above it.
+
+    Raises
+    ------
+    PhysicsError
+        when the foundation is unstable in rocking.
+    """
+    require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
+    lin = linearise(design, phases(SAMPLES))
+    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0:
+        C = np.zeros_like(C)  # the mechanism's mean velocity terms vanish: what is left is round-off
+    f1, f2, f3 = (_forcing(design, s) for s in (1.0, 2.0, 3.0))
+    w2 = design.omega**2
+    A = (f2 - f1) / (3.0 * w2)
+    B = f1 - w2 * A
+    mismatch = np.abs(9.0 * w2 * A + B - f3).max()
+    if mismatch > SPLIT_TOLERANCE * np.abs(f3).max():
+        raise ConvergenceError(f"the crank's forcing is not Ω² A + B (mismatch {mismatch:.3g} at 3ω)")
+    size = np.abs(A * w2).max(axis=1) + np.abs(B).max(axis=1)
+    keep = size > NEGLIGIBLE * size.max()
+    keep[0] = True
+    n = np.arange(HARMONICS + 1)[keep]
+    u = np.concatenate([[0.0], np.asarray(horizontal, dtype=float)])
+    H = np.concatenate([[0.0], np.asarray(height, dtype=float)])
+    points = np.array([[[1.0, 0.0, h], [0.0, 1.0, x]] for x, h in zip(u, H)])
+    load = RotatingLoad(n.astype(float), A[keep], B[keep])
+    return Structure(mass=M, damping=C, stiffness=K, load=load, points=points)
+
+
+def mechanism_inertia(design: CrankDesign) -> float:
+    """Mean inertia of the rod (slider lumped in) referred to the crank shaft [kg m²]:
+    ⟨m |∂p/∂φ|² + m ρ² (∂ψ/∂φ)²⟩ over a revolution, ∂ψ/∂φ = λ cos φ / cos ψ (twice its mean
+    kinetic energy at unit speed)."""
+    phi = phases(SAMPLES)
+    motion = mechanism_motion(phi, 1.0, design.r, design.l, design.rod.l1)
+    rod = design.rod
+    dpsi = design.lam * np.cos(phi) / motion.cos_psi
+    return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
+
+
+__all__ = ["mechanism_inertia", "structure"]
