@@ -30,7 +30,7 @@ def bench_json(tmp: str) -> tuple[dict, str]:
     from typer.testing import CliRunner
 
     args = ["bench", str(SCENE), "--quick", "--json", "--skip", "throughput", "--skip", "startup", "--skip", "batch", "--skip", "points"]
-    args += ["--skip", "runup"]
+    args += ["--skip", "runup", "--skip", "harmonic_balance"]
     args += [arg for m in METHODS if m.key != "shooting_solve_ivp" for arg in ("--method", m.key)]
     plot = f"{tmp}/bench.png"
     try:
@@ -175,3 +175,22 @@ def test_damped_scene_errors_agree_with_shooting():
         errors[result.method.key] = np.max(np.abs(peaks - independent) / independent)
         assert result.error == pytest.approx(errors[result.method.key], rel=1e-4, abs=1e-8)
     assert errors["averaged_operator"] < errors["first_approximation"] / 10
+
+
+def test_platform_truncation_rows_bound_their_error():
+    """The harmonic-balance section on the 1- and 3-exciter rigs: the error against the converged
+    solve falls with K and the solver's own estimate is never below it (the 17-exciter rig is
+    left to ``fcalc bench``: it costs a minute)."""
+    from foundation_calc.benchmarks.harmonic_balance import benchmark_truncation
+    from foundation_calc.output.bench_report import bench_document
+
+    rows, checks = benchmark_truncation(0.0, rigs=(0, 2))
+    three = [r for r in rows if r.exciters == 3 and r.error is not None]
+    assert len(three) >= 4 and [r.exciters for r in checks] == [1, 3]
+    errors = [r.error for r in three]
+    assert errors == sorted(errors, reverse=True) and errors[0] > 1e-3 and errors[-1] < 1e-10
+    for r in three:
+        assert r.estimate >= r.error
+    doc = bench_document([], [], None, None, (rows, checks))["platform_harmonic_balance"]
+    assert [o["exciters"] for o in doc["orders"]] == [r.exciters for r in rows]
+    assert doc["whole_check"][0]["ratio_to_one_exciter"] == 1.0

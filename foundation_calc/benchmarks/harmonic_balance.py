@@ -88,14 +88,21 @@ def _peaks(v) -> np.ndarray:
     return np.concatenate([v.amplitudes, [v.rocking], v.corner_peaks])
 
 
-def benchmark_truncation(min_time: float, on_rig=lambda text: None) -> tuple[list[TruncationRow], list[CheckTime]]:
-    """Rows of time and error against K for each rig, and each rig's whole-check time."""
+#: Further exciters of the rigs: 1, 3 and 17 exciters in all.
+RIGS = (0, 2, 16)
+
+
+def benchmark_truncation(
+    min_time: float, on_rig=lambda text: None, rigs=RIGS
+) -> tuple[list[TruncationRow], list[CheckTime]]:
+    """Rows of time and error against K for each rig (``rigs``: numbers of further exciters), and
+    each rig's whole-check time."""
     from foundation_calc.checks.platform import check_platform
     from foundation_calc.solvers.platform.harmonic_balance import steady_state
     from foundation_calc.solvers.platform.verification import build, measure as measured, product_corners
 
     rows, checks = [], []
-    for extra in (0, 2, 16):
+    for extra in rigs:
         on_rig(f"harmonic balance: {extra + 1} exciter{'s' if extra else ''}")
         scene = rig(extra)
         design, model = scene.design(), scene.model()
