@@ -185,6 +185,15 @@ def test_fcalc_soil_names_methods_that_disagree_by_more_than_2(runner, tmp_path)
     assert any("used by method 'gazetas' only" in w for w in findings), findings
 
 
+def test_fcalc_soil_names_damping_ratios_that_disagree_and_why(runner):
+    """Lysmer's rocking radiation damping against Gazetas' rocking, which keeps material damping
+    alone: the ratios differ by far more than 2, and the finding says where the gap comes from."""
+    result = runner.invoke(app, ["soil", str(LYSMER), "--json"])
+    findings = [w for w in json.loads(result.stdout)["warnings"] if "damping ratios xi_phi" in w]
+    assert len(findings) == 1 and "gazetas' rocking keeps the material damping alone" in findings[0], findings
+    assert not any("damping ratios xi_z" in w for w in json.loads(result.stdout)["warnings"])
+
+
 def test_fcalc_soil_names_an_operating_speed_beyond_the_dampings_range(runner, tmp_path):
     """a0 = ω B'/V_s: 150 rpm on a 4 m wide base over V_s = 170 m/s is 0.18; 1500 rpm is 1.85."""
     document = read_toml(LYSMER)

@@ -21,8 +21,15 @@ from foundation_calc.solvers.soil.springs import uncoupled_frequencies
 #: method outside its range.
 DISAGREEMENT_FACTOR = 2.0
 
-#: The springs compared between methods, with their names in messages.
+#: The springs and damping ratios compared between methods, with their names in messages.
 SPRINGS = {"K_z": "vertical", "K_x": "horizontal", "K_phi": "rocking"}
+RATIOS = {"xi_z": "vertical", "xi_x": "horizontal", "xi_phi": "rocking"}
+
+#: Why a method's damping ratio may stand apart, said beside its disagreement.
+RATIO_CAVEATS = {
+    ("gazetas", "xi_phi"): "gazetas' rocking keeps the material damping alone (its radiation is left out,"
+    " which over-states the rocking response)",
+}
 
 
 @dataclass(frozen=True)
@@ -95,13 +102,16 @@ def _disagreements(results: tuple[MethodResult, ...]) -> list[str]:
     found = []
     for i, a in enumerate(results):
         for b in results[i + 1:]:
-            for key, name in SPRINGS.items():
+            for key, name in (*((k, f"{n} springs") for k, n in SPRINGS.items()),
+                              *((k, f"{n} damping ratios") for k, n in RATIOS.items())):
                 low, high = sorted((getattr(a, key), getattr(b, key)))
                 if high > DISAGREEMENT_FACTOR * low:
+                    caveats = [RATIO_CAVEATS[m, key] for m in (a.method, b.method) if (m, key) in RATIO_CAVEATS]
+                    apart = f"a factor of {high / low:.3g}" if low > 0.0 else f"{high:.3g} against 0"
                     found.append(
-                        f"the {name} springs {key} of {a.method!r} and {b.method!r} differ by a factor of"
-                        f" {high / low:.3g} (more than {DISAGREEMENT_FACTOR:g}): check the soil data and"
-                        " each method's range before choosing"
+                        f"the {name} {key} of {a.method!r} and {b.method!r} differ by {apart}"
+                        f" (more than a factor of {DISAGREEMENT_FACTOR:g}): "
+                        + (f"{caveats[0]}" if caveats else "check the soil data and each method's range before choosing")
                     )
     return found
 
