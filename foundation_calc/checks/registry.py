@@ -97,7 +97,7 @@ def crank_amplitudes(scene) -> Finding:
             )
             count = tally(report.rows)
             if count.failed_rows > 1:
-                reason += (f"; {count.failed_rows} of {count.rows} values over their limits, at {count.failed_points} points",)
+                reason += (f"; {count.failed_rows} of {count.rows} values over their limits, at {count.failed_points} point{'s' * (count.failed_points != 1)}",)
         if report.code_rows:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
