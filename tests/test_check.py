@@ -230,3 +230,13 @@ def test_streamed_document_is_the_whole_documents_text(quick_checks, mixed_folde
     assert "".join(parts) == whole
     assert all(s.scene is None and all(r.report is None for r in s.runs) for s in light)
     assert [s.source for s in light] == [s.source for s in scenes]
+
+
+def test_absolute_and_relative_paths_together(runner, monkeypatch, tmp_path):
+    """`fcalc check /abs/a.toml rel/b.toml`: both checked, names printed as given."""
+    (tmp_path / "rel").mkdir()
+    shutil.copy(CONFIGS / "crank_press.toml", tmp_path / "rel" / "b.toml")
+    monkeypatch.chdir(tmp_path)
+    result = runner.invoke(app, ["check", str(CONFIGS / "frame_saw.toml"), "rel/b.toml"])
+    assert result.exit_code == 0, result.output
+    assert "frame_saw.toml" in result.stdout and "b.toml" in result.stdout

@@ -68,7 +68,9 @@ def _common_folder(sources: list[str]) -> str:
     import os
 
     folders = [os.path.dirname(s) for s in sources]
-    common = os.path.commonpath(folders) if folders and all(folders) else ""
+    if not folders or not all(folders) or len({os.path.isabs(f) for f in folders}) > 1:
+        return ""  # some in the working folder, or absolute and relative paths mixed
+    common = os.path.commonpath(folders)
     return common if all(f == common or f.startswith(common + os.sep) for f in folders) else ""
 
 
