@@ -139,7 +139,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
         for r in res["resonances"]
     )
     resonances = table(
-        "Resonances: critical crank speeds and margins",
+        "Resonances: critical speeds and margins",
         ("condition", "mode", f"critical [{sp}]", f"avg. inertia [{sp}]", "margin", "required", "verdict"),
         rows,
         (False, False, True, True, True, True, False),
