@@ -228,3 +228,12 @@ def test_a_machine_given_by_its_loads_stands_on_the_soil_methods_springs(runner,
     path = _write(tmp_path, document)
     assert runner.invoke(app, ["soil", str(path)]).exit_code == 0
     assert runner.invoke(app, ["amplitudes", str(path)]).exit_code in (0, 1)
+
+
+@pytest.mark.parametrize("method", [[], {}, 3, ["lysmer"]])
+def test_a_method_of_the_wrong_type_is_an_invalid_scene(method):
+    """Found by the fuzz test: `method = []` reached a set lookup (TypeError, exit 4)."""
+    document = read_toml(LYSMER)
+    document["soil"]["method"] = method
+    with pytest.raises(SceneError, match="soil.method"):
+        parse_scene(document)

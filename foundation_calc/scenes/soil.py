@@ -114,7 +114,7 @@ class Soil(SceneModel):
                     " coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
                 )
             method = "coefficients"
-        if method not in METHOD_KEYS:
+        if not isinstance(method, str) or method not in METHOD_KEYS:
             return data  # the field's own validation names the allowed methods
         allowed = set(METHOD_KEYS[method]) | {"method"}
         for key in data:
