@@ -180,3 +180,46 @@ def test_drive_keys_are_validated(runner, tmp_path, drive, message):
     scene.write_text(open("configs/frame_saw_soft_soil_runup.toml").read() + f"\n[drive]\n{drive}\n")
     result = runner.invoke(app, ["runup", str(scene)])
     assert result.exit_code == 3 and message in result.output
+
+
+def test_vendor_loads_run_up_against_an_independent_integration():
+    """A machine given by its vendor's loads alone (`compressor_vendor_loads.toml`), run up in 3 s:
+    the largest displacement of C against solve_ivp (DOP853) of the block's rigid-body equations
+    written here from the scene's numbers. Each load F cos(nφ + φ_F) acts as an unbalance whose
+    amplitude at speed Ω is F (Ω/ω)², with the tangential part F Ω'/(n ω²) sin(nφ + φ_F) while
+    the speed changes. Tolerance 1e-3: the exponential integrator's step (halving it moves a
+    peak by 1e-5) and DOP853 at rtol 1e-10."""
+    from scipy.integrate import solve_ivp
+
+    from foundation_calc.checks.runup import check_runup
+    from foundation_calc.scenes import load_scene
+    from foundation_calc.solvers.constants import GRAVITY
+    from foundation_calc.solvers.numerics.runup import run_end
+    from tests.conftest import CONFIGS
+
+    scene = load_scene(CONFIGS / "compressor_vendor_loads.toml")
+    ramp = 3.0
+    result = check_runup(scene, ramp, None).runs["run_up"]
+    f, springs = scene.foundation, scene.soil_springs()
+    Mt, Ic, h, w = scene.total_mass, f.moment_of_inertia, f.cog_height, scene.speed.omega_rad_s
+    Kx, Kz, Kp = float(springs.K_x), float(springs.K_z), float(springs.K_phi)
+    b = scene.block()
+    M = np.diag([Mt, Mt, Ic])
+    K = np.array([[Kx, 0, -h * Kx], [0, Kz, 0], [-h * Kx, 0, Kp + h * h * Kx - Mt * GRAVITY * h]])
+    C = np.array([[b.C_x, 0, -h * b.C_x], [0, b.C_z, 0], [-h * b.C_x, 0, b.C_phi + h * h * b.C_x]])
+    loads = [(ld.order, np.array([ld.horizontal, ld.vertical, ld.at.height * ld.horizontal
+                                  + ld.at.horizontal * ld.vertical + ld.moment]), ld.phase) for ld in scene.loads]
+    Minv = np.linalg.inv(M)
+
+    def rhs(t, s):
+        speed, rate = (w * t / ramp, w / ramp) if t < ramp else (w, 0.0)
+        phi = 0.5 * w / ramp * t * t if t < ramp else 0.5 * w * ramp + w * (t - ramp)
+        force = sum(F * ((speed / w) ** 2 * np.cos(n * phi + p) + rate / (n * w * w) * np.sin(n * phi + p))
+                    for n, F, p in loads)
+        return np.concatenate([s[3:], Minv @ (force - C @ s[3:] - K @ s[:3])])
+
+    end = run_end(ramp, np.sqrt(np.linalg.eigvals(np.linalg.solve(M, K)).real))
+    t = np.linspace(0.0, end, 200_001)
+    sol = solve_ivp(rhs, (0.0, end), np.zeros(6), method="DOP853", rtol=1e-10, atol=1e-16, t_eval=t)
+    peak_of_C = float(np.max(np.hypot(sol.y[0], sol.y[1])))
+    assert result.transient_points[0] == pytest.approx(peak_of_C, rel=1e-3)

@@ -80,11 +80,19 @@ def _structure(scene):
         design, model = scene.design(), scene.model()
         built, names = structure(design, model)
         return built, names, design.omega, unbalance_inertia(design, model)
-    from foundation_calc.solvers.crank.runup import mechanism_inertia, structure
+    from foundation_calc.solvers.crank.runup import block_structure, mechanism_inertia, structure, with_vendor_loads
 
+    names = ("C", *(p.name for p in scene.points))
+    horizontal, height = [p.horizontal for p in scene.points], [p.height for p in scene.points]
+    loads = scene.harmonic_loads()
+    if scene.mechanism is None:  # a machine given by its vendor's loads alone
+        omega = scene.speed.omega_rad_s
+        return block_structure(scene.block(), loads, omega, horizontal, height), names, omega, 0.0
     design = scene.design()
-    built = structure(design, [p.horizontal for p in scene.points], [p.height for p in scene.points])
-    return built, ("C", *(p.name for p in scene.points)), design.omega, mechanism_inertia(design)
+    built = structure(design, horizontal, height)
+    if loads is not None:
+        built = with_vendor_loads(built, loads, design.omega)
+    return built, names, design.omega, mechanism_inertia(design)
 
 
 def check_runup(scene, up: float | None, down: float | None) -> RunupReport:

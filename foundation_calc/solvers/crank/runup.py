@@ -7,6 +7,11 @@ crank angle φ(t) = ∫Ω dt. Each harmonic splits into a part ∝ Ω² (the mec
 constant part (the weight of rod and slider), found from the forcing at ω and 2ω; the split is
 checked at 3ω. Points: the centre of mass C and the scene's points, displaced (x + H θ, y + u θ)
 to first order (README, "Model").
+
+A machine given by its vendor's loads (``[[loads]]``, :mod:`~foundation_calc.solvers.crank.loads`)
+adds each load F cos(nφ + φ_F) as an unbalanced force: its amplitude grows as (Ω/ω)², the vendor's
+F being the amplitude at the operating speed ω. Without a mechanism the structure is the rigid
+block of :func:`~foundation_calc.solvers.crank.loads.matrices`.
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ from foundation_calc.errors import ConvergenceError
 from foundation_calc.solvers.crank.averaged import linearise
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
+from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Structure
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
@@ -65,11 +71,50 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     keep = size > NEGLIGIBLE * size.max()
     keep[0] = True
     n = np.arange(HARMONICS + 1)[keep]
+    load = RotatingLoad(n.astype(float), A[keep], B[keep])
+    return Structure(mass=M, damping=C, stiffness=K, load=load, points=_point_maps(horizontal, height))
+
+
+def _point_maps(horizontal, height) -> np.ndarray:
+    """Maps from (x, y, θ) to the displacement (x + H θ, y + u θ) of C and of the points at
+    ``horizontal`` u [m] from C and ``height`` H [m] above it, shape (P, 2, 3)."""
     u = np.concatenate([[0.0], np.asarray(horizontal, dtype=float)])
     H = np.concatenate([[0.0], np.asarray(height, dtype=float)])
-    points = np.array([[[1.0, 0.0, h], [0.0, 1.0, x]] for x, h in zip(u, H)])
-    load = RotatingLoad(n.astype(float), A[keep], B[keep])
-    return Structure(mass=M, damping=C, stiffness=K, load=load, points=points)
+    return np.array([[[1.0, 0.0, h], [0.0, 1.0, x]] for x, h in zip(u, H)])
+
+
+def vendor_load(loads: HarmonicLoads, omega: float) -> RotatingLoad:
+    """The vendor's loads as unbalanced forces ∝ Ω² (module docstring): one harmonic per order n,
+    inertial part Σ Q e^{iφ_F} / ω² [N s², N m s²] (loads of one order summed)."""
+    orders = np.unique(loads.order)
+    generalized = loads.generalized()
+    inertial = np.array([generalized[loads.order == n].sum(axis=0) for n in orders]) / omega**2
+    return RotatingLoad(orders.astype(float), inertial, np.zeros_like(inertial))
+
+
+def with_vendor_loads(built: Structure, loads: HarmonicLoads, omega: float) -> Structure:
+    """``built`` with the vendor's loads (:func:`vendor_load`) added to its mechanism's."""
+    extra = vendor_load(loads, omega)
+    load = RotatingLoad(
+        np.concatenate([built.load.ratio, extra.ratio]),
+        np.concatenate([built.load.inertial, extra.inertial]),
+        np.concatenate([built.load.constant, extra.constant]),
+    )
+    return replace(built, load=load)
+
+
+def block_structure(block: RigidBlock, loads: HarmonicLoads, omega: float, horizontal, height) -> Structure:
+    """A machine given by its loads alone: the rigid block on its soil (M, C, K of
+    :func:`~foundation_calc.solvers.crank.loads.matrices`) under :func:`vendor_load`.
+
+    Raises
+    ------
+    PhysicsError
+        when the foundation is unstable in rocking.
+    """
+    require_stable_rocking(block.K_phi, 1.0, block.M_tot * block.g, block.h)
+    M, K, C = matrices(block)
+    return Structure(mass=M, damping=C, stiffness=K, load=vendor_load(loads, omega), points=_point_maps(horizontal, height))
 
 
 def mechanism_inertia(design: CrankDesign) -> float:
@@ -83,4 +128,4 @@ def mechanism_inertia(design: CrankDesign) -> float:
     return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
 
 
-__all__ = ["mechanism_inertia", "structure"]
+__all__ = ["block_structure", "mechanism_inertia", "structure", "vendor_load", "with_vendor_loads"]
