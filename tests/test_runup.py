@@ -223,3 +223,23 @@ def test_vendor_loads_run_up_against_an_independent_integration():
     sol = solve_ivp(rhs, (0.0, end), np.zeros(6), method="DOP853", rtol=1e-10, atol=1e-16, t_eval=t)
     peak_of_C = float(np.max(np.hypot(sol.y[0], sol.y[1])))
     assert result.transient_points[0] == pytest.approx(peak_of_C, rel=1e-3)
+
+
+def test_fcalc_check_judges_the_start_up_of_a_scene_with_a_transient_limit(runner, tmp_path):
+    """A limit written in a scene is never passed over: `fcalc check` runs the start-up of a scene
+    with run times and [limits] transient_amplitude (here tightened below its 15.6 mm peak) and
+    fails it with `fcalc runup`'s verdict; a scene without either has no runup row."""
+    from foundation_calc.cli.app import app
+    from tests.conftest import CONFIGS
+
+    text = (CONFIGS / "frame_saw_soft_soil_runup.toml").read_text()
+    (tmp_path / "tight.toml").write_text(text.replace("transient_amplitude = 2.0e-2", "transient_amplitude = 1.0e-2"))
+    (tmp_path / "plain.toml").write_text((CONFIGS / "frame_saw.toml").read_text())
+    result = runner.invoke(app, ["check", str(tmp_path), "--json"])
+    scenes = {s["source"].rsplit("/", 1)[-1]: s for s in json.loads(result.stdout)["scenes"]}
+    tight = {c["check"]: c for c in scenes["tight.toml"]["checks"]}
+    assert tight["runup"]["verdict"] == "fail" and result.exit_code == 1
+    assert tight["runup"]["result"]["limits"] and "of the limit" in tight["runup"]["reason"]
+    assert "runup" not in {c["check"] for c in scenes["plain.toml"]["checks"]}
+    single = runner.invoke(app, ["runup", str(tmp_path / "tight.toml")])
+    assert single.exit_code == 1

@@ -118,7 +118,10 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     runs = []
     for name, check in CHECKS[scene.kind].items():
         try:
-            finding = _finite(check(scene))
+            finding = check(scene)
+            if finding is None:  # the scene gives nothing this check judges
+                continue
+            finding = _finite(finding)
         except Exception as exc:  # noqa: BLE001 - one check's error must not stop the others
             if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
                 raise

@@ -132,8 +132,40 @@ def platform_design(scene) -> Finding:
     return Finding("design", report.outcome, reason, values, report, details)
 
 
-#: scene kind -> {check name: function scene -> Finding}, in the order they are reported.
-CHECKS: dict[str, dict[str, Callable[[Any], Finding]]] = {
-    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes},
-    "platform": {"design": platform_design},
+def runup(scene) -> Finding | None:
+    """Largest displacement during start-up and run-down, and a motor that may stick (``fcalc
+    runup``), for a scene that gives something to judge them by (:func:`checks.runup.judged`);
+    None (not run) otherwise: a run-up costs 0.5-10 s of time integration."""
+    from foundation_calc.checks.runup import RUN_TITLES, check_runup, judged, run_times
+
+    if not judged(scene):
+        return None
+    report = check_runup(scene, *run_times(scene))
+    parts: list = []
+    limited = [row for row in report.rows if row.ratio is not None]
+    values = {}
+    if limited:
+        top = max(limited, key=lambda row: row.ratio)
+        values = {"transient": ("amplitude", top.value), "limit": ("amplitude", top.limit)}
+        parts += [f"largest displacement during {RUN_TITLES[top.run]} ", values["transient"], f" at {top.point} is"
+                  f" {top.ratio:.0%} of the limit ", values["limit"]]
+    stuck = [t for t in report.torques if t.outcome is not Outcome.PASS]
+    if stuck:
+        worst_torque = max(stuck, key=lambda t: t.needed / t.available)
+        parts += [("; " if parts else "") + f"the motor {'sticks' if worst_torque.outcome is Outcome.FAIL else 'barely passes'}"
+                  f" at mode {worst_torque.mode}: it needs {worst_torque.needed:.4g} N m, has {worst_torque.available:.4g} N m"]
+    elif report.motor is not None:
+        parts += [("; " if parts else "") + "the motor passes every resonance"]
+    details = tuple(
+        f"{row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}: {row.value:.4g} m"
+        + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
+        for row in report.rows
+    ) + tuple(f"WARN {warning}" for warning in report.warnings)
+    return Finding("runup", report.outcome, tuple(parts), values, report, details)
+
+
+#: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
+CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
+    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup},
+    "platform": {"design": platform_design, "runup": runup},
 }

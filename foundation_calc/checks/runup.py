@@ -95,6 +95,19 @@ def _structure(scene):
     return built, names, design.omega, mechanism_inertia(design)
 
 
+def run_times(scene) -> tuple[float | None, float | None]:
+    """The scene's ``[operation] run_up_time`` and ``run_down_time`` [s] (None when not given)."""
+    operation = scene.operation  # None in a crank scene without the table
+    return getattr(operation, "run_up_time", None), getattr(operation, "run_down_time", None)
+
+
+def judged(scene) -> bool:
+    """True when the scene gives something to judge a start-up by: a run time and
+    ``[limits] transient_amplitude``, or a ``[drive]`` (which may stick)."""
+    up, down = run_times(scene)
+    return scene.drive is not None or (scene.limits.transient_amplitude is not None and (up, down) != (None, None))
+
+
 def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     """Run ``scene`` up in ``up`` [s] and down in ``down`` [s] (either may be None, not both).
 
@@ -163,4 +176,4 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     )
 
 
-__all__ = ["RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup"]
+__all__ = ["RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times"]

@@ -37,7 +37,7 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
     (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks.
     """
     from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.checks.runup import check_runup
+    from foundation_calc.checks.runup import check_runup, run_times
     from foundation_calc.output import runup as report_out
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
     from foundation_calc.scenes import load_scene
@@ -46,9 +46,9 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
         raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
     loaded = load_scene(scene)
     warn_implausible(loaded)
-    operation = loaded.operation  # None in a crank scene without the table
-    up = time if time is not None else getattr(operation, "run_up_time", None)
-    down_time = down if down is not None else getattr(operation, "run_down_time", None)
+    scene_up, scene_down = run_times(loaded)
+    up = time if time is not None else scene_up
+    down_time = down if down is not None else scene_down
     report = check_runup(loaded, up, down_time)
     if json:
         from foundation_calc.output.console import print_json

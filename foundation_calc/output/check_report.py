@@ -134,6 +134,10 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.crank_amplitudes import amplitudes_document
 
         document = amplitudes_document(report, scene, "")
+    elif check == "runup":
+        from foundation_calc.output.runup import runup_document
+
+        document = runup_document(report, scene, "")
     else:
         from foundation_calc.output.platform import platform_document
 
