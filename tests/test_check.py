@@ -46,8 +46,10 @@ def mixed_folder(tmp_path, frame_saw):
 
 @pytest.mark.parametrize("config", configs_of_kind("crank_foundation"), ids=lambda p: p.name)
 def test_each_crank_config_agrees_with_resonance_and_amplitudes(runner, config):
-    """`check` on one crank scene gives the verdicts of `resonance` and `amplitudes`, and the worse exit code."""
-    singles = {name: runner.invoke(app, [name, str(config), "--json"]) for name in ("resonance", "amplitudes")}
+    """`check` on one crank scene gives the verdicts of `resonance`, `amplitudes` and, for a scene
+    with a transient limit, `runup`, and the worst exit code."""
+    names = ("resonance", "amplitudes", *(("runup",) if "transient_amplitude" in config.read_text() else ()))
+    singles = {name: runner.invoke(app, [name, str(config), "--json"]) for name in names}
     result = _invoke(runner, config, "--json")
     assert result.exit_code == max(single.exit_code for single in singles.values()), result.stdout
     assert result.stderr == ""
@@ -55,7 +57,7 @@ def test_each_crank_config_agrees_with_resonance_and_amplitudes(runner, config):
     assert doc["schema_version"] == 1 and doc["command"] == "check"
     (scene,) = doc["scenes"]
     checks = {c["check"]: c for c in scene["checks"]}
-    assert list(checks) == ["resonance", "amplitudes"]
+    assert list(checks) == list(names)
     for name, single in singles.items():
         assert checks[name]["verdict"] == json.loads(single.stdout)["verdict"], name
     assert checks["resonance"]["result"]["resonances"] == json.loads(singles["resonance"].stdout)["resonances"]
@@ -69,8 +71,13 @@ def test_each_platform_config_agrees_with_fcalc_platform(runner, config):
     assert result.exit_code == single.exit_code, result.stdout
     assert result.stderr == ""
     (scene,) = json.loads(result.stdout)["scenes"]
-    (design,) = scene["checks"]
+    design, *runup = scene["checks"]
     assert design["check"] == "design" and design["verdict"] == json.loads(single.stdout)["verdict"]
+    if "transient_amplitude" in config.read_text():  # its start-up is judged as `fcalc runup` judges it
+        (runup,) = runup
+        assert runup["verdict"] == json.loads(runner.invoke(app, ["runup", str(config), "--json"]).stdout)["verdict"]
+    else:
+        assert runup == []
     assert design["result"]["checks"] == json.loads(single.stdout)["checks"]
     assert len(design["details"]) == len(design["result"]["checks"])
 
