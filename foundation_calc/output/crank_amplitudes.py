@@ -169,6 +169,26 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
     return doc
 
 
+def _table_harmonics(report: AmplitudeReport) -> tuple[tuple[str, int], ...]:
+    """The harmonics the tables list: :data:`HARMONICS` and every order of the vendor's loads."""
+    if report.vendor is None:
+        return HARMONICS
+    extra = sorted({int(n) for n in report.vendor.loads.order} - {n for _, n in HARMONICS})
+    listed = HARMONICS + tuple((dof, n) for dof in DOFS for n in extra)
+    return tuple(sorted(listed, key=lambda h: (DOFS.index(h[0]), h[1])))
+
+
+def _noise_scales(shown, harmonics, value_of) -> dict:
+    """The largest harmonic of each dof and method, ``(key, dof) -> size``: a value smaller than
+    ROUNDOFF of it is noise and prints as 0."""
+    return {
+        (a.key, dof): max(abs(value_of(a, dof, k)) for d, k in harmonics if d == dof)
+        for a in shown
+        if not a.resonant
+        for dof in DOFS
+    }
+
+
 def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     if report.damped:
         return _damped_harmonics_table(report, units)
@@ -177,11 +197,8 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     title = "signed coefficient of cos nωt for y, of sin nωt for x and θ" if signed else "magnitude of each harmonic"
     table = Table(title=f"Harmonics ({title})", title_justify="left")
     table.add_column("harmonic")
-    shown = [a for a in report.approximations.values()]
-    harmonics = HARMONICS
-    if not signed:
-        extra = sorted({int(n) for n in report.vendor.loads.order} - {n for _, n in HARMONICS})
-        harmonics = tuple(sorted(HARMONICS + tuple((dof, n) for dof in DOFS for n in extra), key=lambda h: (DOFS.index(h[0]), h[1])))
+    shown = list(report.approximations.values())
+    harmonics = _table_harmonics(report)
 
     def value_of(a, dof, n):
         return float(a.motion.coefficient(dof, n)[0 if dof == "y" else 1]) if signed else abs(a.harmonic(dof, n))
@@ -189,12 +206,7 @@ def _harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     for a in shown:
         table.add_column(a.key.replace("_", " "), justify="right")
     _error_columns(table, report)
-    scales = {  # the largest harmonic of each dof and method: smaller than ROUNDOFF of it is noise
-        (a.key, dof): max(abs(value_of(a, dof, k)) for d, k in harmonics if d == dof)
-        for a in shown
-        if not a.resonant
-        for dof in DOFS
-    }
+    scales = _noise_scales(shown, harmonics, value_of)
     for dof, n in harmonics:
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
         cells = [f"{dof}{n} \\[{unit}]"]
@@ -233,13 +245,9 @@ def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Tab
         table.add_column(f"A, {name}", justify="right")
         table.add_column(f"φ [°], {name}", justify="right")
     _error_columns(table, report)
-    scales = {
-        (a.key, dof): max(abs(a.harmonic(d, k)) for d, k in HARMONICS if d == dof)
-        for a in shown
-        if not a.resonant
-        for dof in DOFS
-    }
-    for dof, n in HARMONICS:
+    harmonics = _table_harmonics(report)
+    scales = _noise_scales(shown, harmonics, lambda a, dof, n: abs(a.harmonic(dof, n)))
+    for dof, n in harmonics:
         unit = UNITS[dof] if dof == "theta" else units.label("amplitude")
         cells = [f"{dof}{n} \\[{unit}]"]
         for a in shown:
