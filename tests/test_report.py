@@ -81,7 +81,7 @@ def html_text(path) -> str:
 def test_crank_sheet_shows_the_json_numbers(runner, tmp_path, suffix):
     scene = CONFIGS / "frame_saw.toml"
     out = tmp_path / f"sheet{suffix}"
-    result = runner.invoke(app, ["report", str(scene), "-o", str(out)])
+    result = runner.invoke(app, ["report", str(scene), "-o", str(out), "--units", "m,m/s"])  # SI, as --json
     assert result.exit_code in (0, 1), result.output
     text = pdf_text(out) if suffix == ".pdf" else html_text(out)
     expected = crank_expected(json_of(runner, "resonance", scene), json_of(runner, "amplitudes", scene))
@@ -91,7 +91,7 @@ def test_crank_sheet_shows_the_json_numbers(runner, tmp_path, suffix):
 def test_platform_sheet_shows_the_json_numbers(runner, tmp_path):
     scene = CONFIGS / "platform_paper_example.toml"
     out = tmp_path / "sheet.pdf"
-    assert runner.invoke(app, ["report", str(scene), "-o", str(out)]).exit_code == 0
+    assert runner.invoke(app, ["report", str(scene), "-o", str(out), "--units", "m"]).exit_code == 0  # SI, as --json
     doc = json_of(runner, "platform", scene)
     d, v = doc["design"], doc["verification"]
     expected = {k: d[k] for k in ("c0", "c3", "a", "b", "c", "static_deflection", "translation_frequency")}
