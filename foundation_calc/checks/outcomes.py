@@ -34,35 +34,6 @@ def worst(outcomes: Iterable[Outcome]) -> Outcome:
 RESONANCE_FAIL_MARGIN = 0.05
 
 
-def resonance_outcome(margin: float, detuning: float, driven: bool) -> Outcome:
-    """The verdict rule of every scene kind for one resonance (README, "Verdicts").
-
-    A mode the design drives (platform: the two translations; crank foundation: the paper's
-    conditions ω = k0, 2ω = k0, ω = p1,2, 3ω = p1,2) fails inside the detuning band; any mode
-    fails within :data:`RESONANCE_FAIL_MARGIN`; any other mode inside the band warns.
-
-    Parameters
-    ----------
-    margin : relative distance of the speed from the resonance, |ω - ω_c|/ω_c [-]
-    detuning : required relative distance, the scene's ``[limits] detuning`` [-]
-    driven : whether the design's own excitation drives this mode
-
-    >>> [resonance_outcome(m, 0.2, d).value for m, d in ((0.15, True), (0.15, False), (0.04, False), (0.3, True))]
-    ['fail', 'warn', 'fail', 'pass']
-    """
-    fails, inside = resonance_masks(margin, detuning, driven)
-    if fails:
-        return Outcome.FAIL
-    return Outcome.WARN if inside else Outcome.PASS
-
-
-def resonance_masks(margin, detuning, driven):
-    """``(fails, inside)`` of :func:`resonance_outcome` for arrays of margins (numpy bool arrays
-    for ``driven``) or scalars: a resonance fails, or warns where ``inside & ~fails``."""
-    inside = margin < detuning
-    return (margin < RESONANCE_FAIL_MARGIN) | (driven & inside), inside
-
-
 def exit_code(outcome: Outcome, strict: bool = False) -> ExitCode:
     """Exit code of a run whose worst outcome is ``outcome``."""
     if outcome is Outcome.FAIL or (strict and outcome is Outcome.WARN):
