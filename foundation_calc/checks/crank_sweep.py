@@ -39,12 +39,14 @@ HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 @dataclass(frozen=True)
 class CriticalSpeed:
-    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)."""
+    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)
+    and the detuning band of its order [-] (0: the scene gives that order none)."""
 
     label: str
     source: str
     zero_order: float
     averaged: float
+    band: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -221,10 +223,11 @@ def sweep(
     critical = ()
     if variable == "omega":
         lo, hi = values.min(), values.max()
-        shown = [c for c, judged in zip(conditions, verdict.judged.reshape(-1, len(conditions))[0]) if judged or c.source != "harmonic"]
+        judged = verdict.judged.reshape(-1, len(conditions))[0]
+        shown = [(c, band) for c, band, j in zip(conditions, required, judged) if j or c.source != "harmonic"]
         critical = tuple(
-            CriticalSpeed(c.label, c.source, float(w0), float(w1))
-            for c in shown
+            CriticalSpeed(c.label, c.source, float(w0), float(w1), float(band))
+            for c, band in shown
             for w0, w1 in [(_critical(zero, c, 0), _critical(averaged, c, -1))]
             if lo <= max(w0, w1) and min(w0, w1) <= hi
         )

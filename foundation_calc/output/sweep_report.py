@@ -104,10 +104,10 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
         "variable": report.variable,
         "limits": {
             **{key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
-            "detuning": report.detuning,
+            "detuning": {str(k): v for k, v in report.detuning.items()} if isinstance(report.detuning, dict) else report.detuning,
         },
         "critical_speeds": [
-            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged}
+            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged, "band": c.band}
             for c in report.critical
         ],
         "points": list(_rows(report)),

@@ -67,7 +67,10 @@ def detuning_bands(value: Any) -> float | dict[int, float]:
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise ValueError(f"{where} must be a number in ({lo:g}, {hi:g}) [-], not {v!r}")
         if not lo < v < hi:
-            raise ValueError(f"{where} = {v!r} is outside ({lo:g}, {hi:g}) [-] (a relative distance: 0.2 is 20 %)")
+            raise ValueError(
+                f"{where} = {v!r} is outside ({lo:g}, {hi:g}) [-]: a band is greater than {lo:g} and less than"
+                f" {hi:g} (a relative distance: 0.2 is 20 %)"
+            )
         return float(v)
 
     if isinstance(value, dict):

@@ -121,7 +121,7 @@ class Limits(SceneModel):
     )
     detuning: float | dict[int, float] = quantity(
         "δ", "-", "required relative distance of the speed from every judged resonance: one band,"
-        " or a band per order, e.g. {1 = 0.2, 2 = 0.2, 3 = 0.1}",
+        " or a band per order, e.g. {1 = 0.2, 2 = 0.2, 3 = 0.1}; each band > 0 and < 1",
         0.2, examples=[0.2, {"1": 0.2, "2": 0.2, "3": 0.1}],
     )
 
