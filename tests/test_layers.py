@@ -22,6 +22,7 @@ LAYER_RANK = {
     "checks": 3,
     "output": 4,
     "benchmarks": 4,
+    "validation": 4,
     "cli": 5,
     "__main__": 6,
 }

@@ -17,7 +17,7 @@ from foundation_calc import __version__
 #: The commands in the order of ``fcalc --help``: name -> module defining a function of that name.
 COMMANDS = {
     name: f"foundation_calc.cli.{name}"
-    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup")
+    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup", "validate")
 }
 
 EXIT_CODES_HELP = (
