@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from functools import cache
 
-from foundation_calc.validation.record import Case
+from foundation_calc.validation.record import Case, printed_case
 
 #: Das & Ramana's block (4 m in the plane of motion, 2 m wide, 1.5 m high, concrete 2400 kg/m³,
 #: 28.8 t) with a 6 t machine on Lysmer's half-space; the machine is given by a nominal load so
@@ -40,9 +40,6 @@ PLATFORM_SCENE = {
     "operation": {"omega": 50.0 * math.pi, "amplitude": 1.0e-3, "regime": "above"},
     "isolators": {"vertical_reference": 1.0e8},
 }
-
-HALF_DIGIT = "half a unit of the last printed digit"
-
 
 def _scene(data: dict):
     from foundation_calc.scenes import parse_scene
@@ -117,63 +114,26 @@ def _sum(name: str) -> float:
     return float(_platform().horizontal_sums[name]) / 1e8
 
 
-def _iso_case(group: int, foundation: str, printed: tuple[float, float, float]) -> Case:
-    table = "A.1" if group == 1 else "A.2"
-    return Case(
-        key=f"iso-10816-3-group{group}-{foundation}",
-        quantity=f"group {group}, {foundation} [mm/s RMS]",
-        example="ISO 10816-3 zone boundaries A/B, B/C, C/D",
-        source="ISO",
-        where=f"Table {table}",
-        reference=printed,
-        printed=" / ".join(f"{v:.1f}" for v in printed),
-        fcalc=lambda: _iso_boundaries(group, foundation),
-        method="checks.codes.zone (bisection on the zone it returns)",
-        tolerance=0.05,
-        basis=HALF_DIGIT + " (0.1 mm/s)",
+def _iso_case(group: int, foundation: str, printed: str) -> Case:
+    return printed_case(
+        f"iso-10816-3-group{group}-{foundation}", f"group {group}, {foundation} [mm/s RMS]",
+        "ISO 10816-3 zone boundaries A/B, B/C, C/D", "ISO", f"Table {'A.1' if group == 1 else 'A.2'}", printed,
+        lambda: _iso_boundaries(group, foundation), "checks.codes.zone (bisection on the zone it returns)",
     )
 
 
+DR = "Das & Ramana: block 4 × 2 × 1.5 m on Lysmer's half-space"
+BGN = "Vibrating platform, section 3 example (ω = 50π rad/s)"
+DESIGN = "fcalc platform (solvers.platform.design.design_from_position)"
+SOIL = "fcalc soil (checks.soil_methods, method lysmer)"
+
 CASES: tuple[Case, ...] = (
-    Case(
-        key="das-ramana-r0",
-        quantity="equivalent radius r0 [m]",
-        example="Das & Ramana: block 4 × 2 × 1.5 m on Lysmer's half-space",
-        source="DR",
-        where="ch. 5 example",
-        reference=1.59577,
-        printed="1.59577",
-        fcalc=_das_r0,
-        method="solvers.soil.lysmer.equivalent_radii",
-        tolerance=0.5e-5,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="das-ramana-K_z",
-        quantity="vertical spring K_z [MN/m]",
-        example="Das & Ramana: block 4 × 2 × 1.5 m on Lysmer's half-space",
-        source="DR",
-        where="ch. 5 example",
-        reference=685.94,
-        printed="685.94",
-        fcalc=lambda: _lysmer()[1].K_z / 1e6,
-        method="fcalc soil (checks.soil_methods, method lysmer)",
-        tolerance=0.005,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="das-ramana-f_z",
-        quantity="vertical frequency f_z [Hz]",
-        example="Das & Ramana: block 4 × 2 × 1.5 m on Lysmer's half-space",
-        source="DR",
-        where="ch. 5 example",
-        reference=22.3447,
-        printed="22.3447",
-        fcalc=lambda: _lysmer()[1].omega_z / (2.0 * math.pi),
-        method="fcalc soil (checks.soil_methods, method lysmer)",
-        tolerance=0.5e-4,
-        basis=HALF_DIGIT,
-    ),
+    printed_case("das-ramana-r0", "equivalent radius r0 [m]", DR, "DR", "ch. 5 example", "1.59577", _das_r0,
+                 "solvers.soil.lysmer.equivalent_radii"),
+    printed_case("das-ramana-K_z", "vertical spring K_z [MN/m]", DR, "DR", "ch. 5 example", "685.94",
+                 lambda: _lysmer()[1].K_z / 1e6, SOIL),
+    printed_case("das-ramana-f_z", "vertical frequency f_z [Hz]", DR, "DR", "ch. 5 example", "22.3447",
+                 lambda: _lysmer()[1].omega_z / (2.0 * math.pi), SOIL),
     Case(
         key="gazetas-square-vs-rigid-circle",
         quantity="K_z by Gazetas (1991) [MN/m]",
@@ -188,101 +148,24 @@ CASES: tuple[Case, ...] = (
         relative=True,
         basis="2 %: a square and the circle of its area differ by about 1 % in the rigorous solutions",
     ),
-    Case(
-        key="lewis-passage",
-        quantity="peak × sqrt(η) / (F/k) [-]",
-        example="Undamped passage through resonance, η = Ω̇/ω_n² → 0",
-        source="LEW",
-        where="1.467 / sqrt(η)",
-        reference=1.467,
-        printed="1.467",
-        fcalc=_lewis,
-        method="solvers.numerics.passage.passage_peak (envelope, Faddeeva function; zeta = 0)",
-        tolerance=0.5e-3,
-        basis=HALF_DIGIT,
-    ),
-    _iso_case(1, "rigid", (2.3, 4.5, 7.1)),
-    _iso_case(1, "flexible", (3.5, 7.1, 11.0)),
-    _iso_case(2, "rigid", (1.4, 2.8, 4.5)),
-    _iso_case(2, "flexible", (2.3, 4.5, 7.1)),
-    Case(
-        key="platform-3.18",
-        quantity="(c33 + c23)/c3 [-]",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="Eq. (3.18)",
-        reference=0.499,
-        printed="0.499",
-        fcalc=_stiffness_ratio,
-        method="fcalc platform (solvers.platform.design.design_from_position)",
-        tolerance=0.5e-3,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="platform-3.19",
-        quantity="c22 + c32 [1e8 N/m]",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="Eq. (3.19)",
-        reference=2.467,
-        printed="2.467",
-        fcalc=lambda: _sum("c22+c32"),
-        method="fcalc platform (solvers.platform.design.horizontal_sums)",
-        tolerance=0.5e-3,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="platform-3.20",
-        quantity="c11 + c21 [1e8 N/m]",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="Eq. (3.20)",
-        reference=1.240,
-        printed="1.240",
-        fcalc=lambda: _sum("c11+c21"),
-        method="fcalc platform (solvers.platform.design.horizontal_sums)",
-        tolerance=0.5e-3,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="platform-3.21-c3",
-        quantity="c3 = Σ c_i3 [1e8 N/m]",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="(3.21), printed as c13",
-        reference=4.005,
-        printed="4.005",
-        fcalc=lambda: float(_platform().c3) / 1e8,
-        method="fcalc platform (solvers.platform.design.vertical_from_position)",
-        tolerance=0.5e-3,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="platform-static-deflection",
-        quantity="static deflection |z| [mm]",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="after (3.21)",
-        reference=0.49,
-        printed="0.49",
-        fcalc=lambda: -float(_platform().static_deflection) * 1e3,
-        method="fcalc platform (PlatformDesign.static_deflection)",
-        tolerance=0.005,
-        basis=HALF_DIGIT,
-    ),
-    Case(
-        key="platform-exciter-height",
-        quantity="exciter height c [m], ζ = 0.65 m",
-        example="Vibrating platform, section 3 example (ω = 50π rad/s)",
-        source="BGN",
-        where="section 4, (3.15)",
-        reference=2.6,
-        printed="2.6",
-        fcalc=lambda: float(_platform().c),
-        method="fcalc platform (solvers.platform.design.exciter_height)",
-        tolerance=0.05,
-        basis=HALF_DIGIT,
-    ),
+    printed_case("lewis-passage", "peak × sqrt(η) / (F/k) [-]", "Undamped passage through resonance, η = Ω̇/ω_n² → 0",
+                 "LEW", "1.467 / sqrt(η)", "1.467", _lewis,
+                 "solvers.numerics.passage.passage_peak (envelope, Faddeeva function; ζ = 0)"),
+    _iso_case(1, "rigid", "2.3 / 4.5 / 7.1"),
+    _iso_case(1, "flexible", "3.5 / 7.1 / 11.0"),
+    _iso_case(2, "rigid", "1.4 / 2.8 / 4.5"),
+    _iso_case(2, "flexible", "2.3 / 4.5 / 7.1"),
+    printed_case("platform-3.18", "(c33 + c23)/c3 [-]", BGN, "BGN", "Eq. (3.18)", "0.499", _stiffness_ratio, DESIGN),
+    printed_case("platform-3.19", "c22 + c32 [1e8 N/m]", BGN, "BGN", "Eq. (3.19)", "2.467", lambda: _sum("c22+c32"),
+                 DESIGN),
+    printed_case("platform-3.20", "c11 + c21 [1e8 N/m]", BGN, "BGN", "Eq. (3.20)", "1.240", lambda: _sum("c11+c21"),
+                 DESIGN),
+    printed_case("platform-3.21-c3", "c3 = Σ c_i3 [1e8 N/m]", BGN, "BGN", "(3.21), printed as c13", "4.005",
+                 lambda: float(_platform().c3) / 1e8, DESIGN),
+    printed_case("platform-static-deflection", "static deflection |z| [mm]", BGN, "BGN", "after (3.21)", "0.49",
+                 lambda: -float(_platform().static_deflection) * 1e3, DESIGN),
+    printed_case("platform-exciter-height", "exciter height c [m], ζ = 0.65 m", BGN, "BGN", "section 4, (3.15)", "2.6",
+                 lambda: float(_platform().c), DESIGN),
 )
 
 __all__ = ["CASES", "DAS_RAMANA_SCENE", "GAZETAS_SQUARE", "PLATFORM_SCENE"]

@@ -70,6 +70,30 @@ class CaseResult:
         return abs(self.difference) <= self.case.tolerance
 
 
+#: Why the tolerance of a printed value is what it is.
+HALF_DIGIT = "half a unit of the last printed digit"
+
+
+def half_digit(printed: str) -> float:
+    """Half a unit of the last digit of a printed number (of each number of a " / " row).
+
+    >>> half_digit("685.94"), half_digit("2.6"), half_digit("11.0 / 7.1"), half_digit("2")
+    (0.005, 0.05, 0.05, 0.5)
+    """
+    decimals = max(len(p.partition(".")[2]) for p in printed.split(" / "))
+    return 0.5 * 10.0**-decimals
+
+
+def printed_case(key: str, quantity: str, example: str, source: str, where: str, printed: str,
+                 fcalc: Callable[[], Value], method: str) -> Case:
+    """A case against a value as its source prints it: the reference is the printed number (a
+    " / " row gives a tuple) and the tolerance half a unit of its last digit."""
+    numbers = tuple(float(p) for p in printed.split(" / "))
+    return Case(key=key, quantity=quantity, example=example, source=source, where=where,
+                reference=numbers if len(numbers) > 1 else numbers[0], printed=printed, fcalc=fcalc,
+                method=method, tolerance=half_digit(printed), basis=HALF_DIGIT)
+
+
 def _tuple(value: Value) -> tuple[float, ...]:
     return tuple(float(v) for v in value) if isinstance(value, Sequence) else (float(value),)
 
@@ -113,4 +137,5 @@ def run_record(cases: Sequence[Case] | None = None) -> list[CaseResult]:
     return [evaluate(case) for case in (all_cases() if cases is None else cases)]
 
 
-__all__ = ["Case", "CaseResult", "Value", "all_cases", "difference", "evaluate", "run_record"]
+__all__ = ["HALF_DIGIT", "Case", "CaseResult", "Value", "all_cases", "difference", "evaluate", "half_digit",
+           "printed_case", "run_record"]
