@@ -125,12 +125,9 @@ def _number(value: Value):
 
 def record_document(results: Sequence[CaseResult]) -> dict:
     """The record as one JSON document (values in each case's unit, as in ``quantity``)."""
-    from foundation_calc import __version__
-
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "validate",
-        "fcalc_version": __version__,
         "passed": all(r.passed for r in results),
         "summary": summary(results),
         "cases": [
