@@ -55,7 +55,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
     """
     from foundation_calc.cli.report import command_line
     from foundation_calc.output.report import write_sheet
-    from foundation_calc.output.report.documents import scene_sheet
+    from foundation_calc.output.report.documents import SHEET_KINDS, scene_sheet
 
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -63,7 +63,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
         raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
     used: dict[str, int] = {}
     for scene in scenes:
-        if scene.skipped or any(run.verdict in ("invalid", "internal") for run in scene.runs):
+        if scene.skipped or scene.kind not in SHEET_KINDS or any(run.verdict in ("invalid", "internal") for run in scene.runs):
             continue
         path = Path(scene.source)
         used[path.stem] = used.get(path.stem, 0) + 1

@@ -77,7 +77,8 @@ class Limits(SceneModel):
     """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
-        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0
+        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0,
+        examples=[2.0e-4],
     )
     velocity: float | None = quantity(
         "v_max", "m/s", "largest allowed peak velocity", None, gt=0, examples=[5.0e-3]

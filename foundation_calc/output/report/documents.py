@@ -63,11 +63,15 @@ def platform_documents(loaded, source: str) -> dict:
     return {"platform": platform_document(report, loaded, source, loaded.operation.speed_given_as)}
 
 
+#: Scene kinds that have a calculation sheet.
+SHEET_KINDS = ("crank_foundation", "platform")
+
+
 def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False) -> tuple[Sheet, dict]:
     """Load the scene at ``path``, run its checks and return its sheet and the JSON documents."""
     from foundation_calc.scenes import parse_scene, read_toml
 
-    loaded = parse_scene(read_toml(path), source=str(path))
+    loaded = parse_scene(read_toml(path), source=str(path), expect=SHEET_KINDS)
     title = title_block(path, loaded.name, command)
     inputs = inputs_section(loaded, units)
     if loaded.kind == "platform":

@@ -1,0 +1,81 @@
+"""`fcalc resonance`, `amplitudes` and `check` on the shipped block_foundation scenes, and the
+parts of a block scene that turn user input into loads (the unbalance of a balance grade)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import load_scene
+from tests.conftest import configs_of_kind
+
+#: Shipped block scenes and the exit code of `fcalc check` on each (README, "Shipped examples").
+EXPECTED_EXIT = {"block_two_machines.toml": 0, "block_fan_torsion_near_speed.toml": 1}
+
+
+def test_every_shipped_block_scene_is_listed():
+    assert sorted(p.name for p in configs_of_kind("block_foundation")) == sorted(EXPECTED_EXIT)
+
+
+@pytest.mark.parametrize("config", configs_of_kind("block_foundation"), ids=lambda p: p.name)
+@pytest.mark.parametrize("command", ["resonance", "amplitudes"])
+def test_json_is_one_finite_document(runner, config, command):
+    result = runner.invoke(app, [command, str(config), "--json"])
+    assert result.stderr == ""
+    doc = json.loads(result.stdout)
+    assert doc["command"] == command and doc["scene"]["kind"] == "block_foundation"
+    assert len(doc["modes"]) == 6
+    assert result.exit_code == (1 if doc["verdict"] == "fail" else 0)
+
+    def finite(node):
+        if isinstance(node, dict):
+            return all(finite(v) for v in node.values())
+        if isinstance(node, list):
+            return all(finite(v) for v in node)
+        return not isinstance(node, float) or math.isfinite(node)
+
+    assert finite(doc)
+
+
+@pytest.mark.parametrize("config", configs_of_kind("block_foundation"), ids=lambda p: p.name)
+def test_check_exit_code(runner, config):
+    result = runner.invoke(app, ["check", str(config), "--json"])
+    assert result.exit_code == EXPECTED_EXIT[config.name], result.stdout + result.stderr
+    checks = json.loads(result.stdout)["scenes"][0]["checks"]
+    assert [c["check"] for c in checks] == ["resonance", "amplitudes", "office"]
+
+
+def test_the_torsional_mode_near_the_fan_speed_is_reported(runner):
+    result = runner.invoke(app, ["resonance", "configs/block_fan_torsion_near_speed.toml", "--json"])
+    doc = json.loads(result.stdout)
+    failing = [r for r in doc["resonances"] if r["verdict"] == "fail"]
+    assert any(r["dominant"] == "rz" and r["machine"] == "fan" and r["driven"] for r in failing)
+    table = runner.invoke(app, ["resonance", "configs/block_fan_torsion_near_speed.toml"]).stdout
+    assert "torsion about z" in table and "FAIL" in table
+
+
+def test_a_crank_only_command_names_the_block_commands(runner, tmp_path):
+    result = runner.invoke(app, ["soil", "configs/block_two_machines.toml"])
+    assert result.exit_code == 3
+    assert "fcalc resonance" in result.stderr
+
+
+def test_unbalance_is_the_rotating_force_of_its_balance_grade():
+    """ISO 21940-11: e ω = G, so F = m_r G ω, turning about the axis (right-handed) at the speed:
+    the load at t and a quarter period later are perpendicular, equal and normal to the axis."""
+    scene = load_scene("configs/block_fan_torsion_near_speed.toml")
+    fan = scene.machines[0]
+    rows = fan.load_rows()
+    F = sum(np.asarray(f) * math.cos(phase) for _, f, _, phase, _ in rows)  # at t = 0
+    F_later = sum(np.asarray(f) * math.cos(math.pi / 2 + phase) for _, f, _, phase, _ in rows)  # ω t = π/2
+    expected = 2.5e3 * 6.3e-3 * 990.0 * math.pi / 30.0
+    assert np.linalg.norm(F) == pytest.approx(expected, rel=1e-12)
+    assert np.linalg.norm(F_later) == pytest.approx(expected, rel=1e-12)
+    assert abs(F @ F_later) < 1e-9 * expected**2
+    axis = np.array([1.0, 0.0, 0.0])
+    assert abs(F @ axis) < 1e-12 * expected
+    assert np.cross(F, F_later) @ axis > 0.0  # right-handed about the axis
