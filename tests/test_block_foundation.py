@@ -200,3 +200,20 @@ def test_a_misspelt_key_names_the_nearest_one():
     with pytest.raises(Exception) as err:
         parse_scene(data)
     assert "speed_rpm" in str(err.value)
+
+
+def test_a_sweep_at_the_scene_speed_is_the_scene_steady_state():
+    """The vectorised sweep of one machine (others fixed) against the per-scene solve: the same
+    algebra batched, so to round-off (1e-13)."""
+    from foundation_calc.solvers.block.sweep import speed_sweep
+
+    scene = load_scene(f"{CONFIGS}/block_two_machines.toml")
+    model, excs = scene.model(), scene.excitations()
+    points = [p.at for p in scene.points]
+    steady = point_motion(model, excs, [p.name for p in scene.points], points)
+    for swept in (0, 1):
+        omega = np.array([0.5 * excs[swept].omega, excs[swept].omega])
+        sweep = speed_sweep(model, block_modes(model), excs, swept, omega, points)
+        np.testing.assert_allclose(sweep.peak[1], steady.peak, rtol=1e-13)
+        np.testing.assert_allclose(sweep.velocity_rms[1], steady.velocity_rms, rtol=1e-13)
+        assert np.all(sweep.peak[0] != sweep.peak[1])
