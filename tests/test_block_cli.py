@@ -70,8 +70,8 @@ def test_unbalance_is_the_rotating_force_of_its_balance_grade():
     scene = load_scene("configs/block_fan_torsion_near_speed.toml")
     fan = scene.machines[0]
     rows = fan.load_rows()
-    F = sum(np.asarray(f) * math.cos(phase) for _, f, _, phase, _ in rows)  # at t = 0
-    F_later = sum(np.asarray(f) * math.cos(math.pi / 2 + phase) for _, f, _, phase, _ in rows)  # ω t = π/2
+    F = sum(np.asarray(f) * math.cos(phase) for _, f, _, phase, _, _ in rows)  # at t = 0
+    F_later = sum(np.asarray(f) * math.cos(math.pi / 2 + phase) for _, f, _, phase, _, _ in rows)  # ω t = π/2
     expected = 2.5e3 * 6.3e-3 * 990.0 * math.pi / 30.0
     assert np.linalg.norm(F) == pytest.approx(expected, rel=1e-12)
     assert np.linalg.norm(F_later) == pytest.approx(expected, rel=1e-12)
@@ -79,3 +79,15 @@ def test_unbalance_is_the_rotating_force_of_its_balance_grade():
     axis = np.array([1.0, 0.0, 0.0])
     assert abs(F @ axis) < 1e-12 * expected
     assert np.cross(F, F_later) @ axis > 0.0  # right-handed about the axis
+    assert all(row[-1] for row in rows)  # an unbalance's force grows as ω² in a sweep
+
+
+def test_sweep_of_one_machine(runner):
+    result = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5", "--machine", "motor", "--json"])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert doc["machine"] == "motor" and len(doc["points"]) == 5
+    # the motor's own speed (1490 rpm) lies between rows 2 and 3; 2400 rpm is within 0.1 % of the vertical mode
+    assert doc["points"][0]["status"] == "pass" and doc["points"][-1]["status"] == "fail"
+    unnamed = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5"])
+    assert unnamed.exit_code == 2 and "compressor, motor" in unnamed.stderr

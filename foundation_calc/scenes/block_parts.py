@@ -130,11 +130,13 @@ class BlockMachine(SpeedFields):
             raise ValueError(f"inertia must be >= 0 kg m² each (got {list(self.inertia)})")
         return self
 
-    def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector]]:
-        """Every load as (order, force [N], moment [N m], phase [rad], point [m]); an unbalance as
-        two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt), F = m_r G ω, with a, b
-        a right-handed pair normal to the axis."""
-        rows = [(ld.order, ld.force, ld.moment, ld.phase, ld.at or self.cog) for ld in self.loads]
+    def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
+        """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial); an
+        unbalance as two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt),
+        F = m_r G ω, with a, b a right-handed pair normal to the axis. ``inertial``: the load grows
+        as ω² when the speed changes (an unbalance: its eccentricity e = G/ω is the rotor's);
+        vendor loads keep the amplitudes the vendor gives."""
+        rows = [(ld.order, ld.force, ld.moment, ld.phase, ld.at or self.cog, False) for ld in self.loads]
         if self.unbalance is not None:
             u = self.unbalance
             e = [c / math.hypot(*u.axis) for c in u.axis]
@@ -143,8 +145,8 @@ class BlockMachine(SpeedFields):
             b = _cross(e, a)
             F = u.rotor_mass * u.balance_grade_mm_s * 1e-3 * self.omega_rad_s
             where = u.at or self.cog
-            rows += [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where),
-                     (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where)]
+            rows += [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where, True),
+                     (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where, True)]
         return rows
 
 

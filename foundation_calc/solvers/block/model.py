@@ -66,13 +66,21 @@ class Excitation:
     name : the machine's name
     omega : its speed ω [rad/s]
     orders : distinct orders n, ascending, shape (H,)
-    Q : complex amplitudes (F, M about O) of order n, shape (H, 6) [N, N m]
+    Q : complex amplitudes (F, M about O) of order n at the speed ω, shape (H, 6) [N, N m]
+    Q_inertial : the part of Q that grows as the speed squared (unbalances), shape (H, 6)
     """
 
     name: str
     omega: float
     orders: np.ndarray
     Q: np.ndarray
+    Q_inertial: np.ndarray
+
+    def loads_at(self, omega) -> np.ndarray:
+        """Q at the speeds ``omega`` [rad/s] (any shape): Q + Q_inertial ((ω/ω_0)² - 1), shape
+        omega.shape + (H, 6)."""
+        ratio = (np.asarray(omega, dtype=float) / self.omega) ** 2 - 1.0
+        return self.Q + ratio[..., None, None] * self.Q_inertial
 
 
 def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None) -> BlockModel:
@@ -102,12 +110,16 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
 
 def excitation(name, omega, rows) -> Excitation:
     """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
-    phase [rad], point [m]) each; loads of one order add."""
+    phase [rad], point [m], inertial) each; loads of one order add."""
     orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
     Q = np.zeros((len(orders), 6), dtype=complex)
-    for n, F, Mo, phase, at in rows:
-        Q[np.searchsorted(orders, n)] += load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
-    return Excitation(str(name), float(omega), orders, Q)
+    Q_inertial = np.zeros_like(Q)
+    for n, F, Mo, phase, at, inertial in rows:
+        q = load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
+        Q[np.searchsorted(orders, n)] += q
+        if inertial:
+            Q_inertial[np.searchsorted(orders, n)] += q
+    return Excitation(str(name), float(omega), orders, Q, Q_inertial)
 
 
 __all__ = ["BlockModel", "Excitation", "block_model", "excitation"]

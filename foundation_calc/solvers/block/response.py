@@ -103,10 +103,12 @@ def resonant(modes: BlockModes, res: Resonances) -> bool:
 
 def complex_amplitudes(model: BlockModel, exc: Excitation, omega=None) -> np.ndarray:
     """Z of (K - (nω)² M + i nω C) Z = Q_n for every order, shape (..., H, 6) [m, rad], at the
-    machine's speed or at the speeds ``omega`` (any shape) [rad/s]."""
-    omega = np.asarray(exc.omega if omega is None else omega, dtype=float)
-    Omega = omega[..., None] * exc.orders
-    return harmonic_response(model.K, model.C, model.M, exc.Q, Omega)
+    machine's speed or at the speeds ``omega`` (any shape) [rad/s] (an unbalance's load grows as
+    ω², :meth:`~foundation_calc.solvers.block.model.Excitation.loads_at`)."""
+    if omega is None:
+        return harmonic_response(model.K, model.C, model.M, exc.Q, exc.omega * exc.orders)
+    omega = np.asarray(omega, dtype=float)
+    return harmonic_response(model.K, model.C, model.M, exc.loads_at(omega), omega[..., None] * exc.orders)
 
 
 @dataclass(frozen=True)

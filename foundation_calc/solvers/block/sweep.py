@@ -39,7 +39,7 @@ class SpeedSweep:
 def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, omega, points) -> SpeedSweep:
     """Sweep machine ``swept`` (index into ``excitations``) over the speeds ``omega`` [rad/s];
     ``points`` (P, 3) [m] from O besides G. A swept machine given by a balance grade keeps the
-    load of its scene's speed (its force grows as ω: give it as loads to sweep that too)."""
+    rotor's eccentricity, so its force grows as ω²; vendor loads keep their amplitudes."""
     omega = np.asarray(omega, dtype=float)
     exc: Excitation = excitations[swept]
     others = [e for i, e in enumerate(excitations) if i != swept]
