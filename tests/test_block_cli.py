@@ -58,10 +58,18 @@ def test_the_torsional_mode_near_the_fan_speed_is_reported(runner):
     assert "torsion about z" in table and "FAIL" in table
 
 
-def test_a_crank_only_command_names_the_block_commands(runner, tmp_path):
-    result = runner.invoke(app, ["soil", "configs/block_two_machines.toml"])
+def test_a_command_without_blocks_names_the_block_commands(runner, tmp_path):
+    result = runner.invoke(app, ["runup", "configs/block_two_machines.toml"])
     assert result.exit_code == 3
     assert "fcalc resonance" in result.stderr
+
+
+def test_soil_lists_six_springs(runner):
+    result = runner.invoke(app, ["soil", "configs/block_fan_torsion_near_speed.toml", "--json"])
+    assert result.exit_code == 0, result.stderr
+    springs = json.loads(result.stdout)["springs"]
+    assert [s["motion"] for s in springs] == ["x", "y", "z", "rx", "ry", "rz"]
+    assert springs[0]["K"] == springs[1]["K"]  # Lysmer's sliding analog is the same along x and y
 
 
 def test_unbalance_is_the_rotating_force_of_its_balance_grade():

@@ -68,3 +68,18 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     else:
         out.print_sweep(rows, loaded, source, names[swept], units)
     return 0
+
+
+def soil(loaded, source: str, json: bool) -> int:
+    """The block's six springs, damping ratios and dashpots at O, and the uncoupled frequencies
+    sqrt(K_i / m_i); judges nothing."""
+    from foundation_calc.output import block_soil as out
+
+    model = loaded.model()
+    if json:
+        from foundation_calc.output.console import print_json
+
+        print_json(out.soil_document(model, loaded, source))
+    else:
+        out.print_soil(model, loaded, source)
+    return 0
