@@ -99,3 +99,22 @@ def test_sweep_of_one_machine(runner):
     assert doc["points"][0]["status"] == "pass" and doc["points"][-1]["status"] == "fail"
     unnamed = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5"])
     assert unnamed.exit_code == 2 and "compressor, motor" in unnamed.stderr
+
+
+def test_office_checks_judge_as_their_sources_say(tmp_path, runner):
+    """Eccentricity (a "should": warns), bearing pressure (statics against the allowable: fails),
+    on a block and on a crank scene, values by hand."""
+    from foundation_calc.checks.office import bearing_row, eccentricity_rows, mass_ratio_row
+
+    rows = eccentricity_rows([0.42, -0.1], 7.0, 4.0, 0.05)
+    assert [r.outcome.value for r in rows] == ["warn", "pass"] and rows[0].value == pytest.approx(0.06)
+    # W = 1 MN on 4 m x 2 m with e_x = 0.2 m: q_max = 125 kPa (1 + 0.3) = 162.5 kPa
+    row = bearing_row(1.0e6, 0.2, 0.0, 4.0, 2.0, 1.6e5)
+    assert row.value == pytest.approx(162.5e3, rel=1e-14) and row.outcome.value == "fail"
+    assert mass_ratio_row(20e3, 10e3, 3.0).outcome.value == "warn"
+    text = open("configs/compressor_vendor_loads.toml").read().replace("detuning = 0.2", "detuning = 0.2\nbearing_pressure = 5.0e4")
+    scene = tmp_path / "crank.toml"
+    scene.write_text(text)
+    result = runner.invoke(app, ["check", str(scene), "--json"])
+    office = [c for c in json.loads(result.stdout)["scenes"][0]["checks"] if c["check"] == "office"]
+    assert result.exit_code == 1 and office[0]["verdict"] == "fail"  # 114.8 t on 21 m²: 53.6 kPa

@@ -58,10 +58,20 @@ def eccentricity_rows(cog_xy, L: float, B: float, allowed: float) -> list[Office
 def bearing_row(W: float, e_x: float, e_y: float, L: float, B: float, allowable: float) -> OfficeRow:
     """Largest static base pressure q_max [Pa] (module docstring) against the allowable [Pa]."""
     q = W / (L * B) * (1.0 + 6.0 * abs(e_x) / L + 6.0 * abs(e_y) / B)
+    return _bearing(q, allowable)
+
+
+def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
+    """Static base pressure W / S [Pa] of a crank foundation (its machine stands over the base's
+    centroid: no eccentricity) against the allowable [Pa]."""
+    return _bearing(W / S, allowable, "q = W/S")
+
+
+def _bearing(q: float, allowable: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
     outcome = Outcome.FAIL if q > allowable else Outcome.PASS
     return OfficeRow(
         "bearing pressure", q, allowable, "Pa", outcome, "statics; allowable from [limits] bearing_pressure",
-        f"q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B) = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
+        f"{formula} = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
         f" {allowable / 1e3:.4g} kPa",
     )
 
@@ -77,6 +87,19 @@ def mass_ratio_row(foundation: float, machines: float, required: float) -> Offic
     )
 
 
+@dataclass(frozen=True)
+class OfficeReport:
+    """The office checks of a scene: its rows and their worst outcome."""
+
+    office: tuple[OfficeRow, ...]
+
+    @property
+    def office_outcome(self) -> Outcome:
+        from foundation_calc.checks.outcomes import worst
+
+        return worst(r.outcome for r in self.office)
+
+
 def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     """The office checks of a ``block_foundation`` scene (module docstring)."""
     from foundation_calc.solvers.constants import GRAVITY
@@ -90,4 +113,4 @@ def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     return tuple(rows)
 
 
-__all__ = ["OfficeRow", "bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]
+__all__ = ["OfficeReport", "OfficeRow", "bearing_row", "crank_bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]

@@ -210,6 +210,19 @@ def block_amplitudes(scene) -> Finding:
     return Finding("amplitudes", report.amplitude_outcome, reason, values, report, details)
 
 
+def crank_office(scene) -> Finding | None:
+    """Static bearing pressure of a crank foundation against [limits] bearing_pressure; None (not
+    run) without that limit. (Its machine stands over the base's centroid: no eccentricity.)"""
+    if scene.limits.bearing_pressure is None:
+        return None
+    from foundation_calc.checks.office import OfficeReport, crank_bearing_row
+    from foundation_calc.solvers.constants import GRAVITY
+
+    row = crank_bearing_row(scene.total_mass * GRAVITY, scene.foundation.base_area, scene.limits.bearing_pressure)
+    return Finding("office", row.outcome, (f"{row.name}: {row.text}",), {}, OfficeReport((row,)),
+                   (f"{row.outcome.value.upper()} {row.name}: {row.text} ({row.source})",))
+
+
 def block_office(scene) -> Finding:
     """Eccentricity, bearing pressure and mass ratio of the block (ACI 351.3R rules of thumb)."""
     from foundation_calc.checks.block import check_block
@@ -223,7 +236,7 @@ def block_office(scene) -> Finding:
 
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
-    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup},
+    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup, "office": crank_office},
     "platform": {"design": platform_design, "runup": runup},
     "block_foundation": {"resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
 }

@@ -66,8 +66,9 @@ def _office(report: BlockReport) -> list[dict]:
     ]
 
 
-def office_document(report: BlockReport, scene, source: str) -> dict:
-    """The office checks as a JSON document."""
+def office_document(report, scene, source: str) -> dict:
+    """The office checks as a JSON document (``report``: a :class:`BlockReport` or an
+    :class:`~foundation_calc.checks.office.OfficeReport`)."""
     return {"scene": _header(scene, source), "office": _office(report), "verdict": report.office_outcome.value}
 
 

@@ -131,6 +131,10 @@ def result_document(check: str, report, scene) -> dict:
 
         document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
                     "office": block.office_document}[check](report, scene, "")
+    elif check == "office":
+        from foundation_calc.output.block import office_document
+
+        document = office_document(report, scene, "")
     elif check == "resonance":
         from foundation_calc.output.crank_resonance import resonance_document
 

@@ -21,11 +21,8 @@ BLOCK_OMEGA_PLAUSIBLE = 1000.0
 
 
 class BlockLimits(Limits):
-    """What the checks compare against: the crank foundation's limits, and the office checks'."""
+    """What the checks compare against: the crank foundation's limits (bearing_pressure among them), and the office checks'."""
 
-    bearing_pressure: float | None = quantity(
-        "q_a", "Pa", "allowable static bearing pressure of the soil under the base", None, gt=0, examples=[1.5e5]
-    )
     eccentricity: float = quantity(
         "e_max", "-", "largest allowed horizontal distance of the combined centre of mass from the base centroid,"
         " as a fraction of the base dimension in that direction (ACI 351.3R: 0.05)", 0.05, gt=0, lt=0.5,

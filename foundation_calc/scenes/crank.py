@@ -115,6 +115,9 @@ class Limits(SceneModel):
     detuning: float = quantity(
         "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
     )
+    bearing_pressure: float | None = quantity(
+        "q_a", "Pa", "allowable static bearing pressure of the soil under the base", None, gt=0, examples=[1.5e5]
+    )
     transient_amplitude: float | None = quantity(
         "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
         " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
