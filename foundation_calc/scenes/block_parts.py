@@ -124,6 +124,16 @@ class BlockMachine(SpeedFields):
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
 
+    @model_validator(mode="before")
+    @classmethod
+    def _speed_is_omega(cls, data):
+        """``speed`` [rad/s] is another name of ``omega`` (the issue's scene contract writes it so)."""
+        if isinstance(data, dict) and "speed" in data:
+            if "omega" in data:
+                raise ValueError("give speed [rad/s] or omega [rad/s], not both (they are the same key)")
+            data = {("omega" if k == "speed" else k): v for k, v in data.items()}
+        return data
+
     @model_validator(mode="after")
     def _machine_checks(self):
         if any(j < 0 for j in self.inertia):
