@@ -20,7 +20,7 @@ def torsion_radius(L, B):
     """r0θ of the circle with the polar second moment of an L × B base [m].
 
     >>> round(torsion_radius(2.0, 2.0), 4)
-    1.1284
+    1.1415
     """
     return (L * B * (L * L + B * B) / (6.0 * math.pi)) ** 0.25
 
