@@ -55,7 +55,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
     """
     from foundation_calc.cli.report import command_line
     from foundation_calc.output.report import write_sheet
-    from foundation_calc.output.report.documents import SHEET_KINDS, scene_sheet
+    from foundation_calc.output.report.documents import scene_sheet
 
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -63,7 +63,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
         raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
     used: dict[str, int] = {}
     for scene in scenes:
-        if scene.skipped or scene.kind not in SHEET_KINDS or any(run.verdict in ("invalid", "internal") for run in scene.runs):
+        if scene.skipped or any(run.verdict in ("invalid", "internal") for run in scene.runs):
             continue
         path = Path(scene.source)
         used[path.stem] = used.get(path.stem, 0) + 1
@@ -115,7 +115,9 @@ def check(
         except OSError as exc:
             raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
     if report_dir is not None:
-        _write_sheets(scenes, report_dir, shown)
+        from foundation_calc.cli.report import SHEET_UNITS
+
+        _write_sheets(scenes, report_dir, display_units(units, SHEET_UNITS))
     if not json:
         check_report.print_check_table(scenes, shown, strict, verbose)
     raise typer.Exit(int(exit_code(scenes, strict)))
