@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome
 
-SOURCE_RULES = "ACI 351.3R-18, ch. 3 (rules of thumb; Arya, O'Neill & Pincus 1979)"
+SOURCE_RULES = "ACI 351.3R-18, ch. 3 (rules of thumb)"
 
 
 @dataclass(frozen=True)
@@ -70,7 +70,7 @@ def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
 def _bearing(q: float, allowable: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
     outcome = Outcome.FAIL if q > allowable else Outcome.PASS
     return OfficeRow(
-        "bearing pressure", q, allowable, "Pa", outcome, "statics; allowable from [limits] bearing_pressure",
+        "bearing pressure", q, allowable, "Pa", outcome, "scene [limits] bearing_pressure",
         f"{formula} = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
         f" {allowable / 1e3:.4g} kPa",
     )

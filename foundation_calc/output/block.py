@@ -49,7 +49,8 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
         "centre_of_mass": [float(v) for v in report.cog],
         "modes": _modes(report),
         "resonances": [
-            {"machine": r.machine, "order": r.order, "mode": r.mode, "dominant": r.motion,
+            {"condition": f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode}", "mode_name": MOTION_NAMES[r.motion],
+             "machine": r.machine, "order": r.order, "mode": r.mode, "dominant": r.motion,
              "critical_speed": speed_triplet(r.critical), "margin": r.margin, "driven": r.driven,
              "required": scene.limits.detuning, "verdict": r.outcome.value}
             for r in report.resonance_rows
@@ -105,12 +106,18 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
          "ratio": r.ratio, "verdict": r.outcome.value, "source": r.source}
         for r in report.limit_rows
     ]
-    doc["code"] = [
-        {"point": z.point, "governing": z.direction, "velocity_rms": z.value, "zone": z.zone, "verdict": z.outcome.value,
-         "table": z.table.clause}
-        for z in report.zone_rows
-    ]
-    doc["code_warnings"] = list(report.code_warnings)
+    limits = scene.limits
+    doc["code"] = None if limits.code is None else {
+        "code": limits.code, "machine_group": limits.machine_group, "foundation": limits.foundation,
+        "acceptable_zone": limits.acceptable_zone,
+        "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
+        "points": [
+            {"point": z.point, "governing": z.direction, "value": z.value, "zone": z.zone, "limit": z.limit,
+             "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
+            for z in report.zone_rows
+        ],
+        "warnings": list(report.code_warnings),
+    }
     doc["office"] = _office(report)
     doc["verdict"] = worst([report.amplitude_outcome, report.office_outcome]).value
     return doc
