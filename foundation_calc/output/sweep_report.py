@@ -190,7 +190,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         out.print(crit)
     limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
-        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
+        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning if isinstance(report.detuning, dict) else format(report.detuning, '.0%')}", soft_wrap=True
     )
 
 
