@@ -76,6 +76,19 @@ def _scientific(value: float, digits: int) -> str:
     return f"{mantissa:.{digits - 1}f}·10{str(exponent).translate(_SUPERSCRIPT)}"
 
 
+def echoed(value: float) -> str:
+    """An input as given, up to 6 figures without trailing zeros, ``a·10ⁿ`` outside the plain range.
+
+    >>> echoed(7e7), echoed(1.4931e10), echoed(0.35), echoed(100000.0)
+    ('7·10⁷', '1.4931·10¹⁰', '0.35', '100000')
+    """
+    text = f"{value:.6g}"
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+
+
 def percent(fraction: float) -> str:
     """A margin or share given as a fraction, in percent to one decimal."""
     return f"{fraction * 100:.1f} %"
