@@ -9,7 +9,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML), crank_foundation or platform.", show_default=False)]
@@ -55,6 +55,7 @@ def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, u
     check_output(path, "'-o'")
     shown = display_units(units)
     sheet, docs = scene_sheet(scene, command_line(), shown, exact)
+    print_warnings(next(iter(docs.values())).get("warnings", ()))  # the resonance or platform document's
     try:
         written = write_sheet(sheet, path)
     except OSError as exc:

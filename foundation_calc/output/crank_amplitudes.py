@@ -154,6 +154,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             for row in report.rows
         ],
         "code": code_document(report, scene.limits),
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:

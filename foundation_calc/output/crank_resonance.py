@@ -73,6 +73,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
             }
             for row in report.rows
         ],
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
 

@@ -78,7 +78,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
              "verdict": row.outcome.value}
             for row in report.rows
         ],
-        "warnings": list(report.warnings),
+        "warnings": [*scene.plausibility_warnings(), *report.warnings],
         "verdict": report.outcome.value,
     }
 

@@ -93,6 +93,15 @@ def _speed(units: DisplayUnits, omega: float) -> str:
     return num(units.convert("speed", omega))
 
 
+def _input_warnings(doc: dict) -> tuple[Section, ...]:
+    """The scene's plausibility warnings (the document's ``warnings``), as on stderr; none: no section."""
+    warnings = doc.get("warnings") or []
+    if not warnings:
+        return ()
+    lead = Paragraph("Values outside the ranges real designs use, probably typed in another unit; check them:")
+    return (Section("Input warnings", (lead, *(Paragraph(f"WARNING: {text}") for text in warnings))),)
+
+
 def _equation_section(eqs) -> Section:
     return Section("Equations used", tuple(eqs))
 
@@ -293,6 +302,7 @@ def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figure
     sections = (
         _title_section(title),
         inputs,
+        *_input_warnings(res),
         _crank_derived(res, units),
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
@@ -452,6 +462,7 @@ def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, limits: dict, 
     sections = (
         _title_section(title),
         inputs,
+        *_input_warnings(doc),
         _platform_inputs(doc, units),
         _platform_design(doc, units),
         _platform_verification(doc, units),

@@ -50,7 +50,7 @@ def crank_documents(loaded, source: str, exact: bool) -> dict:
     return {
         "resonance": resonance_document(resonance, loaded, source),
         "amplitudes": amplitudes_document(amplitudes, loaded, source),
-        "sweep": sweep_document(swept, source, loaded.name),
+        "sweep": sweep_document(swept, source, loaded.name, loaded.plausibility_warnings()),
     }
 
 
