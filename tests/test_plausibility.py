@@ -115,9 +115,13 @@ def test_warnings_change_the_exit_code_only_with_strict(runner, tmp_path):
                   (("limits", "velocity"), None))
     assert runner.invoke(app, ["resonance", path]).exit_code == 0
     assert runner.invoke(app, ["resonance", path, "--strict"]).exit_code == 1
-    assert runner.invoke(app, ["check", path, "-j", "1"]).exit_code == 0
+    table = runner.invoke(app, ["check", path, "-j", "1"])
+    assert table.exit_code == 0 and "│ inputs │ WARN │ 1 input value outside the plausible ranges: soil.density" in _flat(table.stdout)
     strict = runner.invoke(app, ["check", path, "-j", "1", "--strict"])
-    assert strict.exit_code == 1 and "input warnings fail (--strict)" in _flat(strict.stdout)
+    assert strict.exit_code == 1 and "│ inputs │ FAIL │" in _flat(strict.stdout)
+    junit = tmp_path / "junit.xml"
+    runner.invoke(app, ["check", path, "-j", "1", "--strict", "--junit", str(junit)])
+    assert 'name="inputs"' in junit.read_text(encoding="utf-8") and "<failure" in junit.read_text(encoding="utf-8")
 
 
 def test_the_sheet_lists_the_warnings(runner, tmp_path):

@@ -44,13 +44,11 @@ def counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
 
 
 def scene_counts(scenes: list[SceneRun], strict: bool = False) -> dict[str, int]:
-    """How many scenes ended in each verdict, a scene's verdict being its worst check's (with
-    ``strict``, ``fail`` for a scene with plausibility warnings); every verdict present, zero or
-    not; skipped files are not scenes and not counted."""
+    """How many scenes ended in each verdict, a scene's verdict being its worst check's
+    (every verdict present, zero or not); skipped files are not scenes and not counted."""
     rank = list(_VERDICT_STYLE)
     tally = Counter(
-        max(("fail",) * bool(strict and scene.warnings) + tuple(_verdict(run, strict) for run in scene.runs),
-            key=rank.index, default="pass")
+        max((_verdict(run, strict) for run in scene.runs), key=rank.index, default="pass")
         for scene in scenes
         if not scene.skipped
     )
@@ -110,7 +108,7 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
     out.print(
         f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
         f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
-        f"{'; warnings and input warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
+        f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
         soft_wrap=True,
     )
 
