@@ -18,7 +18,7 @@ from collections import Counter
 from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -126,7 +126,16 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if check == "resonance":
+    if getattr(scene, "kind", "") == "block_foundation":
+        from foundation_calc.output import block
+
+        document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
+                    "office": block.office_document}[check](report, scene, "")
+    elif check == "office":
+        from foundation_calc.output.block import office_document
+
+        document = office_document(report, scene, "")
+    elif check == "resonance":
         from foundation_calc.output.crank_resonance import resonance_document
 
         document = resonance_document(report, scene, "")
@@ -180,11 +189,14 @@ def _summary(scenes: list[SceneRun], strict: bool) -> dict:
     }
 
 
+def _head(strict: bool) -> dict:
+    return with_version({"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict})
+
+
 def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
     """The JSON document of ``fcalc check`` (every number SI); :func:`stream_check_json` writes the
     same text scene by scene."""
-    head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-    return {**head, "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
+    return {**_head(strict), "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
 
 
 def _dumped(value) -> str:
@@ -214,8 +226,7 @@ def stream_check_json(entries: Iterable[tuple[SceneRun, str | None]], strict: bo
         if text is None:
             continue
         if not opened:
-            head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-            write("{" + ",".join(_member(k, v) for k, v in head.items()) + ',\n  "scenes": [')
+            write("{" + ",".join(_member(k, v) for k, v in _head(strict).items()) + ',\n  "scenes": [')
         write(("," if opened else "") + "\n    " + text.replace("\n", "\n    "))
         opened = True
     if opened:

@@ -29,9 +29,16 @@ def keep_words_whole(table) -> None:
     from rich.cells import cell_len
     from rich.text import Text
 
+    def plain_text(cell) -> str:
+        if isinstance(cell, Text):
+            return cell.plain
+        if isinstance(cell, str):  # markup only where a tag may be: parsing every number costs
+            return Text.from_markup(cell).plain if "[" in cell else cell
+        return ""
+
     for column in table.columns:
         cells = (column.header, *column.cells)
-        plain = (cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else "" for cell in cells)
+        plain = map(plain_text, cells)
         longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
         column.min_width = max(column.min_width or 0, longest)
 
@@ -76,10 +83,22 @@ def verdict_text(outcome: str, strict: bool = False) -> str:
     return f"[{OUTCOME_STYLE[outcome]}]{outcome.upper()}[/]"
 
 
+def with_version(document: dict) -> dict:
+    """``document`` with ``fcalc_version`` (version and commit) after its ``schema_version``."""
+    from foundation_calc.version import version
+
+    head = {k: document[k] for k in ("schema_version",) if k in document}
+    return {**head, "fcalc_version": version(), **document}
+
+
 def print_json(document: dict) -> None:
-    """Write one JSON document to stdout. NaN or inf in it is a bug, so it raises."""
+    """Write one JSON document to stdout; a result document (one with a ``schema_version``)
+    carries fcalc's version, with its commit, right after it. NaN or inf in it is a bug, so it
+    raises."""
     import json
 
+    if "schema_version" in document:
+        document = with_version(document)
     print(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
 
 
