@@ -54,19 +54,12 @@ def crank_resonance(scene) -> Finding:
     from foundation_calc.checks.crank_resonance import check_scene_resonances
 
     report = check_scene_resonances(scene)
-    near = report.nearest
     speed = ("speed", report.omega)
     values = {"speed": speed}
-    if report.outcome is Outcome.PASS:
-        values["critical"] = critical = ("speed", near.critical_zero_order)
-        reason = (
-            "speed ", speed, f" is at least {near.margin:.1%} from every resonance (nearest {near.condition.label} at ",
-            critical, f"; required {near.required:.0%})",
-        )
-    else:
-        bad = [row for row in report.rows if row.outcome is report.outcome]
-        names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
-        reason = ("speed ", speed, f" is inside the {near.required:.0%} band of {names}")
+    governing = report.governing
+    if governing is not None:
+        values["critical"] = ("speed", governing.critical_zero_order)
+    reason = ("speed ", speed, f", {report.statement}")
     return Finding("resonance", report.outcome, reason, values, report)
 
 
@@ -102,8 +95,8 @@ def crank_amplitudes(scene) -> Finding:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
-        if report.damped:
-            reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
+        if report.resonance is not None:
+            reason += (f"; {report.resonance.statement}",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
     details = tuple(
@@ -157,7 +150,8 @@ def runup(scene) -> Finding | None:
     elif report.motor is not None:
         parts += [("; " if parts else "") + "the motor passes every resonance"]
     details = tuple(
-        f"{row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}: {row.value:.4g} m"
+        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}:"
+        f" |u| {row.value:.4g} m"
         + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
         for row in report.rows
     ) + tuple(f"WARN {warning}" for warning in report.warnings)

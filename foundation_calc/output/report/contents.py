@@ -20,26 +20,14 @@ NEGLIGIBLE = 1e-9
 
 
 @dataclass(frozen=True)
-class TitleBlock:
-    """Where a sheet comes from: scene, file and its SHA-256, fcalc version, date, command."""
-
-    name: str
-    file: str
-    sha256: str
-    version: str
-    date: str
-    command: str
-
-
-@dataclass(frozen=True)
 class SweepSeries:
     """What the sweep plot draws, from the ``sweep`` JSON document (SI units)."""
 
     omega: list[float]
     peaks: dict[str, list[float | None]]
     amplitude_limit: float | None
-    detuning: float
-    critical: list[tuple[str, str, float]]
+    detuning: float | dict
+    critical: list[tuple[str, str, float, float]]
     method: str
 
 
@@ -51,7 +39,7 @@ def sweep_series(doc: dict) -> SweepSeries:
         peaks={"y of C": [r["y_peak"] for r in rows], "x of C": [r["x_peak"] for r in rows]},
         amplitude_limit=doc["limits"]["amplitude"],
         detuning=doc["limits"]["detuning"],
-        critical=[(c["condition"], c["source"], c["zero_order"]) for c in doc["critical_speeds"]],
+        critical=[(c["condition"], c["source"], c["zero_order"], c["band"]) for c in doc["critical_speeds"]],
         method=doc["method"],
     )
 
@@ -69,18 +57,6 @@ def num(value: float | None, digits: int = DIGITS) -> str:
 def pct(value: float) -> str:
     """A fraction as a percentage with ``DIGITS`` significant figures."""
     return f"{value * 100:.{DIGITS}g} %"
-
-
-def title_section(title: TitleBlock) -> Section:
-    rows = (
-        ("scene", title.name),
-        ("file", title.file),
-        ("SHA-256 of the file", title.sha256),
-        ("fcalc version", title.version),
-        ("date (UTC)", title.date),
-        ("command", title.command),
-    )
-    return Section("Title block", (table("", ("item", "value"), rows, (False, False)),))
 
 
 def _speed(units: DisplayUnits, omega: float) -> str:
@@ -122,7 +98,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     )
     rows = (
         (
-            r["condition"] + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[r["source"]],
+            r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),
             r["mode_name"],
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
