@@ -159,19 +159,15 @@ def runup(scene) -> Finding | None:
 
 
 def block_resonance(scene) -> Finding:
-    """Every machine's orders against the block's six modes (``fcalc resonance``)."""
+    """Every machine's orders against the block's six modes by the resonance rule (``fcalc resonance``)."""
     from foundation_calc.checks.block import check_block
+    from foundation_calc.output.block import resonance_summary
 
     report = check_block(scene)
     near = report.nearest
     values = {"critical": ("speed", near.critical)}
-    if report.resonance_outcome is Outcome.PASS:
-        reason = (f"every driven order is at least {near.margin:.1%} from every mode (nearest: {near.machine} order"
-                  f" {near.order} at mode {near.mode}, {near.motion}, critical speed ", values["critical"], ")")
-    else:
-        bad = [r for r in report.resonance_rows if r.outcome is report.resonance_outcome]
-        reason = ("; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad),)
-    return Finding("resonance", report.resonance_outcome, reason, values, report)
+    text = resonance_summary(report).split(": ", 1)[1]
+    return Finding("resonance", report.resonance_outcome, (text,), values, report)
 
 
 def block_amplitudes(scene) -> Finding:
