@@ -123,6 +123,25 @@ class BlockReport:
         return min(deciding, key=lambda r: (-rank[r.outcome.value], r.margin / max(r.required, RESONANCE_FAIL_MARGIN)))
 
 
+def condition_label(r: ResonanceRow) -> str:
+    """E.g. ``"motor: ω = mode 1 (y)"``."""
+    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
+
+
+def resonance_text(report: BlockReport) -> str:
+    """The resonance verdict's reason, naming the governing condition (as every command words it)."""
+    from foundation_calc.checks.resonance_rule import condition_phrase
+
+    def phrase(r):
+        return condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN))
+
+    governing = phrase(report.nearest)
+    outcome = report.resonance_outcome
+    if outcome is Outcome.PASS:
+        return f"no machine's order is inside a resonance band (governing: {governing})"
+    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})"
+
+
 def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceRow, ...]:
     """Every order of every machine against every mode (module docstring); ``detuning``: the
     scene's band, one value or one per order."""
@@ -215,4 +234,4 @@ def check_block(scene) -> BlockReport:
     )
 
 
-__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "limit_rows", "resonance_rows", "zone_rows"]
+__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]

@@ -160,14 +160,11 @@ def runup(scene) -> Finding | None:
 
 def block_resonance(scene) -> Finding:
     """Every machine's orders against the block's six modes by the resonance rule (``fcalc resonance``)."""
-    from foundation_calc.checks.block import check_block
-    from foundation_calc.output.block import resonance_summary
+    from foundation_calc.checks.block import check_block, resonance_text
 
     report = check_block(scene)
-    near = report.nearest
-    values = {"critical": ("speed", near.critical)}
-    text = resonance_summary(report).split(": ", 1)[1]
-    return Finding("resonance", report.resonance_outcome, (text,), values, report)
+    values = {"critical": ("speed", report.nearest.critical)}
+    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report)
 
 
 def block_amplitudes(scene) -> Finding:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.block import DIRECTIONS, BlockReport
+from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
 from foundation_calc.checks.outcomes import worst
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
@@ -169,24 +169,9 @@ def print_resonance(report: BlockReport, scene, source: str, units: DisplayUnits
     out.print(resonance_summary(report, strict), soft_wrap=True)
 
 
-def condition_label(r) -> str:
-    """E.g. ``"motor: ω = mode 1 (y)"``."""
-    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
-
-
 def resonance_summary(report: BlockReport, strict: bool = False) -> str:
     """One sentence on the resonance margins, naming the governing condition."""
-    from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
-    from foundation_calc.checks.resonance_rule import condition_phrase
-
-    outcome = report.resonance_outcome.value
-    near = report.nearest
-    governing = condition_phrase(condition_label(near), near.margin, max(near.required, RESONANCE_FAIL_MARGIN))
-    if outcome == "pass":
-        return f"{verdict_text(outcome)}: no machine's order is inside a resonance band (governing: {governing})"
-    bad = [r for r in report.resonance_rows if r.outcome.value == outcome]
-    names = "; ".join(condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN)) for r in bad)
-    return f"{verdict_text(outcome, strict)}: {names} (governing: {governing})"
+    return f"{verdict_text(report.resonance_outcome.value, strict)}: {resonance_text(report)}"
 
 
 def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
