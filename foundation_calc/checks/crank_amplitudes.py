@@ -28,8 +28,8 @@ from foundation_calc.checks.crank_resonance import (
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limit_key, limited_quantities
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.limits import QUANTITIES, LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
@@ -99,26 +99,6 @@ class Approximation:
         """Phase lag φ [rad] of harmonic n of ``dof``: the harmonic is A cos(nωt - φ), φ in (-π, π]."""
         c, s = self.motion.coefficient(dof, n)
         return float(np.arctan2(float(s), float(c)))
-
-
-@dataclass(frozen=True)
-class LimitRow:
-    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
-
-    point: str
-    direction: str
-    quantity: str
-    value: float
-    limit: float
-    outcome: Outcome
-
-    @property
-    def ratio(self) -> float:
-        return self.value / self.limit
-
-    @property
-    def source(self) -> str:
-        return f"scene [limits] {limit_key(self.quantity)}"
 
 
 @dataclass(frozen=True)
@@ -339,19 +319,6 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
                 for direction, v, f in zip(DIRECTIONS, value, fails)
             ]
     return tuple(rows)
-
-
-def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
-    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
-    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
-
-    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
-    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
-    """
-    i = ZONES.index(zone_name)
-    if acceptable is None:
-        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
-    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
 
 
 def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:

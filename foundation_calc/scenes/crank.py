@@ -85,7 +85,8 @@ class Limits(SceneModel):
     """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
-        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0
+        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0,
+        examples=[2.0e-4],
     )
     velocity: float | None = quantity(
         "v_max", "m/s", "largest allowed peak velocity", None, gt=0, examples=[5.0e-3]
@@ -124,15 +125,19 @@ class Limits(SceneModel):
         " or a band per order, e.g. {1 = 0.2, 2 = 0.2, 3 = 0.1}; each band > 0 and < 1",
         0.2, examples=[0.2, {"1": 0.2, "2": 0.2, "3": 0.1}],
     )
+    bearing_pressure: float | None = quantity(
+        "q_a", "Pa", "allowable static bearing pressure of the soil under the base", None, gt=0, examples=[1.5e5]
+    )
+    transient_amplitude: float | None = quantity(
+        "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
+        " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
+    )
 
     @field_validator("detuning", mode="before")
     @classmethod
     def _detuning_bands(cls, value):
         return detuning_bands(value)
-    transient_amplitude: float | None = quantity(
-        "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
-        " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
-    )
+
     @field_validator("code", mode="before")
     @classmethod
     def _known_code(cls, code):
