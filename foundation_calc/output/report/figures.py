@@ -37,7 +37,8 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     svg = svg[svg.index("<svg"):]  # drop the XML prolog and DOCTYPE so the SVG can sit inline in HTML
     caption = (
         f"Closed-form peaks ({series.method}) against the crank speed; shaded: the detuning band of each"
-        f" resonance's order ([limits] detuning = {bands_text(series.detuning)}; red: the paper's conditions, orange: the others);"
+        f" judged resonance's order ([limits] detuning = {bands_text(series.detuning)}; red: the paper's"
+        " conditions, orange: other judged ones, grey: not judged);"
         " black line: the operating speed."
     )
     return Figure(svg, caption)
