@@ -59,9 +59,9 @@ def test_the_torsional_mode_near_the_fan_speed_is_reported(runner):
 
 
 def test_a_command_without_blocks_names_the_block_commands(runner, tmp_path):
-    result = runner.invoke(app, ["runup", "configs/block_two_machines.toml"])
+    result = runner.invoke(app, ["platform", "configs/block_two_machines.toml"])
     assert result.exit_code == 3
-    assert "fcalc resonance" in result.stderr
+    assert "fcalc resonance" in result.stderr and "fcalc runup" in result.stderr
 
 
 def test_soil_lists_six_springs(runner):

@@ -141,7 +141,7 @@ def runup(scene) -> Finding | None:
     """Largest displacement during start-up and run-down, and a motor that may stick (``fcalc
     runup``), for a scene that gives something to judge them by (:func:`checks.runup.judged`);
     None (not run) otherwise: a run-up costs 0.5-10 s of time integration."""
-    from foundation_calc.checks.runup import RUN_TITLES, check_runup, judged, run_times
+    from foundation_calc.checks.runup import check_runup, judged, run_times, run_title
 
     if not judged(scene):
         return None
@@ -152,7 +152,7 @@ def runup(scene) -> Finding | None:
     if limited:
         top = max(limited, key=lambda row: row.ratio)
         values = {"transient": ("amplitude", top.value), "limit": ("amplitude", top.limit)}
-        parts += [f"largest displacement during {RUN_TITLES[top.run]} ", values["transient"], f" at {top.point} is"
+        parts += [f"largest displacement during {run_title(top.run)} ", values["transient"], f" at {top.point} is"
                   f" {top.ratio:.0%} of the limit ", values["limit"]]
     stuck = [t for t in report.torques if t.outcome is not Outcome.PASS]
     if stuck:
@@ -162,7 +162,7 @@ def runup(scene) -> Finding | None:
     elif report.motor is not None:
         parts += [("; " if parts else "") + "the motor passes every resonance"]
     details = tuple(
-        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}:"
+        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {run_title(row.run)}:"
         f" |u| {row.value:.4g} m"
         + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
         for row in report.rows
@@ -238,5 +238,6 @@ CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
     "crank_foundation": {"inputs": inputs, "resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup,
                          "office": crank_office},
     "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
-    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
+    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "runup": runup,
+                         "office": block_office},
 }

@@ -126,7 +126,11 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if getattr(scene, "kind", "") == "block_foundation":
+    if check == "runup":
+        from foundation_calc.output.runup import runup_document
+
+        document = runup_document(report, scene, "")
+    elif getattr(scene, "kind", "") == "block_foundation":
         from foundation_calc.output import block
 
         document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
@@ -143,10 +147,6 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.crank_amplitudes import amplitudes_document
 
         document = amplitudes_document(report, scene, "")
-    elif check == "runup":
-        from foundation_calc.output.runup import runup_document
-
-        document = runup_document(report, scene, "")
     else:
         from foundation_calc.output.platform import platform_document
 

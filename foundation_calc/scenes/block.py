@@ -38,6 +38,20 @@ class BlockLimits(Limits):
     )
 
 
+class BlockOperation(SceneModel):
+    """Start-up and run-down of every machine (fcalc runup): each runs from rest to its own speed
+    in the same time, as the platform's and crank foundation's [operation] tables give them."""
+
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp of each machine from rest to its speed (fcalc runup)", None, gt=0,
+        examples=[10.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp of each machine from its speed to rest (fcalc runup)", None, gt=0,
+        examples=[20.0],
+    )
+
+
 class BlockScene(SceneModel):
     """A scene of kind ``block_foundation``."""
 
@@ -53,6 +67,9 @@ class BlockScene(SceneModel):
     soil: BlockSoil
     points: list[BlockPoint] = quantity("-", "-", "points whose vibration is checked (besides the centre of mass)", [])
     limits: BlockLimits = BlockLimits()
+    operation: BlockOperation | None = quantity(
+        "-", "-", "run-up and run-down times of the machines (fcalc runup); optional", None
+    )
 
     @field_validator("machines")
     @classmethod

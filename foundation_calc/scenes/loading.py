@@ -24,7 +24,7 @@ KINDS: dict[str, str] = {
 KIND_COMMANDS: dict[str, tuple[str, ...]] = {
     "crank_foundation": ("resonance", "amplitudes", "sweep", "soil"),
     "platform": ("platform",),
-    "block_foundation": ("resonance", "amplitudes", "sweep", "soil", "check", "report"),
+    "block_foundation": ("resonance", "amplitudes", "sweep", "runup", "soil", "check", "report"),
 }
 
 #: Largest scene file read [bytes]; a design is a few hundred bytes.
