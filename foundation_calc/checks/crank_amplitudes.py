@@ -17,7 +17,7 @@ amplitudes; an undamped speed within a hair of a resonance of the checked approx
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -425,16 +425,56 @@ def check_amplitudes(
     )
 
 
-def scene_vendor_loads(scene) -> VendorLoads | None:
-    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads."""
+def scene_vendor_loads(scene, soil_frequency: float = 0.0) -> VendorLoads | None:
+    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads; a
+    frequency-dependent soil takes its springs at ``soil_frequency`` [rad/s]."""
     loads = scene.harmonic_loads()
-    return None if loads is None else VendorLoads(scene.block(), loads, scene.speed.omega_rad_s)
+    return None if loads is None else VendorLoads(scene.block(soil_frequency), loads, scene.speed.omega_rad_s)
+
+
+def _at_soil_frequency(scene, soil_frequency: float, exact: bool) -> AmplitudeReport:
+    design = None if scene.mechanism is None else scene.design(soil_frequency)
+    return check_amplitudes(design, scene.limits, scene.points, exact=exact,
+                            vendor=scene_vendor_loads(scene, soil_frequency))
+
+
+def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
+    """Harmonic n of ``motions[n]``: the steady state of a foundation whose springs depend on
+    frequency, each harmonic solved with the springs at its own frequency n ω (the system is
+    linear in the base's impedance, harmonic by harmonic). ``motions[1]`` gives ω."""
+    width = max(m.cos.shape[-1] for m in motions)
+    shape = np.broadcast_shapes(*(m.cos.shape[:-1] for m in motions)) + (width,)
+    cos, sin = np.zeros(shape), np.zeros(shape)
+    for n, m in enumerate(motions):
+        if n < m.cos.shape[-1]:
+            cos[..., n], sin[..., n] = m.cos[..., n], m.sin[..., n]
+    return PeriodicMotion(motions[1].omega, cos, sin)
 
 
 def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
-    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both."""
-    design = None if scene.mechanism is None else scene.design()
-    return check_amplitudes(design, scene.limits, scene.points, exact=exact, vendor=scene_vendor_loads(scene))
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both.
+
+    On a frequency-dependent soil (``soil.frequency_dependent``) every harmonic n of the closed
+    forms (first approximation, averaged operator, loads) is solved with the springs and dashpots
+    at its own frequency n ω (:func:`splice_harmonics`; the mean, n = 0, on the static springs);
+    the exact harmonic balance, which couples the harmonics, takes them at the speed ω.
+    """
+    omega = scene.speed.omega_rad_s
+    base = _at_soil_frequency(scene, omega if scene.soil.frequency_dependent else 0.0, exact)
+    if not scene.soil.frequency_dependent:
+        return base
+    live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
+    width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
+    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False) for n in range(width)]
+    approximations = dict(base.approximations)
+    for key, a in live.items():
+        if any(r.approximations[key].resonant for r in by_n):
+            continue
+        motion = splice_harmonics([r.approximations[key].motion for r in by_n])
+        approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
+    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega)
+    return replace(base, approximations=approximations, rows=_rows(approximations[base.checked], scene.limits),
+                   code_rows=code_rows, code_warnings=code_warnings)
 
 
 __all__ = [
@@ -448,5 +488,6 @@ __all__ = [
     "check_amplitudes",
     "check_scene_amplitudes",
     "scene_vendor_loads",
+    "splice_harmonics",
     "zone_outcome",
 ]

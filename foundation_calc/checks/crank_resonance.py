@@ -45,7 +45,10 @@ class ResonanceReport:
     """Natural frequencies of a design and its resonance rows.
 
     ``design`` is None for a machine given by its loads only; ``averaged`` is then the same as
-    ``zero_order`` (there is no mechanism whose inertia could be averaged).
+    ``zero_order`` (there is no mechanism whose inertia could be averaged). On a
+    frequency-dependent soil each frequency solves ω = p(K(ω)) with the springs taken at that
+    mode's own frequency, and ``static`` holds the zero-order frequencies on the static springs
+    (None on a frequency-independent soil, where they are the same).
     """
 
     design: CrankDesign | None
@@ -54,6 +57,7 @@ class ResonanceReport:
     stability_margin: float
     rows: tuple[ResonanceRow, ...]
     omega: float
+    static: NaturalFrequencies | None = None
 
     @property
     def outcome(self) -> Outcome:
@@ -95,12 +99,16 @@ def _row(omega, zero, averaged, cond: ResonanceCondition, detuning: float) -> Re
     return ResonanceRow(cond, w0, w1, margin, detuning, outcome)
 
 
-def check_resonances(design: CrankDesign, detuning: float, loads=None) -> ResonanceReport:
+def check_resonances(design: CrankDesign, detuning: float, loads=None, frequencies=None) -> ResonanceReport:
     """Natural frequencies of ``design`` and the margin of its speed from every resonance; with
     ``loads`` (:class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`) also from n ω of
-    every order n of the loads (:func:`load_resonance_conditions`)."""
+    every order n of the loads (:func:`load_resonance_conditions`). ``frequencies`` =
+    (zero-order, averaged, static) replaces the design's own (a frequency-dependent soil)."""
     d = design
     zero, averaged = design_frequencies(design)
+    static = None
+    if frequencies is not None:
+        zero, averaged, static = frequencies
     conditions = CONDITIONS + (() if loads is None else load_resonance_conditions(loads))
     return ResonanceReport(
         design=design,
@@ -109,6 +117,7 @@ def check_resonances(design: CrankDesign, detuning: float, loads=None) -> Resona
         stability_margin=rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h),
         rows=tuple(_row(d.omega, zero, averaged, cond, detuning) for cond in conditions),
         omega=d.omega,
+        static=static,
     )
 
 
@@ -130,12 +139,15 @@ def load_resonance_conditions(loads) -> tuple[ResonanceCondition, ...]:
     )
 
 
-def check_block_resonances(block, omega: float, loads, detuning: float) -> ResonanceReport:
+def check_block_resonances(block, omega: float, loads, detuning: float, frequencies=None) -> ResonanceReport:
     """Resonances of a machine given by its loads only: n ω of every order n of ``loads``
-    against the natural frequencies of the block (``RigidBlock``) at the speed ``omega`` [rad/s]."""
+    against the natural frequencies of the block (``RigidBlock``) at the speed ``omega`` [rad/s];
+    ``frequencies`` = (frequencies, static) replaces the block's own (a frequency-dependent soil)."""
     from foundation_calc.solvers.crank.loads import block_frequencies
 
-    freqs = block_frequencies(block)
+    freqs, static = block_frequencies(block), None
+    if frequencies is not None:
+        freqs, static = frequencies
     return ResonanceReport(
         design=None,
         zero_order=freqs,
@@ -143,6 +155,7 @@ def check_block_resonances(block, omega: float, loads, detuning: float) -> Reson
         stability_margin=rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h),
         rows=tuple(_row(omega, freqs, freqs, cond, detuning) for cond in load_resonance_conditions(loads)),
         omega=omega,
+        static=static,
     )
 
 
@@ -150,5 +163,42 @@ def check_scene_resonances(scene) -> ResonanceReport:
     """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both."""
     loads = scene.harmonic_loads()
     if scene.mechanism is None:
-        return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning)
-    return check_resonances(scene.design(), scene.limits.detuning, loads)
+        return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
+                                      scene_block_frequencies(scene))
+    return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
+
+
+_MODES = ("k0", "p1", "p2")
+
+
+def _consistent(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+    """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
+    NaturalFrequencies on the springs taken at ω."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    return NaturalFrequencies(**{
+        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode))
+        for mode in _MODES
+    })
+
+
+def scene_design_frequencies(scene):
+    """(zero-order, averaged, static) frequencies of a scene's mechanism on a frequency-dependent
+    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
+    if not scene.soil.frequency_dependent:
+        return None
+    static, _ = design_frequencies(scene.design())
+    zero = _consistent(static, lambda w: design_frequencies(scene.design(w))[0])
+    averaged = _consistent(design_frequencies(scene.design())[1], lambda w: design_frequencies(scene.design(w))[1])
+    return zero, averaged, static
+
+
+def scene_block_frequencies(scene):
+    """(frequencies, static) of a machine given by its loads on a frequency-dependent soil, each
+    mode at its own frequency; None on a frequency-independent soil."""
+    if not scene.soil.frequency_dependent:
+        return None
+    from foundation_calc.solvers.crank.loads import block_frequencies
+
+    static = block_frequencies(scene.block())
+    return _consistent(static, lambda w: block_frequencies(scene.block(w))), static

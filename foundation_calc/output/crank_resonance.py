@@ -57,6 +57,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
         "derived": derived,
         "natural_frequencies": _frequencies(report.zero_order),
         "natural_frequencies_averaged_inertia": _frequencies(report.averaged),
+        "natural_frequencies_static_springs": None if report.static is None else _frequencies(report.static),
         "resonances": [
             {
                 "condition": row.condition.label,
@@ -107,15 +108,20 @@ def print_resonance_report(
     design.add_row("rocking stability margin c_φ·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
     out.print(design)
 
-    freqs = Table(title="Natural frequencies", title_justify="left")
+    dependent = report.static is not None
+    freqs = Table(title="Natural frequencies" + (", each on the soil's springs at its own frequency" if dependent else ""),
+                  title_justify="left")
     freqs.add_column("mode")
     for col in ("rad/s", "Hz", "rpm", f"{units.label('speed')}, averaged inertia"):
         freqs.add_column(col, justify="right")
+    if dependent:
+        freqs.add_column(f"{units.label('speed')}, static springs", justify="right")
     for mode in ("k0", "p1", "p2"):
         w0, w1 = getattr(report.zero_order, mode), getattr(report.averaged, mode)
+        static = (fmt(units.convert("speed", getattr(report.static, mode)), 6),) if dependent else ()
         freqs.add_row(
             f"{mode} ({MODE_NAMES[mode]})", fmt(w0, 6), fmt(hz_from_omega(w0)), fmt(rpm_from_omega(w0)),
-            fmt(units.convert("speed", w1), 6),
+            fmt(units.convert("speed", w1), 6), *static,
         )
     out.print(freqs)
 

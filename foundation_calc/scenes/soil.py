@@ -162,6 +162,12 @@ class Soil(SceneModel):
         return self.method or "coefficients"
 
     @property
+    def frequency_dependent(self) -> bool:
+        """True when the method's springs and dashpots change with frequency (``"gazetas"``);
+        Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
+        return self.method_used == "gazetas"
+
+    @property
     def G(self) -> float:
         """Shear modulus [Pa], given or ρ V_s² (half-space methods only)."""
         if self.shear_modulus is not None:
