@@ -193,6 +193,8 @@ class AmplitudeReport:
     code_rows: tuple[CodeRow, ...] = ()
     code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
+    #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
+    modulus_range: object = None
 
     @property
     def omega(self) -> float:
@@ -213,7 +215,8 @@ class AmplitudeReport:
         if self.resonant:
             return Outcome.FAIL
         noted = (Outcome.WARN,) if self.code_warnings else ()
-        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted))
+        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
+        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted, *ranged))
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
@@ -452,7 +455,22 @@ def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
 
 
 def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
-    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both.
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both;
+    with ``soil.modulus_range`` also over that range (:func:`~foundation_calc.checks.soil_range.amplitudes_over_range`;
+    the verdict is the worse of the two).
+    """
+    report = _scene_amplitudes(scene, exact)
+    if scene.soil.modulus_range is None:
+        return report
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
+    from foundation_calc.checks.soil_range import amplitudes_over_range
+
+    crossings = check_scene_resonances(scene).modulus_range.crossings
+    return replace(report, modulus_range=amplitudes_over_range(scene, _scene_amplitudes, crossings))
+
+
+def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
+    """The amplitudes of ``scene`` with its soil data as given.
 
     On a frequency-dependent soil (``soil.frequency_dependent``) every harmonic n of the closed
     forms (first approximation, averaged operator, loads) is solved with the springs and dashpots

@@ -58,10 +58,13 @@ class ResonanceReport:
     rows: tuple[ResonanceRow, ...]
     omega: float
     static: NaturalFrequencies | None = None
+    #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
+    modulus_range: object = None
 
     @property
     def outcome(self) -> Outcome:
-        return worst(row.outcome for row in self.rows)
+        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
+        return worst((*(row.outcome for row in self.rows), *ranged))
 
     @property
     def nearest(self) -> ResonanceRow:
@@ -160,7 +163,19 @@ def check_block_resonances(block, omega: float, loads, detuning: float, frequenc
 
 
 def check_scene_resonances(scene) -> ResonanceReport:
-    """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both; with
+    ``soil.modulus_range``, also over that range (the verdict is the worse of the two)."""
+    report = _scene_resonances(scene)
+    if scene.soil.modulus_range is None:
+        return report
+    from dataclasses import replace
+
+    from foundation_calc.checks.soil_range import resonances_over_range
+
+    return replace(report, modulus_range=resonances_over_range(scene, _scene_resonances))
+
+
+def _scene_resonances(scene) -> ResonanceReport:
     loads = scene.harmonic_loads()
     if scene.mechanism is None:
         return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,

@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.checks.outcomes import Outcome, worst
 
 
 #: A reason: literal text parts and ``(quantity, SI value)`` parts, in reading order.
@@ -57,17 +57,24 @@ def crank_resonance(scene) -> Finding:
     near = report.nearest
     speed = ("speed", report.omega)
     values = {"speed": speed}
-    if report.outcome is Outcome.PASS:
+    nominal = worst(row.outcome for row in report.rows)
+    if nominal is Outcome.PASS:
         values["critical"] = critical = ("speed", near.critical_zero_order)
         reason = (
             "speed ", speed, f" is at least {near.margin:.1%} from every resonance (nearest {near.condition.label} at ",
             critical, f"; required {near.required:.0%})",
         )
     else:
-        bad = [row for row in report.rows if row.outcome is report.outcome]
+        bad = [row for row in report.rows if row.outcome is nominal]
         names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
         reason = ("speed ", speed, f" is inside the {near.required:.0%} band of {names}")
-    return Finding("resonance", report.outcome, reason, values, report)
+    details = ()
+    if report.modulus_range is not None:
+        reason += (f"; {report.modulus_range.text}",)
+        details = tuple(
+            f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}" for p in report.modulus_range.points
+        )
+    return Finding("resonance", report.outcome, reason, values, report, details)
 
 
 def crank_amplitudes(scene) -> Finding:
@@ -106,12 +113,17 @@ def crank_amplitudes(scene) -> Finding:
             reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
+    if report.modulus_range is not None:
+        reason += (f"; {report.modulus_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
+    if report.modulus_range is not None:
+        details += tuple(f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}"
+                         for p in report.modulus_range.points)
     return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 

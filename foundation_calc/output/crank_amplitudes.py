@@ -154,6 +154,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             for row in report.rows
         ],
         "code": code_document(report, scene.limits),
+        "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:
@@ -366,6 +367,8 @@ def summary_line(report: AmplitudeReport) -> str:
         parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
     if report.damped:
         parts.append(f"damped response, {approx.margin:.2%} from {escape(approx.nearest)}")
+    if report.modulus_range is not None:
+        parts.append(escape(report.modulus_range.text))
     return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 

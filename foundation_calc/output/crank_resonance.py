@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from foundation_calc.checks.crank_resonance import ResonanceReport
+from foundation_calc.checks.outcomes import worst
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
@@ -19,14 +20,17 @@ def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUn
     near = report.nearest
     speed = units.show("speed", report.omega)
     outcome = report.outcome.value
-    if outcome == "pass":
+    nominal = worst(r.outcome for r in report.rows).value
+    ranged = "" if report.modulus_range is None else f"; {report.modulus_range.text}"
+    given = "" if report.modulus_range is None else " with the soil data as given"
+    if nominal == "pass":
         return (
-            f"{verdict_text(outcome)}: speed {speed} is at least {near.margin:.1%} from every"
-            f" resonance (nearest: {near.condition.label}; required {near.required:.0%})"
+            f"{verdict_text(outcome, strict)}: speed {speed} is at least {near.margin:.1%} from every"
+            f" resonance{given} (nearest: {near.condition.label}; required {near.required:.0%}){ranged}"
         )
-    bad = [r for r in report.rows if r.outcome.value == outcome]
+    bad = [r for r in report.rows if r.outcome.value == nominal]
     names = ", ".join(f"{r.condition.label} (margin {r.margin:.1%})" for r in bad)
-    return f"{verdict_text(outcome, strict)}: speed {speed} is inside the {near.required:.0%} band of {names}"
+    return f"{verdict_text(outcome, strict)}: speed {speed} is inside the {near.required:.0%} band of {names}{given}{ranged}"
 
 
 def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
@@ -74,8 +78,10 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
             }
             for row in report.rows
         ],
+        "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
         "verdict": report.outcome.value,
     }
+
 
 
 def print_resonance_report(

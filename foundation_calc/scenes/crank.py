@@ -337,6 +337,11 @@ class CrankScene(SceneModel):
         mech = self.mechanism
         return self.foundation.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
 
+    def with_modulus_factor(self, factor: float):
+        """This scene on the soil whose stiffness data are multiplied by ``factor`` [-]
+        (:meth:`Soil.factored`; the copy has no ``modulus_range``)."""
+        return self.model_copy(update={"soil": self.soil.factored(factor)})
+
     def soil_springs(self, method: str | None = None, omega: float = 0.0) -> SoilSprings:
         """K_z, K_x, K_φ and damping ratios of the soil by ``method`` (default: the scene's own).
 
