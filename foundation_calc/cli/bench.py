@@ -19,6 +19,7 @@ class Section(str, Enum):
     startup = "startup"
     points = "points"
     batch = "batch"
+    soil_sample = "soil_sample"
 
 
 ScenesArg = Annotated[
@@ -102,6 +103,7 @@ def bench(
     (time and memory against 10 points) — all measured in this run, on the first crank scene. Last,
     fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
     of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
+    Soil sample: seconds of fcalc soil --sample with 10⁵ designs of the first crank scene.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -115,8 +117,8 @@ def bench(
     loaded = [(path, load_scene(path)) for path in paths]
     cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
-    if not cranks:  # throughput, start-up and points are measured on the first crank scene
-        skipped |= {Section.throughput, Section.startup, Section.points}
+    if not cranks:  # throughput, start-up, points and the soil sample are measured on the first crank scene
+        skipped |= {Section.throughput, Section.startup, Section.points, Section.soil_sample}
     if not platforms:  # the batch's marginal cost is that of a platform scene
         skipped.add(Section.batch)
 
@@ -130,10 +132,11 @@ def bench(
     steps += 3 * (Section.runup not in skipped)
     steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
     steps += Section.points not in skipped
+    steps += Section.soil_sample not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
-    runups = None
+    runups = sampled = None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -186,6 +189,11 @@ def bench(
 
             step(f"points: {', '.join(map(str, POINT_COUNTS))} points, tables, JSON and check")
             points = points_scaling(str(cranks[0][0]), runs=POINTS_RUNS[quick])
+        if Section.soil_sample not in skipped:
+            from foundation_calc.benchmarks.soil_sample import SAMPLES, soil_sample_timing
+
+            step(f"soil sample: {SAMPLES:.3g} designs of {cranks[0][0].name}")
+            sampled = soil_sample_timing(cranks[0][1], MIN_TIME[quick])
         if Section.batch not in skipped:
             from foundation_calc.benchmarks.batch import batch_benchmark
 
@@ -200,6 +208,9 @@ def bench(
             from foundation_calc.output.bench_points import points_document
 
             document["points_scaling"] = points_document(points)
+        if sampled is not None:
+            document["soil_sample"] = {"samples": sampled.samples, "seconds": sampled.seconds,
+                                       "peak_bytes": sampled.peak_bytes}
         print_json(document)
     else:
         report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
@@ -207,6 +218,13 @@ def bench(
             from foundation_calc.output.bench_points import print_points
 
             print_points(points)
+        if sampled is not None:
+            from foundation_calc.output.console import stdout
+
+            stdout().print(
+                f"soil sample (fcalc soil --sample): {sampled.samples} designs in {sampled.seconds:.3g} s"
+                f" ({sampled.per_second:.3g} a second), peak memory {sampled.peak_bytes / 2**20:.3g} MiB"
+            )
         if plot is not None:
             from foundation_calc.output.console import stderr
 

@@ -161,3 +161,55 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
         )
     for text in comparison.findings:
         out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
+
+
+#: Rows of the sample's table: (label, unit, key, scale from SI; None: rad/s to Hz).
+SAMPLE_ROWS = (
+    ("stiffness factor", "-", "modulus_factor", 1.0),
+    ("k0, vertical", "Hz", "k0", None),
+    ("p1, sliding-rocking, lower", "Hz", "p1", None),
+    ("p2, sliding-rocking, upper", "Hz", "p2", None),
+    ("margin from the nearest paper resonance", "%", "resonance_margin", 100.0),
+    ("peak horizontal displacement of C", "mm", "peak_horizontal_C", 1e3),
+    ("peak vertical displacement of C", "mm", "peak_vertical_C", 1e3),
+)
+
+
+def sample_document(drawn) -> dict | None:
+    """The sample of ``fcalc soil --sample`` in SI (frequencies rad/s, margins and factors [-], m)."""
+    if drawn is None:
+        return None
+    from foundation_calc.checks.soil_sample import PERCENTILES
+
+    return {
+        "samples": drawn.samples, "modulus_cov": drawn.cov_modulus, "speed_cov": drawn.cov_speed, "seed": drawn.seed,
+        "distributions": "stiffness factor lognormal (median 1); speed factor normal (mean 1)",
+        "percentiles": [*PERCENTILES],
+        "values": {key: list(values) for key, values in drawn.percentiles.items()},
+        "failure_probability": drawn.failure_probability,
+    }
+
+
+def print_sample(drawn) -> None:
+    """Percentiles of the sample and the probability that each check fails."""
+    from rich.table import Table
+
+    from foundation_calc.checks.soil_sample import PERCENTILES
+
+    out = stdout()
+    table = Table(title=f"Uncertain soil: {drawn.samples} samples, stiffness lognormal (median 1, COV"
+                  f" {drawn.cov_modulus:g})" + (f", speed COV {drawn.cov_speed:g}" if drawn.cov_speed else ""),
+                  title_justify="left")
+    table.add_column("quantity")
+    table.add_column("unit")
+    for p in PERCENTILES:
+        table.add_column(f"{p:g} %", justify="right")
+    for label, unit, key, scale in SAMPLE_ROWS:
+        values = drawn.percentiles[key]
+        table.add_row(label, unit, *(fmt(hz_from_omega(v) if scale is None else v * scale) for v in values))
+    out.print(table)
+    p = drawn.failure_probability
+    out.print(
+        f"probability of failing: resonance {p['resonance']:.2%}, amplitudes {p['amplitudes']:.2%}, any check"
+        f" {p['any']:.2%} (tips over {p['tips_over']:.2%})", soft_wrap=True,
+    )
