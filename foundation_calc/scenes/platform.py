@@ -26,7 +26,7 @@ from foundation_calc.solvers.platform.design import (
     design_from_vertical,
     position_from_vertical,
 )
-from foundation_calc.solvers.platform.dynamics import block_inertia
+from foundation_calc.solvers.rigid_body.inertia import block_inertia
 from foundation_calc.solvers.platform.verification import ExtraRotor, PlatformModel
 
 #: The paper's worked example, used by ``fcalc platform`` when no scene is given.
