@@ -56,7 +56,7 @@ SHEAR_WAVE_VELOCITY_PLAUSIBLE = 100.0
 
 
 def _method_keys(method: str) -> str:
-    return ", ".join(METHOD_KEYS[method])
+    return ", ".join((*METHOD_KEYS[method], "modulus_range"))
 
 
 class Soil(SceneModel):
@@ -157,9 +157,7 @@ class Soil(SceneModel):
     def _range_in_order(cls, factors):
         low, high = MODULUS_FACTOR_LIMITS
         if factors is not None and not low <= factors[0] <= factors[1] <= high:
-            raise ValueError(
-                f"must be [low, high] factors with {low:g} <= low <= high <= {high:g} [-]: got {list(factors)}"
-            )
+            raise ValueError(f"must be [low, high] factors with {low:g} <= low <= high <= {high:g} [-]")
         return factors
 
     def factored(self, factor: float) -> Soil:
