@@ -144,3 +144,26 @@ def test_fcalc_soil_sample_reports_percentiles_and_probabilities(runner):
     assert p5 < p50 < p95
     assert set(sample["failure_probability"]) == {"tips_over", "resonance", "amplitudes", "any"}
     assert json.loads(runner.invoke(app, ["soil", str(CONFIGS / "frame_saw.toml"), "--json"]).stdout)["sample"] is None
+
+
+@pytest.mark.parametrize("config", ["frame_saw.toml", "compressor_medium_sand_lysmer.toml"])
+def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
+    """With a vanishing COV every sample is the scene as given: its frequencies are those of
+    ``fcalc resonance`` (the frequency-consistent ones on Gazetas' soil, rel 1e-7: the fixed
+    points' tolerance) and its peaks of C those of the first approximation in ``fcalc amplitudes``
+    (at most 0.5 % low: 96 phases a revolution against Newton's peak)."""
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
+    from foundation_calc.checks.soil_sample import sample_scene
+
+    document = read_toml(CONFIGS / config)
+    if "method" in document["soil"]:
+        document["soil"]["method"] = "gazetas"
+    scene = parse_scene(document)
+    drawn = sample_scene(scene, 8, 1e-12)
+    frequencies = check_scene_resonances(scene).zero_order
+    for mode in ("k0", "p1", "p2"):
+        assert drawn.percentiles[mode][1] == pytest.approx(getattr(frequencies, mode), rel=1e-7)
+    peaks = check_scene_amplitudes(scene).approximations["first_approximation"].peaks.displacement
+    for key, i in (("peak_horizontal_C", 0), ("peak_vertical_C", 1)):
+        assert float(peaks[i]) * (1 - 0.0049) <= drawn.percentiles[key][1] <= float(peaks[i]) * (1 + 1e-12)

@@ -11,12 +11,14 @@ Distributions (independent):
 - speed factor ~ normal with mean 1 and standard deviation ``cov_speed`` (0: the speed as given),
   for a machine whose speed drifts or is not yet fixed.
 
-A frequency-dependent soil (Gazetas) is sampled on its springs at the operating speed: the sample
-scales them; the shift of each mode's springs with its own frequency is not resampled. The
-sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
+A frequency-dependent soil (Gazetas) is sampled as the checks take it: the factor scales G (so
+V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (fixed-point
+iteration over the whole array), and each harmonic n of the response takes the springs at n ω.
+The sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
 
 Per sample: k0, p1, p2 (the paper's operator), the margin of the speed from the nearest of the
-paper's six conditions (:func:`~foundation_calc.checks.crank_resonance.paper_margin`), the peak
+paper's six conditions (measured, as the check does, to the nearer of the zero-order and the
+averaged-inertia critical speed), the peak
 horizontal and vertical displacement of C by the corrected first approximation (sampled at
 :data:`PEAK_PHASES` phases a revolution). The resonance
 check fails where that margin is below the scene's detuning (the paper's conditions fail inside
@@ -28,13 +30,16 @@ and fails both.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies, paper_margin
+from foundation_calc.checks.crank_amplitudes import splice_harmonics
+from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
-from foundation_calc.solvers.crank.frequencies import rocking_stability_margin
+from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, rocking_stability_margin
+from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin
+from foundation_calc.solvers.soil.impedance import consistent_frequency
 
 #: Percentiles reported [%].
 PERCENTILES = (5.0, 50.0, 95.0)
@@ -94,26 +99,70 @@ def sampled_peaks(cos: np.ndarray, sin: np.ndarray) -> tuple[np.ndarray, np.ndar
     return out[:, 0], out[:, 1]
 
 
-def sample_design(design, detuning: float, amplitude_limit: float | None, n: int, cov_modulus: float,
-                  cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
-    """Sample ``design`` (a :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign`) ``n``
-    times (module docstring); ``amplitude_limit`` [m] or None."""
+def _designs_at(scene, speed: np.ndarray):
+    """``at(soil_frequency, factor)``: the scene's design as arrays, speed ω × ``speed``, soil
+    stiffness × ``factor``, a frequency-dependent soil's springs and dashpots taken at
+    ``soil_frequency`` [rad/s] (arrays alike)."""
+    base = scene.design()
+    omega = base.omega * speed
+    if not scene.soil.frequency_dependent:
+        return lambda soil_frequency, factor: varied(base, omega=omega, soil_factor=factor)
+    from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
+    from foundation_calc.solvers.soil.gazetas import gazetas_springs
+
+    f, s = scene.foundation, scene.soil
+    L, B = f.dimensions
+    h, I_c = f.cog_height, f.moment_of_inertia
+    M_scene, M_rod = scene.total_mass, base.M_tot  # as scene.soil_springs and scene.design take them
+
+    def at(soil_frequency, factor):
+        k = gazetas_springs(s.G * factor, s.density, s.poisson, L, B, f.embedment or 0.0, M_scene,
+                            I_c + M_scene * h * h, s.material_damping or 0.0, soil_frequency)
+        c = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, M_rod, I_c + M_rod * h * h)
+        return replace(base, omega=omega, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
+                       c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi)
+
+    return at
+
+
+def _consistent(at, factor, which: int) -> NaturalFrequencies:
+    """k0, p1, p2 of every sample, each on the springs at its own frequency (ω = p(K(ω)));
+    ``which`` 0: the paper's operator, 1: the averaged inertia."""
+    static = design_frequencies(at(0.0, factor))[which]
+    return NaturalFrequencies(**{
+        mode: consistent_frequency(lambda w, mode=mode: getattr(design_frequencies(at(w, factor))[which], mode),
+                                   getattr(static, mode))
+        for mode in ("k0", "p1", "p2")
+    })
+
+
+def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
+    """Sample a ``crank_foundation`` scene's mechanism ``n`` times (module docstring)."""
     rng = np.random.default_rng(seed)
     factor = lognormal_factors(rng, n, cov_modulus)
     speed = np.maximum(1.0 + cov_speed * rng.normal(size=n), 1e-3) if cov_speed > 0.0 else np.ones(n)
-    d = design
-    stable = rocking_stability_margin(d.c_phi * factor, d.I1, d.M_tot * d.g, d.h) > 0.0
+    at = _designs_at(scene, speed)
+    d = at(0.0, factor)
+    stable = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h) > 0.0
     safe = np.where(stable, factor, 1.0)  # a tipping sample is counted, never solved
-    batch = varied(d, omega=d.omega * speed, soil_factor=safe)
-    zero, _ = design_frequencies(batch)
-    margin = paper_margin(batch)
-    motion, resonant = first_approximation_motion(batch)
+    static = at(0.0, safe)
+    omega = static.omega
+    if scene.soil.frequency_dependent:
+        zero, averaged = _consistent(at, safe, 0), _consistent(at, safe, 1)
+        motions = [first_approximation_motion(at(k * omega, safe)) for k in range(4)]
+        motion, resonant = splice_harmonics([m for m, _ in motions]), motions[1][1]
+    else:
+        zero, averaged = design_frequencies(static)
+        motion, resonant = first_approximation_motion(static)
+    margins = [condition_margin(omega, zero, averaged, c) for c in CONDITIONS if c.source == "paper"]
+    margin = np.min(np.stack(margins), axis=0)
+    resonant = np.asarray(resonant, dtype=bool)
     horizontal, vertical = sampled_peaks(np.nan_to_num(motion.cos[..., :2, :]), np.nan_to_num(motion.sin[..., :2, :]))
-    fails_resonance = ~stable | (margin < detuning)
-    fails_amplitude = ~stable | np.asarray(resonant, dtype=bool)
-    if amplitude_limit is not None:
-        fails_amplitude |= (horizontal > amplitude_limit) | (vertical > amplitude_limit)
-    ok = stable & ~np.asarray(resonant, dtype=bool)
+    fails_resonance = ~stable | (margin < scene.limits.detuning)
+    fails_amplitude = ~stable | resonant
+    if scene.limits.amplitude is not None:
+        fails_amplitude |= (horizontal > scene.limits.amplitude) | (vertical > scene.limits.amplitude)
+    ok = stable & ~resonant
 
     def pct(values):
         kept = values[ok] if ok.any() else values
@@ -134,12 +183,4 @@ def sample_design(design, detuning: float, amplitude_limit: float | None, n: int
     )
 
 
-def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
-    """:func:`sample_design` of a ``crank_foundation`` scene's mechanism (a frequency-dependent
-    soil on its springs at the operating speed)."""
-    at = scene.speed.omega_rad_s if scene.soil.frequency_dependent else 0.0
-    return sample_design(scene.design(at), scene.limits.detuning, scene.limits.amplitude, n, cov_modulus,
-                         cov_speed, seed)
-
-
-__all__ = ["PERCENTILES", "SoilSample", "lognormal_factors", "sample_design", "sample_scene"]
+__all__ = ["PERCENTILES", "SoilSample", "lognormal_factors", "sample_scene", "sampled_peaks"]
