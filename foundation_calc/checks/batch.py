@@ -115,6 +115,16 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise
         return SceneRun(source, "", "", (_error_run("load", exc),))
+    return SceneRun(source, scene.kind, scene.name, run_checks(scene), scene, warnings=tuple(scene.plausibility_warnings()))
+
+
+def run_checks(scene) -> tuple[CheckRun, ...]:
+    """Every check of :data:`~foundation_calc.checks.registry.CHECKS` for the kind of the validated
+    ``scene``, in the registry's order; a check that judges nothing in the scene is left out, and
+    one that raises is recorded as ``invalid`` or ``internal`` (see the module docstring).
+
+    ``fcalc check`` and the calculation sheet (``fcalc report``) both call this, so they judge
+    the same rows."""
     runs = []
     for name, check in CHECKS[scene.kind].items():
         try:
@@ -129,7 +139,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
             continue
         f = finding
         runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details))
-    return SceneRun(source, scene.kind, scene.name, tuple(runs), scene, warnings=tuple(scene.plausibility_warnings()))
+    return tuple(runs)
 
 
 def run_scenes(paths: Iterable[str | Path], jobs: int = 1) -> list[SceneRun]:

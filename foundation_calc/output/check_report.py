@@ -18,7 +18,7 @@ from collections import Counter
 from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -177,11 +177,14 @@ def _summary(scenes: list[SceneRun], strict: bool) -> dict:
     }
 
 
+def _head(strict: bool) -> dict:
+    return with_version({"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict})
+
+
 def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
     """The JSON document of ``fcalc check`` (every number SI); :func:`stream_check_json` writes the
     same text scene by scene."""
-    head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-    return {**head, "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
+    return {**_head(strict), "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
 
 
 def _dumped(value) -> str:
@@ -211,8 +214,7 @@ def stream_check_json(entries: Iterable[tuple[SceneRun, str | None]], strict: bo
         if text is None:
             continue
         if not opened:
-            head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-            write("{" + ",".join(_member(k, v) for k, v in head.items()) + ',\n  "scenes": [')
+            write("{" + ",".join(_member(k, v) for k, v in _head(strict).items()) + ',\n  "scenes": [')
         write(("," if opened else "") + "\n    " + text.replace("\n", "\n    "))
         opened = True
     if opened:

@@ -76,10 +76,22 @@ def verdict_text(outcome: str, strict: bool = False) -> str:
     return f"[{OUTCOME_STYLE[outcome]}]{outcome.upper()}[/]"
 
 
+def with_version(document: dict) -> dict:
+    """``document`` with ``fcalc_version`` (version and commit) after its ``schema_version``."""
+    from foundation_calc.version import version
+
+    head = {k: document[k] for k in ("schema_version",) if k in document}
+    return {**head, "fcalc_version": version(), **document}
+
+
 def print_json(document: dict) -> None:
-    """Write one JSON document to stdout. NaN or inf in it is a bug, so it raises."""
+    """Write one JSON document to stdout; a result document (one with a ``schema_version``)
+    carries fcalc's version, with its commit, right after it. NaN or inf in it is a bug, so it
+    raises."""
     import json
 
+    if "schema_version" in document:
+        document = with_version(document)
     print(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
 
 
