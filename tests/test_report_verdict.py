@@ -82,6 +82,8 @@ def _result_rows(check: dict) -> list[str]:
         ]
     if name == "runup":
         return [r["verdict"] for r in result["limits"]] + [t["verdict"] for t in (result.get("motor") or {}).get("sommerfeld", ())]
+    if name == "office":
+        return [r["verdict"] for r in result["office"]]
     return [c["verdict"] for c in result["checks"]]
 
 

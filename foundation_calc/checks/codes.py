@@ -19,13 +19,15 @@ Below 600 r/min the tables judge the broad-band r.m.s. displacement [µm] as wel
 still mean a displacement beyond it). Those displacement boundaries are not stored:
 their printed values could not be checked against the standard, and a boundary is kept here only
 with its printed value and clause. For a machine below :data:`DISPLACEMENT_SPEED_RPM`,
-:func:`application_warnings` says so, and the velocity zone alone is judged. ISO 20816-3:2022, which replaced ISO 10816-3, is not accepted: its tables have not
-been checked against these.
+:func:`application_warnings` says so, and the velocity zone alone is judged. ISO 20816-3:2022,
+which replaced ISO 10816-3, is not accepted: its tables have not been checked against these.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+from foundation_calc.checks.outcomes import Outcome
 
 #: Speed [r/min] below which ISO 10816-3 judges the r.m.s. displacement as well (Annex A).
 DISPLACEMENT_SPEED_RPM = 600.0
@@ -99,6 +101,19 @@ def zone(velocity_rms: float, table: ZoneTable) -> str:
     return ZONES[sum(velocity_rms > b for b in table.boundaries)]
 
 
+def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
+    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
+
+    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
+    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
+    """
+    i = ZONES.index(zone_name)
+    if acceptable is None:
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
+    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+
+
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
     """Why the code may not apply to this machine: speed outside its range, power unknown or
     outside the group's range, a displacement boundary the code sets below 600 r/min that is not
@@ -133,4 +148,5 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone"]
+__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone",
+           "zone_outcome"]

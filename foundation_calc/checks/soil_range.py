@@ -8,8 +8,10 @@ recomputed. Two ends are not enough: a natural frequency moves through n ω some
 range, and the verdict there is the worst. The check is evaluated on a geometric grid of
 :data:`GRID_POINTS` factors (and the data as given, factor 1, when it lies inside) plus, for each
 resonance condition whose critical speed crosses the operating speed between two grid points, the
-factor at the crossing itself (found by Brent's method, where the margin is 0). The verdict is the
-worst over all of them; the governing factor is the one that gives it. The amplitude checks
+factor at the crossing itself (found by Brent's method, where the margin is 0) when the resonance
+rule judges that condition there (a harmonic with a negligible forcing share is information,
+not a crossing). The verdict is the worst over all of them; the governing factor is the one that
+gives it. The amplitude checks
 (a steady-state solve per factor) take a coarser grid of :data:`AMPLITUDE_GRID_POINTS` factors
 plus the resonance crossings, where the steady state peaks.
 """
@@ -100,12 +102,10 @@ def modulus_factors(low: float, high: float, n: int = GRID_POINTS) -> list[float
 
 
 def _resonance_point(factor: float, report) -> RangePoint:
-    def severity(row):
-        return math.inf if row.margin <= 0.0 else row.required / row.margin
-
-    row = max(report.rows, key=lambda r: (_RANK[r.outcome], severity(r)))
-    return RangePoint(factor, report.outcome, f"{row.condition.label}, margin {row.margin:.1%}, required"
-                      f" {row.required:.0%}", severity(row))
+    g = report.governing
+    if g is None:
+        return RangePoint(factor, report.outcome, "no resonance condition to judge", 0.0)
+    return RangePoint(factor, report.outcome, g.phrase, math.inf if g.margin <= 0.0 else g.needed / g.margin)
 
 
 def _amplitude_point(factor: float, report) -> RangePoint:
@@ -142,18 +142,24 @@ def resonances_over_range(scene, check) -> ModulusRangeResult:
     low, high = scene.soil.modulus_range
     reports = {f: check(scene.with_modulus_factor(f)) for f in modulus_factors(low, high)}
     factors = sorted(reports)
-    crossings = []
-    for i, condition in enumerate(row.condition for row in reports[factors[0]].rows):
-        def offset(f, i=i):
-            report = reports[f] if f in reports else check(scene.with_modulus_factor(f))
-            return report.rows[i].critical_zero_order - report.omega
 
+    def offset(f, label):
+        """Critical speed of ``label`` less the speed at factor ``f``; None where it is not listed."""
+        report = reports[f] if f in reports else check(scene.with_modulus_factor(f))
+        row = next((r for r in report.rows if r.condition.label == label), None)
+        return None if row is None else row.critical_zero_order - report.omega
+
+    labels = dict.fromkeys(row.condition.label for f in factors for row in reports[f].rows)
+    crossings = []
+    for label in labels:
         for a, b in zip(factors, factors[1:]):
-            if offset(a) * offset(b) < 0.0:
-                f = brentq(offset, a, b, xtol=1e-12, rtol=1e-10)
-                crossings.append((f, condition.label))
-    for f, _ in crossings:
-        reports[f] = check(scene.with_modulus_factor(f))
+            at_a, at_b = offset(a, label), offset(b, label)
+            if at_a is not None and at_b is not None and at_a * at_b < 0.0:
+                f = brentq(lambda x, label=label: offset(x, label) or 0.0, a, b, xtol=1e-12, rtol=1e-10)
+                report = check(scene.with_modulus_factor(f))
+                if any(r.condition.label == label and r.judged for r in report.rows):  # the rule judges it
+                    reports[f] = report
+                    crossings.append((f, label))
     return ModulusRangeResult(
         low=low, high=high,
         points=tuple(_resonance_point(f, reports[f]) for f in sorted(reports)),

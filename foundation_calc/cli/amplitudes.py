@@ -8,9 +8,10 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or block_foundation.", show_default=False)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 ExactOpt = Annotated[
     bool,
@@ -43,8 +44,10 @@ def amplitudes(
     from foundation_calc.scenes import load_scene
 
     shown = display_units(units)
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        run_kind("amplitudes", loaded, str(scene), json=json, strict=False, units=shown)
     if exact and loaded.mechanism is None:
         from foundation_calc.output.console import stderr
 

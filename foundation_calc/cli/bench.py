@@ -19,12 +19,13 @@ class Section(str, Enum):
     startup = "startup"
     points = "points"
     batch = "batch"
+    block = "block"
     soil_sample = "soil_sample"
 
 
 ScenesArg = Annotated[
     Optional[list[Path]],
-    typer.Argument(help="Scene files (TOML). Default: every crank_foundation and platform file in ./configs.", show_default=False),
+    typer.Argument(help="Scene files (TOML). Default: every scene file in ./configs.", show_default=False),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
 PlotOpt = Annotated[
@@ -103,6 +104,7 @@ def bench(
     (time and memory against 10 points) — all measured in this run, on the first crank scene. Last,
     fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
     of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
+    Block scenes: one scene's whole check and a sweep of 10 000 speeds of its first machine.
     Soil sample: seconds of fcalc soil --sample with 10⁵ designs of the first crank scene.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
@@ -117,6 +119,9 @@ def bench(
     loaded = [(path, load_scene(path)) for path in paths]
     cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
+    blocks = [(p, s) for p, s in loaded if s.kind == "block_foundation"]
+    if not blocks:
+        skipped.add(Section.block)
     if not cranks:  # throughput, start-up, points and the soil sample are measured on the first crank scene
         skipped |= {Section.throughput, Section.startup, Section.points, Section.soil_sample}
     if not platforms:  # the batch's marginal cost is that of a platform scene
@@ -135,8 +140,9 @@ def bench(
     steps += Section.soil_sample not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
+    steps += len(blocks) * (Section.block not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
-    runups = sampled = None
+    runups, block_timings, sampled = None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -198,6 +204,13 @@ def bench(
             from foundation_calc.benchmarks.batch import batch_benchmark
 
             batch = batch_benchmark(platforms[0][0], paths, BATCH_MANY, large, BATCH_ROUNDS[quick], on_step=step)
+        if Section.block not in skipped:
+            from foundation_calc.benchmarks.block import benchmark_block
+
+            block_timings = []
+            for path, scene in blocks:
+                step(f"{path.name}: block check and speed sweep")
+                block_timings.append(benchmark_block(str(path), scene, MIN_TIME[quick]))
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
@@ -208,6 +221,10 @@ def bench(
             from foundation_calc.output.bench_points import points_document
 
             document["points_scaling"] = points_document(points)
+        if block_timings is not None:
+            from foundation_calc.output.bench_block import block_document
+
+            document["block"] = block_document(block_timings)
         if sampled is not None:
             document["soil_sample"] = {"samples": sampled.samples, "seconds": sampled.seconds,
                                        "peak_bytes": sampled.peak_bytes}
@@ -218,6 +235,10 @@ def bench(
             from foundation_calc.output.bench_points import print_points
 
             print_points(points)
+        if block_timings is not None:
+            from foundation_calc.output.bench_block import print_block
+
+            print_block(block_timings)
         if sampled is not None:
             from foundation_calc.output.console import stdout
 

@@ -44,7 +44,7 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
 
     if plot is not None and not plotting_available():
         raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
-    loaded = load_scene(scene)
+    loaded = load_scene(scene, expect=("crank_foundation", "platform"))
     warn_implausible(loaded)
     scene_up, scene_down = run_times(loaded)
     up = time if time is not None else scene_up

@@ -8,8 +8,9 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation.", show_default=False)]
+SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or block_foundation.", show_default=False)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 SampleOpt = Annotated[int, typer.Option(
     "--sample", min=0, max=10_000_000, metavar="N",
@@ -40,8 +41,10 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
     from foundation_calc.output import soil as soil_out
     from foundation_calc.scenes import load_scene
 
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        run_kind("soil", loaded, str(scene), json=json)
     comparison = compare_soil_methods(loaded)
     drawn = None
     if sample and loaded.mechanism is None:

@@ -126,7 +126,16 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if check == "resonance":
+    if getattr(scene, "kind", "") == "block_foundation":
+        from foundation_calc.output import block
+
+        document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
+                    "office": block.office_document}[check](report, scene, "")
+    elif check == "office":
+        from foundation_calc.output.block import office_document
+
+        document = office_document(report, scene, "")
+    elif check == "resonance":
         from foundation_calc.output.crank_resonance import resonance_document
 
         document = resonance_document(report, scene, "")

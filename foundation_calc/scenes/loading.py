@@ -16,6 +16,7 @@ from foundation_calc.errors import SceneError
 #: scene kind -> "module:Model"; a module is imported only when a scene of its kind is read.
 KINDS: dict[str, str] = {
     "crank_foundation": "foundation_calc.scenes.crank:CrankScene",
+    "block_foundation": "foundation_calc.scenes.block:BlockScene",
     "platform": "foundation_calc.scenes.platform:PlatformScene",
 }
 
@@ -23,6 +24,7 @@ KINDS: dict[str, str] = {
 KIND_COMMANDS: dict[str, tuple[str, ...]] = {
     "crank_foundation": ("resonance", "amplitudes", "sweep", "soil"),
     "platform": ("platform",),
+    "block_foundation": ("resonance", "amplitudes", "sweep", "soil", "check", "report"),
 }
 
 #: Largest scene file read [bytes]; a design is a few hundred bytes.
@@ -81,19 +83,22 @@ def model_for_kind(kind: str) -> type:
     return getattr(importlib.import_module(module_name), class_name)
 
 
-def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | None = None):
+def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tuple[str, ...] | None = None):
     """Validate a scene document (already parsed TOML) and return its model instance.
 
-    ``expect`` names the kind the caller needs; a scene of another kind is a :class:`SceneError`.
+    ``expect`` names the kind (or kinds) the caller takes; a scene of another kind is a
+    :class:`SceneError`.
     """
     kind = data.get("kind")
     if not isinstance(kind, str) or kind not in KINDS:
         allowed = ", ".join(f'"{k}"' for k in KINDS)
         got = "missing" if kind is None else f"{kind!r}"
         raise SceneError(source, [("kind", f"must be one of {allowed} (got {got})")])
-    if expect is not None and kind != expect:
+    expected = (expect,) if isinstance(expect, str) else expect
+    if expected is not None and kind not in expected:
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
-        raise SceneError(source, [("kind", f'this command needs a "{expect}" scene (got "{kind}": use {commands})')])
+        needs = " or ".join(f'"{k}"' for k in expected)
+        raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
     model = model_for_kind(kind)
     from pydantic import ValidationError
 
@@ -107,6 +112,6 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | Non
         raise SceneError(source, [("", "is nested too deeply")]) from None
 
 
-def load_scene(path: str | Path, expect: str | None = None):
+def load_scene(path: str | Path, expect: str | tuple[str, ...] | None = None):
     """Read, parse and validate the scene file at ``path``."""
     return parse_scene(read_toml(path), source=str(path), expect=expect)

@@ -38,8 +38,8 @@ class SweepSeries:
     omega: list[float]
     peaks: dict[str, list[float | None]]
     amplitude_limit: float | None
-    detuning: float
-    critical: list[tuple[str, str, float]]
+    detuning: float | dict
+    critical: list[tuple[str, str, float, float]]
     method: str
 
 
@@ -51,7 +51,7 @@ def sweep_series(doc: dict) -> SweepSeries:
         peaks={"y of C": [r["y_peak"] for r in rows], "x of C": [r["x_peak"] for r in rows]},
         amplitude_limit=doc["limits"]["amplitude"],
         detuning=doc["limits"]["detuning"],
-        critical=[(c["condition"], c["source"], c["zero_order"]) for c in doc["critical_speeds"]],
+        critical=[(c["condition"], c["source"], c["zero_order"], c["band"]) for c in doc["critical_speeds"]],
         method=doc["method"],
     )
 
@@ -122,7 +122,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     )
     rows = (
         (
-            r["condition"] + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[r["source"]],
+            r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),
             r["mode_name"],
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),

@@ -130,7 +130,26 @@ def _design_rows(doc: dict, scene, units: DisplayUnits):
 
 
 #: check name (as in the registry) -> rows (item, value, limit, ratio, verdict, source) of its document.
+def _office_rows(doc: dict, scene, units: DisplayUnits):
+    def shown(row, v):
+        if row["unit"] == "Pa":
+            return f"{figure(v / 1e3, 4)} kPa"
+        return percent(v) if row["check"].startswith("eccentricity") else figure(v, 3)
+
+    for row in doc["office"]:
+        above = row["check"] == "mass ratio"  # a ratio that must stay at or above its limit
+        yield (
+            row["text"],
+            shown(row, row["value"]),
+            ("≥ " if above else "≤ ") + shown(row, row["limit"]),
+            ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
+            row["verdict"],
+            row["source"],
+        )
+
+
 ROWS: dict[str, Callable] = {
+    "office": _office_rows,
     "resonance": _resonance_rows,
     "amplitudes": _amplitude_rows,
     "runup": _runup_rows,
