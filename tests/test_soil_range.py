@@ -167,3 +167,12 @@ def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
     peaks = check_scene_amplitudes(scene).approximations["first_approximation"].peaks.displacement
     for key, i in (("peak_horizontal_C", 0), ("peak_vertical_C", 1)):
         assert float(peaks[i]) * (1 - 0.0049) <= drawn.percentiles[key][1] <= float(peaks[i]) * (1 + 1e-12)
+
+
+def test_a_block_foundation_refuses_a_range_it_would_not_judge(runner, tmp_path):
+    """The block's checks take the soil as given: its [soil] refuses modulus_range (exit 3) rather
+    than ignore it."""
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    document["soil"]["modulus_range"] = [0.5, 1.5]
+    result = runner.invoke(app, ["check", str(_write(tmp_path, document))])
+    assert result.exit_code == 3 and "modulus_range is not a key" in result.stdout + result.stderr

@@ -29,9 +29,6 @@ METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "sp26": ("deformation_modulus", "soil_class"),
 }
 
-#: Keys every method takes.
-COMMON_KEYS: tuple[str, ...] = ("method", "modulus_range")
-
 #: Largest spread of the soil's stiffness a ``modulus_range`` may bracket (factors within 1/10 .. 10).
 MODULUS_FACTOR_LIMITS = (0.1, 10.0)
 
@@ -56,7 +53,7 @@ SHEAR_WAVE_VELOCITY_PLAUSIBLE = 100.0
 
 
 def _method_keys(method: str) -> str:
-    return ", ".join((*METHOD_KEYS[method], "modulus_range"))
+    return ", ".join(METHOD_KEYS[method])
 
 
 class Soil(SceneModel):
@@ -115,6 +112,8 @@ class Soil(SceneModel):
 
     #: The keys each method takes; a kind with other methods (the block's) sets its own.
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = METHOD_KEYS
+    #: Keys of every method for the soil's uncertainty (a kind whose checks do not judge a range sets none).
+    range_keys: ClassVar[tuple[str, ...]] = ("modulus_range",)
     #: What to say when neither a method nor c_z is given.
     no_method_text: ClassVar[str] = (
         'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
@@ -133,8 +132,8 @@ class Soil(SceneModel):
             method = "coefficients"
         if not isinstance(method, str) or method not in cls.method_keys:
             return data  # the field's own validation names the allowed methods
-        allowed = set(cls.method_keys[method]) | set(COMMON_KEYS)
-        keys = ", ".join((*cls.method_keys[method], "modulus_range"))
+        allowed = set(cls.method_keys[method]) | {"method", *cls.range_keys}
+        keys = ", ".join((*cls.method_keys[method], *cls.range_keys))
         for key in data:
             if key in allowed:
                 continue
