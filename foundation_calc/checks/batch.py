@@ -72,13 +72,17 @@ class SceneRun:
 def scene_files(paths: Iterable[str | Path]) -> dict[Path, bool]:
     """The scene files named by ``paths``, each with whether it was found by a folder search.
 
-    Files are taken as given and folders searched for ``*.toml``; files found in folders are
+    Files are taken as given and folders searched for ``*.toml`` (but ``fcalc.toml``, the office
+    defaults, which is no scene); files found in folders are
     sorted so reports are stable; a path that does not exist is kept, so that it is reported as a
     scene that cannot be read.
     """
+    from foundation_calc.scenes.project import OFFICE_FILE
+
     found: dict[Path, bool] = {}
     for path in map(Path, paths):
-        for file in sorted(path.rglob("*.toml")) if path.is_dir() else [path]:
+        searched = (f for f in sorted(path.rglob("*.toml")) if f.name != OFFICE_FILE)  # office defaults, no scene
+        for file in searched if path.is_dir() else [path]:
             found[file] = found.get(file, True) and path.is_dir()
     return found
 
@@ -104,13 +108,14 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     With ``skip_non_scenes`` a TOML document without a ``kind`` key is skipped, not invalid.
     """
     from foundation_calc.scenes import parse_scene, read_toml
+    from foundation_calc.scenes.project import with_office_defaults
 
     source = str(path)
     try:
         document = read_toml(path)
         if skip_non_scenes and "kind" not in document:
             return SceneRun(source, "", "", (), skipped=True)
-        scene = parse_scene(document, source)
+        scene = parse_scene(with_office_defaults(document, path), source)
     except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise

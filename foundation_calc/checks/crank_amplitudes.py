@@ -137,13 +137,15 @@ class CodeRow:
 
 @dataclass(frozen=True)
 class ExactInfo:
-    """How the exact solution was reached."""
+    """How the exact solution was reached; ``capped``: the solver's message when the harmonic cap
+    left ``harmonic_change`` above its tolerance (the solution is then good to about that)."""
 
     harmonics: int
     newton_iterations: int
     harmonic_change: float
     residual: float
     seconds: float
+    capped: str | None = None
 
 
 @dataclass(frozen=True)
@@ -377,12 +379,16 @@ def check_amplitudes(
     if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
 
-        from foundation_calc.solvers.crank.exact import exact_periodic_solution
+        from foundation_calc.solvers.crank.exact import HarmonicCapReached, exact_periodic_solution
 
         start = time.perf_counter()
-        sol = exact_periodic_solution(design)
+        capped = None
+        try:
+            sol = exact_periodic_solution(design)
+        except HarmonicCapReached as cap:
+            sol, capped = cap.solution, str(cap)
         seconds = time.perf_counter() - start
-        info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds)
+        info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds, capped)
         averaged = approximations["averaged_operator"]
         approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points, loads)
         checked = "exact"

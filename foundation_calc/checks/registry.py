@@ -161,7 +161,8 @@ def runup(scene) -> Finding | None:
     elif report.motor is not None:
         parts += [("; " if parts else "") + "the motor passes every resonance"]
     details = tuple(
-        f"{row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}: {row.value:.4g} m"
+        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}:"
+        f" |u| {row.value:.4g} m"
         + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
         for row in report.rows
     ) + tuple(f"WARN {warning}" for warning in report.warnings)

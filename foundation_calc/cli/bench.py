@@ -117,7 +117,13 @@ def bench(
     from foundation_calc.scenes import load_scene
 
     loaded = [(path, load_scene(path)) for path in paths]
-    cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
+    # the amplitude methods, throughput, start-up and points need a crank mechanism
+    cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation" and s.mechanism is not None]
+    left_out = [
+        (str(p), "a machine given by its loads, without [mechanism]: not in the accuracy, throughput, start-up"
+                 " and points sections")
+        for p, s in loaded if s.kind == "crank_foundation" and s.mechanism is None
+    ]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
     blocks = [(p, s) for p, s in loaded if s.kind == "block_foundation"]
     if not blocks:
@@ -217,6 +223,7 @@ def bench(
         from foundation_calc.output.console import print_json
 
         document = report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups)
+        document["skipped_scenes"] = [{"scene": scene, "reason": reason} for scene, reason in left_out]
         if points is not None:
             from foundation_calc.output.bench_points import points_document
 
@@ -230,6 +237,7 @@ def bench(
                                        "peak_bytes": sampled.peak_bytes}
         print_json(document)
     else:
+        report.print_skipped(left_out)
         report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
         if points is not None:
             from foundation_calc.output.bench_points import print_points

@@ -29,9 +29,16 @@ def keep_words_whole(table) -> None:
     from rich.cells import cell_len
     from rich.text import Text
 
+    def plain_text(cell) -> str:
+        if isinstance(cell, Text):
+            return cell.plain
+        if isinstance(cell, str):  # markup only where a tag may be: parsing every number costs
+            return Text.from_markup(cell).plain if "[" in cell else cell
+        return ""
+
     for column in table.columns:
         cells = (column.header, *column.cells)
-        plain = (cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else "" for cell in cells)
+        plain = map(plain_text, cells)
         longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
         column.min_width = max(column.min_width or 0, longest)
 

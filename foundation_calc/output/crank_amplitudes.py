@@ -167,6 +167,8 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             "harmonic_change": info.harmonic_change,
             "relative_residual": info.residual,
             "seconds": info.seconds,
+            "converged": info.capped is None,
+            "note": info.capped,
         }
         doc["errors"] = report.errors
     return doc
@@ -405,6 +407,8 @@ def print_amplitudes_report(
             f"  exact: {info.harmonics} harmonics (change from {info.harmonics // 2}: {info.harmonic_change:.1e}),"
             f" {info.newton_iterations} Newton step(s), {info.seconds * 1e3:.0f} ms"
         )
+        if info.capped is not None:
+            out.print(f"  [yellow]exact: {escape(info.capped)}; its figures are good to about that change[/]")
     out.print(_harmonics_table(report, units))
     if not report.resonant:
         out.print(_points_table(report, units, all_points))

@@ -15,6 +15,7 @@ from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoi
 from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
+from foundation_calc.scenes.project import Project
 
 #: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
@@ -39,6 +40,10 @@ class BlockScene(SceneModel):
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
     schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
     name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
     block: BlockBody
     machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)
     soil: BlockSoil

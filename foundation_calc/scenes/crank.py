@@ -24,6 +24,7 @@ from foundation_calc.scenes.common import (
 )
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.soil import Soil
+from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
@@ -253,6 +254,10 @@ class CrankScene(SceneModel):
         "-", "-", "version of the scene format", SCENE_SCHEMA_VERSION
     )
     name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
     foundation: Foundation
     soil: Soil
     mechanism: Mechanism | None = quantity(

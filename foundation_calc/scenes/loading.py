@@ -99,7 +99,12 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
         needs = " or ".join(f'"{k}"' for k in expected)
         raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
-    model = model_for_kind(kind)
+    return validate(model_for_kind(kind), data, source)
+
+
+def validate(model: type, data: dict[str, Any], source: str, prefix: str = ""):
+    """``model`` validated from ``data``, or a :class:`SceneError` whose problems name each field
+    (``prefix`` + dotted path), its value, unit and allowed range."""
     from pydantic import ValidationError
 
     from foundation_calc.scenes.messages import describe_validation_error
@@ -107,11 +112,20 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise SceneError(source, describe_validation_error(model, exc)) from None
+        problems = describe_validation_error(model, exc)
+        raise SceneError(source, [(f"{prefix}{loc}" if loc else prefix.rstrip("."), msg) for loc, msg in problems]) from None
     except RecursionError:
         raise SceneError(source, [("", "is nested too deeply")]) from None
 
 
+def read_scene(path: str | Path) -> dict[str, Any]:
+    """The scene document at ``path`` with the office defaults of the nearest ``fcalc.toml``
+    (:func:`~foundation_calc.scenes.project.with_office_defaults`)."""
+    from foundation_calc.scenes.project import with_office_defaults
+
+    return with_office_defaults(read_toml(path), path)
+
+
 def load_scene(path: str | Path, expect: str | tuple[str, ...] | None = None):
-    """Read, parse and validate the scene file at ``path``."""
-    return parse_scene(read_toml(path), source=str(path), expect=expect)
+    """Read, parse and validate the scene file at ``path`` (with its office defaults)."""
+    return parse_scene(read_scene(path), source=str(path), expect=expect)

@@ -20,18 +20,6 @@ NEGLIGIBLE = 1e-9
 
 
 @dataclass(frozen=True)
-class TitleBlock:
-    """Where a sheet comes from: scene, file and its SHA-256, fcalc version, date, command."""
-
-    name: str
-    file: str
-    sha256: str
-    version: str
-    date: str
-    command: str
-
-
-@dataclass(frozen=True)
 class SweepSeries:
     """What the sweep plot draws, from the ``sweep`` JSON document (SI units)."""
 
@@ -69,18 +57,6 @@ def num(value: float | None, digits: int = DIGITS) -> str:
 def pct(value: float) -> str:
     """A fraction as a percentage with ``DIGITS`` significant figures."""
     return f"{value * 100:.{DIGITS}g} %"
-
-
-def title_section(title: TitleBlock) -> Section:
-    rows = (
-        ("scene", title.name),
-        ("file", title.file),
-        ("SHA-256 of the file", title.sha256),
-        ("fcalc version", title.version),
-        ("date (UTC)", title.date),
-        ("command", title.command),
-    )
-    return Section("Title block", (table("", ("item", "value"), rows, (False, False)),))
 
 
 def _speed(units: DisplayUnits, omega: float) -> str:

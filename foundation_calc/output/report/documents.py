@@ -2,34 +2,21 @@
 
 from __future__ import annotations
 
-import hashlib
-from datetime import datetime, timezone
 from pathlib import Path
 
-from foundation_calc import __version__
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.report.contents import (
-    TitleBlock,
-    crank_sections,
-    operating_speed,
-    platform_sections,
-    sweep_series,
-    title_section,
-)
+from foundation_calc.output.report.contents import crank_sections, operating_speed, platform_sections, sweep_series
+from foundation_calc.output.report.assumptions import assumptions_section
 from foundation_calc.output.report.inputs import inputs_section
+from foundation_calc.output.report.methods import methods_section
 from foundation_calc.output.report.model import Section, Sheet
+from foundation_calc.output.report.references import references_section
+from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
 from foundation_calc.output.report.verdict import checks_section, summary_section
 
 #: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
 SWEEP_RANGE = (0.05, 2.5)
 SWEEP_POINTS = 1001
-
-
-def title_block(path: Path, name: str, command: str) -> TitleBlock:
-    """The title block of a sheet for the scene file at ``path``."""
-    digest = hashlib.sha256(path.read_bytes()).hexdigest()
-    date = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S")
-    return TitleBlock(name or path.name, str(path), digest, __version__, date, command)
 
 
 def sweep_figure_of(loaded, units: DisplayUnits, omega: float):
@@ -96,13 +83,17 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     warnings = tuple(loaded.plausibility_warnings())
     scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
     documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
-    title = title_block(path, loaded.name, command)
-    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units)]
+    title = title_block(path, loaded, command)
+    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units),
+                assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
+    methods = methods_section(loaded, documents)
+    sections += [methods] if methods is not None else []
     if "runup" in documents:
         from foundation_calc.output.report.runup_section import runup_section
 
         report = next(run.report for run in runs if run.check == "runup")
         sections.append(runup_section(documents["runup"], report, loaded, units, figures))
     sections.append(checks_section(runs, documents, loaded, units))
-    return Sheet(f"Calculation sheet: {title.name}", tuple(sections)), scene_run
+    sections.append(references_section(sections))
+    return Sheet(sheet_title(title), tuple(sections), page_header(title)), scene_run
