@@ -98,6 +98,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
         ],
         "rule": rule_document(report),
         "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
 

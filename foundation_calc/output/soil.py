@@ -86,7 +86,7 @@ def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
             r.method: {key: _finite(getattr(r, key)) for key in _JSON_KEYS} | _dynamic_document(r)
             for r in comparison.results
         },
-        "warnings": [*comparison.modulus_warnings, *comparison.findings],
+        "warnings": [*comparison.input_warnings, *comparison.findings],
     }
 
 
