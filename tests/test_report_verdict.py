@@ -134,3 +134,25 @@ def test_failing_start_up_fails_the_sheet(runner, scenes, tmp_path):
     assert runner.invoke(app, ["report", str(scene), "-o", str(out)]).exit_code == 1
     text = out.read_text(encoding="utf-8")
     assert "Overall verdict: FAIL (runup)" in text and "Start-up and run-down" in text
+
+
+def test_a_check_without_a_row_reader_gets_its_reason_as_the_item():
+    """A new kind's check (no row reader here) is one row: its reason in the item column (the
+    page's free width), no value or limit; a long reason in the value column squeezed the table."""
+    from foundation_calc.checks.batch import CheckRun
+    from foundation_calc.output.display_units import DisplayUnits
+    from foundation_calc.output.report.verdict import checks_section
+
+    run = CheckRun("new check", "warn", ("a reason of some length ", ("amplitude", 1e-3)))
+    (table, _) = checks_section([run], {"new check": {}}, None, DisplayUnits(amplitude="mm")).blocks
+    assert table.rows == (("new check", "a reason of some length 1 mm", "-", "-", "-", "WARN", "fcalc check"),)
+
+
+def test_long_tables_may_break_across_pages():
+    """A table taller than a page must break (typst lets an unbreakable block run off the page)."""
+    from foundation_calc.output.report.model import table
+    from foundation_calc.output.report.pdf import _table
+
+    short = table("", ("a", "b"), [("x", "1")] * 3)
+    wordy = table("", ("a", "b"), [("word " * 100, "1")] * 4)
+    assert "breakable: false" in _table(short) and "breakable: true" in _table(wordy)
