@@ -69,10 +69,49 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+class ClosedStream:
+    """Stands for a standard stream that was closed before fcalc started (``fcalc ... >&-``):
+    writing to it is a closed pipe (exit 141, as for ``fcalc ... | head``), never a crash."""
+
+    encoding = "utf-8"
+    errors = "backslashreplace"
+
+    def write(self, text: str) -> int:
+        raise BrokenPipeError(9, "the stream was closed before fcalc started")
+
+    def flush(self) -> None:
+        """Nothing is buffered, so nothing is lost."""
+
+    def isatty(self) -> bool:
+        return False
+
+    def fileno(self) -> int:
+        import io
+
+        raise io.UnsupportedOperation("closed stream")
+
+
+def prepare_streams() -> None:
+    """Make stdout and stderr safe to write whatever a scene holds: a character the terminal's
+    encoding lacks (a file name in another encoding, µ on an ASCII terminal) is written as a
+    backslash escape, and a stream closed before the start is a :class:`ClosedStream`."""
+    for name in ("stdout", "stderr"):
+        stream = getattr(sys, name)
+        if stream is None:
+            setattr(sys, name, ClosedStream())
+            continue
+        try:
+            stream.reconfigure(errors="backslashreplace")
+        except (AttributeError, ValueError):  # not a text file of the io module (embedding)
+            pass
+
+
 def main() -> None:
     """Console-script entry point: only the module of the command asked for is imported, with one
-    linear-algebra thread (:data:`BLAS_THREAD_VARIABLES`) unless the environment says otherwise."""
+    linear-algebra thread (:data:`BLAS_THREAD_VARIABLES`) unless the environment says otherwise,
+    on streams that take any text (:func:`prepare_streams`)."""
     for variable in BLAS_THREAD_VARIABLES:
         os.environ.setdefault(variable, "1")
+    prepare_streams()
     command = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
     build_app((command,) if command in COMMANDS else tuple(COMMANDS))()

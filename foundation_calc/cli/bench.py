@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors
 
 
@@ -23,7 +24,7 @@ class Section(str, Enum):
 
 ScenesArg = Annotated[
     Optional[list[Path]],
-    typer.Argument(help="Scene files (TOML). Default: every crank_foundation and platform file in ./configs.", show_default=False),
+    scene_argument("Scene files (TOML). Default: every crank_foundation and platform file in ./configs."),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
 PlotOpt = Annotated[

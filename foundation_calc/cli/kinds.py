@@ -1,8 +1,8 @@
-"""The KIND argument shared by ``fcalc init`` and ``fcalc schema``."""
+"""Arguments shared by commands: KIND (``fcalc init``, ``fcalc schema``) and scene files."""
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -21,3 +21,9 @@ KindArg = Annotated[
         metavar="KIND", help=f"Scene kind: {', '.join(KINDS)}.", callback=_known_kind, show_default=False
     ),
 ]
+
+
+def scene_argument(help: str, metavar: str = "SCENE") -> Any:
+    """A typer argument naming scene files. fcalc reads them itself, so an unreadable file is an
+    invalid scene (exit 3, with the reason), not a usage error of typer's (exit 2)."""
+    return typer.Argument(metavar=metavar, help=help, show_default=False, readable=False)

@@ -76,11 +76,34 @@ def verdict_text(outcome: str, strict: bool = False) -> str:
     return f"[{OUTCOME_STYLE[outcome]}]{outcome.upper()}[/]"
 
 
-def print_json(document: dict) -> None:
-    """Write one JSON document to stdout. NaN or inf in it is a bug, so it raises."""
-    import json
+def json_text(value) -> str:
+    """``value`` as JSON text (indent 2): characters as they are when stdout is Unicode, escaped
+    (``\\u00e9``) when it is not, so the text always reaches the reader whole.
 
-    print(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
+    Raises
+    ------
+    NonFiniteError
+        when a number in ``value`` is NaN or infinite (JSON has none), naming its path.
+    """
+    import json
+    import sys
+
+    from foundation_calc.errors import NonFiniteError
+
+    encoding = (getattr(sys.stdout, "encoding", None) or "").lower().replace("-", "").replace("_", "")
+    try:
+        return json.dumps(value, indent=2, ensure_ascii=not encoding.startswith("utf"), allow_nan=False)
+    except ValueError:
+        found = NonFiniteError.find(value)
+        if found is None:
+            raise
+        raise found from None
+
+
+def print_json(document: dict) -> None:
+    """Write one JSON document to stdout (:func:`json_text`)."""
+    text = json_text(document)  # whole before a byte is written: a refused document leaves no half
+    print(text)
 
 
 def fmt(value: float, digits: int = 5) -> str:
