@@ -11,4 +11,11 @@ Layout, in the direction the dependencies point:
 - :mod:`foundation_calc.cli`     -- the ``fcalc`` command (typer), mapping errors to exit codes.
 """
 
-__version__ = "0.1.0"
+
+def __getattr__(name: str):
+    """``__version__`` is found on first use (:mod:`foundation_calc.version`): it may read git."""
+    if name == "__version__":
+        from foundation_calc.version import version
+
+        return version()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

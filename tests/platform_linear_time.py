@@ -41,13 +41,17 @@ class _Rotors:
         self.m = np.array([r.m for r in rotors])
         self.rho = np.array([r.rho for r in rotors], dtype=float)
 
-    def paths(self, t):
-        """S, L, L', L'' of every rotor at time t, shapes (R, 3)."""
-        phi = self.omega * t + self.phi0
+    def paths(self, t, clock=None):
+        """S, L, L', L'' of every rotor at time t, shapes (R, 3). Rotor j turns by ω_j τ(t) + φ_j0:
+        τ = t at constant speed; ``clock(t)`` gives (τ, τ', τ'') of a speed ramp, whose angular
+        acceleration ω_j τ'' adds the tangential term ω_j τ'' dL/dφ to L''."""
+        tau, rate, accel = (t, 1.0, 0.0) if clock is None else clock(t)
+        phi = self.omega * tau + self.phi0
         c, s = np.cos(phi)[:, None], np.sin(phi)[:, None]
         L = self.l * (self.t1 * c + self.t2 * s)
-        Ld = self.l * self.omega[:, None] * (self.t2 * c - self.t1 * s)
-        return self.rho + L, L, Ld, -(self.omega**2)[:, None] * L
+        dL = self.l * (self.t2 * c - self.t1 * s)  # dL/dφ
+        w, a = (self.omega * rate)[:, None], (self.omega * accel)[:, None]
+        return self.rho + L, L, w * dL, -(w**2) * L + a * dL
 
 
 def _hat(v) -> np.ndarray:
@@ -67,10 +71,10 @@ def static_equilibrium(platform, rotors) -> np.ndarray:
     return np.linalg.solve(springs(platform), load)
 
 
-def equations(platform, rotors: _Rotors, t):
-    """M, G, K_rot, F at time t; K = K_springs + tilt + K_rot."""
+def equations(platform, rotors: _Rotors, t, clock=None):
+    """M, G, K_rot, F at time t (``clock``: see :meth:`_Rotors.paths`); K = K_springs + tilt + K_rot."""
     g, m, I = platform.g, rotors.m, np.eye(3)
-    S, L, Ld, Ldd = rotors.paths(t)
+    S, L, Ld, Ldd = rotors.paths(t, clock)
     mS, mL = S.T * m, m @ L  # Σ m S (columns), Σ m L
     S_tot = platform.M * np.asarray(platform.r_c, dtype=float) + mS.sum(axis=1)
     M = np.zeros((6, 6))

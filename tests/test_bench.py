@@ -194,3 +194,16 @@ def test_platform_truncation_rows_bound_their_error():
     doc = bench_document([], [], None, None, (rows, checks))["platform_harmonic_balance"]
     assert [o["exciters"] for o in doc["orders"]] == [r.exciters for r in rows]
     assert doc["whole_check"][0]["ratio_to_one_exciter"] == 1.0
+
+
+def test_a_scene_a_section_cannot_use_is_skipped_and_named(runner):
+    """The shipped loads-only compressor has no mechanism for the amplitude methods: the bench
+    leaves it out of those sections, says so, and goes on (it exited 3 on the default scenes)."""
+    loads_only = CONFIGS / "compressor_vendor_loads.toml"
+    args = ["bench", str(loads_only), "--quick", "--skip", "harmonic_balance", "--skip", "runup", "--skip", "batch"]
+    result = runner.invoke(app, [*args, "--json"])
+    assert result.exit_code == 0, result.output
+    (entry,) = json.loads(result.stdout)["skipped_scenes"]
+    assert entry["scene"].endswith("compressor_vendor_loads.toml") and "mechanism" in entry["reason"]
+    result = runner.invoke(app, args, env={"COLUMNS": "200"})
+    assert result.exit_code == 0 and "skipped" in result.stdout and "compressor_vendor_loads" in result.stdout

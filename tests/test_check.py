@@ -126,9 +126,10 @@ def test_strict_makes_warnings_fail_like_the_single_commands(runner, quick_check
     assert _invoke(runner, platform).exit_code == 0
     assert _invoke(runner, platform, "--strict").exit_code == 1
     assert runner.invoke(app, ["platform", str(platform), "--strict"]).exit_code == 1
-    scene = read_toml(CONFIGS / "frame_saw.toml")
-    scene["mechanism"]["speed_rpm"] = 440  # extra resonances only: 4ω = k0 11 %, 2ω = p1 18.9 % away
-    crank = tmp_path / "frame_saw_440rpm.toml"
+    scene = read_toml(CONFIGS / "compressor_vendor_loads.toml")
+    scene["loads"] = [load for load in scene["loads"] if load["order"] == 2]
+    scene["operation"]["speed_rpm"] = 900  # ω 10 % below p2, no load of order 1: a warning only
+    crank = tmp_path / "loads_900rpm.toml"
     crank.write_text(tomli_w.dumps(scene))
     assert runner.invoke(app, ["resonance", str(crank)]).exit_code == 0
     assert runner.invoke(app, ["resonance", str(crank), "--strict"]).exit_code == 1

@@ -14,7 +14,6 @@ from tests.conftest import configs_of_kind
 EXPECTED_EXIT = {
     "compressor_near_resonance.toml": 1,
     "compressor_damped_near_resonance.toml": 1,
-    "frame_saw_extra_resonance.toml": 1,
 }
 
 

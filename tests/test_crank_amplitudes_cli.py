@@ -11,7 +11,7 @@ import tomli_w
 from typer.testing import CliRunner
 
 from foundation_calc.cli.app import app
-from tests.conftest import mechanism_configs
+from tests.conftest import ROOT, mechanism_configs
 
 CONFIGS = mechanism_configs()  # a machine given by its loads only: tests/test_crank_loads.py
 
@@ -136,3 +136,21 @@ def test_units_convert_the_tables_but_not_the_json(runner):
     assert '"amplitude": 0.00015' in js.stdout or "0.00015" in js.stdout
     bad = runner.invoke(app, ["amplitudes", "configs/vertical_compressor.toml", "--units", "furlong"])
     assert bad.exit_code == 2
+
+
+def test_exact_solution_at_the_harmonic_cap_is_given_with_its_error_estimate(runner, tmp_path, monkeypatch):
+    """A rod barely longer than the crank (λ = 0.999) needs more harmonics than the cap: the
+    solution at the cap is shown with its change from half the harmonics, not refused (exit 3).
+    The cap is lowered to 32 here so that the test stays cheap; the shipped cap is 256."""
+    import foundation_calc.solvers.crank.exact as exact
+    from foundation_calc.cli.app import app
+
+    monkeypatch.setattr(exact, "MAX_HARMONICS", 32)
+    text = (ROOT / "configs" / "frame_saw.toml").read_text()
+    scene = tmp_path / "short_rod.toml"
+    scene.write_text(text.replace("rod_length = 1.2", "rod_length = 0.3003").replace("rod_cog_to_crank_pin = 1.0", "rod_cog_to_crank_pin = 0.15"))
+    result = runner.invoke(app, ["amplitudes", str(scene), "--exact", "--json"])
+    assert result.exit_code in (0, 1), result.output
+    solver = json.loads(result.stdout)["exact_solver"]
+    assert solver["harmonics"] == 32 and not solver["converged"] and solver["harmonic_change"] > 1e-10
+    assert "λ = r/l = 0.999" in solver["note"] and "32 harmonics (the cap)" in solver["note"]

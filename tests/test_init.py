@@ -70,7 +70,7 @@ def test_crank_template_names_symbols_units_and_ranges():
         "speed_rpm = 250.0",
         "# omega = 26.179939",  # the alternatives, commented out, with the same speed
         "# frequency_hz = 4.166667",
-        "allowed > 0 and < 1",
+        "each band > 0 and < 1",  # [limits] detuning: one band or a band per order
     ):
         assert fragment in text
 

@@ -124,11 +124,12 @@ def test_units_rpm_converts_every_speed_column(runner):
     assert "rpm, averaged inertia" in header
 
 
-def test_nearest_resonances_are_named_alike_by_every_method(runner):
-    """Both closed forms name a resonance as n·ω = mode (k0, p1, p2), not one by its frequency."""
-    lines = runner.invoke(app, ["amplitudes", str(CONFIGS / "frame_saw.toml")]).stdout.splitlines()[1:3]
-    assert "nearest resonance 3ω = p1" in lines[0]
-    assert "nearest resonance 6ω = k0 (166.091 rad/s" in lines[1]
+def test_the_methods_name_one_resonance_the_rules(runner):
+    """The closed forms no longer name their own nearest resonance (3ω = p1 against 6ω = k0): the
+    header names the governing condition of the resonance rule, as `fcalc resonance` does."""
+    lines = runner.invoke(app, ["amplitudes", str(CONFIGS / "frame_saw.toml")], env={"COLUMNS": "300"}).stdout.splitlines()[1:4]
+    assert not any("nearest resonance" in line for line in lines)
+    assert "resonance rule (as fcalc resonance): governing resonance 3ω = p1 at 30.9% (needs 20%)" in lines[2]
 
 
 def test_a_number_too_long_to_read_is_an_invalid_scene_naming_its_line(runner, tmp_path):

@@ -48,8 +48,10 @@ def test_speeds_near_every_resonance(frame_saw, condition, critical):
     omegas = getattr(crit, critical) * (1.0 + OFFSETS)
     report = sweep(design, "omega", omegas, None, 0.2)
     _check_sweep(report)
-    assert np.all(report.margin <= np.abs(OFFSETS) * (1 + 1e-6) + 1e-15)
-    expected = {"paper": {"fail", "resonant"}, "extra": {"warn", "fail", "resonant"}}[condition.source]
+    if condition.source == "paper":  # judged: it governs this close (an extra one may be information)
+        assert np.all(report.margin <= np.abs(OFFSETS) * (1 + 1e-6) + 1e-15)
+    # an extra condition decides only when its forcing share reaches 1 % (README, "The resonance rule")
+    expected = {"paper": {"fail", "resonant"}, "extra": {"pass", "warn", "fail", "resonant"}}[condition.source]
     assert set(report.status) <= expected
     if condition.source == "paper" and critical == "zero_order":
         # the first approximation's own denominators vanish here: no periodic solution
@@ -70,7 +72,7 @@ def test_cli_sweep_through_a_resonance_reports_it(runner, tmp_path, frame_saw):
         assert _finite(doc)
         middle = doc["points"][len(doc["points"]) // 2]
         assert middle["resonant"] and middle["x_peak"] is None and middle["status"] == "resonant"
-        assert middle["margin"] < 1e-12 and middle["nearest_condition"] == "ω = p1"
+        assert middle["margin"] < 1e-12 and middle["governing_condition"] == "ω = p1"
         table = runner.invoke(app, ["sweep", str(path), "--speed", spec])
         assert table.exit_code == 0 and "resonant" in table.stdout
 

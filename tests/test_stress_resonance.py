@@ -44,7 +44,10 @@ def test_speed_near_every_resonance(frame_saw, condition, offset):
     row = next(r for r in report.rows if r.condition == condition)
     assert math.isfinite(row.margin)
     assert row.margin <= abs(offset) * (1 + 1e-6) + 1e-15
-    assert row.outcome.value == "fail"  # within 5 % of any resonance: fails whatever the mode
+    # within 5 % a judged condition fails (the paper's, or an extra one whose forcing share reaches
+    # 1 %); an extra one without forcing is information (README, "The resonance rule")
+    assert row.outcome.value == ("fail" if row.judged else "pass")
+    assert row.judged or (row.condition.source == "extra" and row.information)
 
 
 magnitudes = st.floats(-3.0, 3.0)  # decades around the frame saw's values

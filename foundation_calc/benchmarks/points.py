@@ -3,21 +3,20 @@
 For a crank scene, copies with ``count`` points spread over the foundation's section are written to
 a temporary folder, and ``fcalc amplitudes --json``, ``fcalc amplitudes`` (tables) and
 ``fcalc check`` are run on each, interleaved, several times. Each row gives the median wall time,
-the largest resident memory of the process (``wait4``'s ``ru_maxrss``) and both as a ratio to the
-fewest points, measured in the same run.
+the process's own peak resident memory (:func:`~foundation_calc.benchmarks.processes.run_process`)
+and both as a ratio to the fewest points, measured in the same run.
 """
 
 from __future__ import annotations
 
 import math
-import os
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from dataclasses import dataclass
 from pathlib import Path
+
+from foundation_calc.benchmarks.processes import run_process
 
 #: Points per scene, the first one the base of the ratios.
 POINT_COUNTS = (10, 1_000, 15_000)
@@ -52,15 +51,11 @@ def scene_with_points(text: str, count: int, size: float, height: float) -> str:
 
 
 def _run(args: tuple[str, ...]) -> tuple[float, int]:
-    """Wall time [s] and largest resident memory [bytes] of one process."""
-    start = time.perf_counter()
-    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _, status, usage = os.wait4(process.pid, 0)
-    seconds = time.perf_counter() - start
-    process.returncode = os.waitstatus_to_exitcode(status)
-    if process.returncode not in (0, 1):
-        raise RuntimeError(f"{' '.join(args[2:])} exited {process.returncode}")
-    return seconds, usage.ru_maxrss * 1024  # Linux reports kilobytes
+    """Wall time [s] and own peak resident memory [bytes] of one process."""
+    run = run_process(args)
+    if run.returncode not in (0, 1):
+        raise RuntimeError(f"{' '.join(args[2:])} exited {run.returncode}")
+    return run.seconds, run.peak_bytes
 
 
 def points_scaling(scene: str, runs: int = 3, counts: tuple[int, ...] = POINT_COUNTS) -> list[PointsRow]:

@@ -73,13 +73,17 @@ class SceneRun:
 def scene_files(paths: Iterable[str | Path]) -> dict[Path, bool]:
     """The scene files named by ``paths``, each with whether it was found by a folder search.
 
-    Files are taken as given and folders searched for ``*.toml``; files found in folders are
+    Files are taken as given and folders searched for ``*.toml`` (but ``fcalc.toml``, the office
+    defaults, which is no scene); files found in folders are
     sorted so reports are stable; a path that does not exist is kept, so that it is reported as a
     scene that cannot be read.
     """
+    from foundation_calc.scenes.project import OFFICE_FILE
+
     found: dict[Path, bool] = {}
     for path in map(Path, paths):
-        for file in sorted(path.rglob("*.toml")) if path.is_dir() else [path]:
+        searched = (f for f in sorted(path.rglob("*.toml")) if f.name != OFFICE_FILE)  # office defaults, no scene
+        for file in searched if path.is_dir() else [path]:
             found[file] = found.get(file, True) and path.is_dir()
     return found
 
@@ -127,6 +131,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     """
     from foundation_calc.scenes import parse_scene, read_toml
     from foundation_calc.scenes.loading import is_scene
+    from foundation_calc.scenes.project import with_office_defaults
 
     source = str(path)
     if skip_non_scenes and _not_regular(path):
@@ -135,11 +140,21 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
         document = read_toml(path)
         if skip_non_scenes and not is_scene(document):
             return SceneRun(source, "", "", (), skipped=True, skip_note="TOML without a kind or a scene table, not a scene")
-        scene = parse_scene(document, source)
+        scene = parse_scene(with_office_defaults(document, path), source)
     except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise
         return SceneRun(source, "", "", (_error_run("load", exc),))
+    return SceneRun(source, scene.kind, scene.name, run_checks(scene), scene, warnings=tuple(scene.plausibility_warnings()))
+
+
+def run_checks(scene) -> tuple[CheckRun, ...]:
+    """Every check of :data:`~foundation_calc.checks.registry.CHECKS` for the kind of the validated
+    ``scene``, in the registry's order; a check that judges nothing in the scene is left out, and
+    one that raises is recorded as ``invalid`` or ``internal`` (see the module docstring).
+
+    ``fcalc check`` and the calculation sheet (``fcalc report``) both call this, so they judge
+    the same rows."""
     runs = []
     for name, check in CHECKS[scene.kind].items():
         try:
@@ -154,7 +169,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
             continue
         f = finding
         runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details))
-    return SceneRun(source, scene.kind, scene.name, tuple(runs), scene, warnings=tuple(scene.plausibility_warnings()))
+    return tuple(runs)
 
 
 def run_scenes(paths: Iterable[str | Path], jobs: int = 1) -> list[SceneRun]:

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from foundation_calc.checks.outcomes import Outcome
+
 #: Zone names in order of severity.
 ZONES = ("A", "B", "C", "D")
 
@@ -89,6 +91,19 @@ def zone(velocity_rms: float, table: ZoneTable) -> str:
     return ZONES[sum(velocity_rms > b for b in table.boundaries)]
 
 
+def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
+    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
+
+    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
+    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
+    """
+    i = ZONES.index(zone_name)
+    if acceptable is None:
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
+    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+
+
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
     """Why the code may not apply to this machine: speed outside its range, power unknown or
     outside the group's range. Empty when it applies."""
@@ -112,4 +127,4 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone"]
+__all__ = ["CODES", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone", "zone_outcome"]

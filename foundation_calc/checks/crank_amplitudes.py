@@ -12,7 +12,8 @@ The limits are checked with the best approximation computed (exact, else average
 for the centre of mass C and every point of the scene, horizontally and vertically. With base
 dashpots every approximation is finite at and through every resonance and is judged on its
 amplitudes; an undamped speed within a hair of a resonance of the checked approximation fails as
-"resonant" with its margin.
+"resonant" with its margin. The resonance verdict itself (which condition governs, its margin)
+is the rule's (:mod:`~foundation_calc.checks.resonance_rule`), reported beside the amplitudes.
 """
 
 from __future__ import annotations
@@ -21,9 +22,14 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limit_key, limited_quantities
+from foundation_calc.checks.crank_resonance import (
+    ResonanceReport,
+    check_block_resonances,
+    check_resonances,
+    design_frequencies,
+)
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.limits import QUANTITIES, LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
@@ -43,6 +49,9 @@ from foundation_calc.solvers.crank.response import (
     superpose,
 )
 from foundation_calc.units import rpm_from_omega
+
+#: The detuning band of a check called without a scene's [limits] (the scene's default) [-].
+DEFAULT_DETUNING = 0.2
 
 #: Harmonics whose coefficients are reported and compared (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("y", 3), ("y", 4), ("x", 1), ("x", 2), ("x", 3), ("theta", 1), ("theta", 2), ("theta", 3))
@@ -93,26 +102,6 @@ class Approximation:
 
 
 @dataclass(frozen=True)
-class LimitRow:
-    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
-
-    point: str
-    direction: str
-    quantity: str
-    value: float
-    limit: float
-    outcome: Outcome
-
-    @property
-    def ratio(self) -> float:
-        return self.value / self.limit
-
-    @property
-    def source(self) -> str:
-        return f"scene [limits] {limit_key(self.quantity)}"
-
-
-@dataclass(frozen=True)
 class CodeRow:
     """The zone of one point's RMS velocity in a code's table.
 
@@ -148,13 +137,15 @@ class CodeRow:
 
 @dataclass(frozen=True)
 class ExactInfo:
-    """How the exact solution was reached."""
+    """How the exact solution was reached; ``capped``: the solver's message when the harmonic cap
+    left ``harmonic_change`` above its tolerance (the solution is then good to about that)."""
 
     harmonics: int
     newton_iterations: int
     harmonic_change: float
     residual: float
     seconds: float
+    capped: str | None = None
 
 
 @dataclass(frozen=True)
@@ -193,6 +184,7 @@ class AmplitudeReport:
     code_rows: tuple[CodeRow, ...] = ()
     code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
+    resonance: ResonanceReport | None = None
 
     @property
     def omega(self) -> float:
@@ -331,19 +323,6 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
-    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
-    zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
-
-    >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
-    (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
-    """
-    i = ZONES.index(zone_name)
-    if acceptable is None:
-        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
-    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
-
-
 def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
     """Zone of every point's RMS velocity in the scene's code table, and why the code may not apply."""
     code = getattr(limits, "code", None)
@@ -397,12 +376,16 @@ def check_amplitudes(
     if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
 
-        from foundation_calc.solvers.crank.exact import exact_periodic_solution
+        from foundation_calc.solvers.crank.exact import HarmonicCapReached, exact_periodic_solution
 
         start = time.perf_counter()
-        sol = exact_periodic_solution(design)
+        capped = None
+        try:
+            sol = exact_periodic_solution(design)
+        except HarmonicCapReached as cap:
+            sol, capped = cap.solution, str(cap)
         seconds = time.perf_counter() - start
-        info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds)
+        info = ExactInfo(sol.harmonics, sol.newton_iterations, sol.harmonic_change, sol.residual, seconds, capped)
         averaged = approximations["averaged_operator"]
         approximations["exact"] = _approximation("exact", sol.motion, False, averaged.margin, averaged.nearest, points, loads)
         checked = "exact"
@@ -411,6 +394,11 @@ def check_amplitudes(
             for key in ("first_approximation", "averaged_operator")
         }
     code_rows, code_warnings = _code_rows(approximations[checked], limits, omega)
+    detuning = getattr(limits, "detuning", DEFAULT_DETUNING)
+    if design is None:
+        resonance = check_block_resonances(vendor.block, vendor.omega, vendor.loads, detuning)
+    else:
+        resonance = check_resonances(design, detuning, None if vendor is None else vendor.loads)
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -422,6 +410,7 @@ def check_amplitudes(
         code_rows=code_rows,
         code_warnings=code_warnings,
         vendor=vendor,
+        resonance=resonance,
     )
 
 

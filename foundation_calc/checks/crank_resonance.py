@@ -3,16 +3,28 @@
 Each condition n·ω = p of :data:`~foundation_calc.solvers.crank.resonance.CONDITIONS` has two
 estimates of its critical speed: from the paper's zero-order operator and from the operator with
 the mechanism's time-averaged inertia. The margin is measured to the nearer of the two, so the
-verdict holds whichever estimate is used. The verdict follows the rule shared by every scene kind
-(:func:`~foundation_calc.checks.outcomes.resonance_outcome`): a paper condition (the mechanism
-drives it at first order) fails inside the band; an extra one warns there and fails within 5 %.
+verdict holds whichever estimate is used. Which conditions are judged and how is the rule shared
+by every scene kind (:mod:`~foundation_calc.checks.resonance_rule`): the paper's six, and every
+other harmonic n ω = k0, p1, p2 of the machine's forcing whose forcing share reaches 1 %.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
-from foundation_calc.checks.outcomes import Outcome, resonance_outcome, worst
+import numpy as np
+
+from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
+from foundation_calc.checks.resonance_rule import (
+    FORCING_SHARE,
+    INFORMATION,
+    WARN,
+    condition_phrase,
+    judge,
+    required_detuning,
+)
+from foundation_calc.checks.resonance_rule import outcome as rule_outcome
 from foundation_calc.solvers.crank.frequencies import (
     NaturalFrequencies,
     averaged_inertia_frequencies,
@@ -30,14 +42,42 @@ from foundation_calc.solvers.crank.resonance import (
 
 @dataclass(frozen=True)
 class ResonanceRow:
-    """One resonance condition checked at the operating speed (speeds in rad/s)."""
+    """One resonance condition checked at the operating speed (speeds in rad/s).
+
+    ``share``: the forcing share of the condition's harmonic on its mode [-]; ``judged``: it can
+    fail the design; ``status``: code of :mod:`~foundation_calc.checks.resonance_rule`;
+    ``required``: the detuning band of its order [-] (0: the order has none).
+    """
 
     condition: ResonanceCondition
     critical_zero_order: float
     critical_averaged: float
     margin: float
     required: float
-    outcome: Outcome
+    share: float
+    judged: bool
+    status: int
+
+    @property
+    def outcome(self) -> Outcome:
+        return rule_outcome(self.status)
+
+    @property
+    def information(self) -> bool:
+        """Not judged, inside its band: listed, never the verdict."""
+        return self.status == INFORMATION
+
+    @property
+    def needed(self) -> float:
+        """The margin this condition needs [-]: its band, at least the 5 % every judged one needs."""
+        return max(self.required, RESONANCE_FAIL_MARGIN)
+
+    @property
+    def phrase(self) -> str:
+        """``"3ω = p1 at 30.9% (needs 20%)"``; information rows add their forcing share."""
+        if self.information:
+            return f"{self.condition.label} at {self.margin:.1%} (forcing share {self.share:.2g} < {FORCING_SHARE:.0%}: not judged)"
+        return condition_phrase(self.condition.label, self.margin, self.needed)
 
 
 @dataclass(frozen=True)
@@ -45,7 +85,11 @@ class ResonanceReport:
     """Natural frequencies of a design and its resonance rows.
 
     ``design`` is None for a machine given by its loads only; ``averaged`` is then the same as
-    ``zero_order`` (there is no mechanism whose inertia could be averaged).
+    ``zero_order`` (there is no mechanism whose inertia could be averaged). ``rows``: the
+    conditions shown (the paper's and the extra ones, the loads' orders, every other judged
+    condition and the nearest conditions listed as information); ``governing``: the condition
+    that governs the verdict (:mod:`~foundation_calc.checks.resonance_rule`); ``detuning``: the
+    scene's ``[limits] detuning`` (a band, or a band per order).
     """
 
     design: CrankDesign | None
@@ -54,15 +98,31 @@ class ResonanceReport:
     stability_margin: float
     rows: tuple[ResonanceRow, ...]
     omega: float
+    governing: ResonanceRow | None = None
+    detuning: float | Mapping[int, float] = 0.2
+    conditions_checked: int = 0
 
     @property
     def outcome(self) -> Outcome:
         return worst(row.outcome for row in self.rows)
 
     @property
-    def nearest(self) -> ResonanceRow:
-        """The row with the smallest margin."""
-        return min(self.rows, key=lambda row: row.margin)
+    def information(self) -> tuple[ResonanceRow, ...]:
+        """Near conditions whose forcing does not matter: listed, not the verdict."""
+        return tuple(row for row in self.rows if row.information)
+
+    @property
+    def statement(self) -> str:
+        """The verdict of the rule in words, the same in every command: the governing condition
+        and its margin, then the other failing or warning conditions."""
+        g = self.governing
+        if g is None:
+            return "no resonance condition to judge"
+        if g.status < WARN:
+            return f"governing resonance {g.phrase}"
+        others = [row.phrase for row in self.rows if row.status == g.status and row is not g]
+        word = "inside the band" if g.margin < g.required else "within 5%"
+        return f"{word} of {g.phrase}" + (f"; also {', '.join(others)}" if others else "")
 
 
 def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
@@ -87,63 +147,134 @@ def paper_margin(design: CrankDesign):
     return smallest
 
 
-def _row(omega, zero, averaged, cond: ResonanceCondition, detuning: float) -> ResonanceRow:
-    w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
-    w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
-    margin = condition_margin(omega, zero, averaged, cond)
-    outcome = resonance_outcome(margin, detuning, driven=cond.source == "paper" or cond.driven)
-    return ResonanceRow(cond, w0, w1, margin, detuning, outcome)
+#: Conditions listed as information beside the judged ones (the nearest first).
+SHOWN_INFORMATION = 3
+
+_MODES = ("k0", "p1", "p2")
 
 
-def check_resonances(design: CrankDesign, detuning: float, loads=None) -> ResonanceReport:
-    """Natural frequencies of ``design`` and the margin of its speed from every resonance; with
-    ``loads`` (:class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`) also from n ω of
-    every order n of the loads (:func:`load_resonance_conditions`)."""
+def _label(n: int, mode: str) -> str:
+    return f"{n if n > 1 else ''}ω = {mode}"
+
+
+def _mode_order(M, shapes) -> list[int]:
+    """Columns of ``shapes`` (ascending frequencies) in the order k0, p1, p2: k0 is the mode whose
+    motion is most vertical (largest share of its kinetic energy in y), p1 and p2 the others."""
+    vertical = shapes[1] ** 2 * M[1, 1]
+    k0 = int(np.argmax(vertical))
+    return [k0, *(j for j in range(3) if j != k0)]
+
+
+def machine_conditions(design: CrankDesign | None, loads=None, block=None) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
+    """Every condition n ω = k0, p1, p2 of the machine's forcing and its forcing share [-].
+
+    The mechanism's harmonics 1 ... :data:`~foundation_calc.solvers.crank.averaged.FORCING_HARMONICS`
+    come from its exact forcing on the averaged operator; the loads' orders (and order 1, the
+    speed itself) from ``loads`` on the averaged operator, or on ``block`` for a machine given by
+    its loads only. A harmonic of both adds the two forces (their phases included).
+    """
+    from foundation_calc.solvers.crank.averaged import averaged_operator
+    from foundation_calc.solvers.crank.loads import matrices
+    from foundation_calc.solvers.numerics.modal_forcing import modal_forcing_weights
+
+    forces: dict[int, np.ndarray] = {1: np.zeros(3, dtype=complex)}
+    if design is not None:
+        M, _, K, fc, fs = averaged_operator(design)
+        for n, force in enumerate((fc - 1j * fs).T[1:], start=1):
+            forces[n] = force
+    else:
+        M, K, _ = matrices(block)
+    load_orders = set()
+    if loads is not None:
+        generalized = loads.generalized()
+        for n in sorted({int(k) for k in loads.order}):
+            load_orders.add(n)
+            forces[n] = forces.get(n, 0.0) + generalized[np.asarray(loads.order) == n].sum(axis=0)
+    orders = sorted(forces)
+    _, shapes, weights = modal_forcing_weights(M, K, np.array([forces[n] for n in orders]))
+    weights = weights[:, _mode_order(M, shapes)]
+    largest = weights.max()
+    shares = weights / largest if largest > 0.0 else np.zeros_like(weights)
+    known = {(c.harmonic, c.mode): c for c in CONDITIONS} if design is not None else {}
+    conditions, share = [], []
+    for i, n in enumerate(orders):
+        for j, mode in enumerate(_MODES):
+            condition = known.get((n, mode))
+            if condition is None:
+                source = "loads" if n in load_orders else "harmonic" if design is not None else "speed"
+                excitation = {
+                    "loads": f"loads of order {n}",
+                    "harmonic": f"harmonic {n} of the mechanism's forcing",
+                    "speed": "the speed itself (no load of order 1)",
+                }[source]
+                condition = ResonanceCondition(_label(n, mode), n, mode, source, excitation)
+            conditions.append(condition)
+            share.append(float(shares[i, j]))
+    return tuple(conditions), np.array(share)
+
+
+def judge_conditions(omega, zero, averaged, conditions, share, detuning):
+    """The rule (:func:`~foundation_calc.checks.resonance_rule.judge`) on ``conditions`` at the
+    speeds ``omega`` [rad/s] (a scalar or an array (S,)): margins (..., C), judgement, bands."""
+    margins = np.stack(
+        np.broadcast_arrays(*(np.asarray(condition_margin(omega, zero, averaged, c), dtype=float) for c in conditions)),
+        axis=-1,
+    )
+    orders = np.array([c.harmonic for c in conditions])
+    required = required_detuning(detuning, orders)
+    source = np.array([c.source == "paper" for c in conditions])
+    return margins, judge(margins, orders, share, required, source), required
+
+
+def _report(design, zero, averaged, stability, omega, conditions, share, detuning) -> ResonanceReport:
+    margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
+    rows = []
+    for i, cond in enumerate(conditions):
+        w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
+        w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
+        rows.append(ResonanceRow(cond, float(w0), float(w1), float(margins[i]), float(required[i]), float(share[i]),
+                                 bool(verdict.judged[i]), int(verdict.status[i])))
+    governing = rows[int(verdict.governing)] if int(verdict.governing) >= 0 else None
+    information = sorted((row for row in rows if row.information and row.condition.source == "harmonic"), key=lambda r: r.margin)
+    listed = {id(row) for row in information[:SHOWN_INFORMATION]}
+    shown = tuple(
+        row for row in rows
+        if row.condition.source != "harmonic" or row.judged or row.status > INFORMATION or id(row) in listed
+    )
+    return ResonanceReport(
+        design=design, zero_order=zero, averaged=averaged, stability_margin=stability, rows=shown, omega=omega,
+        governing=governing, detuning=detuning, conditions_checked=len(rows),
+    )
+
+
+def check_resonances(design: CrankDesign, detuning, loads=None) -> ResonanceReport:
+    """Natural frequencies of ``design`` and every resonance condition of its forcing (and of
+    ``loads``, :class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`), judged by the rule
+    (:mod:`~foundation_calc.checks.resonance_rule`). ``detuning``: a band [-] or order -> band."""
     d = design
     zero, averaged = design_frequencies(design)
-    conditions = CONDITIONS + (() if loads is None else load_resonance_conditions(loads))
-    return ResonanceReport(
-        design=design,
-        zero_order=zero,
-        averaged=averaged,
-        stability_margin=rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h),
-        rows=tuple(_row(d.omega, zero, averaged, cond, detuning) for cond in conditions),
-        omega=d.omega,
-    )
+    stability = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h)
+    conditions, share = machine_conditions(design, loads)
+    return _report(design, zero, averaged, stability, d.omega, conditions, share, detuning)
 
 
-#: What drives a mode, for the rows of the loads.
-_LOAD_EXCITATION = {"k0": "vertical force", "p1": "horizontal force or moment about C", "p2": "horizontal force or moment about C"}
-
-
-def load_resonance_conditions(loads) -> tuple[ResonanceCondition, ...]:
-    """n ω = k0, p1, p2 for every order n of the loads; driven where a load of order n has a
-    component that drives the mode (:func:`~foundation_calc.solvers.crank.loads.load_conditions`)."""
-    from foundation_calc.solvers.crank.loads import load_conditions
-
-    return tuple(
-        ResonanceCondition(
-            f"{n if n > 1 else ''}ω = {mode}", n, mode, "loads",
-            f"loads of order {n}: {_LOAD_EXCITATION[mode]}" + ("" if driven else " (none given)"), driven,
-        )
-        for n, mode, driven in load_conditions(loads)
-    )
-
-
-def check_block_resonances(block, omega: float, loads, detuning: float) -> ResonanceReport:
-    """Resonances of a machine given by its loads only: n ω of every order n of ``loads``
-    against the natural frequencies of the block (``RigidBlock``) at the speed ``omega`` [rad/s]."""
+def check_block_resonances(block, omega: float, loads, detuning) -> ResonanceReport:
+    """Resonances of a machine given by its loads only: n ω of every order n of ``loads`` (and
+    ω itself) against the natural frequencies of the block (``RigidBlock``) at ``omega`` [rad/s]."""
     from foundation_calc.solvers.crank.loads import block_frequencies
 
     freqs = block_frequencies(block)
-    return ResonanceReport(
-        design=None,
-        zero_order=freqs,
-        averaged=freqs,
-        stability_margin=rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h),
-        rows=tuple(_row(omega, freqs, freqs, cond, detuning) for cond in load_resonance_conditions(loads)),
-        omega=omega,
-    )
+    stability = rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h)
+    conditions, share = machine_conditions(None, loads, block)
+    return _report(None, freqs, freqs, stability, omega, conditions, share, detuning)
+
+
+def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
+    """:func:`machine_conditions` of a ``crank_foundation`` scene (at its own speed and soil)."""
+    loads = scene.harmonic_loads()
+    if scene.mechanism is None:
+        return machine_conditions(None, loads, scene.block())
+    return machine_conditions(scene.design(), loads)
 
 
 def check_scene_resonances(scene) -> ResonanceReport:

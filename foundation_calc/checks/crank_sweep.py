@@ -14,13 +14,13 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies, load_resonance_conditions
+from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
-from foundation_calc.checks.outcomes import resonance_masks
+from foundation_calc.checks.resonance_rule import FAIL, STATUS_NAMES, WARN
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin, critical_speed
+from foundation_calc.solvers.crank.resonance import CONDITIONS, critical_speed
 from foundation_calc.solvers.crank.response import PeriodicMotion, point_series, superpose
 from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
 
@@ -39,12 +39,14 @@ HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 @dataclass(frozen=True)
 class CriticalSpeed:
-    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)."""
+    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)
+    and the detuning band of its order [-] (0: the scene gives that order none)."""
 
     label: str
     source: str
     zero_order: float
     averaged: float
+    band: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -58,8 +60,11 @@ class SweepReport:
     omega : crank speed at each point [rad/s]
     peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
     resonant : no periodic solution of the first approximation (margin < 1e-6)
-    margin : smallest relative distance from a resonance condition [-]
-    nearest : index into ``conditions`` of that one
+    margin : margin of the governing condition [-]
+    governing : index into ``conditions`` of the condition that governs each point's resonance
+        verdict (:mod:`~foundation_calc.checks.resonance_rule`); ``margin`` is its margin and
+        ``needed`` the margin it needs [-]; ``resonance_status`` the rule's verdict per point
+        (``clear``, ``information``, ``warn``, ``fail``)
     conditions : the resonance conditions checked: the mechanism's
         (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
@@ -79,7 +84,9 @@ class SweepReport:
     peaks: np.ndarray
     resonant: np.ndarray
     margin: np.ndarray
-    nearest: np.ndarray
+    governing: np.ndarray
+    needed: np.ndarray
+    resonance_status: np.ndarray
     points: dict
     over_limit: np.ndarray
     over_quantities: dict
@@ -88,7 +95,7 @@ class SweepReport:
     damped: bool
     critical: tuple[CriticalSpeed, ...]
     limits: dict
-    detuning: float
+    detuning: float | dict
     conditions: tuple = CONDITIONS
 
     @property
@@ -152,6 +159,12 @@ def _varied_block(block, variable: str, values):
                    C_x=block.C_x * r, C_z=block.C_z * r, C_phi=block.C_phi * r)
 
 
+def _critical(freqs, condition, index: int) -> float:
+    """Critical speed [rad/s] of ``condition`` from natural frequencies that may vary along the sweep
+    (soil sweeps; ``index`` picks the point: 0 the first, -1 the last)."""
+    return float(np.ravel(critical_speed(getattr(freqs, condition.mode), condition.harmonic))[index])
+
+
 def sweep(
     design: CrankDesign | None, variable: str, values, limits, detuning: float, points=(), vendor=None
 ) -> SweepReport:
@@ -173,7 +186,8 @@ def sweep(
     if variable not in VARIABLES:
         raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
     values = np.asarray(values, dtype=float)
-    conditions, margins, drivens, criticals = [], [], [], []
+    loads = None if vendor is None else vendor.loads
+    conditions, share = machine_conditions(design, loads, None if vendor is None else vendor.block)
     motion = resonant = None
     if design is not None:
         batch = varied(design, **{variable: values})
@@ -181,44 +195,40 @@ def sweep(
         resonant = np.asarray(resonant, dtype=bool)
         zero, averaged = design_frequencies(batch)
         omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
-        conditions += CONDITIONS
-        margins += [np.broadcast_to(condition_margin(omega, zero, averaged, c), values.shape) for c in CONDITIONS]
-        drivens += [c.source == "paper" for c in CONDITIONS]
-        criticals += [(c, zero, averaged) for c in CONDITIONS]
     if vendor is not None:
         block = _varied_block(vendor.block, variable, values)
         omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
         res = loads_response(block, omega, vendor.loads)
-        own = load_resonance_conditions(vendor.loads)
-        freqs = block_frequencies(block)
-        conditions += own
-        margins += [np.broadcast_to(condition_margin(omega, freqs, freqs, c), values.shape) for c in own]
-        drivens += [c.driven for c in own]
-        criticals += [(c, freqs, freqs) for c in own]
+        if design is None:
+            zero = averaged = block_frequencies(block)
         loads_motion = PeriodicMotion(omega, np.nan_to_num(res.motion.cos), np.nan_to_num(res.motion.sin))
         motion = loads_motion if motion is None else superpose(motion, loads_motion)
         resonant = res.resonant if resonant is None else resonant | res.resonant
     dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
-    margins = np.stack(margins)
-    nearest = np.argmin(margins, axis=0)
-    margin = np.take_along_axis(margins, nearest[None], axis=0)[0]
-    driven = np.array(drivens)[:, None]
-    fails, inside = resonance_masks(margins, detuning, driven)
-    fail, warn = fails.any(axis=0), (inside & ~fails).any(axis=0)
+    margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
+    margins = np.broadcast_to(margins, values.shape + (len(conditions),))
+    governing = np.broadcast_to(verdict.governing, values.shape)
+    rule_status = np.broadcast_to(verdict.worst, values.shape)
+    margin = np.take_along_axis(margins, np.maximum(governing, 0)[:, None], axis=-1)[:, 0]
     limited = limited_quantities(limits)
     located, over_quantities = _located(motion, omega, points, limited)
     over = np.zeros(values.shape, dtype=bool)
     for mask in over_quantities.values():
         over |= mask
-    status = np.where(resonant, "resonant", np.where(fail | over, "fail", np.where(warn, "warn", "pass")))
+    status = np.where(
+        resonant, "resonant",
+        np.where((rule_status == FAIL) | over, "fail", np.where(rule_status == WARN, "warn", "pass")),
+    )
     critical = ()
     if variable == "omega":
         lo, hi = values.min(), values.max()
+        judged = verdict.judged.reshape(-1, len(conditions))[0]
+        shown = [(c, band) for c, band, j in zip(conditions, required, judged) if j or c.source != "harmonic"]
         critical = tuple(
-            CriticalSpeed(c.label, c.source, float(w0), float(w1))
-            for c, zero, averaged in criticals
-            for w0, w1 in [(critical_speed(getattr(zero, c.mode), c.harmonic), critical_speed(getattr(averaged, c.mode), c.harmonic))]
+            CriticalSpeed(c.label, c.source, float(w0), float(w1), float(band))
+            for c, band in shown
+            for w0, w1 in [(_critical(zero, c, 0), _critical(averaged, c, -1))]
             if lo <= max(w0, w1) and min(w0, w1) <= hi
         )
     return SweepReport(
@@ -228,7 +238,9 @@ def sweep(
         peaks=peaks,
         resonant=np.asarray(resonant, dtype=bool),
         margin=margin,
-        nearest=nearest,
+        governing=governing,
+        resonance_status=np.asarray(STATUS_NAMES)[rule_status],
+        needed=np.take_along_axis(np.broadcast_to(verdict.needed, margins.shape), np.maximum(governing, 0)[:, None], axis=-1)[:, 0],
         points=located,
         over_limit=over,
         over_quantities=over_quantities,

@@ -10,6 +10,10 @@ vibration, the mean (static) part left out (keys ``amplitude_rms``, ``velocity_r
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
+from foundation_calc.checks.outcomes import Outcome
+
 #: Peak quantities a limit may bound, with the scene's ``[limits]`` key of each [m, m/s, m/s²].
 QUANTITIES = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
 
@@ -46,3 +50,23 @@ def limit_key(quantity: str) -> str:
 def exceeds(value, limit):
     """Whether a value exceeds its limit (arrays welcome): equal to the limit passes."""
     return value > limit
+
+
+@dataclass(frozen=True)
+class LimitRow:
+    """A peak or RMS value of one point, direction and quantity against its limit (SI units)."""
+
+    point: str
+    direction: str
+    quantity: str
+    value: float
+    limit: float
+    outcome: Outcome
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    @property
+    def source(self) -> str:
+        return f"scene [limits] {limit_key(self.quantity)}"

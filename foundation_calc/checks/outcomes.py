@@ -35,32 +35,29 @@ RESONANCE_FAIL_MARGIN = 0.05
 
 
 def resonance_outcome(margin: float, detuning: float, driven: bool) -> Outcome:
-    """The verdict rule of every scene kind for one resonance (README, "Verdicts").
-
-    A mode the design drives (platform: the two translations; crank foundation: the paper's
-    conditions ω = k0, 2ω = k0, ω = p1,2, 3ω = p1,2) fails inside the detuning band; any mode
-    fails within :data:`RESONANCE_FAIL_MARGIN`; any other mode inside the band warns.
-
-    Parameters
-    ----------
-    margin : relative distance of the speed from the resonance, |ω - ω_c|/ω_c [-]
-    detuning : required relative distance, the scene's ``[limits] detuning`` [-]
-    driven : whether the design's own excitation drives this mode
+    """The verdict of one condition of order 1 by the resonance rule
+    (:func:`~foundation_calc.checks.resonance_rule.judge`): a ``driven`` (judged) mode fails inside
+    the band ``detuning`` or within :data:`RESONANCE_FAIL_MARGIN`, any other fails within it and
+    warns inside the band.
 
     >>> [resonance_outcome(m, 0.2, d).value for m, d in ((0.15, True), (0.15, False), (0.04, False), (0.3, True))]
     ['fail', 'warn', 'fail', 'pass']
     """
-    fails, inside = resonance_masks(margin, detuning, driven)
-    if fails:
-        return Outcome.FAIL
-    return Outcome.WARN if inside else Outcome.PASS
+    from foundation_calc.checks.resonance_rule import judge, outcome
+
+    return outcome(judge([margin], [1], [float(driven)], [detuning], [driven]).status[0])
 
 
 def resonance_masks(margin, detuning, driven):
-    """``(fails, inside)`` of :func:`resonance_outcome` for arrays of margins (numpy bool arrays
-    for ``driven``) or scalars: a resonance fails, or warns where ``inside & ~fails``."""
-    inside = margin < detuning
-    return (margin < RESONANCE_FAIL_MARGIN) | (driven & inside), inside
+    """``(fails, inside)`` of :func:`resonance_outcome` for arrays of margins and ``driven`` flags
+    that broadcast together: a condition fails, or warns where ``inside & ~fails``."""
+    import numpy as np
+
+    from foundation_calc.checks.resonance_rule import FAIL, judge
+
+    margin, driven = np.broadcast_arrays(np.asarray(margin, dtype=float), np.asarray(driven, dtype=bool))
+    verdict = judge(margin[..., None], [1], driven[..., None].astype(float), [detuning], driven[..., None])
+    return verdict.status[..., 0] == FAIL, margin < detuning
 
 
 def exit_code(outcome: Outcome, strict: bool = False) -> ExitCode:

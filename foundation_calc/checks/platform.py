@@ -6,7 +6,7 @@ Impossible designs never get here (the design raises PhysicsError, exit 3). What
   ``limits.exciter_height_ratio`` × ζ above it (the paper's 2.6 m is "highly undesirable");
 - regime margin: FAIL when ω is within ``limits.detuning`` of the translational resonance
   sqrt(c0 / M_Σ), the mode the exciter drives (the verdict rule of
-  :func:`~foundation_calc.checks.outcomes.resonance_outcome`), with the amplitude u that restores
+  :mod:`~foundation_calc.checks.resonance_rule`), with the amplitude u that restores
   the margin (Eq. (3.14));
 - natural frequencies: the six 6-DOF modes by the same rule: a translation inside the band
   fails, any mode within 5 % fails, another mode inside the band warns;
@@ -19,7 +19,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from foundation_calc.checks.outcomes import Outcome, resonance_outcome, worst
+from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.checks.resonance_rule import judge
+from foundation_calc.checks.resonance_rule import outcome as rule_outcome
 from foundation_calc.solvers.platform.design import PlatformDesign, amplitude_for_margin
 from foundation_calc.solvers.platform.dynamics import Modes, natural_frequencies
 from foundation_calc.solvers.platform.verification import (
@@ -103,7 +105,7 @@ def _regime(d: PlatformDesign, detuning: float) -> Finding:
     p = d.translation_frequency
     side = "below" if d.sigma > 0 else "above"
     text = f"ω = {d.omega:.5g} rad/s is {d.regime_margin:.1%} {side} the translational resonance sqrt(c0/M_Σ) = {p:.5g} rad/s"
-    outcome = resonance_outcome(d.regime_margin, detuning, driven=True)
+    outcome = rule_outcome(judge([d.regime_margin], [1], [1.0], [detuning], [True]).status[0])
     brief = f"{d.regime_margin:.1%} from sqrt(c0/M_Σ) = {p:.5g} rad/s"
     if outcome is Outcome.PASS:
         return Finding("regime margin", outcome, text, brief)
@@ -118,9 +120,13 @@ def _regime(d: PlatformDesign, detuning: float) -> Finding:
 
 
 def _modes(modes: Modes, omega, detuning: float) -> Finding:
+    margins = mode_margins(modes, omega)
+    driven = [dom in DRIVEN_MODES for dom in modes.dominant]
+    count = len(driven)
+    verdict = judge(margins, [1] * count, [float(d) for d in driven], [detuning] * count, driven)
     rows = [
-        (resonance_outcome(mg, detuning, driven=dom in DRIVEN_MODES), f"{MODE_NAMES[dom]} {p:.5g} rad/s (margin {mg:.1%})")
-        for p, dom, mg in zip(modes.frequencies, modes.dominant, mode_margins(modes, omega))
+        (rule_outcome(status), f"{MODE_NAMES[dom]} {p:.5g} rad/s (margin {mg:.1%})")
+        for p, dom, mg, status in zip(modes.frequencies, modes.dominant, margins, verdict.status)
     ]
     outcome = worst(o for o, _ in rows)
     if outcome is Outcome.PASS:

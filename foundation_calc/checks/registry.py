@@ -54,19 +54,12 @@ def crank_resonance(scene) -> Finding:
     from foundation_calc.checks.crank_resonance import check_scene_resonances
 
     report = check_scene_resonances(scene)
-    near = report.nearest
     speed = ("speed", report.omega)
     values = {"speed": speed}
-    if report.outcome is Outcome.PASS:
-        values["critical"] = critical = ("speed", near.critical_zero_order)
-        reason = (
-            "speed ", speed, f" is at least {near.margin:.1%} from every resonance (nearest {near.condition.label} at ",
-            critical, f"; required {near.required:.0%})",
-        )
-    else:
-        bad = [row for row in report.rows if row.outcome is report.outcome]
-        names = ", ".join(f"{row.condition.label} (margin {row.margin:.1%})" for row in bad)
-        reason = ("speed ", speed, f" is inside the {near.required:.0%} band of {names}")
+    governing = report.governing
+    if governing is not None:
+        values["critical"] = ("speed", governing.critical_zero_order)
+    reason = ("speed ", speed, f", {report.statement}")
     return Finding("resonance", report.outcome, reason, values, report)
 
 
@@ -102,8 +95,8 @@ def crank_amplitudes(scene) -> Finding:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
-        if report.damped:
-            reason += (f" (damped response, {approx.margin:.2%} from {approx.nearest})",)
+        if report.resonance is not None:
+            reason += (f"; {report.resonance.statement}",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
     details = tuple(
@@ -157,15 +150,87 @@ def runup(scene) -> Finding | None:
     elif report.motor is not None:
         parts += [("; " if parts else "") + "the motor passes every resonance"]
     details = tuple(
-        f"{row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}: {row.value:.4g} m"
+        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}:"
+        f" |u| {row.value:.4g} m"
         + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
         for row in report.rows
     ) + tuple(f"WARN {warning}" for warning in report.warnings)
     return Finding("runup", report.outcome, tuple(parts), values, report, details)
 
 
+def block_resonance(scene) -> Finding:
+    """Every machine's orders against the block's six modes (``fcalc resonance``)."""
+    from foundation_calc.checks.block import check_block
+
+    report = check_block(scene)
+    near = report.nearest
+    values = {"critical": ("speed", near.critical)}
+    if report.resonance_outcome is Outcome.PASS:
+        reason = (f"every driven order is at least {near.margin:.1%} from every mode (nearest: {near.machine} order"
+                  f" {near.order} at mode {near.mode}, {near.motion}, critical speed ", values["critical"], ")")
+    else:
+        bad = [r for r in report.resonance_rows if r.outcome is report.resonance_outcome]
+        reason = ("; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad),)
+    return Finding("resonance", report.resonance_outcome, reason, values, report)
+
+
+def block_amplitudes(scene) -> Finding:
+    """Damped steady state of the block's points against [limits] and a vibration code (``fcalc amplitudes``)."""
+    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.limits import display_quantity
+
+    report = check_block(scene)
+    values: dict = {}
+    if report.resonant:
+        reason: Reason = ("an order is resonant with an undamped mode: no steady state",)
+    elif not report.limit_rows and not report.zone_rows:
+        reason = ("no amplitude or velocity limit in [limits]",)
+    else:
+        reason = ()
+        if report.limit_rows:
+            top = max(report.limit_rows, key=lambda row: row.ratio)
+            quantity = display_quantity(top.quantity)
+            values = {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
+            reason = (f"largest {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
+                      " of the limit ", values["limit"])
+        if report.zone_rows:
+            worst_zone = max(report.zone_rows, key=lambda row: row.ratio)
+            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
+    details = tuple(
+        f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
+        f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
+        for row in report.limit_rows
+    ) + tuple(f"WARN {warning}" for warning in report.code_warnings)
+    return Finding("amplitudes", report.amplitude_outcome, reason, values, report, details)
+
+
+def crank_office(scene) -> Finding | None:
+    """Static bearing pressure of a crank foundation against [limits] bearing_pressure; None (not
+    run) without that limit. (Its machine stands over the base's centroid: no eccentricity.)"""
+    if scene.limits.bearing_pressure is None:
+        return None
+    from foundation_calc.checks.office import OfficeReport, crank_bearing_row
+    from foundation_calc.solvers.constants import GRAVITY
+
+    row = crank_bearing_row(scene.total_mass * GRAVITY, scene.foundation.base_area, scene.limits.bearing_pressure)
+    return Finding("office", row.outcome, (f"{row.name}: {row.text}",), {}, OfficeReport((row,)),
+                   (f"{row.outcome.value.upper()} {row.name}: {row.text} ({row.source})",))
+
+
+def block_office(scene) -> Finding:
+    """Eccentricity, bearing pressure and mass ratio of the block (ACI 351.3R rules of thumb)."""
+    from foundation_calc.checks.block import check_block
+
+    report = check_block(scene)
+    shown = [o for o in report.office if o.outcome is report.office_outcome]
+    reason = ("; ".join(f"{o.name}: {o.text}" for o in shown),)
+    details = tuple(f"{o.outcome.value.upper()} {o.name}: {o.text} ({o.source})" for o in report.office)
+    return Finding("office", report.office_outcome, reason, {}, report, details)
+
+
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
-    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup},
+    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup, "office": crank_office},
     "platform": {"design": platform_design, "runup": runup},
+    "block_foundation": {"resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
 }

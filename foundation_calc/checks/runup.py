@@ -18,14 +18,15 @@ from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, RunupResult, r
 
 @dataclass(frozen=True)
 class LimitRow:
-    """One point in one run against the transient limit [m]."""
+    """One point in one run against the transient limit [m]: the peak magnitude |u| of the
+    point's displacement vector; ``outcome`` None (not judged) without a limit."""
 
     point: str
     run: str
     value: float
     limit: float | None
     ratio: float | None
-    outcome: Outcome
+    outcome: Outcome | None
 
 
 @dataclass(frozen=True)
@@ -38,22 +39,32 @@ class RunupReport:
     motor : the start-up by the scene's [drive] (MotorRun), or None
     torques : Sommerfeld rows, one per resonance passed, when there is a motor
     points : names of the measured points, in the order of the results' arrays
-    steady_points : peak displacement of each point in the steady state at ``omega`` [m]
+    directions : names of the directions of a point's displacement vector (the rows of its map)
+    steady_points : peak displacement magnitude |u| of each point in the steady state at
+        ``omega`` [m]
+    steady_directions : the same along each direction, shape (P, d) [m]
     omega : operating speed [rad/s]
     rows : one per point and run
     warnings : findings that do not change the verdict (undamped)
-    outcome : worst row (PASS without a limit)
+    outcome : worst judged row or motor torque (PASS when nothing is judged: see ``judged``)
     """
 
     runs: dict
     motor: object
     torques: tuple
     points: tuple
+    directions: tuple
     steady_points: object
+    steady_directions: object
     omega: float
     rows: tuple
     warnings: tuple
     outcome: Outcome
+
+    @property
+    def judged(self) -> bool:
+        """True when a limit or a motor's torque judged something."""
+        return bool(self.torques) or any(row.outcome is not None for row in self.rows)
 
 
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
@@ -69,6 +80,11 @@ class TorqueRow:
     needed: float
     available: float
     outcome: Outcome
+
+
+#: Directions of a point's displacement vector per scene kind (the rows of the point maps of
+#: :mod:`~foundation_calc.solvers.platform.runup` and :mod:`~foundation_calc.solvers.crank.runup`).
+DIRECTIONS = {"platform": ("x", "y", "z"), "crank_foundation": ("horizontal", "vertical")}
 
 
 def _structure(scene):
@@ -160,7 +176,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         for name, value in zip(names, transient):
             value = float(value)
             ratio = value / limit if limit is not None else None
-            outcome = Outcome.FAIL if limit is not None and value > limit else Outcome.PASS
+            outcome = None if limit is None else Outcome.FAIL if value > limit else Outcome.PASS
             rows.append(LimitRow(name, key, value, limit, ratio, outcome))
     warnings = []
     if not built.damped:
@@ -169,11 +185,13 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
             " deflection, and free vibration started by the ramp never decays; give damping"
             + (" (isolators.loss_factor or damping_ratio)" if scene.kind == "platform" else " (soil.damping)")
         )
+    steady_points, steady_directions, _ = steady_peaks(built, omega)
     return RunupReport(
-        runs=runs, motor=motor, torques=tuple(torques), points=tuple(names),
-        steady_points=steady_peaks(built, omega)[0], omega=float(omega), rows=tuple(rows), warnings=tuple(warnings),
-        outcome=worst([*(r.outcome for r in rows), *(t.outcome for t in torques)]),
+        runs=runs, motor=motor, torques=tuple(torques), points=tuple(names), directions=DIRECTIONS[scene.kind],
+        steady_points=steady_points, steady_directions=steady_directions, omega=float(omega), rows=tuple(rows),
+        warnings=tuple(warnings),
+        outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
     )
 
 
-__all__ = ["RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times"]
+__all__ = ["DIRECTIONS", "RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times"]

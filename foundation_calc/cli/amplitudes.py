@@ -9,9 +9,10 @@ import typer
 
 from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 ExactOpt = Annotated[
     bool,
@@ -44,8 +45,10 @@ def amplitudes(
     from foundation_calc.scenes import load_scene
 
     shown = display_units(units)
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        run_kind("amplitudes", loaded, str(scene), json=json, strict=False, units=shown)
     if exact and loaded.mechanism is None:
         from foundation_calc.output.console import stderr
 

@@ -12,12 +12,10 @@ import sys
 
 import typer
 
-from foundation_calc import __version__
-
 #: The commands in the order of ``fcalc --help``: name -> module defining a function of that name.
 COMMANDS = {
     name: f"foundation_calc.cli.{name}"
-    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup")
+    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup", "validate")
 }
 
 EXIT_CODES_HELP = (
@@ -35,7 +33,9 @@ BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THR
 
 def _version(value: bool) -> None:
     if value:
-        print(f"fcalc {__version__}")
+        from foundation_calc.version import version
+
+        print(f"fcalc {version()}")
         raise typer.Exit()
 
 

@@ -20,11 +20,12 @@ class Section(str, Enum):
     startup = "startup"
     points = "points"
     batch = "batch"
+    block = "block"
 
 
 ScenesArg = Annotated[
     Optional[list[Path]],
-    scene_argument("Scene files (TOML). Default: every crank_foundation and platform file in ./configs."),
+    scene_argument("Scene files (TOML). Default: every scene file in ./configs."),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
 PlotOpt = Annotated[
@@ -103,6 +104,7 @@ def bench(
     (time and memory against 10 points) — all measured in this run, on the first crank scene. Last,
     fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
     of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
+    Block scenes: one scene's whole check and a sweep of 10 000 speeds of its first machine.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -114,8 +116,17 @@ def bench(
     from foundation_calc.scenes import load_scene
 
     loaded = [(path, load_scene(path)) for path in paths]
-    cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation"]
+    # the amplitude methods, throughput, start-up and points need a crank mechanism
+    cranks = [(p, s) for p, s in loaded if s.kind == "crank_foundation" and s.mechanism is not None]
+    left_out = [
+        (str(p), "a machine given by its loads, without [mechanism]: not in the accuracy, throughput, start-up"
+                 " and points sections")
+        for p, s in loaded if s.kind == "crank_foundation" and s.mechanism is None
+    ]
     platforms = [(p, s) for p, s in loaded if s.kind == "platform"]
+    blocks = [(p, s) for p, s in loaded if s.kind == "block_foundation"]
+    if not blocks:
+        skipped.add(Section.block)
     if not cranks:  # throughput, start-up and points are measured on the first crank scene
         skipped |= {Section.throughput, Section.startup, Section.points}
     if not platforms:  # the batch's marginal cost is that of a platform scene
@@ -133,8 +144,9 @@ def bench(
     steps += Section.points not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
+    steps += len(blocks) * (Section.block not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
-    runups = None
+    runups, block_timings = None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -191,23 +203,40 @@ def bench(
             from foundation_calc.benchmarks.batch import batch_benchmark
 
             batch = batch_benchmark(platforms[0][0], paths, BATCH_MANY, large, BATCH_ROUNDS[quick], on_step=step)
+        if Section.block not in skipped:
+            from foundation_calc.benchmarks.block import benchmark_block
+
+            block_timings = []
+            for path, scene in blocks:
+                step(f"{path.name}: block check and speed sweep")
+                block_timings.append(benchmark_block(str(path), scene, MIN_TIME[quick]))
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
         from foundation_calc.output.console import print_json
 
         document = report.bench_document(results, platform_results, throughput, startup, truncation, batch, runups)
+        document["skipped_scenes"] = [{"scene": scene, "reason": reason} for scene, reason in left_out]
         if points is not None:
             from foundation_calc.output.bench_points import points_document
 
             document["points_scaling"] = points_document(points)
+        if block_timings is not None:
+            from foundation_calc.output.bench_block import block_document
+
+            document["block"] = block_document(block_timings)
         print_json(document)
     else:
+        report.print_skipped(left_out)
         report.print_bench(results, platform_results, throughput, startup, truncation, batch, runups)
         if points is not None:
             from foundation_calc.output.bench_points import print_points
 
             print_points(points)
+        if block_timings is not None:
+            from foundation_calc.output.bench_block import print_block
+
+            print_block(block_timings)
         if plot is not None:
             from foundation_calc.output.console import stderr
 

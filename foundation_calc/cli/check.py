@@ -162,7 +162,9 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
         except OSError as exc:
             raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
     if report_dir is not None:
-        _write_sheets(scenes, report_dir, shown)
+        from foundation_calc.cli.report import SHEET_UNITS
+
+        _write_sheets(scenes, report_dir, display_units(units, SHEET_UNITS))
     if not json:
         check_report.print_check_table(scenes, shown, strict, verbose)
     raise typer.Exit(int(exit_code(scenes, strict)))

@@ -141,9 +141,9 @@ def _print_error_document(command: Callable, args, kwargs, exc: BaseException) -
         return
     name = command.__module__.rpartition(".")[2]  # each command lives in the module of its name
     scene = bound.get("scene")
-    from foundation_calc.output.console import json_text
+    from foundation_calc.output.console import print_json
 
-    print(json_text(error_document(name, "" if scene is None else str(scene), exc)))
+    print_json(error_document(name, "" if scene is None else str(scene), exc))
 
 
 def reports_errors(command: Callable) -> Callable:

@@ -9,9 +9,10 @@ import typer
 
 from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (extra resonances) as failures.")]
 
@@ -30,8 +31,10 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     from foundation_calc.scenes import load_scene
 
     shown = display_units(units)
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        run_kind("resonance", loaded, str(scene), json=json, strict=strict, units=shown)
     report = check_scene_resonances(loaded)
     if json:
         from foundation_calc.output.console import print_json

@@ -32,10 +32,13 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
 
     The speed ramps linearly from rest to the operating speed in the run-up time (and back in
     the run-down time); with a [drive] the speed follows the motor's torque against the load
-    and a motor that would stick at a resonance fails (Sommerfeld). For every mode passed: its frequency, the sweep rate η = Ω'/ω_n², the
-    peak by a closed form and by time integration of the damped linear model (6 DOF platform,
-    3 DOF crank foundation), the time of the peak and its ratio to the steady amplitude. Fails
-    (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks.
+    and a motor that would stick at a resonance fails (Sommerfeld). For every mode passed: its frequency, the
+    sweep rate η = r Ω'/ω_i² (r the harmonic's speed ratio, Ω' the shaft's acceleration, ω_i the mode's
+    natural frequency), the peak by a closed form and by time integration of the damped linear model (6 DOF platform,
+    3 DOF crank foundation), the time of the peak and its ratio to the steady amplitude. A displacement
+    is the magnitude |u| of a point's displacement vector (a table gives it per direction). Fails
+    (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks;
+    without that limit or a [drive] the rows are not judged (exit 0).
     """
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.checks.runup import check_runup, run_times
@@ -45,7 +48,7 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
 
     if plot is not None and not plotting_available():
         raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
-    loaded = load_scene(scene)
+    loaded = load_scene(scene, expect=("crank_foundation", "platform"))
     warn_implausible(loaded)
     scene_up, scene_down = run_times(loaded)
     up = time if time is not None else scene_up

@@ -9,8 +9,9 @@ import typer
 
 from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 
 
@@ -28,8 +29,10 @@ def soil(scene: SceneArg, json: JsonOpt = False) -> None:
     from foundation_calc.output import soil as soil_out
     from foundation_calc.scenes import load_scene
 
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        run_kind("soil", loaded, str(scene), json=json)
     comparison = compare_soil_methods(loaded)
     if json:
         from foundation_calc.output.console import print_json

@@ -10,6 +10,7 @@ import typer
 
 from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt
 
 #: Unit suffixes accepted after a speed range -> display unit label.
@@ -19,7 +20,7 @@ MAX_POINTS = 100_000
 
 _RANGE = re.compile(r"^\s*([^:\s]+)\s*:\s*([^:\s]+?)\s*(?::\s*(\d+))?\s*([a-zA-Z/]*)\s*$")
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 SpeedOpt = Annotated[
     Optional[str],
     typer.Option("--speed", metavar="FROM:TO[:N][UNIT]", show_default=False,
@@ -34,6 +35,11 @@ SoilOpt = Annotated[
 CsvOpt = Annotated[Optional[Path], typer.Option("--csv", metavar="FILE", help="Write the points as CSV (SI units).", show_default=False)]
 PlotOpt = Annotated[Optional[Path], typer.Option("--plot", metavar="FILE.png", help="Draw the amplitudes; needs the plot extra.", show_default=False)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the table.")]
+MachineOpt = Annotated[
+    Optional[str],
+    typer.Option("--machine", metavar="NAME", help="block_foundation: the machine whose speed is swept (the others keep theirs).",
+                 show_default=False),
+]
 
 
 def parse_range(text: str, option: str, units: dict[str, str] | None = None, default_unit: str = "") -> tuple[float, float, int, str]:
@@ -70,6 +76,7 @@ def sweep(
     plot: PlotOpt = None,
     json: JsonOpt = False,
     units: UnitsOpt = None,
+    machine: MachineOpt = None,
 ) -> None:
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
@@ -109,8 +116,15 @@ def sweep(
     from foundation_calc.output import sweep_report as report_out
     from foundation_calc.scenes import load_scene
 
-    loaded = load_scene(scene, expect="crank_foundation")
+    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
+    if loaded.kind in KIND_MODULES:
+        if variable != "omega" or csv is not None or plot is not None:
+            raise typer.BadParameter("a block_foundation scene is swept by --speed, without --csv or --plot",
+                                     param_hint="'--soil' / '--csv' / '--plot'")
+        run_kind("sweep", loaded, str(scene), json=json, units=shown, omega=values, machine=machine)
+    if machine is not None:
+        raise typer.BadParameter("--machine names a machine of a block_foundation scene", param_hint="'--machine'")
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 

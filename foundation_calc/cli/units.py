@@ -19,11 +19,12 @@ UnitsOpt = Annotated[
 ]
 
 
-def display_units(tokens: list[str] | None):
-    """The :class:`~foundation_calc.output.display_units.DisplayUnits` chosen by ``--units``."""
+def display_units(tokens: list[str] | None, defaults: tuple[str, ...] = ()):
+    """The :class:`~foundation_calc.output.display_units.DisplayUnits` chosen by ``--units``;
+    ``defaults`` (unit names) hold for the quantities it does not name."""
     from foundation_calc.output.display_units import parse_units
 
     try:
-        return parse_units(tokens or [])
+        return parse_units(tokens or [], defaults)
     except ValueError as exc:
         raise typer.BadParameter(str(exc), param_hint="'--units'") from None

@@ -295,6 +295,14 @@ def _batch_tables(batch):
     return rows, ratios
 
 
+def print_skipped(left_out) -> None:
+    """One line per scene a section could not use: (scene, reason)."""
+    from rich.markup import escape
+
+    for scene, reason in left_out:
+        stdout().print(f"skipped {escape(scene)}: {escape(reason)}", soft_wrap=True)
+
+
 def print_bench(scenes, platforms, throughput, startup, truncation=None, batch=None, runups=None) -> None:
     """The benchmark as rich tables on stdout."""
     from rich.table import Table

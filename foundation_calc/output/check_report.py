@@ -19,7 +19,7 @@ from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
 from foundation_calc.errors import NonFiniteError
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, json_text, stdout
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, json_text, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -127,7 +127,16 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if check == "resonance":
+    if getattr(scene, "kind", "") == "block_foundation":
+        from foundation_calc.output import block
+
+        document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
+                    "office": block.office_document}[check](report, scene, "")
+    elif check == "office":
+        from foundation_calc.output.block import office_document
+
+        document = office_document(report, scene, "")
+    elif check == "resonance":
         from foundation_calc.output.crank_resonance import resonance_document
 
         document = resonance_document(report, scene, "")
@@ -178,11 +187,14 @@ def _summary(scenes: list[SceneRun], strict: bool) -> dict:
     }
 
 
+def _head(strict: bool) -> dict:
+    return with_version({"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict})
+
+
 def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
     """The JSON document of ``fcalc check`` (every number SI); :func:`stream_check_json` writes the
     same text scene by scene."""
-    head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-    return {**head, "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
+    return {**_head(strict), "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
 
 
 def json_entry(scene: SceneRun, strict: bool = False) -> tuple[SceneRun, str | None]:
@@ -223,8 +235,7 @@ def stream_check_json(entries: Iterable[tuple[SceneRun, str | None]], strict: bo
         if text is None:
             continue
         if not opened:
-            head = {"schema_version": JSON_SCHEMA_VERSION, "command": "check", "strict": strict}
-            write("{" + ",".join(_member(k, v) for k, v in head.items()) + ',\n  "scenes": [')
+            write("{" + ",".join(_member(k, v) for k, v in _head(strict).items()) + ',\n  "scenes": [')
         write(("," if opened else "") + "\n    " + text.replace("\n", "\n    "))
         opened = True
     if opened:

@@ -29,9 +29,16 @@ def keep_words_whole(table) -> None:
     from rich.cells import cell_len
     from rich.text import Text
 
+    def plain_text(cell) -> str:
+        if isinstance(cell, Text):
+            return cell.plain
+        if isinstance(cell, str):  # markup only where a tag may be: parsing every number costs
+            return Text.from_markup(cell).plain if "[" in cell else cell
+        return ""
+
     for column in table.columns:
         cells = (column.header, *column.cells)
-        plain = (cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else "" for cell in cells)
+        plain = map(plain_text, cells)
         longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
         column.min_width = max(column.min_width or 0, longest)
 
@@ -100,8 +107,19 @@ def json_text(value) -> str:
         raise found from None
 
 
+def with_version(document: dict) -> dict:
+    """``document`` with ``fcalc_version`` (version and commit) after its ``schema_version``."""
+    from foundation_calc.version import version
+
+    head = {k: document[k] for k in ("schema_version",) if k in document}
+    return {**head, "fcalc_version": version(), **document}
+
+
 def print_json(document: dict) -> None:
-    """Write one JSON document to stdout (:func:`json_text`)."""
+    """Write one JSON document to stdout (:func:`json_text`); a result document (one with a
+    ``schema_version``) carries fcalc's version, with its commit, right after it."""
+    if "schema_version" in document:
+        document = with_version(document)
     text = json_text(document)  # whole before a byte is written: a refused document leaves no half
     print(text)
 

@@ -11,6 +11,7 @@ from rich.text import Text
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally, worst_rows
 from foundation_calc.checks.limits import display_quantity
+from foundation_calc.output.crank_resonance import rule_document
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -154,6 +155,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             for row in report.rows
         ],
         "code": code_document(report, scene.limits),
+        "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:
@@ -164,6 +166,8 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             "harmonic_change": info.harmonic_change,
             "relative_residual": info.residual,
             "seconds": info.seconds,
+            "converged": info.capped is None,
+            "note": info.capped,
         }
         doc["errors"] = report.errors
     return doc
@@ -364,8 +368,8 @@ def summary_line(report: AmplitudeReport) -> str:
     if report.code_rows:
         top = max(report.code_rows, key=lambda r: r.ratio)
         parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
-    if report.damped:
-        parts.append(f"damped response, {approx.margin:.2%} from {escape(approx.nearest)}")
+    if report.resonance is not None:
+        parts.append(escape(report.resonance.statement) + (" (damped response)" if report.damped else ""))
     return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 
@@ -383,8 +387,10 @@ def print_amplitudes_report(
         f" {machine}; y positive downward"
     )
     for a in report.approximations.values():
-        note = f"resonant: {a.nearest}, margin {a.margin:.2g}" if a.resonant else f"nearest resonance {a.nearest}, margin {a.margin:.1%}"
-        out.print(f"  {a.key.replace('_', ' ')}: {a.title} ({note})")
+        note = f" (resonant: {a.nearest}, margin {a.margin:.2g})" if a.resonant else ""
+        out.print(f"  {a.key.replace('_', ' ')}: {a.title}{note}")
+    if report.resonance is not None:
+        out.print(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}", soft_wrap=True)
     if report.damping is not None:
         damping = report.damping
         modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
@@ -398,6 +404,8 @@ def print_amplitudes_report(
             f"  exact: {info.harmonics} harmonics (change from {info.harmonics // 2}: {info.harmonic_change:.1e}),"
             f" {info.newton_iterations} Newton step(s), {info.seconds * 1e3:.0f} ms"
         )
+        if info.capped is not None:
+            out.print(f"  [yellow]exact: {escape(info.capped)}; its figures are good to about that change[/]")
     out.print(_harmonics_table(report, units))
     if not report.resonant:
         out.print(_points_table(report, units, all_points))

@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from foundation_calc.checks.crank_resonance import ResonanceReport
+from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
+from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
+
+
+#: How the table marks a condition's source.
+SOURCE_TAGS = {"paper": "", "extra": " (extra)", "loads": " (loads)", "harmonic": "", "speed": ""}
 
 
 def _frequencies(freqs) -> dict:
@@ -14,19 +22,28 @@ def _frequencies(freqs) -> dict:
 
 
 def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUnits = DisplayUnits()) -> str:
-    """One sentence that says whether the speed is far enough from every resonance (the speed in
-    ``units``, as ``fcalc check`` words it)."""
-    near = report.nearest
+    """One sentence: the verdict, the speed (in ``units``) and the governing resonance, as every
+    command words it; then the near conditions that are not judged, as information."""
     speed = units.show("speed", report.omega)
-    outcome = report.outcome.value
-    if outcome == "pass":
-        return (
-            f"{verdict_text(outcome)}: speed {speed} is at least {near.margin:.1%} from every"
-            f" resonance (nearest: {near.condition.label}; required {near.required:.0%})"
-        )
-    bad = [r for r in report.rows if r.outcome.value == outcome]
-    names = ", ".join(f"{r.condition.label} (margin {r.margin:.1%})" for r in bad)
-    return f"{verdict_text(outcome, strict)}: speed {speed} is inside the {near.required:.0%} band of {names}"
+    line = f"{verdict_text(report.outcome.value, strict)}: speed {speed}, {report.statement}"
+    if report.information:
+        line += "; information, not the verdict: " + ", ".join(row.phrase for row in report.information)
+    return line
+
+
+def rule_document(report: ResonanceReport) -> dict:
+    """The rule as the scene set it (JSON): the forcing share a higher harmonic needs to be judged,
+    the detuning (one band, or a band per order), and the governing condition."""
+    detuning = report.detuning
+    g = report.governing
+    return {
+        "forcing_share": FORCING_SHARE,
+        "fail_margin": RESONANCE_FAIL_MARGIN,
+        "detuning": {str(k): v for k, v in detuning.items()} if isinstance(detuning, Mapping) else detuning,
+        "conditions_checked": report.conditions_checked,
+        "governing": None if g is None else {"condition": g.condition.label, "margin": g.margin, "required": g.needed,
+                                             "verdict": g.outcome.value},
+    }
 
 
 def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
@@ -69,10 +86,14 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
                 "critical_speed_averaged_inertia": speed_triplet(row.critical_averaged),
                 "margin": row.margin,
                 "required": row.required,
+                "forcing_share": row.share,
+                "judged": row.judged,
+                "status": STATUS_NAMES[row.status],
                 "verdict": row.outcome.value,
             }
             for row in report.rows
         ],
+        "rule": rule_document(report),
         "verdict": report.outcome.value,
     }
 
@@ -125,17 +146,32 @@ def print_resonance_report(
     speed = units.label("speed")
     for col in (speed, f"{speed}, avg. inertia", "margin", "required"):
         res.add_column(col, justify="right")
+    res.add_column("forcing share", justify="right")
     res.add_column("verdict")
     for row in report.rows:
-        label = row.condition.label + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[row.condition.source]
+        label = row.condition.label + SOURCE_TAGS[row.condition.source]
         res.add_row(
-            label,
+            label + (" *" if row is report.governing else ""),
             MODE_NAMES[row.condition.mode],
             fmt(units.convert("speed", row.critical_zero_order)),
             fmt(units.convert("speed", row.critical_averaged)),
             f"{row.margin:.1%}",
-            f"{row.required:.0%}",
-            verdict_text(row.outcome.value),
+            f"{row.required:.0%}" if row.required > 0.0 else "none",
+            f"{row.share:.2g}",
+            verdict_text(row.outcome.value) if row.judged or row.status > INFORMATION else
+            ("information" if row.information else "not judged"),
         )
     out.print(res)
+    out.print(
+        f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
+        f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning{_bands(report)})."
+        " The rule: README, \"The resonance rule\".", soft_wrap=True,
+    )
     out.print(summary_line(report, strict, units), soft_wrap=True)
+
+
+def _bands(report: ResonanceReport) -> str:
+    detuning = report.detuning
+    if isinstance(detuning, Mapping):
+        return " = {" + ", ".join(f"{k} = {v:g}" for k, v in sorted(detuning.items())) + "}"
+    return f" = {detuning:g}"

@@ -62,11 +62,20 @@ class DisplayUnits:
         return "".join(part if isinstance(part, str) else self.show(*part) for part in parts)
 
 
-def parse_units(tokens: Iterable[str]) -> DisplayUnits:
-    """Build :class:`DisplayUnits` from ``--units`` values (each may be comma-separated).
+def parse_units(tokens: Iterable[str], defaults: Iterable[str] = ()) -> DisplayUnits:
+    """Build :class:`DisplayUnits` from ``--units`` values (each may be comma-separated);
+    ``defaults`` (unit names) hold for the quantities the tokens do not name.
 
     Raises ``ValueError`` naming the unknown unit and the choices, or a quantity given twice.
+
+    >>> parse_units(["rpm", "m"], defaults=("mm", "mm/s"))
+    DisplayUnits(amplitude='m', speed='rpm', velocity='mm/s', acceleration='m/s²')
     """
+    return DisplayUnits(**(_named(defaults) | _named(tokens)))
+
+
+def _named(tokens: Iterable[str]) -> dict[str, str]:
+    """quantity -> unit named by ``tokens``."""
     chosen: dict[str, str] = {}
     for token in tokens:
         for name in filter(None, (part.strip() for part in token.split(","))):
@@ -77,4 +86,4 @@ def parse_units(tokens: Iterable[str]) -> DisplayUnits:
             if quantity in chosen and chosen[quantity] != unit:
                 raise ValueError(f"two units for {quantity}: {chosen[quantity]} and {unit}")
             chosen[quantity] = unit
-    return DisplayUnits(**chosen)
+    return chosen

@@ -50,6 +50,22 @@ def _motor_document(report: RunupReport) -> dict | None:
     }
 
 
+#: What a run-up figure of a point is (tables, JSON ``displacement``).
+DISPLACEMENT = "|u|: magnitude of the point's displacement vector ({}), largest over time"
+
+#: Verdict of a row, and of a run, that no limit judges.
+NOT_JUDGED = "not judged"
+
+
+def _verdict(report: RunupReport) -> str:
+    return report.outcome.value if report.judged else NOT_JUDGED
+
+
+def _directions(report: RunupReport, peaks) -> dict:
+    """{point: {direction: peak [m]}}."""
+    return {n: dict(zip(report.directions, map(float, row))) for n, row in zip(report.points, peaks)}
+
+
 def runup_document(report: RunupReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc runup`` (every number SI)."""
     return {
@@ -57,8 +73,10 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
         "command": "runup",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
         "speed": speed_triplet(report.omega),
+        "displacement": DISPLACEMENT.format(", ".join(report.directions)),
         "points": list(report.points),
         "steady_points": {n: float(v) for n, v in zip(report.points, report.steady_points)},
+        "steady_directions": _directions(report, report.steady_directions),
         "runs": {
             key: {
                 "duration": r.duration,
@@ -67,6 +85,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
                 "steady_amplitude": r.steady,
                 "steady_points": {n: float(v) for n, v in zip(report.points, r.steady_points)},
                 "transient_points": {n: float(v) for n, v in zip(report.points, r.transient_points)},
+                "transient_directions": _directions(report, r.transient_directions),
                 "time_step": r.response.step,
                 "passages": [_passage_document(p, r, report.points) for p in r.passages],
             }
@@ -75,11 +94,11 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
         "motor": _motor_document(report),
         "limits": [
             {"point": row.point, "run": row.run, "value": row.value, "limit": row.limit, "ratio": row.ratio,
-             "verdict": row.outcome.value}
+             "verdict": NOT_JUDGED if row.outcome is None else row.outcome.value}
             for row in report.rows
         ],
         "warnings": list(report.warnings),
-        "verdict": report.outcome.value,
+        "verdict": _verdict(report),
     }
 
 
@@ -148,17 +167,40 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     if report.motor is not None:
         out.print(_motor_table(report))
     table = Table(title="Largest displacement during the runs", title_justify="left")
-    for name in ("point", "run", "steady [m]", "transient [m]", "limit [m]", "ratio", "verdict"):
+    for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", "limit [m]", "ratio", "verdict"):
         table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
     for row in report.rows:
         steady = report.steady_points[report.points.index(row.point)]
         table.add_row(
             escape(row.point), RUN_TITLES[row.run], fmt(float(steady), 4), fmt(row.value, 4),
             fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
-            verdict_text(row.outcome.value),
+            NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value),
         )
     out.print(table)
-    out.print(f"Verdict: {verdict_text(report.outcome.value)}")
+    out.print(_directions_table(report))
+    out.print(
+        DISPLACEMENT.format(", ".join(report.directions)) + "; per direction: the largest |component| (the"
+        " steady ones are fcalc amplitudes' peaks of the same point)"
+    )
+    if report.judged:
+        out.print(f"Verdict: {verdict_text(report.outcome.value)}")
+    else:
+        out.print(f"Verdict: {NOT_JUDGED} (no [limits] transient_amplitude, no [drive])")
+
+
+def _directions_table(report: RunupReport) -> Table:
+    """Steady and transient peaks of every point along each direction [m]."""
+    table = Table(title=escape("Peaks by direction [m]"), title_justify="left")
+    table.add_column("point", justify="left")
+    table.add_column("run", justify="left")
+    for name in report.directions:
+        table.add_column(escape(name), justify="right")
+    runs = [("steady", report.steady_directions)]
+    runs += [(RUN_TITLES[key], r.transient_directions) for key, r in report.runs.items()]
+    for k, name in enumerate(report.points):
+        for title, peaks in runs:
+            table.add_row(escape(name), title, *(fmt(float(v), 5) for v in peaks[k]))
+    return table
 
 
 __all__ = ["plot_runup", "print_runup_report", "print_warnings", "runup_document"]

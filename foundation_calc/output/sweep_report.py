@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
+from foundation_calc.checks.resonance_rule import condition_phrase
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
@@ -29,6 +30,31 @@ def method(report) -> str:
 def _condition_label(condition) -> str:
     """A condition's label, with "(loads)" for a harmonic of the scene's [[loads]]."""
     return condition.label + (" (loads)" if condition.source == "loads" else "")
+
+
+def _governing(report, i: int) -> str | None:
+    """The label of the condition that governs point i's resonance verdict (None: no condition)."""
+    g = int(report.governing[i])
+    return None if g < 0 else _condition_label(report.conditions[g])
+
+
+def status_text(row: dict) -> str:
+    """Why a point has its status, the failing causes first: the governing resonance condition
+    when the rule fails or warns there, every limit the point exceeds; then, when the resonance
+    rule is satisfied, the governing condition and its margin, e.g.
+    ``"fail: inside 3ω = p1 at 15.7% (needs 20%); over displacement limit"`` or
+    ``"fail: over displacement limit; resonances clear, governing 3ω = p1 at 30.9% (needs 20%)"``."""
+    phrase = None
+    if row["governing_condition"] is not None:
+        phrase = condition_phrase(row["governing_condition"], row["margin"], row["needed"])
+    causes = []
+    if phrase is not None and row["resonance_status"] in ("warn", "fail"):
+        causes.append(f"inside {phrase}")
+    if row["over_limits"]:
+        causes.append(f"over {', '.join(row['over_limits'])} limit")
+    if phrase is not None and row["resonance_status"] not in ("warn", "fail"):
+        causes.append(f"resonances clear, governing {phrase}")
+    return f"{row['status']}: " + "; ".join(causes) if causes else row["status"]
 
 
 def _harmonics(report, i: int) -> dict | None:
@@ -58,8 +84,10 @@ def _rows(report):
             "harmonics": _harmonics(report, i),
             "points": points,
             "resonant": resonant,
-            "nearest_condition": _condition_label(report.conditions[int(report.nearest[i])]),
+            "governing_condition": _governing(report, i),
+            "resonance_status": str(report.resonance_status[i]),
             "margin": float(report.margin[i]),
+            "needed": float(report.needed[i]),
             "over_limit": bool(report.over_limit[i]),
             "over_limits": [q for q, mask in report.over_quantities.items() if mask[i]],
             "status": str(report.status[i]),
@@ -76,10 +104,10 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
         "variable": report.variable,
         "limits": {
             **{key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
-            "detuning": report.detuning,
+            "detuning": {str(k): v for k, v in report.detuning.items()} if isinstance(report.detuning, dict) else report.detuning,
         },
         "critical_speeds": [
-            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged}
+            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged, "band": c.band}
             for c in report.critical
         ],
         "points": list(_rows(report)),
@@ -94,7 +122,7 @@ def sweep_csv(report) -> str:
               "x_peak_m", "y_peak_m", "theta_peak_rad",
               *(f"{key}_{part}" for key in report.harmonics for part in ("amplitude", "phase_rad")),
               *(f"{name}_{d}_peak_m" for name in report.points for d in ("horizontal", "vertical")),
-              "resonant", "nearest_condition", "margin", "over_limit", "status"]
+              "resonant", "governing_condition", "margin", "needed", "over_limit", "status"]
     if report.variable != "omega":
         header.insert(1, "omega_rad_s")
     writer.writerow(header)
@@ -110,7 +138,8 @@ def sweep_csv(report) -> str:
         for name in report.points:
             p = row["points"][name]
             cells += ["", ""] if p is None else [repr(p["horizontal"]), repr(p["vertical"])]
-        cells += [row["resonant"], row["nearest_condition"], repr(row["margin"]), row["over_limit"], row["status"]]
+        cells += [row["resonant"], row["governing_condition"] or "", repr(row["margin"]), repr(row["needed"]),
+                  row["over_limit"], row["status"]]
         writer.writerow(cells)
     return buffer.getvalue()
 
@@ -133,8 +162,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         table.add_column(escape(f"{name} peak h/v [{amp_unit}]"), justify="right")
     if report.damped:
         table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
-    table.add_column("nearest resonance, margin")
-    table.add_column("status")
+    table.add_column("status: governing resonance, margin; limits")
     for row in _rows(report):
         cells = [] if report.variable == "omega" else [fmt(row["soil_factor"], 4)]
         cells.append(fmt(units.convert("speed", row["omega"]), 6))
@@ -150,10 +178,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         if report.damped:
             h = row["harmonics"]
             cells.append("-" if h is None else f"{math.degrees(h['x1']['phase']):.1f} / {math.degrees(h['y1']['phase']):.1f}")
-        cells.append(f"{row['nearest_condition']}, {row['margin']:.2%}")
-        over = ", ".join(row["over_limits"])
-        status = row["status"] + (f" (over {over} limit)" if over else "")
-        cells.append(f"[{STATUS_STYLE[row['status']]}]{status}[/]")
+        cells.append(f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
         table.add_row(*cells)
     out.print(table)
     if report.critical:
@@ -165,7 +190,7 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         out.print(crit)
     limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
-        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning:.0%}", soft_wrap=True
+        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning if isinstance(report.detuning, dict) else format(report.detuning, '.0%')}", soft_wrap=True
     )
 
 

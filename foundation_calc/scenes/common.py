@@ -48,6 +48,47 @@ class SceneModel(BaseModel):
 LENGTH_SCALE_FACTOR = 10.0
 
 
+#: Range of a detuning band [-] (open at both ends) and of the orders it may name.
+DETUNING_RANGE = (0.0, 1.0)
+MAX_ORDER = 64
+
+
+def detuning_bands(value: Any) -> float | dict[int, float]:
+    """``[limits] detuning`` checked: a number in (0, 1), or a table order -> number in (0, 1)
+    whose keys are whole orders 1 ... :data:`MAX_ORDER`; a message names the key, the value and
+    the range.
+
+    >>> detuning_bands({"1": 0.2, "3": 0.1}), detuning_bands(0.15)
+    ({1: 0.2, 3: 0.1}, 0.15)
+    """
+    lo, hi = DETUNING_RANGE
+
+    def band(v, where: str) -> float:
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise ValueError(f"{where} must be a number in ({lo:g}, {hi:g}) [-], not {v!r}")
+        if not lo < v < hi:
+            raise ValueError(
+                f"{where} = {v!r} is outside ({lo:g}, {hi:g}) [-]: a band is greater than {lo:g} and less than"
+                f" {hi:g} (a relative distance: 0.2 is 20 %)"
+            )
+        return float(v)
+
+    if isinstance(value, dict):
+        if not value:
+            raise ValueError("detuning = {} names no order: give a band per order, e.g. {1 = 0.2, 2 = 0.2}, or one number")
+        bands = {}
+        for key, v in value.items():
+            text = str(key).strip()
+            if not text.isdigit() or not 1 <= int(text) <= MAX_ORDER:
+                raise ValueError(
+                    f"detuning key {key!r} is not an order of the speed: keys are whole numbers 1 ... {MAX_ORDER}"
+                    " (1 for ω, 2 for 2ω, ...)"
+                )
+            bands[int(text)] = band(v, f"detuning.{text}")
+        return bands
+    return band(value, "detuning")
+
+
 def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraints: Any) -> Any:
     """A pydantic Field whose description reads ``"symbol [unit]: text"``."""
     return Field(default, description=f"{symbol} [{unit}]: {text}", **constraints)

@@ -13,9 +13,18 @@ from typing import TYPE_CHECKING, Literal
 from pydantic import ValidationInfo, field_validator, model_validator
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import (
+    LENGTH_SCALE_FACTOR,
+    SCENE_SCHEMA_VERSION,
+    Drive,
+    SceneModel,
+    SpeedFields,
+    detuning_bands,
+    quantity,
+)
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.soil import Soil
+from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
@@ -77,7 +86,8 @@ class Limits(SceneModel):
     """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
-        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0
+        "u_max", "m", "largest allowed peak displacement of C and of every point, each direction", None, gt=0,
+        examples=[2.0e-4],
     )
     velocity: float | None = quantity(
         "v_max", "m/s", "largest allowed peak velocity", None, gt=0, examples=[5.0e-3]
@@ -111,13 +121,24 @@ class Limits(SceneModel):
     machine_power: float | None = quantity(
         "P", "W", "rated power of the machine, to check its group of the code", None, gt=0, examples=[160e3]
     )
-    detuning: float = quantity(
-        "δ", "-", "required relative distance of the speed from every resonance speed", 0.2, gt=0, lt=1
+    detuning: float | dict[int, float] = quantity(
+        "δ", "-", "required relative distance of the speed from every judged resonance: one band,"
+        " or a band per order, e.g. {1 = 0.2, 2 = 0.2, 3 = 0.1}; each band > 0 and < 1",
+        0.2, examples=[0.2, {"1": 0.2, "2": 0.2, "3": 0.1}],
+    )
+    bearing_pressure: float | None = quantity(
+        "q_a", "Pa", "allowable static bearing pressure of the soil under the base", None, gt=0, examples=[1.5e5]
     )
     transient_amplitude: float | None = quantity(
         "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
         " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],
     )
+
+    @field_validator("detuning", mode="before")
+    @classmethod
+    def _detuning_bands(cls, value):
+        return detuning_bands(value)
+
     @field_validator("code", mode="before")
     @classmethod
     def _known_code(cls, code):
@@ -233,6 +254,10 @@ class CrankScene(SceneModel):
         "-", "-", "version of the scene format", SCENE_SCHEMA_VERSION
     )
     name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
     foundation: Foundation
     soil: Soil
     mechanism: Mechanism | None = quantity(

@@ -16,6 +16,7 @@ from foundation_calc.errors import SceneError
 #: scene kind -> "module:Model"; a module is imported only when a scene of its kind is read.
 KINDS: dict[str, str] = {
     "crank_foundation": "foundation_calc.scenes.crank:CrankScene",
+    "block_foundation": "foundation_calc.scenes.block:BlockScene",
     "platform": "foundation_calc.scenes.platform:PlatformScene",
 }
 
@@ -23,6 +24,7 @@ KINDS: dict[str, str] = {
 KIND_COMMANDS: dict[str, tuple[str, ...]] = {
     "crank_foundation": ("resonance", "amplitudes", "sweep", "soil"),
     "platform": ("platform",),
+    "block_foundation": ("resonance", "amplitudes", "sweep", "soil", "check", "report"),
 }
 
 #: Top-level tables of the scene kinds (of :data:`KINDS`, and ``block``/``machines`` of the block
@@ -88,18 +90,26 @@ def model_for_kind(kind: str) -> type:
     return getattr(importlib.import_module(module_name), class_name)
 
 
-def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | None = None):
+def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tuple[str, ...] | None = None):
     """Validate a scene document (already parsed TOML) and return its model instance.
 
-    ``expect`` names the kind the caller needs; a scene of another kind is a :class:`SceneError`.
+    ``expect`` names the kind (or kinds) the caller takes; a scene of another kind is a
+    :class:`SceneError`.
     """
     kind = data.get("kind")
     if not isinstance(kind, str) or kind not in KINDS:
         raise SceneError(source, [_kind_problem(data, kind)])
-    if expect is not None and kind != expect:
+    expected = (expect,) if isinstance(expect, str) else expect
+    if expected is not None and kind not in expected:
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
-        raise SceneError(source, [("kind", f'this command needs a "{expect}" scene (got "{kind}": use {commands})')])
-    model = model_for_kind(kind)
+        needs = " or ".join(f'"{k}"' for k in expected)
+        raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
+    return validate(model_for_kind(kind), data, source)
+
+
+def validate(model: type, data: dict[str, Any], source: str, prefix: str = ""):
+    """``model`` validated from ``data``, or a :class:`SceneError` whose problems name each field
+    (``prefix`` + dotted path), its value, unit and allowed range."""
     from pydantic import ValidationError
 
     from foundation_calc.scenes.messages import describe_validation_error
@@ -107,7 +117,8 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | Non
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise SceneError(source, describe_validation_error(model, exc)) from None
+        problems = describe_validation_error(model, exc)
+        raise SceneError(source, [(f"{prefix}{loc}" if loc else prefix.rstrip("."), msg) for loc, msg in problems]) from None
     except RecursionError:
         raise SceneError(source, [("", "is nested too deeply")]) from None
 
@@ -131,6 +142,14 @@ def _kind_problem(data: dict[str, Any], kind: Any) -> tuple[str, str]:
     return "kind", f"must be one of {allowed} (got {kind!r})"
 
 
-def load_scene(path: str | Path, expect: str | None = None):
-    """Read, parse and validate the scene file at ``path``."""
-    return parse_scene(read_toml(path), source=str(path), expect=expect)
+def read_scene(path: str | Path) -> dict[str, Any]:
+    """The scene document at ``path`` with the office defaults of the nearest ``fcalc.toml``
+    (:func:`~foundation_calc.scenes.project.with_office_defaults`)."""
+    from foundation_calc.scenes.project import with_office_defaults
+
+    return with_office_defaults(read_toml(path), path)
+
+
+def load_scene(path: str | Path, expect: str | tuple[str, ...] | None = None):
+    """Read, parse and validate the scene file at ``path`` (with its office defaults)."""
+    return parse_scene(read_scene(path), source=str(path), expect=expect)

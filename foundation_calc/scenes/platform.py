@@ -18,6 +18,7 @@ from typing import Annotated, Literal
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -26,7 +27,7 @@ from foundation_calc.solvers.platform.design import (
     design_from_vertical,
     position_from_vertical,
 )
-from foundation_calc.solvers.platform.dynamics import block_inertia
+from foundation_calc.solvers.rigid_body.inertia import block_inertia
 from foundation_calc.solvers.platform.verification import ExtraRotor, PlatformModel
 
 #: The paper's worked example, used by ``fcalc platform`` when no scene is given.
@@ -170,6 +171,10 @@ class PlatformScene(SceneModel):
     kind: Literal["platform"] = quantity("-", "-", 'scene kind, always "platform"')
     schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
     name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
     platform: Platform
     exciter: Exciter
     operation: Operation

@@ -66,8 +66,8 @@ class Soil(SceneModel):
         ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "sp26" (SP 26.13330 from the static'
         ' modulus); default "coefficients" when c_z is given', None, examples=["lysmer"],
     )
-    c_z: float | None = quantity("c", "N/m³", "coefficient of elastic uniform compression", None, gt=0)
-    c_x: float | None = quantity("c1", "N/m³", "coefficient of elastic uniform shear", None, gt=0)
+    c_z: float | None = quantity("c", "N/m³", "coefficient of elastic uniform compression", None, gt=0, examples=[4.0e7])
+    c_x: float | None = quantity("c1", "N/m³", "coefficient of elastic uniform shear", None, gt=0, examples=[2.8e7])
     c_phi: float | None = quantity(
         "c_φ", "N/m³", "coefficient of elastic non-uniform compression (rocking); default c_z, the paper's choice",
         None, gt=0, examples=[8.0e7],
@@ -101,6 +101,14 @@ class Soil(SceneModel):
         + ", ".join(f"{k} {v:g}" for k, v in B0_BY_CLASS.items()), None, examples=["sand"],
     )
 
+    #: The keys each method takes; a kind with other methods (the block's) sets its own.
+    method_keys: ClassVar[dict[str, tuple[str, ...]]] = METHOD_KEYS
+    #: What to say when neither a method nor c_z is given.
+    no_method_text: ClassVar[str] = (
+        'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
+        " coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
+    )
+
     @model_validator(mode="before")
     @classmethod
     def _keys_of_the_method(cls, data):
@@ -109,28 +117,24 @@ class Soil(SceneModel):
         method = data.get("method")
         if method is None:
             if "c_z" not in data:
-                raise ValueError(
-                    'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
-                    " coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
-                )
+                raise ValueError(cls.no_method_text)
             method = "coefficients"
-        if not isinstance(method, str) or method not in METHOD_KEYS:
+        if not isinstance(method, str) or method not in cls.method_keys:
             return data  # the field's own validation names the allowed methods
-        allowed = set(METHOD_KEYS[method]) | {"method"}
+        allowed = set(cls.method_keys[method]) | {"method"}
+        keys = ", ".join(cls.method_keys[method])
         for key in data:
             if key in allowed:
                 continue
-            owners = [m for m, keys in METHOD_KEYS.items() if key in keys]
+            owners = [m for m, keys_of in cls.method_keys.items() if key in keys_of]
             if owners:
                 raise ValueError(
                     f"soil.{key} is a key of method {' and '.join(map(repr, owners))}, not of"
-                    f" {method!r}; the keys of {method!r} are {_method_keys(method)}"
+                    f" {method!r}; the keys of {method!r} are {keys}"
                 )
             close = difflib.get_close_matches(str(key), sorted(allowed), n=1, cutoff=0.6)
             hint = f" (did you mean {close[0]}?)" if close else ""
-            raise ValueError(
-                f"soil.{key!s:.60} is not a key of method {method!r}{hint}; its keys are {_method_keys(method)}"
-            )
+            raise ValueError(f"soil.{key!s:.60} is not a key of method {method!r}{hint}; its keys are {keys}")
         return data
 
     @field_validator("damping")

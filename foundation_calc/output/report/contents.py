@@ -10,26 +10,13 @@ import math
 
 from dataclasses import dataclass
 
-from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
-from foundation_calc.output.report.model import Figure, Paragraph, Section, Sheet, table
+from foundation_calc.output.report.model import Figure, Paragraph, Section, table
 
 DIGITS = 6
 #: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
 NEGLIGIBLE = 1e-9
-
-
-@dataclass(frozen=True)
-class TitleBlock:
-    """Where a sheet comes from: scene, file and its SHA-256, fcalc version, date, command."""
-
-    name: str
-    file: str
-    sha256: str
-    version: str
-    date: str
-    command: str
 
 
 @dataclass(frozen=True)
@@ -39,8 +26,8 @@ class SweepSeries:
     omega: list[float]
     peaks: dict[str, list[float | None]]
     amplitude_limit: float | None
-    detuning: float
-    critical: list[tuple[str, str, float]]
+    detuning: float | dict
+    critical: list[tuple[str, str, float, float]]
     method: str
 
 
@@ -52,7 +39,7 @@ def sweep_series(doc: dict) -> SweepSeries:
         peaks={"y of C": [r["y_peak"] for r in rows], "x of C": [r["x_peak"] for r in rows]},
         amplitude_limit=doc["limits"]["amplitude"],
         detuning=doc["limits"]["detuning"],
-        critical=[(c["condition"], c["source"], c["zero_order"]) for c in doc["critical_speeds"]],
+        critical=[(c["condition"], c["source"], c["zero_order"], c["band"]) for c in doc["critical_speeds"]],
         method=doc["method"],
     )
 
@@ -60,11 +47,6 @@ def sweep_series(doc: dict) -> SweepSeries:
 def operating_speed(resonance: dict) -> float:
     """The crank speed ω [rad/s] of the ``resonance`` JSON document."""
     return resonance["speed"]["omega"]
-
-
-def verdicts(documents: dict) -> list[str]:
-    """The verdict (``pass``, ``warn``, ``fail``) of every JSON document that has one."""
-    return [d["verdict"] for d in documents.values() if "verdict" in d]
 
 
 def num(value: float | None, digits: int = DIGITS) -> str:
@@ -75,18 +57,6 @@ def num(value: float | None, digits: int = DIGITS) -> str:
 def pct(value: float) -> str:
     """A fraction as a percentage with ``DIGITS`` significant figures."""
     return f"{value * 100:.{DIGITS}g} %"
-
-
-def _title_section(title: TitleBlock) -> Section:
-    rows = (
-        ("scene", title.name),
-        ("file", title.file),
-        ("SHA-256 of the file", title.sha256),
-        ("fcalc version", title.version),
-        ("date (UTC)", title.date),
-        ("command", title.command),
-    )
-    return Section("Title block", (table("", ("item", "value"), rows, (False, False)),))
 
 
 def _speed(units: DisplayUnits, omega: float) -> str:
@@ -128,7 +98,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     )
     rows = (
         (
-            r["condition"] + {"paper": "", "extra": " (extra)", "loads": " (loads)"}[r["source"]],
+            r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),
             r["mode_name"],
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
@@ -208,66 +178,28 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
     return Section("Amplitudes", tuple(blocks))
 
 
-def _crank_checks(res: dict, amp: dict, units: DisplayUnits) -> Section:
-    rows = [
-        (
-            f"resonance {r['condition']}",
-            "margin " + pct(r["margin"]),
-            "≥ " + pct(r["required"]),
-            num(r["required"] / r["margin"], 4) if r["margin"] > 0 else "inf",
-            r["verdict"].upper(),
-            "scene [limits] detuning",
-        )
-        for r in res["resonances"]
-    ]
-    for row in amp["limits"]:
-        q = display_quantity(row["quantity"])
-        rows.append(
-            (
-                f"{row['point']} {row['direction']} {row['quantity']}",
-                f"{num(units.convert(q, row['value']))} {units.label(q)}",
-                f"≤ {num(units.convert(q, row['limit']))} {units.label(q)}",
-                num(row["ratio"], 4),
-                row["verdict"].upper(),
-                row["source"],
-            )
-        )
-    code = amp.get("code")
-    for row in (code or {}).get("points", ()):
-        rows.append(
-            (
-                f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
-                f"{num(units.convert('velocity', row['value']))} {units.label('velocity')}",
-                f"≤ {num(units.convert('velocity', row['limit']))} {units.label('velocity')}",
-                num(row["ratio"], 4),
-                row["verdict"].upper(),
-                f"{code['code']}, group {code['machine_group']}, {code['foundation']} ({code['clause']})",
-            )
-        )
-    checks = table(
-        "Every check (ratio = demand/limit; above 1 fails)",
-        ("check", "value", "limit", "ratio", "verdict", "limit's source"),
-        rows,
-        (False, True, True, True, False, False),
-    )
-    verdict = Paragraph(f"Resonance verdict: {res['verdict'].upper()}. Amplitude verdict: {amp['verdict'].upper()}.")
-    return Section("Checks", (checks, verdict))
-
-
 def _largest_peak_errors(errors: dict) -> list[str]:
     """The largest relative error of the peaks over every point, per quantity, as table cells."""
     points = errors["points"].values()
     return [num(max(max(p[q].values()) for p in points), 3) for q in ("displacement", "velocity", "acceleration")]
 
 
-def _crank_accuracy(amp: dict) -> Section:
+def _crank_accuracy(amp: dict, exact: dict | None, mechanism: bool) -> Section:
+    """How exact the checked numbers are: the method that judged the limits and, with ``--exact``
+    (``exact``: the amplitudes document with the exact periodic solution), its errors."""
     approximations = amp["approximations"]
-    text = [f"Limits checked with the {approximations[amp['checked_with']]['title']}."]
-    solver = amp.get("exact_solver")
+    text = [f"Limits checked with the {approximations[amp['checked_with']]['title']} (as fcalc check does)."]
+    if not mechanism:
+        text.append(
+            "The machine is given by its loads: their steady state is the exact solution of the linear"
+            " rigid-block model (one complex solve per harmonic); there is no closed form to estimate."
+        )
+        return Section("Accuracy", tuple(Paragraph(t) for t in text))
+    solver = None if exact is None else exact.get("exact_solver")
     if solver is None:
         text.append(
-            "The exact periodic solution was not computed (run with --exact to check the limits with it"
-            " and to state the closed forms' errors against it)."
+            "The exact periodic solution was not computed (run with --exact to state the closed forms'"
+            " errors against it)."
         )
         return Section("Accuracy", tuple(Paragraph(t) for t in text))
     text.append(
@@ -277,7 +209,7 @@ def _crank_accuracy(amp: dict) -> Section:
     )
     rows = [
         (key.replace("_", " "), *_largest_peak_errors(err))
-        for key, err in (amp.get("errors") or {}).items()
+        for key, err in (exact.get("errors") or {}).items()
         if err is not None
     ]
     errors = table(
@@ -288,20 +220,19 @@ def _crank_accuracy(amp: dict) -> Section:
     return Section("Accuracy", (*(Paragraph(t) for t in text), errors))
 
 
-def crank_sheet(title: TitleBlock, inputs: Section, res: dict, amp: dict, figures: tuple[Figure, ...], units: DisplayUnits) -> Sheet:
-    """The sheet of a crank foundation from the ``resonance`` and ``amplitudes`` JSON documents."""
-    sections = (
-        _title_section(title),
-        inputs,
+def crank_sections(docs: dict, figures: tuple[Figure, ...], units: DisplayUnits, exact: dict | None) -> tuple[Section, ...]:
+    """The sections of a crank foundation's sheet from the ``resonance`` and ``amplitudes``
+    documents of its checks (``exact``: the amplitudes document of ``--exact``, or None)."""
+    res, amp = docs["resonance"], docs["amplitudes"]
+    mechanism = "mu" in res["derived"]
+    return (
         _crank_derived(res, units),
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
-        _crank_checks(res, amp, units),
-        _equation_section(equations.CRANK + (equations.LOADS if amp.get("loads") else ())),
+        _equation_section((equations.CRANK if mechanism else ()) + (equations.LOADS if amp.get("loads") else ())),
         Section("Plots", figures),
-        _crank_accuracy(amp),
+        _crank_accuracy(amp, exact, mechanism),
     )
-    return Sheet(f"Calculation sheet: {title.name}", sections)
 
 
 # --------------------------------------------------------------------------- platform
@@ -390,72 +321,13 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     return Section("6-DOF verification", (verification, freqs, sens))
 
 
-def _ratio(demand: float, limit: float) -> str:
-    return num(demand / limit, 4) if limit > 0 else "-"
-
-
-def _platform_measures(doc: dict, limits: dict) -> dict[str, tuple[str, str, str, str]]:
-    """Value, limit, ratio (demand/limit; above 1 fails or warns) and the limit's source of each check."""
-    d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
-    detuning, height = limits["detuning"], limits["exciter_height_ratio"]
-    closest = min(f["margin"] for f in doc["natural_frequencies"])
-    worst = max(
-        (x for s in doc["sensitivity"] for k, x in s.items() if k.startswith(("rocking_percent", "static_offset")) and x is not None),
-        default=0.0,
-    )
-    resonant = [s["parameter"] for s in doc["sensitivity"] if s["resonance"]]
-    return {
-        "exciter height": (
-            (f"c/ζ = {num(d['c'] / zeta, 4)}", f"≤ {num(height)}", _ratio(d["c"] / zeta, height), "scene [limits] exciter_height_ratio")
-            if d["c"] >= 0 and zeta > 0
-            else (f"c = {num(d['c'])} m", "c ≥ 0 (above the support plane)", "-", "design rule")
-        ),
-        "regime margin": (
-            pct(d["regime_margin"]), "≥ " + pct(detuning), _ratio(detuning, d["regime_margin"]), "scene [limits] detuning"
-        ),
-        "natural frequencies": (
-            "closest " + pct(closest), "≥ " + pct(detuning), _ratio(detuning, closest), "scene [limits] detuning"
-        ),
-        "rocking": (
-            f"{num(v['rocking_percent'], 4)} % of u",
-            f"≤ {num(limits['rocking_percent'])} % of u",
-            _ratio(v["rocking_percent"], limits["rocking_percent"]),
-            "scene [limits] rocking_percent",
-        ),
-        "tolerances": (
-            ("resonant: " + ", ".join(resonant)) if resonant else f"worst {num(worst, 4)} % of u",
-            f"no resonance, ≤ {num(limits['rocking_percent'])} % of u",
-            "-" if resonant else _ratio(worst, limits["rocking_percent"]),
-            "scene [limits] rocking_percent",
-        ),
-    }
-
-
-def _platform_checks(doc: dict, limits: dict) -> Section:
-    measures = _platform_measures(doc, limits)
-    rows = []
-    for c in doc["checks"]:
-        value, limit, ratio, source = measures.get(c["name"], ("-", "-", "-", "-"))
-        rows.append((c["name"], value, limit, ratio, c["verdict"].upper(), source))
-    checks = table(
-        "Every check (ratio = demand/limit; above 1 fails or warns)",
-        ("check", "value", "limit", "ratio", "verdict", "limit's source"),
-        rows,
-        (False, True, True, True, False, False),
-    )
-    findings = table("Findings", ("check", "finding"), ((c["name"], c["message"]) for c in doc["checks"]), (False, False))
-    return Section("Checks", (checks, findings, Paragraph(f"Verdict: {doc['verdict'].upper()}.")))
-
-
-def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, limits: dict, units: DisplayUnits) -> Sheet:
-    """The sheet of a vibrating platform from the ``platform`` JSON document and the scene's ``[limits]``."""
-    sections = (
-        _title_section(title),
-        inputs,
+def platform_sections(docs: dict, units: DisplayUnits) -> tuple[Section, ...]:
+    """The sections of a vibrating platform's sheet from the ``design`` check's document."""
+    doc = docs["design"]
+    return (
         _platform_inputs(doc, units),
         _platform_design(doc, units),
         _platform_verification(doc, units),
-        _platform_checks(doc, limits),
         _equation_section(equations.PLATFORM),
         Section(
             "Accuracy",
@@ -471,4 +343,3 @@ def platform_sheet(title: TitleBlock, inputs: Section, doc: dict, limits: dict, 
             ),
         ),
     )
-    return Sheet(f"Calculation sheet: {title.name}", sections)

@@ -1,80 +1,92 @@
-"""Run the checks of one scene and make the sheet: the same result documents as ``--json``."""
+"""Run the checks of one scene, as ``fcalc check`` does, and make its sheet from what they judged."""
 
 from __future__ import annotations
 
-import hashlib
-from datetime import datetime, timezone
 from pathlib import Path
 
-from foundation_calc import __version__
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.report.contents import (
-    TitleBlock,
-    crank_sheet,
-    operating_speed,
-    platform_sheet,
-    sweep_series,
-)
+from foundation_calc.output.report.contents import crank_sections, operating_speed, platform_sections, sweep_series
 from foundation_calc.output.report.inputs import inputs_section
-from foundation_calc.output.report.model import Sheet
+from foundation_calc.output.report.model import Section, Sheet
+from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
+from foundation_calc.output.report.verdict import checks_section, summary_section
 
 #: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
 SWEEP_RANGE = (0.05, 2.5)
 SWEEP_POINTS = 1001
 
 
-def title_block(path: Path, name: str, command: str) -> TitleBlock:
-    """The title block of a sheet for the scene file at ``path``."""
-    digest = hashlib.sha256(path.read_bytes()).hexdigest()
-    date = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M:%S")
-    return TitleBlock(name or path.name, str(path), digest, __version__, date, command)
-
-
-def crank_documents(loaded, source: str, exact: bool) -> dict:
-    """The ``resonance``, ``amplitudes`` and speed-``sweep`` JSON documents of a crank scene."""
+def sweep_figure_of(loaded, units: DisplayUnits, omega: float):
+    """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands)."""
     import numpy as np
 
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes, scene_vendor_loads
-    from foundation_calc.checks.crank_resonance import check_scene_resonances
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
     from foundation_calc.checks.crank_sweep import sweep
-    from foundation_calc.output.crank_amplitudes import amplitudes_document
-    from foundation_calc.output.crank_resonance import resonance_document
+    from foundation_calc.output.report.figures import sweep_figure
     from foundation_calc.output.sweep_report import sweep_document
 
-    resonance = check_scene_resonances(loaded)
-    amplitudes = check_scene_amplitudes(loaded, exact=exact)
     design = None if loaded.mechanism is None else loaded.design()
     omegas = loaded.speed.omega_rad_s * np.linspace(*SWEEP_RANGE, SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
-    return {
-        "resonance": resonance_document(resonance, loaded, source),
-        "amplitudes": amplitudes_document(amplitudes, loaded, source),
-        "sweep": sweep_document(swept, source, loaded.name),
-    }
+    return sweep_figure(sweep_series(sweep_document(swept, "", loaded.name)), omega, units)
 
 
-def platform_documents(loaded, source: str) -> dict:
-    """The ``platform`` JSON document of a platform scene."""
-    from foundation_calc.checks.platform import check_platform
-    from foundation_calc.output.platform import platform_document
+def exact_amplitudes(loaded) -> dict | None:
+    """The ``amplitudes`` document with the exact periodic solution (``--exact``), for the
+    accuracy statement; None for a machine given by its loads (already exact)."""
+    if loaded.kind != "crank_foundation" or loaded.mechanism is None:
+        return None
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.output.crank_amplitudes import amplitudes_document
 
-    report = check_platform(loaded.design(), loaded.model(), loaded.limits, loaded.inertia_given)
-    return {"platform": platform_document(report, loaded, source, loaded.operation.speed_given_as)}
+    return amplitudes_document(check_scene_amplitudes(loaded, exact=True), loaded, "")
 
 
-def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False) -> tuple[Sheet, dict]:
-    """Load the scene at ``path``, run its checks and return its sheet and the JSON documents."""
-    from foundation_calc.scenes import parse_scene, read_toml
+def raise_unjudged(runs, source: str) -> None:
+    """Raise as the single-scene commands would when a check could not judge the scene: a
+    :class:`SceneError` for an invalid scene (exit 3), ``RuntimeError`` for a bug (exit 4)."""
+    from foundation_calc.errors import SceneError
 
-    loaded = parse_scene(read_toml(path), source=str(path))
-    title = title_block(path, loaded.name, command)
-    inputs = inputs_section(loaded, units)
-    if loaded.kind == "platform":
-        docs = platform_documents(loaded, str(path))
-        return platform_sheet(title, inputs, docs["platform"], loaded.limits.model_dump(), units), docs
-    from foundation_calc.output.report.figures import sweep_figure
+    for run in runs:
+        if run.verdict == "invalid":
+            raise SceneError(source, list(run.problems))
+        if run.verdict == "internal":
+            raise RuntimeError(f"check {run.check}: {run.problems[0][1]}")
 
-    docs = crank_documents(loaded, str(path), exact)
-    figure = sweep_figure(sweep_series(docs["sweep"]), operating_speed(docs["resonance"]), units)
-    return crank_sheet(title, inputs, docs["resonance"], docs["amplitudes"], (figure,), units), docs
+
+def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
+    """What a scene kind shows besides its checks (nothing for a kind without its own sections)."""
+    if loaded.kind == "platform" and "design" in documents:
+        return platform_sections(documents, units)
+    if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
+        plots = (sweep_figure_of(loaded, units, operating_speed(documents["resonance"])),) if figures else ()
+        return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)
+    return ()
+
+
+def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True):
+    """Load the scene at ``path``, run the checks ``fcalc check`` runs on it and return its sheet
+    and the :class:`~foundation_calc.checks.batch.SceneRun` (whose exit code is ``fcalc check``'s);
+    ``figures=False`` leaves the plots out (matplotlib's part of the time)."""
+    from foundation_calc.checks.batch import SceneRun, run_checks
+    from foundation_calc.output.check_report import result_document
+    from foundation_calc.scenes import load_scene
+
+    source = str(path)
+    loaded = load_scene(path)
+    runs = run_checks(loaded)
+    raise_unjudged(runs, source)
+    warnings = tuple(loaded.plausibility_warnings())
+    scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
+    documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
+    title = title_block(path, loaded, command)
+    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units)]
+    sections += _kind_sections(loaded, documents, units, exact, figures)
+    if "runup" in documents:
+        from foundation_calc.output.report.runup_section import runup_section
+
+        report = next(run.report for run in runs if run.check == "runup")
+        sections.append(runup_section(documents["runup"], report, loaded, units, figures))
+    sections.append(checks_section(runs, documents, loaded, units))
+    return Sheet(sheet_title(title), tuple(sections), page_header(title)), scene_run

@@ -13,6 +13,13 @@ from foundation_calc.output.report.model import Figure
 LABEL_GAP = 0.04
 
 
+def _bands(detuning) -> str:
+    """``"±20 %"`` for one band, ``"1ω ±20 %, 2ω ±20 %"`` for a band per order."""
+    if isinstance(detuning, dict):
+        return ", ".join(f"{k}ω ±{v:.0%}" for k, v in sorted(detuning.items(), key=lambda kv: int(kv[0])))
+    return f"±{detuning:.0%}"
+
+
 def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
     """Peaks of C against the crank speed [rad/s] with the operating speed and the detuning bands shaded."""
     import matplotlib.pyplot as plt
@@ -25,14 +32,13 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     limit = series.amplitude_limit
     if limit is not None:
         ax.axhline(units.convert("amplitude", limit), color="red", linestyle="--", label="amplitude limit")
-    band = series.detuning
     lo, hi = min(xs), max(xs)
     shown = sorted(
-        (units.convert("speed", omega), label, source) for label, source, omega in series.critical
+        (units.convert("speed", omega), label, source, band) for label, source, omega, band in series.critical
         if lo <= units.convert("speed", omega) <= hi
     )
     previous, level = -float("inf"), 0
-    for centre, label, source in shown:
+    for centre, label, source, band in shown:
         colour = "tab:red" if source == "paper" else "tab:orange"
         ax.axvspan(centre * (1 - band), centre * (1 + band), color=colour, alpha=0.12, linewidth=0)
         level = (level + 1) % 3 if centre - previous < LABEL_GAP * (hi - lo) else 0  # stagger close labels
@@ -51,7 +57,8 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     svg = buffer.getvalue()
     svg = svg[svg.index("<svg"):]  # drop the XML prolog and DOCTYPE so the SVG can sit inline in HTML
     caption = (
-        f"Closed-form peaks ({series.method}) against the crank speed; shaded: the ±{band:.0%} detuning"
-        " band of each resonance (red: the paper's conditions, orange: extra ones); black line: the operating speed."
+        f"Closed-form peaks ({series.method}) against the crank speed; shaded: the detuning band of each"
+        f" resonance's order ({_bands(series.detuning)}; red: the paper's conditions, orange: the others);"
+        " black line: the operating speed."
     )
     return Figure(svg, caption)

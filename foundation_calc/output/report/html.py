@@ -17,6 +17,7 @@ td { overflow-wrap: break-word; }
 .eq { margin: 0.4em 0; page-break-inside: avoid; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
 figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; height: auto; }
 @page { size: A4; margin: 15mm; }
+.header { font-size: 8pt; color: #555; border-bottom: 1px solid #ccc; }
 """
 
 
@@ -49,6 +50,7 @@ def render(sheet: Sheet) -> str:
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
         f"<title>{escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
+        f'<div class="header">{escape(sheet.header or sheet.title)}</div>',
         f"<h1>{escape(sheet.title)}</h1>",
     ]
     for number, section in enumerate(sheet.sections, 1):

@@ -51,6 +51,8 @@ def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
     header = ("key", "symbol", "value", "unit", "meaning")
     blocks = []
     for name in type(scene).model_fields:
+        if name == "project":  # the title block shows it
+            continue
         value = getattr(scene, name)
         groups = [(f"[{name}]", value)] if isinstance(value, BaseModel) else []
         groups += [

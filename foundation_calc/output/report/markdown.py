@@ -31,7 +31,7 @@ def _table(t: Table) -> list[str]:
 
 def render(sheet: Sheet, figure_names: list[str]) -> str:
     """The Markdown text; figures are referenced as the SVG files ``figure_names`` (in order)."""
-    lines = [f"# {escape(sheet.title)}", ""]
+    lines = [escape(sheet.header or sheet.title), "", f"# {escape(sheet.title)}", ""]
     figures = iter(figure_names)
     for number, section in enumerate(sheet.sections, 1):
         lines += [f"## {number}. {escape(section.title)}", ""]

@@ -57,10 +57,11 @@ class Section:
 
 @dataclass(frozen=True)
 class Sheet:
-    """The whole calculation sheet."""
+    """The whole calculation sheet; ``header`` runs on every page before "page n of N"."""
 
     title: str
     sections: tuple[Section, ...] = field(default_factory=tuple)
+    header: str = ""
 
 
 def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None) -> Table:

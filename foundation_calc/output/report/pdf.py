@@ -11,8 +11,7 @@ from pathlib import Path
 
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
-PREAMBLE = """#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), numbering: "1 / 1")
-#set text(size: 9pt)
+PREAMBLE = """#set text(size: 9pt)
 #set par(justify: false)
 #set heading(numbering: "1.")
 #show table.cell.where(y: 0): strong
@@ -64,10 +63,19 @@ def _block(block, figures: list[str]) -> str:
     raise TypeError(type(block).__name__)
 
 
+def _page(header: str) -> str:
+    """A4 pages headed "``header`` · page n of N"."""
+    return (
+        '#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), header: context {'
+        f" set text(size: 8pt, fill: luma(80)); {string(header + ' · page ')} + str(counter(page).get().first())"
+        ' + " of " + str(counter(page).final().first()) })\n'
+    )
+
+
 def source(sheet: Sheet) -> tuple[str, list[str]]:
     """The typst source of the sheet and the SVG texts of its figures (``figureN.svg``)."""
     figures: list[str] = []
-    parts = [PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {string(sheet.title)}))\n"]
+    parts = [_page(sheet.header or sheet.title), PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {string(sheet.title)}))\n"]
     for section in sheet.sections:
         parts.append(f"#heading(level: 1, {string(section.title)})\n")
         parts += [_block(b, figures) for b in section.blocks]

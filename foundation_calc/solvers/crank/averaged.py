@@ -159,6 +159,16 @@ def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
     return np.where(inertia > 0.0, damping / np.where(inertia > 0.0, inertia, 1.0), 0.0)
 
 
+def averaged_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
+    """M̄, C̄, K̄ (3, 3) of the exact equations linearised about rest and averaged over a
+    revolution, and the cosine and sine coefficients (3, :data:`FORCING_HARMONICS` + 1) of the
+    exact forcing -r0 (module docstring); order x, y, θ."""
+    lin = linearise(design, phases(FORCING_SAMPLES))
+    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
+    return M, C, K, fc, fs
+
+
 def averaged_response(design: CrankDesign) -> AveragedResponse:
     """Forced steady state with the time-averaged operator and the exact forcing (module docs).
 
@@ -177,8 +187,7 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
     '4.038206e-04 -2.451694e-04'
     """
     require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
-    lin = linearise(design, phases(FORCING_SAMPLES))
-    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    M, C, K, fc, fs = averaged_operator(design)
     natural, shapes = _modes(M, K)
     ratios = modal_damping_ratios(M, base_dashpot_matrix(design), natural, shapes)
     n = np.arange(FORCING_HARMONICS + 1)
@@ -189,7 +198,6 @@ def averaged_response(design: CrankDesign) -> AveragedResponse:
     margin = float(margins.min())
     undamped = margins[:, ratios < UNDAMPED_RATIO]
     resonant = bool(undamped.size) and float(undamped.min()) < RESONANT_MARGIN
-    fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
     if resonant:
         Z = np.zeros((3, FORCING_HARMONICS + 1), dtype=complex)
     else:
@@ -217,6 +225,7 @@ __all__ = [
     "FORCING_SAMPLES",
     "AveragedResponse",
     "LinearOperator",
+    "averaged_operator",
     "averaged_response",
     "base_dashpot_matrix",
     "linearise",

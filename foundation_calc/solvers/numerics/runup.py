@@ -29,7 +29,6 @@ from foundation_calc.solvers.numerics.sweep_response import (
     RotatingLoad,
     SweepResponse,
     integrate,
-    point_displacements,
     refined_peak,
     time_step,
 )
@@ -126,8 +125,11 @@ class RunupResult:
     ----------
     natural : undamped natural frequencies [rad/s], ascending
     passages : every passage, in the order of time
-    steady_points : peak displacement of each point in the steady state at ``omega`` [m]
-    transient_points : peak displacement of each point over the whole run [m]
+    steady_points : peak displacement magnitude |u| of each point in the steady state at
+        ``omega`` [m]
+    transient_points : peak displacement magnitude |u| of each point over the whole run [m]
+    steady_directions, transient_directions : the same along each direction of a point (the
+        rows of its map), shape (P, d) [m]
     response : the time integration's record
     damped : the structure has damping
     """
@@ -139,6 +141,8 @@ class RunupResult:
     passages: tuple
     steady_points: np.ndarray
     transient_points: np.ndarray
+    steady_directions: np.ndarray
+    transient_directions: np.ndarray
     response: SweepResponse
     damped: bool
 
@@ -154,9 +158,10 @@ def _moving(load: RotatingLoad) -> RotatingLoad:
     return RotatingLoad(load.ratio, load.inertial, constant)
 
 
-def steady_peaks(structure: Structure, omega) -> tuple[np.ndarray, np.ndarray]:
-    """Peak displacement of each point in the steady state at ``omega`` [rad/s] [m], and the
-    state (q [m], q' [m/s]) at φ = 0."""
+def steady_peaks(structure: Structure, omega) -> tuple[np.ndarray, np.ndarray, tuple]:
+    """Peak displacement magnitude of each point in the steady state at ``omega`` [rad/s] [m],
+    shape (P,), its peak along each direction of the point [m], shape (P, d), and the state
+    (q [m], q' [m/s]) at φ = 0."""
     load = _moving(structure.load)
     Z = load.steady(structure.mass, structure.damping, structure.stiffness, omega)
     w = load.ratio * omega
@@ -164,9 +169,9 @@ def steady_peaks(structure: Structure, omega) -> tuple[np.ndarray, np.ndarray]:
     span = STEADY_PERIODS * 2.0 * np.pi / slowest if np.isfinite(slowest) else 1.0
     t = np.linspace(0.0, span, STEADY_SAMPLES, endpoint=False)
     q = (Z.T @ np.exp(1j * np.outer(w, t))).real
-    disp = point_displacements(structure.points, q)
+    vectors = np.einsum("pdn,nt->pdt", structure.points, q)
     state = (Z.sum(axis=0).real, (1j * w[:, None] * Z).sum(axis=0).real)
-    return disp.max(axis=1), state
+    return np.linalg.norm(vectors, axis=1).max(axis=1), np.abs(vectors).max(axis=2), state
 
 
 def modes(structure: Structure):
@@ -249,7 +254,7 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     load = _moving(structure.load)
     M, C, K = structure.mass, structure.damping, structure.stiffness
     natural, shapes = modes(structure)
-    steady_points, (q_ss, v_ss) = steady_peaks(structure, omega)
+    steady_points, steady_directions, (q_ss, v_ss) = steady_peaks(structure, omega)
     if direction > 0:
         ramp = Ramp(0.0, omega, duration)
         q0 = np.linalg.solve(K, load.at(np.zeros(1), np.zeros(1), np.zeros(1))[:, 0])
@@ -277,7 +282,7 @@ def runup(structure: Structure, omega, duration, direction) -> RunupResult:
     return RunupResult(
         direction=direction, duration=float(duration), omega=float(omega), natural=natural,
         passages=tuple(shown), steady_points=steady_points, transient_points=response.point_peaks,
-        response=response, damped=structure.damped,
+        steady_directions=steady_directions, transient_directions=response.direction_peaks, response=response, damped=structure.damped,
     )
 
 

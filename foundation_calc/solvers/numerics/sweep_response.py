@@ -102,6 +102,8 @@ class SweepResponse:
     t : times [s], shape (N,)
     magnitude : largest displacement magnitude over the points at each time [m], shape (N,)
     point_peaks : largest displacement magnitude of each point over the run [m], shape (P,)
+    direction_peaks : largest |displacement| of each point along each of its directions (the
+        rows of its map) over the run [m], shape (P, d)
     observed : |W q| of the observer rows W at each time, shape (m, N)
     step : time step [s]
     """
@@ -109,6 +111,7 @@ class SweepResponse:
     t: np.ndarray
     magnitude: np.ndarray
     point_peaks: np.ndarray
+    direction_peaks: np.ndarray
     observed: np.ndarray
     step: float
 
@@ -179,6 +182,7 @@ def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, poin
     u_prev = None
     magnitude = np.empty(steps + 1)
     point_peaks = np.zeros(points.shape[0])
+    direction_peaks = np.zeros(points.shape[:2])
     observed = np.empty((observers.shape[0], steps + 1))
     for start in range(0, steps + 1, CHUNK):
         tc = t[start : start + CHUNK]
@@ -198,11 +202,14 @@ def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, poin
                 z[k], _ = lfilter([b1[k], b0[k]], [1.0, -E[k]], u, zi=zi)
         z_prev, u_prev = z[:, -1], u_all[:, -1]
         q = (back @ z).real
-        disp = point_displacements(points, q)
+        vectors = np.einsum("pdn,nt->pdt", points, q)
+        disp = np.linalg.norm(vectors, axis=1)
         magnitude[start : start + tc.size] = disp.max(axis=0)
         observed[:, start : start + tc.size] = np.abs(observers @ q)
         point_peaks = np.maximum(point_peaks, disp.max(axis=1))
-    return SweepResponse(t=t, magnitude=magnitude, point_peaks=point_peaks, observed=observed, step=step)
+        direction_peaks = np.maximum(direction_peaks, np.abs(vectors).max(axis=2))
+    return SweepResponse(t=t, magnitude=magnitude, point_peaks=point_peaks, direction_peaks=direction_peaks,
+                         observed=observed, step=step)
 
 
 def refined_peak(t, values, lo, hi):

@@ -28,6 +28,11 @@ preload combined). Damping of the isolators: a hysteretic loss factor η multipl
 The rotor's own inertia about its axis is neglected (point masses), as in the paper's design
 (e × J e = 0).
 
+The rigid-body parts (parallel axes, the springs carried from the corners, the weight's tilt, the
+modes) are those of :mod:`foundation_calc.solvers.rigid_body`, shared with the block foundation
+(``block_inertia`` is re-exported from there); this module adds what is the platform's own, the
+rotors.
+
 Every coefficient is a trigonometric polynomial in the φ_j (harmonic vectors 0, ±e_j, ±2e_j);
 :func:`periodic_system` returns their Fourier coefficients and
 :mod:`~foundation_calc.solvers.platform.harmonic_balance` solves for the steady state.
@@ -46,7 +51,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from foundation_calc.errors import ConvergenceError, PhysicsError
+from foundation_calc.errors import PhysicsError
+from foundation_calc.solvers.rigid_body.inertia import block_inertia, parallel_axis, skews
+from foundation_calc.solvers.rigid_body.kinematics import springs_at, weight_tilt
+from foundation_calc.solvers.rigid_body.modes import dominant_motions, eigen
 
 E3 = np.array([0.0, 0.0, 1.0])
 
@@ -126,48 +134,17 @@ class RigidPlatform:
         return np.array([[0.0, 0.0, 0.0], [A, 0.0, 0.0], [A, B, 0.0], [0.0, B, 0.0]])
 
 
-def skew(v) -> np.ndarray:
-    """Cross-product matrix: skew(v) @ w == v × w (complex v allowed)."""
-    v = np.asarray(v)
-    return np.array([[0 * v[0], -v[2], v[1]], [v[2], 0 * v[0], -v[0]], [-v[1], v[0], 0 * v[0]]])
-
-
-def point_map(p) -> np.ndarray:
-    """T with T q = displacement of body point p, R + Φ × p, shape 3×6."""
-    return np.hstack([np.eye(3), -skew(p)])
-
-
-def block_inertia(M, A, B, H):
-    """Central principal moments of a homogeneous block A × B × H of mass M [kg m²].
-
-    >>> block_inertia(12.0, 1.0, 2.0, 3.0)
-    (13.0, 10.0, 5.0)
-    """
-    return M * (B * B + H * H) / 12.0, M * (A * A + H * H) / 12.0, M * (A * A + B * B) / 12.0
-
-
 def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
     """J_O1 = J_c + M (|r_c|² I - r_c r_cᵀ) (parallel axes) [kg m²]."""
-    r = np.asarray(r_c, dtype=float)
-    return np.diag(np.asarray(J_c, dtype=float)) + M * (r @ r * np.eye(3) - np.outer(r, r))
+    return parallel_axis(M, r_c, J_c)
 
 
 def spring_stiffness(platform: RigidPlatform) -> np.ndarray:
     """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m]."""
-    T = np.concatenate([np.broadcast_to(np.eye(3), (4, 3, 3)), -skews(platform.corners)], axis=2).reshape(12, 6)
-    return T.T @ (np.asarray(platform.stiffness, dtype=float).reshape(12, 1) * T)
+    return springs_at(platform.corners, platform.stiffness)
 
 
 # ---- trigonometric polynomials of one rotor: arrays over the offsets -2..2 of its angle ----
-
-
-def skews(v) -> np.ndarray:
-    """:func:`skew` of each vector of a stack, shape (..., 3) -> (..., 3, 3)."""
-    v = np.asarray(v)
-    out = np.zeros(v.shape + (3,), dtype=v.dtype)
-    out[..., 0, 1], out[..., 0, 2], out[..., 1, 2] = -v[..., 2], v[..., 1], -v[..., 0]
-    out[..., 1, 0], out[..., 2, 0], out[..., 2, 1] = v[..., 2], -v[..., 1], v[..., 0]
-    return out
 
 
 def _product(a, b, kind: str) -> np.ndarray:
@@ -319,7 +296,7 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
     gyro, stiff = np.zeros_like(mass), np.zeros_like(mass)
     gyro[:, :3, 3:], gyro[:, 3:, 3:] = parts["G_R"], parts["G_P"]
     stiff[:, :3, 3:], stiff[:, 3:, 3:] = parts["K_R"], parts["K_P"]
-    stiff[0] += springs - platform.g * zeta_s * np.diag([0, 0, 0, 1.0, 1.0, 0])
+    stiff[0] += springs + weight_tilt(platform.g, zeta_s)  # W z_G = g Σ m z
     by_key = np.lexsort(keys.T[::-1])
     S_mean = S_tot[0].real
     static = np.array([0.0, 0.0, -M_sigma * platform.g, -platform.g * S_mean[1], platform.g * S_mean[0], 0.0])  # -g S × e3
@@ -357,9 +334,7 @@ def natural_frequencies(platform: RigidPlatform, rotors, system: PeriodicSystem 
     p2, shapes = _mean_eigen(system, float(np.hypot(platform.A, platform.B)))
     r_c = np.asarray(platform.r_c, dtype=float)
     J_c = platform.J_O1 - platform.M * (r_c @ r_c * np.eye(3) - np.outer(r_c, r_c))
-    at_cog = shapes[:3] - skew(r_c) @ shapes[3:]  # translation of the centre of mass
-    energy = np.vstack([platform.M * at_cog**2, np.diag(J_c)[:, None] * shapes[3:] ** 2])
-    dominant = tuple(COORDINATES[int(np.argmax(energy[:, i]))] for i in range(6))
+    dominant = tuple(COORDINATES[int(i)] for i in dominant_motions(shapes, platform.M, r_c, np.diag(J_c)))
     if p2[0] <= UNRESTRAINED * p2[-1] and p2[0] > -UNRESTRAINED * p2[-1]:
         raise PhysicsError(
             f"the platform is not restrained in {dominant[0]}: the isolators give that motion no stiffness"
@@ -380,18 +355,7 @@ def natural_frequencies(platform: RigidPlatform, rotors, system: PeriodicSystem 
 def _mean_eigen(system: PeriodicSystem, length: float):
     """p² (ascending) and mass-normalised shapes of K0 v = p² M0 v (:func:`natural_frequencies`), for
     one system or a stack; ``length``: the platform's diagonal [m]."""
-    # rotations scaled by the platform's diagonal, so translations and rotations are alike in size
-    D = np.diag([1.0, 1.0, 1.0] + [1.0 / length] * 3)
-    M0, K0 = D @ system.mass[..., 0, :, :].real @ D, D @ system.stiff[..., 0, :, :].real @ D
-    try:
-        Li = np.linalg.inv(np.linalg.cholesky(0.5 * (M0 + np.swapaxes(M0, -1, -2))))
-        p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + np.swapaxes(K0, -1, -2))) @ np.swapaxes(Li, -1, -2))
-    except np.linalg.LinAlgError:
-        raise ConvergenceError(
-            "the 6-DOF natural frequencies cannot be computed in double precision: the platform's"
-            " masses, sizes and stiffnesses span too many orders of magnitude"
-        ) from None
-    return p2, D @ np.swapaxes(Li, -1, -2) @ v
+    return eigen(system.stiff[..., 0, :, :].real, system.mass[..., 0, :, :].real, length)
 
 
 def stacked_frequencies(system: PeriodicSystem, length: float) -> np.ndarray:

@@ -23,7 +23,8 @@ from scipy.linalg import eigh
 from foundation_calc.solvers.numerics.runup import Structure
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.platform.design import PlatformDesign
-from foundation_calc.solvers.platform.dynamics import periodic_system, point_map
+from foundation_calc.solvers.platform.dynamics import periodic_system
+from foundation_calc.solvers.rigid_body.kinematics import point_map
 from foundation_calc.solvers.platform.verification import PlatformModel, build, product_corners
 
 #: Two speed ratios are one harmonic when they differ by less than this [-].

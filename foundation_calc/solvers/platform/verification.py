@@ -24,12 +24,12 @@ from foundation_calc.solvers.platform.dynamics import (
     inertia_about_corner,
     natural_frequencies,
     periodic_system,
-    point_map,
-    skews,
     spring_stiffness,
     stack,
     stacked_frequencies,
 )
+from foundation_calc.solvers.rigid_body.inertia import skews
+from foundation_calc.solvers.rigid_body.kinematics import point_map
 from foundation_calc.solvers.platform.harmonic_balance import (
     SteadyState,
     VariantBasis,

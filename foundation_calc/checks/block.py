@@ -1,0 +1,198 @@
+"""Checks of a block foundation: resonance margins of every machine's orders from every mode,
+the damped steady state against [limits] and a vibration code, and the office checks.
+
+Resonances: each order n of each machine against each of the six modes, margin
+|n ω - p_j| / p_j, judged by the one rule of every kind
+(:func:`~foundation_calc.checks.outcomes.resonance_outcome`): a mode is *driven* by an order when
+that order's loads put a modal force on it (:data:`~foundation_calc.solvers.block.response.DRIVEN_FRACTION`).
+
+Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
+displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
+several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
+values add as root-sum-square). A code zone judges each point's largest RMS velocity.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
+from foundation_calc.checks.office import OfficeRow, office_rows
+from foundation_calc.checks.outcomes import Outcome, resonance_outcome, worst
+from foundation_calc.solvers.block.response import (
+    BlockModes,
+    PointMotion,
+    block_modes,
+    point_motion,
+    resonances,
+    resonant,
+)
+from foundation_calc.units import rpm_from_omega
+
+DIRECTIONS = ("x", "y", "z")
+
+
+@dataclass(frozen=True)
+class ResonanceRow:
+    """One order of one machine against one mode; speeds in rad/s."""
+
+    machine: str
+    order: int
+    mode: int
+    motion: str
+    natural: float
+    critical: float
+    margin: float
+    driven: bool
+    outcome: Outcome
+
+
+@dataclass(frozen=True)
+class ZoneRow:
+    """A point's largest RMS velocity in the zones of a vibration code."""
+
+    point: str
+    direction: str
+    value: float
+    zone: str
+    limit: float
+    outcome: Outcome
+    table: ZoneTable
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    @property
+    def verdict_text(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid: zone B, 1.9 mm/s RMS (x)"``."""
+        return f"{self.table.title}: zone {self.zone}, {self.value * 1e3:.3g} mm/s RMS ({self.direction})"
+
+
+@dataclass(frozen=True)
+class BlockReport:
+    """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene."""
+
+    modes: BlockModes
+    speeds: dict
+    resonance_rows: tuple[ResonanceRow, ...]
+    resonant: bool
+    motion: PointMotion | None
+    limit_rows: tuple[LimitRow, ...]
+    zone_rows: tuple[ZoneRow, ...]
+    code_warnings: tuple[str, ...]
+    office: tuple[OfficeRow, ...]
+    total_mass: float
+    cog: np.ndarray
+
+    @property
+    def resonance_outcome(self) -> Outcome:
+        return worst(r.outcome for r in self.resonance_rows)
+
+    @property
+    def amplitude_outcome(self) -> Outcome:
+        if self.resonant:
+            return Outcome.FAIL
+        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows])
+
+    @property
+    def office_outcome(self) -> Outcome:
+        return worst(r.outcome for r in self.office)
+
+    @property
+    def nearest(self) -> ResonanceRow:
+        """The row of the smallest margin among the driven ones (or all, when none is driven)."""
+        driven = [r for r in self.resonance_rows if r.driven] or list(self.resonance_rows)
+        return min(driven, key=lambda r: r.margin)
+
+
+def resonance_rows(modes: BlockModes, excitations, detuning: float) -> tuple[ResonanceRow, ...]:
+    """Every order of every machine against every mode (module docstring)."""
+    rows = []
+    for exc in excitations:
+        res = resonances(modes, exc)
+        for h, n in enumerate(exc.orders):
+            for j, p in enumerate(modes.frequencies):
+                margin, driven = float(res.margin[h, j]), bool(res.driven[h, j])
+                rows.append(ResonanceRow(exc.name, int(n), j + 1, modes.dominant[j], float(p), float(res.critical[h, j]),
+                                         margin, driven, resonance_outcome(margin, detuning, driven)))
+    return tuple(rows)
+
+
+_VALUES = {
+    "displacement": "peak",
+    "velocity": "velocity_peak",
+    "displacement_rms": "displacement_rms",
+    "velocity_rms": "velocity_rms",
+}
+
+
+def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
+    """Each limited quantity (peak or RMS displacement or velocity) of every point and direction;
+    acceleration limits are not judged for a block (a crank scene's keys, accepted for files
+    shared between kinds, are left out)."""
+    rows = []
+    for quantity, limit in limited_quantities(limits).items():
+        if quantity not in _VALUES:
+            continue
+        values = getattr(motion, _VALUES[quantity])
+        for p, name in enumerate(motion.names):
+            for d, direction in enumerate(DIRECTIONS):
+                v = float(values[p, d])
+                rows.append(LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if exceeds(v, limit) else Outcome.PASS))
+    return tuple(rows)
+
+
+def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
+    """The code zone of every point's largest RMS velocity (none without ``[limits] code``)."""
+    if limits.code is None:
+        return ()
+    table = TABLES[limits.code, limits.machine_group, limits.foundation]
+    limit = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]  # zone B warns by default
+    rows = []
+    for p, name in enumerate(motion.names):
+        d = int(np.argmax(motion.velocity_rms[p]))
+        v = float(motion.velocity_rms[p, d])
+        z = zone(v, table)
+        rows.append(ZoneRow(name, DIRECTIONS[d], v, z, limit, zone_outcome(z, limits.acceptable_zone), table))
+    return tuple(rows)
+
+
+def check_block(scene) -> BlockReport:
+    """Modes, resonance margins, steady state, limits, code zones and office checks of a
+    ``block_foundation`` scene."""
+    model = scene.model()
+    excitations = scene.excitations()
+    modes = block_modes(model)
+    rows = resonance_rows(modes, excitations, scene.limits.detuning)
+    stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
+    motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points])
+    limits = scene.limits
+    warnings = ()
+    if limits.code is not None:
+        table = TABLES[limits.code, limits.machine_group, limits.foundation]
+        power = None if limits.machine_power is None else limits.machine_power / 1e3
+        found = []
+        for exc in excitations:
+            found += [f"{exc.name}: {w}" for w in application_warnings(table, rpm_from_omega(exc.omega), power) if "rpm" in w]
+        found += [w for w in application_warnings(table, rpm_from_omega(excitations[0].omega), power) if "rpm" not in w]
+        warnings = tuple(found)
+    return BlockReport(
+        modes=modes,
+        speeds={exc.name: exc.omega for exc in excitations},
+        resonance_rows=rows,
+        resonant=stuck,
+        motion=motion,
+        limit_rows=() if motion is None else limit_rows(motion, limits),
+        zone_rows=() if motion is None else zone_rows(motion, limits),
+        code_warnings=warnings,
+        office=office_rows(scene, model),
+        total_mass=model.mass,
+        cog=model.cog,
+    )
+
+
+__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "limit_rows", "resonance_rows", "zone_rows"]

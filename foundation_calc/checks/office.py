@@ -1,0 +1,116 @@
+"""Office checks of a block foundation that DYNA6 and ACI 351.3R calculation sheets carry:
+eccentricity of the combined centre of mass, static bearing pressure, foundation-to-machine
+mass ratio.
+
+Sources:
+
+- Eccentricity: ACI 351.3R-18 (Foundations for Dynamic Equipment), ch. 3, rules of thumb for
+  rigid block foundations, after Arya, O'Neill & Pincus (1979), *Design of Structures and
+  Foundations for Vibrating Machines*: the horizontal eccentricity of the combined centre of mass
+  from the centroid of the base contact area should not exceed 5 % of the base dimension in that
+  direction. A recommendation ("should"): over it the check **warns**.
+- Bearing pressure: statics. The base pressure of the total weight W with eccentricities
+  e_x, e_y (contact over the whole base, e within the kern) is at most
+  q_max = W / (L B) (1 + 6 |e_x| / L + 6 |e_y| / B); above the allowable of the scene
+  (``[limits] bearing_pressure``, from the geotechnical report) the check **fails**.
+- Mass ratio: the same rules of thumb: a block at least 2-3 times the mass of a rotating
+  machine and 3-5 times that of a reciprocating one. A rule of thumb, so below
+  ``[limits] mass_ratio`` (default 3) the check **warns**.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from foundation_calc.checks.outcomes import Outcome
+
+SOURCE_RULES = "ACI 351.3R-18, ch. 3 (rules of thumb)"
+
+
+@dataclass(frozen=True)
+class OfficeRow:
+    """One office check: the value, the limit, the verdict and where the rule comes from."""
+
+    name: str
+    value: float
+    limit: float
+    unit: str
+    outcome: Outcome
+    source: str
+    text: str
+
+
+def eccentricity_rows(cog_xy, L: float, B: float, allowed: float) -> list[OfficeRow]:
+    """Eccentricity of the combined centre of mass from the base centroid along x and y, as a
+    fraction of L and B [-]; warns above ``allowed``."""
+    rows = []
+    for axis, e, size in (("x", cog_xy[0], L), ("y", cog_xy[1], B)):
+        ratio = abs(float(e)) / size
+        outcome = Outcome.WARN if ratio > allowed else Outcome.PASS
+        rows.append(OfficeRow(
+            f"eccentricity {axis}", ratio, allowed, "-", outcome, SOURCE_RULES,
+            f"e_{axis} = {float(e):.4g} m is {ratio:.2%} of the base's {'length' if axis == 'x' else 'width'} {size:g} m"
+            f" ({'over' if ratio > allowed else 'within'} {allowed:.0%})",
+        ))
+    return rows
+
+
+def bearing_row(W: float, e_x: float, e_y: float, L: float, B: float, allowable: float) -> OfficeRow:
+    """Largest static base pressure q_max [Pa] (module docstring) against the allowable [Pa]."""
+    q = W / (L * B) * (1.0 + 6.0 * abs(e_x) / L + 6.0 * abs(e_y) / B)
+    return _bearing(q, allowable)
+
+
+def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
+    """Static base pressure W / S [Pa] of a crank foundation (its machine stands over the base's
+    centroid: no eccentricity) against the allowable [Pa]."""
+    return _bearing(W / S, allowable, "q = W/S")
+
+
+def _bearing(q: float, allowable: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
+    outcome = Outcome.FAIL if q > allowable else Outcome.PASS
+    return OfficeRow(
+        "bearing pressure", q, allowable, "Pa", outcome, "scene [limits] bearing_pressure",
+        f"{formula} = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
+        f" {allowable / 1e3:.4g} kPa",
+    )
+
+
+def mass_ratio_row(foundation: float, machines: float, required: float) -> OfficeRow:
+    """Foundation-to-machine mass ratio [-]; warns below ``required``."""
+    ratio = foundation / machines
+    outcome = Outcome.WARN if ratio < required else Outcome.PASS
+    return OfficeRow(
+        "mass ratio", ratio, required, "-", outcome, SOURCE_RULES,
+        f"block {foundation / 1e3:.4g} t / machines {machines / 1e3:.4g} t = {ratio:.3g}"
+        f" ({'below' if ratio < required else 'at least'} {required:g})",
+    )
+
+
+@dataclass(frozen=True)
+class OfficeReport:
+    """The office checks of a scene: its rows and their worst outcome."""
+
+    office: tuple[OfficeRow, ...]
+
+    @property
+    def office_outcome(self) -> Outcome:
+        from foundation_calc.checks.outcomes import worst
+
+        return worst(r.outcome for r in self.office)
+
+
+def office_rows(scene, model) -> tuple[OfficeRow, ...]:
+    """The office checks of a ``block_foundation`` scene (module docstring)."""
+    from foundation_calc.solvers.constants import GRAVITY
+
+    L, B = scene.base
+    limits = scene.limits
+    rows = eccentricity_rows(model.cog[:2], L, B, limits.eccentricity)
+    if limits.bearing_pressure is not None:
+        rows.append(bearing_row(model.mass * GRAVITY, model.cog[0], model.cog[1], L, B, limits.bearing_pressure))
+    rows.append(mass_ratio_row(scene.block.mass_properties[0], sum(m.mass for m in scene.machines), limits.mass_ratio))
+    return tuple(rows)
+
+
+__all__ = ["OfficeReport", "OfficeRow", "bearing_row", "crank_bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]

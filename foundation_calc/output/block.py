@@ -1,0 +1,241 @@
+"""Reports of a block foundation (``fcalc resonance``, ``amplitudes`` and ``check``): rich
+tables and JSON documents (SI units: m, rad, rad/s, Pa)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from foundation_calc.checks.block import DIRECTIONS, BlockReport
+from foundation_calc.checks.outcomes import worst
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.units import speed_triplet
+
+#: What each dominant motion is called in tables.
+MOTION_NAMES = {
+    "x": "sliding x (with rocking)", "y": "sliding y (with rocking)", "z": "vertical",
+    "rx": "rocking about x", "ry": "rocking about y", "rz": "torsion about z",
+}
+
+#: How several machines' amplitudes combine, said once wherever they are shown.
+COMBINATION = (
+    "several machines: peaks add (the sum of each machine's peak, an upper bound that unrelated speeds"
+    " reach in time); RMS values add as the root-sum-square of every harmonic"
+)
+
+
+def _header(scene, source: str) -> dict:
+    return {"source": source, "kind": scene.kind, "name": scene.name}
+
+
+def _modes(report: BlockReport) -> list[dict]:
+    m = report.modes
+    return [
+        {"mode": j + 1, "frequency": speed_triplet(float(p)), "dominant": m.dominant[j],
+         "dominant_name": MOTION_NAMES[m.dominant[j]], "damping_ratio": float(m.damping[j]),
+         "shape": [float(v) for v in m.shapes[:, j]]}
+        for j, p in enumerate(m.frequencies)
+    ]
+
+
+def resonance_document(report: BlockReport, scene, source: str, command: str = "resonance") -> dict:
+    """The JSON document of ``fcalc resonance`` for a block scene."""
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": command,
+        "scene": _header(scene, source),
+        "machines": {name: speed_triplet(w) for name, w in report.speeds.items()},
+        "total_mass": report.total_mass,
+        "centre_of_mass": [float(v) for v in report.cog],
+        "modes": _modes(report),
+        "resonances": [
+            {"condition": f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode}", "mode_name": MOTION_NAMES[r.motion],
+             "machine": r.machine, "order": r.order, "mode": r.mode, "dominant": r.motion,
+             "critical_speed": speed_triplet(r.critical), "margin": r.margin, "driven": r.driven,
+             "required": scene.limits.detuning, "verdict": r.outcome.value}
+            for r in report.resonance_rows
+        ],
+        "verdict": report.resonance_outcome.value,
+    }
+
+
+def _office(report: BlockReport) -> list[dict]:
+    return [
+        {"check": o.name, "value": o.value, "limit": o.limit, "unit": o.unit, "verdict": o.outcome.value,
+         "source": o.source, "text": o.text}
+        for o in report.office
+    ]
+
+
+def office_document(report, scene, source: str) -> dict:
+    """The office checks as a JSON document (``report``: a :class:`BlockReport` or an
+    :class:`~foundation_calc.checks.office.OfficeReport`)."""
+    return {"scene": _header(scene, source), "office": _office(report), "verdict": report.office_outcome.value}
+
+
+def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
+    """The JSON document of ``fcalc amplitudes`` for a block scene."""
+    doc = resonance_document(report, scene, source, "amplitudes")
+    doc.pop("verdict")
+    motion = report.motion
+    doc["resonant"] = report.resonant
+    doc["combination"] = COMBINATION
+    if motion is not None:
+        harmonics = []
+        for name, w, orders, U, R in zip(motion.machines, motion.omegas, motion.orders, motion.displacement, motion.rotation):
+            for h, n in enumerate(orders):
+                harmonics.append({
+                    "machine": name, "order": int(n), "frequency": speed_triplet(float(n * w)),
+                    "points": {p: {d: {"amplitude": float(abs(U[i, k, h])), "phase": float(np.angle(U[i, k, h]))}
+                                   for k, d in enumerate(DIRECTIONS)} for i, p in enumerate(motion.names)},
+                    "rotation": {d: {"amplitude": float(abs(R[k, h])), "phase": float(np.angle(R[k, h]))}
+                                 for k, d in enumerate(("rx", "ry", "rz"))},
+                })
+        doc["harmonics"] = harmonics
+        doc["points"] = {
+            p: {"at": [float(v) for v in at],
+                "displacement_peak": dict(zip(DIRECTIONS, map(float, motion.peak[i]))),
+                "velocity_peak": dict(zip(DIRECTIONS, map(float, motion.velocity_peak[i]))),
+                "displacement_rms": dict(zip(DIRECTIONS, map(float, motion.displacement_rms[i]))),
+                "velocity_rms": dict(zip(DIRECTIONS, map(float, motion.velocity_rms[i])))}
+            for i, (p, at) in enumerate(zip(motion.names, [report.cog] + [pt.at for pt in scene.points]))
+        }
+        doc["rotation_peak"] = dict(zip(("rx", "ry", "rz"), map(float, motion.rotation_peak)))
+    doc["limits"] = [
+        {"point": r.point, "direction": r.direction, "quantity": r.quantity, "value": r.value, "limit": r.limit,
+         "ratio": r.ratio, "verdict": r.outcome.value, "source": r.source}
+        for r in report.limit_rows
+    ]
+    limits = scene.limits
+    doc["code"] = None if limits.code is None else {
+        "code": limits.code, "machine_group": limits.machine_group, "foundation": limits.foundation,
+        "acceptable_zone": limits.acceptable_zone,
+        "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
+        "points": [
+            {"point": z.point, "governing": z.direction, "value": z.value, "zone": z.zone, "limit": z.limit,
+             "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
+            for z in report.zone_rows
+        ],
+        "warnings": list(report.code_warnings),
+    }
+    doc["office"] = _office(report)
+    doc["verdict"] = worst([report.amplitude_outcome, report.office_outcome]).value
+    return doc
+
+
+def _table(title: str, columns, right=()):
+    from rich.table import Table
+
+    table = Table(title=title, title_justify="left")
+    for col in columns:
+        table.add_column(col, justify="right" if col in right else "left")
+    return table
+
+
+def _print_modes(report: BlockReport, units: DisplayUnits) -> None:
+    out = stdout()
+    speed = units.label("speed")
+    t = _table("Natural frequencies (6-DOF, undamped)", ("mode", "dominant motion", "Hz", speed, "damping ratio"),
+               ("Hz", speed, "damping ratio"))
+    for j, p in enumerate(report.modes.frequencies):
+        t.add_row(str(j + 1), MOTION_NAMES[report.modes.dominant[j]], fmt(p / (2 * np.pi)), fmt(units.convert("speed", p)),
+                  fmt(report.modes.damping[j], 3))
+    out.print(t)
+
+
+def _speeds_line(report: BlockReport, scene, source: str, units: DisplayUnits) -> str:
+    from rich.markup import escape
+
+    speeds = ", ".join(f"{escape(n)} {units.show('speed', w)}" for n, w in report.speeds.items())
+    return f"[bold]{escape(scene.name or source)}[/]  machines: {speeds}; total mass {fmt(report.total_mass)} kg"
+
+
+def print_resonance(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
+    """Tables of ``fcalc resonance`` for a block scene: modes, then every order against every mode."""
+    from rich.markup import escape
+
+    out = stdout()
+    out.print(_speeds_line(report, scene, source, units), soft_wrap=True)
+    _print_modes(report, units)
+    speed = units.label("speed")
+    t = _table("Resonances: n ω of every machine against every mode", ("machine", "order", "mode", f"critical, {speed}",
+               "margin", "driven", "verdict"), (f"critical, {speed}", "margin"))
+    for r in report.resonance_rows:
+        t.add_row(escape(r.machine), str(r.order), f"{r.mode} ({r.motion})", fmt(units.convert("speed", r.critical)),
+                  f"{r.margin:.1%}", "yes" if r.driven else "no", verdict_text(r.outcome.value, strict))
+    out.print(t)
+    out.print(resonance_summary(report, scene.limits.detuning, strict), soft_wrap=True)
+
+
+def resonance_summary(report: BlockReport, detuning: float, strict: bool = False) -> str:
+    """One sentence on the resonance margins."""
+    outcome = report.resonance_outcome.value
+    near = report.nearest
+    if outcome == "pass":
+        return (f"{verdict_text(outcome)}: every driven order is at least {near.margin:.1%} from every mode"
+                f" (nearest: {near.machine}, order {near.order}, mode {near.mode} {near.motion}; required {detuning:.0%})")
+    bad = [r for r in report.resonance_rows if r.outcome.value == outcome]
+    names = "; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad)
+    return f"{verdict_text(outcome, strict)}: {names}"
+
+
+def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
+    """Tables of ``fcalc amplitudes`` for a block scene."""
+    from rich.markup import escape
+
+    out = stdout()
+    out.print(_speeds_line(report, scene, source, units), soft_wrap=True)
+    _print_modes(report, units)
+    motion = report.motion
+    if motion is None:
+        out.print(f"{verdict_text('fail')}: a machine's order is resonant with an undamped mode: no steady state")
+        return
+    amp = units.label("amplitude")
+    h = _table(f"Steady state per machine and order: amplitude [{amp}] and phase [°], u = A cos(nωt + phase)",
+               ("machine", "order", "point", "x", "y", "z"), ("x", "y", "z"))
+    for name, orders, U in zip(motion.machines, motion.orders, motion.displacement):
+        for k, n in enumerate(orders):
+            for i, p in enumerate(motion.names):
+                cells = [f"{fmt(units.convert('amplitude', abs(U[i, d, k])), 4)} ∠{np.degrees(np.angle(U[i, d, k])):.0f}°"
+                         for d in range(3)]
+                h.add_row(escape(name), str(n), escape(p), *cells)
+    out.print(h)
+    vel = units.label("velocity")
+    t = _table("Peaks and RMS (" + COMBINATION + ")",
+               ("point", f"peak x, {amp}", f"peak y, {amp}", f"peak z, {amp}", f"RMS v x, {vel}", f"RMS v y, {vel}",
+                f"RMS v z, {vel}"), ())
+    for i, p in enumerate(motion.names):
+        t.add_row(escape(p), *(fmt(units.convert("amplitude", v), 4) for v in motion.peak[i]),
+                  *(fmt(units.convert("velocity", v), 4) for v in motion.velocity_rms[i]))
+    for col in t.columns[1:]:
+        col.justify = "right"
+    out.print(t)
+    if report.limit_rows:
+        lim = _table("Limits", ("point", "direction", "quantity", "value", "limit", "ratio", "verdict"), ("value", "limit", "ratio"))
+        for r in report.limit_rows:
+            q = "amplitude" if r.quantity.startswith("displacement") else "velocity"
+            lim.add_row(escape(r.point), r.direction, r.quantity, units.show(q, r.value, 4), units.show(q, r.limit, 4),
+                        f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
+        out.print(lim)
+    if report.zone_rows:
+        z = _table("Zones of the RMS velocity", ("point", "zone", "verdict"))
+        for r in report.zone_rows:
+            z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
+        out.print(z)
+    for w in report.code_warnings:
+        out.print(f"note: {escape(w)}", soft_wrap=True)
+    print_office(report, strict)
+    out.print(f"{verdict_text(worst([report.amplitude_outcome, report.office_outcome]).value, strict)}: amplitudes and office checks")
+
+
+def print_office(report: BlockReport, strict: bool = False) -> None:
+    """The office checks' table."""
+    from rich.markup import escape
+
+    t = _table("Office checks", ("check", "result", "source", "verdict"))
+    for o in report.office:
+        t.add_row(o.name, escape(o.text), o.source, verdict_text(o.outcome.value, strict))
+    stdout().print(t)
+
+
+__all__ = ["COMBINATION", "amplitudes_document", "office_document", "print_amplitudes", "print_resonance", "resonance_document", "resonance_summary"]

@@ -1,0 +1,201 @@
+"""The verdict of a calculation sheet: every row of every check ``fcalc check`` runs for the scene.
+
+The checks are those of :func:`foundation_calc.checks.batch.run_checks` (the one registry,
+``checks/registry.py``), so the sheet and ``fcalc check`` cannot disagree. Each check's rows are
+read from its JSON document (the ``result`` of the ``fcalc check --json`` entry); a check this
+module has no row reader for (a new scene kind's) still gets one row: its verdict and reason.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.report.model import Paragraph, Section, table
+from foundation_calc.output.report.numbers import figure, percent, quantity, ratio
+
+#: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
+EXIT = {"pass": 0, "warn": 0, "fail": 1}
+
+#: Short names of the limits' sources, so the table's source column stays one or two lines.
+LIMIT_SOURCE = "scene [limits]"
+
+
+def _resonance_rows(doc: dict, scene, units: DisplayUnits):
+    for r in doc["resonances"]:
+        critical = quantity(units, "speed", r["critical_speed"]["omega"])
+        yield (
+            f"{r['condition']} ({r['mode_name']}, critical {critical})",
+            "margin " + percent(r["margin"]),
+            "≥ " + percent(r["required"]),
+            ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf",
+            r["verdict"],
+            f"{LIMIT_SOURCE} detuning",
+        )
+
+
+def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
+    from foundation_calc.checks.limits import display_quantity
+
+    for row in doc["limits"]:
+        kind = display_quantity(row["quantity"])
+        yield (
+            f"{row['point']} {row['direction']} {row['quantity']}",
+            quantity(units, kind, row["value"], row["limit"]),
+            "≤ " + quantity(units, kind, row["limit"]),
+            ratio(row["ratio"]),
+            row["verdict"],
+            row["source"],
+        )
+    code = doc.get("code")
+    velocity = DisplayUnits(velocity="mm/s")  # the codes' zones are in mm/s
+    for row in (code or {}).get("points", ()):
+        yield (
+            f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
+            quantity(velocity, "velocity", row["value"], row["limit"]),
+            "≤ " + quantity(velocity, "velocity", row["limit"]),
+            ratio(row["ratio"]),
+            row["verdict"],
+            f"{code['code']} {code['clause']}, group {code['machine_group']}, {code['foundation']}",
+        )
+    for warning in (code or {}).get("warnings", ()):
+        yield ("vibration code", warning, "-", "-", "warn", code["code"])
+
+
+def _runup_rows(doc: dict, scene, units: DisplayUnits):
+    from foundation_calc.checks.runup import RUN_TITLES
+
+    for row in doc["limits"]:
+        yield (
+            f"{row['point']}, largest displacement during {RUN_TITLES[row['run']]}",
+            quantity(units, "amplitude", row["value"]),
+            "-" if row["limit"] is None else "≤ " + quantity(units, "amplitude", row["limit"]),
+            ratio(row["ratio"]),
+            row["verdict"],
+            f"{LIMIT_SOURCE} transient_amplitude" if row["limit"] is not None else "not limited",
+        )
+    for t in (doc.get("motor") or {}).get("sommerfeld", ()):
+        yield (
+            f"motor torque at mode {t['mode']} ({t['harmonic']:g}ω, {quantity(units, 'speed', t['speed'])})",
+            f"{figure(t['torque_needed'], 4)} N m needed",
+            f"≤ {figure(t['torque_available'], 4)} N m",
+            ratio(t["ratio"]),
+            t["verdict"],
+            "scene [drive]",
+        )
+
+
+def _ratio(demand: float, limit: float) -> str:
+    return ratio(demand / limit) if limit > 0 else "-"
+
+
+def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
+    """Value, limit, ratio (demand/limit; above 1 fails or warns) and the limit's source of each
+    finding of the platform design check."""
+    d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
+    detuning, height = limits.detuning, limits.exciter_height_ratio
+    closest = min(f["margin"] for f in doc["natural_frequencies"])
+    worst = max(
+        (x for s in doc["sensitivity"] for k, x in s.items() if k.startswith(("rocking_percent", "static_offset")) and x is not None),
+        default=0.0,
+    )
+    resonant = [s["parameter"] for s in doc["sensitivity"] if s["resonance"]]
+    rocking = limits.rocking_percent
+    return {
+        "exciter height": (
+            (f"c/ζ = {figure(d['c'] / zeta, 3)}", f"≤ {figure(height, 3)}", _ratio(d["c"] / zeta, height), f"{LIMIT_SOURCE} exciter_height_ratio")
+            if d["c"] >= 0 and zeta > 0
+            else (f"c = {figure(d['c'], 4)} m", "c ≥ 0 (above the support plane)", "-", "design rule")
+        ),
+        "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), f"{LIMIT_SOURCE} detuning"),
+        "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), f"{LIMIT_SOURCE} detuning"),
+        "rocking": (
+            f"{figure(v['rocking_percent'], 3, 100)} % of u", f"≤ {figure(rocking, 3)} % of u",
+            _ratio(v["rocking_percent"], rocking), f"{LIMIT_SOURCE} rocking_percent",
+        ),
+        "tolerances": (
+            ("resonant: " + ", ".join(resonant)) if resonant else f"worst {figure(worst, 3, 100)} % of u",
+            f"no resonance, ≤ {figure(rocking, 3)} % of u",
+            "-" if resonant else _ratio(worst, rocking),
+            f"{LIMIT_SOURCE} rocking_percent",
+        ),
+    }
+
+
+def _design_rows(doc: dict, scene, units: DisplayUnits):
+    measures = _design_measures(doc, scene.limits)
+    for c in doc["checks"]:
+        value, limit, shown_ratio, source = measures.get(c["name"], (c["message"], "-", "-", "design rule"))
+        yield (c["name"], value, limit, shown_ratio, c["verdict"], source)
+
+
+#: check name (as in the registry) -> rows (item, value, limit, ratio, verdict, source) of its document.
+def _office_rows(doc: dict, scene, units: DisplayUnits):
+    def shown(row, v):
+        if row["unit"] == "Pa":
+            return f"{figure(v / 1e3, 4)} kPa"
+        return percent(v) if row["check"].startswith("eccentricity") else figure(v, 3)
+
+    for row in doc["office"]:
+        above = row["check"] == "mass ratio"  # a ratio that must stay at or above its limit
+        yield (
+            row["text"],
+            shown(row, row["value"]),
+            ("≥ " if above else "≤ ") + shown(row, row["limit"]),
+            ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
+            row["verdict"],
+            row["source"],
+        )
+
+
+ROWS: dict[str, Callable] = {
+    "office": _office_rows,
+    "resonance": _resonance_rows,
+    "amplitudes": _amplitude_rows,
+    "runup": _runup_rows,
+    "design": _design_rows,
+}
+
+
+def scene_verdict(runs) -> str:
+    """The scene's verdict as ``fcalc check`` gives it: its worst check's."""
+    order = list(EXIT)
+    return max((run.verdict for run in runs), key=order.index, default="pass")
+
+
+def verdict_line(runs) -> str:
+    """One sentence: the overall verdict, which checks set it, and the exit code."""
+    verdict = scene_verdict(runs)
+    setting = [run.check for run in runs if run.verdict == verdict and verdict != "pass"]
+    why = f" ({', '.join(setting)})" if setting else ""
+    return (
+        f"Overall verdict: {verdict.upper()}{why}; {len(runs)} check{'s' * (len(runs) != 1)} as fcalc check"
+        f" runs them, exit code {EXIT[verdict]}."
+    )
+
+
+def summary_section(runs, warnings, units: DisplayUnits) -> Section:
+    """Page 1: the overall verdict and each check's verdict and reason, as ``fcalc check`` prints them."""
+    rows = ((run.check, run.verdict.upper(), units.render(run.reason)) for run in runs)
+    blocks = [Paragraph(verdict_line(runs)), table("", ("check", "verdict", "reason"), rows, (False, False, False))]
+    if warnings:
+        blocks.append(table("Input warnings (they do not change the verdict)", ("warning",), ((w,) for w in warnings), (False,)))
+    return Section("Verdict", tuple(blocks))
+
+
+def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section:
+    """Every row of every check: value, limit, ratio (demand/limit; above 1 fails), verdict, source."""
+    rows = []
+    for run in runs:
+        reader = ROWS.get(run.check)
+        found = list(reader(documents[run.check], scene, units)) if reader is not None else []
+        if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
+            found = [("", units.render(run.reason), "-", "-", run.verdict, "fcalc check")]
+        rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
+    checks = table(
+        "Every check (ratio = demand/limit; above 1 fails)",
+        ("check", "item", "value", "limit", "ratio", "verdict", "limit's source"),
+        rows,
+        (False, False, True, True, True, False, False),
+    )
+    return Section("Checks", (checks, Paragraph(verdict_line(runs))))

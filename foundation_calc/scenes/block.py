@@ -1,0 +1,125 @@
+"""Scene model of kind ``block_foundation``: a rigid block in six degrees of freedom carrying
+several machines, each at its own speed, on springs and dashpots at its base.
+
+Axes (README, "Block foundation"): origin O at the centre of the block's base, at base level;
+x along the block's length, y along its width, z up; rotations right-handed about x, y, z.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import field_validator
+
+from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
+from foundation_calc.scenes.block_soil import BlockSoil
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, quantity
+from foundation_calc.scenes.crank import Limits
+from foundation_calc.scenes.project import Project
+
+#: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
+BLOCK_OMEGA_PLAUSIBLE = 1000.0
+
+
+class BlockLimits(Limits):
+    """What the checks compare against: the crank foundation's limits (bearing_pressure among them), and the office checks'."""
+
+    eccentricity: float = quantity(
+        "e_max", "-", "largest allowed horizontal distance of the combined centre of mass from the base centroid,"
+        " as a fraction of the base dimension in that direction (ACI 351.3R: 0.05)", 0.05, gt=0, lt=0.5,
+    )
+    mass_ratio: float = quantity(
+        "μ_min", "-", "smallest foundation-to-machine mass ratio (rules of thumb: 3 for rotating machines,"
+        " 5 for reciprocating ones)", 3.0, gt=0, examples=[5.0],
+    )
+
+
+class BlockScene(SceneModel):
+    """A scene of kind ``block_foundation``."""
+
+    kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
+    schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
+    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    block: BlockBody
+    machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)
+    soil: BlockSoil
+    points: list[BlockPoint] = quantity("-", "-", "points whose vibration is checked (besides the centre of mass)", [])
+    limits: BlockLimits = BlockLimits()
+
+    @field_validator("machines")
+    @classmethod
+    def _distinct_machines(cls, machines: list[BlockMachine]) -> list[BlockMachine]:
+        names = [m.name for m in machines]
+        repeated = sorted({n for n in names if names.count(n) > 1})
+        if repeated:
+            raise ValueError(f"machine names must be distinct: {', '.join(repeated)}")
+        for m in machines:
+            if not m.loads and m.unbalance is None:
+                raise ValueError(f"machine {m.name!r} needs [[machines.loads]] or [machines.unbalance]")
+        return machines
+
+    @field_validator("points")
+    @classmethod
+    def _distinct_points(cls, points: list[BlockPoint]) -> list[BlockPoint]:
+        seen, repeated = {"G"}, set()  # G, the centre of mass, is always reported under that name
+        for point in points:
+            (repeated if point.name in seen else seen).add(point.name)
+        if repeated:
+            raise ValueError(f"point names must be distinct and not 'G' (the centre of mass): {', '.join(sorted(repeated))}")
+        return points
+
+    @property
+    def base(self) -> tuple[float, float]:
+        """(L, B): the base's length along x and width along y [m]."""
+        return self.block.length, self.block.width
+
+    def plausibility_warnings(self) -> list[str]:
+        """Values that are valid but probably in the wrong unit: a length over
+        :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal (mm typed
+        as m), a machine ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
+        L, B = self.base
+        size = (L * L + B * B) ** 0.5
+        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
+        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
+        lengths |= {f"points.{p.name!r}.at": p.at for p in self.points}
+        found = [
+            f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
+            " was it typed in mm?"
+            for key, value in lengths.items()
+            if max(abs(v) for v in value) > LENGTH_SCALE_FACTOR * size
+        ]
+        found += [
+            f"machines.{m.name!r}.omega = {m.omega:g} rad/s is {m.omega * 30 / 3.141592653589793:.4g} rpm; if you meant"
+            f" {m.omega:g} rpm, write speed_rpm = {m.omega:g}"
+            for m in self.machines
+            if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
+        ]
+        return found
+
+    def model(self):
+        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`)."""
+        from foundation_calc.solvers.block.model import block_model
+        from foundation_calc.solvers.constants import GRAVITY
+
+        from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
+
+        m_b, r_b, J_b = self.block.mass_properties
+        L, B = self.base
+        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
+                  [J_b] + [m.inertia for m in self.machines])
+        M = bodies_mass_matrix(*bodies)
+        springs, ratios = self.soil.six_springs(L, B, M[0, 0], M.diagonal()[3:])
+        return block_model(
+            *bodies, springs, GRAVITY, (L * L + B * B) ** 0.5,
+            dashpots=self.soil.dashpot if ratios is None else None, ratios=ratios,
+        )
+
+    def excitations(self):
+        """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`)."""
+        from foundation_calc.solvers.block.model import excitation
+
+        return [excitation(m.name, m.omega_rad_s, m.load_rows()) for m in self.machines]

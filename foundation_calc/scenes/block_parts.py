@@ -1,0 +1,176 @@
+"""Parts of a ``block_foundation`` scene: the block, its machines and their loads, its points.
+
+Axes (README, "Block foundation"): origin O at the centre of the block's base, at base level;
+x along the block's length, y along its width, z up. Rotations are right-handed about x, y, z.
+"""
+
+from __future__ import annotations
+
+import math
+
+from typing import Annotated
+
+from pydantic import Field, model_validator
+
+from foundation_calc.scenes.common import SceneModel, SpeedFields, quantity
+
+#: Three components along (or about) x, y, z.
+Vector = Annotated[list[float], Field(min_length=3, max_length=3)]
+
+
+class BlockBody(SceneModel):
+    """The foundation block: base length and width, and height with density or its mass properties.
+
+    Height and density describe a homogeneous rectangular block standing on its base; mass, cog
+    and inertia any other block (with pedestals, pits or openings)."""
+
+    length: float = quantity("L", "m", "block length along x (the base's length)", gt=0, examples=[6.0])
+    width: float = quantity("B", "m", "block width along y (the base's width)", gt=0, examples=[4.0])
+    height: float | None = quantity("H", "m", "block height (with density)", None, gt=0, examples=[2.0])
+    density: float | None = quantity(
+        "ρ_c", "kg/m³", "density of the block's material, reinforced concrete about 2400-2500 (with height)",
+        None, gt=0, examples=[2400.0],
+    )
+    mass: float | None = quantity("m_b", "kg", "block mass (instead of height and density)", None, gt=0, examples=[1.15e5])
+    cog: Vector | None = quantity(
+        "r_b", "m", "block's centre of mass [x, y, z] from O (with mass)", None, examples=[[0.0, 0.0, 1.0]]
+    )
+    inertia: Vector | None = quantity(
+        "J_b", "kg m²", "block's moments of inertia [Ixx, Iyy, Izz] about its centre of mass, axes along x, y, z"
+        " (with mass)", None, examples=[[1.9e5, 3.8e5, 5.0e5]],
+    )
+
+    @model_validator(mode="after")
+    def _one_description(self):
+        solid = self.height is not None or self.density is not None
+        given = self.mass is not None or self.cog is not None or self.inertia is not None
+        if solid == given:
+            raise ValueError(
+                "give the block as height [m] and density [kg/m³], or by mass [kg], cog [m] and inertia [kg m²]"
+                + (" (not both)" if solid else "")
+            )
+        missing = [k for k in (("height", "density") if solid else ("mass", "cog", "inertia")) if getattr(self, k) is None]
+        if missing:
+            raise ValueError(f"block needs {' and '.join(missing)} too")
+        if self.inertia is not None and any(j < 0 for j in self.inertia):
+            raise ValueError(f"block.inertia must be >= 0 kg m² each (got {list(self.inertia)})")
+        return self
+
+    @property
+    def mass_properties(self) -> tuple[float, Vector, Vector]:
+        """(mass [kg], centre of mass from O [m], central moments [kg m²])."""
+        if self.mass is not None:
+            return self.mass, self.cog, self.inertia
+        from foundation_calc.solvers.rigid_body.inertia import block_inertia
+
+        m = self.length * self.width * self.height * self.density
+        return m, (0.0, 0.0, self.height / 2.0), block_inertia(m, self.length, self.width, self.height)
+
+
+class MachineLoad(SceneModel):
+    """A harmonic load of a machine on the block (vendor data), each component amplitude · cos(n ω t + φ)."""
+
+    name: str = quantity("-", "-", "label shown in reports", "", max_length=80, examples=["1st order"])
+    order: int = quantity("n", "-", "multiple of the machine's speed: 1 at the speed, 2 at twice it, ...", ge=1, le=64, examples=[1])
+    force: Vector = quantity("F", "N", "force amplitudes along x, y, z", [0.0, 0.0, 0.0], examples=[[6.0e3, 0.0, 2.0e3]])
+    moment: Vector = quantity(
+        "M", "N m", "moment amplitudes about axes through `at`, along x, y, z", [0.0, 0.0, 0.0], examples=[[0.0, 0.0, 0.0]]
+    )
+    phase: float = quantity("φ", "rad", "phase at t = 0", 0.0, examples=[0.0])
+    at: Vector | None = quantity(
+        "r_F", "m", "point of application [x, y, z] from O; default the machine's centre of mass", None,
+        examples=[[0.8, 0.0, 3.0]],
+    )
+
+    @model_validator(mode="after")
+    def _something_acts(self):
+        if not any(self.force) and not any(self.moment):
+            raise ValueError("give a non-zero force [N] or moment [N m] (all components are 0)")
+        return self
+
+
+class Unbalance(SceneModel):
+    """A rotor's residual unbalance by its balance quality grade (ISO 21940-11, formerly ISO 1940-1).
+
+    e ω = G, so the rotating force is m_r e ω² = m_r G ω at the machine's speed."""
+
+    balance_grade_mm_s: float = quantity(
+        "G", "mm/s", "balance quality grade, e·ω (G 6.3: 6.3; G 2.5: 2.5)", gt=0, le=4000, examples=[6.3]
+    )
+    rotor_mass: float = quantity("m_r", "kg", "mass of the rotor", gt=0, examples=[800.0])
+    axis: Vector = quantity("e", "-", "direction of the rotor's axis (need not be a unit vector)", examples=[[1.0, 0.0, 0.0]])
+    at: Vector | None = quantity(
+        "r_r", "m", "point on the axis where the unbalance acts; default the machine's centre of mass", None,
+        examples=[[-1.5, 0.0, 2.6]],
+    )
+
+    @model_validator(mode="after")
+    def _axis_has_a_direction(self):
+        if math.hypot(*self.axis) == 0.0:
+            raise ValueError("unbalance.axis must not be [0, 0, 0]: give the rotor's axis direction, e.g. [1, 0, 0]")
+        return self
+
+
+class BlockMachine(SpeedFields):
+    """A machine on the block: its mass properties, its own speed and its loads or unbalance."""
+
+    name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
+    mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])
+    cog: Vector = quantity("r_m", "m", "machine's centre of mass [x, y, z] from O", examples=[[0.5, 0.0, 2.8]])
+    inertia: Vector = quantity(
+        "J_m", "kg m²", "moments of inertia about its own centre of mass, axes along x, y, z; default 0 (a point mass)",
+        [0.0, 0.0, 0.0], examples=[[1.0e4, 2.0e4, 2.0e4]],
+    )
+    loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
+    unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _speed_is_omega(cls, data):
+        """``speed`` [rad/s] is another name of ``omega`` (the issue's scene contract writes it so)."""
+        if isinstance(data, dict) and "speed" in data:
+            if "omega" in data:
+                raise ValueError("give speed [rad/s] or omega [rad/s], not both (they are the same key)")
+            data = {("omega" if k == "speed" else k): v for k, v in data.items()}
+        return data
+
+    @model_validator(mode="after")
+    def _machine_checks(self):
+        if any(j < 0 for j in self.inertia):
+            raise ValueError(f"inertia must be >= 0 kg m² each (got {list(self.inertia)})")
+        return self
+
+    def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
+        """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial); an
+        unbalance as two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt),
+        F = m_r G ω, with a, b a right-handed pair normal to the axis. ``inertial``: the load grows
+        as ω² when the speed changes (an unbalance: its eccentricity e = G/ω is the rotor's);
+        vendor loads keep the amplitudes the vendor gives."""
+        rows = [(ld.order, ld.force, ld.moment, ld.phase, ld.at or self.cog, False) for ld in self.loads]
+        if self.unbalance is not None:
+            u = self.unbalance
+            e = [c / math.hypot(*u.axis) for c in u.axis]
+            trial = (1.0, 0.0, 0.0) if abs(e[0]) < 0.9 else (0.0, 1.0, 0.0)
+            a = _unit(_cross(_cross(e, trial), e))
+            b = _cross(e, a)
+            F = u.rotor_mass * u.balance_grade_mm_s * 1e-3 * self.omega_rad_s
+            where = u.at or self.cog
+            rows += [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where, True),
+                     (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where, True)]
+        return rows
+
+
+def _cross(a, b) -> tuple[float, float, float]:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def _unit(v) -> tuple[float, float, float]:
+    n = math.hypot(*v)
+    return tuple(c / n for c in v)
+
+
+class BlockPoint(SceneModel):
+    """A point of the block whose vibration the limits bound (a bearing, an edge)."""
+
+    name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["crankshaft bearing"])
+    at: Vector = quantity("r_P", "m", "position [x, y, z] from O", examples=[[0.8, 0.0, 3.0]])

@@ -1,0 +1,115 @@
+"""The ``[soil]`` table of a block foundation: explicit springs at O, or a soil method that gives
+all six springs of the base.
+
+``method = "springs"`` takes ``stiffness`` and ``dashpot`` as 6-vectors at O (x, y, z, about x,
+about y, about z). ``"coefficients"`` takes Barkan's c_z, c_x, c_phi as for a crank foundation and
+a torsion coefficient c_psi; the half-space and code methods keep the keys of
+:class:`~foundation_calc.scenes.soil.Soil`.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, ClassVar, Literal
+
+from pydantic import Field, model_validator
+
+from foundation_calc.scenes.common import quantity
+from foundation_calc.scenes.soil import METHOD_KEYS, METHOD_REQUIRED, Soil
+
+#: Six components: along x, y, z and about x, y, z.
+Six = Annotated[list[float], Field(min_length=6, max_length=6)]
+
+#: The keys each method of a block's soil takes (besides ``method``).
+BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
+    "springs": ("stiffness", "dashpot"),
+    "coefficients": ("c_z", "c_x", "c_phi", "c_psi", "damping"),
+    "lysmer": METHOD_KEYS["lysmer"],
+}
+
+#: c_ψ / c_x of Barkan (1948), ch. 4: the coefficient of elastic non-uniform shear (torsion) is
+#: about 1.5 times that of uniform shear [-].
+BARKAN_TORSION_RATIO = 1.5
+
+
+class BlockSoil(Soil):
+    """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
+
+    method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
+    no_method_text: ClassVar[str] = (
+        'give soil.method = "springs" with stiffness [N/m, N m/rad] (and dashpot), "lysmer" with its keys, or'
+        " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
+    )
+
+    method: Literal["springs", "coefficients", "lysmer"] | None = quantity(
+        "-", "-", 'how the six springs are found: "springs" (stiffness and dashpot at O given), "coefficients"'
+        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs from shear_modulus or"
+        " shear_wave_velocity, density, poisson); default \"coefficients\" when c_z is given", None,
+        examples=["springs"],
+    )
+    stiffness: Six | None = quantity(
+        "K", "N/m, N m/rad", "springs at O along x, y, z and about x, y, z", None,
+        examples=[[1.2e9, 1.0e9, 1.5e9, 9.0e9, 1.4e10, 8.0e9]],
+    )
+    dashpot: Six | None = quantity(
+        "C", "N s/m, N m s/rad", "dashpots at O along x, y, z and about x, y, z; default none", None,
+        examples=[[3.0e7, 2.8e7, 4.0e7, 5.0e7, 8.0e7, 3.0e7]],
+    )
+    c_psi: float | None = quantity(
+        "c_ψ", "N/m³", f"coefficient of elastic non-uniform shear (torsion about z), spring c_ψ J_z with J_z the"
+        f" base's polar second moment; default {BARKAN_TORSION_RATIO:g} c_x (Barkan)", None, gt=0, examples=[4.2e7],
+    )
+    damping: list[float] | None = quantity(
+        "ξ", "-", "damping ratios [ξ_z, ξ_x, ξ_phi] or [ξ_z, ξ_x, ξ_phi, ξ_psi] of the vertical, horizontal, rocking"
+        " and torsional modes (ξ_psi default ξ_phi); default: undamped", None, min_length=3, max_length=4,
+        examples=[[0.1, 0.1, 0.05]],
+    )
+
+    @model_validator(mode="after")
+    def _method_has_its_data(self):
+        method = self.method_used
+        required = ("stiffness",) if method == "springs" else METHOD_REQUIRED[method]
+        missing = [k for k in required if getattr(self, k) is None]
+        if missing:
+            raise ValueError(f"method {method!r} needs {', '.join('soil.' + k for k in missing)}")
+        for key in ("stiffness", "dashpot"):
+            values = getattr(self, key)
+            if values is not None and any(v < 0 for v in values):
+                raise ValueError(f"soil.{key} must be >= 0 in every direction (got {list(values)})")
+        if method == "lysmer" and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
+            raise ValueError("method 'lysmer' needs exactly one of soil.shear_modulus [Pa] and soil.shear_wave_velocity [m/s]")
+        if self.stiffness is not None and not all(self.stiffness):
+            raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
+        return self
+
+    def six_springs(self, L: float, B: float, M: float, J_O) -> tuple[list[float], list[float] | None]:
+        """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
+        [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
+        L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
+        about the axes through O [kg m²] (the half-space methods' mass ratios).
+
+        Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
+        K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer: the
+        analogs of :mod:`~foundation_calc.solvers.soil.lysmer` in each vertical plane (rocking about y
+        with L in the plane, about x with B in it) and the torsion of
+        :mod:`~foundation_calc.solvers.soil.torsion`.
+        """
+        if self.method_used == "springs":
+            return list(self.stiffness), None
+        if self.method_used == "lysmer":
+            from foundation_calc.solvers.soil.lysmer import lysmer_springs
+            from foundation_calc.solvers.soil.torsion import lysmer_torsion
+
+            D = self.material_damping or 0.0
+            along = lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], D)
+            across = lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], D)
+            k_t, xi_t = lysmer_torsion(self.G, self.density, L, B, J_O[2], D)
+            springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
+            return [float(k) for k in springs], [float(x) for x in (along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t)]
+        A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
+        c_phi = self.c_z if self.c_phi is None else self.c_phi
+        c_psi = BARKAN_TORSION_RATIO * self.c_x if self.c_psi is None else self.c_psi
+        xi = list(self.damping or (0.0, 0.0, 0.0))
+        xi_z, xi_x, xi_phi = xi[:3]
+        xi_psi = xi[3] if len(xi) == 4 else xi_phi
+        springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
+        return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]

@@ -1,0 +1,102 @@
+"""The ``[project]`` table of a scene: who a calculation is for and who signs it, and the office
+defaults file ``fcalc.toml`` that a folder of scenes shares.
+
+The calculation sheet prints it in its title block and in every page's header ("job · calc no. ·
+rev · page n of N"); no check reads it. ``fcalc.toml`` is looked for in the scene's folder and
+then in each parent folder (as pyproject.toml is), the nearest one counting; its ``[project]``
+gives the values a scene's own ``[project]`` does not (a scene's value wins). A CI batch of many
+scenes thus shares the job, client and signatories. Unknown keys are errors in both files.
+"""
+
+from __future__ import annotations
+
+import datetime
+from pathlib import Path
+from typing import Any
+
+from pydantic import Field
+
+from foundation_calc.errors import SceneError
+from foundation_calc.scenes.common import SceneModel
+
+#: Name of the office defaults file.
+OFFICE_FILE = "fcalc.toml"
+
+#: A date as TOML writes it (``2026-11-26``, unquoted) or free text (``"26 Nov 2026"``).
+DateText = datetime.date | str
+
+
+def _text(text: str, example: str, length: int = 120) -> Any:
+    return Field(None, description=f"- [-]: {text}", max_length=length, examples=[example])
+
+
+def _date(text: str) -> Any:
+    return Field(None, description=f"- [-]: {text}, a TOML date (2026-11-26) or text", examples=[datetime.date(2026, 11, 26)])
+
+
+class Revision(SceneModel):
+    """One line of the revision history."""
+
+    revision: str = Field(description="- [-]: revision mark, e.g. \"A\" or \"P01\"", max_length=20, examples=["A"])
+    date: DateText | None = _date("date of the revision")
+    description: str = Field("", description="- [-]: what changed", max_length=300, examples=["first issue"])
+    by: str | None = _text("who made the revision", "P. Preparer", 80)
+
+
+class Project(SceneModel):
+    """Title-block fields of a calculation sheet (all optional; a sign box without a name stays blank)."""
+
+    job: str | None = _text("job or project number", "J-2041", 60)
+    calculation: str | None = _text("calculation number", "CALC-017", 60)
+    revision: str | None = _text("current revision mark", "B", 20)
+    title: str | None = _text("title of the calculation (default: the scene's name)", "Sawmill frame foundation, dynamic check", 200)
+    client: str | None = _text("client", "Sawmill Ltd", 200)
+    office: str | None = _text("office or company that issues the calculation", "Foundations Office", 200)
+    prepared_by: str | None = _text("name of the engineer who prepared the calculation", "P. Preparer", 80)
+    prepared_date: DateText | None = _date("date prepared")
+    checked_by: str | None = _text("name of the checking engineer", "A. Checker", 80)
+    checked_date: DateText | None = _date("date checked")
+    approved_by: str | None = _text("name of the approving engineer", "B. Approver", 80)
+    approved_date: DateText | None = _date("date approved")
+    revisions: list[Revision] = Field(
+        default_factory=list, description="- [-]: revision history, oldest first", max_length=100
+    )
+
+
+def office_file(scene_path: str | Path) -> Path | None:
+    """The ``fcalc.toml`` nearest to the scene: in its folder or the first parent that has one."""
+    folder = Path(scene_path).resolve().parent
+    for candidate in (folder, *folder.parents):
+        path = candidate / OFFICE_FILE
+        if path.is_file():
+            return path
+    return None
+
+
+def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> dict[str, Any]:
+    """The scene ``document`` with the ``[project]`` of the nearest ``fcalc.toml`` under its own
+    (a scene's key wins); unchanged when there is no such file.
+
+    Raises
+    ------
+    SceneError
+        naming ``fcalc.toml`` when it cannot be read, has a table other than ``[project]``, or an
+        unknown or invalid key in it (the message names the key and suggests the nearest one).
+    """
+    path = office_file(scene_path)
+    if path is None:
+        return document
+    from foundation_calc.scenes.loading import read_toml, validate
+
+    office = read_toml(path)
+    unknown = sorted(set(office) - {"project"})
+    if unknown:
+        raise SceneError(str(path), [(key, f"{OFFICE_FILE} holds only a [project] table (office defaults)") for key in unknown])
+    defaults = office.get("project", {})
+    if not isinstance(defaults, dict):
+        raise SceneError(str(path), [("project", "must be a table of title-block fields")])
+    validate(Project, defaults, str(path), prefix="project.")
+    own = document.get("project", {})
+    if not isinstance(own, dict):  # the scene's own validation says what is wrong
+        return document
+    return {**document, "project": {**defaults, **own}}

@@ -1,0 +1,125 @@
+"""The block and its machines as matrices about O: mass, springs, dashpots, weight, loads.
+
+Axes: O at the centre of the base at base level, x along the length, y along the width, z up;
+q = (u_x, u_y, u_z, θ_x, θ_y, θ_z) of O (:mod:`foundation_calc.solvers.rigid_body`). Equations
+of motion about the static equilibrium, linear::
+
+    M q'' + C q' + K q = Σ_machines Σ_orders Re(Q_n e^{i n ω t})                           (1)
+
+    M = Σ_bodies M_body (parallel axes)                       block and every machine, Eq. (1) of inertia.py
+    K = diag(K_x, K_y, K_z, K_rx, K_ry, K_rz) - W z_G (about x and y)    springs at O, weight tilt
+    C = diag(C_x, ..., C_rz)       given, or C_i = 2 ξ_i sqrt(K_i m_i) of each uncoupled motion with
+                                   m_i = M_Σ for a translation and the moment of inertia about the
+                                   axis through O for a rotation (ACI 351.3R-18, 4.5; Richart, Hall
+                                   & Woods 1970, ch. 10)
+    Q_n = Σ_loads of order n (F, M + r_F × F) e^{iφ}        a load F, M at r_F carried to O
+
+The weight's term makes the rocking modes of a tall block softer (Krichever & Makarov (3.4), the
+crank foundation's −P h).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass
+from foundation_calc.solvers.rigid_body.kinematics import load_at, weight_tilt
+
+
+@dataclass(frozen=True)
+class BlockModel:
+    """The matrices of Eq. (1) and what the checks read from them (SI units).
+
+    Attributes
+    ----------
+    M, K, C : 6×6 mass [kg, kg m, kg m²], stiffness [N/m, N, N m/rad], damping [N s/m, ...] about O
+    mass : total mass M_Σ [kg]
+    cog : combined centre of mass G from O [m]
+    J_G : central inertia tensor [kg m²]
+    size : the base's diagonal [m] (the scale of rotations in the eigen-solve)
+    springs : the six springs at O [N/m, N m/rad]
+    """
+
+    M: np.ndarray
+    K: np.ndarray
+    C: np.ndarray
+    mass: float
+    cog: np.ndarray
+    J_G: np.ndarray
+    size: float
+    springs: np.ndarray
+
+    @property
+    def damped(self) -> bool:
+        """True when a dashpot acts."""
+        return bool(np.any(self.C != 0.0))
+
+
+@dataclass(frozen=True)
+class Excitation:
+    """One machine's loads at its speed: the orders n and the generalised forces Q_n about O.
+
+    Attributes
+    ----------
+    name : the machine's name
+    omega : its speed ω [rad/s]
+    orders : distinct orders n, ascending, shape (H,)
+    Q : complex amplitudes (F, M about O) of order n at the speed ω, shape (H, 6) [N, N m]
+    Q_inertial : the part of Q that grows as the speed squared (unbalances), shape (H, 6)
+    """
+
+    name: str
+    omega: float
+    orders: np.ndarray
+    Q: np.ndarray
+    Q_inertial: np.ndarray
+
+    def loads_at(self, omega) -> np.ndarray:
+        """Q at the speeds ``omega`` [rad/s] (any shape): Q + Q_inertial ((ω/ω_0)² - 1), shape
+        omega.shape + (H, 6)."""
+        ratio = (np.asarray(omega, dtype=float) / self.omega) ** 2 - 1.0
+        return self.Q + ratio[..., None, None] * self.Q_inertial
+
+
+def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None) -> BlockModel:
+    """Assemble Eq. (1).
+
+    Parameters
+    ----------
+    masses, cogs, inertias : bodies (N,) [kg], (N, 3) [m] from O, central moments (N, 3) [kg m²]
+    springs : (6,) springs at O [N/m, N m/rad]
+    g : acceleration of gravity [m/s²]
+    size : the base's diagonal [m]
+    dashpots : (6,) dashpots at O [N s/m, N m s/rad], or None
+    ratios : (6,) damping ratios of the uncoupled motions [-] (instead of ``dashpots``), or None
+    """
+    M = bodies_mass_matrix(masses, cogs, inertias)
+    mass, cog, J_G = centre_of_mass(M)
+    springs = np.asarray(springs, dtype=float)
+    K = np.diag(springs) + weight_tilt(mass * g, cog[2])
+    if dashpots is not None:
+        C = np.diag(np.asarray(dashpots, dtype=float))
+    elif ratios is not None:
+        C = np.diag(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diag(M)))
+    else:
+        C = np.zeros((6, 6))
+    return BlockModel(M, K, C, mass, cog, J_G, float(size), springs)
+
+
+def excitation(name, omega, rows) -> Excitation:
+    """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
+    phase [rad], point [m], inertial) each; loads of one order add."""
+    orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
+    Q = np.zeros((len(orders), 6), dtype=complex)
+    Q_inertial = np.zeros_like(Q)
+    for n, F, Mo, phase, at, inertial in rows:
+        q = load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
+        Q[np.searchsorted(orders, n)] += q
+        if inertial:
+            Q_inertial[np.searchsorted(orders, n)] += q
+    return Excitation(str(name), float(omega), orders, Q, Q_inertial)
+
+
+__all__ = ["BlockModel", "Excitation", "block_model", "excitation"]

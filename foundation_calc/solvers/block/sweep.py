@@ -1,0 +1,62 @@
+"""The block's steady state along a sweep of one machine's speed, the others at their own.
+
+Source: :mod:`.response` at every speed at once: one batched solve of (K - (nω)² M + i nω C) Z = Q_n
+for all speeds and orders of the swept machine, its points' peaks over their period searched
+together (:func:`~foundation_calc.solvers.numerics.trig_series.peak`), and the other machines'
+fixed peaks and mean squares added as :mod:`.response` says (peaks add, RMS values add as
+root-sum-square).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.solvers.block.model import BlockModel, Excitation
+from foundation_calc.solvers.block.response import BlockModes, _series_peak, complex_amplitudes, point_motion
+from foundation_calc.solvers.rigid_body.kinematics import point_maps
+
+
+@dataclass(frozen=True)
+class SpeedSweep:
+    """Peaks and RMS along a sweep of one machine's speed.
+
+    Attributes
+    ----------
+    omega : the swept machine's speeds [rad/s], shape (N,)
+    peak : (N, P, 3) peak displacement of G and every point along x, y, z [m]
+    velocity_rms : (N, P, 3) RMS velocity [m/s]
+    margin : (N, H, 6) |n ω - p_j| / p_j of the swept machine's orders against every mode [-]
+    """
+
+    omega: np.ndarray
+    peak: np.ndarray
+    velocity_rms: np.ndarray
+    margin: np.ndarray
+
+
+def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, omega, points) -> SpeedSweep:
+    """Sweep machine ``swept`` (index into ``excitations``) over the speeds ``omega`` [rad/s];
+    ``points`` (P, 3) [m] from O besides G. A swept machine given by a balance grade keeps the
+    rotor's eccentricity, so its force grows as ω²; vendor loads keep their amplitudes."""
+    omega = np.asarray(omega, dtype=float)
+    exc: Excitation = excitations[swept]
+    others = [e for i, e in enumerate(excitations) if i != swept]
+    at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
+    base_peak = np.zeros((len(at), 3))
+    base_sq = np.zeros((len(at), 3))
+    if others:
+        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:])
+        base_peak, base_sq = fixed.peak, fixed.velocity_rms**2
+    Z = complex_amplitudes(model, exc, omega)  # (N, H, 6)
+    U = np.einsum("pij,nhj->npih", point_maps(at), Z)  # (N, P, 3, H)
+    V = U * (1j * omega[:, None, None, None] * exc.orders)
+    peak = base_peak + _series_peak(U, exc.orders)
+    rms = np.sqrt(base_sq + (np.abs(V) ** 2).sum(-1) / 2.0)
+    p = modes.frequencies
+    margin = np.abs(omega[:, None, None] * exc.orders[None, :, None] - p) / p
+    return SpeedSweep(omega, peak, rms, margin)
+
+
+__all__ = ["SpeedSweep", "speed_sweep"]

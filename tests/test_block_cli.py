@@ -1,0 +1,120 @@
+"""`fcalc resonance`, `amplitudes` and `check` on the shipped block_foundation scenes, and the
+parts of a block scene that turn user input into loads (the unbalance of a balance grade)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import load_scene
+from tests.conftest import configs_of_kind
+
+#: Shipped block scenes and the exit code of `fcalc check` on each (README, "Shipped examples").
+EXPECTED_EXIT = {"block_two_machines.toml": 0, "block_fan_torsion_near_speed.toml": 1}
+
+
+def test_every_shipped_block_scene_is_listed():
+    assert sorted(p.name for p in configs_of_kind("block_foundation")) == sorted(EXPECTED_EXIT)
+
+
+@pytest.mark.parametrize("config", configs_of_kind("block_foundation"), ids=lambda p: p.name)
+@pytest.mark.parametrize("command", ["resonance", "amplitudes"])
+def test_json_is_one_finite_document(runner, config, command):
+    result = runner.invoke(app, [command, str(config), "--json"])
+    assert result.stderr == ""
+    doc = json.loads(result.stdout)
+    assert doc["command"] == command and doc["scene"]["kind"] == "block_foundation"
+    assert len(doc["modes"]) == 6
+    assert result.exit_code == (1 if doc["verdict"] == "fail" else 0)
+
+    def finite(node):
+        if isinstance(node, dict):
+            return all(finite(v) for v in node.values())
+        if isinstance(node, list):
+            return all(finite(v) for v in node)
+        return not isinstance(node, float) or math.isfinite(node)
+
+    assert finite(doc)
+
+
+@pytest.mark.parametrize("config", configs_of_kind("block_foundation"), ids=lambda p: p.name)
+def test_check_exit_code(runner, config):
+    result = runner.invoke(app, ["check", str(config), "--json"])
+    assert result.exit_code == EXPECTED_EXIT[config.name], result.stdout + result.stderr
+    checks = json.loads(result.stdout)["scenes"][0]["checks"]
+    assert [c["check"] for c in checks] == ["resonance", "amplitudes", "office"]
+
+
+def test_the_torsional_mode_near_the_fan_speed_is_reported(runner):
+    result = runner.invoke(app, ["resonance", "configs/block_fan_torsion_near_speed.toml", "--json"])
+    doc = json.loads(result.stdout)
+    failing = [r for r in doc["resonances"] if r["verdict"] == "fail"]
+    assert any(r["dominant"] == "rz" and r["machine"] == "fan" and r["driven"] for r in failing)
+    table = runner.invoke(app, ["resonance", "configs/block_fan_torsion_near_speed.toml"]).stdout
+    assert "torsion about z" in table and "FAIL" in table
+
+
+def test_a_command_without_blocks_names_the_block_commands(runner, tmp_path):
+    result = runner.invoke(app, ["runup", "configs/block_two_machines.toml"])
+    assert result.exit_code == 3
+    assert "fcalc resonance" in result.stderr
+
+
+def test_soil_lists_six_springs(runner):
+    result = runner.invoke(app, ["soil", "configs/block_fan_torsion_near_speed.toml", "--json"])
+    assert result.exit_code == 0, result.stderr
+    springs = json.loads(result.stdout)["springs"]
+    assert [s["motion"] for s in springs] == ["x", "y", "z", "rx", "ry", "rz"]
+    assert springs[0]["K"] == springs[1]["K"]  # Lysmer's sliding analog is the same along x and y
+
+
+def test_unbalance_is_the_rotating_force_of_its_balance_grade():
+    """ISO 21940-11: e ω = G, so F = m_r G ω, turning about the axis (right-handed) at the speed:
+    the load at t and a quarter period later are perpendicular, equal and normal to the axis."""
+    scene = load_scene("configs/block_fan_torsion_near_speed.toml")
+    fan = scene.machines[0]
+    rows = fan.load_rows()
+    F = sum(np.asarray(f) * math.cos(phase) for _, f, _, phase, _, _ in rows)  # at t = 0
+    F_later = sum(np.asarray(f) * math.cos(math.pi / 2 + phase) for _, f, _, phase, _, _ in rows)  # ω t = π/2
+    expected = 2.5e3 * 6.3e-3 * 990.0 * math.pi / 30.0
+    assert np.linalg.norm(F) == pytest.approx(expected, rel=1e-12)
+    assert np.linalg.norm(F_later) == pytest.approx(expected, rel=1e-12)
+    assert abs(F @ F_later) < 1e-9 * expected**2
+    axis = np.array([1.0, 0.0, 0.0])
+    assert abs(F @ axis) < 1e-12 * expected
+    assert np.cross(F, F_later) @ axis > 0.0  # right-handed about the axis
+    assert all(row[-1] for row in rows)  # an unbalance's force grows as ω² in a sweep
+
+
+def test_sweep_of_one_machine(runner):
+    result = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5", "--machine", "motor", "--json"])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert doc["machine"] == "motor" and len(doc["points"]) == 5
+    # the motor's own speed (1490 rpm) lies between rows 2 and 3; 2400 rpm is within 0.1 % of the vertical mode
+    assert doc["points"][0]["status"] == "pass" and doc["points"][-1]["status"] == "fail"
+    unnamed = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5"])
+    assert unnamed.exit_code == 2 and "compressor, motor" in unnamed.stderr
+
+
+def test_office_checks_judge_as_their_sources_say(tmp_path, runner):
+    """Eccentricity (a "should": warns), bearing pressure (statics against the allowable: fails),
+    on a block and on a crank scene, values by hand."""
+    from foundation_calc.checks.office import bearing_row, eccentricity_rows, mass_ratio_row
+
+    rows = eccentricity_rows([0.42, -0.1], 7.0, 4.0, 0.05)
+    assert [r.outcome.value for r in rows] == ["warn", "pass"] and rows[0].value == pytest.approx(0.06)
+    # W = 1 MN on 4 m x 2 m with e_x = 0.2 m: q_max = 125 kPa (1 + 0.3) = 162.5 kPa
+    row = bearing_row(1.0e6, 0.2, 0.0, 4.0, 2.0, 1.6e5)
+    assert row.value == pytest.approx(162.5e3, rel=1e-14) and row.outcome.value == "fail"
+    assert mass_ratio_row(20e3, 10e3, 3.0).outcome.value == "warn"
+    text = open("configs/compressor_vendor_loads.toml").read().replace("detuning = 0.2", "detuning = 0.2\nbearing_pressure = 5.0e4")
+    scene = tmp_path / "crank.toml"
+    scene.write_text(text)
+    result = runner.invoke(app, ["check", str(scene), "--json"])
+    office = [c for c in json.loads(result.stdout)["scenes"][0]["checks"] if c["check"] == "office"]
+    assert result.exit_code == 1 and office[0]["verdict"] == "fail"  # 114.8 t on 21 m²: 53.6 kPa

@@ -1,0 +1,134 @@
+"""The calculation sheet and ``fcalc check`` give one verdict: the same checks, rows, values, exit code.
+
+Every shipped config and a generated set of scenes (a failing run-up limit, points with velocity
+and acceleration limits, vendor loads with ISO zones, a length typed in mm, a platform run up)
+are checked with ``fcalc check --json`` and written as a Markdown sheet (no typst needed); the
+sheet's verdict table must list check's checks with check's verdicts, its checks table as many
+rows per check as check's result documents hold, with the same verdicts, and its exit code must be
+check's. Values are compared at the precision the sheet prints them (see ``VALUE_TOLERANCE``).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import tomllib
+
+import pytest
+import tomli_w
+
+from foundation_calc.cli.app import app
+from tests.conftest import CONFIGS
+
+pytest.importorskip("matplotlib")
+
+#: The sheet prints speeds with 4 significant figures (its reasons with 5): within 5e-4 relative.
+VALUE_TOLERANCE = 5e-4
+
+#: The sheet's default display units (report: mm, mm/s), as factors on the SI values of check.
+SHEET_FACTOR = {"amplitude": 1e3, "velocity": 1e3, "acceleration": 1.0, "speed": 1.0}
+
+
+def _variant(tmp_path, config: str, name: str, change) -> object:
+    scene = tomllib.loads((CONFIGS / config).read_text(encoding="utf-8"))
+    change(scene)
+    path = tmp_path / f"{name}.toml"
+    path.write_text(tomli_w.dumps(scene), encoding="utf-8")
+    return path
+
+
+def _points(scene):
+    scene["points"] = [
+        {"name": "saw guide", "horizontal": 1.5, "height": 2.5},
+        {"name": "motor foot", "horizontal": -2.0, "height": 0.2},
+    ]
+    scene["limits"] |= {"velocity": 0.02, "acceleration": 0.3}
+
+
+def _iso(scene):
+    scene["limits"] |= {"machine_group": 1, "foundation": "flexible"}
+
+
+GENERATED = {
+    "runup_fails": ("frame_saw_soft_soil_runup.toml", lambda s: s["limits"].update(transient_amplitude=0.012)),
+    "points_limits": ("frame_saw.toml", _points),
+    "loads_iso_zones": ("compressor_vendor_loads.toml", _iso),
+    "length_in_mm": ("frame_saw.toml", lambda s: s["foundation"].update(cog_height=1500.0)),
+    "platform_runup_fails": ("platform_damped.toml", lambda s: s["limits"].update(transient_amplitude=1e-4)),
+}
+
+
+def _sheet_tables(text: str) -> dict[str, list[list[str]]]:
+    """The rows of the sheet's verdict table and of its checks table (cells unescaped)."""
+    def rows(after: str) -> list[list[str]]:
+        following = text.split(after, 1)[1].splitlines()
+        start = next(i for i, line in enumerate(following) if line.startswith("|"))
+        end = next((i for i in range(start, len(following)) if not following[i].startswith("|")), len(following))
+        return [[c.strip().replace("\\", "") for c in line.strip("|").split(" | ")] for line in following[start + 2:end]]
+
+    return {"verdict": rows("## 2. Verdict"), "checks": rows("**Every check")}
+
+
+def _result_rows(check: dict) -> list[str]:
+    """The verdicts of the rows of one check's result document, in the sheet's order."""
+    result = check["result"]
+    name = check["check"]
+    if name == "resonance":
+        return [r["verdict"] for r in result["resonances"]]
+    if name == "amplitudes":
+        code = result.get("code") or {}
+        return [r["verdict"] for r in result["limits"]] + [r["verdict"] for r in code.get("points", ())] + [
+            "warn" for _ in code.get("warnings", ())
+        ]
+    if name == "runup":
+        return [r["verdict"] for r in result["limits"]] + [t["verdict"] for t in (result.get("motor") or {}).get("sommerfeld", ())]
+    if name == "office":
+        return [r["verdict"] for r in result["office"]]
+    return [c["verdict"] for c in result["checks"]]
+
+
+def _numbers(text: str) -> list[float]:
+    return [float(m) for m in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", text)]
+
+
+def _scenes(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("generated")
+    generated = [_variant(folder, config, name, change) for name, (config, change) in GENERATED.items()]
+    return sorted(CONFIGS.glob("*.toml")) + generated
+
+
+@pytest.fixture(scope="module")
+def scenes(tmp_path_factory):
+    return _scenes(tmp_path_factory)
+
+
+def test_sheet_and_check_give_one_verdict(runner, scenes):
+    from foundation_calc.cli.report import SHEET_UNITS
+    from foundation_calc.output.display_units import parse_units
+    from foundation_calc.output.report import markdown
+    from foundation_calc.output.report.documents import scene_sheet
+
+    checked = json.loads(runner.invoke(app, ["check", *map(str, scenes), "--json", "-j", "1"]).stdout)
+    for scene, entry in zip(scenes, checked["scenes"], strict=True):
+        checks = entry["checks"]
+        sheet, run = scene_sheet(scene, "fcalc report", parse_units([], SHEET_UNITS), figures=False)
+        assert int(run.exit_code(strict=False)) == entry["exit_code"], scene.name
+        text = markdown.render(sheet, [])
+        tables = _sheet_tables(text)
+        shown = _numbers(text)
+        assert [(r[0], r[1].lower()) for r in tables["verdict"]] == [(c["check"], c["verdict"]) for c in checks], scene.name
+        for check in checks:
+            for name, value in check["values"].items():
+                expected = value["value"] * SHEET_FACTOR[value["quantity"]]
+                assert any(abs(x - expected) <= VALUE_TOLERANCE * abs(expected) for x in shown), (scene.name, name)
+            sheet_rows = [r[5].lower() for r in tables["checks"] if r[0] == check["check"]]
+            assert sheet_rows == _result_rows(check), (scene.name, check["check"])
+
+
+def test_failing_start_up_fails_the_sheet(runner, scenes, tmp_path):
+    """The start-up over its limit (fcalc check: exit 1, see above): the sheet says FAIL and exits 1."""
+    scene = next(s for s in scenes if s.stem == "runup_fails")
+    out = tmp_path / "sheet.md"
+    assert runner.invoke(app, ["report", str(scene), "-o", str(out)]).exit_code == 1
+    text = out.read_text(encoding="utf-8")
+    assert "Overall verdict: FAIL (runup)" in text and "Start-up and run-down" in text

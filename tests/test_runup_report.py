@@ -1,0 +1,67 @@
+"""What `fcalc runup` says about its numbers: which displacement, which verdict, which sweep rate.
+
+The steady values of `fcalc runup` and `fcalc amplitudes` for one scene are compared here: the
+run-up's per-direction steady peak of a point must be the amplitude table's (same averaged linear
+model, the harmonics summed over a revolution: agreement to the sampling of the revolution, 1e-4),
+and its magnitude |u| = max over time of sqrt(x² + y²) is at least the larger of the two.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+
+from tests.conftest import CONFIGS, ROOT
+
+SOFT = CONFIGS / "frame_saw_soft_soil_runup.toml"
+
+
+def _short(tmp_path, limit=True):
+    """The scene with a 2 s start-up and no run-down (the figures asked for here do not need the
+    scene's 10 s and 20 s runs), without its transient limit unless ``limit``."""
+    text = SOFT.read_text().replace("run_up_time = 10.0", "run_up_time = 2.0").replace("run_down_time = 20.0", "")
+    scene = tmp_path / "short.toml"
+    scene.write_text(text if limit else text.replace("transient_amplitude = 2.0e-2", ""))
+    return scene
+
+
+def test_rows_without_a_limit_are_not_judged(runner, tmp_path):
+    from foundation_calc.cli.app import app
+
+    scene = _short(tmp_path, limit=False)
+    result = runner.invoke(app, ["runup", str(scene), "--json"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert {row["verdict"] for row in doc["limits"]} == {"not judged"}
+    assert doc["verdict"] == "not judged"
+    text = runner.invoke(app, ["runup", str(scene)], env={"COLUMNS": "200"}).stdout
+    assert "not judged" in text and "PASS" not in text
+
+
+def test_a_figure_says_which_displacement_it_is(runner, tmp_path):
+    from foundation_calc.cli.app import app
+
+    scene = _short(tmp_path)
+    doc = json.loads(runner.invoke(app, ["runup", str(scene), "--json"]).stdout)
+    assert "magnitude" in doc["displacement"]
+    steady = doc["steady_directions"]["C"]
+    amplitudes = json.loads(runner.invoke(app, ["amplitudes", str(SOFT), "--json"]).stdout)
+    point = amplitudes["approximations"]["averaged_operator"]["points"]["C"]
+    for direction in ("horizontal", "vertical"):
+        assert steady[direction] == pytest.approx(point[direction]["displacement"], rel=1e-4)
+    assert doc["steady_points"]["C"] >= max(steady.values())
+    table = runner.invoke(app, ["runup", str(scene)], env={"COLUMNS": "200"}).stdout
+    assert "|u|" in table and "vertical" in table
+
+
+def test_sweep_rate_definition_is_the_readmes(runner):
+    from foundation_calc.cli.app import app
+
+    readme = (ROOT / "README.md").read_text()
+    row = next(line for line in readme.splitlines() if line.startswith("| `sweep_rate`"))
+    definition = re.search(r"η = [^\[]+", row).group(0).strip()
+    assert definition == "η = r Ω'/ω_i²"  # what solvers.numerics.runup computes
+    shown = runner.invoke(app, ["runup", "--help"], env={"COLUMNS": "200"}).stdout
+    assert definition in " ".join(shown.replace("│", " ").split())

@@ -1,0 +1,45 @@
+"""What `fcalc resonance` imports on its way to the answer (its start-up is measured by `fcalc
+bench`, section startup, against a minimal typer + pydantic + rich command).
+
+A fresh interpreter runs the command on an undamped crank scene and lists the modules loaded. The
+path must not load scipy, the plotting or typesetting extras, another command's module, or the
+solvers of another problem (numpy it does load: the resonance rule weighs each harmonic's forcing
+on the averaged operator's modes); anything new on the path is measured by the bench, and a heavy
+import shows up here first.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+from tests.conftest import CONFIGS
+
+PROBE = """
+import json, runpy, sys
+sys.argv = ["fcalc", "resonance", sys.argv[1]]
+try:
+    runpy.run_module("foundation_calc", run_name="__main__")
+except SystemExit:
+    pass
+sys.stderr.write(json.dumps(sorted(sys.modules)))
+"""
+
+#: Never on the path of `fcalc resonance` with an undamped crank scene.
+HEAVY = ("scipy", "matplotlib", "typst", "multiprocessing")
+
+
+def test_resonance_imports_only_its_own_path():
+    scene = CONFIGS / "compressor_near_resonance.toml"
+    run = subprocess.run([sys.executable, "-c", PROBE, str(scene)], capture_output=True, text=True, check=False)
+    modules = json.loads(run.stderr.splitlines()[-1])
+    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+    own = [m for m in modules if m.startswith("foundation_calc.")]
+    from foundation_calc.cli.app import COMMANDS
+
+    others = {module for name, module in COMMANDS.items() if name != "resonance"}
+    assert not others & set(own)
+    solvers = {m.split(".")[2] for m in own if m.startswith("foundation_calc.solvers.") and m.count(".") >= 3}
+    assert solvers <= {"crank", "soil", "numerics"}
+    assert not [m for m in own if m.startswith(("foundation_calc.benchmarks", "foundation_calc.output.report"))]
