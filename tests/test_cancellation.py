@@ -47,6 +47,7 @@ def test_a_signal_ends_the_batch_and_its_workers_and_marks_the_report(tmp_path, 
     folder = tmp_path / "scenes"
     folder.mkdir()
     slow = (CONFIGS / "frame_saw_soft_soil_runup.toml").read_bytes()  # a start-up: seconds per scene
+    (folder / "a_quick.toml").write_bytes((CONFIGS / "frame_saw.toml").read_bytes())  # checked first, before the fork
     for k in range(12):
         (folder / f"saw_{k:02d}.toml").write_bytes(slow)
     report = tmp_path / "fcalc.xml"

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import tomli_w
 import pytest
 
@@ -79,7 +81,7 @@ def test_unstable_foundation_exits_3_with_a_remedy(tmp_path, runner, frame_saw):
     assert result.exit_code == 3
     assert "unstable in rocking" in result.stderr
     assert "foundation.base_second_moment" in result.stderr
-    assert result.stdout == ""
+    assert json.loads(result.stdout)["problems"][0]["field"] == "foundation.base_second_moment"  # the error's document
 
 
 def test_not_toml_and_missing_file_exit_3(tmp_path, runner):

@@ -194,12 +194,27 @@ def _start_worker() -> None:
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})  # blocked by the fork
     try:
         import ctypes
 
         ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # 1 = PR_SET_PDEATHSIG
     except (OSError, AttributeError):  # not Linux: the parent's terminate() is the only guard
         pass
+
+
+def _fork_pool(jobs: int):
+    """A pool of ``jobs`` forked workers (:func:`_start_worker`). SIGINT and SIGTERM wait while it
+    forks: Python drops the exception of a handler that runs inside the fork's callbacks, which
+    would lose the signal; they are delivered just after."""
+    import multiprocessing
+    import signal
+
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+    try:
+        return multiprocessing.get_context("fork").Pool(jobs, initializer=_start_worker)
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
 def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[SceneRun], Any] = _unchanged) -> Iterator[Any]:
@@ -220,13 +235,11 @@ def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[Sc
         for path, searched in files:
             yield finish(run_scene(path, searched))
         return
-    import multiprocessing
-
     # the first scene is checked here: what its kind imports is then loaded once, before the fork
     yield finish(run_scene(*files[0]))
     rest = files[1:]
     chunk = max(1, min(16, len(rest) // (4 * jobs)))
-    pool = multiprocessing.get_context("fork").Pool(jobs, initializer=_start_worker)
+    pool = _fork_pool(jobs)
     try:
         yield from pool.imap(_run_and_finish, [(path, searched, finish) for path, searched in rest], chunksize=chunk)
     finally:

@@ -96,17 +96,19 @@ def check(
 
     done: list = []  # the scenes checked so far, for the report of an interrupted run
     try:
-        with interruptible():
-            _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done)
+        with interruptible() as again:
+            _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done, again)
     except Interrupted as stop:
         _interrupted(stop, done, junit, strict)
 
 
-def _kept(items, done: list):
+def _kept(items, done: list, again):
     """``items`` (light scene runs, or ``(run, JSON text)`` pairs) passed on, each scene run
-    also appended to ``done``."""
+    also appended to ``done``; ``again`` (of :func:`~foundation_calc.cli.guard.interruptible`)
+    is called after each."""
     for item in items:
         done.append(item[0] if isinstance(item, tuple) else item)
+        again()
         yield item
 
 
@@ -135,7 +137,7 @@ def _interrupted(stop, done: list, junit: Path | None, strict: bool) -> None:
     raise typer.Exit(128 + stop.signum)
 
 
-def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: list) -> None:
+def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: list, again) -> None:
     import functools
     import os
 
@@ -150,9 +152,9 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
     jobs = jobs or os.cpu_count() or 1
     if json:  # the document is written while the scenes are checked; only their verdicts are kept
         entries = iter_scenes(paths, jobs, functools.partial(check_report.json_entry, strict=strict))
-        scenes = check_report.stream_check_json(_kept(entries, done), strict)
+        scenes = check_report.stream_check_json(_kept(entries, done, again), strict)
     else:
-        scenes = list(_kept(iter_scenes(paths, jobs, SceneRun.light), done))
+        scenes = list(_kept(iter_scenes(paths, jobs, SceneRun.light), done, again))
     if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)

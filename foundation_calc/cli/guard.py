@@ -39,18 +39,30 @@ class Interrupted(BaseException):
 @contextlib.contextmanager
 def interruptible():
     """Inside, SIGTERM and SIGINT raise :class:`Interrupted` in the main thread, so that the
-    command can end its workers and its reports before it exits; the handlers are restored after."""
+    command can end its workers and its reports before it exits; the handlers are restored after.
+
+    Yields a function that raises :class:`Interrupted` again when a signal came but its exception
+    was swallowed (Python ignores exceptions raised in some callbacks, e.g. around a fork): call
+    it between steps.
+    """
     import signal
 
+    received: list[int] = []
+
     def interrupt(signum, frame):
+        received.append(signum)
         raise Interrupted(signum)
 
+    def again() -> None:
+        if received:
+            raise Interrupted(received[0])
+
     if threading.current_thread() is not threading.main_thread():
-        yield  # only the main thread receives signals
+        yield again  # only the main thread receives signals
         return
     previous = {signum: signal.signal(signum, interrupt) for signum in (signal.SIGTERM, signal.SIGINT)}
     try:
-        yield
+        yield again
     finally:
         for signum, handler in previous.items():
             signal.signal(signum, handler)
