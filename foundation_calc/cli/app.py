@@ -21,7 +21,8 @@ COMMANDS = {
 EXIT_CODES_HELP = (
     "Exit codes: 0 every check passes; 1 a check fails; 2 command-line usage error;"
     " 3 invalid scene (unreadable, bad TOML, failed validation, physically impossible);"
-    " 4 internal error; 141 stdout closed by its reader (fcalc ... | head)."
+    " 4 internal error; 141 stdout closed by its reader (fcalc ... | head);"
+    " 143 / 130 stopped by SIGTERM / SIGINT."
 )
 
 
@@ -47,9 +48,11 @@ def _root(
 
 def build_app(names=tuple(COMMANDS)) -> typer.Typer:
     """The ``fcalc`` application with the commands ``names`` (all by default)."""
+    from foundation_calc.cli.help_text import PlainCommand
+
     application = typer.Typer(
         name="fcalc",
-        help="Dynamics of machine foundations and vibrating platforms.\n\n" + EXIT_CODES_HELP,
+        help="Dynamics of machine foundations and vibrating platforms.",
         no_args_is_help=True,
         add_completion=False,
         pretty_exceptions_enable=False,
@@ -57,7 +60,7 @@ def build_app(names=tuple(COMMANDS)) -> typer.Typer:
         rich_markup_mode=None,  # help text is plain: units in brackets ([m], [[points]]) print as written
     )
     for name in names:
-        application.command(epilog=EXIT_CODES_HELP)(getattr(importlib.import_module(COMMANDS[name]), name))
+        application.command(epilog=EXIT_CODES_HELP, cls=PlainCommand)(getattr(importlib.import_module(COMMANDS[name]), name))
     application.callback()(_root)
     return application
 
