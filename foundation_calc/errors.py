@@ -84,6 +84,7 @@ class PhysicsError(FcalcError, ValueError):
     exit_code = ExitCode.INVALID_SCENE
 
     def __init__(self, message: str, *, field: str = "", hint: str = ""):
+        self.message = message
         self.field = field
         self.hint = hint
         #: the message without the field: what a JSON document puts next to ``field``

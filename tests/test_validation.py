@@ -118,3 +118,22 @@ def test_the_readme_validation_section_is_the_command_output():
     found = re.search(re.escape(BEGIN) + r"\n(.*?)" + re.escape(END), readme, re.S)
     assert found, f"README.md lacks the markers {BEGIN!r} ... {END!r}"
     assert found.group(1) == run.stdout, "README out of date: paste the output of `fcalc validate --markdown`"
+
+
+def test_report_validation_appends_the_record_to_the_sheet(tmp_path, results):
+    """The sheet's section holds every case with the numbers fcalc validate prints; without the
+    option the sheet has no such section."""
+    from tests.conftest import CONFIGS
+
+    scene = CONFIGS / "platform_paper_example.toml"
+    with_record, without = tmp_path / "with.md", tmp_path / "without.md"
+    for path, extra in ((with_record, ("--validation",)), (without, ())):
+        run = _fcalc("report", str(scene), "-o", str(path), *extra)
+        assert run.returncode == 0, run.stderr
+    text = with_record.read_text(encoding="utf-8")
+    assert "Validation record" in text and "Validation record" not in without.read_text(encoding="utf-8")
+    assert out.summary(results) in text
+    for r in results:
+        assert out.value_text(r.value, out.scale(r)) in text, r.case.key
+    for key in out.sources(results):
+        assert REFERENCES[key].citation.split(",")[0].replace("_", "\\_") in text, key

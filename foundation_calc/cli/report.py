@@ -10,7 +10,7 @@ from typing import Annotated, Optional
 import typer
 
 from foundation_calc.cli.kinds import scene_argument
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, scene_argument("Scene file (TOML), crank_foundation or platform.")]
@@ -24,6 +24,9 @@ SHEET_UNITS = ("mm", "mm/s")
 
 ExactOpt = Annotated[
     bool, typer.Option("--exact", help="Crank scenes: also solve the exact equations and state the closed forms' errors.")
+]
+ValidationOpt = Annotated[
+    bool, typer.Option("--validation", help="Append the validation record (the cases of fcalc validate) to the sheet.")
 ]
 
 
@@ -44,13 +47,17 @@ def check_output(path: Path, hint: str) -> None:
 
 
 @reports_errors
-def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, units: UnitsOpt = None) -> None:
+def report(
+    scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, units: UnitsOpt = None, validation: ValidationOpt = False
+) -> None:
     """Write a calculation sheet: title block, the verdict of every check fcalc check runs on the
     scene, inputs, derived quantities, frequencies, amplitudes or the platform design, the start-up,
     every check's rows with limit, ratio and verdict, the equations with their sources and
     corrections, plots and the accuracy statement.
 
     Exits as fcalc check does on the scene: 0 all pass, 1 a check fails (the sheet is written either way).
+    With --validation the sheet ends with the validation record of fcalc validate; its cases show
+    their own verdicts and do not change the exit code.
     """
     from foundation_calc.output.report import write_sheet
     from foundation_calc.output.report.documents import scene_sheet
@@ -59,6 +66,14 @@ def report(scene: SceneArg, output: OutputOpt = None, exact: ExactOpt = False, u
     check_output(path, "'-o'")
     shown = display_units(units, SHEET_UNITS)
     sheet, checked = scene_sheet(scene, command_line(), shown, exact)
+    print_warnings(checked.warnings, str(scene))  # on the sheet too, in its summary
+    if validation:
+        from dataclasses import replace
+
+        from foundation_calc.output.report.validation import validation_section
+        from foundation_calc.validation.record import run_record
+
+        sheet = replace(sheet, sections=(*sheet.sections, validation_section(run_record())))
     try:
         written = write_sheet(sheet, path)
     except OSError as exc:

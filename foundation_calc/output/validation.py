@@ -67,7 +67,8 @@ def summary(results: Sequence[CaseResult]) -> str:
     return f"{len(results)} cases: {len(results) - failed} pass, {failed} fail"
 
 
-def _sources(results: Sequence[CaseResult]) -> list[str]:
+def sources(results: Sequence[CaseResult]) -> list[str]:
+    """The keys of the sources the cases cite, sorted."""
     return sorted({r.case.source for r in results})
 
 
@@ -95,7 +96,7 @@ def print_record(results: Sequence[CaseResult]) -> None:
     out.print(table)
     out.print(summary(results) + ("" if all(r.passed for r in results) else " (exit 1)"))
     out.print("\nSources:")
-    for key in _sources(results):
+    for key in sources(results):
         out.print(f"  \\[{key}] {escape(REFERENCES[key].citation)}")
 
 
@@ -115,7 +116,7 @@ def record_markdown(results: Sequence[CaseResult]) -> str:
             str(i), f"{c.quantity}; {c.example}", f"[{c.source}] {c.where}", reference_text(r), value_text(r.value, scale(r)),
             difference_text(r), tolerance_text(r), c.basis, verdict(r).upper())) + " |")
     lines += ["", summary(results) + ".", ""]
-    lines += [f"- [{key}] {REFERENCES[key].citation}" for key in _sources(results)]
+    lines += [f"- [{key}] {REFERENCES[key].citation}" for key in sources(results)]
     return "\n".join(lines) + "\n"
 
 
@@ -149,9 +150,9 @@ def record_document(results: Sequence[CaseResult]) -> dict:
             }
             for r in results
         ],
-        "references": {key: REFERENCES[key].citation for key in _sources(results)},
+        "references": {key: REFERENCES[key].citation for key in sources(results)},
     }
 
 
 __all__ = ["difference_text", "print_record", "record_document", "record_markdown", "reference_text",
-           "summary", "tolerance_text", "value_text", "verdict"]
+           "scale", "sources", "summary", "tolerance_text", "value_text", "verdict"]
