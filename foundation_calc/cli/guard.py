@@ -152,6 +152,8 @@ def _print_error_document(command: Callable, args, kwargs, exc: BaseException) -
     if not bound.get("json"):
         return
     name = command.__module__.rpartition(".")[2]  # each command lives in the module of its name
+    if name == "check":
+        return  # its document, written scene by scene, carries every scene's problems itself
     scene = bound.get("scene")
     from foundation_calc.output.console import print_json
 
