@@ -87,9 +87,9 @@ class PhysicsError(FcalcError, ValueError):
         self.message = message
         self.field = field
         self.hint = hint
-        #: the message without the field: what a JSON document puts next to ``field``
-        self.message = f"{message} ({hint})" if hint else message
-        super().__init__(f"{field}: {self.message}" if field else self.message)
+        #: message and hint without the field: what a JSON document puts next to ``field``
+        self.detail = f"{message} ({hint})" if hint else message
+        super().__init__(f"{field}: {self.detail}" if field else self.detail)
 
 
 class ConvergenceError(FcalcError, ArithmeticError):

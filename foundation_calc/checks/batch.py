@@ -92,7 +92,7 @@ def _error_run(check: str, exc: BaseException) -> CheckRun:
     if isinstance(exc, SceneError):
         return CheckRun(check, "invalid", ("the scene cannot be used",), problems=tuple(exc.problems))
     if isinstance(exc, PhysicsError):
-        return CheckRun(check, "invalid", (str(exc),), problems=((exc.field, exc.message),))
+        return CheckRun(check, "invalid", (str(exc),), problems=((exc.field, exc.detail),))
     if isinstance(exc, FcalcError):
         return CheckRun(check, "invalid", (str(exc),), problems=(("", str(exc)),))
     text = f"{type(exc).__name__}: {exc}"

@@ -125,7 +125,7 @@ def error_document(command: str, scene: str, exc: BaseException) -> dict:
     if isinstance(exc, SceneError):
         scene, problems = exc.source, list(exc.problems)
     elif isinstance(exc, PhysicsError):
-        problems = [(exc.field, exc.message)]
+        problems = [(exc.field, exc.detail)]
     elif isinstance(exc, FcalcError):
         problems = [("", str(exc))]
     else:
