@@ -6,8 +6,11 @@ from pathlib import Path
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.contents import crank_sections, operating_speed, platform_sections, sweep_series
+from foundation_calc.output.report.assumptions import assumptions_section
 from foundation_calc.output.report.inputs import inputs_section
+from foundation_calc.output.report.methods import methods_section
 from foundation_calc.output.report.model import Section, Sheet
+from foundation_calc.output.report.references import references_section
 from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
 from foundation_calc.output.report.verdict import checks_section, summary_section
 
@@ -81,12 +84,16 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
     documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
     title = title_block(path, loaded, command)
-    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units)]
+    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units),
+                assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
+    methods = methods_section(loaded, documents)
+    sections += [methods] if methods is not None else []
     if "runup" in documents:
         from foundation_calc.output.report.runup_section import runup_section
 
         report = next(run.report for run in runs if run.check == "runup")
         sections.append(runup_section(documents["runup"], report, loaded, units, figures))
     sections.append(checks_section(runs, documents, loaded, units))
+    sections.append(references_section(sections))
     return Sheet(sheet_title(title), tuple(sections), page_header(title)), scene_run

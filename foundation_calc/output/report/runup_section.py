@@ -12,7 +12,7 @@ from foundation_calc.output.report.numbers import DIGITS, figure, quantity
 
 CLOSED_FORM_NOTE = (
     "closed form: the mode alone, Faddeeva envelope of the passage with the unbalance force growing as"
-    " (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote; integration: the same mode's motion"
+    " (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote [Le]; integration: the same mode's motion"
     " in the time integration of the whole linear model; all modes: largest displacement of any point in"
     " the passage's window. η = (dΩ/dt)/ω_n² is the sweep rate, ζ the mode's damping ratio."
 )

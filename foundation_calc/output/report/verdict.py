@@ -56,7 +56,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             "≤ " + quantity(velocity, "velocity", row["limit"]),
             ratio(row["ratio"]),
             row["verdict"],
-            f"{code['code']} {code['clause']}, group {code['machine_group']}, {code['foundation']}",
+            f"[ISO] {code['clause']}, group {code['machine_group']}, {code['foundation']}",
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])

@@ -1,0 +1,90 @@
+"""Hand calculations on a sheet: formula with its source, the values substituted, the result.
+
+A :class:`Chain` is written the way a checking engineer reads a Mathcad sheet: the inputs it uses
+(:meth:`Chain.given`), then each step (:meth:`Chain.step`) as ``symbol = formula = values =
+result unit`` with the equation's source. A step's formula is a Python expression over the
+names given before; the chain evaluates it itself, so the number printed is the one the printed
+formula gives with the printed inputs (tests compare it with the solvers' numbers). Every name
+used is collected with its meaning and unit for the sheet's nomenclature.
+
+>>> chain = Chain("Soil springs")
+>>> chain.given("c_z", 1.0e6, "N/m³", "coefficient of elastic uniform compression")
+>>> chain.given("S", 30.0, "m²", "base area")
+>>> chain.step("K_z", "c_z*S", "N/m", "[KM] Eq. (3.2)", "vertical base spring")
+30000000.0
+>>> chain.rows[-1][:4]
+('K_z', 'c_z·S', '1.000·10⁶ × 30.00', '3.000·10⁷')
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from foundation_calc.output.report.model import Table, table
+from foundation_calc.output.report.numbers import figure
+
+#: Significant figures of every number in a hand calculation.
+DIGITS = 4
+
+#: Names of the Python expressions -> the symbols printed.
+SYMBOLS = {
+    "pi": "π", "nu": "ν", "rho": "ρ", "c_phi": "c_φ", "K_phi": "K_φ", "xi_z": "ξ_z", "xi_x": "ξ_x",
+    "xi_phi": "ξ_φ", "C_phi": "C_φ", "r0psi": "r0ψ", "B_phi": "B_φ", "D_phi": "D_φ", "omega": "ω",
+    "mu": "μ", "lam": "λ", "zeta": "ζ", "eta": "η", "M_sigma": "M_Σ", "xi_m": "ξ_m", "omega_t": "ω_t",
+}
+
+_NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
+_MATH = {"sqrt": math.sqrt, "pi": math.pi, "abs": abs}
+_POWERS = {"**2": "²", "**3": "³", "**4": "⁴", "**5": "⁵", "**0.5": "^½", "**0.25": "^¼"}
+
+
+def _pretty(expression: str, names, times: str = "·") -> str:
+    """The expression as printed: symbols for names, ``times`` for *, superscripts, √."""
+    text = expression
+    for power, shown in _POWERS.items():
+        text = text.replace(power, shown)
+    text = text.replace("*", times).replace("/", " / ").replace("sqrt", "√")
+    return _NAME.sub(lambda m: names(m.group()), text)
+
+
+class Chain:
+    """One hand calculation: inputs and steps, in order, for one section of the sheet."""
+
+    def __init__(self, title: str):
+        self.title = title
+        self.values: dict[str, float] = {}
+        self.rows: list[tuple[str, str, str, str, str, str]] = []
+        self.nomenclature: dict[str, tuple[str, str]] = {}
+
+    def given(self, name: str, value: float, unit: str, meaning: str) -> None:
+        """An input of the chain (from the scene or an earlier section)."""
+        self.values[name] = float(value)
+        self.nomenclature[SYMBOLS.get(name, name)] = (meaning, unit)
+
+    def step(self, name: str, expression: str, unit: str, source: str, meaning: str) -> float:
+        """Evaluate ``expression`` over the names given, record the row and return the value."""
+        value = float(eval(expression, {"__builtins__": {}}, {**_MATH, **self.values}))  # our own formulas only
+        formula = _pretty(expression, lambda n: SYMBOLS.get(n, n))
+        substituted = _pretty(expression, lambda n: SYMBOLS[n] if n in _MATH else figure(self.values[n], DIGITS), " × ")
+        symbol = SYMBOLS.get(name, name)
+        self.rows.append((symbol, formula, substituted, figure(value, DIGITS), unit, source))
+        self.values[name] = value
+        self.nomenclature[symbol] = (meaning, unit)
+        return value
+
+    def table(self) -> Table:
+        """The chain as a table: symbol, formula, values substituted, result, unit, source."""
+        return table(
+            self.title, ("", "formula", "values", "result", "unit", "source"), self.rows,
+            (False, False, False, True, False, False),
+        )
+
+
+def nomenclature_table(chains) -> Table:
+    """Every symbol of ``chains`` with its meaning and unit, in order of first use."""
+    seen: dict[str, tuple[str, str]] = {}
+    for chain in chains:
+        for symbol, entry in chain.nomenclature.items():
+            seen.setdefault(symbol, entry)
+    return table("Nomenclature", ("symbol", "meaning", "unit"), ((s, m, u) for s, (m, u) in seen.items()), (False, False, False))

@@ -1,0 +1,156 @@
+"""The methods section of a sheet as hand calculations, only for what the scene used.
+
+Each chain starts from the scene's numbers and ends in a number a check judged (or that feeds
+one): the soil's springs and damping by the scene's method, the natural frequencies, the base
+dashpots of a damped scene, the platform's design. The chains evaluate their own printed
+formulas (:mod:`~foundation_calc.output.report.handcalc`); ``tests/test_report_methods.py``
+compares every end value with the solvers'.
+"""
+
+from __future__ import annotations
+
+from foundation_calc.output.report.handcalc import Chain
+from foundation_calc.solvers.constants import GRAVITY
+
+KM = "[KM]"
+BC = "[BC]"
+RHW = "[RHW] ch. 10; [DR] ch. 5"
+
+
+def _coefficient_springs(scene) -> Chain:
+    f, s = scene.foundation, scene.soil
+    chain = Chain("Soil springs from Barkan's coefficients (soil.method = \"coefficients\")")
+    chain.given("S", f.base_area, "m²", "area of the base")
+    chain.given("I1", f.base_second_moment, "m⁴", "second moment of the base area about its axis normal to the plane")
+    chain.given("c_z", s.c_z, "N/m³", "coefficient of elastic uniform compression")
+    chain.given("c_x", s.c_x, "N/m³", "coefficient of elastic uniform shear")
+    chain.given("c_phi", s.c_z if s.c_phi is None else s.c_phi, "N/m³",
+                "coefficient of elastic non-uniform compression (rocking; c_z unless soil.c_phi is given)")
+    chain.step("K_z", "c_z*S", "N/m", f"{KM} (3.2); [Ba]", "vertical base spring")
+    chain.step("K_x", "c_x*S", "N/m", f"{KM} (3.3); [Ba]", "horizontal base spring")
+    chain.step("K_phi", "c_phi*I1", "N m/rad", f"{KM} (3.4); [Ba]", "rocking base spring")
+    return chain
+
+
+def _lysmer_springs(scene) -> Chain:
+    f, s = scene.foundation, scene.soil
+    L, B = f.dimensions
+    M_tot = scene.total_mass
+    chain = Chain("Soil springs and radiation damping: Lysmer's and Hall's analogs (soil.method = \"lysmer\")")
+    chain.given("G", s.G, "Pa", "shear modulus of the soil")
+    chain.given("rho", s.density, "kg/m³", "mass density of the soil")
+    chain.given("nu", s.poisson, "-", "Poisson's ratio of the soil")
+    chain.given("L", L, "m", "base length in the plane of motion")
+    chain.given("B", B, "m", "base width")
+    chain.given("M_tot", M_tot, "kg", "total vibrating mass")
+    chain.given("I_0", f.moment_of_inertia + M_tot * f.cog_height**2, "kg m²", "moment of inertia about the base axis, I_c + M_tot h²")
+    chain.given("xi_m", s.material_damping or 0.0, "-", "material damping ratio of the soil")
+    chain.step("r0", "sqrt(B*L/pi)", "m", RHW, "radius of the circle of the base's area")
+    chain.step("r0psi", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment")
+    chain.step("K_z", "4*G*r0/(1 - nu)", "N/m", f"{RHW} (Lysmer)", "vertical base spring")
+    chain.step("B_z", "(1 - nu)*M_tot/(4*rho*r0**3)", "-", RHW, "vertical mass ratio")
+    chain.step("xi_z", "0.425/sqrt(B_z) + xi_m", "-", RHW, "vertical damping ratio (radiation + material)")
+    chain.step("K_x", "32*(1 - nu)*G*r0/(7 - 8*nu)", "N/m", f"{RHW} (Hall)", "horizontal base spring")
+    chain.step("B_x", "(7 - 8*nu)*M_tot/(32*(1 - nu)*rho*r0**3)", "-", RHW, "horizontal mass ratio")
+    chain.step("xi_x", "0.2875/sqrt(B_x) + xi_m", "-", RHW, "horizontal damping ratio (radiation + material)")
+    chain.step("K_phi", "8*G*r0psi**3/(3*(1 - nu))", "N m/rad", f"{RHW} (Hall)", "rocking base spring")
+    chain.step("B_phi", "3*(1 - nu)*I_0/(8*rho*r0psi**5)", "-", RHW, "rocking inertia ratio")
+    chain.step("xi_phi", "0.15/((1 + B_phi)*sqrt(B_phi)) + xi_m", "-", RHW, "rocking damping ratio (radiation + material)")
+    return chain
+
+
+def _frequencies(scene, springs) -> Chain:
+    f = scene.foundation
+    chain = Chain("Natural frequencies of the block on its springs (zero-order operator)")
+    chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass (block, machine, rod and slider)")
+    chain.given("I_c", f.moment_of_inertia, "kg m²", "moment of inertia of the block about its centre of mass C")
+    chain.given("h", f.cog_height, "m", "height of C above the base")
+    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+    for name, meaning, unit in (("K_z", "vertical base spring", "N/m"), ("K_x", "horizontal base spring", "N/m"),
+                                ("K_phi", "rocking base spring", "N m/rad")):
+        chain.given(name, float(getattr(springs, name)), unit, meaning)
+    chain.step("P", "M_tot*g", "N", f"{KM} (3.4)", "weight of the vibrating mass")
+    chain.step("k0", "sqrt(K_z/M_tot)", "rad/s", f"{KM} (4.5)", "vertical natural frequency")
+    chain.step("a0", "K_x/M_tot", "1/s²", f"{KM} (4.5)", "sliding coefficient")
+    chain.step("b0", "K_x*h/M_tot", "m/s²", f"{KM} (4.5)", "sliding-rocking coupling")
+    chain.step("a1", "K_x*h/I_c", "1/(m s²)", f"{KM} (4.5)", "rocking-sliding coupling")
+    chain.step("b1", "(K_x*h**2 + K_phi - P*h)/I_c", "1/s²", f"{KM} (4.5), weight term −P h corrected", "rocking coefficient")
+    chain.step("p2", "sqrt((a0 + b1)/2 + sqrt(((a0 - b1)/2)**2 + a1*b0))", "rad/s", f"{KM} (4.7)", "upper sliding-rocking frequency")
+    chain.step("p1", "sqrt((a0*b1 - a1*b0)/p2**2)", "rad/s", f"{KM} (4.7)", "lower sliding-rocking frequency")
+    return chain
+
+
+def _dashpots(scene, springs) -> Chain:
+    f = scene.foundation
+    M_tot = scene.total_mass
+    chain = Chain("Base dashpots of the damped soil (C = 2 ξ sqrt(K m) per uncoupled mode)")
+    chain.given("M_tot", M_tot, "kg", "total vibrating mass")
+    chain.given("I_0", f.moment_of_inertia + M_tot * f.cog_height**2, "kg m²", "moment of inertia about the base axis, I_c + M_tot h²")
+    for name, meaning, unit in (
+        ("K_z", "vertical base spring", "N/m"), ("K_x", "horizontal base spring", "N/m"), ("K_phi", "rocking base spring", "N m/rad"),
+        ("xi_z", "vertical damping ratio", "-"), ("xi_x", "horizontal damping ratio", "-"), ("xi_phi", "rocking damping ratio", "-"),
+    ):
+        chain.given(name, float(getattr(springs, name)), unit, meaning)
+    chain.step("C_z", "2*xi_z*sqrt(K_z*M_tot)", "N s/m", RHW, "vertical dashpot")
+    chain.step("C_x", "2*xi_x*sqrt(K_x*M_tot)", "N s/m", RHW, "horizontal dashpot at the base")
+    chain.step("C_phi", "2*xi_phi*sqrt(K_phi*I_0)", "N m s/rad", RHW, "rocking dashpot")
+    return chain
+
+
+def crank_chains(scene) -> list[Chain]:
+    """The hand calculations of a crank foundation scene: springs by its soil method (where the
+    method has a chain here), natural frequencies and, when the soil is damped, the dashpots."""
+    springs = scene.soil_springs()
+    method = scene.soil.method_used
+    chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs]}.get(method, [])
+    out = [make(scene) for make in chains]
+    out.append(_frequencies(scene, springs))
+    if any(float(getattr(springs, k)) > 0 for k in ("xi_z", "xi_x", "xi_phi")):
+        out.append(_dashpots(scene, springs))
+    return out
+
+
+def platform_chain(doc: dict) -> Chain:
+    """The platform's design (3.14) and static deflection, from the ``design`` document's inputs."""
+    i, d = doc["inputs"], doc["design"]
+    chain = Chain("Platform design: isolator stiffness and static deflection")
+    chain.given("M_sigma", d["M_sigma"], "kg", "moving mass M + 4m (platform, product and unbalances)")
+    chain.given("m", i["m"], "kg", "unbalanced mass of one exciter")
+    chain.given("l", i["l"], "m", "eccentricity of the unbalances")
+    chain.given("u", i["u"], "m", "required circular amplitude")
+    chain.given("omega", doc["speed"]["omega"], "rad/s", "exciter speed")
+    chain.given("g", i["g"], "m/s²", "acceleration of gravity")
+    sign = "+" if i["regime"] == "below" else "-"
+    chain.step("c0", f"M_sigma*omega**2 {sign} m*l*omega**2/u", "N/m", f"{BC} (3.14), {i['regime']} resonance", "summed horizontal stiffness c0 = c1 = c2")
+    chain.given("c3", d["c3"], "N/m", "summed vertical stiffness")
+    chain.step("z", "-M_sigma*g/c3", "m", f"{BC} static deflection (sign corrected)", "static deflection")
+    chain.step("omega_t", "sqrt(c0/M_sigma)", "rad/s", BC, "translational natural frequency")
+    return chain
+
+
+#: Soil methods without a chain here: where their springs are stated and their source.
+SPRINGS_ELSEWHERE = {
+    "gazetas": "Springs and damping by Gazetas' formulas [Ga] (static stiffnesses, embedment factors): the"
+               " values are in the inputs' springs table.",
+    "sp26": "Springs by the code's coefficients from the deformation modulus [SP26]: the values are in the"
+            " inputs' springs table.",
+}
+
+
+def methods_section(scene, documents: dict):
+    """The hand calculations and nomenclature of the scene (None for a kind without chains here)."""
+    from foundation_calc.output.report.handcalc import nomenclature_table
+    from foundation_calc.output.report.model import Paragraph, Section
+
+    blocks = []
+    if scene.kind == "crank_foundation":
+        chains = crank_chains(scene)
+        note = SPRINGS_ELSEWHERE.get(scene.soil.method_used)
+        blocks += [Paragraph(note)] if note else []
+    elif scene.kind == "platform" and "design" in documents:
+        chains = [platform_chain(documents["design"])]
+    else:
+        return None
+    blocks += [chain.table() for chain in chains]
+    blocks.append(nomenclature_table(chains))
+    return Section("Methods: hand calculation of the judged numbers", tuple(blocks))

@@ -1,0 +1,120 @@
+"""The sheet's hand calculations end in the solvers' numbers; what a sheet cites, it references.
+
+The chains evaluate their own printed formulas; the solvers compute the same numbers by other
+code (the soil methods, the zero-order operator with its cancellation-free smaller root, the
+dashpots, the platform design). Agreement to 1e-9 relative: the same formulas in double
+precision, rearranged (p1 by the product of the roots here, by a cancellation-free form there).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from foundation_calc.output.report.methods import crank_chains, methods_section, platform_chain
+from foundation_calc.scenes import load_scene
+from tests.conftest import CONFIGS
+
+TOLERANCE = 1e-9
+
+CRANK = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "crank_foundation")
+PLATFORM = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "platform")
+
+
+def _close(a: float, b: float) -> bool:
+    return abs(a - b) <= TOLERANCE * max(abs(a), abs(b), 1e-300)
+
+
+@pytest.mark.parametrize("path", CRANK, ids=lambda p: p.stem)
+def test_crank_chains_end_in_the_solvers_numbers(path):
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
+
+    scene = load_scene(path)
+    chains = {c.title.split(" ")[0]: c.values for c in crank_chains(scene)}
+    springs = scene.soil_springs()
+    if "Soil" in chains:
+        for key in ("K_z", "K_x", "K_phi") + (("xi_z", "xi_x", "xi_phi") if scene.soil.method_used == "lysmer" else ()):
+            assert _close(chains["Soil"][key], float(getattr(springs, key))), key
+    from foundation_calc.output.crank_resonance import resonance_document
+
+    natural = resonance_document(check_scene_resonances(scene), scene, "")["natural_frequencies"]
+    for key in ("k0", "p1", "p2"):
+        assert _close(chains["Natural"][key], natural[key]), key
+    if "Base" in chains:  # the dashpots the solvers get (solvers.soil.dashpots)
+        dashpots = scene.base_dashpots(springs, scene.total_mass)
+        for key in ("C_z", "C_x", "C_phi"):
+            assert _close(chains["Base"][key], float(dashpots[key])), key
+
+
+@pytest.mark.parametrize("path", PLATFORM, ids=lambda p: p.stem)
+def test_platform_chain_ends_in_the_design(path):
+    from foundation_calc.checks.platform import check_platform
+    from foundation_calc.output.platform import platform_document
+
+    scene = load_scene(path)
+    report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
+    doc = platform_document(report, scene, "", scene.operation.speed_given_as)
+    values = platform_chain(doc).values
+    d = doc["design"]
+    assert _close(values["c0"], d["c0"])
+    assert _close(values["z"], d["static_deflection"])
+    assert _close(values["omega_t"], d["translation_frequency"])
+
+
+@pytest.mark.parametrize("path", [*CRANK, *PLATFORM], ids=lambda p: p.stem)
+def test_every_symbol_of_a_chain_is_in_the_nomenclature(path):
+    from foundation_calc.output.report.handcalc import SYMBOLS
+
+    scene = load_scene(path)
+    doc = None
+    if scene.kind == "platform":
+        from foundation_calc.checks.platform import check_platform
+        from foundation_calc.output.platform import platform_document
+
+        report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
+        doc = {"design": platform_document(report, scene, "", scene.operation.speed_given_as)}
+    section = methods_section(scene, doc or {})
+    *chains, nomenclature = [b for b in section.blocks if hasattr(b, "rows")]
+    defined = {row[0] for row in nomenclature.rows}
+    for chain in chains:
+        for symbol, formula, *_ in chain.rows:
+            assert symbol in defined
+            names = set(formula.replace("·", " ").replace("√", " ").translate(str.maketrans("()/+-²³⁴⁵^¼½", "            ")).split())
+            assert {n for n in names if not n.replace(".", "").isdigit() and n != "π"} <= defined, (chain.title, formula)
+    assert SYMBOLS  # symbols used by the chains
+
+
+def test_loads_only_sheet_lists_no_crank_equations(runner, tmp_path):
+    pytest.importorskip("matplotlib")
+    from foundation_calc.cli.app import app
+
+    out = tmp_path / "sheet.md"
+    runner.invoke(app, ["report", str(CONFIGS / "compressor_vendor_loads.toml"), "-o", str(out), "--exact"])
+    text = out.read_text(encoding="utf-8").replace("\\", "")
+    assert "(4.11)" not in text and "(4.14)" not in text and "x_c = μ" not in text
+    assert "not computed" not in text and "exact solution of the linear rigid-block model" in text
+
+
+def test_every_cited_source_has_a_full_reference(tmp_path):
+    pytest.importorskip("matplotlib")
+    import re
+
+    from foundation_calc.output.display_units import DisplayUnits
+    from foundation_calc.output.report import markdown
+    from foundation_calc.output.report.documents import scene_sheet
+    from foundation_calc.output.report.references import REFERENCES
+
+    for path in (CONFIGS / "compressor_medium_sand_lysmer.toml", CONFIGS / "compressor_vendor_loads.toml", CONFIGS / "platform_damped.toml"):
+        sheet, _ = scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)
+        text = markdown.render(sheet, []).replace("\\", "")
+        body, _, references = text.partition("## ")[2].rpartition("References")
+        for key in set(re.findall(r"\[([A-Za-z0-9]+)\]", body)) & set(REFERENCES):
+            assert f"| [{key}] | {REFERENCES[key]}" in references, (path.name, key)
+
+
+def test_readme_lists_every_reference_in_full():
+    from foundation_calc.output.report.references import REFERENCES
+    from tests.conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    for key, entry in REFERENCES.items():
+        assert f"- **[{key}]** {entry}" in readme, key
