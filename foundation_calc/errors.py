@@ -53,6 +53,7 @@ class PhysicsError(FcalcError, ValueError):
     exit_code = ExitCode.INVALID_SCENE
 
     def __init__(self, message: str, *, field: str = "", hint: str = ""):
+        self.message = message
         self.field = field
         self.hint = hint
         text = f"{field}: {message}" if field else message

@@ -24,6 +24,16 @@ def mechanism_configs() -> list[Path]:
     return [p for p in configs_of_kind("crank_foundation") if "mechanism" in read_toml(p)]
 
 
+def only_input_warnings(stderr: str, config: Path) -> bool:
+    """True when ``stderr`` holds nothing but the plausibility warnings of the scene ``config``
+    (every shipped scene has none but the contrived soft soil of frame_saw_soft_soil_runup.toml)."""
+    from foundation_calc.scenes import parse_scene
+
+    expected = parse_scene(read_toml(config), source=str(config)).plausibility_warnings()
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    return all(line.startswith("warning: ") and any(line.endswith(w) for w in expected) for line in lines)
+
+
 @pytest.fixture
 def runner() -> CliRunner:
     return CliRunner()

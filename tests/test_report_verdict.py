@@ -84,6 +84,8 @@ def _result_rows(check: dict) -> list[str]:
         return [r["verdict"] for r in result["limits"]] + [t["verdict"] for t in (result.get("motor") or {}).get("sommerfeld", ())]
     if name == "office":
         return [r["verdict"] for r in result["office"]]
+    if name == "inputs":  # the plausibility warnings: one row, no result document
+        return [check["verdict"]]
     return [c["verdict"] for c in result["checks"]]
 
 

@@ -36,10 +36,10 @@ def _finding(report, name):
 
 
 def test_platform_with_mm_typed_as_m_is_not_buildable(runner):
-    """u = 0.5 m puts the exciter 867 m below the platform: exit 3 naming the field and the range."""
+    """u = 0.5 m puts the exciter 867 m below the platform: exit 3 naming the option and the range."""
     result = runner.invoke(app, ["platform", "--amp", "0.5"])
     assert result.exit_code == 3
-    assert "exciter.height" in result.stderr and "u < 0.0109" in result.stderr.replace("\n", "")
+    assert "error: --amp 0.5: " in result.stderr and "u < 0.0109" in result.stderr.replace("\n", "")
 
 
 @pytest.mark.parametrize("regime", ["above", "below"])

@@ -60,8 +60,9 @@ def resonance_masks(margin, detuning, driven):
     return verdict.status[..., 0] == FAIL, margin < detuning
 
 
-def exit_code(outcome: Outcome, strict: bool = False) -> ExitCode:
-    """Exit code of a run whose worst outcome is ``outcome``."""
-    if outcome is Outcome.FAIL or (strict and outcome is Outcome.WARN):
+def exit_code(outcome: Outcome, strict: bool = False, warned: bool = False) -> ExitCode:
+    """Exit code of a run whose worst outcome is ``outcome``; ``warned``: the scene has
+    plausibility warnings, which fail like a warning with ``strict``."""
+    if outcome is Outcome.FAIL or (strict and (outcome is Outcome.WARN or warned)):
         return ExitCode.CHECK_FAILED
     return ExitCode.OK

@@ -49,6 +49,18 @@ class Finding:
     details: tuple[str, ...] = ()
 
 
+def inputs(scene) -> Finding | None:
+    """The scene's plausibility warnings (values probably typed in another unit) as a check that
+    warns, so that the table, JUnit and ``--strict`` treat them as every other warning; None for
+    a scene without any."""
+    warnings = scene.plausibility_warnings()
+    if not warnings:
+        return None
+    count = f"{len(warnings)} input value{'s' * (len(warnings) > 1)} outside the plausible ranges"
+    reason = (f"{count}: {warnings[0]}" + (f" (+{len(warnings) - 1} more, on stderr)" if len(warnings) > 1 else ""),)
+    return Finding("inputs", Outcome.WARN, reason, details=tuple(f"WARN {w}" for w in warnings))
+
+
 def crank_resonance(scene) -> Finding:
     """Margin of the crank speed from every resonance (``fcalc resonance``)."""
     from foundation_calc.checks.crank_resonance import check_scene_resonances
@@ -230,7 +242,8 @@ def block_office(scene) -> Finding:
 
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
-    "crank_foundation": {"resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup, "office": crank_office},
-    "platform": {"design": platform_design, "runup": runup},
-    "block_foundation": {"resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
+    "crank_foundation": {"inputs": inputs, "resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup,
+                         "office": crank_office},
+    "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
+    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
 }

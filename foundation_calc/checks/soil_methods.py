@@ -68,8 +68,8 @@ class SoilComparison:
 
     used: str
     results: tuple[MethodResult, ...]
-    #: the static-versus-dynamic modulus trap (also among the scene's plausibility warnings)
-    modulus_warnings: tuple[str, ...]
+    #: the scene's plausibility warnings (a unit slip, a static modulus for a dynamic one)
+    input_warnings: tuple[str, ...]
     #: methods that disagree by more than DISAGREEMENT_FACTOR, methods that tip the block over
     findings: tuple[str, ...]
 
@@ -156,6 +156,6 @@ def compare_soil_methods(scene) -> SoilComparison:
     return SoilComparison(
         used=scene.soil.method_used,
         results=results,
-        modulus_warnings=tuple(scene.soil.modulus_warnings()),
+        input_warnings=tuple(scene.plausibility_warnings()),
         findings=tuple(findings),
     )

@@ -52,6 +52,9 @@ def platform(
 def _run(scene: Path | None, speeds: dict, amp: float | None, json: bool, strict: bool) -> None:
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.checks.platform import check_platform
+    from operator import attrgetter
+
+    from foundation_calc.errors import PhysicsError
     from foundation_calc.output import platform as report_out
     from foundation_calc.scenes import parse_scene, read_toml
     from foundation_calc.scenes.platform import DEFAULT_SCENE
@@ -69,15 +72,28 @@ def _run(scene: Path | None, speeds: dict, amp: float | None, json: bool, strict
             operation["amplitude"] = amp
         source += " (with command-line overrides)"
     loaded = parse_scene(data, source=source, expect="platform")
+    if overridden:
+        typed = {f"operation.{key}": SPEED_FLAGS[key] for key in speeds}
+        if amp is not None:
+            typed["operation.amplitude"] = "--amp"
+        loaded.given_on_command_line(typed)
     warn_implausible(loaded)
     given_as = loaded.operation.speed_given_as
     if speeds:
         given_as = f"{SPEED_FLAGS[given_as]} on the command line"
-    report = check_platform(loaded.design(), loaded.model(), loaded.limits, loaded.inertia_given)
+    try:
+        design = loaded.design()
+    except PhysicsError as exc:  # name the option the user typed, not the scene key it set
+        option = loaded.key_as_given(exc.field)
+        if option == exc.field:
+            raise
+        typed = f"{option} {attrgetter(exc.field)(loaded):g}"
+        raise PhysicsError(exc.message, field=typed, hint=exc.hint) from None
+    report = check_platform(design, loaded.model(), loaded.limits, loaded.inertia_given)
     if json:
         from foundation_calc.output.console import print_json
 
         print_json(report_out.platform_document(report, loaded, source, given_as))
     else:
         report_out.print_platform_report(report, loaded, source, given_as, strict)
-    raise typer.Exit(int(exit_code(report.outcome, strict)))
+    raise typer.Exit(int(exit_code(report.outcome, strict, bool(loaded.plausibility_warnings()))))

@@ -9,7 +9,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from foundation_calc.cli.guard import reports_errors
+from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
 SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML), crank_foundation or platform.", show_default=False)]
@@ -65,6 +65,7 @@ def report(
     check_output(path, "'-o'")
     shown = display_units(units, SHEET_UNITS)
     sheet, checked = scene_sheet(scene, command_line(), shown, exact)
+    print_warnings(checked.warnings, str(scene))  # on the sheet too, in its summary
     if validation:
         from dataclasses import replace
 

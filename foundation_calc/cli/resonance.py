@@ -41,4 +41,4 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
         print_json(report_out.resonance_document(report, loaded, str(scene)))
     else:
         report_out.print_resonance_report(report, loaded, str(scene), shown, strict)
-    raise typer.Exit(int(exit_code(report.outcome, strict)))
+    raise typer.Exit(int(exit_code(report.outcome, strict, bool(loaded.plausibility_warnings()))))

@@ -138,6 +138,6 @@ def sweep(
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report_out.sweep_document(report, str(scene), loaded.name))
+        print_json(report_out.sweep_document(report, str(scene), loaded.name, loaded.plausibility_warnings()))
     else:
         report_out.print_sweep(report, str(scene), loaded.name, shown)

@@ -151,7 +151,10 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.platform import platform_document
 
         document = platform_document(report, scene, "", scene.operation.speed_given_as)
-    return {k: v for k, v in document.items() if k not in ("schema_version", "command", "scene")}
+    if check == "runup":  # the scene's plausibility warnings are the scene entry's; the run's own stay
+        document["warnings"] = list(report.warnings)
+    skipped = ("schema_version", "command", "scene") + (() if check == "runup" else ("warnings",))
+    return {k: v for k, v in document.items() if k not in skipped}
 
 
 def scene_entry(scene: SceneRun, strict: bool = False) -> dict:

@@ -156,6 +156,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         ],
         "code": code_document(report, scene.limits),
         "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
     if report.exact_info is not None:

@@ -94,6 +94,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
             for row in report.rows
         ],
         "rule": rule_document(report),
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
 

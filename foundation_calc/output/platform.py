@@ -105,6 +105,7 @@ def platform_document(report: PlatformReport, scene, source: str, given_as: str)
             for r in report.sensitivity
         ],
         "checks": [{"name": f.name, "verdict": f.outcome.value, "message": f.message} for f in report.findings],
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
 

@@ -97,7 +97,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
              "verdict": NOT_JUDGED if row.outcome is None else row.outcome.value}
             for row in report.rows
         ],
-        "warnings": list(report.warnings),
+        "warnings": [*scene.plausibility_warnings(), *report.warnings],
         "verdict": _verdict(report),
     }
 

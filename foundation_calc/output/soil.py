@@ -61,7 +61,7 @@ def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
         "methods": {
             r.method: {key: _finite(getattr(r, key)) for key in _JSON_KEYS} for r in comparison.results
         },
-        "warnings": [*comparison.modulus_warnings, *comparison.findings],
+        "warnings": [*comparison.input_warnings, *comparison.findings],
     }
 
 

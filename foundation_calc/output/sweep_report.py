@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
@@ -94,8 +95,9 @@ def _rows(report):
         }
 
 
-def sweep_document(report, scene_path: str, name: str) -> dict:
-    """The sweep as one JSON-ready dict (SI units: rad/s, m, rad)."""
+def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] = ()) -> dict:
+    """The sweep as one JSON-ready dict (SI units: rad/s, m, rad); ``warnings``: the scene's
+    plausibility warnings."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "scene": scene_path,
@@ -111,6 +113,7 @@ def sweep_document(report, scene_path: str, name: str) -> dict:
             for c in report.critical
         ],
         "points": list(_rows(report)),
+        "warnings": list(warnings),
     }
 
 

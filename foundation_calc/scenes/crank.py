@@ -7,7 +7,6 @@ message names the field to change.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING, Literal
 
 from pydantic import ValidationInfo, field_validator, model_validator
@@ -23,6 +22,7 @@ from foundation_calc.scenes.common import (
     quantity,
 )
 from foundation_calc.scenes.foundation import Foundation
+from foundation_calc.scenes.plausibility import Remark, judge
 from foundation_calc.scenes.soil import Soil
 from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
@@ -139,6 +139,13 @@ class Limits(SceneModel):
     def _detuning_bands(cls, value):
         return detuning_bands(value)
 
+    def plausibility_findings(self) -> list:
+        """The limits outside the ranges of :data:`~foundation_calc.scenes.plausibility.RANGES`."""
+        ranges = {"amplitude": "amplitude_limit", "amplitude_rms": "amplitude_limit", "velocity": "velocity_limit",
+                  "velocity_rms": "velocity_limit", "acceleration": "acceleration_limit",
+                  "acceleration_rms": "acceleration_limit", "transient_amplitude": "transient_amplitude_limit"}
+        return [f for key, name in ranges.items() for f in judge(f"limits.{key}", getattr(self, key), name)]
+
     @field_validator("code", mode="before")
     @classmethod
     def _known_code(cls, code):
@@ -241,11 +248,6 @@ class Point(SceneModel):
     height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
 
 
-#: Crank speed [rad/s] above which ``omega`` was probably meant as rpm: about 1900 rpm, faster
-#: than crank machines on block foundations run (frame saws 250-350 rpm, compressors to 1000).
-CRANK_OMEGA_PLAUSIBLE = 200.0
-
-
 class CrankScene(SceneModel):
     """A scene of kind ``crank_foundation``."""
 
@@ -288,41 +290,60 @@ class CrankScene(SceneModel):
         return points
 
     def plausibility_warnings(self) -> list[str]:
-        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s).
+        """The text of every :meth:`plausibility_findings` (never an error)."""
+        return [str(f) for f in self.plausibility_findings()]
 
-        A length of the machine or a point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
-        × the foundation's size sqrt(S) away, ``omega`` above what crank machines run at, or a
-        soil modulus that looks static where a dynamic one is meant or the reverse
-        (:meth:`Soil.modulus_warnings`).
+    def plausibility_findings(self) -> list:
+        """Values that are valid but probably typed in the wrong unit (mm as m, t/m³ as kg/m³, rpm
+        as rad/s, degrees as radians), each naming the key as the scene file writes it.
+
+        Values outside :data:`~foundation_calc.scenes.plausibility.RANGES` (foundation, soil,
+        limits, load phases, speed, the block-to-machine mass ratio); a length of the machine, a
+        load or a point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the
+        foundation's size sqrt(S) away.
         """
         size = self.foundation.base_area**0.5
-        mech = self.mechanism or self.operation
-        machine = {} if self.mechanism is None else {
+        mech = self.mechanism
+        machine = {} if mech is None else {
             "mechanism.crank_radius": mech.crank_radius,
             "mechanism.rod_length": mech.rod_length,
             "mechanism.crank_axis_to_cog": mech.crank_axis_to_cog,
         }
         lengths = {
-            "foundation.cog_height": self.foundation.cog_height,
+            **self.foundation.lengths_given(),
             **machine,
             **{f"loads[{i}].at.horizontal": load.at.horizontal for i, load in enumerate(self.loads)},
             **{f"loads[{i}].at.height": load.at.height for i, load in enumerate(self.loads)},
             **{f"points.{p.name!r}.horizontal": p.horizontal for p in self.points},
             **{f"points.{p.name!r}.height": p.height for p in self.points},
         }
-        found = [
-            f"{key} = {value:g} m is {abs(value) / size:.3g} × the foundation's size sqrt(S) = {size:.3g} m;"
-            " was it typed in mm?"
+        found: list = [*self.foundation.plausibility_findings(), *self.soil.plausibility_findings()]
+        found += [
+            Remark(key, f"{key} = {value:g} m is {abs(value) / size:.3g} × the foundation's size sqrt(S) = {size:.3g} m;"
+                   " was it typed in mm?")
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
-        found += self.soil.modulus_warnings()
-        if self.mechanism is not None and mech.omega is not None and mech.omega > CRANK_OMEGA_PLAUSIBLE:
-            found.append(
-                f"mechanism.omega = {mech.omega:g} rad/s is {mech.omega * 30 / math.pi:.4g} rpm, fast for a crank"
-                f" machine; if you meant {mech.omega:g} rpm, write speed_rpm = {mech.omega:g}"
-            )
+        found += self.limits.plausibility_findings()
+        found += [f for i, load in enumerate(self.loads) for f in judge(f"loads[{i}].phase", load.phase, "phase")]
+        if mech is not None:
+            found += judge("mechanism.omega", mech.omega, "crank_speed")
+        found += self._mass_ratio_findings(found)
         return found
+
+    def _mass_ratio_findings(self, found: list) -> list:
+        """The block-to-machine mass ratio against the rule of thumb, for a scene that gives
+        ``[foundation.block]`` and ``[foundation.machine]`` whose own values are plausible."""
+        f = self.foundation
+        if f.block is None or f.machine is None or any(x.key.startswith("foundation.") for x in found):
+            return []
+        b, mech = f.block, self.mechanism
+        block = b.length * b.width * b.height * b.density
+        keys = "foundation.machine.mass" + ("" if mech is None else " + mechanism.rod_mass + mechanism.slider_mass")
+        machine = f.machine.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
+        name = "mass_ratio_rotating" if mech is None else "mass_ratio_reciprocating"
+        key = f"block-to-machine mass ratio ([foundation.block] {block:.5g} kg / ({keys}) {machine:.5g} kg)"
+        return judge(key, block / machine, name)
 
     @model_validator(mode="after")
     def _machine_and_speed(self):
@@ -402,12 +423,52 @@ class CrankScene(SceneModel):
         )
         return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
 
+    def require_stable_rocking(self, springs: SoilSprings) -> None:
+        """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 does not exceed
+        the weight's overturning moment P h (paper (3.4); README "The model").
+
+        The message names the likely culprit, an implausible soil or foundation value
+        (:meth:`plausibility_findings`: a modulus in MPa for Pa, a block height in mm), or else
+        the keys of the scene file that set K_φ, I1 and h.
+        """
+        f = self.foundation
+        K_phi, overturning = float(springs.K_phi), self.total_mass * GRAVITY * f.cog_height
+        if K_phi > overturning:
+            return
+        unrelated = ("soil.c_x", "soil.c_z" if self.soil.c_phi is not None else "soil.c_x")  # no part of K_φ
+        culprits = [x for x in self.plausibility_findings()
+                    if any(part in x.key for part in ("soil.", "foundation.")) and x.key not in unrelated]
+        text = (
+            f"the foundation is unstable in rocking: the soil's rocking stiffness K_φ = c_φ·I1 = {K_phi:.4g} N m"
+            f" does not exceed the overturning moment of the weight P·h = {overturning:.4g} N m"
+            f" (c_φ·I1/(P·h) - 1 = {K_phi / overturning - 1.0:.4g})"
+        )
+        if culprits:
+            raise PhysicsError(text + "; likely culprit: " + "; ".join(x.brief() for x in culprits), field=culprits[0].key)
+        spring = self._rocking_spring_key()
+        base = "foundation.base_second_moment" if f.given("base_second_moment") else (
+            "foundation.base_length" if f.given("base_length") else "foundation.block.length")
+        height = "foundation.cog_height" if f.given("cog_height") else "foundation.block.height" + (
+            "" if f.machine is None else " and foundation.machine.cog_height")
+        raise PhysicsError(text, field=spring, hint=f"increase {spring} or {base}, or lower {height}")
+
+    def _rocking_spring_key(self) -> str:
+        """The key of the scene's soil method that sets the rocking spring K_φ."""
+        s = self.soil
+        method = s.method_used
+        if method == "coefficients":
+            return "soil.c_phi" if s.c_phi is not None else "soil.c_z"
+        if method == "sp26":
+            return "soil.deformation_modulus"
+        return "soil.shear_modulus" if s.shear_modulus is not None else "soil.shear_wave_velocity"
+
     def block(self) -> RigidBlock:
         """The block (with the whole machine's mass) on the soil method's springs and dashpots, for the loads."""
         from foundation_calc.solvers.crank.loads import RigidBlock
 
         f = self.foundation
         springs = self.soil_springs()
+        self.require_stable_rocking(springs)
         M_tot = self.total_mass
         return RigidBlock(
             M_tot=M_tot,
@@ -437,7 +498,7 @@ class CrankScene(SceneModel):
         The soil method's springs map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 (Barkan's
         coefficients pass through unchanged) and its damping ratios to the base dashpots of
         :func:`dashpots_from_ratios`. Raises PhysicsError naming ``mechanism`` for a machine given
-        by its loads only.
+        by its loads only, and (:meth:`require_stable_rocking`) for a block that tips over.
         """
         f, s, mech = self.foundation, self.soil, self.mechanism
         if mech is None:
@@ -453,6 +514,7 @@ class CrankScene(SceneModel):
             m1=mech.slider_mass,
         )
         springs = self.soil_springs()
+        self.require_stable_rocking(springs)
         if s.method_used == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:

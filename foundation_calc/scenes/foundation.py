@@ -12,6 +12,7 @@ from typing import ClassVar
 from pydantic import model_validator
 
 from foundation_calc.scenes.common import SceneModel, quantity
+from foundation_calc.scenes.plausibility import RANGES, Remark, judge
 
 #: Relative difference within which a given value and the same value computed from other keys
 #: (base_area from base_length × base_width, mass from the block…) count as agreeing [-]:
@@ -174,6 +175,45 @@ class Foundation(SceneModel):
             found = _disagreement(key, unit, given, value, source)
             if found:
                 problems.append(found)
+
+    def given(self, key: str) -> bool:
+        """True when the scene file gives ``key`` (not computed from other keys)."""
+        return key in self.model_fields_set
+
+    def plausibility_findings(self) -> list:
+        """The keys the scene gives whose values lie outside the foundation rows of
+        :data:`~foundation_calc.scenes.plausibility.RANGES`: base, block, mass (a value computed
+        from other keys is judged through them)."""
+        mine = {"mass": "foundation_mass", "base_area": "base_area", "base_length": "block_length",
+                "base_width": "block_length"}
+        found = [f for k, name in mine.items() if self.given(k) for f in judge(f"foundation.{k}", getattr(self, k), name)]
+        if self.given("base_second_moment") and not self.given("base_length") and self.block is None and not found:
+            found += self._base_rectangle_findings()
+        if self.block is not None:
+            block = {"length": "block_length", "width": "block_length", "height": "block_height", "density": "block_density"}
+            found += [f for k, name in block.items() for f in judge(f"foundation.block.{k}", getattr(self.block, k), name)]
+        return found
+
+    def _base_rectangle_findings(self) -> list:
+        """I1 that makes the base a rectangle outside the plausible plan dimensions, given S."""
+        L, B = self.dimensions
+        plausible = RANGES["block_length"]
+        if all(plausible.low <= side <= plausible.high for side in (L, B)):
+            return []
+        return [Remark(
+            "foundation.base_second_moment",
+            f"foundation.base_second_moment = {self.base_second_moment:.5g} m⁴ with foundation.base_area ="
+            f" {self.base_area:.5g} m² is a rectangle {L:.4g} m × {B:.4g} m (L = sqrt(12 I1/S) in the plane of"
+            f" motion, B = S/L), outside the plausible {plausible.quantity}, {plausible.low:g} to"
+            f" {plausible.high:g} m [{plausible.source}]; check both values and their units (m⁴, m²)",
+        )]
+
+    def lengths_given(self) -> dict[str, float]:
+        """The heights of centres of mass that the scene gives, by key as written [m]."""
+        found = {"foundation.cog_height": self.cog_height} if self.given("cog_height") else {}
+        if self.machine is not None:
+            found["foundation.machine.cog_height"] = self.machine.cog_height
+        return found
 
     @property
     def dimensions(self) -> tuple[float, float]:

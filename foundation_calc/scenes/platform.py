@@ -10,14 +10,14 @@ vertical_reference or vertical. Added keys: ``platform.product_height``,
 
 from __future__ import annotations
 
-import math
-
+from dataclasses import replace
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.plausibility import Remark, judge
 from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
@@ -158,13 +158,6 @@ class Limits(SceneModel):
     )
 
 
-#: Amplitude [m] above which u was probably typed in mm: vibro-tables vibrate 0.1-5 mm.
-PLATFORM_AMPLITUDE_PLAUSIBLE = 0.01
-
-#: Exciter speed [rad/s] above which ``omega`` was probably meant as rpm (about 9500 rpm).
-PLATFORM_OMEGA_PLAUSIBLE = 1000.0
-
-
 class PlatformScene(SceneModel):
     """A scene of kind ``platform``."""
 
@@ -184,23 +177,34 @@ class PlatformScene(SceneModel):
     )
     limits: Limits = Limits()
     drive: Drive | None = None
+    #: scene key -> how the user gave it, for a value given on the command line ("operation.amplitude" -> "--amp")
+    _given_as: dict[str, str] = PrivateAttr(default_factory=dict)
+
+    def given_on_command_line(self, names: dict[str, str]) -> "PlatformScene":
+        """Record that the values of the keys in ``names`` came from the command-line options named
+        there, so that warnings and errors name the option the user typed; returns the scene."""
+        self._given_as.update(names)
+        return self
+
+    def key_as_given(self, key: str) -> str:
+        """``key``, or the command-line option that gave its value."""
+        return self._given_as.get(key, key)
 
     def plausibility_warnings(self) -> list[str]:
-        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s)."""
+        """The text of every :meth:`plausibility_findings` (never an error)."""
+        return [str(f) for f in self.plausibility_findings()]
+
+    def plausibility_findings(self) -> list:
+        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s):
+        the amplitude and speed outside :data:`~foundation_calc.scenes.plausibility.RANGES`, an
+        eccentricity more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the platform."""
         op, size = self.operation, max(self.platform.length, self.platform.width)
-        found = []
-        if op.amplitude > PLATFORM_AMPLITUDE_PLAUSIBLE:
-            found.append(
-                f"operation.amplitude = {op.amplitude:g} m: vibro-tables vibrate 0.1-5 mm; was it typed in mm?"
-            )
+        found: list = [*judge("operation.amplitude", op.amplitude, "platform_amplitude")]
         if self.exciter.eccentricity > LENGTH_SCALE_FACTOR * size:
-            found.append(f"exciter.eccentricity = {self.exciter.eccentricity:g} m exceeds the platform; was it typed in mm?")
-        if op.omega is not None and op.omega > PLATFORM_OMEGA_PLAUSIBLE:
-            found.append(
-                f"operation.omega = {op.omega:g} rad/s is {op.omega * 30 / math.pi:.5g} rpm; if you meant"
-                f" {op.omega:g} rpm, write speed_rpm = {op.omega:g}"
-            )
-        return found
+            found.append(Remark("exciter.eccentricity", f"exciter.eccentricity = {self.exciter.eccentricity:g} m"
+                                " exceeds the platform; was it typed in mm?"))
+        found += judge("operation.omega", op.omega, "platform_speed")
+        return [replace(f, key=self.key_as_given(f.key)) for f in found]
 
     @model_validator(mode="after")
     def _position_or_vertical(self):

@@ -14,6 +14,7 @@ from typing import ClassVar, Literal
 from pydantic import field_validator, model_validator
 
 from foundation_calc.scenes.common import SceneModel, quantity
+from foundation_calc.scenes.plausibility import judge
 from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS
 
 SoilMethod = Literal["coefficients", "lysmer", "gazetas", "sp26"]
@@ -36,17 +37,6 @@ METHOD_REQUIRED: dict[str, tuple[str, ...]] = {
     "gazetas": ("density", "poisson"),
     "sp26": ("deformation_modulus", "soil_class"),
 }
-
-
-#: Static deformation modulus [Pa] above which an ``sp26`` scene probably holds a dynamic modulus:
-#: site reports give static moduli of about 5-60 MPa for sands and clays, while E = 2 G (1 + ν)
-#: from a shear wave velocity of 200 m/s is about 190 MPa.
-STATIC_MODULUS_PLAUSIBLE = 1.0e8
-
-#: Shear wave velocity [m/s] below which a half-space scene probably holds a static modulus:
-#: soils that carry machine foundations have V_s above about 100 m/s; G = E/(2(1 + ν)) from a
-#: static E of 20 MPa gives 65 m/s.
-SHEAR_WAVE_VELOCITY_PLAUSIBLE = 100.0
 
 
 def _method_keys(method: str) -> str:
@@ -179,25 +169,24 @@ class Soil(SceneModel):
             return self.shear_wave_velocity
         return (self.shear_modulus / self.density) ** 0.5
 
-    def modulus_warnings(self) -> list[str]:
-        """The static-versus-dynamic modulus trap, when the numbers look like it (never an error)."""
+    def plausibility_findings(self) -> list:
+        """The method's values outside the soil ranges of :data:`~foundation_calc.scenes.plausibility.RANGES`
+        (never an error). The derived V_s = sqrt(G/ρ) is judged when G and ρ themselves are
+        plausible: a slow V_s then means a static modulus where a dynamic one is meant."""
         method = self.method_used
-        if method == "sp26" and self.deformation_modulus > STATIC_MODULUS_PLAUSIBLE:
-            return [
-                f"soil.deformation_modulus = {self.deformation_modulus / 1e6:.4g} MPa is above the static"
-                f" deformation moduli of site reports (about 5-60 MPa; flagged above"
-                f" {STATIC_MODULUS_PLAUSIBLE / 1e6:g} MPa); if it is E = 2G(1 + ν) from a shear wave"
-                " velocity, it is a dynamic modulus and SP 26's springs come out several times too stiff"
-                " (4.7 × Lysmer's for V_s = 200 m/s): give the static E, or use method \"lysmer\" with the V_s"
-            ]
-        if method in ("lysmer", "gazetas") and self.V_s < SHEAR_WAVE_VELOCITY_PLAUSIBLE:
-            return [
-                f"the soil's shear wave velocity V_s = {self.V_s:.4g} m/s (G = {self.G / 1e6:.4g} MPa) is below"
-                f" {SHEAR_WAVE_VELOCITY_PLAUSIBLE:g} m/s, slow for soil under a machine foundation; if G was"
-                " taken from a static deformation modulus as E/(2(1 + ν)), the springs come out several"
-                " times too soft: give the small-strain G or V_s of the site investigation"
-            ]
-        return []
+        if method == "coefficients":
+            return [f for k in ("c_z", "c_x", "c_phi") for f in judge(f"soil.{k}", getattr(self, k), "subgrade_coefficient")]
+        if method == "sp26":
+            return judge("soil.deformation_modulus", self.deformation_modulus, "deformation_modulus")
+        found = [
+            *judge("soil.density", self.density, "soil_density"),
+            *judge("soil.poisson", self.poisson, "poisson"),
+            *judge("soil.shear_modulus", self.shear_modulus, "shear_modulus"),
+            *judge("soil.shear_wave_velocity", self.shear_wave_velocity, "shear_wave_velocity"),
+        ]
+        if not found and self.shear_wave_velocity is None:
+            found = judge("V_s = sqrt(soil.shear_modulus/soil.density)", self.V_s, "shear_wave_velocity")
+        return found
 
     def methods_allowed(self) -> tuple[str, ...]:
         """Every method the data allow: the half-space data feed both Lysmer and Gazetas."""

@@ -179,7 +179,7 @@ def summary_section(runs, warnings, units: DisplayUnits) -> Section:
     rows = ((run.check, run.verdict.upper(), units.render(run.reason)) for run in runs)
     blocks = [Paragraph(verdict_line(runs)), table("", ("check", "verdict", "reason"), rows, (False, False, False))]
     if warnings:
-        blocks.append(table("Input warnings (they do not change the verdict)", ("warning",), ((w,) for w in warnings), (False,)))
+        blocks.append(table("Input warnings (values probably typed in another unit: the check inputs warns)", ("warning",), ((w,) for w in warnings), (False,)))
     return Section("Verdict", tuple(blocks))
 
 

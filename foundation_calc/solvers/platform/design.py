@@ -380,7 +380,7 @@ def require_buildable_position(d: "PlatformDesign", position_given: bool) -> Non
         where = f"{name} = {_first(value) if _first(value) == -worst else worst:.6g} m"
         if name == "c":
             hint = f"|c| <= {reach:.6g} m for {_amplitudes_for_height(d, reach)} at this speed"
-            field = "exciter.height"
+            field = "operation.amplitude"  # c follows from u by (3.11), (3.14): no key of its own
         elif position_given:
             hint = f"give |{name}| <= {reach:.6g} m"
             field = "exciter.position"

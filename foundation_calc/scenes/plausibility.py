@@ -1,0 +1,278 @@
+"""Plausible ranges of scene inputs, with their sources, and the unit slips that leave them.
+
+A value that validates but lies outside the range real designs use is probably typed in another
+unit: soil density 1.8 (t/m³ for kg/m³), a block 6000 long (mm for m), an amplitude limit 0.15
+(mm for m), a load phase -90 (degrees for radians). Such a value is a *warning* about the input,
+never an error: it is printed on stderr, listed in the JSON ``warnings`` and on the calculation
+sheet, and changes the exit code only with ``--strict``. Every range is one row of
+:data:`RANGES`, with its source; the scene models name the key as the user wrote it.
+
+A :class:`Slip` is suggested only when the value is far outside (:attr:`PlausibleRange.slip_beyond`)
+and the value in that unit lands inside the range, so a soft but real soil is not told it was
+typed in kN/m³.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+def _number(value: float) -> str:
+    return f"{value:.5g}"
+
+
+@dataclass(frozen=True)
+class Slip:
+    """A unit typed in place of the SI one: the SI value is ``factor`` × the typed value."""
+
+    unit: str  #: the unit the value was probably typed in, e.g. "t/m³"
+    factor: float  #: typed value × factor = SI value
+    advice: str = ""  #: what to write instead, formatted with ``value`` (the typed value)
+
+
+@dataclass(frozen=True)
+class PlausibleRange:
+    """What real designs use for one quantity [``unit``], and where that is stated.
+
+    ``magnitude``: the range bounds |value| (a phase). ``below`` and ``above`` say what a value
+    outside probably means when no unit slip explains it.
+    """
+
+    quantity: str
+    unit: str
+    low: float
+    high: float
+    source: str
+    slips: tuple[Slip, ...] = ()
+    below: str = ""
+    above: str = ""
+    magnitude: bool = False
+    slip_beyond: float = 10.0  #: suggest a slip only when the value is this factor outside
+    basis: str = ""  #: what the source says, for the documentation
+
+    def span(self) -> str:
+        """The range as text: ``1100 to 2500 kg/m³``, ``±6.2832 rad``."""
+        unit = "" if self.unit == "-" else f" {self.unit}"
+        if self.magnitude:
+            return f"±{_number(self.high)}{unit}"
+        return f"{_number(self.low)} to {_number(self.high)}{unit}"
+
+    def judge(self, key: str, value: float) -> "Implausible | None":
+        """The finding for ``key = value`` (key as the user wrote it), or None inside the range."""
+        size = abs(value) if self.magnitude else value
+        if self.low <= size <= self.high:
+            return None
+        return Implausible(key, value, self)
+
+
+#: Standard gravity [m/s²], which defines the kilogram-force of kgf/cm³ and turns unit weights into densities.
+STANDARD_GRAVITY = 9.80665
+
+#: SI value of a unit weight [kN/m³] typed as a density [kg/m³]: ρ = γ/g.
+_UNIT_WEIGHT = Slip("kN/m³ (a unit weight γ; ρ = γ/g)", 1e3 / STANDARD_GRAVITY)
+_MM = Slip("mm", 1e-3)
+_MICRON = Slip("µm", 1e-6)
+_JUDGEMENT = "fcalc's bracket"
+_HEAVY_BLOCK = "the machine is a small fraction of the block: was foundation.machine.mass typed in t (kg wanted)?"
+_LIGHT_BLOCK = (
+    "a block lighter than the rule of thumb moves more than its mass suggests; check"
+    " foundation.machine.mass and the block's dimensions"
+)
+_RPM = Slip("rpm", math.pi / 30.0, "write speed_rpm = {value:g}")
+
+#: Every plausible range, by name (one name may serve several keys: block and base lengths).
+RANGES: dict[str, PlausibleRange] = {
+    "soil_density": PlausibleRange(
+        "soil densities", "kg/m³", 1100.0, 2500.0, "Das, Principles of Geotechnical Engineering",
+        (Slip("t/m³ (or g/cm³)", 1e3), _UNIT_WEIGHT),
+        basis="total unit weights of soils, peat to dense gravel, about 11-24 kN/m³",
+    ),
+    "shear_modulus": PlausibleRange(
+        "small-strain shear moduli of soils", "Pa", 5e6, 6e9, "G = ρ V_s² over the soil ranges",
+        (Slip("MPa", 1e6), Slip("kPa", 1e3), Slip("GPa", 1e9)),
+        basis="ρ V_s² with the soil densities and shear wave velocities of this table, rounded outward",
+    ),
+    "shear_wave_velocity": PlausibleRange(
+        "shear wave velocities of soils under machine foundations", "m/s", 100.0, 1500.0,
+        "ASCE 7-16, Table 20.3-1", (Slip("km/s", 1e3), Slip("ft/s", 0.3048)),
+        below="if G was taken from a static deformation modulus as E/(2(1 + ν)), the springs come out"
+        " several times too soft: give the small-strain G or V_s of the site investigation",
+        basis="site classes E (soft clay, below 180 m/s) to B (rock, 760-1500 m/s); below 100 m/s G was"
+        " probably taken from a static modulus (E = 20 MPa gives 65 m/s)",
+    ),
+    "poisson": PlausibleRange(
+        "Poisson's ratios of soils", "-", 0.1, 0.5, "Bowles, Foundation Analysis and Design, Table 5-6",
+        below="soils have ν from 0.1 (loess, unsaturated clay) to 0.5 (saturated clay, undrained)",
+        basis="loess and unsaturated clay 0.1-0.3, sands 0.3-0.4, saturated clay 0.4-0.5",
+    ),
+    "deformation_modulus": PlausibleRange(
+        "static deformation moduli of soils", "Pa", 2e6, 1e8, "Bowles, Foundation Analysis and Design, Table 5-5",
+        (Slip("MPa", 1e6), Slip("kPa", 1e3)),
+        above="if it is E = 2G(1 + ν) from a shear wave velocity, it is a dynamic modulus and SP 26's"
+        " springs come out several times too stiff (4.7 × Lysmer's for V_s = 200 m/s): give the"
+        ' static E, or use method "lysmer" with the V_s',
+        basis="very soft clay 2-15 MPa, sands and clays of site reports about 5-60 MPa; above 100 MPa a"
+        " dynamic modulus 2G(1 + ν) was probably given",
+    ),
+    "subgrade_coefficient": PlausibleRange(
+        "Barkan's coefficients of soils", "N/m³", 3e6, 1e9, "Barkan, Dynamics of Bases and Foundations",
+        (Slip("MN/m³", 1e6), Slip("kgf/cm³", STANDARD_GRAVITY * 1e6), Slip("kN/m³", 1e3)),
+        basis="C_u up to 3 kgf/cm³ for weak soils, 3-10 for medium and strong soils, above 10 for rock"
+        " (1 kgf/cm³ = 9.81e6 N/m³); one bracket for c_z, c_x (about 0.7 c_z) and c_phi (about 2 c_z),"
+        " from 0.3 kgf/cm³",
+    ),
+    "block_length": PlausibleRange(
+        "plan dimensions of block foundations", "m", 0.3, 60.0, _JUDGEMENT, (_MM,),
+        basis="the blocks of ACI 351.3R-18, a pump's plinth to a large compressor or turbine mat",
+    ),
+    "block_height": PlausibleRange(
+        "heights of block foundations", "m", 0.2, 15.0, _JUDGEMENT, (_MM,),
+        basis="as the plan dimensions",
+    ),
+    "block_density": PlausibleRange(
+        "densities of block materials", "kg/m³", 1500.0, 8000.0, "EN 1991-1-1, Annex A",
+        (Slip("t/m³", 1e3), _UNIT_WEIGHT),
+        basis="Tables A.1 and A.4: lightweight concrete to steel; reinforced concrete 25 kN/m³",
+    ),
+    "foundation_mass": PlausibleRange(
+        "masses of block foundations with their machines", "kg", 1e3, 2e7, _JUDGEMENT, (Slip("t", 1e3),),
+        basis="as the plan dimensions: 1 t to 20 000 t",
+    ),
+    "base_area": PlausibleRange(
+        "base areas of block foundations", "m²", 0.09, 3600.0, _JUDGEMENT, (Slip("mm²", 1e-6),),
+        basis="the squares of the plan dimensions",
+    ),
+    "amplitude_limit": PlausibleRange(
+        "peak displacement limits of block foundations", "m", 1e-6, 5e-3, _JUDGEMENT, (_MM, _MICRON),
+        basis="limits of ACI 351.3R-18 and Barkan (0.1-0.2 mm for low-speed machines), with room either way",
+    ),
+    "transient_amplitude_limit": PlausibleRange(
+        "displacement limits during start-up and run-down", "m", 1e-6, 5e-2, _JUDGEMENT, (_MM, _MICRON),
+        basis="ten times the steady limits: a passage through resonance may be allowed more",
+    ),
+    "velocity_limit": PlausibleRange(
+        "velocity limits of machine foundations", "m/s", 1e-4, 5e-2, _JUDGEMENT, (Slip("mm/s", 1e-3),),
+        basis="around ISO 10816-3's zone boundaries, 1.4-11 mm/s RMS",
+    ),
+    "acceleration_limit": PlausibleRange(
+        "acceleration limits of machine foundations", "m/s²", 1e-3, 50.0, _JUDGEMENT, (Slip("mm/s²", 1e-3),),
+        basis="from the velocity limits at 1-100 Hz",
+    ),
+    "phase": PlausibleRange(
+        "phases", "rad", 0.0, 2.0 * math.pi, "one turn is 2π rad", (Slip("degrees", math.pi / 180.0),),
+        magnitude=True, slip_beyond=1.0, basis="a phase beyond one turn was probably typed in degrees",
+    ),
+    "mass_ratio_reciprocating": PlausibleRange(
+        "block-to-machine mass ratios of reciprocating machines", "-", 3.0, 100.0,
+        "ACI 351.3R-18; Arya, O'Neill & Pincus (1979)", below=_LIGHT_BLOCK, above=_HEAVY_BLOCK,
+        basis="rules of thumb: the block at least 3-5 × a reciprocating machine (a crank mechanism);"
+        " above 100 × is fcalc's bracket",
+    ),
+    "mass_ratio_rotating": PlausibleRange(
+        "block-to-machine mass ratios", "-", 2.0, 100.0, "ACI 351.3R-18; Arya, O'Neill & Pincus (1979)",
+        below=_LIGHT_BLOCK, above=_HEAVY_BLOCK,
+        basis="rules of thumb: the block at least 2-3 × a rotating machine, 3-5 × a reciprocating one;"
+        " a machine given by its loads may be either, so the lower rule; above 100 × is fcalc's bracket",
+    ),
+    "crank_speed": PlausibleRange(
+        "crank speeds", "rad/s", 0.0, 200.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
+        basis="frame saws run at 250-350 rpm, compressors up to about 1000 rpm; 200 rad/s is 1900 rpm",
+    ),
+    "platform_speed": PlausibleRange(
+        "exciter speeds of vibro-tables", "rad/s", 0.0, 1000.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
+        basis="1000 rad/s is about 9500 rpm",
+    ),
+    "platform_amplitude": PlausibleRange(
+        "amplitudes of vibro-tables", "m", 1e-4, 1e-2, _JUDGEMENT, (_MM,),
+        above="vibro-tables vibrate 0.1-5 mm; was it typed in mm?", basis="vibro-tables vibrate 0.1-5 mm",
+    ),
+}
+
+
+@dataclass(frozen=True)
+class Implausible:
+    """A value outside its plausible range: the key as the user wrote it, the value, the range.
+
+    ``str()`` is the warning: the key and value, the range and its source, and the unit slip
+    that explains the value (or what else it probably means).
+    """
+
+    key: str
+    value: float
+    range: PlausibleRange
+
+    def slips(self) -> list[tuple[Slip, float]]:
+        """The unit slips that bring the value inside the range, each with the SI value it gives."""
+        r = self.range
+        size = abs(self.value) if r.magnitude else self.value
+        beyond = size / r.high if size > r.high else (r.low / size if size > 0 else math.inf)
+        if beyond < r.slip_beyond:
+            return []
+        found = []
+        for slip in r.slips:
+            fixed = self.value * slip.factor
+            if r.low <= (abs(fixed) if r.magnitude else fixed) <= r.high:
+                found.append((slip, fixed))
+        return found
+
+    @property
+    def _side(self) -> str:
+        r = self.range
+        return "outside" if r.magnitude else "above" if self.value > r.high else "below"
+
+    def _explanation(self) -> str:
+        """The likely slip(s), or what else a value on this side probably means."""
+        r = self.range
+        unit = "" if r.unit == "-" else f" {r.unit}"
+        slips = self.slips()
+        if slips:
+            return "likely typed in " + " or ".join(
+                f"{slip.unit}: {_number(self.value)} {slip.unit.split(' ')[0]} = {_number(fixed)}{unit}"
+                + (f" ({slip.advice.format(value=self.value)})" if slip.advice else "")
+                for slip, fixed in slips
+            )
+        hint = r.below if self._side == "below" else r.above
+        return hint or f"check its unit ({r.unit})"
+
+    def brief(self) -> str:
+        """The key, the value, the range and the likely slip, without the source (for an error
+        that names this value as its culprit)."""
+        unit = "" if self.range.unit == "-" else f" {self.range.unit}"
+        return f"{self.key} = {_number(self.value)}{unit} (plausible: {self.range.span()}), {self._explanation()}"
+
+    def __str__(self) -> str:
+        r = self.range
+        unit = "" if r.unit == "-" else f" {r.unit}"
+        return (
+            f"{self.key} = {_number(self.value)}{unit} is {self._side} the plausible range of {r.quantity},"
+            f" {r.span()} [{r.source}]; {self._explanation()}"
+        )
+
+
+@dataclass(frozen=True)
+class Remark:
+    """A value implausible relative to the rest of the scene (a length many times the
+    foundation's size), with the key as the user wrote it."""
+
+    key: str
+    text: str
+
+    def __str__(self) -> str:
+        return self.text
+
+    def brief(self) -> str:
+        """The text itself (already short)."""
+        return self.text
+
+
+def judge(key: str, value: float | None, range_name: str) -> list[Implausible]:
+    """``[finding]`` when ``key = value`` lies outside :data:`RANGES` ``[range_name]``, else ``[]``
+    (also for a value the scene does not give)."""
+    if value is None:
+        return []
+    found = RANGES[range_name].judge(key, value)
+    return [] if found is None else [found]
+
+
+__all__ = ["Implausible", "PlausibleRange", "RANGES", "Remark", "Slip", "judge"]
