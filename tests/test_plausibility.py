@@ -179,6 +179,8 @@ def test_platform_amp_in_mm_names_the_option(runner):
     text = _flat(result.stderr)
     assert "--amp 0.5" in text and "exciter.height" not in text and "operation.amplitude" not in text
     assert "mm" in text
+    fast = _flat(runner.invoke(app, ["platform", "--omega", "3000"]).stderr)
+    assert "warning: --omega = 3000 rad/s" in fast and "(use --rpm 3000)" in fast and "speed_rpm" not in fast
 
 
 def test_shipped_scenes_are_plausible():

@@ -118,3 +118,20 @@ def test_readme_lists_every_reference_in_full():
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     for key, entry in REFERENCES.items():
         assert f"- **[{key}]** {entry}" in readme, key
+
+
+@pytest.mark.parametrize("name", ["frame_saw.toml", "platform_paper_example.toml"])
+def test_no_column_mixes_notations(name):
+    """A numeric column is in plain decimals or in a·10ⁿ throughout (0 and - aside)."""
+    from foundation_calc.output.display_units import DisplayUnits
+    from foundation_calc.output.report.documents import scene_sheet
+    from foundation_calc.output.report.model import Table
+
+    sheet, _ = scene_sheet(CONFIGS / name, "fcalc report", DisplayUnits(amplitude="mm"), figures=False)
+    tables = [b for s in sheet.sections for b in s.blocks if isinstance(b, Table) and "Amplitude per harmonic" in b.title
+              or isinstance(b, Table) and "Sensitivity" in b.title or isinstance(b, Table) and b.title.startswith("Peaks")]
+    assert tables
+    for t in tables:
+        for j, numeric in enumerate(t.numeric):
+            cells = [row[j] for row in t.rows if numeric and row[j] not in ("0", "-")]
+            assert len({"·10" in c for c in cells}) <= 1, (t.title, cells)

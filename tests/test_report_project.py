@@ -7,6 +7,17 @@ import pytest
 from foundation_calc.cli.app import app
 from tests.conftest import CONFIGS
 
+
+def _saw_without_project() -> str:
+    """configs/frame_saw.toml without its own [project] table, as TOML text."""
+    import tomllib
+
+    import tomli_w
+
+    scene = tomllib.loads((CONFIGS / "frame_saw.toml").read_text(encoding="utf-8"))
+    scene.pop("project", None)
+    return tomli_w.dumps(scene)
+
 pytest.importorskip("matplotlib")
 
 PROJECT = """
@@ -36,7 +47,7 @@ def office(tmp_path):
     (tmp_path / "fcalc.toml").write_text(OFFICE, encoding="utf-8")
     scene = tmp_path / "jobs" / "saw" / "saw.toml"
     scene.parent.mkdir(parents=True)
-    scene.write_text((CONFIGS / "frame_saw.toml").read_text(encoding="utf-8") + PROJECT, encoding="utf-8")
+    scene.write_text(_saw_without_project() + PROJECT, encoding="utf-8")
     return scene
 
 
@@ -76,7 +87,7 @@ def test_pdf_pages_are_headed_with_page_n_of_n(runner, office, tmp_path):
 )
 def test_unknown_project_keys_are_errors(runner, tmp_path, where, text, message):
     scene = tmp_path / "saw.toml"
-    body = (CONFIGS / "frame_saw.toml").read_text(encoding="utf-8")
+    body = _saw_without_project()
     scene.write_text(body + (text if where == "scene" else ""), encoding="utf-8")
     if where == "office":
         (tmp_path / "fcalc.toml").write_text(text, encoding="utf-8")

@@ -11,7 +11,6 @@ check's. Values are compared at the precision the sheet prints them (see ``VALUE
 from __future__ import annotations
 
 import json
-import re
 import tomllib
 
 import pytest
@@ -19,6 +18,7 @@ import tomli_w
 
 from foundation_calc.cli.app import app
 from tests.conftest import CONFIGS
+from tests.sheet_numbers import numbers
 
 pytest.importorskip("matplotlib")
 
@@ -90,7 +90,7 @@ def _result_rows(check: dict) -> list[str]:
 
 
 def _numbers(text: str) -> list[float]:
-    return [float(m) for m in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", text)]
+    return numbers(text)
 
 
 def _scenes(tmp_path_factory):
@@ -134,3 +134,25 @@ def test_failing_start_up_fails_the_sheet(runner, scenes, tmp_path):
     assert runner.invoke(app, ["report", str(scene), "-o", str(out)]).exit_code == 1
     text = out.read_text(encoding="utf-8")
     assert "Overall verdict: FAIL (runup)" in text and "Start-up and run-down" in text
+
+
+def test_a_check_without_a_row_reader_gets_its_reason_as_the_item():
+    """A new kind's check (no row reader here) is one row: its reason in the item column (the
+    page's free width), no value or limit; a long reason in the value column squeezed the table."""
+    from foundation_calc.checks.batch import CheckRun
+    from foundation_calc.output.display_units import DisplayUnits
+    from foundation_calc.output.report.verdict import checks_section
+
+    run = CheckRun("new check", "warn", ("a reason of some length ", ("amplitude", 1e-3)))
+    (table, _) = checks_section([run], {"new check": {}}, None, DisplayUnits(amplitude="mm")).blocks
+    assert table.rows == (("new check", "a reason of some length 1 mm", "-", "-", "-", "WARN", "fcalc check"),)
+
+
+def test_long_tables_may_break_across_pages():
+    """A table taller than a page must break (typst lets an unbreakable block run off the page)."""
+    from foundation_calc.output.report.model import table
+    from foundation_calc.output.report.pdf import _table
+
+    short = table("", ("a", "b"), [("x", "1")] * 3)
+    wordy = table("", ("a", "b"), [("word " * 100, "1")] * 4)
+    assert "breakable: false" in _table(short) and "breakable: true" in _table(wordy)

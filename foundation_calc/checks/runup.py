@@ -13,7 +13,6 @@ from dataclasses import dataclass, replace
 
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, RunupResult, runup, steady_peaks
 
 
 @dataclass(frozen=True)
@@ -140,7 +139,11 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
             field="operation.run_up_time",
         )
     built, names, omega, carried = _structure(scene)
-    runs: dict[str, RunupResult] = {}
+    # the time integration (scipy.signal, ~1 s to import) only for a scene that is run up: fcalc check
+    # and the sheet ask judged() of every scene
+    from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
+
+    runs: dict = {}
     for key, duration, direction in (("run_up", up, 1), ("run_down", down, -1)):
         if duration is None:
             continue

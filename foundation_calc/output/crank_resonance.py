@@ -6,7 +6,7 @@ from collections.abc import Mapping
 
 from foundation_calc.checks.crank_resonance import ResonanceReport
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
-from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES
+from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES, bands_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
@@ -165,14 +165,7 @@ def print_resonance_report(
     out.print(res)
     out.print(
         f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
-        f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning{_bands(report)})."
+        f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
         " The rule: README, \"The resonance rule\".", soft_wrap=True,
     )
     out.print(summary_line(report, strict, units), soft_wrap=True)
-
-
-def _bands(report: ResonanceReport) -> str:
-    detuning = report.detuning
-    if isinstance(detuning, Mapping):
-        return " = {" + ", ".join(f"{k} = {v:g}" for k, v in sorted(detuning.items())) + "}"
-    return f" = {detuning:g}"

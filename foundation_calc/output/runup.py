@@ -178,10 +178,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         )
     out.print(table)
     out.print(_directions_table(report))
-    out.print(
-        DISPLACEMENT.format(", ".join(report.directions)) + "; per direction: the largest |component| (the"
-        " steady ones are fcalc amplitudes' peaks of the same point)"
-    )
+    same = " (the steady ones are fcalc amplitudes' peaks of the same point)" if scene.kind == "crank_foundation" else ""
+    out.print(DISPLACEMENT.format(", ".join(report.directions)) + f"; per direction: the largest |component|{same}")
     if report.judged:
         out.print(f"Verdict: {verdict_text(report.outcome.value)}")
     else:
@@ -264,7 +262,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
         twin.set_ylim(bottom=0.0)
         ax.set_title(name, fontsize=10, loc="left")
         ax.set_xlabel("time [s]")
-        ax.set_ylabel("displacement [mm]")
+        ax.set_ylabel("displacement |u| [mm]")
         ax.set_ylim(bottom=0.0, top=max(float(ev.max()) * 1e3, (limit or 0.0) * 1e3) * 1.25)
         ax.grid(alpha=0.3)
     handles = axes[0].get_legend_handles_labels()

@@ -158,6 +158,10 @@ class Limits(SceneModel):
     )
 
 
+#: What a warning about a value given on the command line advises instead (formatted with the value).
+OPTION_ADVICE = {"operation.omega": "use --rpm {value:g}"}
+
+
 class PlatformScene(SceneModel):
     """A scene of kind ``platform``."""
 
@@ -204,7 +208,8 @@ class PlatformScene(SceneModel):
             found.append(Remark("exciter.eccentricity", f"exciter.eccentricity = {self.exciter.eccentricity:g} m"
                                 " exceeds the platform; was it typed in mm?"))
         found += judge("operation.omega", op.omega, "platform_speed")
-        return [replace(f, key=self.key_as_given(f.key)) for f in found]
+        return [f if self.key_as_given(f.key) == f.key else replace(f, key=self.key_as_given(f.key), advice=OPTION_ADVICE.get(f.key, ""))
+                for f in found]
 
     @model_validator(mode="after")
     def _position_or_vertical(self):

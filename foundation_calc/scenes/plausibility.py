@@ -201,6 +201,7 @@ class Implausible:
     key: str
     value: float
     range: PlausibleRange
+    advice: str | None = None  #: what to write instead, replacing the slips' own (a value given as an option)
 
     def slips(self) -> list[tuple[Slip, float]]:
         """The unit slips that bring the value inside the range, each with the SI value it gives."""
@@ -229,11 +230,14 @@ class Implausible:
         if slips:
             return "likely typed in " + " or ".join(
                 f"{slip.unit}: {_number(self.value)} {slip.unit.split(' ')[0]} = {_number(fixed)}{unit}"
-                + (f" ({slip.advice.format(value=self.value)})" if slip.advice else "")
+                + (f" ({advice.format(value=self.value)})" if (advice := self._advice(slip)) else "")
                 for slip, fixed in slips
             )
         hint = r.below if self._side == "below" else r.above
         return hint or f"check its unit ({r.unit})"
+
+    def _advice(self, slip: Slip) -> str:
+        return slip.advice if self.advice is None else self.advice
 
     def brief(self) -> str:
         """The key, the value, the range and the likely slip, without the source (for an error

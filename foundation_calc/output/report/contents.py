@@ -13,8 +13,9 @@ from dataclasses import dataclass
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
+from foundation_calc.output.report.numbers import column, figure, percent
 
-DIGITS = 6
+DIGITS = 4
 #: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
 NEGLIGIBLE = 1e-9
 
@@ -49,14 +50,34 @@ def operating_speed(resonance: dict) -> float:
     return resonance["speed"]["omega"]
 
 
-def num(value: float | None, digits: int = DIGITS) -> str:
-    """A number with ``digits`` significant figures; ``-`` for a missing one."""
-    return "-" if value is None else f"{value:.{digits}g}"
+def num(value: float | None, digits: int = DIGITS, scale: float | None = None) -> str:
+    """A number with ``digits`` significant figures in the sheet's format (``-`` for a missing
+    one, 0 below round-off of ``scale``): :func:`~foundation_calc.output.report.numbers.figure`."""
+    return figure(value, digits, scale)
 
 
 def pct(value: float) -> str:
-    """A fraction as a percentage with ``DIGITS`` significant figures."""
-    return f"{value * 100:.{DIGITS}g} %"
+    """A fraction as a percentage to one decimal, as every margin on a sheet."""
+    return percent(value)
+
+
+def truncation(error: float) -> str:
+    """An error estimate: two figures, or "less than 10⁻⁹" when it is round-off (never 0: it is a bound)."""
+    return "less than 10⁻⁹" if error < 1e-9 else figure(error, 2)
+
+
+def _columns(rows: list[tuple], digits: int, groups) -> list[tuple]:
+    """Rows ``(label, *values)`` with each value column formatted in one notation per group of
+    rows (``groups``: a key per row, e.g. the unit), round-off below 1e-9 of the group's largest as 0."""
+    out = [[row[0]] for row in rows]
+    for j in range(1, len(rows[0]) if rows else 1):
+        for key in dict.fromkeys(groups):
+            members = [i for i, g in enumerate(groups) if g == key]
+            values = [rows[i][j] for i in members]
+            scale = max((abs(v) for v in values if v is not None), default=0.0) or None
+            for i, text in zip(members, column(values, digits, scale)):
+                out[i].append(text)
+    return [tuple(row) for row in out]
 
 
 def _speed(units: DisplayUnits, omega: float) -> str:
@@ -135,7 +156,7 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
         return Section("Amplitudes", tuple(blocks))
     shown = [(key, a) for key, a in approximations.items() if not a["resonant"]]
     au = units.label("amplitude")
-    rows, phase_rows = [], []
+    rows, units_of_rows, phase_rows = [], [], []
     largest = [_largest_harmonics(a) for _, a in shown]
     for name in checked["harmonics"]:
         dof = name.rstrip("0123456789")
@@ -145,13 +166,14 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
             continue
         unit = "rad" if dof == "theta" else au
         scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
-        rows.append((f"{name} [{unit}]", *(num(scale(x)) for x in h)))
+        rows.append((f"{name} [{unit}]", *(scale(x) for x in h)))
+        units_of_rows.append(unit)
         if not name.endswith("0"):  # the mean has a sign, not a phase
             phase_rows.append(
                 (name, *(f"{math.degrees(a['harmonics'][name]['phase']):.1f}" if x else "-" for (_, a), x in zip(shown, h)))
             )
     methods = tuple(k.replace("_", " ") for k, _ in shown)
-    blocks.append(table("Amplitude per harmonic (magnitude)", ("harmonic", *methods), rows))
+    blocks.append(table("Amplitude per harmonic (magnitude)", ("harmonic", *methods), _columns(rows, 3, units_of_rows)))
     if amp["damping"] is not None:
         d = amp["damping"]
         modes = ", ".join(
@@ -168,11 +190,12 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
         "velocity": ("velocity", units.label("velocity")),
         "acceleration": ("acceleration", units.label("acceleration")),
     }
-    point_rows = [
-        (point, direction, *(num(units.convert(quantity_units[q][0], v)) for q, v in peaks.items()))
+    raw = [
+        (f"{point}\t{direction}", *(units.convert(quantity_units[q][0], v) for q, v in peaks.items()))
         for point, dirs in checked["points"].items()
         for direction, peaks in dirs.items()
     ]
+    point_rows = [(*row[0].split("\t"), *row[1:]) for row in _columns(raw, 3, [0] * len(raw))]
     header = ("point", "direction", *(f"{q} [{u}]" for q, (_, u) in quantity_units.items()))
     blocks.append(table("Peaks over one revolution", header, point_rows, (False, False, True, True, True)))
     return Section("Amplitudes", tuple(blocks))
@@ -277,18 +300,20 @@ def _platform_design(doc: dict, units: DisplayUnits) -> Section:
 
 
 def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
-    v = doc["verification"]
+    v, i = doc["verification"], doc["inputs"]
     au = units.label("amplitude")
+    u = i["u"]  # round-off is judged against the required amplitude and its rotation over the platform
+    tilt = u / max(i["A"], i["B"], 1e-300)
     rows = [
-        *((f"amplitude of {k}", num(units.convert("amplitude", a)), au) for k, a in v["amplitudes"].items()),
-        *((f"rotation amplitude {k}", num(r), "rad") for k, r in v["rotations"].items()),
-        ("static tilt", num(v["static_tilt"]), "rad"),
-        ("static corner offset", num(v["static_offset_percent"]), "% of u"),
-        ("rocking of the corners", num(v["rocking_percent"]), "% of u"),
-        ("spread of corner amplitudes", num(v["spread_percent"]), "% of u"),
+        *((f"amplitude of {k}", num(units.convert("amplitude", a), 4, units.convert("amplitude", u)), au) for k, a in v["amplitudes"].items()),
+        *((f"rotation amplitude {k}", num(r, 3, tilt), "rad") for k, r in v["rotations"].items()),
+        ("static tilt", num(v["static_tilt"], 3, tilt), "rad"),
+        ("static corner offset", num(v["static_offset_percent"], 3, 100), "% of u"),
+        ("rocking of the corners", num(v["rocking_percent"], 3, 100), "% of u"),
+        ("spread of corner amplitudes", num(v["spread_percent"], 3, 100), "% of u"),
         ("harmonic balance: truncation order K", str(v["harmonic_balance"]["order"]), "-"),
         ("harmonic balance: frequencies solved", str(v["harmonic_balance"]["frequencies"]), "-"),
-        ("harmonic balance: truncation error (estimate)", num(v["harmonic_balance"]["truncation_error_over_u"], 2), "u"),
+        ("harmonic balance: truncation error (estimate)", truncation(v["harmonic_balance"]["truncation_error_over_u"]), "u"),
     ]
     inertia = v["inertia"]["source"]
     verification = table(
@@ -305,17 +330,14 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
         ((f["mode"], _speed(units, f["omega"]), pct(f["margin"])) for f in doc["natural_frequencies"]),
     )
     damping = "with the isolators' damping" if doc["sensitivity_with_damping"] else "undamped"
+    keys = ("rocking_percent_plus", "rocking_percent_minus", "static_offset_percent_plus", "static_offset_percent_minus")
+    raw = [(s["parameter"] + (f" (resonant: {s['resonance']})" if s["resonance"] else ""), *(s[k] for k in keys))
+           for s in doc["sensitivity"]]
+    formatted = _columns(raw, 3, [0] * len(raw))
     sens = table(
         f"Sensitivity to build tolerances ({damping}) [% of u]",
         ("parameter", "tolerance", "rocking +", "rocking −", "static +", "static −"),
-        (
-            (
-                s["parameter"] + (f" (resonant: {s['resonance']})" if s["resonance"] else ""), str(s["tolerance"]),
-                *(num(s[k], 4) for k in ("rocking_percent_plus", "rocking_percent_minus",
-                                         "static_offset_percent_plus", "static_offset_percent_minus")),
-            )
-            for s in doc["sensitivity"]
-        ),
+        ((row[0], str(s["tolerance"]), *row[1:]) for row, s in zip(formatted, doc["sensitivity"])),
         (False, False, True, True, True, True),
     )
     return Section("6-DOF verification", (verification, freqs, sens))
@@ -336,8 +358,8 @@ def platform_sections(docs: dict, units: DisplayUnits) -> tuple[Section, ...]:
                     "Design: closed forms (3.8)-(3.21), corrected. Verification: the steady state of the full"
                     " linear 6-DOF equations with periodic coefficients, solved by harmonic balance over the"
                     f" combinations of the rotor speeds up to order K = {doc['verification']['harmonic_balance']['order']};"
-                    " the harmonics left out move the platform by an estimated"
-                    f" {num(doc['verification']['harmonic_balance']['truncation_error_over_u'], 2)} u. The rocking"
+                    " the estimated displacement of the harmonics left out is"
+                    f" {truncation(doc['verification']['harmonic_balance']['truncation_error_over_u'])} u. The rocking"
                     " figures are the difference between this solution and the intended pure translation."
                 ),
             ),

@@ -17,6 +17,7 @@ td { overflow-wrap: break-word; }
 .eq { margin: 0.4em 0; page-break-inside: avoid; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
 figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; height: auto; }
 @page { size: A4; margin: 15mm; }
+table.signs { width: 100%; } table.signs td { height: 2.2em; } table.signs td:last-child { width: 45%; }
 .header { font-size: 8pt; color: #555; border-bottom: 1px solid #ccc; }
 """
 
@@ -28,7 +29,8 @@ def _table(t: Table) -> str:
         for row in t.rows
     )
     caption = f"<caption>{escape(t.title)}</caption>" if t.title else ""
-    return f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+    wide = ' class="signs"' if t.wide is not None else ""
+    return f"<table{wide}>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 
 def _block(block) -> str:

@@ -13,6 +13,7 @@ from pydantic import BaseModel
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.model import Section, table
+from foundation_calc.output.report.numbers import echoed
 
 _DESCRIPTION = re.compile(r"^\s*(?P<symbol>.*?)\s*\[(?P<unit>[^\]]*)\]\s*:\s*(?P<meaning>.*)$", re.S)
 
@@ -27,7 +28,7 @@ DISPLAYED = {
 
 def _value(value) -> str:
     if isinstance(value, float):
-        return f"{value:.6g}"
+        return echoed(value)
     if isinstance(value, (list, tuple)):
         return ", ".join(map(_value, value))
     return str(value)

@@ -18,12 +18,14 @@ class Paragraph:
 
 @dataclass(frozen=True)
 class Table:
-    """A table of plain-text cells; ``numeric`` marks the right-aligned columns."""
+    """A table of plain-text cells; ``numeric`` marks the right-aligned columns; ``wide`` names a
+    column that takes the page's free width (a signature box)."""
 
     title: str
     header: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
     numeric: tuple[bool, ...]
+    wide: int | None = None
 
 
 @dataclass(frozen=True)
@@ -64,9 +66,9 @@ class Sheet:
     header: str = ""
 
 
-def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None) -> Table:
+def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None, wide: int | None = None) -> Table:
     """A :class:`Table`; by default every column but the first is numeric."""
     rows = tuple(tuple(row) for row in rows)
     if numeric is None:
         numeric = (False,) + (True,) * (len(header) - 1)
-    return Table(title, tuple(header), rows, tuple(numeric))
+    return Table(title, tuple(header), rows, tuple(numeric), wide)

@@ -46,14 +46,47 @@ def figure(value: float | None, digits: int, scale: float | None = None) -> str:
         return str(value)
     if value == 0 or (scale is not None and abs(value) < ROUND_OFF * abs(scale)):
         return "0"
+    if PLAIN_RANGE[0] <= abs(value) < PLAIN_RANGE[1]:
+        decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+        return f"{value:.{decimals}f}"
+    return _scientific(value, digits)
+
+
+def column(values, digits: int, scale: float | None = None) -> list[str]:
+    """A table column of ``values`` in one notation: plain when every non-zero value (above
+    round-off of ``scale``) lies in :data:`PLAIN_RANGE`, otherwise ``a.bc·10^n`` for all.
+
+    >>> column([0.000112958, 2.54806e-05, 0.0], 3)
+    ['1.13·10⁻⁴', '2.55·10⁻⁵', '0']
+    >>> column([0.113, 0.0255, 5e-20], 3, scale=0.1)
+    ['0.113', '0.0255', '0']
+    """
+    shown = [figure(v, digits, scale) for v in values]
+    kept = [v for v, text in zip(values, shown) if v is not None and text != "0"]
+    if all(PLAIN_RANGE[0] <= abs(v) < PLAIN_RANGE[1] for v in kept):
+        return shown
+    return ["0" if text == "0" else "-" if v is None else _scientific(v, digits) for v, text in zip(values, shown)]
+
+
+def _scientific(value: float, digits: int) -> str:
     exponent = math.floor(math.log10(abs(value)))
     mantissa = round(value / 10.0**exponent, digits - 1)
-    if abs(mantissa) >= 10:  # 9.9996 rounds up to 10.000
+    if abs(mantissa) >= 10:
         exponent, mantissa = exponent + 1, mantissa / 10
-    if PLAIN_RANGE[0] <= abs(value) < PLAIN_RANGE[1]:
-        decimals = max(0, digits - 1 - exponent)
-        return f"{value:.{decimals}f}"
     return f"{mantissa:.{digits - 1}f}·10{str(exponent).translate(_SUPERSCRIPT)}"
+
+
+def echoed(value: float) -> str:
+    """An input as given, up to 6 figures without trailing zeros, ``a·10ⁿ`` outside the plain range.
+
+    >>> echoed(7e7), echoed(1.4931e10), echoed(0.35), echoed(100000.0)
+    ('7·10⁷', '1.4931·10¹⁰', '0.35', '100000')
+    """
+    text = f"{value:.6g}"
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
 
 
 def percent(fraction: float) -> str:

@@ -20,8 +20,10 @@ PREAMBLE = """#set text(size: 9pt)
 #: A text column with a cell longer than this takes the page's free width and wraps.
 WRAP_CHARS = 40
 
-#: Tables longer than this may break across pages; shorter ones stay whole.
-UNBREAKABLE_ROWS = 30
+#: Tables longer than this (rows, or characters of text) may break across pages, their header
+#: repeated; shorter ones stay whole. A table taller than a page must break or it runs off the page.
+UNBREAKABLE_ROWS = 12
+UNBREAKABLE_CHARS = 1500
 
 
 def string(text: str) -> str:
@@ -37,14 +39,17 @@ def _table(t: Table) -> str:
     width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
     text_columns = [j for j in range(len(t.header)) if not t.numeric[j]]
     widest = max(text_columns, key=width.__getitem__, default=None)
-    if widest is not None and width[widest] > WRAP_CHARS:  # long text takes the free width and wraps
+    widest = widest if t.wide is None else t.wide
+    if widest is not None and (width[widest] > WRAP_CHARS or t.wide is not None):  # long text takes the free width and wraps
         columns = ", ".join("1fr" if j == widest else "auto" for j in range(len(t.header)))
+    inset = "8pt" if t.wide is not None else "2.5pt"  # a sign box is tall enough to sign in
     body = (
-        f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: 2.5pt),"
+        f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: {inset}),"
         f" stroke: 0.4pt + gray, table.header({', '.join(cells[:len(t.header)])}), {', '.join(cells[len(t.header):])})"
     )
     title = f"strong({string(t.title)}), " if t.title else ""
-    breakable = "true" if len(t.rows) > UNBREAKABLE_ROWS else "false"
+    long = len(t.rows) > UNBREAKABLE_ROWS or sum(map(len, (c for row in t.rows for c in row))) > UNBREAKABLE_CHARS
+    breakable = "true" if long else "false"
     return f"#block(breakable: {breakable}, width: 100%, stack(spacing: 4pt, {title}{body}))\n"
 
 

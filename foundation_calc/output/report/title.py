@@ -74,6 +74,7 @@ def title_section(title: TitleBlock) -> Section:
         ((role, get(f"{key}_by"), get(f"{key}_date"), "") for role, key in
          (("prepared", "prepared"), ("checked", "checked"), ("approved", "approved"))),
         (False, False, False, False),
+        wide=3,
     )
     blocks = [table("", ("item", "value"), rows, (False, False)), signs]
     if p is not None and p.revisions:

@@ -190,7 +190,7 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         reader = ROWS.get(run.check)
         found = list(reader(documents[run.check], scene, units)) if reader is not None else []
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
-            found = [("", units.render(run.reason), "-", "-", run.verdict, "fcalc check")]
+            found = [(units.render(run.reason), "-", "-", "-", run.verdict, "fcalc check")]
         rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
     checks = table(
         "Every check (ratio = demand/limit; above 1 fails)",
