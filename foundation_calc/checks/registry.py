@@ -171,19 +171,12 @@ def runup(scene) -> Finding | None:
 
 
 def block_resonance(scene) -> Finding:
-    """Every machine's orders against the block's six modes (``fcalc resonance``)."""
-    from foundation_calc.checks.block import check_block
+    """Every machine's orders against the block's six modes by the resonance rule (``fcalc resonance``)."""
+    from foundation_calc.checks.block import check_block, resonance_text
 
     report = check_block(scene)
-    near = report.nearest
-    values = {"critical": ("speed", near.critical)}
-    if report.resonance_outcome is Outcome.PASS:
-        reason = (f"every driven order is at least {near.margin:.1%} from every mode (nearest: {near.machine} order"
-                  f" {near.order} at mode {near.mode}, {near.motion}, critical speed ", values["critical"], ")")
-    else:
-        bad = [r for r in report.resonance_rows if r.outcome is report.resonance_outcome]
-        reason = ("; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad),)
-    return Finding("resonance", report.resonance_outcome, reason, values, report)
+    values = {"critical": ("speed", report.nearest.critical)}
+    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report)
 
 
 def block_amplitudes(scene) -> Finding:

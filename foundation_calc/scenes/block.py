@@ -24,6 +24,10 @@ BLOCK_OMEGA_PLAUSIBLE = 1000.0
 class BlockLimits(Limits):
     """What the checks compare against: the crank foundation's limits (bearing_pressure among them), and the office checks'."""
 
+    amplitude: float | None = quantity(
+        "u_max", "m", "largest allowed peak displacement of G and of every point, each direction", None, gt=0,
+        examples=[5.0e-5],
+    )
     eccentricity: float = quantity(
         "e_max", "-", "largest allowed horizontal distance of the combined centre of mass from the base centroid,"
         " as a fraction of the base dimension in that direction (ACI 351.3R: 0.05)", 0.05, gt=0, lt=0.5,
