@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors
 
 
@@ -25,7 +26,7 @@ class Section(str, Enum):
 
 ScenesArg = Annotated[
     Optional[list[Path]],
-    typer.Argument(help="Scene files (TOML). Default: every scene file in ./configs.", show_default=False),
+    scene_argument("Scene files (TOML). Default: every scene file in ./configs."),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
 PlotOpt = Annotated[
