@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.checks.outcomes import Outcome, worst
 
 
 #: A reason: literal text parts and ``(quantity, SI value)`` parts, in reading order.
@@ -72,7 +72,13 @@ def crank_resonance(scene) -> Finding:
     if governing is not None:
         values["critical"] = ("speed", governing.critical_zero_order)
     reason = ("speed ", speed, f", {report.statement}")
-    return Finding("resonance", report.outcome, reason, values, report)
+    details = ()
+    if report.modulus_range is not None:
+        reason += (f" with the soil data as given; {report.modulus_range.text}",)
+        details = tuple(
+            f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}" for p in report.modulus_range.points
+        )
+    return Finding("resonance", report.outcome, reason, values, report, details)
 
 
 def crank_amplitudes(scene) -> Finding:
@@ -111,12 +117,17 @@ def crank_amplitudes(scene) -> Finding:
             reason += (f"; {report.resonance.statement}",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
+    if report.modulus_range is not None:
+        reason += (f"; {report.modulus_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
+    if report.modulus_range is not None:
+        details += tuple(f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}"
+                         for p in report.modulus_range.points)
     return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 

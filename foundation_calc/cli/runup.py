@@ -7,9 +7,10 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation, platform or block_foundation.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation, platform or block_foundation.")]
 TimeOpt = Annotated[
     Optional[float],
     typer.Option("--time", min=1e-6, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),

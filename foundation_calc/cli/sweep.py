@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt
@@ -19,7 +20,7 @@ MAX_POINTS = 100_000
 
 _RANGE = re.compile(r"^\s*([^:\s]+?)\s*(?::\s*([^:\s]+?)\s*(?::\s*(\d+))?)?\s*([a-zA-Z/]*)\s*$")
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or block_foundation.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 SpeedOpt = Annotated[
     Optional[str],
     typer.Option("--speed", metavar="FROM:TO[:N][UNIT]", show_default=False,

@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from rich.markup import escape
 from rich.table import Table
 
 from foundation_calc.checks.runup import RunupReport, run_title
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
-from foundation_calc.solvers.numerics.runup import RunupResult
 from foundation_calc.units import speed_triplet
+
+if TYPE_CHECKING:  # the solver imports scipy.signal: not before a run is computed
+    from foundation_calc.solvers.numerics.runup import RunupResult
 
 
 def _passage_document(p, result: RunupResult, points) -> dict:

@@ -40,6 +40,8 @@ class BlockSoil(Soil):
     """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
+    #: The block's checks judge the soil as given: ``modulus_range`` is refused, not ignored.
+    range_keys: ClassVar[tuple[str, ...]] = ()
     no_method_text: ClassVar[str] = (
         'give soil.method = "springs" with stiffness [N/m, N m/rad] (and dashpot), "lysmer" with its keys, or'
         " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
