@@ -42,6 +42,37 @@ class SceneError(FcalcError, ValueError):
         super().__init__(f"{source}: " + "; ".join(lines))
 
 
+class NonFiniteError(FcalcError, ArithmeticError):
+    """A computed number is NaN or infinite: the scene cannot be computed (it lies outside the
+    range the arithmetic carries). ``where`` is the dotted path of the number in the result
+    (``result.passages[1].eta``), ``value`` the number itself."""
+
+    exit_code = ExitCode.INVALID_SCENE
+
+    def __init__(self, where: str, value: float):
+        self.where = where
+        self.value = value
+        shown = "NaN" if value != value else f"{value}"
+        super().__init__(
+            f"{where or 'a result'} is {shown}: fcalc cannot compute this number for the scene"
+            " (it is probably outside the trusted range of its inputs)"
+        )
+
+    @classmethod
+    def find(cls, value, where: str = "") -> "NonFiniteError | None":
+        """The error for the first NaN or inf in ``value`` (nested dicts, lists, tuples and
+        numbers, e.g. a JSON document), None when every number in it is finite."""
+        if isinstance(value, float):
+            return None if value - value == 0.0 else cls(where, value)
+        items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, (list, tuple)) else ()
+        for key, item in items:
+            inner = f"{where}[{key}]" if isinstance(key, int) else f"{where}.{key}" if where else str(key)
+            found = cls.find(item, inner)
+            if found is not None:
+                return found
+        return None
+
+
 class PhysicsError(FcalcError, ValueError):
     """The inputs are valid numbers but describe a system that has no answer.
 
@@ -56,8 +87,9 @@ class PhysicsError(FcalcError, ValueError):
         self.message = message
         self.field = field
         self.hint = hint
-        text = f"{field}: {message}" if field else message
-        super().__init__(f"{text} ({hint})" if hint else text)
+        #: message and hint without the field: what a JSON document puts next to ``field``
+        self.detail = f"{message} ({hint})" if hint else message
+        super().__init__(f"{field}: {self.detail}" if field else self.detail)
 
 
 class ConvergenceError(FcalcError, ArithmeticError):

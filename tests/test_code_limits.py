@@ -62,9 +62,19 @@ def test_zone_verdicts():
 def test_application_range_warnings():
     table = TABLES["ISO 10816-3", 2, "rigid"]
     assert application_warnings(table, 1500.0, 250.0) == []
-    below, unknown = application_warnings(table, 100.0, None)
+    below, displacement, unknown = application_warnings(table, 100.0, None)
     assert "120 to 15000 rpm" in below and "100 rpm" in below
     assert "machine_power" in unknown
+    assert "below 600 r/min by their r.m.s. displacement" in displacement and "not stored" in displacement
+
+
+def test_no_displacement_boundary_is_stored_without_its_printed_value():
+    """ISO 10816-3 sets displacement boundaries below 600 r/min; none is stored (their printed
+    values were not available to check), so every table warns there and none warns at 600 r/min."""
+    for table in TABLES.values():
+        assert table.displacement_boundaries_um is None
+        assert any("not stored" in w for w in application_warnings(table, 599.0, 1.0e3))
+        assert not any("not stored" in w for w in application_warnings(table, 600.0, 1.0e3))
     (outside,) = application_warnings(table, 1500.0, 400.0)
     assert "400 kW is outside group 2" in outside
 

@@ -156,3 +156,21 @@ def test_frequencies_double_precision_cannot_resolve_are_an_invalid_scene(runner
     assert "double precision" in result.stderr and "foundation.moment_of_inertia" in result.stderr
     batch = runner.invoke(app, ["check", str(path), str(CONFIGS / "frame_saw.toml"), "--json"])
     assert batch.exit_code == 3 and [s["exit_code"] for s in json.loads(batch.stdout)["scenes"]] == [3, 0]
+
+
+def test_validation_messages_read_as_written_for_an_engineer(runner, tmp_path, frame_saw):
+    """No pydantic wording, no "- [-]:" of a field without symbol or unit, one "got" per line."""
+    frame_saw["project"] = {"job": 5}
+    frame_saw["foundation"]["mass"] = -1
+    frame_saw["foundation"]["moment_of_inertia"] = "a"
+    frame_saw["soil"]["damping"] = [0.1, 0.1]
+    frame_saw["limits"]["detuning"] = 2
+    result = runner.invoke(app, ["resonance", str(_write(tmp_path, "s.toml", tomli_w.dumps(frame_saw)))])
+    assert result.exit_code == 3
+    lines = {line.split(":", 1)[0].strip(): line for line in result.stderr.splitlines()[1:]}
+    assert "foundation.mass: must be > 0 (got -1;" in lines["foundation.mass"]
+    assert "must be a number (got 'a'" in lines["foundation.moment_of_inertia"]
+    assert "must be text" in lines["project.job"] and "- [-]" not in lines["project.job"]
+    assert "must have 3 items (got [0.1, 0.1]" in lines["soil.damping"]
+    assert lines["limits.detuning"].count("got") + lines["limits.detuning"].count("= 2 ") == 1
+    assert "Input should" not in result.stderr and "should have" not in result.stderr

@@ -168,19 +168,34 @@ def test_block_mass_properties_against_brute_force_integration():
     assert float(props.I_c) == pytest.approx(I_c, rel=1e-5)
 
 
+def _sliding_rocking_eigen(K_x, K_phi, M, I_c, h):
+    from foundation_calc.solvers.constants import GRAVITY
+
+    K = np.array([[K_x, -h * K_x], [-h * K_x, K_phi - M * GRAVITY * h + h * h * K_x]])
+    return np.sqrt(eigh(K, np.diag([M, I_c]), eigvals_only=True))
+
+
 def test_coupled_frequencies_of_fcalc_soil_against_an_eigen_solve():
     """p1, p2 with the method's own rocking spring (c_φ in the rocking row) against
     scipy.linalg.eigh of the sliding-rocking block: K = [[K_x, -h K_x], [-h K_x, K_φ - P h + h² K_x]],
-    M = diag(M_tot, I_c), coordinates x of C and θ."""
+    M = diag(M_tot, I_c), coordinates x of C and θ. A frequency-dependent method's p_i is an
+    eigenvalue of the block on the springs taken at p_i itself (ω = p(K(ω))), its k0 the vertical
+    frequency on K_z(k0); its static frequencies are those of the static springs."""
     from foundation_calc.checks.soil_methods import compare_soil_methods
     from foundation_calc.solvers.constants import GRAVITY
 
     scene = parse_scene(DAS_SCENE)
     f = scene.foundation
+    M, h, I_c = scene.total_mass, f.cog_height, f.moment_of_inertia
     for r in compare_soil_methods(scene).results:
-        M, h = scene.total_mass, f.cog_height
-        K = np.array([[r.K_x, -h * r.K_x], [-h * r.K_x, r.K_phi - M * GRAVITY * h + h * h * r.K_x]])
-        w2 = eigh(K, np.diag([M, f.moment_of_inertia]), eigvals_only=True)
-        assert (r.p1, r.p2) == pytest.approx(tuple(np.sqrt(w2)), rel=1e-10), r.method
-        u = uncoupled_frequencies(r.K_z, r.K_x, r.K_phi, M, f.moment_of_inertia + M * h * h, h, GRAVITY)
-        assert r.k0 == pytest.approx(float(u.omega_z), rel=1e-14)
+        static = _sliding_rocking_eigen(r.K_x, r.K_phi, M, I_c, h)
+        if r.static_frequencies is None:
+            assert (r.p1, r.p2) == pytest.approx(tuple(static), rel=1e-10), r.method
+            u = uncoupled_frequencies(r.K_z, r.K_x, r.K_phi, M, I_c + M * h * h, h, GRAVITY)
+            assert r.k0 == pytest.approx(float(u.omega_z), rel=1e-14)
+            continue
+        assert (r.static_frequencies["p1"], r.static_frequencies["p2"]) == pytest.approx(tuple(static), rel=1e-10)
+        for i, mode in enumerate(("p1", "p2")):
+            s = scene.soil_springs(r.method, getattr(r, mode))
+            assert getattr(r, mode) == pytest.approx(_sliding_rocking_eigen(s.K_x, s.K_phi, M, I_c, h)[i], rel=1e-8)
+        assert r.k0 == pytest.approx(math.sqrt(float(scene.soil_springs(r.method, r.k0).K_z) / M), rel=1e-8)

@@ -18,13 +18,21 @@ from tests.conftest import CONFIGS
 
 PROBE = """
 import json, runpy, sys
-sys.argv = ["fcalc", "resonance", sys.argv[1]]
+sys.argv = ["fcalc", *sys.argv[1:]]
+code = 0
 try:
     runpy.run_module("foundation_calc", run_name="__main__")
-except SystemExit:
-    pass
-sys.stderr.write(json.dumps(sorted(sys.modules)))
+except SystemExit as exit:
+    code = exit.code
+sys.stderr.write(json.dumps([code, sorted(sys.modules)]))
 """
+
+
+def _modules(*args: str) -> tuple[int, list[str]]:
+    """Exit code of ``fcalc ARGS`` run in a fresh interpreter and the modules it loaded."""
+    run = subprocess.run([sys.executable, "-c", PROBE, *args], capture_output=True, text=True, check=False)
+    code, modules = json.loads(run.stderr.splitlines()[-1])
+    return code, modules
 
 #: Never on the path of `fcalc resonance` with an undamped crank scene.
 HEAVY = ("scipy", "matplotlib", "typst", "multiprocessing")
@@ -32,8 +40,7 @@ HEAVY = ("scipy", "matplotlib", "typst", "multiprocessing")
 
 def test_resonance_imports_only_its_own_path():
     scene = CONFIGS / "compressor_near_resonance.toml"
-    run = subprocess.run([sys.executable, "-c", PROBE, str(scene)], capture_output=True, text=True, check=False)
-    modules = json.loads(run.stderr.splitlines()[-1])
+    _, modules = _modules("resonance", str(scene))
     assert not [m for m in modules if m.split(".")[0] in HEAVY]
     own = [m for m in modules if m.startswith("foundation_calc.")]
     from foundation_calc.cli.app import COMMANDS
@@ -43,3 +50,11 @@ def test_resonance_imports_only_its_own_path():
     solvers = {m.split(".")[2] for m in own if m.startswith("foundation_calc.solvers.") and m.count(".") >= 3}
     assert solvers <= {"crank", "soil", "numerics"}
     assert not [m for m in own if m.startswith(("foundation_calc.benchmarks", "foundation_calc.output.report"))]
+
+
+def test_runup_without_a_run_time_fails_before_importing_scipy():
+    """The missing run time is a scene error (exit 3) found before the time integration's
+    scipy.signal (about a second) is imported."""
+    code, modules = _modules("runup", str(CONFIGS / "platform_paper_example.toml"))
+    assert code == 3
+    assert not [m for m in modules if m.split(".")[0] == "scipy"]

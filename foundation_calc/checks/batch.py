@@ -8,7 +8,6 @@ the run is the worst of all: 4 internal > 3 invalid > 1 fail (or warn with ``str
 
 from __future__ import annotations
 
-import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
@@ -16,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from foundation_calc.checks.registry import CHECKS, Finding, Reason
-from foundation_calc.errors import ExitCode, FcalcError, SceneError
+from foundation_calc.errors import ExitCode, FcalcError, NonFiniteError, PhysicsError, SceneError
 
 #: Verdicts of one check, from best to worst, and the exit code each one implies.
 VERDICT_EXIT = {"pass": ExitCode.OK, "warn": ExitCode.OK, "fail": ExitCode.CHECK_FAILED,
@@ -50,7 +49,8 @@ class CheckRun:
 class SceneRun:
     """All checks of one scene file. ``kind`` and ``name`` are empty and ``scene`` (the validated
     scene model) is ``None`` when it did not load; ``skipped`` marks a TOML file found in a folder
-    that is no scene (no ``kind`` key, e.g. ``.taplo.toml``), which has no checks."""
+    that is no scene (no ``kind`` key and no scene table, e.g. ``.taplo.toml``, or no regular
+    file, e.g. a FIFO), which has no checks; ``skip_note`` says why it was skipped."""
 
     source: str
     kind: str
@@ -59,6 +59,7 @@ class SceneRun:
     scene: Any = None
     skipped: bool = False
     warnings: tuple[str, ...] = ()
+    skip_note: str = ""
 
     def exit_code(self, strict: bool) -> ExitCode:
         return max((run.exit_code(strict) for run in self.runs), default=ExitCode.OK)
@@ -90,6 +91,8 @@ def scene_files(paths: Iterable[str | Path]) -> dict[Path, bool]:
 def _error_run(check: str, exc: BaseException) -> CheckRun:
     if isinstance(exc, SceneError):
         return CheckRun(check, "invalid", ("the scene cannot be used",), problems=tuple(exc.problems))
+    if isinstance(exc, PhysicsError):
+        return CheckRun(check, "invalid", (str(exc),), problems=((exc.field, exc.detail),))
     if isinstance(exc, FcalcError):
         return CheckRun(check, "invalid", (str(exc),), problems=(("", str(exc)),))
     text = f"{type(exc).__name__}: {exc}"
@@ -97,24 +100,46 @@ def _error_run(check: str, exc: BaseException) -> CheckRun:
 
 
 def _finite(finding: Finding) -> Finding:
-    """``finding`` itself; NaN or inf in its numbers is a bug, so it raises ``ValueError``."""
-    json.dumps(list(finding.values.values()), allow_nan=False)
+    """``finding`` itself; NaN or inf in its numbers raises :class:`NonFiniteError` (the scene
+    cannot be computed), naming the value."""
+    found = NonFiniteError.find({"values": {name: value for name, (_, value) in finding.values.items()}})
+    if found is not None:
+        raise found
     return finding
+
+
+def _not_regular(path: str | Path) -> str:
+    """What ``path`` is when it is no regular file (a FIFO, a socket, a device), else ``""``;
+    only its status is read, the file is never opened (a FIFO would wait for a writer)."""
+    import stat
+
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return ""  # reported when it is read
+    kinds = ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"), (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"))
+    return next((name for test, name in kinds if test(mode)), "")
 
 
 def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     """Load one scene and run every check of its kind (``"load"`` stands for a scene that fails).
 
-    With ``skip_non_scenes`` a TOML document without a ``kind`` key is skipped, not invalid.
+    With ``skip_non_scenes`` (a file found in a folder) a file that is not a regular file is
+    skipped unopened, and a TOML document without a kind and without any scene table
+    (:func:`~foundation_calc.scenes.loading.is_scene`) is skipped, not invalid; ``skip_note``
+    says why.
     """
     from foundation_calc.scenes import parse_scene, read_toml
+    from foundation_calc.scenes.loading import is_scene
     from foundation_calc.scenes.project import with_office_defaults
 
     source = str(path)
+    if skip_non_scenes and _not_regular(path):
+        return SceneRun(source, "", "", (), skipped=True, skip_note=f"{_not_regular(path)}, not a regular file: not opened")
     try:
         document = read_toml(path)
-        if skip_non_scenes and "kind" not in document:
-            return SceneRun(source, "", "", (), skipped=True)
+        if skip_non_scenes and not is_scene(document):
+            return SceneRun(source, "", "", (), skipped=True, skip_note="TOML without a kind or a scene table, not a scene")
         scene = parse_scene(with_office_defaults(document, path), source)
     except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
@@ -156,8 +181,40 @@ def _unchanged(scene: SceneRun) -> SceneRun:
     return scene
 
 
-def _run_and_finish(path: Path, searched: bool, finish: Callable[[SceneRun], Any]) -> Any:
+def _run_and_finish(task: tuple[Path, bool, Callable[[SceneRun], Any]]) -> Any:
+    path, searched, finish = task
     return finish(run_scene(path, searched))
+
+
+def _start_worker() -> None:
+    """Set up a worker process: it leaves SIGINT to its parent (Ctrl-C reaches the whole process
+    group; the parent ends the batch), dies of SIGTERM, and on Linux is sent SIGTERM when its
+    parent dies, however it dies, so that no worker outlives the batch."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})  # blocked by the fork
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # 1 = PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # not Linux: the parent's terminate() is the only guard
+        pass
+
+
+def _fork_pool(jobs: int):
+    """A pool of ``jobs`` forked workers (:func:`_start_worker`). SIGINT and SIGTERM wait while it
+    forks: Python drops the exception of a handler that runs inside the fork's callbacks, which
+    would lose the signal; they are delivered just after."""
+    import multiprocessing
+    import signal
+
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+    try:
+        return multiprocessing.get_context("fork").Pool(jobs, initializer=_start_worker)
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
 def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[SceneRun], Any] = _unchanged) -> Iterator[Any]:
@@ -166,7 +223,8 @@ def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[Sc
 
     With ``jobs`` > 1 the scenes after the first are spread over that many worker processes
     (fork); the results are the same, in the same order, as the serial run's (each scene is
-    checked on its own, and errors stay per scene). ``finish`` runs in the worker: it turns a scene's run into what the
+    checked on its own, and errors stay per scene); when the caller stops early (an exception
+    such as an interruption, or closing the generator) the workers are ended at once. ``finish`` runs in the worker: it turns a scene's run into what the
     caller keeps (e.g. :meth:`SceneRun.light` and the scene's JSON text), so that a batch of many
     scenes neither holds nor ships whole reports; it must be picklable (a module-level function or
     a ``functools.partial`` of one).
@@ -177,17 +235,16 @@ def iter_scenes(paths: Iterable[str | Path], jobs: int = 1, finish: Callable[[Sc
         for path, searched in files:
             yield finish(run_scene(path, searched))
         return
-    import itertools
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
     # the first scene is checked here: what its kind imports is then loaded once, before the fork
     yield finish(run_scene(*files[0]))
     rest = files[1:]
     chunk = max(1, min(16, len(rest) // (4 * jobs)))
-    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-        paths_, searched_ = zip(*rest)
-        yield from pool.map(_run_and_finish, paths_, searched_, itertools.repeat(finish), chunksize=chunk)
+    pool = _fork_pool(jobs)
+    try:
+        yield from pool.imap(_run_and_finish, [(path, searched, finish) for path, searched in rest], chunksize=chunk)
+    finally:
+        pool.terminate()  # every result is in, or the caller stopped: no worker is left running
+        pool.join()
 
 
 def exit_code(scenes: Iterable[SceneRun], strict: bool = False) -> ExitCode:

@@ -2,9 +2,9 @@
 the damped steady state against [limits] and a vibration code, and the office checks.
 
 Resonances: each order n of each machine against each of the six modes, margin
-|n ω - p_j| / p_j, judged by the one rule of every kind
-(:func:`~foundation_calc.checks.outcomes.resonance_outcome`): a mode is *driven* by an order when
-that order's loads put a modal force on it (:data:`~foundation_calc.solvers.block.response.DRIVEN_FRACTION`).
+|n ω - p_j| / p_j, judged by the resonance rule of every kind
+(:func:`~foundation_calc.checks.resonance_rule.judge`) with the forcing share of the order on the
+mode (|φ_jᵀ Q_n| / p_j over its largest value for the machine); no condition is the source's own.
 
 Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
 displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
@@ -21,7 +21,9 @@ import numpy as np
 from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
-from foundation_calc.checks.outcomes import Outcome, resonance_outcome, worst
+from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
+from foundation_calc.checks.resonance_rule import STATUS_NAMES, judge, required_detuning
+from foundation_calc.checks.resonance_rule import outcome as rule_outcome
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
@@ -46,8 +48,16 @@ class ResonanceRow:
     natural: float
     critical: float
     margin: float
-    driven: bool
+    share: float
+    judged: bool
+    required: float
+    status: str
     outcome: Outcome
+
+    @property
+    def driven(self) -> bool:
+        """Whether the condition can decide the verdict (judged by the rule)."""
+        return self.judged
 
 
 @dataclass(frozen=True)
@@ -104,21 +114,50 @@ class BlockReport:
 
     @property
     def nearest(self) -> ResonanceRow:
-        """The row of the smallest margin among the driven ones (or all, when none is driven)."""
-        driven = [r for r in self.resonance_rows if r.driven] or list(self.resonance_rows)
-        return min(driven, key=lambda r: r.margin)
+        """The governing row: the worst status and, among those, the smallest margin over the margin
+        it needs (the rule's governing condition); the smallest margin when none can decide."""
+        deciding = [r for r in self.resonance_rows if r.judged or r.order == 1]
+        if not deciding:
+            return min(self.resonance_rows, key=lambda r: r.margin)
+        rank = {"fail": 2, "warn": 1, "pass": 0}
+        return min(deciding, key=lambda r: (-rank[r.outcome.value], r.margin / max(r.required, RESONANCE_FAIL_MARGIN)))
 
 
-def resonance_rows(modes: BlockModes, excitations, detuning: float) -> tuple[ResonanceRow, ...]:
-    """Every order of every machine against every mode (module docstring)."""
+def condition_label(r: ResonanceRow) -> str:
+    """E.g. ``"motor: ω = mode 1 (y)"``."""
+    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
+
+
+def resonance_text(report: BlockReport) -> str:
+    """The resonance verdict's reason, naming the governing condition (as every command words it)."""
+    from foundation_calc.checks.resonance_rule import condition_phrase
+
+    def phrase(r):
+        return condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN))
+
+    governing = phrase(report.nearest)
+    outcome = report.resonance_outcome
+    if outcome is Outcome.PASS:
+        return f"no machine's order is inside a resonance band (governing: {governing})"
+    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})"
+
+
+def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceRow, ...]:
+    """Every order of every machine against every mode (module docstring); ``detuning``: the
+    scene's band, one value or one per order."""
     rows = []
     for exc in excitations:
         res = resonances(modes, exc)
-        for h, n in enumerate(exc.orders):
-            for j, p in enumerate(modes.frequencies):
-                margin, driven = float(res.margin[h, j]), bool(res.driven[h, j])
-                rows.append(ResonanceRow(exc.name, int(n), j + 1, modes.dominant[j], float(p), float(res.critical[h, j]),
-                                         margin, driven, resonance_outcome(margin, detuning, driven)))
+        orders = np.repeat(exc.orders, len(modes.frequencies))
+        required = required_detuning(detuning, orders)
+        verdict = judge(res.margin.ravel(), orders, res.share.ravel(), required, np.zeros(orders.shape, dtype=bool))
+        for c, (h, j) in enumerate(np.ndindex(res.margin.shape)):
+            status = int(verdict.status[c])
+            rows.append(ResonanceRow(
+                exc.name, int(exc.orders[h]), j + 1, modes.dominant[j], float(modes.frequencies[j]), float(res.critical[h, j]),
+                float(res.margin[h, j]), float(res.share[h, j]), bool(verdict.judged[c]), float(required[c]),
+                STATUS_NAMES[status], rule_outcome(status),
+            ))
     return tuple(rows)
 
 
@@ -195,4 +234,4 @@ def check_block(scene) -> BlockReport:
     )
 
 
-__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "limit_rows", "resonance_rows", "zone_rows"]
+__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]

@@ -14,9 +14,13 @@ of the machine on its support is at least 25 % above the main excitation frequen
 suitable for long-term continuous operation; D, severe enough to cause damage. A value equal to
 a boundary belongs to the lower zone.
 
-The tables' displacement boundaries (r.m.s. µm, the governing criterion below 600 r/min) are
-not stored. ISO 20816-3:2022, which replaced ISO 10816-3, is not accepted: its tables have not
-been checked against these.
+Below 600 r/min the tables judge the broad-band r.m.s. displacement [µm] as well as the velocity
+(Annex A, Tables A.1 and A.2, displacement columns: at low speeds a velocity within its zone may
+still mean a displacement beyond it). Those displacement boundaries are not stored:
+their printed values could not be checked against the standard, and a boundary is kept here only
+with its printed value and clause. For a machine below :data:`DISPLACEMENT_SPEED_RPM`,
+:func:`application_warnings` says so, and the velocity zone alone is judged. ISO 20816-3:2022,
+which replaced ISO 10816-3, is not accepted: its tables have not been checked against these.
 """
 
 from __future__ import annotations
@@ -24,6 +28,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome
+
+#: Speed [r/min] below which ISO 10816-3 judges the r.m.s. displacement as well (Annex A).
+DISPLACEMENT_SPEED_RPM = 600.0
 
 #: Zone names in order of severity.
 ZONES = ("A", "B", "C", "D")
@@ -36,6 +43,8 @@ class ZoneTable:
     Attributes
     ----------
     code : the code's name as a scene writes it, e.g. ``"ISO 10816-3"``
+    displacement_boundaries_um : r.m.s. displacement at A/B, B/C, C/D [µm] for speeds below
+        :data:`DISPLACEMENT_SPEED_RPM`, or None where the printed boundary is not stored
     clause : edition, annex and table the boundaries come from
     group : machine group (1 or 2)
     foundation : support class, ``"rigid"`` or ``"flexible"``
@@ -51,6 +60,7 @@ class ZoneTable:
     boundaries_mm_s: tuple[float, float, float]
     speed_range_rpm: tuple[float, float]
     power_range_kw: tuple[float, float]
+    displacement_boundaries_um: tuple[float, float, float] | None = None
 
     @property
     def boundaries(self) -> tuple[float, float, float]:
@@ -106,12 +116,23 @@ def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
 
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
     """Why the code may not apply to this machine: speed outside its range, power unknown or
-    outside the group's range. Empty when it applies."""
+    outside the group's range, a displacement boundary the code sets below 600 r/min that is not
+    stored. Empty when it applies.
+
+    >>> application_warnings(TABLES["ISO 10816-3", 2, "rigid"], 250.0, 100.0)[0][:60]
+    'ISO 10816-3 judges machines below 600 r/min by their r.m.s. '
+    """
     found = []
     lo, hi = table.speed_range_rpm
     if not lo <= speed_rpm <= hi:
         found.append(
             f"{table.code} applies to speeds of {lo:g} to {hi:g} rpm; the machine runs at {speed_rpm:.6g} rpm"
+        )
+    if speed_rpm < DISPLACEMENT_SPEED_RPM and table.displacement_boundaries_um is None:
+        found.append(
+            f"{table.code} judges machines below {DISPLACEMENT_SPEED_RPM:g} r/min by their r.m.s. displacement"
+            f" as well as the velocity ({table.clause}, displacement columns); those boundaries are not stored"
+            f" in fcalc: only the velocity zone is judged here - check the displacement against the printed table"
         )
     above, upto = table.power_range_kw
     if power_kw is None:
@@ -127,4 +148,5 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone", "zone_outcome"]
+__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone",
+           "zone_outcome"]

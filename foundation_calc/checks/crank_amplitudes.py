@@ -18,7 +18,7 @@ is the rule's (:mod:`~foundation_calc.checks.resonance_rule`), reported beside t
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -185,6 +185,8 @@ class AmplitudeReport:
     code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
     resonance: ResonanceReport | None = None
+    #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
+    modulus_range: object = None
 
     @property
     def omega(self) -> float:
@@ -205,7 +207,8 @@ class AmplitudeReport:
         if self.resonant:
             return Outcome.FAIL
         noted = (Outcome.WARN,) if self.code_warnings else ()
-        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted))
+        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
+        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted, *ranged))
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
@@ -414,16 +417,73 @@ def check_amplitudes(
     )
 
 
-def scene_vendor_loads(scene) -> VendorLoads | None:
-    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads."""
+def scene_vendor_loads(scene, soil_frequency: float = 0.0) -> VendorLoads | None:
+    """The scene's ``[[loads]]`` as a :class:`VendorLoads`, None without loads; a
+    frequency-dependent soil takes its springs at ``soil_frequency`` [rad/s]."""
     loads = scene.harmonic_loads()
-    return None if loads is None else VendorLoads(scene.block(), loads, scene.speed.omega_rad_s)
+    return None if loads is None else VendorLoads(scene.block(soil_frequency), loads, scene.speed.omega_rad_s)
+
+
+def _at_soil_frequency(scene, soil_frequency: float, exact: bool) -> AmplitudeReport:
+    design = None if scene.mechanism is None else scene.design(soil_frequency)
+    return check_amplitudes(design, scene.limits, scene.points, exact=exact,
+                            vendor=scene_vendor_loads(scene, soil_frequency))
+
+
+def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
+    """Harmonic n of ``motions[n]``: the steady state of a foundation whose springs depend on
+    frequency, each harmonic solved with the springs at its own frequency n ω (the system is
+    linear in the base's impedance, harmonic by harmonic). ``motions[1]`` gives ω."""
+    width = max(m.cos.shape[-1] for m in motions)
+    shape = np.broadcast_shapes(*(m.cos.shape[:-1] for m in motions)) + (width,)
+    cos, sin = np.zeros(shape), np.zeros(shape)
+    for n, m in enumerate(motions):
+        if n < m.cos.shape[-1]:
+            cos[..., n], sin[..., n] = m.cos[..., n], m.sin[..., n]
+    return PeriodicMotion(motions[1].omega, cos, sin)
 
 
 def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
-    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both."""
-    design = None if scene.mechanism is None else scene.design()
-    return check_amplitudes(design, scene.limits, scene.points, exact=exact, vendor=scene_vendor_loads(scene))
+    """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both;
+    with ``soil.modulus_range`` also over that range (:func:`~foundation_calc.checks.soil_range.amplitudes_over_range`;
+    the verdict is the worse of the two).
+    """
+    report = _scene_amplitudes(scene, exact)
+    if scene.soil.modulus_range is None:
+        return report
+    from foundation_calc.checks.crank_resonance import check_scene_resonances
+    from foundation_calc.checks.soil_range import amplitudes_over_range
+
+    crossings = check_scene_resonances(scene).modulus_range.crossings
+    return replace(report, modulus_range=amplitudes_over_range(scene, _scene_amplitudes, crossings))
+
+
+def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
+    """The amplitudes of ``scene`` with its soil data as given.
+
+    On a frequency-dependent soil (``soil.frequency_dependent``) every harmonic n of the closed
+    forms (first approximation, averaged operator, loads) is solved with the springs and dashpots
+    at its own frequency n ω (:func:`splice_harmonics`; the mean, n = 0, on the static springs);
+    the exact harmonic balance, which couples the harmonics, takes them at the speed ω.
+    """
+    omega = scene.speed.omega_rad_s
+    base = _at_soil_frequency(scene, omega if scene.soil.frequency_dependent else 0.0, exact)
+    if not scene.soil.frequency_dependent:
+        return base
+    live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
+    width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
+    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False) for n in range(width)]
+    approximations = dict(base.approximations)
+    for key, a in live.items():
+        if any(r.approximations[key].resonant for r in by_n):
+            continue
+        motion = splice_harmonics([r.approximations[key].motion for r in by_n])
+        approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
+    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega)
+    from foundation_calc.checks.crank_resonance import scene_resonances_as_given
+
+    return replace(base, approximations=approximations, rows=_rows(approximations[base.checked], scene.limits),
+                   code_rows=code_rows, code_warnings=code_warnings, resonance=scene_resonances_as_given(scene))
 
 
 __all__ = [
@@ -437,5 +497,6 @@ __all__ = [
     "check_amplitudes",
     "check_scene_amplitudes",
     "scene_vendor_loads",
+    "splice_harmonics",
     "zone_outcome",
 ]

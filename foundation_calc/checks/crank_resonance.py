@@ -11,7 +11,7 @@ other harmonic n ω = k0, p1, p2 of the machine's forcing whose forcing share re
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -89,7 +89,11 @@ class ResonanceReport:
     conditions shown (the paper's and the extra ones, the loads' orders, every other judged
     condition and the nearest conditions listed as information); ``governing``: the condition
     that governs the verdict (:mod:`~foundation_calc.checks.resonance_rule`); ``detuning``: the
-    scene's ``[limits] detuning`` (a band, or a band per order).
+    scene's ``[limits] detuning`` (a band, or a band per order). On a frequency-dependent soil
+    each frequency solves ω = p(K(ω)) with the springs taken at that mode's own frequency, and
+    ``static`` holds the zero-order frequencies on the static springs (None on a
+    frequency-independent soil, where they are the same); ``modulus_range``: the check over the
+    soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if the scene gives one.
     """
 
     design: CrankDesign | None
@@ -101,10 +105,13 @@ class ResonanceReport:
     governing: ResonanceRow | None = None
     detuning: float | Mapping[int, float] = 0.2
     conditions_checked: int = 0
+    static: NaturalFrequencies | None = None
+    modulus_range: object = None
 
     @property
     def outcome(self) -> Outcome:
-        return worst(row.outcome for row in self.rows)
+        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
+        return worst((*(row.outcome for row in self.rows), *ranged))
 
     @property
     def information(self) -> tuple[ResonanceRow, ...]:
@@ -247,26 +254,34 @@ def _report(design, zero, averaged, stability, omega, conditions, share, detunin
     )
 
 
-def check_resonances(design: CrankDesign, detuning, loads=None) -> ResonanceReport:
+def check_resonances(design: CrankDesign, detuning, loads=None, frequencies=None) -> ResonanceReport:
     """Natural frequencies of ``design`` and every resonance condition of its forcing (and of
     ``loads``, :class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`), judged by the rule
-    (:mod:`~foundation_calc.checks.resonance_rule`). ``detuning``: a band [-] or order -> band."""
+    (:mod:`~foundation_calc.checks.resonance_rule`). ``detuning``: a band [-] or order -> band.
+    ``frequencies`` = (zero-order, averaged, static) replaces the design's own (a
+    frequency-dependent soil, :func:`scene_design_frequencies`)."""
     d = design
     zero, averaged = design_frequencies(design)
+    static = None
+    if frequencies is not None:
+        zero, averaged, static = frequencies
     stability = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h)
     conditions, share = machine_conditions(design, loads)
-    return _report(design, zero, averaged, stability, d.omega, conditions, share, detuning)
+    return replace(_report(design, zero, averaged, stability, d.omega, conditions, share, detuning), static=static)
 
 
-def check_block_resonances(block, omega: float, loads, detuning) -> ResonanceReport:
+def check_block_resonances(block, omega: float, loads, detuning, frequencies=None) -> ResonanceReport:
     """Resonances of a machine given by its loads only: n ω of every order n of ``loads`` (and
-    ω itself) against the natural frequencies of the block (``RigidBlock``) at ``omega`` [rad/s]."""
+    ω itself) against the natural frequencies of the block (``RigidBlock``) at ``omega`` [rad/s];
+    ``frequencies`` = (frequencies, static) replaces the block's own (a frequency-dependent soil)."""
     from foundation_calc.solvers.crank.loads import block_frequencies
 
-    freqs = block_frequencies(block)
+    freqs, static = block_frequencies(block), None
+    if frequencies is not None:
+        freqs, static = frequencies
     stability = rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h)
     conditions, share = machine_conditions(None, loads, block)
-    return _report(None, freqs, freqs, stability, omega, conditions, share, detuning)
+    return replace(_report(None, freqs, freqs, stability, omega, conditions, share, detuning), static=static)
 
 
 def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
@@ -278,8 +293,54 @@ def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]
 
 
 def check_scene_resonances(scene) -> ResonanceReport:
-    """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both."""
+    """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both; with
+    ``soil.modulus_range``, also over that range (the verdict is the worse of the two)."""
+    report = scene_resonances_as_given(scene)
+    if scene.soil.modulus_range is None:
+        return report
+    from foundation_calc.checks.soil_range import resonances_over_range
+
+    return replace(report, modulus_range=resonances_over_range(scene, scene_resonances_as_given))
+
+
+def scene_resonances_as_given(scene) -> ResonanceReport:
+    """The resonance report of a scene with its soil data as given (no ``modulus_range``); on a
+    frequency-dependent soil every mode at its own frequency."""
     loads = scene.harmonic_loads()
     if scene.mechanism is None:
-        return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning)
-    return check_resonances(scene.design(), scene.limits.detuning, loads)
+        return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
+                                      scene_block_frequencies(scene))
+    return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
+
+
+def _consistent(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+    """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
+    NaturalFrequencies on the springs taken at ω."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    return NaturalFrequencies(**{
+        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode))
+        for mode in _MODES
+    })
+
+
+def scene_design_frequencies(scene):
+    """(zero-order, averaged, static) frequencies of a scene's mechanism on a frequency-dependent
+    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
+    if not scene.soil.frequency_dependent:
+        return None
+    static, static_averaged = design_frequencies(scene.design())
+    zero = _consistent(static, lambda w: design_frequencies(scene.design(w))[0])
+    averaged = _consistent(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
+    return zero, averaged, static
+
+
+def scene_block_frequencies(scene):
+    """(frequencies, static) of a machine given by its loads on a frequency-dependent soil, each
+    mode at its own frequency; None on a frequency-independent soil."""
+    if not scene.soil.frequency_dependent:
+        return None
+    from foundation_calc.solvers.crank.loads import block_frequencies
+
+    static = block_frequencies(scene.block())
+    return _consistent(static, lambda w: block_frequencies(scene.block(w))), static

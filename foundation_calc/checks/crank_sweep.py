@@ -16,7 +16,7 @@ import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
-from foundation_calc.checks.resonance_rule import FAIL, STATUS_NAMES, WARN
+from foundation_calc.checks.resonance_rule import FAIL, STATUS_NAMES, WARN, judge, required_detuning
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -39,14 +39,16 @@ HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
 
 @dataclass(frozen=True)
 class CriticalSpeed:
-    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator)
-    and the detuning band of its order [-] (0: the scene gives that order none)."""
+    """A resonance condition's critical speeds [rad/s] (zero-order and averaged-inertia operator),
+    whether the rule judges it, and the detuning band of its order [-] (0: the scene gives that
+    order none, or the condition is not judged)."""
 
     label: str
     source: str
     zero_order: float
     averaged: float
     band: float = 0.0
+    judged: bool = True
 
 
 @dataclass(frozen=True)
@@ -159,35 +161,8 @@ def _varied_block(block, variable: str, values):
                    C_x=block.C_x * r, C_z=block.C_z * r, C_phi=block.C_phi * r)
 
 
-def _critical(freqs, condition, index: int) -> float:
-    """Critical speed [rad/s] of ``condition`` from natural frequencies that may vary along the sweep
-    (soil sweeps; ``index`` picks the point: 0 the first, -1 the last)."""
-    return float(np.ravel(critical_speed(getattr(freqs, condition.mode), condition.harmonic))[index])
-
-
-def sweep(
-    design: CrankDesign | None, variable: str, values, limits, detuning: float, points=(), vendor=None
-) -> SweepReport:
-    """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
-
-    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²] or None), checked as
-    ``fcalc amplitudes`` checks them; ``points``: (name, horizontal, height) [m] of body points
-    relative to C, as the scene's ``[[points]]``; their peaks come from the same series
-    (rigid-body motion, exact in θ). ``vendor``: the scene's ``[[loads]]``
-    (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
-    is added to the mechanism's, or is the whole motion when ``design`` is None; their
-    conditions n ω = k0, p1, p2 join the mechanism's.
-
-    Raises
-    ------
-    PhysicsError
-        when a point of the sweep is unstable in rocking (a soil factor too small).
-    """
-    if variable not in VARIABLES:
-        raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
-    values = np.asarray(values, dtype=float)
-    loads = None if vendor is None else vendor.loads
-    conditions, share = machine_conditions(design, loads, None if vendor is None else vendor.block)
+def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share) -> SweepReport:
+    """One chunk of :func:`sweep_chunks` (``critical`` left empty: the caller sets it)."""
     motion = resonant = None
     if design is not None:
         batch = varied(design, **{variable: values})
@@ -220,17 +195,6 @@ def sweep(
         resonant, "resonant",
         np.where((rule_status == FAIL) | over, "fail", np.where(rule_status == WARN, "warn", "pass")),
     )
-    critical = ()
-    if variable == "omega":
-        lo, hi = values.min(), values.max()
-        judged = verdict.judged.reshape(-1, len(conditions))[0]
-        shown = [(c, band) for c, band, j in zip(conditions, required, judged) if j or c.source != "harmonic"]
-        critical = tuple(
-            CriticalSpeed(c.label, c.source, float(w0), float(w1), float(band))
-            for c, band in shown
-            for w0, w1 in [(_critical(zero, c, 0), _critical(averaged, c, -1))]
-            if lo <= max(w0, w1) and min(w0, w1) <= hi
-        )
     return SweepReport(
         variable=variable,
         values=values,
@@ -247,11 +211,91 @@ def sweep(
         status=status,
         harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
         damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
-        critical=critical,
+        critical=(),
         limits=limited,
         detuning=detuning,
         conditions=tuple(conditions),
     )
 
 
-__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "sweep"]
+def _critical_speeds(design, vendor, conditions, share, detuning, lo: float, hi: float) -> tuple[CriticalSpeed, ...]:
+    """Critical speeds [rad/s] inside [lo, hi] of the conditions that are judged or named (the
+    paper's, the extra ones, the loads'), with the band of each one's order."""
+    zero, averaged = design_frequencies(design) if design is not None else (block_frequencies(vendor.block),) * 2
+    orders = np.array([c.harmonic for c in conditions])
+    required = required_detuning(detuning, orders)
+    judged = judge(np.ones(len(conditions)), orders, share, required, [c.source == "paper" for c in conditions]).judged
+    found = []
+    for c, band, j in zip(conditions, required, judged):
+        w0 = float(critical_speed(getattr(zero, c.mode), c.harmonic))
+        w1 = float(critical_speed(getattr(averaged, c.mode), c.harmonic))
+        if (j or c.source != "harmonic") and lo <= max(w0, w1) and min(w0, w1) <= hi:
+            found.append(CriticalSpeed(c.label, c.source, w0, w1, float(band) if j else 0.0, bool(j)))
+    return tuple(found)
+
+
+def sweep_chunks(
+    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None, chunk: int | None = None
+):
+    """:func:`sweep` in chunks of ``chunk`` points, one :class:`SweepReport` each, so that a long
+    sweep's memory is bounded by a chunk (the conditions' margins are (points × conditions)
+    arrays). The conditions and their forcing shares are the scene's, at its own speed and soil
+    (:func:`~foundation_calc.checks.crank_resonance.machine_conditions`): which conditions are
+    judged does not change along a sweep, and the row at the scene's speed is ``fcalc check``'s."""
+    if variable not in VARIABLES:
+        raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
+    values = np.asarray(values, dtype=float)
+    conditions, share = machine_conditions(design, None if vendor is None else vendor.loads,
+                                           None if vendor is None else vendor.block)
+    critical = ()
+    if variable == "omega" and values.size:
+        critical = _critical_speeds(design, vendor, conditions, share, detuning, float(values.min()), float(values.max()))
+    chunk = CHUNK if chunk is None else chunk
+    for i in range(0, len(values), chunk):
+        part = _chunk(design, variable, values[i : i + chunk], limits, detuning, points, vendor, conditions, share)
+        yield replace(part, critical=critical)
+
+
+def joined(parts: list[SweepReport]) -> SweepReport:
+    """One report of the chunks ``parts`` (their point arrays joined end to end)."""
+    first = parts[0]
+    if len(parts) == 1:
+        return first
+    join = np.concatenate
+    return replace(
+        first,
+        **{name: join([getattr(p, name) for p in parts]) for name in _POINT_ARRAYS},
+        points={k: join([p.points[k] for p in parts]) for k in first.points},
+        over_quantities={k: join([p.over_quantities[k] for p in parts]) for k in first.over_quantities},
+        harmonics={k: join([p.harmonics[k] for p in parts]) for k in first.harmonics},
+    )
+
+
+#: The fields of :class:`SweepReport` that hold one value per point.
+_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status",
+                 "over_limit", "status")
+
+
+def sweep(
+    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None
+) -> SweepReport:
+    """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
+
+    ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²] or None), checked as
+    ``fcalc amplitudes`` checks them; ``detuning``: its band or bands per order;
+    ``points``: (name, horizontal, height) [m] of body points relative to C, as the scene's
+    ``[[points]]``; their peaks come from the same series (rigid-body motion, exact in θ).
+    ``vendor``: the scene's ``[[loads]]``
+    (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
+    is added to the mechanism's, or is the whole motion when ``design`` is None; their
+    conditions n ω = k0, p1, p2 join the mechanism's. Computed in chunks (:func:`sweep_chunks`).
+
+    Raises
+    ------
+    PhysicsError
+        when a point of the sweep is unstable in rocking (a soil factor too small).
+    """
+    return joined(list(sweep_chunks(design, variable, values, limits, detuning, points, vendor)))
+
+
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "joined", "sweep", "sweep_chunks"]

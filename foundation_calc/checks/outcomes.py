@@ -34,32 +34,6 @@ def worst(outcomes: Iterable[Outcome]) -> Outcome:
 RESONANCE_FAIL_MARGIN = 0.05
 
 
-def resonance_outcome(margin: float, detuning: float, driven: bool) -> Outcome:
-    """The verdict of one condition of order 1 by the resonance rule
-    (:func:`~foundation_calc.checks.resonance_rule.judge`): a ``driven`` (judged) mode fails inside
-    the band ``detuning`` or within :data:`RESONANCE_FAIL_MARGIN`, any other fails within it and
-    warns inside the band.
-
-    >>> [resonance_outcome(m, 0.2, d).value for m, d in ((0.15, True), (0.15, False), (0.04, False), (0.3, True))]
-    ['fail', 'warn', 'fail', 'pass']
-    """
-    from foundation_calc.checks.resonance_rule import judge, outcome
-
-    return outcome(judge([margin], [1], [float(driven)], [detuning], [driven]).status[0])
-
-
-def resonance_masks(margin, detuning, driven):
-    """``(fails, inside)`` of :func:`resonance_outcome` for arrays of margins and ``driven`` flags
-    that broadcast together: a condition fails, or warns where ``inside & ~fails``."""
-    import numpy as np
-
-    from foundation_calc.checks.resonance_rule import FAIL, judge
-
-    margin, driven = np.broadcast_arrays(np.asarray(margin, dtype=float), np.asarray(driven, dtype=bool))
-    verdict = judge(margin[..., None], [1], driven[..., None].astype(float), [detuning], driven[..., None])
-    return verdict.status[..., 0] == FAIL, margin < detuning
-
-
 def exit_code(outcome: Outcome, strict: bool = False, warned: bool = False) -> ExitCode:
     """Exit code of a run whose worst outcome is ``outcome``; ``warned``: the scene has
     plausibility warnings, which fail like a warning with ``strict``."""

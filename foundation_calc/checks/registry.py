@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.checks.outcomes import Outcome, worst
 
 
 #: A reason: literal text parts and ``(quantity, SI value)`` parts, in reading order.
@@ -72,7 +72,13 @@ def crank_resonance(scene) -> Finding:
     if governing is not None:
         values["critical"] = ("speed", governing.critical_zero_order)
     reason = ("speed ", speed, f", {report.statement}")
-    return Finding("resonance", report.outcome, reason, values, report)
+    details = ()
+    if report.modulus_range is not None:
+        reason += (f" with the soil data as given; {report.modulus_range.text}",)
+        details = tuple(
+            f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}" for p in report.modulus_range.points
+        )
+    return Finding("resonance", report.outcome, reason, values, report, details)
 
 
 def crank_amplitudes(scene) -> Finding:
@@ -111,12 +117,17 @@ def crank_amplitudes(scene) -> Finding:
             reason += (f"; {report.resonance.statement}",)
     if report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
+    if report.modulus_range is not None:
+        reason += (f"; {report.modulus_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
+    if report.modulus_range is not None:
+        details += tuple(f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}"
+                         for p in report.modulus_range.points)
     return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 
@@ -141,7 +152,7 @@ def runup(scene) -> Finding | None:
     """Largest displacement during start-up and run-down, and a motor that may stick (``fcalc
     runup``), for a scene that gives something to judge them by (:func:`checks.runup.judged`);
     None (not run) otherwise: a run-up costs 0.5-10 s of time integration."""
-    from foundation_calc.checks.runup import RUN_TITLES, check_runup, judged, run_times
+    from foundation_calc.checks.runup import check_runup, judged, run_times, run_title
 
     if not judged(scene):
         return None
@@ -152,7 +163,7 @@ def runup(scene) -> Finding | None:
     if limited:
         top = max(limited, key=lambda row: row.ratio)
         values = {"transient": ("amplitude", top.value), "limit": ("amplitude", top.limit)}
-        parts += [f"largest displacement during {RUN_TITLES[top.run]} ", values["transient"], f" at {top.point} is"
+        parts += [f"largest displacement during {run_title(top.run)} ", values["transient"], f" at {top.point} is"
                   f" {top.ratio:.0%} of the limit ", values["limit"]]
     stuck = [t for t in report.torques if t.outcome is not Outcome.PASS]
     if stuck:
@@ -162,7 +173,7 @@ def runup(scene) -> Finding | None:
     elif report.motor is not None:
         parts += [("; " if parts else "") + "the motor passes every resonance"]
     details = tuple(
-        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {RUN_TITLES[row.run]}:"
+        f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {run_title(row.run)}:"
         f" |u| {row.value:.4g} m"
         + ("" if row.limit is None else f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} m")
         for row in report.rows
@@ -171,19 +182,12 @@ def runup(scene) -> Finding | None:
 
 
 def block_resonance(scene) -> Finding:
-    """Every machine's orders against the block's six modes (``fcalc resonance``)."""
-    from foundation_calc.checks.block import check_block
+    """Every machine's orders against the block's six modes by the resonance rule (``fcalc resonance``)."""
+    from foundation_calc.checks.block import check_block, resonance_text
 
     report = check_block(scene)
-    near = report.nearest
-    values = {"critical": ("speed", near.critical)}
-    if report.resonance_outcome is Outcome.PASS:
-        reason = (f"every driven order is at least {near.margin:.1%} from every mode (nearest: {near.machine} order"
-                  f" {near.order} at mode {near.mode}, {near.motion}, critical speed ", values["critical"], ")")
-    else:
-        bad = [r for r in report.resonance_rows if r.outcome is report.resonance_outcome]
-        reason = ("; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad),)
-    return Finding("resonance", report.resonance_outcome, reason, values, report)
+    values = {"critical": ("speed", report.nearest.critical)}
+    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report)
 
 
 def block_amplitudes(scene) -> Finding:
@@ -245,5 +249,6 @@ CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
     "crank_foundation": {"inputs": inputs, "resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup,
                          "office": crank_office},
     "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
-    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "office": block_office},
+    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "runup": runup,
+                         "office": block_office},
 }

@@ -127,6 +127,17 @@ def condition_phrase(label: str, margin: float, needed: float) -> str:
     return f"{label} at {margin:.1%} (needs {needed:.0%})"
 
 
+def bands_text(detuning) -> str:
+    """The bands as the scene gave them: ``"0.2"`` or ``"{1 = 0.2, 2 = 0.2}"`` (TOML's words).
+
+    >>> bands_text(0.2), bands_text({"2": 0.1, "1": 0.2})
+    ('0.2', '{1 = 0.2, 2 = 0.1}')
+    """
+    if isinstance(detuning, Mapping):
+        return "{" + ", ".join(f"{k} = {v:g}" for k, v in sorted(detuning.items(), key=lambda kv: int(kv[0]))) + "}"
+    return f"{detuning:g}"
+
+
 def outcome(status) -> Outcome:
     """The :class:`Outcome` of a status code (information and clear pass)."""
     return _OUTCOMES[int(status)]
@@ -140,6 +151,7 @@ __all__ = [
     "STATUS_NAMES",
     "WARN",
     "Judgement",
+    "bands_text",
     "condition_phrase",
     "judge",
     "outcome",

@@ -1,9 +1,12 @@
 """Start-up and run-down of either scene kind against ``[limits] transient_amplitude``.
 
 Builds the scene's linear structure (platform: :mod:`~foundation_calc.solvers.platform.runup`;
-crank foundation: :mod:`~foundation_calc.solvers.crank.runup`), runs it up and, when asked, down
+crank foundation: :mod:`~foundation_calc.solvers.crank.runup`; block foundation: one per machine,
+:mod:`~foundation_calc.solvers.block.runup`), runs it up and, when asked, down
 (:func:`~foundation_calc.solvers.numerics.runup.runup`), and compares the largest displacement of
-every point during each run with the limit. An undamped structure gets a warning: its passage
+every point during each run with the limit. A block's machine is run with its own loads; the
+other machines' steady peaks are added to every point's transient peak, as the block's steady
+peaks of several machines add (:mod:`~foundation_calc.solvers.block.response`). An undamped structure gets a warning: its passage
 peaks are Lewis' asymptote and the time integration's ringing never decays.
 """
 
@@ -34,7 +37,9 @@ class RunupReport:
 
     Attributes
     ----------
-    runs : {"run_up" | "run_down": RunupResult}
+    runs : {"run_up" | "run_down": RunupResult}; a block's ``"run_up:MACHINE"`` ... per machine,
+        whose ``transient_points`` and ``transient_directions`` include the other machines'
+        steady peaks (``steady_points`` the machine's own)
     motor : the start-up by the scene's [drive] (MotorRun), or None
     torques : Sommerfeld rows, one per resonance passed, when there is a motor
     points : names of the measured points, in the order of the results' arrays
@@ -46,6 +51,7 @@ class RunupReport:
     rows : one per point and run
     warnings : findings that do not change the verdict (undamped)
     outcome : worst judged row or motor torque (PASS when nothing is judged: see ``judged``)
+    speeds : a block's machines as (name, speed [rad/s]); empty for one machine
     """
 
     runs: dict
@@ -59,6 +65,7 @@ class RunupReport:
     rows: tuple
     warnings: tuple
     outcome: Outcome
+    speeds: tuple = ()
 
     @property
     def judged(self) -> bool:
@@ -67,6 +74,12 @@ class RunupReport:
 
 
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
+
+
+def run_title(key: str) -> str:
+    """The title of run ``key``: "start-up", or for a block's machine "start-up of compressor"."""
+    run, _, machine = key.partition(":")
+    return RUN_TITLES[run] + (f" of {machine}" if machine else "")
 
 
 @dataclass(frozen=True)
@@ -83,7 +96,20 @@ class TorqueRow:
 
 #: Directions of a point's displacement vector per scene kind (the rows of the point maps of
 #: :mod:`~foundation_calc.solvers.platform.runup` and :mod:`~foundation_calc.solvers.crank.runup`).
-DIRECTIONS = {"platform": ("x", "y", "z"), "crank_foundation": ("horizontal", "vertical")}
+DIRECTIONS = {"platform": ("x", "y", "z"), "crank_foundation": ("horizontal", "vertical"), "block_foundation": ("x", "y", "z")}
+
+
+def _block_structures(scene):
+    """One structure per machine of a block scene as (name, structure, speed [rad/s]), and the
+    names of the points (G first)."""
+    from foundation_calc.solvers.block.response import block_modes
+    from foundation_calc.solvers.block.runup import machine_structure
+
+    model = scene.model()
+    block_modes(model)  # a PhysicsError naming the soil when the block is unstable
+    at = [p.at for p in scene.points]
+    built = [(e.name, machine_structure(model, e, at), e.omega) for e in scene.excitations()]
+    return built, ("G", *(p.name for p in scene.points))
 
 
 def _structure(scene):
@@ -120,7 +146,7 @@ def judged(scene) -> bool:
     """True when the scene gives something to judge a start-up by: a run time and
     ``[limits] transient_amplitude``, or a ``[drive]`` (which may stick)."""
     up, down = run_times(scene)
-    return scene.drive is not None or (scene.limits.transient_amplitude is not None and (up, down) != (None, None))
+    return getattr(scene, "drive", None) is not None or (scene.limits.transient_amplitude is not None and (up, down) != (None, None))
 
 
 def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
@@ -131,29 +157,44 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     PhysicsError
         when neither time is given, or a run is too long for the time integration.
     """
-    drive = scene.drive
+    drive = getattr(scene, "drive", None)  # a block has none
     if up is None and down is None and drive is None:
         raise PhysicsError(
             "no run-up or run-down time: give [operation] run_up_time [s] (or run_down_time, or a [drive]) in"
             " the scene, or --time / --down on the command line",
             field="operation.run_up_time",
         )
-    built, names, omega, carried = _structure(scene)
+    if scene.kind == "block_foundation":
+        machines, names = _block_structures(scene)
+        carried = 0.0
+    else:
+        built, names, omega, carried = _structure(scene)
+        machines = [("", built, omega)]
     # the time integration (scipy.signal, ~1 s to import) only for a scene that is run up: fcalc check
     # and the sheet ask judged() of every scene
     from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
 
+    steadies = [steady_peaks(b, w)[:2] for _, b, w in machines]
+    steady_points, steady_directions = sum(s[0] for s in steadies), sum(s[1] for s in steadies)
     runs: dict = {}
-    for key, duration, direction in (("run_up", up, 1), ("run_down", down, -1)):
-        if duration is None:
-            continue
-        try:
-            runs[key] = runup(built, omega, duration, direction)
-        except ValueError as exc:
-            field = "operation.run_up_time" if direction > 0 else "operation.run_down_time"
-            raise PhysicsError(str(exc), field=field, hint="shorten the ramp") from None
+    for k, (machine, built, omega) in enumerate(machines):
+        for key, duration, direction in (("run_up", up, 1), ("run_down", down, -1)):
+            if duration is None:
+                continue
+            try:
+                result = runup(built, omega, duration, direction)
+            except ValueError as exc:
+                field = "operation.run_up_time" if direction > 0 else "operation.run_down_time"
+                raise PhysicsError(str(exc), field=field, hint="shorten the ramp") from None
+            if machine:  # the others at their steady speeds: their peaks add (module docstring)
+                result = replace(
+                    result, transient_points=result.transient_points + steady_points - steadies[k][0],
+                    transient_directions=result.transient_directions + steady_directions - steadies[k][1],
+                )
+            runs[f"{key}:{machine}" if machine else key] = result
     motor, torques = None, []
     if drive is not None:
+        built, omega = machines[0][1], machines[0][2]
         from foundation_calc.solvers.numerics.sommerfeld import motor_runup
 
         available = drive.available_torque
@@ -186,15 +227,16 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         warnings.append(
             "the structure is undamped: a passage's peak is Lewis' asymptote 1.467/sqrt(η) × the static"
             " deflection, and free vibration started by the ramp never decays; give damping"
-            + (" (isolators.loss_factor or damping_ratio)" if scene.kind == "platform" else " (soil.damping)")
+            + {"platform": " (isolators.loss_factor or damping_ratio)", "block_foundation": " (soil.dashpot or soil.damping)"}
+            .get(scene.kind, " (soil.damping)")
         )
-    steady_points, steady_directions, _ = steady_peaks(built, omega)
     return RunupReport(
         runs=runs, motor=motor, torques=tuple(torques), points=tuple(names), directions=DIRECTIONS[scene.kind],
-        steady_points=steady_points, steady_directions=steady_directions, omega=float(omega), rows=tuple(rows),
-        warnings=tuple(warnings),
+        steady_points=steady_points, steady_directions=steady_directions, omega=float(max(w for _, _, w in machines)),
+        rows=tuple(rows), warnings=tuple(warnings),
         outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
+        speeds=tuple((m, float(w)) for m, _, w in machines if m),
     )
 
 
-__all__ = ["DIRECTIONS", "RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times"]
+__all__ = ["DIRECTIONS", "RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times", "run_title"]

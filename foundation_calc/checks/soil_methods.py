@@ -5,12 +5,18 @@ they become the equivalent coefficients c_z = K_z/S, c_x = K_x/S, c_φ = K_φ/I1
 dashpots, the uncoupled frequencies of the block and the coupled k0, p1, p2 of the paper's
 zero-order operator (4.5)-(4.7), and methods that disagree by more than
 :data:`DISAGREEMENT_FACTOR` are named.
+
+A frequency-dependent method (``"gazetas"``) gives each mode its springs at its own frequency:
+the frequencies solve ω = p(K(ω)) (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`)
+and are reported beside their static values, each damping ratio is taken at its own mode's
+frequency, and :class:`DynamicRow` tables K and C at the operating speed and at each mode.
+Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, zero_order_frequencies
@@ -27,9 +33,28 @@ RATIOS = {"xi_z": "vertical", "xi_x": "horizontal", "xi_phi": "rocking"}
 
 #: Why a method's damping ratio may stand apart, said beside its disagreement.
 RATIO_CAVEATS = {
-    ("gazetas", "xi_phi"): "gazetas' rocking keeps the material damping alone (its radiation is left out,"
-    " which over-states the rocking response)",
+    ("lysmer", "xi_phi"): "lysmer's rocking damping is one frequency-independent fit (Hall's analog), gazetas'"
+    " is taken at the rocking mode's own frequency",
 }
+
+
+@dataclass(frozen=True)
+class DynamicRow:
+    """Springs and dashpots of a frequency-dependent method at one frequency (SI).
+
+    ``at`` names the frequency: ``"speed"`` (the operating speed) or a mode (``"k0"``, ``"p1"``,
+    ``"p2"``); ``C_*`` include the material damping, as dashpots 2 ξ sqrt(K m) at ``omega``.
+    """
+
+    at: str
+    omega: float
+    a0: float
+    K_z: float
+    K_x: float
+    K_phi: float
+    C_z: float
+    C_x: float
+    C_phi: float
 
 
 @dataclass(frozen=True)
@@ -60,6 +85,9 @@ class MethodResult:
     p1: float
     p2: float
     rocking_stability_margin: float
+    #: frequency-dependent methods: frequencies on the static springs (rad/s), K and C tabled
+    static_frequencies: dict[str, float] | None = None
+    dynamic: tuple[DynamicRow, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -74,27 +102,87 @@ class SoilComparison:
     findings: tuple[str, ...]
 
 
-def _method_result(scene, method: str) -> MethodResult:
-    f = scene.foundation
-    s = scene.soil_springs(method)
-    M_tot, g, h = scene.total_mass, GRAVITY, f.cog_height
-    I_0 = f.moment_of_inertia + M_tot * h**2
-    K_z, K_x, K_phi = float(s.K_z), float(s.K_x), float(s.K_phi)
-    c, c1, c_phi = K_z / f.base_area, K_x / f.base_area, K_phi / f.base_second_moment
-    d = scene.base_dashpots(s, M_tot)  # no numpy import for an undamped scene
-    u = uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, g)
-    margin = rocking_stability_margin(c_phi, f.base_second_moment, M_tot * g, h)
-    omega_phi = p1 = p2 = math.nan
+def _frequencies(scene, springs, M_tot: float, I_0: float):
+    """(uncoupled, coupled k0 p1 p2, stability margin) of the block on ``springs``; coupled None
+    when it tips over."""
+    f, h = scene.foundation, scene.foundation.cog_height
+    K_z, K_x, K_phi = float(springs.K_z), float(springs.K_x), float(springs.K_phi)
+    u = uncoupled_frequencies(K_z, K_x, K_phi, M_tot, I_0, h, GRAVITY)
+    margin = rocking_stability_margin(K_phi / f.base_second_moment, f.base_second_moment, M_tot * GRAVITY, h)
+    coupled = None
     if margin > 0.0:
         coupled = zero_order_frequencies(M_tot, f.moment_of_inertia, h, f.base_area, f.base_second_moment,
-                                         c, c1, c_phi, g)
-        p1, p2, omega_phi = float(coupled.p1), float(coupled.p2), float(u.omega_phi)
+                                         K_z / f.base_area, K_x / f.base_area, K_phi / f.base_second_moment, GRAVITY)
+    return u, coupled, float(margin)
+
+
+def _mode_frequencies(scene, method: str, M_tot: float, I_0: float) -> dict[str, float]:
+    """Every mode's frequency [rad/s] on the springs at that frequency (ω = p(K(ω)); nan when
+    the block tips over)."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    def at(w, mode):
+        u, coupled, _ = _frequencies(scene, scene.soil_springs(method, w), M_tot, I_0)
+        if mode in ("k0", "p1", "p2"):
+            return math.nan if coupled is None else float(getattr(coupled, mode))
+        return float(getattr(u, mode))
+
+    static = _static_frequencies(scene, scene.soil_springs(method), M_tot, I_0)
+    return {
+        mode: w if math.isnan(w) else float(consistent_frequency(lambda v, mode=mode: at(v, mode), w))
+        for mode, w in static.items()
+    }
+
+
+def _static_frequencies(scene, springs, M_tot: float, I_0: float) -> dict[str, float]:
+    u, coupled, _ = _frequencies(scene, springs, M_tot, I_0)
+    tipped = coupled is None
+    return {
+        "omega_z": float(u.omega_z), "omega_x": float(u.omega_x),
+        "omega_phi": math.nan if tipped else float(u.omega_phi),
+        "k0": float(u.omega_z),
+        "p1": math.nan if tipped else float(coupled.p1), "p2": math.nan if tipped else float(coupled.p2),
+    }
+
+
+def _dynamic_row(scene, method: str, at: str, omega: float, M_tot: float, I_0: float) -> DynamicRow:
+    s = scene.soil_springs(method, omega)
+    d = scene.base_dashpots(s, M_tot)
+    a0 = omega * min(scene.foundation.dimensions) / 2.0 / scene.soil.V_s
+    return DynamicRow(at, omega, a0, float(s.K_z), float(s.K_x), float(s.K_phi), d["C_z"], d["C_x"], d["C_phi"])
+
+
+def _method_result(scene, method: str) -> MethodResult:
+    f = scene.foundation
+    M_tot, h = scene.total_mass, f.cog_height
+    I_0 = f.moment_of_inertia + M_tot * h**2
+    s = scene.soil_springs(method)
+    dependent = method == "gazetas"  # the frequency-dependent method (Soil.frequency_dependent)
+    static = _static_frequencies(scene, s, M_tot, I_0)
+    freqs = _mode_frequencies(scene, method, M_tot, I_0) if dependent else static
+    ratios = {"xi_z": float(s.xi_z), "xi_x": float(s.xi_x), "xi_phi": float(s.xi_phi)}
+    if dependent:  # each mode's damping at its own frequency
+        ratios = {
+            key: float(getattr(scene.soil_springs(method, 0.0 if math.isnan(freqs[mode]) else freqs[mode]), key))
+            for key, mode in (("xi_z", "omega_z"), ("xi_x", "omega_x"), ("xi_phi", "omega_phi"))
+        }
+    K_z, K_x, K_phi = float(s.K_z), float(s.K_x), float(s.K_phi)
+    d = scene.base_dashpots(replace(s, **ratios), M_tot)  # no numpy import for an undamped scene
+    _, _, margin = _frequencies(scene, s, M_tot, I_0)
+    dynamic = ()
+    if dependent:
+        dynamic = tuple(
+            _dynamic_row(scene, method, at, w, M_tot, I_0)
+            for at, w in (("speed", scene.speed.omega_rad_s), *((m, freqs[m]) for m in ("k0", "p1", "p2")))
+            if not math.isnan(w)
+        )
     return MethodResult(
-        method=method, K_z=K_z, K_x=K_x, K_phi=K_phi, c_z=c, c_x=c1, c_phi=c_phi,
-        xi_z=float(s.xi_z), xi_x=float(s.xi_x), xi_phi=float(s.xi_phi),
-        C_z=d["C_z"], C_x=d["C_x"], C_phi=d["C_phi"],
-        omega_z=float(u.omega_z), omega_x=float(u.omega_x), omega_phi=omega_phi,
-        k0=math.sqrt(K_z / M_tot), p1=p1, p2=p2, rocking_stability_margin=float(margin),
+        method=method, K_z=K_z, K_x=K_x, K_phi=K_phi,
+        c_z=K_z / f.base_area, c_x=K_x / f.base_area, c_phi=K_phi / f.base_second_moment,
+        **ratios, C_z=d["C_z"], C_x=d["C_x"], C_phi=d["C_phi"],
+        omega_z=freqs["omega_z"], omega_x=freqs["omega_x"], omega_phi=freqs["omega_phi"],
+        k0=freqs["k0"], p1=freqs["p1"], p2=freqs["p2"], rocking_stability_margin=margin,
+        static_frequencies=static if dependent else None, dynamic=dynamic,
     )
 
 
@@ -116,32 +204,49 @@ def _disagreements(results: tuple[MethodResult, ...]) -> list[str]:
     return found
 
 
-#: Dimensionless frequency a0 = ω B'/V_s up to which the half-space methods' frequency-independent
-#: damping holds: Gazetas' dashpot coefficients stay within about 10 % of their low-frequency
-#: limit below it, and Richart, Hall & Woods fit the analogs' damping over a0 < 1.5 [-].
+#: Dimensionless frequency a0 = ω B'/V_s up to which Lysmer's and Hall's frequency-independent
+#: damping holds: Richart, Hall & Woods fit the analogs' damping over the frequencies of block
+#: foundations, and Gazetas' dashpot coefficients stay within about 10 % of their low-frequency
+#: limit below it [-].
 A0_RANGE = 1.0
 
 
-def _frequency_range(scene) -> list[str]:
-    """The operating speed's a0 when it is beyond :data:`A0_RANGE` (half-space methods only)."""
+def _frequency_range(scene, results) -> list[str]:
+    """Where a0 leaves the range a half-space method was fitted for: the frequency-independent
+    analogs beyond :data:`A0_RANGE` at the operating speed or a mode, the frequency-dependent
+    method beyond its fits' :data:`~foundation_calc.solvers.soil.impedance.A0_FITTED`."""
     if scene.soil.method_used not in ("lysmer", "gazetas"):
         return []
+    from foundation_calc.solvers.soil.impedance import A0_FITTED
+
     half_width = min(scene.foundation.dimensions) / 2.0
-    a0 = scene.speed.omega_rad_s * half_width / scene.soil.V_s
-    if a0 <= A0_RANGE:
-        return []
-    return [
-        f"a0 = ω B'/V_s = {a0:.3g} at the operating speed is beyond {A0_RANGE:g}: the frequency-independent"
-        " damping of the half-space methods over-states the radiation there; check with frequency-dependent"
-        " impedances"
-    ]
+    found = []
+    for r in results:
+        limit = A0_FITTED if r.dynamic else A0_RANGE
+        at = {"the operating speed": scene.speed.omega_rad_s, "k0": r.k0, "p1": r.p1, "p2": r.p2}
+        beyond = {name: w * half_width / scene.soil.V_s for name, w in at.items() if w * half_width / scene.soil.V_s > limit}
+        if not beyond:
+            continue
+        where = ", ".join(f"{name} (a0 = {a0:.3g})" for name, a0 in beyond.items())
+        if r.dynamic:
+            found.append(
+                f"method {r.method!r}: a0 = ω B'/V_s at {where} is beyond {limit:g}, the range its"
+                " frequency-dependent coefficients were fitted for; the springs and dashpots there are extrapolated"
+            )
+        else:
+            found.append(
+                f"method {r.method!r}: a0 = ω B'/V_s at {where} is beyond {limit:g}: its springs and damping are"
+                " frequency-independent and over-state the radiation there; compare with method 'gazetas',"
+                " whose impedance depends on frequency"
+            )
+    return found
 
 
 def compare_soil_methods(scene) -> SoilComparison:
     """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`)."""
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
-    findings += _frequency_range(scene)
+    findings += _frequency_range(scene, results)
     if scene.foundation.embedment and scene.soil.method_used != "gazetas":
         findings.append(
             f"foundation.embedment = {scene.foundation.embedment:g} m is used by method 'gazetas' only;"

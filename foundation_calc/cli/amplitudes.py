@@ -7,11 +7,12 @@ from typing import Annotated
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or block_foundation.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 ExactOpt = Annotated[
     bool,

@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors
 
 
@@ -20,11 +21,12 @@ class Section(str, Enum):
     points = "points"
     batch = "batch"
     block = "block"
+    soil_sample = "soil_sample"
 
 
 ScenesArg = Annotated[
     Optional[list[Path]],
-    typer.Argument(help="Scene files (TOML). Default: every scene file in ./configs.", show_default=False),
+    scene_argument("Scene files (TOML). Default: every scene file in ./configs."),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (seconds, bytes, relative errors).")]
 PlotOpt = Annotated[
@@ -104,6 +106,7 @@ def bench(
     fcalc check on copies of the first platform scene (1 and 100; one job and two: the marginal cost
     of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
     Block scenes: one scene's whole check and a sweep of 10 000 speeds of its first machine.
+    Soil sample: seconds of fcalc soil --sample with 10⁵ designs of the first crank scene.
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -126,8 +129,8 @@ def bench(
     blocks = [(p, s) for p, s in loaded if s.kind == "block_foundation"]
     if not blocks:
         skipped.add(Section.block)
-    if not cranks:  # throughput, start-up and points are measured on the first crank scene
-        skipped |= {Section.throughput, Section.startup, Section.points}
+    if not cranks:  # throughput, start-up, points and the soil sample are measured on the first crank scene
+        skipped |= {Section.throughput, Section.startup, Section.points, Section.soil_sample}
     if not platforms:  # the batch's marginal cost is that of a platform scene
         skipped.add(Section.batch)
 
@@ -141,11 +144,12 @@ def bench(
     steps += 3 * (Section.runup not in skipped)
     steps += 4 * (Section.throughput not in skipped) + (Section.startup not in skipped)
     steps += Section.points not in skipped
+    steps += Section.soil_sample not in skipped
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
     steps += len(blocks) * (Section.block not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
-    runups, block_timings = None, None
+    runups, block_timings, sampled = None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -198,6 +202,11 @@ def bench(
 
             step(f"points: {', '.join(map(str, POINT_COUNTS))} points, tables, JSON and check")
             points = points_scaling(str(cranks[0][0]), runs=POINTS_RUNS[quick])
+        if Section.soil_sample not in skipped:
+            from foundation_calc.benchmarks.soil_sample import SAMPLES, soil_sample_timing
+
+            step(f"soil sample: {SAMPLES:.3g} designs of {cranks[0][0].name}")
+            sampled = soil_sample_timing(cranks[0][1], MIN_TIME[quick])
         if Section.batch not in skipped:
             from foundation_calc.benchmarks.batch import batch_benchmark
 
@@ -224,6 +233,9 @@ def bench(
             from foundation_calc.output.bench_block import block_document
 
             document["block"] = block_document(block_timings)
+        if sampled is not None:
+            document["soil_sample"] = {"samples": sampled.samples, "seconds": sampled.seconds,
+                                       "peak_bytes": sampled.peak_bytes}
         print_json(document)
     else:
         report.print_skipped(left_out)
@@ -236,6 +248,13 @@ def bench(
             from foundation_calc.output.bench_block import print_block
 
             print_block(block_timings)
+        if sampled is not None:
+            from foundation_calc.output.console import stdout
+
+            stdout().print(
+                f"soil sample (fcalc soil --sample): {sampled.samples} designs in {sampled.seconds:.3g} s"
+                f" ({sampled.per_second:.3g} a second), peak memory {sampled.peak_bytes / 2**20:.3g} MiB"
+            )
         if plot is not None:
             from foundation_calc.output.console import stderr
 

@@ -7,12 +7,13 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
 PathsArg = Annotated[
     list[Path],
-    typer.Argument(metavar="PATH", help="Scene files (TOML) or folders, searched recursively for *.toml.", show_default=False),
+    scene_argument("Scene files (TOML) or folders, searched recursively for *.toml.", metavar="PATH"),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the table.")]
 JunitOpt = Annotated[
@@ -88,7 +89,55 @@ def check(
     A scene that cannot be read or validated is reported (exit 3) and the others still run; a
     crash inside one scene's check is reported as an internal error (exit 4). The exit code is
     the worst over all scenes: 4 internal error, 3 invalid scene, 1 a check fails, 0 all pass.
+    SIGTERM or SIGINT ends the run and its workers at once (exit 143 / 130); the JUnit report
+    then says it was interrupted.
     """
+    from foundation_calc.cli.guard import Interrupted, interruptible
+
+    done: list = []  # the scenes checked so far, for the report of an interrupted run
+    try:
+        with interruptible() as again:
+            _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done, again)
+    except Interrupted as stop:
+        _interrupted(stop, done, junit, strict)
+
+
+def _kept(items, done: list, again):
+    """``items`` (light scene runs, or ``(run, JSON text)`` pairs) passed on, each scene run
+    also appended to ``done``; ``again`` (of :func:`~foundation_calc.cli.guard.interruptible`)
+    is called after each."""
+    for item in items:
+        done.append(item[0] if isinstance(item, tuple) else item)
+        again()
+        yield item
+
+
+def _interrupted(stop, done: list, junit: Path | None, strict: bool) -> None:
+    """End a run stopped by a signal: the JUnit report (when asked) holds the scenes checked and an
+    ``interrupted`` error, written whole or not at all; exit 128 + the signal's number."""
+    import signal
+
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stderr
+
+    for signum in (signal.SIGTERM, signal.SIGINT):  # the report is written in milliseconds: let it finish
+        signal.signal(signum, signal.SIG_IGN)
+    checked = sum(not scene.skipped for scene in done)
+    note = f"by {stop.name} after {checked} scene{'s' * (checked != 1)} had been checked"
+    if junit is not None:
+        from foundation_calc.output import check_report
+
+        try:
+            check_report.write_junit(junit, done, strict, interrupted=f"interrupted {note}")
+            note += f"; {junit} says so"
+        except OSError:
+            note += f"; {junit} not written"
+    stderr().print(f"[bold red]interrupted[/] {escape(note)}", soft_wrap=True)
+    raise typer.Exit(128 + stop.signum)
+
+
+def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: list, again) -> None:
     import functools
     import os
 
@@ -103,9 +152,9 @@ def check(
     jobs = jobs or os.cpu_count() or 1
     if json:  # the document is written while the scenes are checked; only their verdicts are kept
         entries = iter_scenes(paths, jobs, functools.partial(check_report.json_entry, strict=strict))
-        scenes = check_report.stream_check_json(entries, strict)
+        scenes = check_report.stream_check_json(_kept(entries, done, again), strict)
     else:
-        scenes = list(iter_scenes(paths, jobs, SceneRun.light))
+        scenes = list(_kept(iter_scenes(paths, jobs, SceneRun.light), done, again))
     if all(scene.skipped for scene in scenes):
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)

@@ -1,10 +1,11 @@
-"""The KIND argument shared by ``fcalc init`` and ``fcalc schema``, and the commands that other
-scene kinds than the crank foundation bring: a command that meets a scene of a kind in
-:data:`KIND_MODULES` hands it to the function of the same name in that kind's CLI module."""
+"""The KIND argument shared by ``fcalc init`` and ``fcalc schema``, the scene-file argument of every
+command, and the commands that other scene kinds than the crank foundation bring: a command that
+meets a scene of a kind in :data:`KIND_MODULES` hands it to the function of the same name in that
+kind's CLI module."""
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -35,3 +36,9 @@ KindArg = Annotated[
         metavar="KIND", help=f"Scene kind: {', '.join(KINDS)}.", callback=_known_kind, show_default=False
     ),
 ]
+
+
+def scene_argument(help: str, metavar: str = "SCENE") -> Any:
+    """A typer argument naming scene files. fcalc reads them itself, so an unreadable file is an
+    invalid scene (exit 3, with the reason), not a usage error of typer's (exit 2)."""
+    return typer.Argument(metavar=metavar, help=help, show_default=False, readable=False)

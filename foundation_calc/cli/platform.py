@@ -7,11 +7,12 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 
 SceneArg = Annotated[
     Optional[Path],
-    typer.Argument(help="Scene file (TOML) of kind platform; without it, the paper's example.", show_default=False),
+    scene_argument("Scene file (TOML) of kind platform; without it, the paper's example."),
 ]
 OmegaOpt = Annotated[Optional[float], typer.Option("--omega", help="Speed [rad/s]; overrides the scene.", show_default=False)]
 HzOpt = Annotated[Optional[float], typer.Option("--hz", help="Speed [Hz]; overrides the scene.", show_default=False)]

@@ -9,10 +9,11 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML), crank_foundation or platform.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML), crank_foundation or platform.")]
 OutputOpt = Annotated[
     Optional[Path],
     typer.Option("-o", "--output", metavar="FILE", help="FILE.pdf, FILE.html or FILE.md; default: the scene's name with .pdf."),

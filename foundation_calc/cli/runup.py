@@ -7,9 +7,10 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or platform.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation, platform or block_foundation.")]
 TimeOpt = Annotated[
     Optional[float],
     typer.Option("--time", min=1e-6, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),
@@ -33,8 +34,8 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
     the run-down time); with a [drive] the speed follows the motor's torque against the load
     and a motor that would stick at a resonance fails (Sommerfeld). For every mode passed: its frequency, the
     sweep rate η = r Ω'/ω_i² (r the harmonic's speed ratio, Ω' the shaft's acceleration, ω_i the mode's
-    natural frequency), the peak by a closed form and by time integration of the damped linear model (6 DOF platform,
-    3 DOF crank foundation), the time of the peak and its ratio to the steady amplitude. A displacement
+    natural frequency), the peak by a closed form and by time integration of the damped linear model (6 DOF platform
+    and block, 3 DOF crank foundation; a block's machines one at a time, the others' steady peaks added), the time of the peak and its ratio to the steady amplitude. A displacement
     is the magnitude |u| of a point's displacement vector (a table gives it per direction). Fails
     (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks;
     without that limit or a [drive] the rows are not judged (exit 0).
@@ -47,7 +48,7 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
 
     if plot is not None and not plotting_available():
         raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
-    loaded = load_scene(scene, expect=("crank_foundation", "platform"))
+    loaded = load_scene(scene, expect=("crank_foundation", "platform", "block_foundation"))
     warn_implausible(loaded)
     scene_up, scene_down = run_times(loaded)
     up = time if time is not None else scene_up

@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.kinds import KIND_MODULES, run_kind
 from foundation_calc.cli.units import UnitsOpt
@@ -17,22 +18,31 @@ SPEED_UNITS = {"rpm": "rpm", "rad/s": "rad/s", "hz": "Hz"}
 DEFAULT_POINTS = 101
 MAX_POINTS = 100_000
 
-_RANGE = re.compile(r"^\s*([^:\s]+)\s*:\s*([^:\s]+?)\s*(?::\s*(\d+))?\s*([a-zA-Z/]*)\s*$")
+_RANGE = re.compile(r"^\s*([^:\s]+?)\s*(?::\s*([^:\s]+?)\s*(?::\s*(\d+))?)?\s*([a-zA-Z/]*)\s*$")
 
-SceneArg = Annotated[Path, typer.Argument(help="Scene file (TOML) of kind crank_foundation or block_foundation.", show_default=False)]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 SpeedOpt = Annotated[
     Optional[str],
     typer.Option("--speed", metavar="FROM:TO[:N][UNIT]", show_default=False,
                  help="Sweep the crank speed: N points (default 101) from FROM to TO, in rpm unless a unit"
-                 " follows (rpm, rad/s, hz), e.g. 100:600:251 or 10:60rad/s."),
+                 " follows (rpm, rad/s, hz), e.g. 100:600:251 or 10:60rad/s; one value is one point."),
 ]
 SoilOpt = Annotated[
     Optional[str],
     typer.Option("--soil", metavar="FROM:TO[:N]", show_default=False,
                  help="Sweep a factor on the soil coefficients c_z, c_x and c_phi, e.g. 0.5:1.5:41 (soil known to ±50 %)."),
 ]
-CsvOpt = Annotated[Optional[Path], typer.Option("--csv", metavar="FILE", help="Write the points as CSV (SI units).", show_default=False)]
-PlotOpt = Annotated[Optional[Path], typer.Option("--plot", metavar="FILE.png", help="Draw the amplitudes; needs the plot extra.", show_default=False)]
+CsvOpt = Annotated[Optional[Path], typer.Option(
+    "--csv", metavar="FILE", show_default=False,
+    help="Write the points as CSV (SI units), streamed chunk by chunk; a long sweep then prints a summary, not its rows.",
+)]
+PlotOpt = Annotated[Optional[Path], typer.Option(
+    "--plot", metavar="FILE", show_default=False,
+    help="Draw the amplitudes, the operating speed and the detuning bands (.png, .svg or .pdf); needs the plot extra.",
+)]
+
+#: A sweep written to CSV with more points than this prints a summary instead of its rows.
+TABLE_ROWS_WITH_CSV = 1000
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the table.")]
 MachineOpt = Annotated[
     Optional[str],
@@ -42,12 +52,18 @@ MachineOpt = Annotated[
 
 
 def parse_range(text: str, option: str, units: dict[str, str] | None = None, default_unit: str = "") -> tuple[float, float, int, str]:
-    """``FROM:TO[:N][UNIT]`` -> (from, to, n, unit label); a usage error names the option."""
+    """``FROM:TO[:N][UNIT]`` or ``VALUE[UNIT]`` (one point) -> (from, to, n, unit label); a usage
+    error names the option.
+
+    >>> parse_range("250", "--speed", SPEED_UNITS, "rpm"), parse_range("10:60:6rad/s", "--speed", SPEED_UNITS, "rpm")
+    ((250.0, 250.0, 1, 'rpm'), (10.0, 60.0, 6, 'rad/s'))
+    """
     match = _RANGE.match(text)
     bad = typer.BadParameter
     if not match:
-        raise bad(f"{text!r} is not FROM:TO[:N], e.g. 100:600:251", param_hint=f"'{option}'")
+        raise bad(f"{text!r} is not FROM:TO[:N] or one value, e.g. 100:600:251 or 250", param_hint=f"'{option}'")
     lo_text, hi_text, n_text, unit = match.groups()
+    hi_text = lo_text if hi_text is None else hi_text  # one value: a single-point sweep
     try:
         lo, hi = float(lo_text), float(hi_text)
     except ValueError:
@@ -58,10 +74,15 @@ def parse_range(text: str, option: str, units: dict[str, str] | None = None, def
         if unit and unit.lower() not in units:
             raise bad(f"unknown unit {unit!r}; use one of {', '.join(units)}", param_hint=f"'{option}'")
         unit = units[unit.lower()] if unit else default_unit
-    n = int(n_text) if n_text else DEFAULT_POINTS
-    if not (0.0 < lo < hi < float("inf")):
-        raise bad(f"{text!r}: need 0 < FROM < TO (finite numbers)", param_hint=f"'{option}'")
-    if not 2 <= n <= MAX_POINTS:
+    if lo == hi:
+        n = int(n_text) if n_text else 1
+        if n != 1:
+            raise bad(f"{text!r}: FROM = TO is one point; N must be 1 (or leave it out)", param_hint=f"'{option}'")
+    else:
+        n = int(n_text) if n_text else DEFAULT_POINTS
+    if not (0.0 < lo <= hi < float("inf")):
+        raise bad(f"{text!r}: need 0 < FROM <= TO (finite numbers)", param_hint=f"'{option}'")
+    if lo < hi and not 2 <= n <= MAX_POINTS:
         raise bad(f"{text!r}: N must be between 2 and {MAX_POINTS}", param_hint=f"'{option}'")
     return lo, hi, n, unit
 
@@ -79,12 +100,14 @@ def sweep(
 ) -> None:
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
-    Every point is computed in one vectorised call of the corrected first approximation; each
-    row shows the peaks of x, y (of C), θ and of the scene's [[points]], the nearest resonance condition and its margin,
-    and a status: resonant (no periodic solution), fail (inside the detuning band of a paper
-    condition, or over a peak or RMS limit), warn (inside the band of an extra condition), pass.
-    A scene's [[loads]] add their linear steady state and their resonance conditions.
-    A sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
+    Every point is computed in vectorised chunks of the corrected first approximation; each row
+    shows the peaks of x, y (of C), θ and of the scene's [[points]] and a status that says why:
+    the resonance condition that governs there (README, "The resonance rule") with its margin,
+    and every limit exceeded. Statuses: resonant (no periodic solution), fail (a judged condition
+    inside its band, or a peak or RMS limit exceeded), warn, pass. A scene's [[loads]] add their
+    linear steady state and their resonance conditions. A long sweep written with --csv is
+    streamed and summarised. A sweep is a picture, not a check: it exits 0 unless the scene or
+    the options are invalid.
     """
     if (speed is None) == (soil is None):
         raise typer.BadParameter("give exactly one of --speed and --soil", param_hint="'--speed' / '--soil'")
@@ -93,8 +116,19 @@ def sweep(
     from foundation_calc.cli.units import display_units
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
-    if plot is not None and not plotting_available():
-        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    if plot is not None:
+        from foundation_calc.output.plots import FORMATS
+
+        if plot.suffix.lower() not in FORMATS:
+            raise typer.BadParameter(
+                f"{str(plot)!r}: unsupported plot format {plot.suffix or '(none)'!r}; use one of {', '.join(FORMATS)}",
+                param_hint="'--plot'",
+            )
+        writable_path(plot, "--plot")
+        if not plotting_available():
+            raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    if csv is not None:
+        writable_path(csv, "--csv")
     if speed is not None:
         from foundation_calc.units import omega_from_hz, omega_from_rpm
 
@@ -111,7 +145,7 @@ def sweep(
 
         shown = replace(shown, speed=unit)  # the table speaks the unit the sweep was given in
 
-    from foundation_calc.checks.crank_sweep import sweep as run_sweep
+    from foundation_calc.checks.crank_sweep import joined, sweep_chunks
     from foundation_calc.output import sweep_report as report_out
     from foundation_calc.scenes import load_scene
 
@@ -128,16 +162,57 @@ def sweep(
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 
     design = None if loaded.mechanism is None else loaded.design()
-    report = run_sweep(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
+    chunks = sweep_chunks(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
+    operating = loaded.speed.omega_rad_s if variable == "omega" else 1.0
+    if csv is not None and not json and len(values) > TABLE_ROWS_WITH_CSV:
+        _stream_csv(chunks, csv, plot, operating, shown, loaded.name or str(scene), len(values))
+        return
+    report = joined(list(chunks))
     if csv is not None:
-        from foundation_calc.output.files import write_atomically
+        from foundation_calc.output.files import write_chunks_atomically
 
-        write_atomically(csv, report_out.sweep_csv(report))
+        write_chunks_atomically(csv, (report_out.csv_header(report), report_out.csv_rows(report)))
     if plot is not None:
-        report_out.plot_sweep(report, plot, shown, loaded.name or str(scene))
+        report_out.plot_sweep(report, plot, shown, loaded.name or str(scene), operating)
     if json:
         from foundation_calc.output.console import print_json
 
         print_json(report_out.sweep_document(report, str(scene), loaded.name, loaded.plausibility_warnings()))
     else:
         report_out.print_sweep(report, str(scene), loaded.name, shown)
+
+
+def writable_path(path: Path, option: str) -> None:
+    """A usage error (exit 2) unless ``path`` can be written as a file: its folder exists, and it is
+    not itself a folder."""
+    folder = path.parent
+    if path.is_dir():
+        raise typer.BadParameter(f"{str(path)!r} is a folder; give a file name", param_hint=f"'{option}'")
+    if not folder.is_dir():
+        raise typer.BadParameter(f"folder {str(folder)!r} of {str(path)!r} does not exist", param_hint=f"'{option}'")
+
+
+def _stream_csv(chunks, csv: Path, plot, operating: float, shown, name: str, count: int) -> None:
+    """Write a long sweep to ``csv`` chunk by chunk (memory: one chunk, and 3 numbers a point for
+    ``plot``), then print a summary of its statuses."""
+    from collections import Counter
+
+    from foundation_calc.output import sweep_report as report_out
+    from foundation_calc.output.files import write_chunks_atomically
+
+    statuses, kept, first = Counter(), [], []
+
+    def texts():
+        for part in chunks:
+            if not first:
+                first.append(part)
+                yield report_out.csv_header(part)
+            statuses.update(map(str, part.status))
+            if plot is not None:
+                kept.append(report_out.plotted(part))
+            yield report_out.csv_rows(part)
+
+    write_chunks_atomically(csv, texts())
+    if plot is not None:
+        report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name, operating)
+    report_out.print_sweep_summary(count, statuses, first[0], str(csv), shown)

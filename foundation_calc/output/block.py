@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.block import DIRECTIONS, BlockReport
+from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
 from foundation_calc.checks.outcomes import worst
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
@@ -49,10 +49,10 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
         "centre_of_mass": [float(v) for v in report.cog],
         "modes": _modes(report),
         "resonances": [
-            {"condition": f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode}", "mode_name": MOTION_NAMES[r.motion],
+            {"condition": condition_label(r), "mode_name": MOTION_NAMES[r.motion],
              "machine": r.machine, "order": r.order, "mode": r.mode, "dominant": r.motion,
-             "critical_speed": speed_triplet(r.critical), "margin": r.margin, "driven": r.driven,
-             "required": scene.limits.detuning, "verdict": r.outcome.value}
+             "critical_speed": speed_triplet(r.critical), "margin": r.margin, "forcing_share": r.share,
+             "judged": r.judged, "required": r.required, "status": r.status, "verdict": r.outcome.value}
             for r in report.resonance_rows
         ],
         "verdict": report.resonance_outcome.value,
@@ -158,25 +158,20 @@ def print_resonance(report: BlockReport, scene, source: str, units: DisplayUnits
     out.print(_speeds_line(report, scene, source, units), soft_wrap=True)
     _print_modes(report, units)
     speed = units.label("speed")
-    t = _table("Resonances: n ω of every machine against every mode", ("machine", "order", "mode", f"critical, {speed}",
-               "margin", "driven", "verdict"), (f"critical, {speed}", "margin"))
+    t = _table("Resonances: n ω of every machine against every mode (resonance rule)",
+               ("machine", "order", "mode", f"critical, {speed}", "margin", "needs", "forcing share", "status"),
+               (f"critical, {speed}", "margin", "needs", "forcing share"))
     for r in report.resonance_rows:
         t.add_row(escape(r.machine), str(r.order), f"{r.mode} ({r.motion})", fmt(units.convert("speed", r.critical)),
-                  f"{r.margin:.1%}", "yes" if r.driven else "no", verdict_text(r.outcome.value, strict))
+                  f"{r.margin:.1%}", f"{r.required:.0%}", f"{r.share:.3g}" + ("" if r.judged else " (not judged)"),
+                  verdict_text(r.outcome.value, strict) if r.status != "information" else "info")
     out.print(t)
-    out.print(resonance_summary(report, scene.limits.detuning, strict), soft_wrap=True)
+    out.print(resonance_summary(report, strict), soft_wrap=True)
 
 
-def resonance_summary(report: BlockReport, detuning: float, strict: bool = False) -> str:
-    """One sentence on the resonance margins."""
-    outcome = report.resonance_outcome.value
-    near = report.nearest
-    if outcome == "pass":
-        return (f"{verdict_text(outcome)}: every driven order is at least {near.margin:.1%} from every mode"
-                f" (nearest: {near.machine}, order {near.order}, mode {near.mode} {near.motion}; required {detuning:.0%})")
-    bad = [r for r in report.resonance_rows if r.outcome.value == outcome]
-    names = "; ".join(f"{r.machine} order {r.order} at mode {r.mode} ({r.motion}), margin {r.margin:.1%}" for r in bad)
-    return f"{verdict_text(outcome, strict)}: {names}"
+def resonance_summary(report: BlockReport, strict: bool = False) -> str:
+    """One sentence on the resonance margins, naming the governing condition."""
+    return f"{verdict_text(report.resonance_outcome.value, strict)}: {resonance_text(report)}"
 
 
 def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:

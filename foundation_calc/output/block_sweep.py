@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.checks.limits import exceeds
-from foundation_calc.checks.outcomes import Outcome, resonance_masks
+from foundation_calc.checks.outcomes import Outcome
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
 
 
@@ -28,12 +28,16 @@ class SweepRow:
 
 def sweep_rows(result, modes, scene, swept: int) -> list[SweepRow]:
     """The rows of a :class:`~foundation_calc.solvers.block.sweep.SpeedSweep`."""
-    from foundation_calc.solvers.block.response import DRIVEN_FRACTION
+    from foundation_calc.checks.resonance_rule import FAIL, WARN, judge, required_detuning
+    from foundation_calc.solvers.block.response import resonances
 
     exc = scene.excitations()[swept]
-    modal = np.abs(exc.Q @ modes.shapes)
-    driven = modal > DRIVEN_FRACTION * modal.max(axis=1, keepdims=True)  # (H, 6): loads do not change with speed
-    fails, inside = resonance_masks(result.margin, scene.limits.detuning, driven[None])
+    share = resonances(modes, exc).share.ravel()  # at the scene's speed: the loads' shape
+    orders = np.repeat(exc.orders, len(modes.frequencies))
+    N = len(result.omega)
+    verdict = judge(result.margin.reshape(N, -1), orders, share, required_detuning(scene.limits.detuning, orders),
+                    np.zeros(orders.shape, dtype=bool))
+    fails, inside = verdict.status == FAIL, verdict.status == WARN
     peak, rms = result.peak.max(axis=1), result.velocity_rms.max(axis=1)  # (N, 3)
     over = np.zeros(len(result.omega), dtype=bool)
     if scene.limits.amplitude is not None:

@@ -10,15 +10,16 @@ load has a single test case, ``load``.
 
 from __future__ import annotations
 
-import json
 import re
 from collections.abc import Iterable
 import xml.etree.ElementTree as ET
 from collections import Counter
+from dataclasses import replace
 from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, stdout, with_version
+from foundation_calc.errors import NonFiniteError
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, json_text, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -102,9 +103,9 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
             table.add_row(Text(shown), run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", Text("\n".join(lines)))
     out = stdout()
     out.print(table)
-    skipped = [scene.source for scene in scenes if scene.skipped]
+    skipped = [f"{scene.source} ({scene.skip_note})" for scene in scenes if scene.skipped]
     if skipped:
-        out.print(Text("skipped (TOML without a kind key, not a scene): " + ", ".join(skipped)), soft_wrap=True)
+        out.print(Text("skipped: " + ", ".join(skipped)), soft_wrap=True)
     out.print(
         f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
         f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
@@ -126,7 +127,11 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if getattr(scene, "kind", "") == "block_foundation":
+    if check == "runup":
+        from foundation_calc.output.runup import runup_document
+
+        document = runup_document(report, scene, "")
+    elif getattr(scene, "kind", "") == "block_foundation":
         from foundation_calc.output import block
 
         document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
@@ -143,10 +148,6 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.crank_amplitudes import amplitudes_document
 
         document = amplitudes_document(report, scene, "")
-    elif check == "runup":
-        from foundation_calc.output.runup import runup_document
-
-        document = runup_document(report, scene, "")
     else:
         from foundation_calc.output.platform import platform_document
 
@@ -199,19 +200,30 @@ def check_document(scenes: list[SceneRun], strict: bool = False) -> dict:
     return {**_head(strict), "scenes": [scene_entry(s, strict) for s in scenes if not s.skipped], **_summary(scenes, strict)}
 
 
-def _dumped(value) -> str:
-    return json.dumps(value, indent=2, ensure_ascii=False, allow_nan=False)
-
-
 def json_entry(scene: SceneRun, strict: bool = False) -> tuple[SceneRun, str | None]:
     """A checked scene as :meth:`~foundation_calc.checks.batch.SceneRun.light` and its entry of
-    the document as JSON text (None for a skipped file): what a batch keeps of a scene."""
-    return scene.light(), None if scene.skipped else _dumped(scene_entry(scene, strict))
+    the document as JSON text (None for a skipped file): what a batch keeps of a scene.
+
+    A check whose entry holds NaN or inf (which JSON cannot carry) becomes ``invalid`` with the
+    number's path as its problem, in the entry and in the light run alike; the batch goes on.
+    """
+    if scene.skipped:
+        return scene.light(), None
+    entry = scene_entry(scene, strict)
+    runs = list(scene.runs)
+    for k, (run, checked) in enumerate(zip(scene.runs, entry["checks"])):
+        found = NonFiniteError.find(checked)
+        if found is not None:
+            runs[k] = CheckRun(run.check, "invalid", (str(found),), problems=(("", str(found)),))
+    if runs != list(scene.runs):
+        scene = replace(scene, runs=tuple(runs))
+        entry = scene_entry(scene, strict)
+    return scene.light(), json_text(entry)
 
 
 def _member(key: str, value) -> str:
     """``"key": value`` as a member of the top-level object of an ``indent=2`` dump."""
-    return "\n  " + _dumped(key) + ": " + _dumped(value).replace("\n", "\n  ")
+    return "\n  " + json_text(key) + ": " + json_text(value).replace("\n", "\n  ")
 
 
 def stream_check_json(entries: Iterable[tuple[SceneRun, str | None]], strict: bool = False, write=None) -> list[SceneRun]:
@@ -253,10 +265,18 @@ def _classname(source: str) -> str:
     return ".".join(part for part in path.with_suffix("").parts if part not in ("/", "..", "."))
 
 
-def junit_xml(scenes: list[SceneRun], strict: bool = False) -> str:
-    """The run as JUnit XML text (reasons in SI units)."""
-    root = ET.Element("testsuites", name="fcalc check")
+def junit_xml(scenes: list[SceneRun], strict: bool = False, interrupted: str = "") -> str:
+    """The run as JUnit XML text (reasons in SI units). A run stopped early (``interrupted``: why)
+    is named so and ends with a suite ``fcalc check`` whose test case ``interrupted`` is an error."""
+    root = ET.Element("testsuites", name="fcalc check (interrupted)" if interrupted else "fcalc check")
     totals = Counter()
+    if interrupted:
+        suite = ET.SubElement(root, "testsuite", name="fcalc check", tests="1", failures="0", errors="1")
+        case = ET.SubElement(suite, "testcase", name="interrupted", classname="fcalc.check", time="0")
+        ET.SubElement(case, "error", message=interrupted, type="interrupted").text = (
+            f"{interrupted}; the other scenes were not checked"
+        )
+        totals.update(tests=1, errors=1)
     for scene in (scene for scene in scenes if not scene.skipped):
         suite = ET.SubElement(root, "testsuite", name=scene.source)
         tally = Counter()
@@ -290,6 +310,6 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False) -> str:
     return ET.tostring(root, encoding="unicode", xml_declaration=True) + "\n"
 
 
-def write_junit(path: str | Path, scenes: list[SceneRun], strict: bool = False) -> None:
+def write_junit(path: str | Path, scenes: list[SceneRun], strict: bool = False, interrupted: str = "") -> None:
     """Write :func:`junit_xml` to ``path`` atomically."""
-    write_atomically(path, junit_xml(scenes, strict))
+    write_atomically(path, junit_xml(scenes, strict, interrupted))

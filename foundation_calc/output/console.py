@@ -83,6 +83,30 @@ def verdict_text(outcome: str, strict: bool = False) -> str:
     return f"[{OUTCOME_STYLE[outcome]}]{outcome.upper()}[/]"
 
 
+def json_text(value) -> str:
+    """``value`` as JSON text (indent 2): characters as they are when stdout is Unicode, escaped
+    (``\\u00e9``) when it is not, so the text always reaches the reader whole.
+
+    Raises
+    ------
+    NonFiniteError
+        when a number in ``value`` is NaN or infinite (JSON has none), naming its path.
+    """
+    import json
+    import sys
+
+    from foundation_calc.errors import NonFiniteError
+
+    encoding = (getattr(sys.stdout, "encoding", None) or "").lower().replace("-", "").replace("_", "")
+    try:
+        return json.dumps(value, indent=2, ensure_ascii=not encoding.startswith("utf"), allow_nan=False)
+    except ValueError:
+        found = NonFiniteError.find(value)
+        if found is None:
+            raise
+        raise found from None
+
+
 def with_version(document: dict) -> dict:
     """``document`` with ``fcalc_version`` (version and commit) after its ``schema_version``."""
     from foundation_calc.version import version
@@ -92,14 +116,12 @@ def with_version(document: dict) -> dict:
 
 
 def print_json(document: dict) -> None:
-    """Write one JSON document to stdout; a result document (one with a ``schema_version``)
-    carries fcalc's version, with its commit, right after it. NaN or inf in it is a bug, so it
-    raises."""
-    import json
-
+    """Write one JSON document to stdout (:func:`json_text`); a result document (one with a
+    ``schema_version``) carries fcalc's version, with its commit, right after it."""
     if "schema_version" in document:
         document = with_version(document)
-    print(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
+    text = json_text(document)  # whole before a byte is written: a refused document leaves no half
+    print(text)
 
 
 def fmt(value: float, digits: int = 5) -> str:

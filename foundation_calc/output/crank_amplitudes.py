@@ -156,6 +156,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         ],
         "code": code_document(report, scene.limits),
         "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
+        "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
         "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
@@ -371,6 +372,8 @@ def summary_line(report: AmplitudeReport) -> str:
         parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
     if report.resonance is not None:
         parts.append(escape(report.resonance.statement) + (" (damped response)" if report.damped else ""))
+    if report.modulus_range is not None:
+        parts.append(escape(report.modulus_range.text))
     return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
 
 

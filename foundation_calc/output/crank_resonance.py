@@ -6,7 +6,7 @@ from collections.abc import Mapping
 
 from foundation_calc.checks.crank_resonance import ResonanceReport
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
-from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES
+from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES, bands_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
@@ -26,6 +26,8 @@ def summary_line(report: ResonanceReport, strict: bool = False, units: DisplayUn
     command words it; then the near conditions that are not judged, as information."""
     speed = units.show("speed", report.omega)
     line = f"{verdict_text(report.outcome.value, strict)}: speed {speed}, {report.statement}"
+    if report.modulus_range is not None:
+        line += f" with the soil data as given; {report.modulus_range.text}"
     if report.information:
         line += "; information, not the verdict: " + ", ".join(row.phrase for row in report.information)
     return line
@@ -74,6 +76,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
         "derived": derived,
         "natural_frequencies": _frequencies(report.zero_order),
         "natural_frequencies_averaged_inertia": _frequencies(report.averaged),
+        "natural_frequencies_static_springs": None if report.static is None else _frequencies(report.static),
         "resonances": [
             {
                 "condition": row.condition.label,
@@ -94,6 +97,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
             for row in report.rows
         ],
         "rule": rule_document(report),
+        "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
         "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
@@ -129,15 +133,20 @@ def print_resonance_report(
     design.add_row("rocking stability margin c_φ·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
     out.print(design)
 
-    freqs = Table(title="Natural frequencies", title_justify="left")
+    dependent = report.static is not None
+    freqs = Table(title="Natural frequencies" + (", each on the soil's springs at its own frequency" if dependent else ""),
+                  title_justify="left")
     freqs.add_column("mode")
     for col in ("rad/s", "Hz", "rpm", f"{units.label('speed')}, averaged inertia"):
         freqs.add_column(col, justify="right")
+    if dependent:
+        freqs.add_column(f"{units.label('speed')}, static springs", justify="right")
     for mode in ("k0", "p1", "p2"):
         w0, w1 = getattr(report.zero_order, mode), getattr(report.averaged, mode)
+        static = (fmt(units.convert("speed", getattr(report.static, mode)), 6),) if dependent else ()
         freqs.add_row(
             f"{mode} ({MODE_NAMES[mode]})", fmt(w0, 6), fmt(hz_from_omega(w0)), fmt(rpm_from_omega(w0)),
-            fmt(units.convert("speed", w1), 6),
+            fmt(units.convert("speed", w1), 6), *static,
         )
     out.print(freqs)
 
@@ -165,14 +174,7 @@ def print_resonance_report(
     out.print(res)
     out.print(
         f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
-        f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning{_bands(report)})."
+        f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
         " The rule: README, \"The resonance rule\".", soft_wrap=True,
     )
     out.print(summary_line(report, strict, units), soft_wrap=True)
-
-
-def _bands(report: ResonanceReport) -> str:
-    detuning = report.detuning
-    if isinstance(detuning, Mapping):
-        return " = {" + ", ".join(f"{k} = {v:g}" for k, v in sorted(detuning.items())) + "}"
-    return f" = {detuning:g}"

@@ -27,6 +27,36 @@ def new_figure(width: float = 8.0, height: float = 5.0):
     return plt.subplots(figsize=(width, height), layout="constrained")
 
 
+#: Formats ``--plot`` writes, by the file's suffix.
+FORMATS = (".png", ".svg", ".pdf")
+
+#: Labels of critical speeds closer than this fraction of the plotted range are staggered.
+LABEL_GAP = 0.04
+
+
+def mark_resonances(ax, marks, operating: float | None, lo: float, hi: float, operating_label: str = "operating speed") -> None:
+    """Shade the detuning band of each critical speed and label it; draw the operating speed.
+
+    ``marks``: (centre, label, source, band) in the plot's speed unit, band [-] (0: no band, a
+    condition that is not judged); the paper's conditions red, other judged ones orange, the rest
+    a grey line; labels of close speeds staggered.
+    """
+    previous, level = -float("inf"), 0
+    for centre, label, source, band in sorted(m for m in marks if lo <= m[0] <= hi):
+        colour = "tab:red" if source == "paper" else "tab:orange" if band > 0 else "grey"
+        if band > 0:
+            ax.axvspan(centre * (1 - band), centre * (1 + band), color=colour, alpha=0.12, linewidth=0)
+        ax.axvline(centre, color=colour, linewidth=0.6, alpha=0.6)
+        level = (level + 1) % 3 if centre - previous < LABEL_GAP * (hi - lo) else 0
+        previous = centre
+        ax.text(centre, 0.98 - 0.22 * level, label, rotation=90, va="top", ha="right", fontsize=7,
+                transform=ax.get_xaxis_transform())
+    if operating is not None:
+        ax.axvline(operating, color="black", linewidth=1.5, label=operating_label)
+    if hi > lo:
+        ax.set_xlim(lo, hi)
+
+
 def save(fig, path: str | Path) -> None:
     """Write the figure as PNG and release it."""
     import matplotlib.pyplot as plt
@@ -35,4 +65,4 @@ def save(fig, path: str | Path) -> None:
     plt.close(fig)
 
 
-__all__ = ["INSTALL_HINT", "new_figure", "plotting_available", "save"]
+__all__ = ["FORMATS", "INSTALL_HINT", "mark_resonances", "new_figure", "plotting_available", "save"]

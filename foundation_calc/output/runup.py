@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from rich.markup import escape
 from rich.table import Table
 
-from foundation_calc.checks.runup import RUN_TITLES, RunupReport
+from foundation_calc.checks.runup import RunupReport, run_title
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
-from foundation_calc.solvers.numerics.runup import RunupResult
 from foundation_calc.units import speed_triplet
+
+if TYPE_CHECKING:  # the solver imports scipy.signal: not before a run is computed
+    from foundation_calc.solvers.numerics.runup import RunupResult
 
 
 def _passage_document(p, result: RunupResult, points) -> dict:
@@ -73,6 +77,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
         "command": "runup",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
         "speed": speed_triplet(report.omega),
+        "machines": [{"name": name, "speed": speed_triplet(w)} for name, w in report.speeds],
         "displacement": DISPLACEMENT.format(", ".join(report.directions)),
         "points": list(report.points),
         "steady_points": {n: float(v) for n, v in zip(report.points, report.steady_points)},
@@ -80,6 +85,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
         "runs": {
             key: {
                 "duration": r.duration,
+                "speed": r.omega,
                 "damped": r.damped,
                 "natural_frequencies": [float(w) for w in r.natural],
                 "steady_amplitude": r.steady,
@@ -104,7 +110,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
 
 def _passages_table(key: str, r: RunupResult, points) -> Table:
     title = (
-        f"{RUN_TITLES[key].capitalize()} in {fmt(r.duration)} s: every resonance passed"
+        f"{run_title(key).capitalize()} in {fmt(r.duration)} s: every resonance passed"
         f" (steady amplitude at the operating speed {fmt(r.steady)} m)"
     )
     table = Table(title=title, title_justify="left")
@@ -153,12 +159,16 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     """Tables for people: per run the passages, then the points against the limit."""
     out = stdout()
     out.print(f"[bold]{escape(scene.name or source)}[/]  ({escape(source)}, {scene.kind})")
-    out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
+    if report.speeds:
+        out.print("Machines, each run from rest to its speed with the others' steady peaks added: " + ", ".join(
+            f"{escape(name)} ω = {fmt(w, 6)} rad/s" for name, w in report.speeds))
+    else:
+        out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
     for key, r in report.runs.items():
         if r.passages:
             out.print(_passages_table(key, r, report.points))
         else:
-            out.print(f"{RUN_TITLES[key].capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
+            out.print(f"{run_title(key).capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
     out.print(
         "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
         " integration: the same mode's motion in the time integration of the whole linear model;"
@@ -172,7 +182,7 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     for row in report.rows:
         steady = report.steady_points[report.points.index(row.point)]
         table.add_row(
-            escape(row.point), RUN_TITLES[row.run], fmt(float(steady), 4), fmt(row.value, 4),
+            escape(row.point), run_title(row.run), fmt(float(steady), 4), fmt(row.value, 4),
             fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
             NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value),
         )
@@ -183,7 +193,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     if report.judged:
         out.print(f"Verdict: {verdict_text(report.outcome.value)}")
     else:
-        out.print(f"Verdict: {NOT_JUDGED} (no [limits] transient_amplitude, no [drive])")
+        missing = "no [limits] transient_amplitude" + ("" if scene.kind == "block_foundation" else ", no [drive]")
+        out.print(f"Verdict: {NOT_JUDGED} ({escape(missing)})")
 
 
 def _directions_table(report: RunupReport) -> Table:
@@ -194,7 +205,7 @@ def _directions_table(report: RunupReport) -> Table:
     for name in report.directions:
         table.add_column(escape(name), justify="right")
     runs = [("steady", report.steady_directions)]
-    runs += [(RUN_TITLES[key], r.transient_directions) for key, r in report.runs.items()]
+    runs += [(run_title(key), r.transient_directions) for key, r in report.runs.items()]
     for k, name in enumerate(report.points):
         for title, peaks in runs:
             table.add_row(escape(name), title, *(fmt(float(v), 5) for v in peaks[k]))
@@ -231,7 +242,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
     records = []
     for key, r in report.runs.items():
         speed = r.omega * (r.response.t / r.duration if r.direction > 0 else 1.0 - r.response.t / r.duration)
-        records.append((RUN_TITLES[key], r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
+        records.append((run_title(key), r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
                         [(p.time, p) for p in r.passages]))
     if report.motor is not None:
         m = report.motor
@@ -240,7 +251,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
             crossed = np.nonzero(m.speed >= t.speed)[0]
             if crossed.size:
                 marks.append((float(m.t[crossed[0]]), t))
-        records.append((RUN_TITLES["motor"], m.t, m.magnitude, m.speed, marks))
+        records.append((run_title("motor"), m.t, m.magnitude, m.speed, marks))
     fig, _ = new_figure(9.0, 1.0 + 3.0 * len(records))
     fig.clf()
     axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]

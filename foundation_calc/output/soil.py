@@ -30,6 +30,26 @@ ROWS = (
     ("p2, sliding-rocking, upper", "Hz", "p2", None),
 )
 
+#: Rows added for a frequency-dependent method: the frequencies on its static springs.
+STATIC_ROWS = (
+    ("f_φ, rocking, static springs", "Hz", "omega_phi"),
+    ("k0, static springs", "Hz", "k0"),
+    ("p1, static springs", "Hz", "p1"),
+    ("p2, static springs", "Hz", "p2"),
+)
+
+#: Rows of the table of a frequency-dependent method at each frequency (label, unit, attribute, scale).
+DYNAMIC_ROWS = (
+    ("f, frequency", "Hz", "omega", None),
+    ("a0 = ω B'/V_s", "-", "a0", 1.0),
+    ("K_z(ω)", "MN/m", "K_z", 1e-6),
+    ("K_x(ω)", "MN/m", "K_x", 1e-6),
+    ("K_φ(ω)", "MN m/rad", "K_phi", 1e-6),
+    ("C_z(ω)", "kN s/m", "C_z", 1e-3),
+    ("C_x(ω)", "kN s/m", "C_x", 1e-3),
+    ("C_φ(ω)", "kN m s/rad", "C_phi", 1e-3),
+)
+
 _JSON_KEYS = (
     "K_z", "K_x", "K_phi", "c_z", "c_x", "c_phi", "xi_z", "xi_x", "xi_phi", "C_z", "C_x", "C_phi",
     "omega_z", "omega_x", "omega_phi", "k0", "p1", "p2", "rocking_stability_margin",
@@ -41,6 +61,10 @@ def _cell(result: MethodResult, attribute: str, scale: float | None) -> str:
     if math.isnan(value):
         return "tips over"
     return fmt(hz_from_omega(value) if scale is None else value * scale)
+
+
+def _static_cell(value: float) -> str:
+    return "tips over" if math.isnan(value) else fmt(hz_from_omega(value))
 
 
 def _finite(value: float) -> float | None:
@@ -59,10 +83,43 @@ def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
         "base": dict(zip(("length", "width"), scene.foundation.dimensions), area=scene.foundation.base_area,
                      second_moment=scene.foundation.base_second_moment, embedment=scene.foundation.embedment or 0.0),
         "methods": {
-            r.method: {key: _finite(getattr(r, key)) for key in _JSON_KEYS} for r in comparison.results
+            r.method: {key: _finite(getattr(r, key)) for key in _JSON_KEYS} | _dynamic_document(r)
+            for r in comparison.results
         },
         "warnings": [*comparison.input_warnings, *comparison.findings],
     }
+
+
+def _dynamic_document(result: MethodResult) -> dict:
+    """A frequency-dependent method's static frequencies and its K, C at each frequency (SI)."""
+    if result.static_frequencies is None:
+        return {"frequency_dependent": False}
+    return {
+        "frequency_dependent": True,
+        "static_frequencies": {k: _finite(v) for k, v in result.static_frequencies.items()},
+        "at_frequencies": [
+            {"at": row.at} | {key: getattr(row, key) for key in ("omega", "a0", "K_z", "K_x", "K_phi", "C_z", "C_x", "C_phi")}
+            for row in result.dynamic
+        ],
+    }
+
+
+def _dynamic_table(result: MethodResult):
+    from rich.table import Table
+
+    names = {"speed": "speed", "k0": "at k0", "p1": "at p1", "p2": "at p2"}
+    table = Table(title=f"{result.method}: springs and dashpots at the operating speed and at each mode's own frequency",
+                  title_justify="left")
+    table.add_column("quantity")
+    table.add_column("unit")
+    for row in result.dynamic:
+        table.add_column(names[row.at], justify="right")
+    for label, unit, attribute, scale in DYNAMIC_ROWS:
+        table.add_row(label, unit, *(
+            fmt(hz_from_omega(getattr(row, attribute)) if scale is None else getattr(row, attribute) * scale)
+            for row in result.dynamic
+        ))
+    return table
 
 
 def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
@@ -86,6 +143,73 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
         table.add_column(r.method + (" *" if r.method == comparison.used else ""), justify="right")
     for label, unit, attribute, scale in ROWS:
         table.add_row(label, unit, *(_cell(r, attribute, scale) for r in comparison.results))
+    if any(r.static_frequencies for r in comparison.results):
+        for label, unit, key in STATIC_ROWS:
+            table.add_row(label, unit, *(
+                "-" if r.static_frequencies is None else _static_cell(r.static_frequencies[key])
+                for r in comparison.results
+            ))
     out.print(table)
+    for r in comparison.results:
+        if r.dynamic:
+            out.print(_dynamic_table(r))
+    if any(r.static_frequencies for r in comparison.results):
+        out.print(
+            "Frequencies of a frequency-dependent method solve ω = p(K(ω)), each mode on its springs at its own"
+            " frequency; its damping ratios are taken at their mode's frequency. The other methods are"
+            " frequency-independent.", soft_wrap=True,
+        )
     for text in comparison.findings:
         out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
+
+
+#: Rows of the sample's table: (label, unit, key, scale from SI; None: rad/s to Hz).
+SAMPLE_ROWS = (
+    ("stiffness factor", "-", "modulus_factor", 1.0),
+    ("k0, vertical", "Hz", "k0", None),
+    ("p1, sliding-rocking, lower", "Hz", "p1", None),
+    ("p2, sliding-rocking, upper", "Hz", "p2", None),
+    ("margin from the nearest paper resonance", "%", "resonance_margin", 100.0),
+    ("peak horizontal displacement of C", "mm", "peak_horizontal_C", 1e3),
+    ("peak vertical displacement of C", "mm", "peak_vertical_C", 1e3),
+)
+
+
+def sample_document(drawn) -> dict | None:
+    """The sample of ``fcalc soil --sample`` in SI (frequencies rad/s, margins and factors [-], m)."""
+    if drawn is None:
+        return None
+    from foundation_calc.checks.soil_sample import PERCENTILES
+
+    return {
+        "samples": drawn.samples, "modulus_cov": drawn.cov_modulus, "speed_cov": drawn.cov_speed, "seed": drawn.seed,
+        "distributions": "stiffness factor lognormal (median 1); speed factor normal (mean 1)",
+        "percentiles": [*PERCENTILES],
+        "values": {key: list(values) for key, values in drawn.percentiles.items()},
+        "failure_probability": drawn.failure_probability,
+    }
+
+
+def print_sample(drawn) -> None:
+    """Percentiles of the sample and the probability that each check fails."""
+    from rich.table import Table
+
+    from foundation_calc.checks.soil_sample import PERCENTILES
+
+    out = stdout()
+    table = Table(title=f"Uncertain soil: {drawn.samples} samples, stiffness lognormal (median 1, COV"
+                  f" {drawn.cov_modulus:g})" + (f", speed COV {drawn.cov_speed:g}" if drawn.cov_speed else ""),
+                  title_justify="left")
+    table.add_column("quantity")
+    table.add_column("unit")
+    for p in PERCENTILES:
+        table.add_column(f"{p:g} %", justify="right")
+    for label, unit, key, scale in SAMPLE_ROWS:
+        values = drawn.percentiles[key]
+        table.add_row(label, unit, *(fmt(hz_from_omega(v) if scale is None else v * scale) for v in values))
+    out.print(table)
+    p = drawn.failure_probability
+    out.print(
+        f"probability of failing: resonance {p['resonance']:.2%}, amplitudes {p['amplitudes']:.2%}, any check"
+        f" {p['any']:.2%} (tips over {p['tips_over']:.2%})", soft_wrap=True,
+    )

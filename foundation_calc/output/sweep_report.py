@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
-from foundation_calc.checks.resonance_rule import condition_phrase
+from foundation_calc.checks.resonance_rule import bands_text, condition_phrase
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
@@ -100,6 +100,7 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
     plausibility warnings."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
+        "command": "sweep",
         "scene": scene_path,
         "name": name,
         "method": method(report),
@@ -109,42 +110,87 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
             "detuning": {str(k): v for k, v in report.detuning.items()} if isinstance(report.detuning, dict) else report.detuning,
         },
         "critical_speeds": [
-            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged, "band": c.band}
+            {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged, "band": c.band,
+             "judged": c.judged}
             for c in report.critical
         ],
         "points": list(_rows(report)),
         "warnings": list(warnings),
+        "verdict": verdict(report.status),
     }
 
 
-def sweep_csv(report) -> str:
-    """The sweep as CSV text: SI columns plus the speed in Hz and rpm; empty amplitude where resonant."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
+def _cell(value) -> str:
+    """A CSV cell: ``true``/``false`` for booleans, the shortest round-trip text of a float with
+    -0.0 written as 0.0, an empty cell for None.
+
+    >>> [_cell(v) for v in (True, -0.0, 1e-300, None, "3ω = p1")]
+    ['true', '0.0', '1e-300', '', '3ω = p1']
+    """
+    if value is None:
+        return ""
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value + 0.0)
+    return str(value)
+
+
+def csv_header(report) -> str:
+    """The header line of the sweep's CSV (SI units, plus the speed in Hz and rpm)."""
     header = [report.variable if report.variable != "omega" else "omega_rad_s", "speed_hz", "speed_rpm",
               "x_peak_m", "y_peak_m", "theta_peak_rad",
               *(f"{key}_{part}" for key in report.harmonics for part in ("amplitude", "phase_rad")),
               *(f"{name}_{d}_peak_m" for name in report.points for d in ("horizontal", "vertical")),
-              "resonant", "governing_condition", "margin", "needed", "over_limit", "status"]
+              "resonant", "governing_condition", "margin", "needed", "resonance_status", "over_limit", "status"]
     if report.variable != "omega":
         header.insert(1, "omega_rad_s")
-    writer.writerow(header)
+    return _csv_text([header])
+
+
+def csv_rows(report) -> str:
+    """The rows of a sweep (or of one chunk of it) as CSV text; empty amplitudes where resonant."""
+    lines = []
     for row in _rows(report):
         cells = [row[report.variable]]
         if report.variable != "omega":
             cells.append(row["omega"])
         cells += [hz_from_omega(row["omega"]), rpm_from_omega(row["omega"])]
-        cells += ["" if row[k] is None else repr(row[k]) for k in ("x_peak", "y_peak", "theta_peak")]
+        cells += [row[k] for k in ("x_peak", "y_peak", "theta_peak")]
         for key in report.harmonics:
             h = row["harmonics"]
-            cells += ["", ""] if h is None else [repr(h[key]["amplitude"]), repr(h[key]["phase"])]
+            cells += [None, None] if h is None else [h[key]["amplitude"], h[key]["phase"]]
         for name in report.points:
             p = row["points"][name]
-            cells += ["", ""] if p is None else [repr(p["horizontal"]), repr(p["vertical"])]
-        cells += [row["resonant"], row["governing_condition"] or "", repr(row["margin"]), repr(row["needed"]),
+            cells += [None, None] if p is None else [p["horizontal"], p["vertical"]]
+        cells += [row["resonant"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
                   row["over_limit"], row["status"]]
-        writer.writerow(cells)
+        lines.append([_cell(c) for c in cells])
+    return _csv_text(lines)
+
+
+def _csv_text(lines) -> str:
+    buffer = io.StringIO()
+    csv.writer(buffer, lineterminator="\n").writerows(lines)
     return buffer.getvalue()
+
+
+def sweep_csv(report) -> str:
+    """The sweep as CSV text: :func:`csv_header` and :func:`csv_rows`."""
+    return csv_header(report) + csv_rows(report)
+
+
+def verdict(statuses) -> str:
+    """The verdict of a sweep (JSON ``verdict``): its worst point, a resonant point counting as a
+    failure. A sweep is a picture: the exit code does not follow it.
+
+    >>> verdict(["pass", "warn"]), verdict(["pass", "resonant"])
+    ('warn', 'fail')
+    """
+    found = set(map(str, statuses))
+    if found & {"fail", "resonant"}:
+        return "fail"
+    return "warn" if "warn" in found else "pass"
 
 
 def print_sweep(report, scene_path: str, name: str, units) -> None:
@@ -184,48 +230,103 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         cells.append(f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
         table.add_row(*cells)
     out.print(table)
+    _print_footer(report, units)
+
+
+def _print_footer(report, units) -> None:
+    """The critical speeds inside the sweep and the limits, under the rows or the summary."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    out = stdout()
+    speed_unit = units.label("speed")
     if report.critical:
         crit = Table(title="Critical speeds inside the sweep (zero-order / averaged-inertia operator)", title_justify="left")
-        for col in ("condition", "source", f"zero-order [{speed_unit}]", f"averaged [{speed_unit}]"):
-            crit.add_column(escape(col), justify="left" if col in ("condition", "source") else "right")
+        for col in ("condition", "source", "judged", f"zero-order [{speed_unit}]", f"averaged [{speed_unit}]"):
+            crit.add_column(escape(col), justify="left" if col in ("condition", "source", "judged") else "right")
         for c in report.critical:
-            crit.add_row(c.label, c.source, fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
+            crit.add_row(c.label, c.source, "yes" if c.judged else "no (information)",
+                         fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
     limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
-        f"limits (x, y of C and of every point): {limits}; required detuning {report.detuning if isinstance(report.detuning, dict) else format(report.detuning, '.0%')}", soft_wrap=True
+        f"limits (x, y of C and of every point): {limits}; \\[limits] detuning = {bands_text(report.detuning)}"
+        " (README, \"The resonance rule\")", soft_wrap=True
     )
 
 
-def plot_sweep(report, path: str | Path, units, name: str) -> None:
-    """x, y peaks against the swept variable (log scale), critical speeds and the limit marked."""
-    import numpy as np
+def print_sweep_summary(count: int, statuses: dict, report, csv_path: str, units) -> None:
+    """What a long sweep written to CSV prints instead of its rows: how many points, their
+    statuses, the critical speeds inside the range and the limits."""
+    out = stdout()
+    tally = ", ".join(f"{statuses[s]} {s}" for s in STATUS_STYLE if statuses.get(s))
+    from rich.markup import escape
 
-    from foundation_calc.output.plots import new_figure, save
+    out.print(f"{count} points written to {escape(csv_path)} (CSV, SI units): {tally}", soft_wrap=True)
+    _print_footer(report, units)
+
+
+def plotted(part):
+    """What the plot of a streamed sweep keeps of one chunk: speeds, x and y peaks, resonant."""
+    return part.values.copy(), part.peaks[:, :2].copy(), part.resonant.copy()
+
+
+def joined_plot(first, kept):
+    """A report to plot from the first chunk and the :func:`plotted` parts of every chunk (only
+    ``values``, ``peaks`` and ``resonant`` span the whole sweep)."""
+    from dataclasses import replace
+
+    values, peaks, resonant = (np.concatenate(parts) for parts in zip(*kept))
+    return replace(first, values=values, peaks=peaks, resonant=resonant)
+
+
+def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> None:
+    """x, y peaks of C against the swept variable (log scale), the amplitude limit, and, as on the
+    calculation sheet, the operating speed (or the scene's soil, factor 1) and the detuning band
+    of each critical speed inside the range (:func:`~foundation_calc.output.plots.mark_resonances`).
+    ``operating``: the scene's speed [rad/s] for a speed sweep."""
+    from foundation_calc.output.plots import mark_resonances, new_figure, save
 
     fig, ax = new_figure()
-    if report.variable == "omega":
-        xs = np.array([units.convert("speed", w) for w in report.values])
+    speed = report.variable == "omega"
+    if speed:
+        xs = np.asarray(units.convert("speed", np.asarray(report.values)), dtype=float)
         ax.set_xlabel(f"speed [{units.label('speed')}]")
     else:
-        xs = report.values
+        xs = np.asarray(report.values, dtype=float)
         ax.set_xlabel("factor on the soil coefficients c_z, c_x, c_phi [-]")
-    ok = ~report.resonant
+    ok = ~np.asarray(report.resonant, dtype=bool)
+    marker = "o" if len(xs) == 1 else None
     for i, dof in enumerate(("x", "y")):
-        amps = np.where(ok, [units.convert("amplitude", v) for v in report.peaks[:, i]], np.nan)
-        ax.semilogy(xs, amps, label=f"{dof} peak of C")
+        amps = np.where(ok, np.asarray(units.convert("amplitude", report.peaks[:, i]), dtype=float), np.nan)
+        ax.semilogy(xs, amps, label=f"{dof} peak of C", marker=marker)
     if report.amplitude_limit is not None:
         ax.axhline(units.convert("amplitude", report.amplitude_limit), color="red", linestyle="--", label="amplitude limit")
-    for c in report.critical:
-        style = "-" if c.source == "paper" else ":"
-        ax.axvline(units.convert("speed", c.zero_order), color="grey", linestyle=style, alpha=0.6)
-        ax.text(units.convert("speed", c.zero_order), 1.0, c.label, rotation=90, va="top", ha="right", fontsize=7,
-                transform=ax.get_xaxis_transform())
+    marks = [(units.convert("speed", c.zero_order), c.label, c.source, c.band) for c in report.critical] if speed else []
+    lo, hi = float(xs.min()), float(xs.max())
+    if hi == lo:  # one point: show a tenth either side
+        lo, hi = 0.9 * lo, 1.1 * hi
+    mark_resonances(ax, marks, units.convert("speed", operating) if speed else 1.0, lo, hi,
+                    "operating speed" if speed else "the scene's soil (factor 1)")
     ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
-    ax.set_title(f"{name}: {method(report)}", fontsize=9)
+    ax.set_title(
+        f"{name}: {method(report)}\nshaded: the detuning band of each judged resonance ([limits] detuning ="
+        f" {bands_text(report.detuning)}); red: the paper's, orange: others judged, grey: not judged", fontsize=8,
+    )
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, path)
 
 
-__all__ = ["plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
+__all__ = [
+    "csv_header",
+    "csv_rows",
+    "joined_plot",
+    "plot_sweep",
+    "plotted",
+    "print_sweep",
+    "print_sweep_summary",
+    "sweep_csv",
+    "sweep_document",
+    "verdict",
+]

@@ -24,6 +24,10 @@ BLOCK_OMEGA_PLAUSIBLE = 1000.0
 class BlockLimits(Limits):
     """What the checks compare against: the crank foundation's limits (bearing_pressure among them), and the office checks'."""
 
+    amplitude: float | None = quantity(
+        "u_max", "m", "largest allowed peak displacement of G and of every point, each direction", None, gt=0,
+        examples=[5.0e-5],
+    )
     eccentricity: float = quantity(
         "e_max", "-", "largest allowed horizontal distance of the combined centre of mass from the base centroid,"
         " as a fraction of the base dimension in that direction (ACI 351.3R: 0.05)", 0.05, gt=0, lt=0.5,
@@ -31,6 +35,20 @@ class BlockLimits(Limits):
     mass_ratio: float = quantity(
         "μ_min", "-", "smallest foundation-to-machine mass ratio (rules of thumb: 3 for rotating machines,"
         " 5 for reciprocating ones)", 3.0, gt=0, examples=[5.0],
+    )
+
+
+class BlockOperation(SceneModel):
+    """Start-up and run-down of every machine (fcalc runup): each runs from rest to its own speed
+    in the same time, as the platform's and crank foundation's [operation] tables give them."""
+
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp of each machine from rest to its speed (fcalc runup)", None, gt=0,
+        examples=[10.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp of each machine from its speed to rest (fcalc runup)", None, gt=0,
+        examples=[20.0],
     )
 
 
@@ -49,6 +67,9 @@ class BlockScene(SceneModel):
     soil: BlockSoil
     points: list[BlockPoint] = quantity("-", "-", "points whose vibration is checked (besides the centre of mass)", [])
     limits: BlockLimits = BlockLimits()
+    operation: BlockOperation | None = quantity(
+        "-", "-", "run-up and run-down times of the machines (fcalc runup); optional", None
+    )
 
     @field_validator("machines")
     @classmethod

@@ -24,7 +24,12 @@ BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "springs": ("stiffness", "dashpot"),
     "coefficients": ("c_z", "c_x", "c_phi", "c_psi", "damping"),
     "lysmer": METHOD_KEYS["lysmer"],
+    "gazetas": METHOD_KEYS["gazetas"],
+    "sp26": METHOD_KEYS["sp26"],
 }
+
+#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-].
+SP26_TORSION = (1.0, 0.3)
 
 #: c_ψ / c_x of Barkan (1948), ch. 4: the coefficient of elastic non-uniform shear (torsion) is
 #: about 1.5 times that of uniform shear [-].
@@ -35,15 +40,18 @@ class BlockSoil(Soil):
     """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
+    #: The block's checks judge the soil as given: ``modulus_range`` is refused, not ignored.
+    range_keys: ClassVar[tuple[str, ...]] = ()
     no_method_text: ClassVar[str] = (
         'give soil.method = "springs" with stiffness [N/m, N m/rad] (and dashpot), "lysmer" with its keys, or'
         " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
     )
 
-    method: Literal["springs", "coefficients", "lysmer"] | None = quantity(
+    method: Literal["springs", "coefficients", "lysmer", "gazetas", "sp26"] | None = quantity(
         "-", "-", 'how the six springs are found: "springs" (stiffness and dashpot at O given), "coefficients"'
-        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs from shear_modulus or"
-        " shear_wave_velocity, density, poisson); default \"coefficients\" when c_z is given", None,
+        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs) or \"gazetas\" (Gazetas 1991,"
+        " surface) from shear_modulus or shear_wave_velocity, density, poisson, \"sp26\" (SP 26.13330 from"
+        " deformation_modulus and soil_class); default \"coefficients\" when c_z is given", None,
         examples=["springs"],
     )
     stiffness: Six | None = quantity(
@@ -75,8 +83,8 @@ class BlockSoil(Soil):
             values = getattr(self, key)
             if values is not None and any(v < 0 for v in values):
                 raise ValueError(f"soil.{key} must be >= 0 in every direction (got {list(values)})")
-        if method == "lysmer" and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
-            raise ValueError("method 'lysmer' needs exactly one of soil.shear_modulus [Pa] and soil.shear_wave_velocity [m/s]")
+        if method in ("lysmer", "gazetas") and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
+            raise ValueError(f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and soil.shear_wave_velocity [m/s]")
         if self.stiffness is not None and not all(self.stiffness):
             raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
         return self
@@ -88,21 +96,14 @@ class BlockSoil(Soil):
         about the axes through O [kg m²] (the half-space methods' mass ratios).
 
         Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
-        K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer: the
-        analogs of :mod:`~foundation_calc.solvers.soil.lysmer` in each vertical plane (rocking about y
-        with L in the plane, about x with B in it) and the torsion of
-        :mod:`~foundation_calc.solvers.soil.torsion`.
+        K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
+        Gazetas, SP 26: the crank foundation's method in each vertical plane (:meth:`_planes`).
         """
-        if self.method_used == "springs":
+        method = self.method_used
+        if method == "springs":
             return list(self.stiffness), None
-        if self.method_used == "lysmer":
-            from foundation_calc.solvers.soil.lysmer import lysmer_springs
-            from foundation_calc.solvers.soil.torsion import lysmer_torsion
-
-            D = self.material_damping or 0.0
-            along = lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], D)
-            across = lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], D)
-            k_t, xi_t = lysmer_torsion(self.G, self.density, L, B, J_O[2], D)
+        if method in ("lysmer", "gazetas", "sp26"):
+            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
             return [float(k) for k in springs], [float(x) for x in (along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t)]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
@@ -113,3 +114,33 @@ class BlockSoil(Soil):
         xi_psi = xi[3] if len(xi) == 4 else xi_phi
         springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
         return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
+
+    def _planes(self, L: float, B: float, M: float, J_O):
+        """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
+        plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
+        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' K_t with material damping (gazetas,
+        surface footing), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87)."""
+        method, D = self.method_used, self.material_damping or 0.0
+        if method == "sp26":
+            from foundation_calc.solvers.constants import GRAVITY
+            from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
+
+            A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
+            b0, p_m = B0_BY_CLASS[self.soil_class], M * GRAVITY / A
+            along = sp26_springs(self.deformation_modulus, b0, A, I_y, p_m)
+            across = sp26_springs(self.deformation_modulus, b0, A, I_x, p_m)
+            ratio, damping = SP26_TORSION
+            return along, across, (ratio * along.K_z / A * (I_x + I_y), damping * along.xi_z)
+        if method == "lysmer":
+            from foundation_calc.solvers.soil.lysmer import lysmer_springs
+            from foundation_calc.solvers.soil.torsion import lysmer_torsion
+
+            return (lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], D),
+                    lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], D),
+                    lysmer_torsion(self.G, self.density, L, B, J_O[2], D))
+        from foundation_calc.solvers.soil.gazetas import gazetas_springs
+        from foundation_calc.solvers.soil.torsion import gazetas_torsion
+
+        return (gazetas_springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D),
+                gazetas_springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D),
+                (gazetas_torsion(self.G, L, B), D))

@@ -383,12 +383,19 @@ class CrankScene(SceneModel):
         mech = self.mechanism
         return self.foundation.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
 
-    def soil_springs(self, method: str | None = None) -> SoilSprings:
+    def with_modulus_factor(self, factor: float):
+        """This scene on the soil whose stiffness data are multiplied by ``factor`` [-]
+        (:meth:`Soil.factored`; the copy has no ``modulus_range``)."""
+        return self.model_copy(update={"soil": self.soil.factored(factor)})
+
+    def soil_springs(self, method: str | None = None, omega: float = 0.0) -> SoilSprings:
         """K_z, K_x, K_φ and damping ratios of the soil by ``method`` (default: the scene's own).
 
         ``"coefficients"``: K = c S, c1 S, c_φ I1 and ``soil.damping``; ``"lysmer"``, ``"gazetas"``,
         ``"sp26"``: the solvers of :mod:`foundation_calc.solvers.soil` on the rectangular base
-        (L, B), the total mass M_tot and I_0 = I_c + M_tot h² about the base axis.
+        (L, B), the total mass M_tot and I_0 = I_c + M_tot h² about the base axis. ``omega``
+        [rad/s] is the frequency at which a frequency-dependent method (``"gazetas"``) takes its
+        springs and dashpots; the other methods are frequency-independent and ignore it.
         """
         f, s = self.foundation, self.soil
         method = method or s.method_used
@@ -407,7 +414,7 @@ class CrankScene(SceneModel):
         from foundation_calc.solvers.soil.gazetas import gazetas_springs  # numpy: only when asked for
 
         return gazetas_springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0,
-                               s.material_damping or 0.0)
+                               s.material_damping or 0.0, omega)
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
@@ -462,12 +469,13 @@ class CrankScene(SceneModel):
             return "soil.deformation_modulus"
         return "soil.shear_modulus" if s.shear_modulus is not None else "soil.shear_wave_velocity"
 
-    def block(self) -> RigidBlock:
-        """The block (with the whole machine's mass) on the soil method's springs and dashpots, for the loads."""
+    def block(self, soil_frequency: float = 0.0) -> RigidBlock:
+        """The block (with the whole machine's mass) on the soil method's springs and dashpots, for
+        the loads; a frequency-dependent soil takes them at ``soil_frequency`` [rad/s]."""
         from foundation_calc.solvers.crank.loads import RigidBlock
 
         f = self.foundation
-        springs = self.soil_springs()
+        springs = self.soil_springs(omega=soil_frequency)
         self.require_stable_rocking(springs)
         M_tot = self.total_mass
         return RigidBlock(
@@ -492,8 +500,11 @@ class CrankScene(SceneModel):
         columns = zip(*((ld.order, ld.horizontal, ld.vertical, ld.moment, ld.phase, ld.at.horizontal, ld.at.height) for ld in self.loads))
         return HarmonicLoads(*(np.array(c, dtype=int if i == 0 else float) for i, c in enumerate(columns)))
 
-    def design(self) -> CrankDesign:
+    def design(self, soil_frequency: float = 0.0) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
+
+        A frequency-dependent soil (``soil.frequency_dependent``) takes its springs and dashpots at
+        ``soil_frequency`` [rad/s], 0 for the static springs.
 
         The soil method's springs map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 (Barkan's
         coefficients pass through unchanged) and its damping ratios to the base dashpots of
@@ -513,7 +524,7 @@ class CrankScene(SceneModel):
             rho=mech.rod_radius_of_gyration,
             m1=mech.slider_mass,
         )
-        springs = self.soil_springs()
+        springs = self.soil_springs(omega=soil_frequency)
         self.require_stable_rocking(springs)
         if s.method_used == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)

@@ -24,8 +24,15 @@ KINDS: dict[str, str] = {
 KIND_COMMANDS: dict[str, tuple[str, ...]] = {
     "crank_foundation": ("resonance", "amplitudes", "sweep", "soil"),
     "platform": ("platform",),
-    "block_foundation": ("resonance", "amplitudes", "sweep", "soil", "check", "report"),
+    "block_foundation": ("resonance", "amplitudes", "sweep", "runup", "soil", "check", "report"),
 }
+
+#: Top-level tables of the scene kinds (of :data:`KINDS`, and ``block``/``machines`` of the block
+#: foundation): a TOML file with any of them is a scene, with or without its kind line.
+SCENE_TABLES = frozenset({
+    "foundation", "soil", "mechanism", "operation", "loads", "limits", "drive", "points",
+    "platform", "exciter", "isolators", "extra_exciters", "block", "machines",
+})
 
 #: Largest scene file read [bytes]; a design is a few hundred bytes.
 MAX_SCENE_BYTES = 1_000_000
@@ -91,9 +98,7 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
     """
     kind = data.get("kind")
     if not isinstance(kind, str) or kind not in KINDS:
-        allowed = ", ".join(f'"{k}"' for k in KINDS)
-        got = "missing" if kind is None else f"{kind!r}"
-        raise SceneError(source, [("kind", f"must be one of {allowed} (got {got})")])
+        raise SceneError(source, [_kind_problem(data, kind)])
     expected = (expect,) if isinstance(expect, str) else expect
     if expected is not None and kind not in expected:
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
@@ -116,6 +121,25 @@ def validate(model: type, data: dict[str, Any], source: str, prefix: str = ""):
         raise SceneError(source, [(f"{prefix}{loc}" if loc else prefix.rstrip("."), msg) for loc, msg in problems]) from None
     except RecursionError:
         raise SceneError(source, [("", "is nested too deeply")]) from None
+
+
+def is_scene(data: dict[str, Any]) -> bool:
+    """True when a TOML document is meant as a scene: it has a ``kind`` or a scene table
+    (:data:`SCENE_TABLES`); ``pyproject.toml`` or ``.taplo.toml`` have neither."""
+    return "kind" in data or not SCENE_TABLES.isdisjoint(data)
+
+
+def _kind_problem(data: dict[str, Any], kind: Any) -> tuple[str, str]:
+    """The problem of a document without a known ``kind``: empty, kind line lost, or unknown."""
+    allowed = ", ".join(f'"{k}"' for k in KINDS)
+    first = f'kind = "{next(iter(KINDS))}"'
+    if not data:
+        return "", f"is empty: a scene file holds a kind line ({first}, or one of {allowed}) and its tables; fcalc init KIND writes one"
+    if kind is None:
+        tables = ", ".join(f"[{name}]" for name in data if name in SCENE_TABLES)
+        has = f"the file has scene tables ({tables}) but no kind line" if tables else "no kind line"
+        return "kind", f"missing: {has}; it must be one of {allowed}, written at the top of the file, e.g. {first}"
+    return "kind", f"must be one of {allowed} (got {kind!r})"
 
 
 def read_scene(path: str | Path) -> dict[str, Any]:

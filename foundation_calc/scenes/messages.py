@@ -99,13 +99,11 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
         if kind == "extra_forbidden":
             problems.append((path, _unknown_key(model, loc)))
             continue
-        msg = "missing" if kind == "missing" else err["msg"]
-        if msg.startswith("Value error, "):
-            msg = msg[len("Value error, "):]
         info = _field_info(model, loc)
+        msg = _plain(err, info)
         details = []
         given = err.get("input")
-        if kind != "missing" and not isinstance(given, dict):
+        if kind != "missing" and not isinstance(given, dict) and not _names_value(msg, given):
             details.append(f"got {_shorten(given)}")
         table = _missing_table(info) if kind == "missing" else ""
         if table:
@@ -115,6 +113,62 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
             if rng and kind not in ("greater_than", "greater_than_equal", "less_than", "less_than_equal"):
                 details.append(f"allowed {rng}")
             if info.description:
-                details.append(info.description)
+                details.append(info.description.removeprefix("- [-]: "))  # no symbol, no unit: the text alone
         problems.append((path, msg + (f" ({'; '.join(details)})" if details else "")))
     return problems
+
+
+#: pydantic's error types -> the same rule in an engineer's words (``{...}`` from the error's context).
+_PLAIN = {
+    "missing": "missing",
+    "greater_than": "must be > {gt}",
+    "greater_than_equal": "must be >= {ge}",
+    "less_than": "must be < {lt}",
+    "less_than_equal": "must be <= {le}",
+    "float_type": "must be a number",
+    "float_parsing": "must be a number",
+    "int_type": "must be a whole number",
+    "int_parsing": "must be a whole number",
+    "int_from_float": "must be a whole number",
+    "finite_number": "must be a finite number",
+    "string_type": "must be text (in quotes)",
+    "bool_type": "must be true or false",
+    "bool_parsing": "must be true or false",
+    "list_type": "must be a list [a, b, ...]",
+    "dict_type": "must be a table",
+    "model_type": "must be a table",
+    "string_too_long": "must be at most {max_length} characters long",
+    "string_too_short": "must be at least {min_length} characters long",
+}
+
+
+def _plain(err: dict, info: FieldInfo | None) -> str:
+    """The message of one pydantic error in an engineer's words (:data:`_PLAIN`); a validator's
+    own message as it is written."""
+    kind = err["type"]
+    context = {key: f"{value:g}" if isinstance(value, float) else value for key, value in (err.get("ctx") or {}).items()}
+    if kind in ("too_short", "too_long"):
+        bounds = {name: getattr(item, name) for item in (info.metadata if info else ()) for name in ("min_length", "max_length") if getattr(item, name, None) is not None}
+        if bounds.get("min_length") is not None and bounds.get("min_length") == bounds.get("max_length"):
+            return f"must have {bounds['min_length']} items"
+        return f"must have at least {context['min_length']} items" if kind == "too_short" else f"must have at most {context['max_length']} items"
+    if kind in _PLAIN:
+        try:
+            return _PLAIN[kind].format(**context)
+        except (KeyError, IndexError):
+            pass
+    msg = err["msg"].removeprefix("Value error, ").removeprefix("Assertion failed, ")
+    return "must be" + msg[len("Input should be"):] if msg.startswith("Input should be") else msg
+
+
+def _names_value(message: str, value: Any) -> bool:
+    """True when ``message`` already names ``value`` (a validator's ``detuning = 2 is outside ...``
+    or ``(got ...)``), so that no second "got" follows it."""
+    if "(got " in message:
+        return True
+    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
+        return False
+    import re
+
+    texts = {str(value), repr(value)} | ({f"{value:g}"} if isinstance(value, (int, float)) else set())
+    return any(re.search(rf"=\s*{re.escape(text)}(?![\w.])", message) for text in texts)

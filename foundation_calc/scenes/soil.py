@@ -30,6 +30,9 @@ METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "sp26": ("deformation_modulus", "soil_class"),
 }
 
+#: Largest spread of the soil's stiffness a ``modulus_range`` may bracket (factors within 1/10 .. 10).
+MODULUS_FACTOR_LIMITS = (0.1, 10.0)
+
 #: The keys each method cannot do without (lysmer and gazetas need one of G, V_s besides).
 METHOD_REQUIRED: dict[str, tuple[str, ...]] = {
     "coefficients": ("c_z", "c_x"),
@@ -86,6 +89,12 @@ class Soil(SceneModel):
         "E", "Pa", "static deformation modulus of the soil from the site investigation (not 2G(1+ν) from V_s)",
         None, gt=0, examples=[3.0e7],
     )
+    modulus_range: list[float] | None = quantity(
+        "-", "-", "factors [low, high] on the soil's stiffness data (G or V_s², E, or c_z, c_x, c_phi); every"
+        " spring and dashpot is recomputed from the factored data and a check passes only if it passes over"
+        " the whole range (ACI 351.3R brackets the modulus, e.g. [0.5, 1.5]); default: the data as given",
+        None, min_length=2, max_length=2, examples=[[0.5, 1.5]],
+    )
     soil_class: Literal["sand", "sandy_loam", "loam", "clay", "coarse"] | None = quantity(
         "-", "-", "soil class of SP 26.13330, sets b0 [1/m]: "
         + ", ".join(f"{k} {v:g}" for k, v in B0_BY_CLASS.items()), None, examples=["sand"],
@@ -93,6 +102,8 @@ class Soil(SceneModel):
 
     #: The keys each method takes; a kind with other methods (the block's) sets its own.
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = METHOD_KEYS
+    #: Keys of every method for the soil's uncertainty (a kind whose checks do not judge a range sets none).
+    range_keys: ClassVar[tuple[str, ...]] = ("modulus_range",)
     #: What to say when neither a method nor c_z is given.
     no_method_text: ClassVar[str] = (
         'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
@@ -111,8 +122,8 @@ class Soil(SceneModel):
             method = "coefficients"
         if not isinstance(method, str) or method not in cls.method_keys:
             return data  # the field's own validation names the allowed methods
-        allowed = set(cls.method_keys[method]) | {"method"}
-        keys = ", ".join(cls.method_keys[method])
+        allowed = set(cls.method_keys[method]) | {"method", *cls.range_keys}
+        keys = ", ".join((*cls.method_keys[method], *cls.range_keys))
         for key in data:
             if key in allowed:
                 continue
@@ -134,6 +145,30 @@ class Soil(SceneModel):
             raise ValueError(f"each damping ratio must be in [0, 1): got {list(damping)}")
         return damping
 
+    @field_validator("modulus_range")
+    @classmethod
+    def _range_in_order(cls, factors):
+        low, high = MODULUS_FACTOR_LIMITS
+        if factors is not None and not low <= factors[0] <= factors[1] <= high:
+            raise ValueError(f"must be [low, high] factors with {low:g} <= low <= high <= {high:g} [-]")
+        return factors
+
+    def factored(self, factor: float) -> Soil:
+        """This soil with its stiffness data multiplied by ``factor`` [-] (and no range): c_z, c_x,
+        c_phi; G (V_s by sqrt(factor)); or the deformation modulus E. Damping ratios, density,
+        Poisson's ratio and the soil class stay."""
+        method = self.method_used
+        if method == "coefficients":
+            c_z = self.c_z * factor
+            update = {"c_z": c_z, "c_x": self.c_x * factor, "c_phi": None if self.c_phi is None else self.c_phi * factor}
+        elif method == "sp26":
+            update = {"deformation_modulus": self.deformation_modulus * factor}
+        elif self.shear_modulus is not None:
+            update = {"shear_modulus": self.shear_modulus * factor}
+        else:
+            update = {"shear_wave_velocity": self.shear_wave_velocity * factor**0.5}
+        return self.model_copy(update=update | {"modulus_range": None})
+
     @model_validator(mode="after")
     def _method_has_its_data(self):
         method = self.method_used
@@ -154,6 +189,12 @@ class Soil(SceneModel):
     def method_used(self) -> str:
         """The method in force: the one given, else ``"coefficients"``."""
         return self.method or "coefficients"
+
+    @property
+    def frequency_dependent(self) -> bool:
+        """True when the method's springs and dashpots change with frequency (``"gazetas"``);
+        Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
+        return self.method_used == "gazetas"
 
     @property
     def G(self) -> float:

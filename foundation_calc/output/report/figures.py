@@ -5,19 +5,10 @@ from __future__ import annotations
 import io
 
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.plots import new_figure
+from foundation_calc.checks.resonance_rule import bands_text
+from foundation_calc.output.plots import mark_resonances, new_figure
 from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure
-
-#: Labels of critical speeds closer than this fraction of the plotted range are staggered.
-LABEL_GAP = 0.04
-
-
-def _bands(detuning) -> str:
-    """``"±20 %"`` for one band, ``"1ω ±20 %, 2ω ±20 %"`` for a band per order."""
-    if isinstance(detuning, dict):
-        return ", ".join(f"{k}ω ±{v:.0%}" for k, v in sorted(detuning.items(), key=lambda kv: int(kv[0])))
-    return f"±{detuning:.0%}"
 
 
 def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
@@ -33,20 +24,8 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     if limit is not None:
         ax.axhline(units.convert("amplitude", limit), color="red", linestyle="--", label="amplitude limit")
     lo, hi = min(xs), max(xs)
-    shown = sorted(
-        (units.convert("speed", omega), label, source, band) for label, source, omega, band in series.critical
-        if lo <= units.convert("speed", omega) <= hi
-    )
-    previous, level = -float("inf"), 0
-    for centre, label, source, band in shown:
-        colour = "tab:red" if source == "paper" else "tab:orange"
-        ax.axvspan(centre * (1 - band), centre * (1 + band), color=colour, alpha=0.12, linewidth=0)
-        level = (level + 1) % 3 if centre - previous < LABEL_GAP * (hi - lo) else 0  # stagger close labels
-        previous = centre
-        ax.text(centre, 0.98 - 0.22 * level, label, rotation=90, va="top", ha="right", fontsize=7,
-                transform=ax.get_xaxis_transform())
-    ax.axvline(units.convert("speed", operating_omega), color="black", linewidth=1.5, label="operating speed")
-    ax.set_xlim(lo, hi)
+    marks = [(units.convert("speed", omega), label, source, band) for label, source, omega, band in series.critical]
+    mark_resonances(ax, marks, units.convert("speed", operating_omega), lo, hi)
     ax.set_xlabel(f"crank speed [{units.label('speed')}]")
     ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
     ax.grid(True, which="both", alpha=0.3)
@@ -58,7 +37,8 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     svg = svg[svg.index("<svg"):]  # drop the XML prolog and DOCTYPE so the SVG can sit inline in HTML
     caption = (
         f"Closed-form peaks ({series.method}) against the crank speed; shaded: the detuning band of each"
-        f" resonance's order ({_bands(series.detuning)}; red: the paper's conditions, orange: the others);"
+        f" judged resonance's order ([limits] detuning = {bands_text(series.detuning)}; red: the paper's"
+        " conditions, orange: other judged ones, grey: not judged);"
         " black line: the operating speed."
     )
     return Figure(svg, caption)

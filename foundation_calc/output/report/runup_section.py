@@ -19,7 +19,7 @@ CLOSED_FORM_NOTE = (
 
 
 def _passages(key: str, run: dict, units: DisplayUnits):
-    from foundation_calc.checks.runup import RUN_TITLES
+    from foundation_calc.checks.runup import run_title
 
     a = units.label("amplitude")
     steady = run["steady_amplitude"]
@@ -34,7 +34,7 @@ def _passages(key: str, run: dict, units: DisplayUnits):
         for p in run["passages"]
     )
     title = (
-        f"{RUN_TITLES[key].capitalize()} in {figure(run['duration'], 3)} s ({'damped' if run['damped'] else 'undamped'});"
+        f"{run_title(key).capitalize()} in {figure(run['duration'], 3)} s ({'damped' if run['damped'] else 'undamped'});"
         f" steady amplitude at the operating speed {quantity(units, 'amplitude', steady)}"
     )
     header = ("mode", "ω_n", "harmonic", "at speed", "η", "ζ", f"closed form [{a}]", f"Lewis [{a}]",

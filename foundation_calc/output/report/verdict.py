@@ -63,11 +63,11 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
 
 
 def _runup_rows(doc: dict, scene, units: DisplayUnits):
-    from foundation_calc.checks.runup import RUN_TITLES
+    from foundation_calc.checks.runup import run_title
 
     for row in doc["limits"]:
         yield (
-            f"{row['point']}, largest displacement during {RUN_TITLES[row['run']]}",
+            f"{row['point']}, largest displacement during {run_title(row['run'])}",
             quantity(units, "amplitude", row["value"]),
             "-" if row["limit"] is None else "≤ " + quantity(units, "amplitude", row["limit"]),
             ratio(row["ratio"]),

@@ -24,10 +24,6 @@ from foundation_calc.solvers.rigid_body.harmonic import harmonic_response
 from foundation_calc.solvers.rigid_body.kinematics import point_maps
 from foundation_calc.solvers.rigid_body.modes import MOTIONS, dominant_motions, eigen
 
-#: Modal force below this fraction of an order's largest modal force counts as none: the mode
-#: is not driven by that order (a plane-symmetric scene's out-of-plane modes get round-off) [-].
-DRIVEN_FRACTION = 1e-6
-
 #: Relative distance |nω - p|/p within which an undamped mode has no steady state [-].
 RESONANT_MARGIN = 1e-6
 
@@ -77,13 +73,14 @@ class Resonances:
     orders : (H,) orders n
     critical : (H, 6) speeds n ω = p_j [rad/s], i.e. p_j / n
     margin : (H, 6) |n ω - p_j| / p_j [-]
-    driven : (H, 6) whether order n's loads put a force on mode j (:data:`DRIVEN_FRACTION`)
+    share : (H, 6) forcing share |φ_jᵀ Q_n| / p_j of order n on mode j, over its largest value
+        for the machine [-] (the resonance rule's measure of what a harmonic drives)
     """
 
     orders: np.ndarray
     critical: np.ndarray
     margin: np.ndarray
-    driven: np.ndarray
+    share: np.ndarray
 
 
 def resonances(modes: BlockModes, exc: Excitation, omega=None) -> Resonances:
@@ -91,9 +88,9 @@ def resonances(modes: BlockModes, exc: Excitation, omega=None) -> Resonances:
     omega = exc.omega if omega is None else omega
     p = modes.frequencies
     n = exc.orders[:, None].astype(float)
-    modal = np.abs(exc.Q @ modes.shapes)  # (H, 6): |φ_jᵀ Q_n|
-    driven = modal > DRIVEN_FRACTION * modal.max(axis=1, keepdims=True)
-    return Resonances(exc.orders, p[None, :] / n, np.abs(n * omega - p[None, :]) / p[None, :], driven)
+    static = np.abs(exc.Q @ modes.shapes) / p  # (H, 6): |φ_jᵀ Q_n| / p_j
+    share = static / static.max()
+    return Resonances(exc.orders, p[None, :] / n, np.abs(n * omega - p[None, :]) / p[None, :], share)
 
 
 def resonant(modes: BlockModes, res: Resonances) -> bool:

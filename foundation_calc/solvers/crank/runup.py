@@ -20,7 +20,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from foundation_calc.errors import ConvergenceError
+from foundation_calc.errors import ConvergenceError, PhysicsError
 from foundation_calc.solvers.crank.averaged import linearise
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
@@ -53,11 +53,13 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     Raises
     ------
     PhysicsError
-        when the foundation is unstable in rocking.
+        when the foundation is unstable in rocking, alone or with the rod's weight
+        (:func:`require_stable_rest`).
     """
     require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
     lin = linearise(design, phases(SAMPLES))
     M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    require_stable_rest(K, design.a)
     if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0:
         C = np.zeros_like(C)  # the mechanism's mean velocity terms vanish: what is left is round-off
     f1, f2, f3 = (_forcing(design, s) for s in (1.0, 2.0, 3.0))
@@ -73,6 +75,33 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     n = np.arange(HARMONICS + 1)[keep]
     load = RotatingLoad(n.astype(float), A[keep], B[keep])
     return Structure(mass=M, damping=C, stiffness=K, load=load, points=_point_maps(horizontal, height))
+
+
+def require_stable_rest(K, a) -> float:
+    """The rocking stiffness left once the base slides, K̄θθ - K̄xθ K̄θx / K̄xx [N m/rad], of the
+    averaged stiffness ``K`` (order x, y, θ) of a crank axis at ``a`` [m] from the centre of mass.
+
+    It is c_φ I1 - P h (:func:`~foundation_calc.solvers.crank.frequencies.require_stable_rocking`)
+    with the mean overturning moment of the rod's weight added; when it is not positive the rest
+    position is unstable, the start-up has no oscillation to follow (ω² < 0 for a mode).
+
+    Raises
+    ------
+    PhysicsError
+        when that stiffness is not positive, naming the crank axis's height.
+    """
+    rocking = float(K[2, 2] - K[0, 2] * K[2, 0] / K[0, 0]) if K[0, 0] > 0.0 else float(K[2, 2])
+    if not rocking > 0.0:
+        raise PhysicsError(
+            "the foundation with its mechanism is unstable in rocking about rest: the rocking stiffness"
+            " left once the base slides (c_φ·I1 - P·h with the mean overturning moment of the rod's weight,"
+            f" crank axis {a:.4g} m from the centre of mass) is {rocking:.4g} N m/rad, not positive;"
+            " its start-up cannot be computed",
+            field="mechanism.crank_axis_to_cog",
+            hint="bring the crank axis nearer the centre of mass, lighten the rod (mechanism.rod_mass), or"
+            " stiffen the base in rocking (soil.c_phi, foundation.base_second_moment)",
+        )
+    return rocking
 
 
 def _point_maps(horizontal, height) -> np.ndarray:
@@ -128,4 +157,4 @@ def mechanism_inertia(design: CrankDesign) -> float:
     return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
 
 
-__all__ = ["block_structure", "mechanism_inertia", "structure", "vendor_load", "with_vendor_loads"]
+__all__ = ["block_structure", "mechanism_inertia", "require_stable_rest", "structure", "vendor_load", "with_vendor_loads"]

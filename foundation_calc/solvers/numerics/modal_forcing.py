@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from foundation_calc.solvers.numerics.symmetric_modes import symmetric_modes
+
 
 def modal_forcing_weights(M, K, forces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Natural frequencies, mass-normalised mode shapes and the weights w_nj of each harmonic.
@@ -32,16 +34,13 @@ def modal_forcing_weights(M, K, forces) -> tuple[np.ndarray, np.ndarray, np.ndar
     shapes : φ_j as columns, shape (D, D)
     weights : w_nj = |φ_jᵀ F_n|/p_j, shape (N, D) (0 for a mode of zero frequency)
 
+    The modes are :func:`~foundation_calc.solvers.numerics.symmetric_modes.symmetric_modes`.
+
     >>> p, phi, w = modal_forcing_weights(np.diag([2.0, 1.0]), np.diag([8.0, 9.0]), np.array([[2.0, 0.0], [0.0, 3.0]]))
     >>> p.tolist(), np.round(w, 12).tolist()
     ([2.0, 3.0], [[0.707106781187, 0.0], [0.0, 1.0]])
     """
-    M = np.asarray(M, dtype=float)
-    K = np.asarray(K, dtype=float)
-    L = np.linalg.cholesky((M + M.T) / 2.0)
-    inv = np.linalg.inv(L)
-    squared, vectors = np.linalg.eigh(inv @ ((K + K.T) / 2.0) @ inv.T)
-    shapes = inv.T @ vectors  # φ = L^{-T} v: φᵀ M φ = 1
+    squared, shapes = symmetric_modes(np.asarray(K, dtype=float), np.asarray(M, dtype=float))
     natural = np.sqrt(np.clip(squared, 0.0, None))
     modal = np.abs(np.asarray(forces, dtype=complex) @ shapes)
     weights = np.where(natural > 0.0, modal / np.where(natural > 0.0, natural, 1.0), 0.0)

@@ -22,6 +22,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy.linalg import eigh
 
+from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.numerics.passage import lewis_peak, passage_peak
 from foundation_calc.solvers.numerics.sweep_response import (
     Ramp,
@@ -174,8 +175,19 @@ def steady_peaks(structure: Structure, omega) -> tuple[np.ndarray, np.ndarray, t
 
 
 def modes(structure: Structure):
-    """Undamped natural frequencies [rad/s] and mass-normalised mode shapes (columns)."""
+    """Undamped natural frequencies [rad/s] and mass-normalised mode shapes (columns).
+
+    Raises
+    ------
+    PhysicsError
+        when a mode has ω² ≤ 0 (or not a number): the structure has no stable rest position.
+    """
     p2, shapes = eigh(structure.stiffness, structure.mass)
+    if not p2.min() > 0.0:
+        raise PhysicsError(
+            f"the structure has no stable rest position: its lowest mode has ω² = {p2.min():.4g} rad²/s²,"
+            " not positive (a stiffness matrix that is not positive definite); its start-up cannot be computed"
+        )
     return np.sqrt(p2), shapes
 
 

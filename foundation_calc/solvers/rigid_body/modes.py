@@ -1,8 +1,10 @@
 """Undamped modes of a rigid body on springs: K v = p² M v.
 
 Source: the generalised symmetric eigenproblem of a linear undamped system; M symmetric positive
-definite, K symmetric. Solved by Cholesky reduction, with the rotations scaled by a length of the
-body so that translations and rotations are alike in size (the eigenvalues do not change).
+definite, K symmetric. Solved by Cholesky reduction
+(:func:`~foundation_calc.solvers.numerics.symmetric_modes.symmetric_modes`), with the rotations
+scaled by a length of the body so that translations and rotations are alike in size (the
+eigenvalues do not change).
 """
 
 from __future__ import annotations
@@ -10,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError
+from foundation_calc.solvers.numerics.symmetric_modes import symmetric_modes
 from foundation_calc.solvers.rigid_body.inertia import skew
 
 #: Names of the six coordinates, in order: translations of O, rotations about x, y, z.
@@ -31,16 +34,14 @@ def eigen(K, M, length) -> tuple[np.ndarray, np.ndarray]:
         when M is not positive definite in double precision.
     """
     D = np.diag([1.0, 1.0, 1.0] + [1.0 / length] * 3)
-    M0, K0 = D @ M @ D, D @ K @ D
     try:
-        Li = np.linalg.inv(np.linalg.cholesky(0.5 * (M0 + np.swapaxes(M0, -1, -2))))
-        p2, v = np.linalg.eigh(Li @ (0.5 * (K0 + np.swapaxes(K0, -1, -2))) @ np.swapaxes(Li, -1, -2))
+        p2, shapes = symmetric_modes(K, M, D)
     except np.linalg.LinAlgError:
         raise ConvergenceError(
             "the 6-DOF natural frequencies cannot be computed in double precision: the body's"
             " masses, sizes and stiffnesses span too many orders of magnitude"
         ) from None
-    return p2, D @ np.swapaxes(Li, -1, -2) @ v
+    return p2, shapes
 
 
 def dominant_motions(shapes, m, r_G, J_G) -> np.ndarray:

@@ -29,24 +29,22 @@ sidewall area, h = D - d/2 the depth of its centroid), Table 2::
 (Some open implementations use B' in η_ry's first factor or the larger side as B'; the
 published table has L' there and B' the smaller half-side.)
 
-Radiation dashpots of the surface footing, Table 1, with Lysmer's analog wave velocity
-V_La = 3.4 V_s / (π (1 - ν))::
-
-    C_z = ρ V_La A_b c̃_z,   C_x = ρ V_s A_b,   C_y = ρ V_s A_b c̃_y,   C_r = ρ V_La I_b c̃_r
-
-taken at the low-frequency limit c̃_z = c̃_y = 1 (frequency-independent: Gazetas' charts stay
-within about 10 % of it for a0 = ω B'/V_s < 1 and L'/B' <= 4, the range of block foundations at
-their operating speed), and c̃_r = 0: rocking radiation vanishes as a0² at low frequency and
-its chart values are not coded here, so the rocking mode keeps its material damping only (the
-response is over-estimated, never under-estimated). The sidewall's extra radiation is left out
-for the same reason. The damping ratio of each mode is ξ = C / (2 sqrt(K m)) plus the soil's
-material damping.
+Dashpots and the change of the springs with frequency are those of
+:func:`~foundation_calc.solvers.soil.impedance.footing_impedance` (Gazetas' Tables 1-2 for the
+dashpots of the base and the sidewalls, Pais & Kausel's closed forms for the stiffness modifiers
+and for the rise of the rocking radiation with frequency), taken at the frequency ``omega``. The
+damping ratio of each mode at that frequency is ξ = C(ω)/(2 sqrt(K(ω) m)) plus the soil's
+material damping; at the mode's own frequency ω = sqrt(K(ω)/m) it is C ω/(2 K), the ratio of
+Pais & Kausel's β. At ω = 0 the rocking radiation of a surface footing vanishes (it grows as a0²),
+so the rocking damping of the static springs is the material damping alone: evaluate the
+springs at the rocking mode's frequency for its damping.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from foundation_calc.solvers.soil.impedance import footing_impedance
 from foundation_calc.solvers.soil.springs import SoilSprings
 
 
@@ -64,8 +62,8 @@ def lysmer_analog_velocity(V_s, nu):
     return 3.4 * V_s / (np.pi * (1.0 - nu))
 
 
-def gazetas_springs(G, rho, nu, L, B, D, M_tot, I_0, material_damping) -> SoilSprings:
-    """K_z, K_x, K_φ and damping ratios of a rectangular footing (module docstring).
+def gazetas_springs(G, rho, nu, L, B, D, M_tot, I_0, material_damping, omega=0.0) -> SoilSprings:
+    """K_z, K_x, K_φ and damping ratios of a rectangular footing at the frequency ``omega`` (module docstring).
 
     Parameters
     ----------
@@ -78,10 +76,35 @@ def gazetas_springs(G, rho, nu, L, B, D, M_tot, I_0, material_damping) -> SoilSp
     M_tot : total vibrating mass [kg]
     I_0 : mass moment of inertia about the base's centroidal axis normal to the plane [kg m²]
     material_damping : material damping ratio of the soil, added to each radiation ratio [-]
+    omega : circular frequency at which the springs and dashpots are taken [rad/s]; 0 (the
+        default) gives Gazetas' static springs and the low-frequency dashpots
 
     >>> s = gazetas_springs(7.2e7, 1800.0, 0.33, 4.0, 2.0, 0.0, 34800.0, 1.0e5, 0.0)
     >>> round(float(s.K_z) / 1e6, 1), round(float(s.K_x) / 1e6, 1)
     (707.4, 549.8)
+    """
+    K_z, K_h, K_phi = gazetas_static_springs(G, nu, L, B, D)
+    z = footing_impedance(K_z, K_h, K_phi, G, rho, nu, L, B, D, omega)
+    return SoilSprings(
+        K_z=z.K_z,
+        K_x=z.K_x,
+        K_phi=z.K_phi,
+        xi_z=z.C_z / (2.0 * np.sqrt(z.K_z * M_tot)) + material_damping,
+        xi_x=z.C_x / (2.0 * np.sqrt(z.K_x * M_tot)) + material_damping,
+        xi_phi=z.C_phi / (2.0 * np.sqrt(z.K_phi * I_0)) + material_damping,
+    )
+
+
+def gazetas_static_springs(G, nu, L, B, D):
+    """Static K_z, K_x, K_φ of Gazetas' Tables 1-2 (module docstring) [N/m, N/m, N m/rad].
+
+    Parameters
+    ----------
+    G : shear modulus of the soil [Pa]
+    nu : Poisson's ratio of the soil [-]
+    L : base length along the plane of motion [m]
+    B : base width, normal to the plane of motion [m]
+    D : embedment depth, 0 for a surface footing [m]
     """
     long_half = np.maximum(L, B) / 2.0
     short_half = np.minimum(L, B) / 2.0
@@ -111,20 +134,7 @@ def gazetas_springs(G, rho, nu, L, B, D, M_tot, I_0, material_damping) -> SoilSp
 
     K_h = np.where(along_long, K_x_long * eta_x, K_y * eta_y)
     K_phi = np.where(along_long, K_ry * eta_ry, K_rx * eta_rx)
-    K_z = K_z * eta_z
-
-    V_s = np.sqrt(G / rho)
-    A_b = L * B
-    C_z = rho * lysmer_analog_velocity(V_s, nu) * A_b
-    C_x = rho * V_s * A_b
-    return SoilSprings(
-        K_z=K_z,
-        K_x=K_h,
-        K_phi=K_phi,
-        xi_z=C_z / (2.0 * np.sqrt(K_z * M_tot)) + material_damping,
-        xi_x=C_x / (2.0 * np.sqrt(K_h * M_tot)) + material_damping,
-        xi_phi=np.zeros_like(K_phi) + material_damping,
-    )
+    return K_z * eta_z, K_h, K_phi
 
 
-__all__ = ["gazetas_springs", "lysmer_analog_velocity"]
+__all__ = ["gazetas_springs", "gazetas_static_springs", "lysmer_analog_velocity"]

@@ -1,4 +1,5 @@
-"""Torsional spring and damping of a rigid base on an elastic half-space (Reissner-Sagoci).
+"""Torsional spring and damping of a rigid base on an elastic half-space: Reissner-Sagoci's
+analog (with Lysmer's and Hall's) and Gazetas' formula.
 
 Source: F.E. Richart, J.R. Hall, R.D. Woods, *Vibrations of Soils and Foundations* (1970),
 ch. 7 and 10 (torsion of a rigid circular base, as collected in B.M. Das, G.V. Ramana,
@@ -45,4 +46,20 @@ def lysmer_torsion(G, rho, L, B, J_z, material_damping):
     return 16.0 * G * r**3 / 3.0, 0.5 / (1.0 + 2.0 * B_psi) + material_damping
 
 
-__all__ = ["lysmer_torsion", "torsion_radius"]
+
+
+def gazetas_torsion(G, L, B):
+    """Static torsional spring of a rectangular surface footing [N m/rad], Gazetas (1991), Table 1:
+    K_t = G J_t^0.75 [4 + 11 (1 - χ)^10], J_t = L B (L² + B²)/12 the polar second moment of the
+    base, χ = B'/L' (short over long side). Its radiation damping vanishes at low frequency, as
+    the rocking's does (:mod:`~foundation_calc.solvers.soil.gazetas`): material damping only.
+
+    >>> round(gazetas_torsion(1.0, 2.0, 2.0) / (8.0 / 3.0) ** 0.75, 12)   # square: 4 + 0
+    4.0
+    """
+    chi = min(L, B) / max(L, B)
+    J_t = L * B * (L * L + B * B) / 12.0
+    return G * J_t**0.75 * (4.0 + 11.0 * (1.0 - chi) ** 10)
+
+
+__all__ = ["gazetas_torsion", "lysmer_torsion", "torsion_radius"]

@@ -1,0 +1,186 @@
+"""The uncertain soil as a distribution: percentiles of the frequencies, margins and peaks, and the
+probability that a check fails, from a sample of the closed forms in one array operation.
+
+Distributions (independent):
+
+- soil stiffness factor F ~ lognormal with median 1 and coefficient of variation ``cov_modulus``
+  (ln F ~ N(0, s²), s² = ln(1 + cov²)): every spring is F times the scene's (c_z, c_x, c_phi;
+  K ∝ G or E), the damping ratios stay, so the dashpots C = 2 ξ sqrt(K m) go as sqrt(F)
+  (:func:`~foundation_calc.solvers.crank.closed_form.varied`). A lognormal keeps the modulus
+  positive and makes 1/F as likely as F; site moduli scatter with a COV of about 0.2-0.5.
+- speed factor ~ normal with mean 1 and standard deviation ``cov_speed`` (0: the speed as given),
+  for a machine whose speed drifts or is not yet fixed.
+
+A frequency-dependent soil (Gazetas) is sampled as the checks take it: the factor scales G (so
+V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (fixed-point
+iteration over the whole array), and each harmonic n of the response takes the springs at n ω.
+The sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
+
+Per sample: k0, p1, p2 (the paper's operator), the margin of the speed from the nearest of the
+paper's six conditions (measured, as the check does, to the nearer of the zero-order and the
+averaged-inertia critical speed), the peak
+horizontal and vertical displacement of C by the corrected first approximation (sampled at
+:data:`PEAK_PHASES` phases a revolution). The resonance
+check fails where that margin is below the scene's detuning (the paper's conditions fail inside
+the band), the amplitude check where a peak exceeds ``[limits] amplitude`` or the sample is
+resonant; a sample whose rocking spring does not exceed the weight's overturning moment tips over
+and fails both.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from foundation_calc.checks.crank_amplitudes import splice_harmonics
+from foundation_calc.checks.crank_resonance import design_frequencies
+from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, rocking_stability_margin
+from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin
+from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+#: Percentiles reported [%].
+PERCENTILES = (5.0, 50.0, 95.0)
+
+#: Phases per revolution at which a sample's displacement is evaluated for its peak: for the
+#: first approximation's harmonics up to 3 the sampled maximum is at most 1 - cos(3π/96) = 0.48 %
+#: below the true peak (the checks' own peaks are found by Newton; here 1e5 samples must cost
+#: well under a second).
+PEAK_PHASES = 96
+
+#: Samples per block of the peak search (bounds its memory: 2 · 96 · 8 bytes a sample).
+PEAK_CHUNK = 16_384
+
+
+@dataclass(frozen=True)
+class SoilSample:
+    """The sample's distributions and failure probabilities.
+
+    ``percentiles``: name -> values at :data:`PERCENTILES` (SI: rad/s, -, m);
+    ``failure_probability``: check -> fraction of samples that fail it [-].
+    """
+
+    samples: int
+    cov_modulus: float
+    cov_speed: float
+    seed: int
+    percentiles: dict[str, tuple[float, ...]]
+    failure_probability: dict[str, float]
+
+
+def lognormal_factors(rng: np.random.Generator, n: int, cov: float) -> np.ndarray:
+    """``n`` factors of a lognormal with median 1 and coefficient of variation ``cov`` [-].
+
+    >>> f = lognormal_factors(np.random.default_rng(0), 400_000, 0.3)
+    >>> round(float(np.median(f)), 2), round(float(f.std() / f.mean()), 2)
+    (1.0, 0.3)
+    """
+    return np.exp(rng.normal(0.0, math.sqrt(math.log1p(cov * cov)), n))
+
+
+def sampled_peaks(cos: np.ndarray, sin: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Largest |x|, |y| [m] over one revolution of series of shape (n, 2, K + 1), sampled at
+    :data:`PEAK_PHASES` phases (:data:`PEAK_PHASES` bounds the error).
+
+    >>> c = np.zeros((1, 2, 4)); c[0, 1, 1] = 2.0
+    >>> [float(v[0]) for v in sampled_peaks(c, np.zeros_like(c))]
+    [0.0, 2.0]
+    """
+    harmonics = np.arange(cos.shape[-1])
+    phase = 2.0 * np.pi * np.arange(PEAK_PHASES) / PEAK_PHASES
+    basis_cos, basis_sin = np.cos(np.outer(harmonics, phase)), np.sin(np.outer(harmonics, phase))
+    out = np.empty(cos.shape[:-1])
+    for start in range(0, cos.shape[0], PEAK_CHUNK):
+        block = slice(start, start + PEAK_CHUNK)
+        values = cos[block] @ basis_cos + sin[block] @ basis_sin
+        out[block] = np.abs(values).max(axis=-1)
+    return out[:, 0], out[:, 1]
+
+
+def _designs_at(scene, speed: np.ndarray):
+    """``at(soil_frequency, factor)``: the scene's design as arrays, speed ω × ``speed``, soil
+    stiffness × ``factor``, a frequency-dependent soil's springs and dashpots taken at
+    ``soil_frequency`` [rad/s] (arrays alike)."""
+    base = scene.design()
+    omega = base.omega * speed
+    if not scene.soil.frequency_dependent:
+        return lambda soil_frequency, factor: varied(base, omega=omega, soil_factor=factor)
+    from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
+    from foundation_calc.solvers.soil.gazetas import gazetas_springs
+
+    f, s = scene.foundation, scene.soil
+    L, B = f.dimensions
+    h, I_c = f.cog_height, f.moment_of_inertia
+    M_scene, M_rod = scene.total_mass, base.M_tot  # as scene.soil_springs and scene.design take them
+
+    def at(soil_frequency, factor):
+        k = gazetas_springs(s.G * factor, s.density, s.poisson, L, B, f.embedment or 0.0, M_scene,
+                            I_c + M_scene * h * h, s.material_damping or 0.0, soil_frequency)
+        c = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, M_rod, I_c + M_rod * h * h)
+        return replace(base, omega=omega, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
+                       c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi)
+
+    return at
+
+
+def _consistent(at, factor, which: int) -> NaturalFrequencies:
+    """k0, p1, p2 of every sample, each on the springs at its own frequency (ω = p(K(ω)));
+    ``which`` 0: the paper's operator, 1: the averaged inertia."""
+    static = design_frequencies(at(0.0, factor))[which]
+    return NaturalFrequencies(**{
+        mode: consistent_frequency(lambda w, mode=mode: getattr(design_frequencies(at(w, factor))[which], mode),
+                                   getattr(static, mode))
+        for mode in ("k0", "p1", "p2")
+    })
+
+
+def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
+    """Sample a ``crank_foundation`` scene's mechanism ``n`` times (module docstring)."""
+    rng = np.random.default_rng(seed)
+    factor = lognormal_factors(rng, n, cov_modulus)
+    speed = np.maximum(1.0 + cov_speed * rng.normal(size=n), 1e-3) if cov_speed > 0.0 else np.ones(n)
+    at = _designs_at(scene, speed)
+    d = at(0.0, factor)
+    stable = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h) > 0.0
+    safe = np.where(stable, factor, 1.0)  # a tipping sample is counted, never solved
+    static = at(0.0, safe)
+    omega = static.omega
+    if scene.soil.frequency_dependent:
+        zero, averaged = _consistent(at, safe, 0), _consistent(at, safe, 1)
+        motions = [first_approximation_motion(at(k * omega, safe)) for k in range(4)]
+        motion, resonant = splice_harmonics([m for m, _ in motions]), motions[1][1]
+    else:
+        zero, averaged = design_frequencies(static)
+        motion, resonant = first_approximation_motion(static)
+    margins = [condition_margin(omega, zero, averaged, c) for c in CONDITIONS if c.source == "paper"]
+    margin = np.min(np.stack(margins), axis=0)
+    resonant = np.asarray(resonant, dtype=bool)
+    horizontal, vertical = sampled_peaks(np.nan_to_num(motion.cos[..., :2, :]), np.nan_to_num(motion.sin[..., :2, :]))
+    fails_resonance = ~stable | (margin < scene.limits.detuning)
+    fails_amplitude = ~stable | resonant
+    if scene.limits.amplitude is not None:
+        fails_amplitude |= (horizontal > scene.limits.amplitude) | (vertical > scene.limits.amplitude)
+    ok = stable & ~resonant
+
+    def pct(values):
+        kept = values[ok] if ok.any() else values
+        return tuple(float(v) for v in np.percentile(kept, PERCENTILES))
+
+    return SoilSample(
+        samples=n, cov_modulus=cov_modulus, cov_speed=cov_speed, seed=seed,
+        percentiles={
+            "modulus_factor": pct(factor), "k0": pct(zero.k0), "p1": pct(zero.p1), "p2": pct(zero.p2),
+            "resonance_margin": pct(margin), "peak_horizontal_C": pct(horizontal), "peak_vertical_C": pct(vertical),
+        },
+        failure_probability={
+            "tips_over": float(np.mean(~stable)),
+            "resonance": float(np.mean(fails_resonance)),
+            "amplitudes": float(np.mean(fails_amplitude)),
+            "any": float(np.mean(fails_resonance | fails_amplitude)),
+        },
+    )
+
+
+__all__ = ["PERCENTILES", "SoilSample", "lognormal_factors", "sample_scene", "sampled_peaks"]
