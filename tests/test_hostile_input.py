@@ -168,8 +168,32 @@ def test_pinned_platform_crash_with_a_huge_length():
     _numbers_never_crash_a_check(PLATFORM_HUGE_LENGTH)
 
 
+#: Draws that once ended the start-up check of the run-up scene in NaN/inf: a rod radius of gyration
+#: of 1e15 m and a base area of 1e-15 m² leave the averaged operator singular; both must now end in
+#: a per-scene exit 3 naming the cause (conditioning / no stable rest position).
+RUNUP_SINGULAR = [
+    _mutate(SEEDS["frame_saw_soft_soil_runup.toml"], ("mechanism", "rod_radius_of_gyration"), 1e15),
+    _mutate(SEEDS["frame_saw_soft_soil_runup.toml"], ("foundation", "base_area"), 1e-15),
+]
+
+
+@pytest.mark.parametrize("document", RUNUP_SINGULAR, ids=["rod_radius_of_gyration", "base_area"])
+def test_singular_runup_scene_ends_in_exit_3_without_nan(runner, tmp_path, document):
+    scene = tmp_path / "singular.toml"
+    scene.write_text(tomli_w.dumps(document), encoding="utf-8")
+    result = runner.invoke(app, ["check", str(scene), "--json"])
+    assert result.exit_code == 3, result.output
+    assert "Traceback" not in result.output
+    doc = json.loads(result.stdout)
+    assert _finite(doc)
+    invalid = [c for s in doc["scenes"] for c in s["checks"] if c["verdict"] == "invalid"]
+    assert invalid and all(c["problems"] for c in invalid), invalid
+
+
 @settings(max_examples=30, deadline=None)
 @given(rescaled_scenes())
+@example(RUNUP_SINGULAR[0])
+@example(RUNUP_SINGULAR[1])
 def test_numbers_the_loader_accepts_never_crash_a_check(document):
     """Within the accepted magnitudes every check ends in a finite verdict or an FcalcError (exit 3)."""
     _numbers_never_crash_a_check(document)
