@@ -135,3 +135,14 @@ def test_no_column_mixes_notations(name):
         for j, numeric in enumerate(t.numeric):
             cells = [row[j] for row in t.rows if numeric and row[j] not in ("0", "-")]
             assert len({"·10" in c for c in cells}) <= 1, (t.title, cells)
+
+
+def test_platform_markdown_sheet_writes_the_figure_the_readme_promises(runner, tmp_path):
+    """README: `fcalc report configs/platform_paper_example.toml -o platform.md` (+ platform-figure1.svg)."""
+    pytest.importorskip("matplotlib")
+    from foundation_calc.cli.app import app
+
+    out = tmp_path / "platform.md"
+    assert runner.invoke(app, ["report", str(CONFIGS / "platform_paper_example.toml"), "-o", str(out)]).exit_code == 0
+    svg = (tmp_path / "platform-figure1.svg").read_text(encoding="utf-8")
+    assert svg.startswith("<svg") and "platform-figure1.svg" in out.read_text(encoding="utf-8")

@@ -343,13 +343,14 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     return Section("6-DOF verification", (verification, freqs, sens))
 
 
-def platform_sections(docs: dict, units: DisplayUnits) -> tuple[Section, ...]:
+def platform_sections(docs: dict, units: DisplayUnits, figures: tuple[Figure, ...] = ()) -> tuple[Section, ...]:
     """The sections of a vibrating platform's sheet from the ``design`` check's document."""
     doc = docs["design"]
     return (
         _platform_inputs(doc, units),
         _platform_design(doc, units),
         _platform_verification(doc, units),
+        *((Section("Plots", figures),) if figures else ()),
         _equation_section(equations.PLATFORM),
         Section(
             "Accuracy",

@@ -61,7 +61,10 @@ def raise_unjudged(runs, source: str) -> None:
 def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
     """What a scene kind shows besides its checks (nothing for a kind without its own sections)."""
     if loaded.kind == "platform" and "design" in documents:
-        return platform_sections(documents, units)
+        from foundation_calc.output.report.figures import platform_modes_figure
+
+        plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
+        return platform_sections(documents, units, plots)
     if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
         plots = (sweep_figure_of(loaded, units, operating_speed(documents["resonance"])),) if figures else ()
         return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)

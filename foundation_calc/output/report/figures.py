@@ -42,3 +42,34 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
         " black line: the operating speed."
     )
     return Figure(svg, caption)
+
+
+def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Figure:
+    """The platform's six natural frequencies (6-DOF, undamped) on the speed axis, each with its
+    ±detuning band, and the operating speed: how far the design sits from every mode."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = new_figure(7.0, 2.6)
+    omega = doc["speed"]["omega"]
+    modes = sorted((units.convert("speed", f["omega"]), f["mode"]) for f in doc["natural_frequencies"])
+    for level, (centre, label) in enumerate(modes):
+        ax.axvspan(centre * (1 - detuning), centre * (1 + detuning), color="tab:red", alpha=0.12, linewidth=0)
+        ax.axvline(centre, color="tab:red", linewidth=1.0)
+        ax.text(centre, 0.97 - 0.16 * (level % 4), f" {label}", va="top", ha="left", fontsize=7,
+                transform=ax.get_xaxis_transform())
+    ax.axvline(units.convert("speed", omega), color="black", linewidth=1.5, label="operating speed")
+    top = max(max(c for c, _ in modes), units.convert("speed", omega)) * 1.25
+    ax.set_xlim(0.0, top)
+    ax.set_yticks([])
+    ax.set_xlabel(f"speed [{units.label('speed')}]")
+    ax.grid(True, axis="x", alpha=0.3)
+    fig.legend(fontsize=7, loc="outside upper center")
+    buffer = io.StringIO()
+    fig.savefig(buffer, format="svg")
+    plt.close(fig)
+    svg = buffer.getvalue()
+    caption = (
+        f"Natural frequencies of the platform on its isolators (6-DOF, undamped) with the ±{detuning:.0%}"
+        " detuning band of [limits] detuning shaded; black line: the operating speed."
+    )
+    return Figure(svg[svg.index("<svg"):], caption)
