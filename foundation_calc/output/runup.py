@@ -243,7 +243,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
     for key, r in report.runs.items():
         speed = r.omega * (r.response.t / r.duration if r.direction > 0 else 1.0 - r.response.t / r.duration)
         records.append((run_title(key), r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
-                        [(p.time, p) for p in r.passages]))
+                        [(p.time, p) for p in r.passages], r.steady))
     if report.motor is not None:
         m = report.motor
         marks = []
@@ -251,16 +251,16 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
             crossed = np.nonzero(m.speed >= t.speed)[0]
             if crossed.size:
                 marks.append((float(m.t[crossed[0]]), t))
-        records.append((run_title("motor"), m.t, m.magnitude, m.speed, marks))
+        records.append((run_title("motor"), m.t, m.magnitude, m.speed, marks, float(report.steady_points.max())))
     fig, _ = new_figure(9.0, 1.0 + 3.0 * len(records))
     fig.clf()
     axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]
     period = 2.0 * np.pi / report.omega
-    for ax, (name, t, values, speed, marks) in zip(axes, records):
+    alone = " (the machine alone; the tables add the others' steady peaks)" if report.speeds else ""
+    for ax, (name, t, values, speed, marks, steady) in zip(axes, records):
         et, ev = _envelope(t, values, period)
-        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)")
-        ax.axhline(float(report.steady_points.max()) * 1e3, color="tab:green", ls="--", lw=1,
-                   label="steady, operating speed")
+        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)" + alone)
+        ax.axhline(steady * 1e3, color="tab:green", ls="--", lw=1, label="steady, operating speed" + alone)
         if limit is not None:
             ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
         for k, (when, p) in enumerate(marks):

@@ -32,10 +32,14 @@ SYMBOLS = {
     "pi": "π", "nu": "ν", "rho": "ρ", "c_phi": "c_φ", "K_phi": "K_φ", "xi_z": "ξ_z", "xi_x": "ξ_x",
     "xi_phi": "ξ_φ", "C_phi": "C_φ", "r0psi": "r0ψ", "B_phi": "B_φ", "D_phi": "D_φ", "omega": "ω",
     "mu": "μ", "lam": "λ", "zeta": "ζ", "eta": "η", "M_sigma": "M_Σ", "xi_m": "ξ_m", "omega_t": "ω_t",
+    "Lh": "L'", "Bh": "B'", "chi": "χ", "eta_z": "η_z", "eta_h": "η_h", "eta_phi": "η_φ", "K_zs": "K_z,s",
+    "K_hs": "K_h,s", "K_phis": "K_φ,s", "C_zb": "C_z", "V_La": "V_La", "b_sp": "b₀", "A10": "A₁₀",
+    "K_zw": "K_z(ω)", "K_xw": "K_x(ω)", "K_phiw": "K_φ(ω)", "C_phiw": "C_φ(ω)", "xi_zw": "ξ_z(ω)", "xi_xw": "ξ_x(ω)",
+    "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
-_MATH = {"sqrt": math.sqrt, "pi": math.pi, "abs": abs}
+_MATH = {"sqrt": math.sqrt, "pi": math.pi, "abs": abs, "max": max, "min": min}
 _POWERS = {"**2": "²", "**3": "³", "**4": "⁴", "**5": "⁵", "**0.5": "^½", "**0.25": "^¼"}
 
 
@@ -44,6 +48,8 @@ def _pretty(expression: str, names, times: str = "·") -> str:
     text = expression
     for power, shown in _POWERS.items():
         text = text.replace(power, shown)
+    text = re.sub(r"\*\*\(([0-9./]+)\)", r"^(\1)", text)
+    text = re.sub(r"\*\*([0-9.]+)", r"^\1", text)
     text = text.replace("*", times).replace("/", " / ").replace("sqrt", "√")
     return _NAME.sub(lambda m: names(m.group()), text)
 
@@ -66,7 +72,7 @@ class Chain:
         """Evaluate ``expression`` over the names given, record the row and return the value."""
         value = float(eval(expression, {"__builtins__": {}}, {**_MATH, **self.values}))  # our own formulas only
         formula = _pretty(expression, lambda n: SYMBOLS.get(n, n))
-        substituted = _pretty(expression, lambda n: SYMBOLS[n] if n in _MATH else figure(self.values[n], DIGITS), " × ")
+        substituted = _pretty(expression, lambda n: SYMBOLS.get(n, n) if n in _MATH else figure(self.values[n], DIGITS), " × ")
         symbol = SYMBOLS.get(name, name)
         self.rows.append((symbol, formula, substituted, figure(value, DIGITS), unit, source))
         self.values[name] = value

@@ -10,6 +10,7 @@ compares every end value with the solvers'.
 from __future__ import annotations
 
 from foundation_calc.output.report.handcalc import Chain
+from foundation_calc.output.report.soil_methods import gazetas_chains, soil_givens, sp26_springs_chain
 from foundation_calc.solvers.constants import GRAVITY
 
 KM = "[KM]"
@@ -33,18 +34,8 @@ def _coefficient_springs(scene) -> Chain:
 
 
 def _lysmer_springs(scene) -> Chain:
-    f, s = scene.foundation, scene.soil
-    L, B = f.dimensions
-    M_tot = scene.total_mass
     chain = Chain("Soil springs and radiation damping: Lysmer's and Hall's analogs (soil.method = \"lysmer\")")
-    chain.given("G", s.G, "Pa", "shear modulus of the soil")
-    chain.given("rho", s.density, "kg/m³", "mass density of the soil")
-    chain.given("nu", s.poisson, "-", "Poisson's ratio of the soil")
-    chain.given("L", L, "m", "base length in the plane of motion")
-    chain.given("B", B, "m", "base width")
-    chain.given("M_tot", M_tot, "kg", "total vibrating mass")
-    chain.given("I_0", f.moment_of_inertia + M_tot * f.cog_height**2, "kg m²", "moment of inertia about the base axis, I_c + M_tot h²")
-    chain.given("xi_m", s.material_damping or 0.0, "-", "material damping ratio of the soil")
+    soil_givens(chain, scene)
     chain.step("r0", "sqrt(B*L/pi)", "m", RHW, "radius of the circle of the base's area")
     chain.step("r0psi", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment")
     chain.step("K_z", "4*G*r0/(1 - nu)", "N/m", f"{RHW} (Lysmer)", "vertical base spring")
@@ -98,12 +89,11 @@ def _dashpots(scene, springs) -> Chain:
 
 
 def crank_chains(scene) -> list[Chain]:
-    """The hand calculations of a crank foundation scene: springs by its soil method (where the
-    method has a chain here), natural frequencies and, when the soil is damped, the dashpots."""
+    """The hand calculations of a crank foundation scene: springs by its soil method , natural frequencies and, when the soil is damped, the dashpots."""
     springs = scene.soil_springs()
     method = scene.soil.method_used
-    chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs]}.get(method, [])
-    out = [make(scene) for make in chains]
+    chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
+    out = gazetas_chains(scene) if method == "gazetas" else [make(scene) for make in chains]
     out.append(_frequencies(scene, springs))
     if any(float(getattr(springs, k)) > 0 for k in ("xi_z", "xi_x", "xi_phi")):
         out.append(_dashpots(scene, springs))
@@ -128,25 +118,14 @@ def platform_chain(doc: dict) -> Chain:
     return chain
 
 
-#: Soil methods without a chain here: where their springs are stated and their source.
-SPRINGS_ELSEWHERE = {
-    "gazetas": "Springs and damping by Gazetas' formulas [Ga] (static stiffnesses, embedment factors): the"
-               " values are in the inputs' springs table.",
-    "sp26": "Springs by the code's coefficients from the deformation modulus [SP26]: the values are in the"
-            " inputs' springs table.",
-}
-
-
 def methods_section(scene, documents: dict):
     """The hand calculations and nomenclature of the scene (None for a kind without chains here)."""
     from foundation_calc.output.report.handcalc import nomenclature_table
-    from foundation_calc.output.report.model import Paragraph, Section
+    from foundation_calc.output.report.model import Section
 
     blocks = []
     if scene.kind == "crank_foundation":
         chains = crank_chains(scene)
-        note = SPRINGS_ELSEWHERE.get(scene.soil.method_used)
-        blocks += [Paragraph(note)] if note else []
     elif scene.kind == "platform" and "design" in documents:
         chains = [platform_chain(documents["design"])]
     else:

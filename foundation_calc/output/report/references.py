@@ -31,6 +31,8 @@ REFERENCES = {
           " 2011, chapter 5.",
     "Ga": "G. Gazetas, \"Formulas and charts for impedances of surface and embedded foundations\", Journal of"
           " Geotechnical Engineering (ASCE) 117(9), 1991, pp. 1363-1381.",
+    "PK": "J. Pais, E. Kausel, \"Approximate formulas for dynamic stiffnesses of rigid foundations\", Soil Dynamics"
+          " and Earthquake Engineering 7(4), 1988, pp. 213-227.",
     "NIST": "NEHRP Consultants Joint Venture, Soil-Structure Interaction for Building Structures, NIST GCR"
             " 12-917-21, National Institute of Standards and Technology, Gaithersburg, MD, 2012, Tables 2-2, 2-3.",
     "ACI": "ACI Committee 351, Report on Foundations for Dynamic Equipment, ACI 351.3R-18, American Concrete"

@@ -1,0 +1,161 @@
+"""Hand calculations of the soil springs and damping by Gazetas' formulas and by SP 26.13330.
+
+The same chains as the Lysmer chain of :mod:`~foundation_calc.output.report.methods`, for the
+two other elastic-soil methods, each printing the formulas of its solver with their table
+numbers: :mod:`foundation_calc.solvers.soil.gazetas` (Gazetas 1991, Tables 1-2; the embedment
+factors with the sidewall in contact over the full depth, d = D; the radiation dashpots of
+:func:`~foundation_calc.solvers.soil.impedance.footing_impedance` at ω = 0, the springs the
+sheet's checks use) and :mod:`foundation_calc.solvers.soil.sp26`. ``tests/test_report_methods.py``
+compares every end value with the solvers'.
+"""
+
+from __future__ import annotations
+
+from foundation_calc.output.report.handcalc import SYMBOLS, Chain
+from foundation_calc.solvers.constants import GRAVITY
+
+GA = "[Ga] Table 1"
+GA2 = "[Ga] Table 2 (d = D)"
+SP26 = "[SP26]"
+PK = "[PK]; [NIST] Table 2-3a"
+
+
+def soil_givens(chain: Chain, scene) -> None:
+    """The half-space soil's and the block's inputs of a springs chain (Lysmer, Gazetas)."""
+    f, s = scene.foundation, scene.soil
+    L, B = f.dimensions
+    M_tot = scene.total_mass
+    chain.given("G", s.G, "Pa", "shear modulus of the soil")
+    chain.given("rho", s.density, "kg/m³", "mass density of the soil")
+    chain.given("nu", s.poisson, "-", "Poisson's ratio of the soil")
+    chain.given("L", L, "m", "base length in the plane of motion")
+    chain.given("B", B, "m", "base width")
+    chain.given("M_tot", M_tot, "kg", "total vibrating mass")
+    chain.given("I_0", f.moment_of_inertia + M_tot * f.cog_height**2, "kg m²", "moment of inertia about the base axis, I_c + M_tot h²")
+    chain.given("xi_m", s.material_damping or 0.0, "-", "material damping ratio of the soil")
+
+
+def gazetas_springs_chain(scene) -> Chain:
+    """Gazetas' static springs (embedment factors when embedded) and the low-frequency damping."""
+    L, B = scene.foundation.dimensions
+    D = scene.foundation.embedment or 0.0
+    along_long = L >= B
+    chain = Chain("Soil springs and radiation damping: Gazetas' formulas (soil.method = \"gazetas\")")
+    soil_givens(chain, scene)
+    chain.step("Lh", "max(L, B)/2", "m", GA, "longer half-side of the base")
+    chain.step("Bh", "min(L, B)/2", "m", GA, "shorter half-side of the base")
+    chain.step("chi", "Bh/Lh", "-", GA, "aspect ratio B'/L' of the base")
+    chain.step("I_b", "B*L**3/12", "m⁴", GA, "second moment of the base about the rocking axis")
+    chain.step("K_zs", "2*G*Lh/(1 - nu)*(0.73 + 1.54*chi**0.75)", "N/m", GA, "static vertical spring of the surface base")
+    chain.step("K_y", "2*G*Lh/(2 - nu)*(2 + 2.5*chi**0.85)", "N/m", GA, "static horizontal spring along the short side")
+    if along_long:
+        chain.step("K_hs", "K_y - 0.2*G*Lh*(1 - chi)/(0.75 - nu)", "N/m", f"{GA} (K_x, L along the long side)",
+                   "static horizontal spring in the plane of motion")
+        chain.step("K_phis", "3*G/(1 - nu)*I_b**0.75*(Lh/Bh)**0.15", "N m/rad", f"{GA} (K_ry, rocking about the short axis)",
+                   "static rocking spring of the surface base")
+    else:
+        chain.step("K_hs", "K_y", "N/m", f"{GA} (K_y, L along the short side)", "static horizontal spring in the plane of motion")
+        chain.step("K_phis", "G/(1 - nu)*I_b**0.75*(Lh/Bh)**0.25*(2.4 + 0.5*chi)", "N m/rad",
+                   f"{GA} (K_rx, rocking about the long axis)", "static rocking spring of the surface base")
+    if D > 0.0:
+        chain.given("D", D, "m", "embedment depth (sidewall in contact over all of it)")
+        chain.step("A_w", "2*D*(2*Lh + 2*Bh)", "m²", GA2, "sidewall area in contact")
+        chain.step("eta_z", "(1 + D/(21*Bh)*(1 + 1.3*chi))*(1 + 0.2*(A_w/(4*Bh*Lh))**(2/3))", "-", GA2,
+                   "embedment factor of the vertical spring")
+        if along_long:
+            chain.step("eta_h", "(1 + 0.15*sqrt(D/Bh))*(1 + 0.52*(D/2*A_w/(Lh*Bh**2))**0.4)", "-", f"{GA2}, η_x",
+                       "embedment factor of the horizontal spring")
+            chain.step("eta_phi", "1 + 0.92*(D/Lh)**0.6*(1.5 + (D/Lh)**1.9)", "-", f"{GA2}, η_ry",
+                       "embedment factor of the rocking spring")
+        else:
+            chain.step("eta_h", "(1 + 0.15*sqrt(D/Bh))*(1 + 0.52*(D/2*A_w/(Bh*Lh**2))**0.4)", "-", f"{GA2}, η_y",
+                       "embedment factor of the horizontal spring")
+            chain.step("eta_phi", "1 + 1.26*(D/Bh)*(1 + (D/Bh)*chi**0.5)", "-", f"{GA2}, η_rx",
+                       "embedment factor of the rocking spring")
+        chain.step("K_z", "eta_z*K_zs", "N/m", GA2, "vertical base spring")
+        chain.step("K_x", "eta_h*K_hs", "N/m", GA2, "horizontal base spring")
+        chain.step("K_phi", "eta_phi*K_phis", "N m/rad", GA2, "rocking base spring")
+    else:
+        chain.given("D", 0.0, "m", "embedment depth (surface base)")
+        chain.step("K_z", "K_zs", "N/m", GA, "vertical base spring")
+        chain.step("K_x", "K_hs", "N/m", GA, "horizontal base spring")
+        chain.step("K_phi", "K_phis", "N m/rad", GA, "rocking base spring")
+    chain.step("V_s", "sqrt(G/rho)", "m/s", GA, "shear wave velocity")
+    chain.step("V_La", "3.4*V_s/(pi*(1 - nu))", "m/s", GA, "Lysmer's analog wave velocity")
+    chain.step("C_z", "rho*(V_La*B*L + V_s*2*D*(L + B))", "N s/m", f"{GA}, Table 2", "vertical radiation dashpot (base and sidewalls)")
+    chain.step("C_x", "rho*(V_s*B*L + V_s*2*L*D + V_La*2*B*D)", "N s/m", f"{GA}, Table 2", "horizontal radiation dashpot (base and sidewalls)")
+    chain.step("C_phi", "rho*4/3*D**3*(V_La*B/2 + V_s*L/2)", "N m s/rad", f"{GA}, Table 2 at ω = 0 (the base radiates no rocking at rest)",
+               "rocking radiation dashpot at low frequency")
+    chain.step("xi_z", "C_z/(2*sqrt(K_z*M_tot)) + xi_m", "-", GA, "vertical damping ratio (radiation + material)")
+    chain.step("xi_x", "C_x/(2*sqrt(K_x*M_tot)) + xi_m", "-", GA, "horizontal damping ratio (radiation + material)")
+    chain.step("xi_phi", "C_phi/(2*sqrt(K_phi*I_0)) + xi_m", "-", GA, "rocking damping ratio (radiation + material)")
+    return chain
+
+
+def gazetas_dynamic_chain(scene, static: Chain) -> Chain:
+    """Gazetas' springs and dashpots at the operating speed ω: Pais & Kausel's stiffness
+    modifiers and the rocking radiation's rise with frequency (``impedance`` module docstring).
+    The exact harmonic balance and the first harmonic take them at ω; harmonic n at n ω by the
+    same formulas."""
+    L, B = scene.foundation.dimensions
+    about_short = L >= B
+    chain = Chain("Gazetas' springs and dashpots at the operating speed ω (frequency-dependent soil)")
+    for name in ("G", "rho", "nu", "L", "B", "D", "M_tot", "I_0", "xi_m", "Lh", "Bh", "I_b", "V_s", "V_La", "K_z", "K_x", "K_phi",
+                 "C_z", "C_x"):
+        meaning, unit = static.nomenclature[SYMBOLS.get(name, name)]
+        chain.given(name, static.values[name], unit, meaning)
+    chain.given("omega", scene.speed.omega_rad_s, "rad/s", "operating speed (circular frequency of the first harmonic)")
+    chain.step("a_d", "omega*Bh/V_s", "-", PK, "dimensionless frequency")
+    chain.step("r", "Lh/Bh", "-", PK, "aspect ratio L'/B' of the base")
+    chain.step("k_z", "1 - (0.4 + 0.2/r)*a_d**2/(10/(1 + 3*(r - 1)) + a_d**2)", "-", PK, "dynamic modifier of the vertical spring")
+    if about_short:
+        chain.step("k_phi", "1 - 0.55*a_d**2/(0.6 + 1.4/r**3 + a_d**2)", "-", f"{PK}, k_ry",
+                   "dynamic modifier of the rocking spring")
+        chain.step("c_r", "1.8/(1 + 1.75*(r - 1))", "-", f"{PK}, β_yy shape", "frequency constant of the rocking radiation")
+    else:
+        chain.step("k_phi", "1 - (0.55 + 0.01*sqrt(r - 1))*a_d**2/(2.4 - 0.4/r**3 + a_d**2)", "-", f"{PK}, k_rx",
+                   "dynamic modifier of the rocking spring")
+        chain.step("c_r", "2.2 - 0.4/r**3", "-", f"{PK}, β_xx shape", "frequency constant of the rocking radiation")
+    chain.step("c_rw", "a_d**2/(c_r + a_d**2)", "-", "[Ga] Table 1 with the frequency shape of [PK]", "rocking radiation coefficient at ω")
+    chain.step("K_zw", "k_z*K_z", "N/m", PK, "vertical spring at ω")
+    chain.step("K_xw", "K_x", "N/m", f"{PK} (k_x = 1)", "horizontal spring at ω")
+    chain.step("K_phiw", "k_phi*K_phi", "N m/rad", PK, "rocking spring at ω")
+    chain.step("C_phiw", "rho*((V_La*I_b + V_s*(2*B*D*L**2/4 + D*L**3/6))*c_rw + 4/3*D**3*(V_La*B/2 + V_s*L/2))", "N m s/rad",
+               f"{GA}, Table 2", "rocking radiation dashpot at ω (base and sidewalls)")
+    chain.step("xi_zw", "C_z/(2*sqrt(K_zw*M_tot)) + xi_m", "-", GA, "vertical damping ratio at ω")
+    chain.step("xi_xw", "C_x/(2*sqrt(K_xw*M_tot)) + xi_m", "-", GA, "horizontal damping ratio at ω")
+    chain.step("xi_phiw", "C_phiw/(2*sqrt(K_phiw*I_0)) + xi_m", "-", GA, "rocking damping ratio at ω")
+    return chain
+
+
+def sp26_springs_chain(scene) -> Chain:
+    """The springs and damping ratios of SP 26.13330 from the static deformation modulus."""
+    from foundation_calc.solvers.soil.sp26 import A10, B0_BY_CLASS
+
+    f, s = scene.foundation, scene.soil
+    chain = Chain("Soil springs and damping by SP 26.13330 (soil.method = \"sp26\")")
+    chain.given("E", s.deformation_modulus, "Pa", "static deformation modulus of the soil")
+    chain.given("b_sp", B0_BY_CLASS[s.soil_class], "1/m", f"coefficient of the soil class ({s.soil_class})")
+    chain.given("A", f.base_area, "m²", "area of the base")
+    chain.given("I1", f.base_second_moment, "m⁴", "second moment of the base area about its axis normal to the plane")
+    chain.given("A10", A10, "m²", "reference area of the code's formula")
+    chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass")
+    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+    chain.step("C_z", "b_sp*E*(1 + sqrt(A10/A))", "N/m³", SP26, "coefficient of elastic uniform compression")
+    chain.step("K_z", "C_z*A", "N/m", SP26, "vertical base spring")
+    chain.step("K_x", "0.7*C_z*A", "N/m", f"{SP26}, C_x = 0.7 C_z", "horizontal base spring")
+    chain.step("K_phi", "2*C_z*I1", "N m/rad", f"{SP26}, C_φ = 2 C_z", "rocking base spring")
+    chain.step("p_m", "M_tot*g/A/1000", "kPa", SP26, "mean static pressure under the base")
+    chain.step("xi_z", "2/sqrt(p_m)", "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
+    chain.step("xi_x", "0.6*xi_z", "-", SP26, "horizontal damping ratio")
+    chain.step("xi_phi", "0.5*xi_z", "-", SP26, "rocking damping ratio")
+    return chain
+
+
+def gazetas_chains(scene) -> list[Chain]:
+    """Gazetas' static springs and, the soil being frequency-dependent, those at the speed ω."""
+    static = gazetas_springs_chain(scene)
+    return [static, gazetas_dynamic_chain(scene, static)]
+
+
+__all__ = ["gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "soil_givens", "sp26_springs_chain"]
