@@ -13,7 +13,7 @@ from pydantic import field_validator
 
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
 from foundation_calc.scenes.block_soil import BlockSoil
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, SceneModel, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.project import Project
 
@@ -38,18 +38,9 @@ class BlockLimits(Limits):
     )
 
 
-class BlockOperation(SceneModel):
+class BlockOperation(RunTimes):
     """Start-up and run-down of every machine (fcalc runup): each runs from rest to its own speed
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
-
-    run_up_time: float | None = quantity(
-        "T_up", "s", "time of the linear speed ramp of each machine from rest to its speed (fcalc runup)", None, gt=0,
-        examples=[10.0],
-    )
-    run_down_time: float | None = quantity(
-        "T_down", "s", "time of the linear speed ramp of each machine from its speed to rest (fcalc runup)", None, gt=0,
-        examples=[20.0],
-    )
 
 
 class BlockScene(SceneModel):

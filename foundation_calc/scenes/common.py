@@ -127,6 +127,20 @@ class SpeedFields(SceneModel):
         return next(k for k in ("omega", "frequency_hz", "speed_rpm") if getattr(self, k) is not None)
 
 
+class RunTimes(SceneModel):
+    """Start-up and run-down times of an [operation] table (``fcalc runup``): linear speed ramps
+    from rest to the operating speed and back (on a block, every machine to its own speed)."""
+
+    run_up_time: float | None = quantity(
+        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
+        examples=[10.0],
+    )
+    run_down_time: float | None = quantity(
+        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
+        examples=[20.0],
+    )
+
+
 class Drive(SceneModel):
     """A motor of limited torque that starts the machine (fcalc runup): the speed then follows
     the torque against the load instead of a prescribed ramp."""

@@ -16,6 +16,7 @@ from foundation_calc.scenes.common import (
     LENGTH_SCALE_FACTOR,
     SCENE_SCHEMA_VERSION,
     Drive,
+    RunTimes,
     SceneModel,
     SpeedFields,
     detuning_bands,
@@ -207,18 +208,9 @@ class Load(SceneModel):
         return self
 
 
-class Operation(SpeedFields):
+class Operation(RunTimes, SpeedFields):
     """The machine's speed, for a scene whose machine is given by its loads only, and its start-up
     and run-down (fcalc runup)."""
-
-    run_up_time: float | None = quantity(
-        "T_up", "s", "time of the linear speed ramp from rest to the operating speed (fcalc runup)", None, gt=0,
-        examples=[10.0],
-    )
-    run_down_time: float | None = quantity(
-        "T_down", "s", "time of the linear speed ramp from the operating speed to rest (fcalc runup)", None, gt=0,
-        examples=[20.0],
-    )
 
     @model_validator(mode="after")
     def _exactly_one_speed(self):  # replaces SpeedFields': with a [mechanism] the table has no speed
