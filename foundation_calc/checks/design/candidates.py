@@ -1,0 +1,64 @@
+"""A batch of candidate designs and the verdicts of the checks on it, held as arrays.
+
+A candidate assigns a value to each varied scene key (a dotted path of the scene file, such as
+``block.length`` or ``foundation.block.height``); a batch of N candidates is a mapping
+``key -> (N,) array`` of values in the scene's SI units. A kind's evaluator,
+``evaluate(scene, batch) -> CandidateVerdicts``, judges every candidate of the batch by the checks
+``fcalc check`` runs on the kind (:data:`~foundation_calc.checks.registry.CHECKS`, same names), with
+array operations over the batch (no Python loop per candidate), so that a search can afford
+10⁵ candidates a second.
+
+Utilisation is the demand over the capacity of a check: 1 at its limit, above 1 where it fails
+(an amplitude: peak / limit; a resonance: the required detuning over the margin of the governing
+condition; an office rule: value / allowed value). The worst margin of a candidate is
+1 - max(utilisation) over its checks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Outcome codes of :attr:`CandidateVerdicts.outcome`, in rising severity.
+PASS, WARN, FAIL = 0, 1, 2
+
+#: scene kind -> module whose ``evaluate(scene, batch)`` returns :class:`CandidateVerdicts`.
+EVALUATORS: dict[str, str] = {}
+
+#: A batch: varied scene key -> (N,) values [SI].
+Batch = Mapping[str, np.ndarray]
+
+
+@dataclass(frozen=True)
+class CandidateVerdicts:
+    """Every check's verdict on every candidate of a batch of N.
+
+    Attributes
+    ----------
+    volume : (N,) concrete volume of the block [m³] (the objective)
+    mass : (N,) mass of the block [kg]
+    outcome : check name -> (N,) int8 of :data:`PASS`, :data:`WARN`, :data:`FAIL`
+    utilisation : check name -> (N,) demand / capacity [-]; NaN where the check judges no number
+    governing : check name -> (N,) int index into ``reasons[check]``: what governs the check there
+    reasons : check name -> the texts ``governing`` indexes (e.g. ``"3ω = p1"``,
+        ``"displacement at crankshaft bearing, z"``)
+    """
+
+    volume: np.ndarray
+    mass: np.ndarray
+    outcome: dict[str, np.ndarray]
+    utilisation: dict[str, np.ndarray]
+    governing: dict[str, np.ndarray]
+    reasons: dict[str, tuple[str, ...]]
+
+    @property
+    def worst_outcome(self) -> np.ndarray:
+        """(N,) the most severe outcome over the checks."""
+        return np.max(np.stack(list(self.outcome.values())), axis=0)
+
+    @property
+    def worst_margin(self) -> np.ndarray:
+        """(N,) 1 - the largest utilisation over the checks [-] (negative: the candidate fails)."""
+        return 1.0 - np.nanmax(np.stack(list(self.utilisation.values())), axis=0)
