@@ -95,7 +95,8 @@ def judged(run) -> tuple[int, float, str]:
     if run.verdict == "invalid":
         return FAIL, math.inf, "; ".join(part for part in run.reason if isinstance(part, str))
     utilisation = UTILISATION.get(run.check)
-    value, reason = (math.nan, run.check) if utilisation is None else utilisation(run.report)
+    text = "".join(part for part in run.reason if isinstance(part, str)) or run.check
+    value, reason = (math.nan, text) if utilisation is None else utilisation(run.report)
     return OUTCOME_CODES[run.verdict], float(value), reason
 
 
