@@ -124,7 +124,8 @@ def print_design(sizing: Sizing) -> None:
         console.print(f"  {a['key']}: {a['low']:g} to {a['high']:g} {a['unit']}, step {a['step']:.3g} {a['unit']}{refined}")
     if found.refined_steps:
         result = "found a cheaper design" if found.improved_by_refinement else "found none cheaper"
-        console.print(f"refinement: {found.refined_candidates} candidates within one grid step of the cheapest, {result}")
+        console.print(f"refinement: {found.refined_candidates} candidates cheaper than the cheapest within one grid step of it,"
+                      f" {result}")
     keys = found.grid.keys
     if found.found:
         best = document["best"]

@@ -119,9 +119,10 @@ class Grid:
 
 
 def grid(kind: str, ranges: Sequence[Range], step: float | None = None, points: int | None = None,
-         maximum: int = MAX_CANDIDATES) -> Grid:
+         maximum: int = MAX_CANDIDATES, evaluator: str = "") -> Grid:
     """The grid of ``ranges`` (:func:`axis` each); raises :class:`VaryError` for no range, a key
-    given twice, or more than ``maximum`` candidates (naming the size of each axis)."""
+    given twice, or more than ``maximum`` candidates (naming the size of each axis, and
+    ``evaluator``, what judges them, when it sets the maximum)."""
     if not ranges:
         raise VaryError("give at least one --vary KEY=LOW:HIGH, e.g. --vary block.length=4:10")
     axes = tuple(axis(kind, r, step, points) for r in ranges)
@@ -132,7 +133,8 @@ def grid(kind: str, ranges: Sequence[Range], step: float | None = None, points: 
     found = Grid(axes)
     if found.size > maximum:
         sizes = " × ".join(f"{len(a.values)} ({a.variable.key})" for a in axes)
-        raise VaryError(f"the grid has {found.size} candidates ({sizes}), more than the {maximum} searched at once;"
+        why = f" ({evaluator})" if maximum < MAX_CANDIDATES and evaluator else ""
+        raise VaryError(f"the grid has {found.size} candidates ({sizes}), more than the {maximum} searched at once{why};"
                         " use a coarser --step or fewer --points (the search refines near the cheapest design)")
     return found
 

@@ -10,8 +10,9 @@ chunk. A second walk tallies the governing failure of every candidate cheaper th
 (evaluating those alone; the volume needs no check).
 
 Refinement: around the cheapest passing grid candidate, each varied key again over one grid step
-either side at a :data:`REFINE` times finer step; a cheaper passing candidate found there is the
-answer. The search says the step it reached; cheaper designs further from the grid's cheapest,
+either side at a :data:`REFINE` times finer step (the caller may choose a coarser factor for a
+slow evaluator); of those, the candidates cheaper than it are judged (no other can be the
+answer), and a cheaper passing one is the answer. The search says the step it reached; cheaper designs further from the grid's cheapest,
 between its points, are not looked for.
 
 Pareto set: among the passing candidates, those that no other passing candidate beats on both
@@ -191,7 +192,7 @@ class _Walk:
         self.samples.append((verdicts.volume[keep], worst_margin(verdicts)[keep], ok[keep]))
 
 
-def _refinement_batch(grid: Grid, best: dict[str, float]) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+def _refinement_batch(grid: Grid, best: dict[str, float], factor: int) -> tuple[dict[str, np.ndarray], dict[str, float]]:
     """The finer grid around ``best``: each key over one grid step either side (within its range)."""
     columns, steps = [], {}
     for a in grid.axes:
@@ -199,7 +200,7 @@ def _refinement_batch(grid: Grid, best: dict[str, float]) -> tuple[dict[str, np.
         if step == 0:
             columns.append(np.array([best[key]]))
             continue
-        fine = step / REFINE
+        fine = step / factor
         low, high = max(best[key] - step, a.values[0]), min(best[key] + step, a.values[-1])
         columns.append(np.round(np.linspace(low, high, int(round((high - low) / fine)) + 1), DECIMALS))
         steps[key] = fine
@@ -217,17 +218,20 @@ def _volume(batch: Batch, given: dict[str, float]) -> np.ndarray:
 
 
 def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool = False, chunk: int = CHUNK,
-           refine: bool = True) -> Search:
+           refine: int = REFINE) -> Search:
     """Walk ``grid`` in chunks of ``chunk`` with ``evaluate`` (module docstring). ``given``: the
-    scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is)."""
+    scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is);
+    ``refine``: the refinement's factor on the grid step (0 or 1: no refinement)."""
     start = time.perf_counter()
     found = Search(grid, strict)
     walk = _Walk(found, evaluate)
     for first in range(0, grid.size, chunk):
         walk.add(grid.chunk(first, first + chunk))
-    if len(walk.passed.volume) and refine and any(a.step for a in grid.axes):
-        batch, found.refined_steps = _refinement_batch(grid, walk.passed.cheapest().design(0))
+    if len(walk.passed.volume) and refine > 1 and any(a.step for a in grid.axes):
+        batch, found.refined_steps = _refinement_batch(grid, walk.passed.cheapest().design(0), refine)
         before = walk.passed.cheapest().volume[0]
+        cheaper = _volume(batch, given) < before
+        batch = {k: v[cheaper] for k, v in batch.items()}
         for first in range(0, len(next(iter(batch.values()))), chunk):
             part = {k: v[first:first + chunk] for k, v in batch.items()}
             verdicts = evaluate(part)
