@@ -81,7 +81,7 @@ def design_document(sizing: Sizing) -> dict:
         "refinement": {"candidates": found.refined_candidates, "improved": found.improved_by_refinement} if found.refined_steps else None,
         "passed": found.found,
         "best": designs[0] if found.found else None,
-        "at_low_end": found.at_low_end,
+        "at_range_end": found.at_range_end,
         "pareto": designs if found.found else [],
         "pareto_size": len(found.pareto.volume) if found.found else 0,
         "closest": None if found.found else designs[0],
@@ -132,9 +132,9 @@ def print_design(sizing: Sizing) -> None:
         console.print(f"\n[bold]cheapest passing design[/]: {_values_text(best['values'])} m ({', '.join(keys)}),"
                       f" volume {best['volume']:.4g} m³, mass {best['mass'] / 1e3:.4g} t,"
                       f" worst margin {_number(best['worst_margin'])}")
-        if found.at_low_end:
-            console.print(f"[bold yellow]note[/]: it takes the low end of {', '.join(found.at_low_end)}: a cheaper design"
-                          " may lie below the range searched")
+        if found.at_range_end:
+            ends = ", ".join(f"the {end} end of {key}" for key, end in found.at_range_end.items())
+            console.print(f"[bold yellow]note[/]: it takes {ends}: a cheaper design may lie beyond the range searched")
     else:
         best = document["closest"]
         everywhere = ", ".join(found.fails_everywhere) or "none (each candidate fails some check)"

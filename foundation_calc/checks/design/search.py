@@ -148,13 +148,19 @@ class Search:
         return self.best is not None and len(self.best.volume) > 0
 
     @property
-    def at_low_end(self) -> list[str]:
-        """The varied keys whose range's low end the cheapest design takes: a cheaper design may lie
-        below the range (each dimension adds volume)."""
+    def at_range_end(self) -> dict[str, str]:
+        """Varied key -> ``"low"`` or ``"high"``: the ends of their ranges the cheapest design takes.
+        A cheaper design may lie beyond them (below a low end plainly; above a high end when more
+        of one dimension lets the others shrink)."""
         if not self.found:
-            return []
+            return {}
         best = self.best.design(0)
-        return [a.variable.key for a in self.grid.axes if len(a.values) > 1 and best[a.variable.key] <= a.values[0]]
+        ends = {}
+        for a in self.grid.axes:
+            value = best[a.variable.key]
+            if len(a.values) > 1 and value in (a.values[0], a.values[-1]):
+                ends[a.variable.key] = "low" if value == a.values[0] else "high"
+        return ends
 
     @property
     def fails_everywhere(self) -> list[str]:
