@@ -82,6 +82,15 @@ def _runup(report) -> tuple[float, str]:
 UTILISATION = {"resonance": _resonance, "amplitudes": _amplitudes, "office": _office, "runup": _runup}
 
 
+def _kind_of(run) -> str:
+    """What a check without a number warns of, without the candidate's values (so that candidates
+    tally by it): the plausibility warning's quantity, ``"block-to-machine mass ratio"``."""
+    text = "".join(part for part in run.reason if isinstance(part, str))
+    if run.check == "inputs" and ": " in text:
+        return "outside the plausible range: " + text.split(": ", 1)[1].split(" (", 1)[0].split(" = ", 1)[0].strip()
+    return text or run.check
+
+
 def judged(run) -> tuple[int, float, str]:
     """(outcome code, utilisation, what governs) of one :class:`~foundation_calc.checks.batch.CheckRun`.
 
@@ -95,8 +104,7 @@ def judged(run) -> tuple[int, float, str]:
     if run.verdict == "invalid":
         return FAIL, math.inf, "; ".join(part for part in run.reason if isinstance(part, str))
     utilisation = UTILISATION.get(run.check)
-    text = "".join(part for part in run.reason if isinstance(part, str)) or run.check
-    value, reason = (math.nan, text) if utilisation is None else utilisation(run.report)
+    value, reason = (math.nan, _kind_of(run)) if utilisation is None else utilisation(run.report)
     return OUTCOME_CODES[run.verdict], float(value), reason
 
 
