@@ -54,8 +54,7 @@ def _evaluator(kind: str, scene, document, source: str):
 
 
 def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None) -> None:
-    from foundation_calc.cli.sweep import writable_path
-    from foundation_calc.output.plots import FORMATS, INSTALL_HINT, plotting_available
+    from foundation_calc.cli.sweep import plot_path, writable_path
 
     if step is not None and points is not None:
         raise typer.BadParameter("give --step or --points, not both", param_hint="'--step' / '--points'")
@@ -64,12 +63,7 @@ def _options(plot: Path | None, write: Path | None, step: float | None, points: 
     if points is not None and points < 2:
         raise typer.BadParameter(f"a range needs at least 2 points (got {points})", param_hint="'--points'")
     if plot is not None:
-        if plot.suffix.lower() not in FORMATS:
-            raise typer.BadParameter(f"{str(plot)!r}: unsupported plot format {plot.suffix or '(none)'!r}; use one of"
-                                     f" {', '.join(FORMATS)}", param_hint="'--plot'")
-        writable_path(plot, "--plot")
-        if not plotting_available():
-            raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+        plot_path(plot)
     if write is not None:
         writable_path(write, "--write")
 
