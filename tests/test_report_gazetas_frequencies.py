@@ -13,23 +13,13 @@ from __future__ import annotations
 import pytest
 
 from tests.conftest import CONFIGS
+from tests.test_report_methods import _gazetas_scene
 
 TOLERANCE = 1e-9
 
 
 def _close(a: float, b: float) -> bool:
     return abs(a - b) <= TOLERANCE * max(abs(a), abs(b), 1e-300)
-
-
-def _gazetas_scene(length: float, width: float, embedment: float):
-    """The shipped Lysmer compressor on Gazetas' soil, base L × B embedded D [m]."""
-    from foundation_calc.scenes import parse_scene, read_toml
-
-    data = read_toml(CONFIGS / "compressor_medium_sand_lysmer.toml")
-    data["soil"]["method"] = "gazetas"
-    data["foundation"].update(base_length=length, base_width=width, embedment=embedment)
-    data["foundation"]["block"].update(length=length, width=width)
-    return parse_scene(data)
 
 
 def _amplitudes(scene) -> dict:
