@@ -141,13 +141,18 @@ def methods_section(scene, documents: dict):
     from foundation_calc.output.report.handcalc import nomenclature_table
     from foundation_calc.output.report.model import Section
 
-    blocks = []
+    response: tuple = ()
     if scene.kind == "crank_foundation":
+        from foundation_calc.output.report.damped_response import damped_response_blocks
+
         chains = crank_chains(scene, documents.get("amplitudes"))
+        response = damped_response_blocks(scene, documents.get("amplitudes"))
     elif scene.kind == "platform" and "design" in documents:
         chains = [platform_chain(documents["design"])]
     else:
         return None
-    blocks += [block for chain in chains for block in chain.blocks()]
-    blocks.append(nomenclature_table(chains))
+    blocks = [block for chain in chains for block in chain.blocks()]
+    terms = [block for block in response if hasattr(block, "nomenclature")]
+    blocks += [block for block in response if not hasattr(block, "nomenclature")]
+    blocks.append(nomenclature_table([*chains, *terms]))
     return Section("Methods: hand calculation of the judged numbers", tuple(blocks))
