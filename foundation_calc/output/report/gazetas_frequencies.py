@@ -17,10 +17,6 @@ from foundation_calc.output.report.handcalc import Chain, Columns
 from foundation_calc.output.report.methods import frequency_givens, frequency_steps
 from foundation_calc.output.report.soil_methods import gazetas_at
 
-#: A harmonic is shown when one of its coordinates reaches this fraction of that coordinate's
-#: largest harmonic in the checked response [-] (smaller ones take the same formulas).
-SHOWN_FRACTION = 1e-3
-
 #: At most this many harmonics are shown side by side (the page's width).
 MOST_COLUMNS = 5
 
@@ -30,20 +26,14 @@ SPRING_FREQUENCY = "circular frequency at which the springs are taken (n ω, or 
 
 
 def shown_harmonics(amplitudes: dict | None) -> list[int]:
-    """The harmonics n >= 2 of the checked response that carry at least :data:`SHOWN_FRACTION` of
-    their coordinate's largest harmonic (the first harmonic is the chain at the speed ω)."""
-    if amplitudes is None:
+    """The harmonics n >= 2 that the sheet's damped solve lists
+    (:func:`~foundation_calc.output.report.damped_response.solved_harmonics`; the first harmonic
+    is the chain at the speed ω), at most :data:`MOST_COLUMNS`."""
+    from foundation_calc.output.report.damped_response import solved_harmonics
+
+    if amplitudes is None or amplitudes["approximations"][amplitudes["checked_with"]]["resonant"]:
         return []
-    checked = amplitudes["approximations"][amplitudes["checked_with"]]
-    if checked["resonant"]:
-        return []
-    largest: dict[str, float] = {}
-    for name, h in checked["harmonics"].items():
-        dof = name.rstrip("0123456789")
-        largest[dof] = max(largest.get(dof, 0.0), h["magnitude"])
-    shown = {int(name[len(name.rstrip("0123456789")):]) for name, h in checked["harmonics"].items()
-             if h["magnitude"] >= SHOWN_FRACTION * largest[name.rstrip("0123456789")] > 0.0}
-    return sorted(n for n in shown if n >= 2)[:MOST_COLUMNS]
+    return [n for n in solved_harmonics(amplitudes) if n >= 2][:MOST_COLUMNS]
 
 
 def harmonic_columns(scene, static: Chain, harmonics: list[int]) -> Columns:
