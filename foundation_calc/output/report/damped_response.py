@@ -170,9 +170,10 @@ def _harmonics_table(solve: DampedSolve, shown: list[int]) -> Table:
     scale_Z = [max(abs(r[3][j]) for r in raw) or None for j in range(3)]
     cols_F = [column([abs(r[2][j]) for r in raw], DIGITS, scale_F[j]) for j in range(3)]
     cols_Z = [column([abs(r[3][j]) for r in raw], DIGITS, scale_Z[j]) for j in range(3)]
+    speeds = column([n * solve.omega for n, *_ in raw], DIGITS)
     for k, (n, source, F, Z) in enumerate(raw):
         phases = ["-" if cols_Z[j][k] == "0" else _phase(Z[j]) for j in range(3)]
-        row = (str(n), figure(n * solve.omega, DIGITS), *(cols_F[j][k] for j in range(3)),
+        row = (str(n), speeds[k], *(cols_F[j][k] for j in range(3)),
                *(f"{cols_Z[j][k]} ∠{phases[j]}°" if phases[j] != "-" else cols_Z[j][k] for j in range(3)))
         rows.append(row if not many else (row[0], source, *row[1:]))
     head = ("n", "nω [rad/s]", "|F_x| [N]", "|F_y| [N]", "|M_θ| [N m]", "x_n [m]", "y_n [m]", "θ_n [rad]")
@@ -192,15 +193,18 @@ def _peaks_table(solve: DampedSolve, scene, amplitudes: dict) -> Table:
     horizontal = np.array([0.0, *(p.horizontal for p in scene.points)])
     height = np.array([0.0, *(p.height for p in scene.points)])
     pk = point_peaks(solve.motion(), horizontal, height)
-    rows = []
+    labels, columns = [], [[], [], [], []]
     for i, name in enumerate(names):
         for j, direction in enumerate(("horizontal", "vertical")):
+            labels.append((name, direction))
             values = [float(getattr(pk, q)[i][j]) for q in ("displacement", "velocity", "acceleration")]
-            spread = ()
+            for k, v in enumerate(values):
+                columns[k].append(v)
             if first is not None:
                 other = first[name][direction]["displacement"]
-                spread = (figure(abs(other - values[0]) / values[0] if values[0] else 0.0, 2, 1.0),)
-            rows.append((name, direction, *(figure(v, 3) for v in values), *spread))
+                columns[3].append(abs(other - values[0]) / values[0] if values[0] else 0.0)
+    texts = [column(c, 3) for c in columns[:3]] + ([column(columns[3], 2, 1.0)] if first is not None else [])
+    rows = [(*label, *(t[k] for t in texts)) for k, label in enumerate(labels)]
     head = ("point", "direction", "displacement [m]", "velocity [m/s]", "acceleration [m/s²]")
     head += ("spread to first approx.",) if first is not None else ()
     return table("Peaks over one revolution from the sheet's Z_n: max over t of |Σ_n Re(Z_n e^{i nωt})| at C and each point",
