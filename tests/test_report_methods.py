@@ -143,7 +143,7 @@ def test_every_cited_source_has_a_full_reference(tmp_path):
     from foundation_calc.output.display_units import DisplayUnits
     from foundation_calc.output.report import markdown
     from foundation_calc.output.report.documents import scene_sheet
-    from foundation_calc.output.report.references import REFERENCES
+    from foundation_calc.references import REFERENCES
 
     for path in (CONFIGS / "compressor_medium_sand_lysmer.toml", CONFIGS / "compressor_vendor_loads.toml", CONFIGS / "platform_damped.toml"):
         sheet, _ = scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)
@@ -154,12 +154,23 @@ def test_every_cited_source_has_a_full_reference(tmp_path):
 
 
 def test_readme_lists_every_reference_in_full():
-    from foundation_calc.output.report.references import REFERENCES
+    from foundation_calc.references import REFERENCES
     from tests.conftest import ROOT
 
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     for key, entry in REFERENCES.items():
         assert f"- **[{key}]** {entry}" in readme, key
+
+
+def test_one_key_per_source():
+    """The sheet and the validation record cite from one list, and no source has two keys there
+    (two entries of one source begin with the same authors)."""
+    from foundation_calc.references import REFERENCES
+    from foundation_calc.validation import independent, published
+
+    authors = [entry.split(",")[0] for entry in REFERENCES.values()]
+    assert len(set(authors)) == len(authors), authors
+    assert {case.source for case in (*published.CASES, *independent.CASES)} <= set(REFERENCES)
 
 
 @pytest.mark.parametrize("name", ["frame_saw.toml", "platform_paper_example.toml"])
