@@ -134,6 +134,18 @@ def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bo
     return Sizing(str(scene), loaded.name, found, designs, full, tuple(disagreements), evaluator, CHUNK)
 
 
+def _tidy(value):
+    """``value`` (a document) with every float to 12 significant digits: 2.1, not 2.0999999999999996
+    (a moved position; the difference, 1e-16 m, changes no verdict)."""
+    if isinstance(value, float):
+        return float(f"{value:.12g}")
+    if isinstance(value, dict):
+        return {k: _tidy(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_tidy(v) for v in value]
+    return value
+
+
 def _write(scene: Path, path: Path, sizing):
     """Write the cheapest design: the user's scene file (without office defaults) with the varied
     keys replaced (:func:`~foundation_calc.checks.design.apply.applied_document`)."""
@@ -149,7 +161,7 @@ def _write(scene: Path, path: Path, sizing):
     values = ", ".join(f"{k} = {v:.6g} m" for k, v in best.items())
     header = f"# Sized by fcalc design from {scene.name}: {values}.\n# fcalc check passes it; its other keys are the scene's.\n"
     try:
-        write_atomically(path, header + tomli_w.dumps(applied_document(read_toml(scene), best)))
+        write_atomically(path, header + tomli_w.dumps(_tidy(applied_document(read_toml(scene), best))))
     except OSError as exc:
         raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'--write'") from None
     return dataclasses.replace(sizing, written=str(path))

@@ -155,8 +155,7 @@ def moved(position, old: tuple[float, float, float], new):
 
 
 def _move(point: list, old, new) -> list[float]:
-    """:func:`moved` of one position, to the micrometre (the file reads 2.1, not 2.0999999999999996)."""
-    return [round(float(v), 6) for v in moved(point, old, new)]
+    return [float(v) for v in moved(point, old, new)]
 
 
 def _block_positions(document: dict, old, new) -> None:
@@ -193,7 +192,7 @@ def _crank_positions(document: dict, old, new) -> None:
 
     def from_c(horizontal: float, height: float) -> tuple[float, float]:
         x, _, z = _move([horizontal, 0.0, height + h_old], old, new)
-        return x, round(z - h_new, 6)
+        return x, z - h_new
 
     mechanism = document.get("mechanism")
     if isinstance(mechanism, dict) and "crank_axis_to_cog" in mechanism:
