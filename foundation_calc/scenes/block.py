@@ -16,6 +16,7 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.soil import OnSoil
 
 #: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
@@ -51,7 +52,7 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(SceneModel):
+class BlockScene(OnSoil, SceneModel):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
