@@ -223,3 +223,29 @@ def test_bad_code_keys_are_invalid_scenes(runner, tmp_path, lines, needle):
     result = runner.invoke(app, ["amplitudes", str(_write(tmp_path, _with_limits(lines)))])
     assert result.exit_code == 3
     assert needle in result.output
+
+
+def test_the_design_evaluator_judges_the_displacement_below_600_rpm_as_check_does(tmp_path):
+    """``fcalc design``'s vectorised block evaluator against ``fcalc check``'s path, candidate by
+    candidate, on the fan block at 450 rpm (where the displacement is judged): same outcome, same
+    utilisation to 1e-9 (round-off of batched against single solves)."""
+    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.design.block import evaluate
+    from foundation_calc.checks.registry import CHECKS
+    from foundation_calc.scenes import load_scene
+    from tests.test_design_block import CODES as OUTCOME_CODES
+    from tests.test_design_block import _candidates, _one, _scalar_utilisation
+
+    path = _write(tmp_path, (CONFIGS / "block_fan_torsion_near_speed.toml").read_text(encoding="utf-8").replace("990.0", "450.0"))
+    scene = load_scene(str(path))
+    batch = _candidates(scene, 20, seed=7)
+    verdicts = evaluate(scene, batch)
+    by = set()
+    for i in range(20):
+        one = _one(scene, batch, i)
+        report = check_block(one)
+        finding = CHECKS["block_foundation"]["amplitudes"](one)
+        assert verdicts.outcome["amplitudes"][i] == OUTCOME_CODES[finding.outcome.value], (i, finding.reason)
+        np.testing.assert_allclose(verdicts.utilisation["amplitudes"][i], _scalar_utilisation("amplitudes", report), rtol=1e-9)
+        by |= {row.judged.quantity for row in report.zone_rows}
+    assert "displacement" in by  # the candidates reach rows the displacement decides

@@ -109,7 +109,17 @@ def zone(velocity_rms: float, table: ZoneTable) -> str:
     >>> zone(2.8e-3, TABLES["ISO 10816-3", 2, "rigid"]), zone(2.81e-3, TABLES["ISO 10816-3", 2, "rigid"])
     ('B', 'C')
     """
-    return ZONES[sum(velocity_rms > b for b in table.boundaries)]
+    return ZONES[int(zone_index(velocity_rms, table))]
+
+
+def zone_index(velocity_rms, table: ZoneTable, boundaries=None):
+    """Index into :data:`ZONES` of r.m.s. velocities [m/s] (float or array) in ``table``, or of
+    other values against ``boundaries`` (the displacement's [m]); a boundary value belongs to the
+    lower zone."""
+    import numpy as np
+
+    bounds = table.boundaries if boundaries is None else boundaries
+    return np.sum(np.asarray(velocity_rms, dtype=float)[..., None] > np.asarray(bounds), axis=-1)
 
 
 def displacement_zone(displacement_rms: float, table: ZoneTable) -> str:
@@ -118,7 +128,19 @@ def displacement_zone(displacement_rms: float, table: ZoneTable) -> str:
     >>> displacement_zone(45e-6, TABLES["ISO 10816-3", 2, "rigid"]), displacement_zone(46e-6, TABLES["ISO 10816-3", 2, "rigid"])
     ('B', 'C')
     """
-    return ZONES[sum(displacement_rms > b for b in table.displacement_boundaries)]
+    return ZONES[int(zone_index(displacement_rms, table, table.displacement_boundaries))]
+
+
+def code_zone_index(velocity_rms, displacement_rms, table: ZoneTable, speed_rpm: float):
+    """:func:`code_zone` on arrays (a batch of designs): (zone index into :data:`ZONES`, True where
+    the displacement decides). Velocities [m/s], displacements [m] of the same shape."""
+    import numpy as np
+
+    by_velocity = zone_index(velocity_rms, table)
+    if speed_rpm >= DISPLACEMENT_SPEED_RPM:
+        return by_velocity, np.zeros(np.shape(by_velocity), dtype=bool)
+    by_displacement = zone_index(displacement_rms, table, table.displacement_boundaries)
+    return np.maximum(by_velocity, by_displacement), by_displacement > by_velocity
 
 
 @dataclass(frozen=True)
@@ -199,12 +221,13 @@ def code_zone(table: ZoneTable, velocity_rms: float, displacement_rms: float, sp
     'B'
     """
     highest = ZONES.index(acceptable or "B")
+    index, decides = code_zone_index(velocity_rms, displacement_rms, table, speed_rpm)
     by_velocity = zone(velocity_rms, table)
     by_displacement = displacement_zone(displacement_rms, table) if speed_rpm < DISPLACEMENT_SPEED_RPM else None
-    if by_displacement is not None and ZONES.index(by_displacement) > ZONES.index(by_velocity):
-        return CodeZone(by_displacement, "displacement", displacement_rms, table.displacement_boundaries[highest],
+    if decides:
+        return CodeZone(ZONES[int(index)], "displacement", displacement_rms, table.displacement_boundaries[highest],
                         by_velocity, by_displacement)
-    return CodeZone(by_velocity, "velocity", velocity_rms, table.boundaries[highest], by_velocity, by_displacement)
+    return CodeZone(ZONES[int(index)], "velocity", velocity_rms, table.boundaries[highest], by_velocity, by_displacement)
 
 
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
@@ -214,10 +237,14 @@ def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
     >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
     (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
     """
-    i = ZONES.index(zone_name)
+    return zone_verdicts(acceptable)[ZONES.index(zone_name)]
+
+
+def zone_verdicts(acceptable: str | None) -> tuple[Outcome, Outcome, Outcome, Outcome]:
+    """The verdict of each zone of :data:`ZONES` (:func:`zone_outcome`)."""
     if acceptable is None:
-        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
-    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)
+    return tuple(Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL for i in range(len(ZONES)))
 
 
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
@@ -247,5 +274,6 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "CodeZone", "JudgedRow", "ZoneTable", "application_warnings",
-           "code_zone", "displacement_zone", "zone", "zone_outcome"]
+__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "CodeZone", "JudgedRow", "ZoneTable",
+           "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "zone", "zone_index",
+           "zone_outcome", "zone_verdicts"]

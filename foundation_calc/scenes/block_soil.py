@@ -41,8 +41,6 @@ class BlockSoil(Soil):
     """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
-    #: The block's checks judge the soil as given: ``modulus_range`` is refused, not ignored.
-    range_keys: ClassVar[tuple[str, ...]] = ()
     no_method_text: ClassVar[str] = (
         'give soil.method = "springs" with stiffness [N/m, N m/rad] (and dashpot), "lysmer" with its keys, or'
         " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
@@ -74,6 +72,29 @@ class BlockSoil(Soil):
         examples=[[0.1, 0.1, 0.05]],
     )
 
+    modulus_range: list[float] | None = quantity(
+        "-", "-", "factors [low, high] on the soil's stiffness data (G or V_s², E, c_z, c_x, c_phi, c_psi, or the"
+        " given stiffness, whose dashpots go with its square root); every spring and dashpot is recomputed from"
+        " the factored data and a check passes only if it passes over the whole range (ACI 351.3R brackets the"
+        " modulus, e.g. [0.5, 1.5]); default: the data as given",
+        None, min_length=2, max_length=2, examples=[[0.5, 1.5]],
+    )
+
+    def factored(self, factor: float) -> BlockSoil:
+        """This soil with its stiffness data multiplied by ``factor`` [-] (and no range): as
+        :meth:`Soil.factored`, and c_ψ with the coefficients; given springs by ``factor`` and their
+        dashpots by sqrt(factor) (a half-space's radiation dashpot ρ V_s A and a fixed damping ratio's
+        2 ξ sqrt(K m) both go as the square root of the stiffness)."""
+        if self.method_used != "springs":
+            soil = super().factored(factor)
+            return soil if self.c_psi is None else soil.model_copy(update={"c_psi": self.c_psi * factor})
+        root = factor**0.5
+        return self.model_copy(update={
+            "stiffness": [k * factor for k in self.stiffness],
+            "dashpot": None if self.dashpot is None else [c * root for c in self.dashpot],
+            "modulus_range": None,
+        })
+
     @model_validator(mode="after")
     def _method_has_its_data(self):
         method = self.method_used
@@ -95,7 +116,8 @@ class BlockSoil(Soil):
         """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
         [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
         L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
-        about the axes through O [kg m²] (the half-space methods' mass ratios).
+        about the axes through O [kg m²] (the half-space methods' mass ratios). L, B, M and each of
+        J_O may be arrays over a batch of candidate blocks; the springs and ratios broadcast.
 
         Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
         K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
@@ -107,7 +129,7 @@ class BlockSoil(Soil):
         if method in (*HALF_SPACE_METHODS, "sp26"):
             along, across, (k_t, xi_t) = self._planes(L, B, M, J_O)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
-            return [float(k) for k in springs], [float(x) for x in (along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t)]
+            return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
         c_phi = self.c_z if self.c_phi is None else self.c_phi
         c_psi = BARKAN_TORSION_RATIO * self.c_x if self.c_psi is None else self.c_psi
