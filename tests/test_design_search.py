@@ -185,4 +185,6 @@ def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
     batch = {key: value * rng.uniform(0.6, 1.6, 12) for key, value in given_dimensions(document).items()}
     searched = importlib.import_module(EVALUATORS[kind]).evaluate(parse_scene(document), batch)
     _, found = recheck(document, batch, searched)
-    assert not found, [d.text for d in found]
+    rule = ("the candidate's scene is checks/design/apply.py's: machines, loads and points on the block's top rise"
+            " with it, those on an end face follow it (a crank's C-relative heights re-measured from the new C)")
+    assert not found, (rule, [d.text for d in found])
