@@ -25,7 +25,9 @@ BLOCK_OMEGA_PLAUSIBLE = 1000.0
 def too_far(position, size):
     """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
     × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
-    return max(abs(v) for v in position) > LENGTH_SCALE_FACTOR * size
+    import numpy as np
+
+    return np.max(np.abs(np.asarray(position, dtype=float)), axis=-1) > LENGTH_SCALE_FACTOR * size
 
 
 class BlockLimits(Limits):
@@ -125,18 +127,19 @@ class BlockScene(OnSoil, SceneModel):
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
 
-    def _bodies(self, block=None):
-        """(masses, cogs, central inertias) of the block (or ``block``, as :meth:`model` takes it) and every machine."""
+    def _bodies(self, block=None, machine_cogs=None):
+        """(masses, cogs, central inertias) of the block and every machine (``block`` and
+        ``machine_cogs`` as :meth:`model` takes them)."""
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
-        return ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
-                [J_b] + [m.inertia for m in self.machines])
+        cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
+        return ([m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines])
 
-    def soil_impedance(self, omega, base=None, block=None):
+    def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
         """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape
         omega.shape + (6,), at the frequencies ``omega`` [rad/s]: a frequency-dependent soil's
         K(ω), C(ω) (``soil.frequency_dependent``), the others' constants. Dashpots from damping
         ratios are C_i = 2 ξ_i sqrt(K_i m_i), as :func:`~foundation_calc.solvers.block.model.block_model`
-        makes them. ``base`` and ``block`` as :meth:`model` takes them (a batch of N candidates):
+        makes them. ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates):
         ``omega``'s leading axis is then the batch's."""
         import numpy as np
 
@@ -144,7 +147,7 @@ class BlockScene(OnSoil, SceneModel):
 
         omega = np.asarray(omega, dtype=float)
         L, B = self.base if base is None else base
-        M = bodies_mass_matrix(*self._bodies(block))
+        M = bodies_mass_matrix(*self._bodies(block, machine_cogs))
         m = np.diagonal(M, 0, -2, -1)  # batch + (6,)
         extra = tuple(range(m.ndim - 1, omega.ndim))  # axes of omega past the batch's
         m = np.expand_dims(m, extra)
@@ -159,13 +162,14 @@ class BlockScene(OnSoil, SceneModel):
             return springs, six(self.soil.dashpot or [0.0] * 6)
         return springs, 2.0 * six(ratios) * np.sqrt(springs * m)
 
-    def model(self, base=None, block=None):
+    def model(self, base=None, block=None, machine_cogs=None):
         """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`),
         a frequency-dependent soil's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
-        blocks (``fcalc design``): the model's matrices are then stacks."""
+        blocks (``fcalc design``): the model's matrices are then stacks; ``machine_cogs`` (one
+        (..., 3) [m] per machine) the machines' centres of mass, moved with each candidate's block."""
         import numpy as np
 
         from foundation_calc.solvers.block.model import block_model
@@ -173,7 +177,7 @@ class BlockScene(OnSoil, SceneModel):
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
 
         L, B = self.base if base is None else base
-        bodies = self._bodies(block)
+        bodies = self._bodies(block, machine_cogs)
         M = bodies_mass_matrix(*bodies)
         springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
         stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
