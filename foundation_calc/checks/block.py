@@ -73,9 +73,8 @@ class ResonanceRow:
 
 @dataclass(frozen=True)
 class ZoneRow(JudgedRow):
-    """A point's zone in a vibration code: its largest RMS velocity and, when a machine runs below
-    600 r/min, its largest RMS displacement (``judged`` says which decides; ``direction`` is that
-    quantity's direction)."""
+    """A point's zone in a vibration code: its largest RMS velocity and its largest RMS displacement,
+    the more restrictive deciding (``judged`` says which; ``direction`` is that quantity's direction)."""
 
     point: str
     direction: str
@@ -227,16 +226,16 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_rows(motion: PointMotion, limits, speed_rpm: float) -> tuple[ZoneRow, ...]:
-    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and,
-    when the slowest machine runs below 600 r/min (``speed_rpm``), its largest RMS displacement."""
+def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
+    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and
+    its largest RMS displacement, the more restrictive deciding."""
     if limits.code is None:
         return ()
     table = TABLES[limits.code, limits.machine_group, limits.foundation]
     rows = []
     for p, name in enumerate(motion.names):
         v, x = motion.velocity_rms[p], motion.displacement_rms[p]
-        judged = code_zone(table, float(v.max()), float(x.max()), speed_rpm, limits.acceptable_zone)
+        judged = code_zone(table, float(v.max()), float(x.max()), limits.acceptable_zone)
         d = int(np.argmax(v if judged.quantity == "velocity" else x))
         rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table))
     return tuple(rows)
@@ -285,7 +284,7 @@ def check_block_as_given(scene) -> BlockReport:
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits, min(rpm_from_omega(e.omega) for e in excitations)),
+        zone_rows=() if motion is None else zone_rows(motion, limits),
         code_warnings=warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,

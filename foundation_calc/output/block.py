@@ -224,9 +224,7 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
                         f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
         out.print(lim)
     if report.zone_rows:
-        shown = "Zones of the RMS velocity" + (
-            " and, below 600 r/min, displacement" if any(r.judged.displacement_zone for r in report.zone_rows) else "")
-        z = _table(shown, ("point", "zone", "verdict"))
+        z = _table("Zones of the RMS velocity and displacement (the more restrictive decides)", ("point", "zone", "verdict"))
         for r in report.zone_rows:
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)

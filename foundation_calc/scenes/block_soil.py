@@ -29,11 +29,14 @@ BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "sp26": METHOD_KEYS["sp26"],
 }
 
-#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-].
+#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-],
+#: as the code is usually quoted (its printed clause has not been checked here). The elastic
+#: half-space gives C_ψ/C_z ≈ 1.3-2.1 (tests/test_soil_closed_forms.py): a softer torsion spring.
 SP26_TORSION = (1.0, 0.3)
 
 #: c_ψ / c_x of Barkan (1948), ch. 4: the coefficient of elastic non-uniform shear (torsion) is
-#: about 1.5 times that of uniform shear [-].
+#: about 1.5 times that of uniform shear [-], as usually quoted (the printed text has not been
+#: checked here); the elastic half-space gives 1.9-2.4 (tests/test_soil_closed_forms.py).
 BARKAN_TORSION_RATIO = 1.5
 
 

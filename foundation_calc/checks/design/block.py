@@ -122,7 +122,6 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
-    from foundation_calc.units import rpm_from_omega
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
 
@@ -157,9 +156,8 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             table = TABLES[limits.code, limits.machine_group, limits.foundation]
             highest = ZONES.index(limits.acceptable_zone or "B")
             top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
-            top_x = motion.displacement_rms.max(axis=-1)  # judged too below 600 rpm
-            slowest = min(rpm_from_omega(exc.omega) for exc in excitations)
-            index, by_x = code_zone_index(top, top_x, table, slowest)
+            top_x = motion.displacement_rms.max(axis=-1)  # the more restrictive of the two decides
+            index, by_x = code_zone_index(top, top_x, table)
             verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
             worst = verdicts[index].max(axis=-1)
             ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
