@@ -1,0 +1,94 @@
+"""The averaged-operator closed form (:mod:`~foundation_calc.solvers.crank.averaged`) for a batch
+of blocks that carry one mechanism at one speed, in array operations over the batch.
+
+The averaged operator is the mechanism's part, the same for every block
+(:func:`~foundation_calc.solvers.crank.averaged.mechanism_operator`), plus the block's
+(:func:`~foundation_calc.solvers.crank.averaged.block_matrices`, arrays over the batch); the
+forcing is the mechanism's alone. Each harmonic n then solves
+
+    (K̄ + i nω C̄ - n²ω² M̄) Z_n = F_n
+
+for every block at once (Cramer's rule on the 3 × 3 systems, stacked), and a mode the base
+dashpots leave undamped is resonant within
+:data:`~foundation_calc.solvers.crank.first_approximation.RESONANT_MARGIN` of any harmonic
+1 ... :data:`~foundation_calc.solvers.crank.averaged.FORCING_HARMONICS`, as for one design.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS, modal_damping_ratios, natural_modes
+from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
+
+#: Relative size [-] of a forcing harmonic (to the largest of its row: x, y or θ) below which the
+#: harmonic and all above it are left out of a batch's response. The forcing's Fourier
+#: coefficients fall as λⁿ to round-off (about 1e-15) and stay there; a harmonic of relative size
+#: f changes a peak acceleration by about f times its resonance magnification, the displacement
+#: by f/n² of that: below 1e-12 of every peak for a damping ratio above 0.1 %.
+FORCING_FLOOR = 1e-15
+
+
+def forcing_harmonics(fc, fs) -> int:
+    """The highest harmonic K_b whose forcing reaches :data:`FORCING_FLOOR` of its row's
+    largest: the response of a batch keeps harmonics 0 ... K_b (at least 1).
+
+    >>> forcing_harmonics(np.array([[0.0, 1.0, 1e-3, 1e-16]]), np.zeros((1, 4)))
+    2
+    """
+    size = np.hypot(fc, fs)
+    largest = size.max(axis=-1, keepdims=True)
+    above = (size > FORCING_FLOOR * np.where(largest > 0.0, largest, 1.0)).any(axis=0)
+    return max(1, int(np.nonzero(above)[0].max(initial=1)))
+
+
+def solve3(A, b):
+    """x of A x = b for stacks of 3 × 3 systems (Cramer's rule): ``A`` (..., 3, 3), ``b`` (..., 3),
+    complex or real; a singular system gives inf or NaN.
+
+    >>> A = np.array([[2.0, 1.0, 0.0], [1.0, 3.0, 1.0], [0.0, 1.0, 4.0]])
+    >>> np.allclose(solve3(A, np.array([1.0, 2.0, 3.0])), np.linalg.solve(A, [1.0, 2.0, 3.0]))
+    True
+    """
+    a, c = A, np.moveaxis(A, -1, 0)
+    cof0 = a[..., 1, 1] * a[..., 2, 2] - a[..., 1, 2] * a[..., 2, 1]
+    cof1 = a[..., 1, 2] * a[..., 2, 0] - a[..., 1, 0] * a[..., 2, 2]
+    cof2 = a[..., 1, 0] * a[..., 2, 1] - a[..., 1, 1] * a[..., 2, 0]
+    det = a[..., 0, 0] * cof0 + a[..., 0, 1] * cof1 + a[..., 0, 2] * cof2
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+
+    def replaced(col):  # det of A with column ``col`` replaced by b, expanded along that column
+        i, j = [k for k in range(3) if k != col]
+        return (b0 * (c[i][..., 1] * c[j][..., 2] - c[i][..., 2] * c[j][..., 1])
+                - b1 * (c[i][..., 0] * c[j][..., 2] - c[i][..., 2] * c[j][..., 0])
+                + b2 * (c[i][..., 0] * c[j][..., 1] - c[i][..., 1] * c[j][..., 0])) * (1 if col != 1 else -1)
+
+    return np.stack([replaced(0), replaced(1), replaced(2)], axis=-1) / det[..., None]
+
+
+def resonant_blocks(M, C, K, omega):
+    """Which blocks of a batch have an undamped mode within the resonant margin of a harmonic
+    1 ... :data:`FORCING_HARMONICS` of ω [rad/s] (no steady state), and their natural
+    frequencies [rad/s] (..., 3), ascending. ``C``: the base dashpots' matrix."""
+    natural, shapes = natural_modes(M, K)
+    ratios = modal_damping_ratios(M, C, natural, shapes)
+    # |nω - p|/p over n = 1 ... FORCING_HARMONICS is smallest at the n nearest p/ω
+    nearest = np.clip(np.rint(natural / omega), 1, FORCING_HARMONICS)
+    margin = np.abs(nearest * omega - natural) / np.where(natural > 0.0, natural, 1.0)
+    return ((ratios < UNDAMPED_RATIO) & (margin < RESONANT_MARGIN)).any(axis=-1), natural
+
+
+def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool = False):
+    """Complex harmonics Z_n (n = 0 ... ``harmonics``) of x, y, θ, shape (..., 3, harmonics + 1):
+    cos = Z.real, sin = -Z.imag. ``M``, ``C``, ``K``: (..., 3, 3), or with ``per_harmonic``
+    (..., harmonics + 1, 3, 3), an operator per harmonic (springs that depend on frequency);
+    ``fc``, ``fs``: the forcing's coefficients (3, > ``harmonics``)."""
+    w = np.arange(harmonics + 1) * omega
+    if not per_harmonic:
+        M, C, K = (np.asarray(x)[..., None, :, :] for x in (M, C, K))
+    ops = K + 1j * w[:, None, None] * C - (w * w)[:, None, None] * M
+    force = (fc[:, : harmonics + 1] - 1j * fs[:, : harmonics + 1]).T
+    return np.swapaxes(solve3(ops, force), -1, -2)
+
+
+__all__ = ["FORCING_FLOOR", "forcing_harmonics", "harmonic_response", "resonant_blocks", "solve3"]
