@@ -332,7 +332,7 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
 
 
-def _consistent(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
     """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
     NaturalFrequencies on the springs taken at ω."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
@@ -349,8 +349,8 @@ def scene_design_frequencies(scene):
     if not scene.soil.frequency_dependent:
         return None
     static, static_averaged = design_frequencies(scene.design())
-    zero = _consistent(static, lambda w: design_frequencies(scene.design(w))[0])
-    averaged = _consistent(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
+    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
     return zero, averaged, static
 
 
@@ -362,4 +362,4 @@ def scene_block_frequencies(scene):
     from foundation_calc.solvers.crank.loads import block_frequencies
 
     static = block_frequencies(scene.block())
-    return _consistent(static, lambda w: block_frequencies(scene.block(w))), static
+    return consistent_frequencies(static, lambda w: block_frequencies(scene.block(w))), static

@@ -115,21 +115,13 @@ class CandidateDesigns:
 def _frequencies(designs: CandidateDesigns):
     """(zero-order, averaged) k0, p1, p2 of every candidate, each mode at its own frequency on a
     frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`)."""
-    from foundation_calc.checks.crank_resonance import design_frequencies
-    from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
-    from foundation_calc.solvers.soil.impedance import consistent_frequency
+    from foundation_calc.checks.crank_resonance import consistent_frequencies, design_frequencies
 
     static = design_frequencies(designs.at(0.0))
     if not designs.scene.soil.frequency_dependent:
         return static
-    return tuple(
-        NaturalFrequencies(**{
-            mode: consistent_frequency(lambda w, mode=mode, which=which: getattr(design_frequencies(designs.at(w))[which], mode),
-                                       getattr(static[which], mode))
-            for mode in ("k0", "p1", "p2")
-        })
-        for which in (0, 1)
-    )
+    return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
+                 for which in (0, 1))
 
 
 class _Verdicts:
@@ -165,9 +157,10 @@ def _resonance(out: _Verdicts, scene, designs, d0, M, K, mech, harmonics, stable
             np.where(stable, g[:, 0], unstable), [c.label for c in conditions] + [_UNSTABLE])
 
 
-def _motion(scene, designs, d0, mech, harmonics):
+def _motion(scene, designs, d0, block, mech, harmonics):
     """The averaged-operator steady state of every candidate (harmonics 0 ... ``harmonics``) and
-    its resonant mask; a frequency-dependent soil takes harmonic n on the springs at n ω."""
+    its resonant mask; ``block``: M, C, K of the blocks on the static springs; a
+    frequency-dependent soil takes harmonic n on the springs at n ω."""
     from foundation_calc.solvers.crank.averaged import block_matrices
     from foundation_calc.solvers.crank.batch import harmonic_response, resonant_blocks
     from foundation_calc.solvers.crank.response import PeriodicMotion
@@ -180,7 +173,7 @@ def _motion(scene, designs, d0, mech, harmonics):
         resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega)
         Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics, per_harmonic=True)
     else:
-        M, C, K = block_matrices(d0)
+        M, C, K = block
         resonant, _ = resonant_blocks(M_m + M, C, K_m + K, omega)
         Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics)
     Z = np.where(resonant[:, None, None], 0.0, Z)
@@ -192,37 +185,35 @@ def _amplitudes(out: _Verdicts, scene, motion, resonant, stable):
     :func:`~foundation_calc.checks.crank_amplitudes.check_amplitudes` judges them."""
     from foundation_calc.checks.codes import TABLES, ZONES, application_warnings
     from foundation_calc.checks.limits import limited_quantities
-    from foundation_calc.solvers.crank.response import DIRECTIONS, peaks, point_series, rms_values
+    from foundation_calc.solvers.crank.response import DIRECTIONS, point_series
     from foundation_calc.units import rpm_from_omega
 
     limits, points = scene.limits, scene.points
     names = ["C", *(p.name for p in points)]
-    horizontal = np.array([0.0, *(p.horizontal for p in points)])[:, None]
-    height = np.array([0.0, *(p.height for p in points)])[:, None]
-    cos, sin = point_series(motion, horizontal, height)  # (points, N, 2, K)
-    omega = motion.omega
-    statistics = {}
     limited = limited_quantities(limits)
-    if any(not q.endswith("_rms") for q in limited):
-        statistics["peak"] = peaks(cos, sin, omega)
-    if limits.code is not None or any(q.endswith("_rms") for q in limited):
-        statistics["rms"] = rms_values(cos, sin, omega)
+    wanted = set(limited) | ({"velocity_rms"} if limits.code is not None else set())
+    series = [(motion.cos[:, None, :2, :], motion.sin[:, None, :2, :])]  # C: x and y themselves
+    if points:
+        horizontal = np.array([p.horizontal for p in points])[:, None]
+        height = np.array([p.height for p in points])[:, None]
+        cos, sin = point_series(motion, horizontal, height)  # (points, N, 2, 2K + 1)
+        series.append((np.moveaxis(cos, 0, 1), np.moveaxis(sin, 0, 1)))
+    statistic = {q: np.concatenate([_statistic(q, c, s, motion.omega) for c, s in series], axis=1) for q in wanted}
     ratios, fails, reasons = [], [], []
     for quantity, limit in limited.items():
-        stat = statistics["rms"] if quantity.endswith("_rms") else statistics["peak"]
-        values = getattr(stat, quantity.removesuffix("_rms"))  # (points, N, 2)
+        values = statistic[quantity]  # (N, points, 2)
         for i, name in enumerate(names):
             for j, direction in enumerate(DIRECTIONS):
-                ratios.append(values[i, :, j] / limit)
-                fails.append(np.where(values[i, :, j] > limit, FAIL, PASS))
+                ratios.append(values[:, i, j] / limit)
+                fails.append(np.where(values[:, i, j] > limit, FAIL, PASS))
                 reasons.append(f"{quantity} at {name} ({direction})")
     warned = False
     if limits.code is not None:
         table = TABLES[limits.code, limits.machine_group, limits.foundation]
         power = None if limits.machine_power is None else limits.machine_power / 1e3
-        warned = bool(application_warnings(table, rpm_from_omega(omega), power))
+        warned = bool(application_warnings(table, rpm_from_omega(motion.omega), power))
         limit = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]
-        velocity = statistics["rms"].velocity.max(axis=-1)  # (points, N): the larger direction governs
+        velocity = statistic["velocity_rms"].max(axis=-1).T  # (points, N): the larger direction governs
         zone = (velocity[..., None] > np.array(table.boundaries)).sum(axis=-1)
         acceptable = limits.acceptable_zone
         by_zone = np.array([PASS, WARN, FAIL, FAIL] if acceptable is None else
@@ -247,6 +238,20 @@ def _amplitudes(out: _Verdicts, scene, motion, resonant, stable):
     utilisation = np.where(resonant | ~stable, np.inf, utilisation)
     governing = np.where(~stable, k + 1, np.where(resonant, k, governing))
     out.put("amplitudes", outcome, utilisation, governing, reasons)
+
+
+#: The time derivative of each limited quantity.
+_ORDER = {"displacement": 0, "velocity": 1, "acceleration": 2}
+
+
+def _statistic(quantity, cos, sin, omega):
+    """Peak or RMS (``*_rms``, the mean left out) of ``quantity`` of series (..., K + 1), as
+    :func:`~foundation_calc.solvers.crank.response.peaks` and ``rms_values`` take them."""
+    from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
+
+    name = quantity.removesuffix("_rms")
+    cos, sin = derivative(cos, sin, omega, _ORDER[name])
+    return rms(cos, sin) if quantity.endswith("_rms") else peak(cos, sin)
 
 
 def _office(out: _Verdicts, scene, designs):
@@ -279,12 +284,9 @@ def _inputs(out: _Verdicts, scene, designs):
                                                                               abs(mech.crank_axis_to_cog))})}
     others = [abs(v) for load in scene.loads for v in (load.at.horizontal, load.at.height)]
     others += [abs(v) for p in scene.points for v in (p.horizontal, p.height)]
-    size = np.sqrt(designs.S)
-    too_long_foundation = np.zeros(len(size), bool)
-    for key, value in f.lengths_given().items():
-        too_long_foundation |= abs(value) > LENGTH_SCALE_FACTOR * size
-    longest = max([abs(v) for v in lengths.values()] + others, default=0.0)
-    too_long = abs(longest) > LENGTH_SCALE_FACTOR * size
+    size = LENGTH_SCALE_FACTOR * np.sqrt(designs.S)
+    too_long_foundation = max((abs(v) for v in f.lengths_given().values()), default=0.0) > size
+    too_long = max([abs(v) for v in lengths.values()] + others, default=0.0) > size
     warn = block | too_long | bool(fixed)
     if f.machine is not None:
         machine = f.machine.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
@@ -316,9 +318,9 @@ def _chunk(scene, L, B, H, mech, harmonics, checks) -> _Verdicts:
     if "inputs" in checks:
         _inputs(out, scene, given)
     d0 = designs.at(0.0)
-    M_b, _, K_b = block_matrices(d0)
-    _resonance(out, scene, designs, d0, mech[0] + M_b, mech[2] + K_b, mech, harmonics, stable)
-    motion, resonant = _motion(scene, designs, d0, mech, harmonics)
+    block = block_matrices(d0)
+    _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
+    motion, resonant = _motion(scene, designs, d0, block, mech, harmonics)
     _amplitudes(out, scene, motion, resonant, stable)
     if "runup" in checks:
         n = len(L)
@@ -326,6 +328,18 @@ def _chunk(scene, L, B, H, mech, harmonics, checks) -> _Verdicts:
     if "office" in checks:
         _office(out, scene, given)
     return out
+
+
+#: Factors on the scene's block length, width and height between which :func:`sample_batch` draws.
+SAMPLE_SPREAD = {"length": (0.6, 1.6), "width": (0.6, 1.6), "height": (0.4, 2.0)}
+
+
+def sample_batch(scene, n: int, seed: int = 0) -> dict[str, np.ndarray]:
+    """``n`` candidate blocks drawn uniformly around the scene's own (:data:`SAMPLE_SPREAD`), for
+    tests and the bench: ``{"foundation.block.length": (n,), ...}`` [m]."""
+    rng = np.random.default_rng(seed)
+    block = scene.foundation.block
+    return {f"foundation.block.{k}": getattr(block, k) * rng.uniform(*SAMPLE_SPREAD[k], n) for k in VARIED}
 
 
 def checks_judged(scene) -> tuple[str, ...]:
@@ -369,4 +383,5 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     )
 
 
-__all__ = ["CHUNK", "NOT_EVALUATED", "VARIED", "CandidateDesigns", "block_dimensions", "checks_judged", "evaluate"]
+__all__ = ["CHUNK", "NOT_EVALUATED", "SAMPLE_SPREAD", "VARIED", "CandidateDesigns", "block_dimensions", "checks_judged",
+           "evaluate", "sample_batch"]

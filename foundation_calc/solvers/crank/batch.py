@@ -43,27 +43,21 @@ def forcing_harmonics(fc, fs) -> int:
 
 
 def solve3(A, b):
-    """x of A x = b for stacks of 3 × 3 systems (Cramer's rule): ``A`` (..., 3, 3), ``b`` (..., 3),
-    complex or real; a singular system gives inf or NaN.
+    """x of A x = b for stacks of 3 × 3 systems (Cramer's rule): ``A`` (3, 3, ...), ``b`` (3, ...),
+    matrix and vector indices first (each entry a contiguous array over the stack), complex or
+    real; a singular system gives inf or NaN.
 
     >>> A = np.array([[2.0, 1.0, 0.0], [1.0, 3.0, 1.0], [0.0, 1.0, 4.0]])
     >>> np.allclose(solve3(A, np.array([1.0, 2.0, 3.0])), np.linalg.solve(A, [1.0, 2.0, 3.0]))
     True
     """
-    a, c = A, np.moveaxis(A, -1, 0)
-    cof0 = a[..., 1, 1] * a[..., 2, 2] - a[..., 1, 2] * a[..., 2, 1]
-    cof1 = a[..., 1, 2] * a[..., 2, 0] - a[..., 1, 0] * a[..., 2, 2]
-    cof2 = a[..., 1, 0] * a[..., 2, 1] - a[..., 1, 1] * a[..., 2, 0]
-    det = a[..., 0, 0] * cof0 + a[..., 0, 1] * cof1 + a[..., 0, 2] * cof2
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    def cofactor(i, j):
+        (r0, r1), (c0, c1) = [k for k in range(3) if k != i], [k for k in range(3) if k != j]
+        return A[r0][c0] * A[r1][c1] - A[r0][c1] * A[r1][c0]
 
-    def replaced(col):  # det of A with column ``col`` replaced by b, expanded along that column
-        i, j = [k for k in range(3) if k != col]
-        return (b0 * (c[i][..., 1] * c[j][..., 2] - c[i][..., 2] * c[j][..., 1])
-                - b1 * (c[i][..., 0] * c[j][..., 2] - c[i][..., 2] * c[j][..., 0])
-                + b2 * (c[i][..., 0] * c[j][..., 1] - c[i][..., 1] * c[j][..., 0])) * (1 if col != 1 else -1)
-
-    return np.stack([replaced(0), replaced(1), replaced(2)], axis=-1) / det[..., None]
+    cof = [[cofactor(i, j) * (-1.0 if (i + j) % 2 else 1.0) for j in range(3)] for i in range(3)]
+    det = A[0][0] * cof[0][0] + A[0][1] * cof[0][1] + A[0][2] * cof[0][2]
+    return np.stack([(cof[0][i] * b[0] + cof[1][i] * b[1] + cof[2][i] * b[2]) / det for i in range(3)])
 
 
 def resonant_blocks(M, C, K, omega):
@@ -86,9 +80,13 @@ def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool
     w = np.arange(harmonics + 1) * omega
     if not per_harmonic:
         M, C, K = (np.asarray(x)[..., None, :, :] for x in (M, C, K))
-    ops = K + 1j * w[:, None, None] * C - (w * w)[:, None, None] * M
-    force = (fc[:, : harmonics + 1] - 1j * fs[:, : harmonics + 1]).T
-    return np.swapaxes(solve3(ops, force), -1, -2)
+    # matrix indices first: every entry of the stacked systems is one contiguous array
+    M, C, K = (np.moveaxis(np.asarray(x, dtype=float), (-2, -1), (0, 1)) for x in (M, C, K))
+    ops = np.empty(np.broadcast_shapes(K.shape, w.shape), dtype=complex)
+    ops.real = K - (w * w) * M
+    ops.imag = w * C
+    force = fc[:, : harmonics + 1] - 1j * fs[:, : harmonics + 1]  # (3, harmonics + 1)
+    return np.moveaxis(solve3(ops, force), 0, -2)
 
 
 __all__ = ["FORCING_FLOOR", "forcing_harmonics", "harmonic_response", "resonant_blocks", "solve3"]
