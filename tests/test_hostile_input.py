@@ -175,6 +175,9 @@ RUNUP_SINGULAR = [
     _mutate(SEEDS["frame_saw_soft_soil_runup.toml"], ("mechanism", "rod_radius_of_gyration"), 1e15),
     _mutate(SEEDS["frame_saw_soft_soil_runup.toml"], ("foundation", "base_area"), 1e-15),
 ]
+#: A rotor so light that (3.14) rounds c0 to M ω² exactly: the exciter height (3.11) divides by 0.
+PLATFORM_VANISHING_ROTOR = _mutate(_mutate(SEEDS["platform_damped.toml"], ("exciter", "rotor_mass"), 1e-15),
+                                   ("operation", "amplitude"), 1e-12)
 
 
 @pytest.mark.parametrize("document", RUNUP_SINGULAR, ids=["rod_radius_of_gyration", "base_area"])
@@ -194,6 +197,7 @@ def test_singular_runup_scene_ends_in_exit_3_without_nan(runner, tmp_path, docum
 @given(rescaled_scenes())
 @example(RUNUP_SINGULAR[0])
 @example(RUNUP_SINGULAR[1])
+@example(PLATFORM_VANISHING_ROTOR)
 def test_numbers_the_loader_accepts_never_crash_a_check(document):
     """Within the accepted magnitudes every check ends in a finite verdict or an FcalcError (exit 3)."""
     _numbers_never_crash_a_check(document)

@@ -19,6 +19,7 @@ LAYER_RANK = {
     "_version": 0,
     "units": 0,
     "errors": 0,
+    "references": 0,
     "solvers": 1,
     "scenes": 2,
     "checks": 3,

@@ -104,15 +104,25 @@ def test_every_symbol_of_a_chain_is_in_the_nomenclature(path):
 
         report = check_platform(scene.design(), scene.model(), scene.limits, scene.inertia_given)
         doc = {"design": platform_document(report, scene, "", scene.operation.speed_given_as)}
-    section = methods_section(scene, doc or {})
+    assert_every_symbol_defined(methods_section(scene, doc or {}))
+    assert SYMBOLS  # symbols used by the chains
+
+
+def assert_every_symbol_defined(section) -> None:
+    """Every symbol of the section's chains, and every name in their formulas, is in its
+    nomenclature (the last table); tables without formulas (summaries) are skipped."""
     *chains, nomenclature = [b for b in section.blocks if hasattr(b, "rows")]
     defined = {row[0] for row in nomenclature.rows}
     for chain in chains:
+        if chain.header[1:2] != ("formula",):
+            continue
         for symbol, formula, *_ in chain.rows:
             assert symbol in defined
-            names = set(formula.replace("·", " ").replace("√", " ").translate(str.maketrans("()/+-²³⁴⁵^¼½", "            ")).split())
-            assert {n for n in names if not n.replace(".", "").isdigit() and n != "π"} <= defined, (chain.title, formula)
-    assert SYMBOLS  # symbols used by the chains
+            if formula.startswith(("ω* =", "n ω")):  # how a column's frequency was found
+                continue
+            names = set(formula.replace("·", " ").replace("√", " ").replace(", ", " ").translate(str.maketrans("()/+-²³⁴⁵^¼½", "            ")).split())
+            functions = {"π", "max", "min", "abs"}
+            assert {n for n in names if not n.replace(".", "").isdigit() and n not in functions} <= defined, (chain.title, formula)
 
 
 def test_loads_only_sheet_lists_no_crank_equations(runner, tmp_path):
@@ -133,7 +143,7 @@ def test_every_cited_source_has_a_full_reference(tmp_path):
     from foundation_calc.output.display_units import DisplayUnits
     from foundation_calc.output.report import markdown
     from foundation_calc.output.report.documents import scene_sheet
-    from foundation_calc.output.report.references import REFERENCES
+    from foundation_calc.references import REFERENCES
 
     for path in (CONFIGS / "compressor_medium_sand_lysmer.toml", CONFIGS / "compressor_vendor_loads.toml", CONFIGS / "platform_damped.toml"):
         sheet, _ = scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)
@@ -144,12 +154,23 @@ def test_every_cited_source_has_a_full_reference(tmp_path):
 
 
 def test_readme_lists_every_reference_in_full():
-    from foundation_calc.output.report.references import REFERENCES
+    from foundation_calc.references import REFERENCES
     from tests.conftest import ROOT
 
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     for key, entry in REFERENCES.items():
         assert f"- **[{key}]** {entry}" in readme, key
+
+
+def test_one_key_per_source():
+    """The sheet and the validation record cite from one list, and no source has two keys there
+    (two entries of one source begin with the same authors)."""
+    from foundation_calc.references import REFERENCES
+    from foundation_calc.validation import independent, published
+
+    authors = [entry.split(",")[0] for entry in REFERENCES.values()]
+    assert len(set(authors)) == len(authors), authors
+    assert {case.source for case in (*published.CASES, *independent.CASES)} <= set(REFERENCES)
 
 
 @pytest.mark.parametrize("name", ["frame_saw.toml", "platform_paper_example.toml"])

@@ -161,7 +161,8 @@ def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceR
     return tuple(rows)
 
 
-_VALUES = {
+#: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
+LIMITED_VALUES = {
     "displacement": "peak",
     "velocity": "velocity_peak",
     "displacement_rms": "displacement_rms",
@@ -175,9 +176,9 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     shared between kinds, are left out)."""
     rows = []
     for quantity, limit in limited_quantities(limits).items():
-        if quantity not in _VALUES:
+        if quantity not in LIMITED_VALUES:
             continue
-        values = getattr(motion, _VALUES[quantity])
+        values = getattr(motion, LIMITED_VALUES[quantity])
         for p, name in enumerate(motion.names):
             for d, direction in enumerate(DIRECTIONS):
                 v = float(values[p, d])
@@ -234,4 +235,4 @@ def check_block(scene) -> BlockReport:
     )
 
 
-__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]
+__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]

@@ -98,7 +98,15 @@ def zone(velocity_rms: float, table: ZoneTable) -> str:
     >>> zone(2.8e-3, TABLES["ISO 10816-3", 2, "rigid"]), zone(2.81e-3, TABLES["ISO 10816-3", 2, "rigid"])
     ('B', 'C')
     """
-    return ZONES[sum(velocity_rms > b for b in table.boundaries)]
+    return ZONES[int(zone_index(velocity_rms, table))]
+
+
+def zone_index(velocity_rms, table: ZoneTable):
+    """Index into :data:`ZONES` of r.m.s. velocities [m/s] (float or array) in ``table``; a
+    boundary value belongs to the lower zone."""
+    import numpy as np
+
+    return np.sum(np.asarray(velocity_rms, dtype=float)[..., None] > np.asarray(table.boundaries), axis=-1)
 
 
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
@@ -108,10 +116,14 @@ def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
     >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
     (['pass', 'warn', 'fail', 'fail'], ['pass', 'fail'])
     """
-    i = ZONES.index(zone_name)
+    return zone_verdicts(acceptable)[ZONES.index(zone_name)]
+
+
+def zone_verdicts(acceptable: str | None) -> tuple[Outcome, Outcome, Outcome, Outcome]:
+    """The verdict of each zone of :data:`ZONES` (:func:`zone_outcome`)."""
     if acceptable is None:
-        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)[i]
-    return Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL
+        return (Outcome.PASS, Outcome.WARN, Outcome.FAIL, Outcome.FAIL)
+    return tuple(Outcome.PASS if i <= ZONES.index(acceptable) else Outcome.FAIL for i in range(len(ZONES)))
 
 
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
@@ -149,4 +161,4 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
 
 
 __all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone",
-           "zone_outcome"]
+           "zone_index", "zone_outcome", "zone_verdicts"]

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, ROUNDOFF, stdout, verdict_text
 from foundation_calc.validation.record import CaseResult, Value
-from foundation_calc.validation.references import REFERENCES
+from foundation_calc.references import REFERENCES
 
 
 def _values(value: Value) -> tuple[float, ...]:
@@ -97,7 +97,7 @@ def print_record(results: Sequence[CaseResult]) -> None:
     out.print(summary(results) + ("" if all(r.passed for r in results) else " (exit 1)"))
     out.print("\nSources:")
     for key in sources(results):
-        out.print(f"  \\[{key}] {escape(REFERENCES[key].citation)}")
+        out.print(f"  \\[{key}] {escape(REFERENCES[key])}")
 
 
 def _cell(text: str) -> str:
@@ -116,7 +116,7 @@ def record_markdown(results: Sequence[CaseResult]) -> str:
             str(i), f"{c.quantity}; {c.example}", f"[{c.source}] {c.where}", reference_text(r), value_text(r.value, scale(r)),
             difference_text(r), tolerance_text(r), c.basis, verdict(r).upper())) + " |")
     lines += ["", summary(results) + ".", ""]
-    lines += [f"- [{key}] {REFERENCES[key].citation}" for key in sources(results)]
+    lines += [f"- [{key}] {REFERENCES[key]}" for key in sources(results)]
     return "\n".join(lines) + "\n"
 
 
@@ -150,7 +150,7 @@ def record_document(results: Sequence[CaseResult]) -> dict:
             }
             for r in results
         ],
-        "references": {key: REFERENCES[key].citation for key in sources(results)},
+        "references": {key: REFERENCES[key] for key in sources(results)},
     }
 
 

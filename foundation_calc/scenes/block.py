@@ -21,6 +21,12 @@ from foundation_calc.scenes.project import Project
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
 
 
+def too_far(position, size):
+    """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
+    × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
+    return max(abs(v) for v in position) > LENGTH_SCALE_FACTOR * size
+
+
 class BlockLimits(Limits):
     """What the checks compare against: the crank foundation's limits (bearing_pressure among them), and the office checks'."""
 
@@ -95,39 +101,52 @@ class BlockScene(SceneModel):
         as m), a machine ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
         L, B = self.base
         size = (L * L + B * B) ** 0.5
-        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
-        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
-        lengths |= {f"points.{p.name!r}.at": p.at for p in self.points}
         found = [
             f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
             " was it typed in mm?"
-            for key, value in lengths.items()
-            if max(abs(v) for v in value) > LENGTH_SCALE_FACTOR * size
+            for key, value in self.plausible_lengths().items()
+            if too_far(value, size)
         ]
-        found += [
+        return found + self.speed_warnings()
+
+    def plausible_lengths(self) -> dict[str, list[float]]:
+        """The positions [m] from O that :meth:`plausibility_warnings` compares with the base's diagonal, by key."""
+        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
+        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
+        return lengths | {f"points.{p.name!r}.at": p.at for p in self.points}
+
+    def speed_warnings(self) -> list[str]:
+        """The machine speeds ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
+        return [
             f"machines.{m.name!r}.omega = {m.omega:g} rad/s is {m.omega * 30 / 3.141592653589793:.4g} rpm; if you meant"
             f" {m.omega:g} rpm, write speed_rpm = {m.omega:g}"
             for m in self.machines
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
-        return found
 
-    def model(self):
-        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`)."""
+    def model(self, base=None, block=None):
+        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`).
+
+        ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
+        tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
+        blocks (``fcalc design``): the model's matrices are then stacks."""
+        import numpy as np
+
         from foundation_calc.solvers.block.model import block_model
         from foundation_calc.solvers.constants import GRAVITY
-
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
 
-        m_b, r_b, J_b = self.block.mass_properties
-        L, B = self.base
+        m_b, r_b, J_b = self.block.mass_properties if block is None else block
+        L, B = self.base if base is None else base
         bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
                   [J_b] + [m.inertia for m in self.machines])
         M = bodies_mass_matrix(*bodies)
-        springs, ratios = self.soil.six_springs(L, B, M[0, 0], M.diagonal()[3:])
+        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
+        stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
         return block_model(
-            *bodies, springs, GRAVITY, (L * L + B * B) ** 0.5,
-            dashpots=self.soil.dashpot if ratios is None else None, ratios=ratios,
+            *bodies, stack, GRAVITY, (L * L + B * B) ** 0.5,
+            dashpots=self.soil.dashpot if ratios is None else None,
+            ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
         )
 
     def excitations(self):

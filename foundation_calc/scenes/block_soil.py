@@ -93,7 +93,8 @@ class BlockSoil(Soil):
         """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
         [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
         L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
-        about the axes through O [kg m²] (the half-space methods' mass ratios).
+        about the axes through O [kg m²] (the half-space methods' mass ratios). L, B, M and each of
+        J_O may be arrays over a batch of candidate blocks; the springs and ratios broadcast.
 
         Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
         K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
@@ -105,7 +106,7 @@ class BlockSoil(Soil):
         if method in ("lysmer", "gazetas", "sp26"):
             along, across, (k_t, xi_t) = self._planes(L, B, M, J_O)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
-            return [float(k) for k in springs], [float(x) for x in (along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t)]
+            return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
         c_phi = self.c_z if self.c_phi is None else self.c_phi
         c_psi = BARKAN_TORSION_RATIO * self.c_x if self.c_psi is None else self.c_psi

@@ -25,7 +25,7 @@ class Case:
     key : stable identifier, e.g. ``"das-ramana-K_z"``
     quantity : what is compared, with its unit in brackets, e.g. ``"K_z [MN/m]"``
     example : the example or problem it belongs to, e.g. ``"Lysmer block 4 x 2 x 1.5 m"``
-    source : key of :data:`~foundation_calc.validation.references.REFERENCES`
+    source : key of :data:`~foundation_calc.references.REFERENCES`
     where : equation, table or page in the source
     reference : the source's value in the unit of ``quantity`` (a callable for a value computed by
         an independent method)

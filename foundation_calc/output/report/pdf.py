@@ -17,7 +17,7 @@ PREAMBLE = """#set text(size: 9pt)
 #show table.cell.where(y: 0): strong
 """
 
-#: A text column with a cell longer than this takes the page's free width and wraps.
+#: A text column with a cell longer than this shares the page's free width and wraps.
 WRAP_CHARS = 40
 
 #: Tables longer than this (rows, or characters of text) may break across pages, their header
@@ -38,10 +38,11 @@ def _table(t: Table) -> str:
     columns = ", ".join(["auto"] * len(t.header))
     width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
     text_columns = [j for j in range(len(t.header)) if not t.numeric[j]]
-    widest = max(text_columns, key=width.__getitem__, default=None)
-    widest = widest if t.wide is None else t.wide
-    if widest is not None and (width[widest] > WRAP_CHARS or t.wide is not None):  # long text takes the free width and wraps
-        columns = ", ".join("1fr" if j == widest else "auto" for j in range(len(t.header)))
+    # long text columns share the free width in proportion to their longest cells and wrap (a hand
+    # calculation's formula and values both); a sign box takes all of it
+    wrapped = [t.wide] if t.wide is not None else [j for j in text_columns if width[j] > WRAP_CHARS]
+    if wrapped:
+        columns = ", ".join(f"{width[j] if t.wide is None else 1}fr" if j in wrapped else "auto" for j in range(len(t.header)))
     inset = "8pt" if t.wide is not None else "2.5pt"  # a sign box is tall enough to sign in
     body = (
         f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: {inset}),"

@@ -21,7 +21,7 @@ from foundation_calc.output.validation import (
     verdict,
 )
 from foundation_calc.validation.record import CaseResult
-from foundation_calc.validation.references import REFERENCES
+from foundation_calc.references import REFERENCES
 
 TITLE = "Validation record"
 
@@ -49,7 +49,7 @@ def validation_section(results: Sequence[CaseResult]) -> Section:
         header = ("#", "case", "reference", "fcalc", "difference", "tolerance", "verdict")
         tables.append(table(f"{example} [{group[0][1].case.source}]", header, rows,
                             (True, False, True, True, True, True, False)))
-    references = tuple(Paragraph(f"[{key}] {REFERENCES[key].citation}") for key in sources(results))
+    references = tuple(Paragraph(f"[{key}] {REFERENCES[key]}") for key in sources(results))
     return Section(TITLE, (Paragraph(summary(results) + ". " + TOLERANCES), *tables, *references))
 
 

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass
+from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass, diagonal_matrices
 from foundation_calc.solvers.rigid_body.kinematics import load_at, weight_tilt
 
 
@@ -40,15 +40,18 @@ class BlockModel:
     J_G : central inertia tensor [kg m²]
     size : the base's diagonal [m] (the scale of rotations in the eigen-solve)
     springs : the six springs at O [N/m, N m/rad]
+
+    A batch of designs (``fcalc design``) holds stacks: M, K, C (..., 6, 6), mass and size (...),
+    cog (..., 3), J_G (..., 3, 3), springs (..., 6).
     """
 
     M: np.ndarray
     K: np.ndarray
     C: np.ndarray
-    mass: float
+    mass: float | np.ndarray
     cog: np.ndarray
     J_G: np.ndarray
-    size: float
+    size: float | np.ndarray
     springs: np.ndarray
 
     @property
@@ -94,18 +97,23 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
     size : the base's diagonal [m]
     dashpots : (6,) dashpots at O [N s/m, N m s/rad], or None
     ratios : (6,) damping ratios of the uncoupled motions [-] (instead of ``dashpots``), or None
+
+    A batch of designs: a body given as a stack (:func:`~foundation_calc.solvers.rigid_body.inertia.bodies_mass_matrix`),
+    springs, ratios (..., 6) and size (...) give the stacks of :class:`BlockModel`.
     """
     M = bodies_mass_matrix(masses, cogs, inertias)
     mass, cog, J_G = centre_of_mass(M)
     springs = np.asarray(springs, dtype=float)
-    K = np.diag(springs) + weight_tilt(mass * g, cog[2])
+    K = diagonal_matrices(springs) + weight_tilt(mass * g, cog[..., 2])
     if dashpots is not None:
-        C = np.diag(np.asarray(dashpots, dtype=float))
+        C = diagonal_matrices(dashpots)
     elif ratios is not None:
-        C = np.diag(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diag(M)))
+        C = diagonal_matrices(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diagonal(M, 0, -2, -1)))
     else:
         C = np.zeros((6, 6))
-    return BlockModel(M, K, C, mass, cog, J_G, float(size), springs)
+    C = np.broadcast_to(C, K.shape)
+    size = float(size) if np.ndim(size) == 0 else np.asarray(size, dtype=float)
+    return BlockModel(M, K, C, mass, cog, J_G, size, springs)
 
 
 def excitation(name, omega, rows) -> Excitation:

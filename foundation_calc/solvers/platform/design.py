@@ -344,7 +344,8 @@ def _amplitudes_for_height(d: "PlatformDesign", reach: float) -> str:
     Ms = M + m
 
     def height(u):
-        return exciter_height(M, m, d.omega, zeta, summed_stiffness(M, m, l, u, d.omega, sg), g)
+        c0 = summed_stiffness(M, m, l, u, d.omega, sg)
+        return float("inf") if c0 == M * w2 else exciter_height(M, m, d.omega, zeta, c0, g)  # (3.11)'s pole
 
     cuts = [-sg * l] if sg < 0 else []
     for target in (reach, -reach):
