@@ -68,12 +68,12 @@ class CandidateDesigns:
     :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` whose block and soil fields
     are arrays over the batch (``soil_frequency`` [rad/s] a scalar or one per candidate)."""
 
-    def __init__(self, scene, L, B, H):
+    def __init__(self, scene, L, B, H, factor=1.0):
         from foundation_calc.solvers.crank.block import block_with_machine
 
         f, machine = scene.foundation, scene.foundation.machine
         self.scene, self.base = scene, scene.design()
-        self.L, self.B, self.H = L, B, H
+        self.L, self.B, self.H, self.factor = L, B, H, factor
         self.props = block_with_machine(L, B, H, f.block.density, *(
             (0.0, 0.0, 0.0) if machine is None else (machine.mass, machine.cog_height, machine.moment_of_inertia)))
         self.S, self.I1 = L * B, B * L**3 / 12.0
@@ -81,7 +81,8 @@ class CandidateDesigns:
 
     def springs(self, soil_frequency=0.0):
         p = self.props
-        return self.scene.base_springs(self.L, self.B, self.S, self.I1, self.M_tot, p.I_c, p.h, omega=soil_frequency)
+        return self.scene.base_springs(self.L, self.B, self.S, self.I1, self.M_tot, p.I_c, p.h, omega=soil_frequency,
+                                       factor=self.factor)
 
     def at(self, soil_frequency=0.0):
         from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
@@ -89,7 +90,7 @@ class CandidateDesigns:
         s, p = self.scene.soil, self.props
         k = self.springs(soil_frequency)
         if s.method_used == "coefficients":  # as scene.design: Barkan's coefficients pass through
-            c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
+            c, c1, c_phi = (v * self.factor for v in (s.c_z, s.c_x, s.c_z if s.c_phi is None else s.c_phi))
         else:
             c, c1, c_phi = k.K_z / self.S, k.K_x / self.S, k.K_phi / self.I1
         b = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, self.M_tot,
@@ -155,6 +156,7 @@ def _resonance(out: _Verdicts, scene, designs, d0, M, K, mech, harmonics, stable
     unstable = len(conditions)
     out.put("resonance", np.where(stable, outcome, FAIL), np.where(stable, utilisation, np.inf),
             np.where(stable, g[:, 0], unstable), [c.label for c in conditions] + [_UNSTABLE])
+    return zero, margins, verdict, conditions
 
 
 def _motion(scene, designs, d0, block, mech, harmonics):
@@ -304,24 +306,38 @@ def _block_dependent(key: str) -> bool:
         "mechanism.crank_axis_to_cog") or ".at." in key or key.startswith("points.")
 
 
-def _chunk(scene, L, B, H, mech, harmonics, checks) -> _Verdicts:
+def _physics(out: _Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resonance=True, amplitudes=True):
+    """The resonance and amplitude checks of blocks (L, B, H) on the soil × ``factor`` into
+    ``out``; returns the blocks' designs and the resonance judgement (zero-order frequencies,
+    margins, :class:`~foundation_calc.checks.resonance_rule.Judgement`, conditions)."""
     from foundation_calc.solvers.crank.averaged import block_matrices
 
-    given = CandidateDesigns(scene, L, B, H)
+    given = CandidateDesigns(scene, L, B, H, factor)
     stable = given.stable()
     designs = given
     if not stable.all():  # a tipping candidate is solved as a stable stand-in, its verdicts overwritten
-        stand_in = [np.where(stable, v, v[np.argmax(stable)]) if stable.any() else np.full_like(v, getattr(scene.foundation.block, k))
-                    for k, v in zip(VARIED, (L, B, H))]
+        if stable.any():
+            keep = int(np.argmax(stable))
+            stand_in = [np.where(stable, v, v[keep]) for v in (L, B, H, np.broadcast_to(factor, L.shape))]
+        else:
+            stand_in = [np.full_like(L, getattr(scene.foundation.block, k)) for k in VARIED] + [np.ones_like(L)]
         designs = CandidateDesigns(scene, *stand_in)
-    out = _Verdicts()
-    if "inputs" in checks:
-        _inputs(out, scene, given)
     d0 = designs.at(0.0)
     block = block_matrices(d0)
-    _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
-    motion, resonant = _motion(scene, designs, d0, block, mech, harmonics)
-    _amplitudes(out, scene, motion, resonant, stable)
+    judgement = None
+    if resonance:
+        judgement = _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
+    if amplitudes:
+        motion, resonant = _motion(scene, designs, d0, block, mech, harmonics)
+        _amplitudes(out, scene, motion, resonant, stable)
+    return given, judgement
+
+
+def _chunk(scene, L, B, H, mech, harmonics, checks) -> _Verdicts:
+    out = _Verdicts()
+    given, _ = _physics(out, scene, L, B, H, mech, harmonics)
+    if "inputs" in checks:
+        _inputs(out, scene, given)
     if "runup" in checks:
         n = len(L)
         out.put("runup", np.full(n, PASS), np.full(n, np.nan), np.zeros(n), [NOT_EVALUATED])
