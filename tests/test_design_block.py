@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.checks.block import check_block, condition_label
+from foundation_calc.checks.design.apply import apply
 from foundation_calc.checks.design.block import NOT_EVALUATED, VARIABLE_KEYS, evaluate
 from foundation_calc.checks.design.candidates import EVALUATORS
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
@@ -57,8 +58,9 @@ def _candidates(scene, count, seed):
 
 
 def _one(scene, batch, i):
-    update = {key.split(".")[1]: float(values[i]) for key, values in batch.items()}
-    return scene.model_copy(update={"block": scene.block.model_copy(update=update)})
+    """Candidate ``i`` as ``fcalc check`` sees it: the scene with the block's dimensions put in and
+    the machines, loads and points moved with the block (checks/design/apply.py)."""
+    return apply(scene.model_dump(exclude_unset=True), {key: float(values[i]) for key, values in batch.items()})
 
 
 def _scalar_utilisation(check, report):
@@ -99,7 +101,8 @@ def test_batch_verdicts_equal_the_scalar_checks(name):
         np.testing.assert_allclose(verdicts.volume[i], one.block.length * one.block.width * one.block.height, rtol=1e-15)
         np.testing.assert_allclose(verdicts.mass[i], one.block.mass_properties[0], rtol=1e-15)
     assert ("resonance", "fail") in seen  # the candidates reach both sides of the checks
-    assert ("resonance", "pass") in seen or name in ("lysmer", "sp26")
+    # the fan's blocks and the stiff coefficients' (machines riding on the top) keep a mode in a band throughout
+    assert ("resonance", "pass") in seen or name in ("lysmer", "sp26", "coefficients")
 
 
 def test_governing_amplitude_names_the_scalar_paths_largest_row():

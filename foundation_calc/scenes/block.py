@@ -16,6 +16,7 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.soil import OnSoil
 
 #: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
@@ -24,7 +25,9 @@ BLOCK_OMEGA_PLAUSIBLE = 1000.0
 def too_far(position, size):
     """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
     × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
-    return max(abs(v) for v in position) > LENGTH_SCALE_FACTOR * size
+    import numpy as np
+
+    return np.max(np.abs(np.asarray(position, dtype=float)), axis=-1) > LENGTH_SCALE_FACTOR * size
 
 
 class BlockLimits(Limits):
@@ -49,7 +52,7 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(SceneModel):
+class BlockScene(OnSoil, SceneModel):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
@@ -124,12 +127,13 @@ class BlockScene(SceneModel):
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
 
-    def model(self, base=None, block=None):
+    def model(self, base=None, block=None, machine_cogs=None):
         """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
-        blocks (``fcalc design``): the model's matrices are then stacks."""
+        blocks (``fcalc design``): the model's matrices are then stacks; ``machine_cogs`` (one
+        (..., 3) [m] per machine) the machines' centres of mass, moved with each candidate's block."""
         import numpy as np
 
         from foundation_calc.solvers.block.model import block_model
@@ -138,7 +142,8 @@ class BlockScene(SceneModel):
 
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         L, B = self.base if base is None else base
-        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
+        cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
+        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + cogs,
                   [J_b] + [m.inertia for m in self.machines])
         M = bodies_mass_matrix(*bodies)
         springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))

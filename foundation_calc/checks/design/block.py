@@ -3,8 +3,9 @@ candidate blocks at once: the same equations as :func:`~foundation_calc.checks.b
 on stacks of matrices instead of one.
 
 A candidate varies the block's length, width, height or density (:data:`VARIABLE_KEYS`); the
-machines and the points stay where the scene puts them (from O, the centre of the base). For each
-candidate:
+machines, their loads and the points move with the block as :func:`~.apply.moved` says (those on
+the top rise with it, those on an end face follow the face), as ``fcalc check`` sees the scene of
+:func:`~.apply.apply`. For each candidate:
 
 - the mass matrix of the block and the machines, the soil's six springs and damping of the base
   L × B (every soil method of :class:`~foundation_calc.scenes.block_soil.BlockSoil`, on arrays)
@@ -114,11 +115,12 @@ def _resonance(scene, modes, excitations):
     return outcome, utilisation, governing * len(MOTIONS) + motion, reasons
 
 
-def _amplitudes(scene, model, modes, excitations):
+def _amplitudes(scene, model, modes, excitations, points):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
-    from foundation_calc.checks.codes import TABLES, ZONES, zone_index, zone_verdicts
+    from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
+    from foundation_calc.units import rpm_from_omega
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
 
@@ -132,7 +134,7 @@ def _amplitudes(scene, model, modes, excitations):
     ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
     worst = np.zeros(n, dtype=np.int8)
     if quantities or limits.code is not None:
-        motion = point_motion(model, excitations, names[1:], [p.at for p in scene.points], frozenset())
+        motion = point_motion(model, excitations, names[1:], points, frozenset())
         rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
         for quantity, limit in quantities.items():
             field = LIMITED_VALUES[quantity]
@@ -151,11 +153,14 @@ def _amplitudes(scene, model, modes, excitations):
             reasons += [f"{quantity} {r}" for r in rows]
         if limits.code is not None:
             table = TABLES[limits.code, limits.machine_group, limits.foundation]
-            boundary = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]
+            highest = ZONES.index(limits.acceptable_zone or "B")
             top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
+            top_x = motion.displacement_rms.max(axis=-1)  # judged too below 600 rpm
+            slowest = min(rpm_from_omega(exc.omega) for exc in excitations)
+            index, by_x = code_zone_index(top, top_x, table, slowest)
             verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
-            worst = verdicts[zone_index(top, table)].max(axis=-1)
-            ratios.append(top / boundary)
+            worst = verdicts[index].max(axis=-1)
+            ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")
@@ -194,15 +199,16 @@ def _office(scene, model, L, B, m_b):
     return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
 
 
-def _inputs(scene, L, B):
+def _inputs(scene, L, B, move):
     """Outcome and governing index of the ``inputs`` check (plausibility warnings): a position
-    more than 10 × the candidate's base diagonal from O, or a speed typed in rpm."""
+    (moved with the block by ``move``) more than 10 × the candidate's base diagonal from O, or a
+    speed typed in rpm."""
     from foundation_calc.scenes.block import too_far
 
     size = np.sqrt(L * L + B * B)
     far = np.zeros(L.shape, dtype=bool)
     for position in scene.plausible_lengths().values():
-        far |= too_far(position, size)
+        far |= too_far(move(position), size)
     fast = bool(scene.speed_warnings())
     outcome = np.where(far | fast, WARN, PASS).astype(np.int8)
     governing = np.where(far, 1, np.where(fast, 2, 0))
@@ -224,20 +230,35 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         return _evaluate(scene, batch)
 
 
+def _mover(scene, L, B, H):
+    """position [m] -> (N, 3): where it is on each candidate block (:func:`~.apply.moved`); a
+    block given by its mass keeps its height, so only its faces move."""
+    from foundation_calc.checks.design.apply import moved
+
+    block = scene.block
+    old = (block.length, block.width, block.height if block.height is not None else 0.0)
+    new = (L, B, H if block.height is not None else 0.0)
+    return lambda position: moved(position, old, new)
+
+
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
+    from foundation_calc.solvers.block.model import excitation
     from foundation_calc.solvers.block.response import batch_modes
 
     L, B, H, rho = _candidates(scene, batch)
     m_b, cog_b, J_b = _block_body(L, B, H, rho, scene)
-    model = scene.model(base=(L, B), block=(m_b, cog_b, J_b))
-    excitations = scene.excitations()
+    move = _mover(scene, L, B, H)
+    model = scene.model(base=(L, B), block=(m_b, cog_b, J_b), machine_cogs=[move(m.cog) for m in scene.machines])
+    excitations = [excitation(m.name, m.omega_rad_s, [(*row[:4], move(row[4]), row[5]) for row in m.load_rows()])
+                   for m in scene.machines]
+    points = np.stack([move(p.at) for p in scene.points], axis=-2) if scene.points else []
     modes = batch_modes(model)
     unstable = ~modes.stable
-    found = {"inputs": _inputs(scene, L, B)}
+    found = {"inputs": _inputs(scene, L, B, move)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     for check, (o, u, g, r) in (("resonance", _resonance(scene, modes, excitations)),
-                                ("amplitudes", _amplitudes(scene, model, modes, excitations))):
+                                ("amplitudes", _amplitudes(scene, model, modes, excitations, points))):
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
         outcome[check] = np.where(unstable, FAIL, o).astype(np.int8)
         utilisation[check] = np.where(unstable, np.inf, u)
