@@ -17,7 +17,6 @@ needed/margin by up to ~1e-10/margin: 1e-7 there.
 
 from __future__ import annotations
 
-import copy
 import math
 
 import numpy as np
@@ -33,13 +32,11 @@ CODES = {"pass": 0, "warn": 1, "fail": 2}
 
 
 def _candidate(doc: dict, L: float, B: float, H: float):
-    """The scene with the block L × B × H, its base the block's footprint (computed, not given)."""
-    doc = copy.deepcopy(doc)
-    foundation = doc["foundation"]
-    foundation["block"].update(length=float(L), width=float(B), height=float(H))
-    for key in ("base_length", "base_width", "base_area", "base_second_moment", "mass", "moment_of_inertia", "cog_height"):
-        foundation.pop(key, None)
-    return parse_scene(doc)
+    """The scene of the block L × B × H as fcalc design writes it (checks/design/apply.py: the
+    machine, the crank axis and the points move with the block, its derived keys computed)."""
+    from foundation_calc.checks.design.apply import apply
+
+    return apply(doc, {"foundation.block.length": L, "foundation.block.width": B, "foundation.block.height": H})
 
 
 def _utilisation(run) -> float:

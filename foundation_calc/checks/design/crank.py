@@ -66,18 +66,36 @@ def block_dimensions(scene, batch: Batch) -> tuple[np.ndarray, np.ndarray, np.nd
 class CandidateDesigns:
     """The scene's design for each block (L, B, H) of a batch: ``at(soil_frequency)`` is a
     :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` whose block and soil fields
-    are arrays over the batch (``soil_frequency`` [rad/s] a scalar or one per candidate)."""
+    are arrays over the batch (``soil_frequency`` [rad/s] a scalar or one per candidate).
+
+    The machine and the positions given from C move with the block as a candidate's scene moves
+    them (:func:`~foundation_calc.checks.design.apply.moved`): the machine's centre of mass, the
+    crank axis (``a``) and the points (``points_u``, ``points_H``: (points, N) [m] from the new C).
+    """
 
     def __init__(self, scene, L, B, H, factor=1.0):
+        from foundation_calc.checks.design.apply import moved
         from foundation_calc.solvers.crank.block import block_with_machine
 
         f, machine = scene.foundation, scene.foundation.machine
         self.scene, self.base = scene, scene.design()
         self.L, self.B, self.H, self.factor = L, B, H, factor
+        old, new = tuple(getattr(f.block, k) for k in VARIED), (L, B, H)
+
+        def at_base(u, height):  # a position given from C: (x, z) from the base's centre, moved
+            position = moved([u, 0.0, height + f.cog_height], old, new)
+            return position[..., 0], position[..., 2]
+
+        self.machine_height = None if machine is None else moved([0.0, 0.0, machine.cog_height], old, new)[..., 2]
         self.props = block_with_machine(L, B, H, f.block.density, *(
-            (0.0, 0.0, 0.0) if machine is None else (machine.mass, machine.cog_height, machine.moment_of_inertia)))
+            (0.0, 0.0, 0.0) if machine is None else (machine.mass, self.machine_height, machine.moment_of_inertia)))
         self.S, self.I1 = L * B, B * L**3 / 12.0
         self.M_tot = self.props.M + self.base.rod.m
+        self.a = at_base(0.0, scene.mechanism.crank_axis_to_cog)[1] - self.props.h
+        moved_points = [at_base(p.horizontal, p.height) for p in scene.points]
+        shape = (len(moved_points), *np.shape(L))
+        self.points_u = np.array([np.broadcast_to(u, np.shape(L)) for u, _ in moved_points]).reshape(shape)
+        self.points_H = np.array([z - self.props.h for _, z in moved_points]).reshape(shape)
 
     def springs(self, soil_frequency=0.0):
         p = self.props
@@ -97,7 +115,7 @@ class CandidateDesigns:
                                  p.I_c + self.M_tot * p.h**2)
         ones = np.ones_like(self.L)
         return replace(self.base, M=p.M, I_c=p.I_c, h=p.h, S=self.S, I1=self.I1, c=c * ones, c1=c1 * ones,
-                       c_phi=c_phi * ones, C_x=b.C_x * ones, C_z=b.C_z * ones, C_phi=b.C_phi * ones)
+                       c_phi=c_phi * ones, C_x=b.C_x * ones, C_z=b.C_z * ones, C_phi=b.C_phi * ones, a=self.a)
 
     def stable(self) -> np.ndarray:
         """The candidates whose rocking spring exceeds the weight's overturning moment at every
@@ -143,7 +161,8 @@ def _resonance(out: _Verdicts, scene, designs, d0, M, K, mech, harmonics, stable
     _, _, _, fc, fs = mech
     orders = range(1, harmonics + 1)
     conditions = harmonic_conditions(orders)
-    shares = forcing_shares(M, K, (fc - 1j * fs).T[1 : harmonics + 1]).reshape(len(d0.S), -1)
+    forces = np.swapaxes(fc - 1j * fs, -1, -2)[:, 1 : harmonics + 1]  # (N, harmonics, 3)
+    shares = forcing_shares(M, K, forces).reshape(len(d0.S), -1)
     zero, averaged = _frequencies(designs)
     margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, conditions, shares, scene.limits.detuning)
     worst = verdict.worst
@@ -173,6 +192,7 @@ def _motion(scene, designs, d0, block, mech, harmonics):
         parts = [block_matrices(designs.at(n * omega)) for n in range(harmonics + 1)]
         M, C, K = (np.stack([p[i] for p in parts], axis=-3) for i in range(3))
         resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega)
+        M_m, C_m, K_m = (x[:, None] for x in (M_m, C_m, K_m))
         Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics, per_harmonic=True)
     else:
         M, C, K = block
@@ -182,7 +202,7 @@ def _motion(scene, designs, d0, block, mech, harmonics):
     return PeriodicMotion(omega=omega, cos=Z.real, sin=-Z.imag), resonant
 
 
-def _amplitudes(out: _Verdicts, scene, motion, resonant, stable):
+def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
     :func:`~foundation_calc.checks.crank_amplitudes.check_amplitudes` judges them."""
     from foundation_calc.checks.codes import TABLES, ZONES, application_warnings
@@ -196,9 +216,7 @@ def _amplitudes(out: _Verdicts, scene, motion, resonant, stable):
     wanted = set(limited) | ({"velocity_rms"} if limits.code is not None else set())
     series = [(motion.cos[:, None, :2, :], motion.sin[:, None, :2, :])]  # C: x and y themselves
     if points:
-        horizontal = np.array([p.horizontal for p in points])[:, None]
-        height = np.array([p.height for p in points])[:, None]
-        cos, sin = point_series(motion, horizontal, height)  # (points, N, 2, 2K + 1)
+        cos, sin = point_series(motion, designs.points_u, designs.points_H)  # (points, N, 2, 2K + 1)
         series.append((np.moveaxis(cos, 0, 1), np.moveaxis(sin, 0, 1)))
     statistic = {q: np.concatenate([_statistic(q, c, s, motion.omega) for c, s in series], axis=1) for q in wanted}
     ratios, fails, reasons = [], [], []
@@ -282,13 +300,12 @@ def _inputs(out: _Verdicts, scene, designs):
     block = outside(designs.L, "block_length") | outside(designs.B, "block_length") | outside(designs.H, "block_height")
     block |= outside(np.full(len(designs.L), f.block.density), "block_density")
     foundation = block | any(x.key.startswith("foundation.") for x in fixed)
-    lengths = {**f.lengths_given(), **({} if mech is None else {"mechanism": max(abs(mech.crank_radius), abs(mech.rod_length),
-                                                                              abs(mech.crank_axis_to_cog))})}
-    others = [abs(v) for load in scene.loads for v in (load.at.horizontal, load.at.height)]
-    others += [abs(v) for p in scene.points for v in (p.horizontal, p.height)]
+    # the lengths the candidate's scene gives, each against ten times the size sqrt(S) of its base
     size = LENGTH_SCALE_FACTOR * np.sqrt(designs.S)
-    too_long_foundation = max((abs(v) for v in f.lengths_given().values()), default=0.0) > size
-    too_long = max([abs(v) for v in lengths.values()] + others, default=0.0) > size
+    too_long_foundation = np.zeros(len(size), bool) if designs.machine_height is None else np.abs(designs.machine_height) > size
+    lengths = [np.abs(designs.a), np.abs(designs.points_u).max(axis=0, initial=0.0), np.abs(designs.points_H).max(axis=0, initial=0.0)]
+    too_long = too_long_foundation | (np.maximum.reduce(lengths) > size)
+    too_long |= max(abs(mech.crank_radius), abs(mech.rod_length)) > size
     warn = block | too_long | bool(fixed)
     if f.machine is not None:
         machine = f.machine.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
@@ -300,10 +317,14 @@ def _inputs(out: _Verdicts, scene, designs):
 
 
 def _block_dependent(key: str) -> bool:
-    """Whether a plausibility finding's key is one the block's dimensions enter (re-judged per candidate)."""
-    return key.startswith(("foundation.block.", "foundation.base_", "block-to-machine")) or key in (
-        "foundation.cog_height", "foundation.machine.cog_height", "mechanism.crank_radius", "mechanism.rod_length",
-        "mechanism.crank_axis_to_cog") or ".at." in key or key.startswith("points.")
+    """Whether a plausibility finding's key is one the block's dimensions enter (re-judged per
+    candidate): the block, the keys a candidate's scene computes from it, the lengths judged
+    against the base's size and the block-to-machine mass ratio."""
+    from foundation_calc.checks.design.apply import CRANK_DERIVED
+
+    derived = tuple(f"foundation.{k}" for k in CRANK_DERIVED)
+    return key.startswith(("foundation.block.", "block-to-machine", "points.", *derived)) or key in (
+        "foundation.machine.cog_height", "mechanism.crank_radius", "mechanism.rod_length", "mechanism.crank_axis_to_cog")
 
 
 def _physics(out: _Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resonance=True, amplitudes=True):
@@ -324,12 +345,13 @@ def _physics(out: _Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resona
         designs = CandidateDesigns(scene, *stand_in)
     d0 = designs.at(0.0)
     block = block_matrices(d0)
+    mech = mech.at(designs.a)
     judgement = None
     if resonance:
         judgement = _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
     if amplitudes:
         motion, resonant = _motion(scene, designs, d0, block, mech, harmonics)
-        _amplitudes(out, scene, motion, resonant, stable)
+        _amplitudes(out, scene, designs, motion, resonant, stable)
     return given, judgement
 
 
@@ -373,8 +395,7 @@ def checks_judged(scene) -> tuple[str, ...]:
 
 def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     """Every check of ``fcalc check`` on every candidate block of ``batch`` (module docstring)."""
-    from foundation_calc.solvers.crank.averaged import mechanism_operator
-    from foundation_calc.solvers.crank.batch import forcing_harmonics
+    from foundation_calc.solvers.crank.batch import MechanismOperator
 
     if scene.mechanism is None or scene.loads:
         raise NotImplementedError("the batch judges a crank foundation's [mechanism] alone; a scene with [[loads]]"
@@ -382,8 +403,8 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     if scene.soil.modulus_range is not None:
         raise NotImplementedError("the batch does not judge [soil] modulus_range; the full path does")
     L, B, H = block_dimensions(scene, batch)
-    mech = mechanism_operator(scene.design())
-    harmonics = forcing_harmonics(mech[3], mech[4])
+    mech = MechanismOperator.of(scene.design())
+    harmonics = mech.harmonics
     checks = checks_judged(scene)
     parts = [_chunk(scene, L[i : i + CHUNK], B[i : i + CHUNK], H[i : i + CHUNK], mech, harmonics, checks)
              for i in range(0, len(L), CHUNK)]

@@ -18,7 +18,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS, modal_damping_ratios, natural_modes
+from dataclasses import dataclass, replace
+
+from foundation_calc.solvers.crank.averaged import (
+    FORCING_HARMONICS,
+    mechanism_operator,
+    modal_damping_ratios,
+    natural_modes,
+)
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
 
 #: Relative size [-] of a forcing harmonic (to the largest of its row: x, y or θ) below which the
@@ -31,15 +38,47 @@ FORCING_FLOOR = 1e-15
 
 def forcing_harmonics(fc, fs) -> int:
     """The highest harmonic K_b whose forcing reaches :data:`FORCING_FLOOR` of its row's
-    largest: the response of a batch keeps harmonics 0 ... K_b (at least 1).
+    largest: the response of a batch keeps harmonics 0 ... K_b (at least 1). Stacks (..., 3, K + 1)
+    of forcings take the highest over the stack.
 
     >>> forcing_harmonics(np.array([[0.0, 1.0, 1e-3, 1e-16]]), np.zeros((1, 4)))
     2
     """
     size = np.hypot(fc, fs)
     largest = size.max(axis=-1, keepdims=True)
-    above = (size > FORCING_FLOOR * np.where(largest > 0.0, largest, 1.0)).any(axis=0)
-    return max(1, int(np.nonzero(above)[0].max(initial=1)))
+    above = size > FORCING_FLOOR * np.where(largest > 0.0, largest, 1.0)
+    return max(1, int(np.nonzero(above.reshape(-1, size.shape[-1]).any(axis=0))[0].max(initial=1)))
+
+
+@dataclass(frozen=True)
+class MechanismOperator:
+    """The mechanism's part of the averaged operator (:func:`~foundation_calc.solvers.crank.averaged.mechanism_operator`)
+    as a function of the distance ``a`` from the crank axis to C [m], for blocks whose C moves.
+
+    The exact equations hold the rod's position p = (p_u, p_v - a) in products of at most two
+    factors (m |p|² θ'', m p × (...)); the drive's torque takes the arm M' - C1, free of a. So
+    every averaged matrix and forcing coefficient is a polynomial of degree 2 in a, given
+    exactly by its values at a0 - 1, a0, a0 + 1 m (:attr:`samples`: (M, C, K, fc, fs) at each).
+    """
+
+    a0: float
+    samples: tuple
+
+    @classmethod
+    def of(cls, design) -> "MechanismOperator":
+        a0 = float(design.a)
+        return cls(a0, tuple(mechanism_operator(replace(design, a=a0 + step)) for step in (-1.0, 0.0, 1.0)))
+
+    @property
+    def harmonics(self) -> int:
+        """:func:`forcing_harmonics` over the three samples."""
+        return max(forcing_harmonics(fc, fs) for *_, fc, fs in self.samples)
+
+    def at(self, a) -> tuple[np.ndarray, ...]:
+        """M, C, K (..., 3, 3) and fc, fs (..., 3, K + 1) at the distances ``a`` [m] (any shape)."""
+        t = (np.asarray(a, dtype=float) - self.a0).reshape(np.shape(a) + (1, 1))
+        low, mid, high = self.samples
+        return tuple(m + t * (h - lo) / 2.0 + t * t * (h - 2.0 * m + lo) / 2.0 for lo, m, h in zip(low, mid, high))
 
 
 def solve3(A, b):
@@ -76,7 +115,7 @@ def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool
     """Complex harmonics Z_n (n = 0 ... ``harmonics``) of x, y, θ, shape (..., 3, harmonics + 1):
     cos = Z.real, sin = -Z.imag. ``M``, ``C``, ``K``: (..., 3, 3), or with ``per_harmonic``
     (..., harmonics + 1, 3, 3), an operator per harmonic (springs that depend on frequency);
-    ``fc``, ``fs``: the forcing's coefficients (3, > ``harmonics``)."""
+    ``fc``, ``fs``: the forcing's coefficients (..., 3, > ``harmonics``), one per system or shared."""
     w = np.arange(harmonics + 1) * omega
     if not per_harmonic:
         M, C, K = (np.asarray(x)[..., None, :, :] for x in (M, C, K))
@@ -85,8 +124,8 @@ def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool
     ops = np.empty(np.broadcast_shapes(K.shape, w.shape), dtype=complex)
     ops.real = K - (w * w) * M
     ops.imag = w * C
-    force = fc[:, : harmonics + 1] - 1j * fs[:, : harmonics + 1]  # (3, harmonics + 1)
+    force = np.moveaxis(fc[..., : harmonics + 1] - 1j * fs[..., : harmonics + 1], -2, 0)  # (3, ..., harmonics + 1)
     return np.moveaxis(solve3(ops, force), 0, -2)
 
 
-__all__ = ["FORCING_FLOOR", "forcing_harmonics", "harmonic_response", "resonant_blocks", "solve3"]
+__all__ = ["FORCING_FLOOR", "MechanismOperator", "forcing_harmonics", "harmonic_response", "resonant_blocks", "solve3"]
