@@ -20,8 +20,8 @@ L × B); everything else is the scene's. Per candidate, in array operations over
 
 The search this serves re-checks its front-runners by the full path. What the batch does not
 judge: a run-up (``runup`` is reported PASS with utilisation NaN and the reason
-:data:`NOT_EVALUATED`); a scene with ``[[loads]]`` or ``[soil] modulus_range`` is refused
-(:class:`NotImplementedError`) so that the caller uses the full path.
+:data:`NOT_EVALUATED`); a scene with ``[[loads]]`` is refused (:class:`NotImplementedError`) so
+that the caller uses the full path. ``[soil] modulus_range``: :mod:`.crank_range`.
 """
 
 from __future__ import annotations
@@ -59,8 +59,8 @@ def block_dimensions(scene, batch: Batch) -> tuple[np.ndarray, np.ndarray, np.nd
             raise ValueError(f"{key} cannot vary here; a crank foundation varies "
                              + ", ".join(f"foundation.block.{k}" for k in VARIED))
         given[short] = np.asarray(values, dtype=float)
-    size = np.broadcast_shapes(*(v.shape for v in given.values())) if given else (1,)
-    return tuple(np.broadcast_to(given.get(k, getattr(block, k)), size).astype(float) for k in VARIED)
+    size = np.broadcast_shapes((1,) if not given else (), *(v.shape for v in given.values()))
+    return tuple(np.atleast_1d(np.broadcast_to(given.get(k, getattr(block, k)), size)).astype(float) for k in VARIED)
 
 
 class CandidateDesigns:
@@ -358,6 +358,12 @@ def _physics(out: _Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resona
 def _chunk(scene, L, B, H, mech, harmonics, checks) -> _Verdicts:
     out = _Verdicts()
     given, _ = _physics(out, scene, L, B, H, mech, harmonics)
+    if scene.soil.modulus_range is not None:
+        from foundation_calc.checks.design.crank_range import over_range, with_range
+
+        for check, ranged in over_range(scene, L, B, H, mech, harmonics, CHUNK).items():
+            out.put(check, *with_range(out.outcome[check], out.utilisation[check], out.governing[check],
+                                       out.reasons[check], ranged))
     if "inputs" in checks:
         _inputs(out, scene, given)
     if "runup" in checks:
@@ -400,9 +406,12 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     if scene.mechanism is None or scene.loads:
         raise NotImplementedError("the batch judges a crank foundation's [mechanism] alone; a scene with [[loads]]"
                                   " is judged by the full path")
-    if scene.soil.modulus_range is not None:
-        raise NotImplementedError("the batch does not judge [soil] modulus_range; the full path does")
     L, B, H = block_dimensions(scene, batch)
+    if not len(L):  # an empty batch: the verdicts' arrays of a batch of one, emptied
+        one = evaluate(scene, {f"foundation.block.{k}": np.array([getattr(scene.foundation.block, k)]) for k in VARIED})
+        return CandidateVerdicts(*(v[:0] for v in (one.volume, one.mass)),
+                                 *({c: a[:0] for c, a in d.items()} for d in (one.outcome, one.utilisation, one.governing)),
+                                 one.reasons)
     mech = MechanismOperator.of(scene.design())
     harmonics = mech.harmonics
     checks = checks_judged(scene)
