@@ -261,6 +261,9 @@ def damped_response_blocks(scene, amplitudes: dict | None) -> tuple:
             "Error estimate for this design: the spread column is |peak of the first approximation − peak here| / peak"
             " here. Both closed forms leave out terms of first order in μ = m/M_tot; their spread is the scale of what"
             " the averaged operator leaves out (run with --exact for its errors against the exact periodic solution)."))
+    from foundation_calc.output.report.code_zone import code_zone_blocks
+
+    blocks += code_zone_blocks(scene, amplitudes.get("code"), solve.motion())
     return tuple(blocks)
 
 
