@@ -82,10 +82,9 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
         "Each point's horizontal and vertical displacement, as a rigid-body point of the block, is the series"
         " Σ A_n cos(nωt − φ_n) of the damped solve above; the larger r.m.s. velocity (the mean left out, ISO 10816-1,"
         " 3.3) is placed in the zone table, a boundary value in the lower zone.")
-    from foundation_calc.output.report.handcalc import Chain
+    from foundation_calc.output.report.handcalc import Definitions
 
-    terms = Chain("")
-    terms.nomenclature.update({
+    terms = Definitions({
         "A_n": ("amplitude of harmonic n of a point's displacement in one direction", "m"),
         "v_n": ("r.m.s. velocity of harmonic n, nω A_n/√2", "mm/s"),
         "v_rms": ("r.m.s. velocity of a point over one revolution, the mean left out", "mm/s"),

@@ -92,6 +92,17 @@ class Chain:
         )
 
 
+class Definitions:
+    """Symbols a section uses outside a chain (a solve's matrices, a table's columns), for the
+    nomenclature: ``{symbol: (meaning, unit)}``; it puts nothing on the sheet itself."""
+
+    def __init__(self, entries: dict[str, tuple[str, str]]):
+        self.nomenclature = dict(entries)
+
+    def blocks(self) -> tuple:
+        return ()
+
+
 def nomenclature_table(chains) -> Table:
     """Every symbol of ``chains`` with its meaning and unit, in order of first use."""
     seen: dict[str, tuple[str, str]] = {}
