@@ -131,6 +131,10 @@ def methods_section(scene, documents: dict):
         response = damped_response_blocks(scene, documents.get("amplitudes"))
     elif scene.kind == "platform" and "design" in documents:
         chains = [platform_chain(documents["design"])]
+    elif scene.kind == "block_foundation":
+        from foundation_calc.output.report.block_methods import block_sections_blocks
+
+        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"))
     else:
         return None
     blocks = [block for chain in chains for block in chain.blocks()]
