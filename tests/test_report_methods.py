@@ -121,7 +121,7 @@ def assert_every_symbol_defined(section) -> None:
             continue
         for symbol, formula, *_ in chain.rows:
             assert symbol in defined
-            if formula.startswith(("ω* =", "n ω")):  # how a column's frequency was found
+            if formula.startswith(("ω* =", "n ω", "given")):  # how a column's input was found
                 continue
             for compound in sorted((d for d in defined if any(c in d for c in "()+,")), key=len, reverse=True):
                 formula = formula.replace(compound, " ")  # symbols such as (c31+c41), K_z,s

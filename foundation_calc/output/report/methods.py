@@ -137,8 +137,14 @@ def methods_section(scene, documents: dict):
         chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"))
     else:
         return None
+    runup = []
+    if "runup" in documents:
+        from foundation_calc.output.report.runup_methods import runup_columns
+
+        runup = runup_columns(scene, documents["runup"])
     blocks = [block for chain in chains for block in chain.blocks()]
     terms = [block for block in response if hasattr(block, "nomenclature")]
     blocks += [block for block in response if not hasattr(block, "nomenclature")]
-    blocks.append(nomenclature_table([*chains, *terms]))
+    blocks += [block for columns in runup for block in columns.blocks()]
+    blocks.append(nomenclature_table([*chains, *terms, *runup]))
     return Section("Methods: hand calculation of the judged numbers", tuple(blocks))
