@@ -47,13 +47,20 @@ class BlockSolve:
     responses: tuple[np.ndarray, ...]
 
 
-def block_solve(model, excitations) -> BlockSolve:
-    """Modes from an eigen-solve of M⁻¹K and Z of every machine's orders by one complex solve each."""
-    squared, shapes = np.linalg.eig(np.linalg.solve(model.M, model.K))
+def modes_of(M, K, C) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sheet's own modes: p ascending [rad/s] from an eigen-solve of M⁻¹K, the shapes
+    mass-normalised (columns, vᵀ M v = 1) and ζ = vᵀ C v / (2 p) [-]."""
+    squared, shapes = np.linalg.eig(np.linalg.solve(M, K))
     order = np.argsort(squared.real)
     p = np.sqrt(squared.real[order])
     v = shapes.real[:, order]
-    zeta = np.einsum("ij,ik,kj->j", v, model.C, v) / (2.0 * p * np.einsum("ij,ik,kj->j", v, model.M, v))
+    v = v / np.sqrt(np.einsum("ni,nm,mi->i", v, M, v))
+    return p, v, np.einsum("ni,nm,mi->i", v, C, v) / (2.0 * p)
+
+
+def block_solve(model, excitations) -> BlockSolve:
+    """Modes from an eigen-solve of M⁻¹K and Z of every machine's orders by one complex solve each."""
+    p, _, zeta = modes_of(model.M, model.K, model.C)
     responses = []
     for exc in excitations:
         Z = [np.linalg.solve(model.K - (n * exc.omega) ** 2 * model.M + 1j * n * exc.omega * model.C, q)

@@ -15,20 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from foundation_calc.output.report.block_methods import modes_of
 from foundation_calc.output.report.handcalc import Chain, Columns
 
 LE = "[Le]"
-
-
-def _modes(structure) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """ω_i ascending, mass-normalised shapes (columns) and ζ_i = φᵀCφ/(2ω_i) of a structure."""
-    squared, shapes = np.linalg.eig(np.linalg.solve(structure.mass, structure.stiffness))
-    order = np.argsort(squared.real)
-    natural = np.sqrt(squared.real[order])
-    shapes = shapes.real[:, order]
-    shapes = shapes / np.sqrt(np.einsum("ni,nm,mi->i", shapes, structure.mass, shapes))
-    zeta = np.einsum("ni,nm,mi->i", shapes, structure.damping, shapes) / (2.0 * natural)
-    return natural, shapes, zeta
 
 
 def _structures(scene) -> dict:
@@ -89,7 +79,7 @@ def runup_columns(scene, runup: dict) -> list[Columns]:
         kind, _, machine = key.partition(":")
         structure, names, omega = structures[f":{machine}" if machine else ""]
         direction = 1 if kind == "run_up" else -1
-        modes = _modes(structure)
+        modes = modes_of(structure.mass, structure.stiffness, structure.damping)
         chains = [passage_chain(structure, list(names), omega, run["duration"], direction, p, modes) for p in run["passages"]]
         heads = tuple(f"mode {p['mode']}, {p['harmonic']:g}ω" for p in run["passages"])
         lead = tuple((name, "given", source) for name, source in
