@@ -61,3 +61,15 @@ def test_block_sheet_has_its_methods_and_every_symbol_defined():
     assert any(t.startswith("Matrices of Eq. (1)") for t in titles) and any(t.startswith("Modes") for t in titles)
     defined = {row[0] for row in section.blocks[-1].rows}
     assert {"M, K, C", "Q_n", "Z", "T_P", "ζ", "Ω"} <= defined
+
+
+def test_block_code_zones_are_the_checks():
+    from foundation_calc.output.report.block_methods import block_sections_blocks
+
+    scene = load_scene(CONFIGS / "block_fan_torsion_near_speed.toml")
+    doc = _amplitudes(scene)
+    blocks = block_sections_blocks(scene, doc)
+    found = next(b for b in blocks if getattr(b, "title", "").startswith("Code zone"))
+    assert [(r[0], r[1], r[3], r[4].lower()) for r in found.rows] == [
+        (p["point"], p["governing"], p["zone"], p["verdict"]) for p in doc["code"]["points"]]
+    assert any("Table A.2" in getattr(b, "title", "") for b in blocks)

@@ -131,6 +131,23 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
     return forcing, response
 
 
+def _zones(code: dict, names, rms: np.ndarray) -> tuple:
+    """The code check of every point from the sheet's r.m.s. velocities: the largest direction's
+    value placed in the zone table."""
+    from foundation_calc.checks.codes import TABLES, zone, zone_outcome
+    from foundation_calc.output.report.code_zone import zone_table
+
+    zones = TABLES[code["code"], code["machine_group"], code["foundation"]]
+    rows = []
+    for name, values in zip(names, rms):
+        d = int(np.argmax(values))
+        z = zone(float(values[d]), zones)
+        rows.append((name, DIRECTIONS[d], figure(values[d] * 1e3, 3), z, zone_outcome(z, code["acceptable_zone"]).value.upper()))
+    found = table("Code zone of each point: the largest v_rms of the points table", ("point", "direction", "v_rms [mm/s]", "zone", "verdict"),
+                  rows, (False, False, True, False, False))
+    return found, zone_table(code)
+
+
 def _points(solve: BlockSolve, names, points) -> Table:
     displacement, velocity, rms = point_values(solve, points)
     labels = [(name, d) for name in names for d in DIRECTIONS]
@@ -160,6 +177,8 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]
         blocks.append(_points(solve, names, points))
+        if amplitudes.get("code"):
+            blocks += _zones(amplitudes["code"], names, point_values(solve, points)[2])
     blocks.append(Definitions({
         "O": ("centre of the base at base level, origin of q", "-"),
         "q": ("displacement u_x, u_y, u_z of O and rotation θ_x, θ_y, θ_z of the block", "m, rad"),

@@ -40,6 +40,22 @@ def velocity_terms(motion, horizontal, height) -> np.ndarray:
     return n * float(motion.omega) * np.hypot(cos, sin) / np.sqrt(2.0)
 
 
+def zone_table(code: dict):
+    """The code's zone table (:data:`~foundation_calc.checks.codes.TABLES`) with its clause and
+    each zone's verdict for the scene's acceptable zone; ``code``: the amplitudes document's part."""
+    from foundation_calc.checks.codes import TABLES, zone_outcome
+
+    zones = TABLES[code["code"], code["machine_group"], code["foundation"]]
+    b = zones.boundaries_mm_s
+    ranges = (f"v ≤ {b[0]:g}", f"{b[0]:g} < v ≤ {b[1]:g}", f"{b[1]:g} < v ≤ {b[2]:g}", f"v > {b[2]:g}")
+    accept = code["acceptable_zone"]
+    return table(
+        f"Zone table: {zones.title} support ({zones.clause})",
+        ("zone", "r.m.s. velocity [mm/s]", f"verdict (acceptable zone: {accept or 'not given, B warns'})"),
+        ((z, r, zone_outcome(z, accept).value) for z, r in zip("ABCD", ranges)),
+        (False, False, False))
+
+
 def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     """The code check of the scene's points from ``motion`` (the sheet's damped solve) and the
     ``code`` part of the amplitudes document (its table, clause, zones and verdicts)."""
@@ -68,16 +84,7 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
         f"R.m.s. velocity from the harmonics: v_n = nω A_n / √2, v_rms = √(Σ v_n²) (ω = {figure(omega, 4)} rad/s)",
         ("point", "direction", *(f"v_{n} [mm/s]" for n in own), "other n [mm/s]", "v_rms [mm/s]", "zone", "verdict"),
         rows, (False, False, *(True,) * (len(own) + 2), False, False))
-    from foundation_calc.checks.codes import zone_outcome
-
-    b = [code["boundaries"][k] * mm for k in ("A/B", "B/C", "C/D")]
-    ranges = (f"v ≤ {b[0]:g}", f"{b[0]:g} < v ≤ {b[1]:g}", f"{b[1]:g} < v ≤ {b[2]:g}", f"v > {b[2]:g}")
-    accept = code["acceptable_zone"]
-    zones = table(
-        f"Zone table: {code['code']}, group {code['machine_group']}, {code['foundation']} support ({code['clause']})",
-        ("zone", "r.m.s. velocity [mm/s]", f"verdict (acceptable zone: {accept or 'not given, B warns'})"),
-        ((z, r, zone_outcome(z, accept).value) for z, r in zip("ABCD", ranges)),
-        (False, False, False))
+    zones = zone_table(code)
     note = Paragraph(
         "Each point's horizontal and vertical displacement, as a rigid-body point of the block, is the series"
         " Σ A_n cos(nωt − φ_n) of the damped solve above; the larger r.m.s. velocity (the mean left out, ISO 10816-1,"
@@ -93,4 +100,4 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     return (note, velocity, zones, terms)
 
 
-__all__ = ["code_zone_blocks", "velocity_terms"]
+__all__ = ["code_zone_blocks", "velocity_terms", "zone_table"]
