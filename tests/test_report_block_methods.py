@@ -44,11 +44,12 @@ def test_the_sheets_6dof_solve_is_the_checks(path):
         assert np.abs(Z - expected).max() <= TOLERANCE * np.abs(expected).max()
     names = ["G", *(p.name for p in scene.points)]
     at = [doc["points"][name]["at"] for name in names]
-    displacement, velocity, rms = point_values(solve, at)
+    displacement, velocity, rms, rms_u = point_values(solve, at)
     for i, name in enumerate(names):
         judged = doc["points"][name]
         for j, d in enumerate(("x", "y", "z")):
-            for ours, key in ((displacement, "displacement_peak"), (velocity, "velocity_peak"), (rms, "velocity_rms")):
+            for ours, key in ((displacement, "displacement_peak"), (velocity, "velocity_peak"), (rms, "velocity_rms"),
+                              (rms_u, "displacement_rms")):
                 assert abs(ours[i, j] - judged[key][d]) <= TOLERANCE * max(judged[key][d], 1e-15), (name, d, key)
 
 
@@ -70,6 +71,7 @@ def test_block_code_zones_are_the_checks():
     doc = _amplitudes(scene)
     blocks = block_sections_blocks(scene, doc)
     found = next(b for b in blocks if getattr(b, "title", "").startswith("Code zone"))
-    assert [(r[0], r[1], r[3], r[4].lower()) for r in found.rows] == [
-        (p["point"], p["governing"], p["zone"], p["verdict"]) for p in doc["code"]["points"]]
+    assert [(r[0], r[1], r[3], r[5], r[6], r[7].lower()) for r in found.rows] == [
+        (p["point"], p["governing"], p["velocity_zone"], p["displacement_zone"], p["zone"], p["verdict"])
+        for p in doc["code"]["points"]]
     assert any("Table A.2" in getattr(b, "title", "") for b in blocks)

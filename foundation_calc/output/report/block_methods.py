@@ -70,16 +70,16 @@ def block_solve(model, excitations) -> BlockSolve:
                       tuple(e.orders for e in excitations), tuple(e.Q for e in excitations), tuple(responses))
 
 
-def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(peak displacement, peak velocity, r.m.s. velocity), each (P, 3), of the body points
-    ``points`` (P, 3) [m] from O: each machine's series' peak (trig_series.peak), added over the
-    machines; the r.m.s. the root-sum-square of every harmonic."""
+def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
+    """(peak displacement, peak velocity, r.m.s. velocity, r.m.s. displacement), each (P, 3), of
+    the body points ``points`` (P, 3) [m] from O: each machine's series' peak (trig_series.peak),
+    added over the machines; an r.m.s. value the root-sum-square of every harmonic."""
     from foundation_calc.solvers.numerics.trig_series import peak
     from foundation_calc.solvers.rigid_body.kinematics import point_maps
 
     T = point_maps(np.asarray(points, dtype=float))
     shape = (len(points), 3)
-    displacement, velocity, square = np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    displacement, velocity, square, square_u = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
     for omega, orders, Z in zip(solve.omegas, solve.orders, solve.responses):
         U = np.einsum("pij,hj->pih", T, Z)
         V = U * (1j * omega * orders)
@@ -88,7 +88,8 @@ def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, np.ndarray, np.
             a[..., orders] = series
             total += peak(a.real, -a.imag)
         square += (np.abs(V) ** 2).sum(-1) / 2.0
-    return displacement, velocity, np.sqrt(square)
+        square_u += (np.abs(U) ** 2).sum(-1) / 2.0
+    return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
 
 
 def _matrices(model) -> Table:
@@ -131,25 +132,26 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
     return forcing, response
 
 
-def _zones(code: dict, names, rms: np.ndarray) -> tuple:
-    """The code check of every point from the sheet's r.m.s. velocities: the largest direction's
-    value placed in the zone table."""
-    from foundation_calc.checks.codes import TABLES, zone, zone_outcome
-    from foundation_calc.output.report.code_zone import zone_table
+def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
+    """The code check of every point from the sheet's r.m.s. velocities and displacements: the
+    largest direction's values placed in the zone table, the worse zone deciding."""
+    from foundation_calc.checks.codes import zone_outcome
+    from foundation_calc.output.report.code_zone import judged_zone, zone_table
 
-    zones = TABLES[code["code"], code["machine_group"], code["foundation"]]
     rows = []
-    for name, values in zip(names, rms):
-        d = int(np.argmax(values))
-        z = zone(float(values[d]), zones)
-        rows.append((name, DIRECTIONS[d], figure(values[d] * 1e3, 3), z, zone_outcome(z, code["acceptable_zone"]).value.upper()))
-    found = table("Code zone of each point: the largest v_rms of the points table", ("point", "direction", "v_rms [mm/s]", "zone", "verdict"),
-                  rows, (False, False, True, False, False))
+    for name, v, u in zip(names, rms, rms_u):
+        z = judged_zone(code, float(v.max()), float(u.max()))
+        d = int(np.argmax(v if z.quantity == "velocity" else u))
+        rows.append((name, DIRECTIONS[d], figure(v.max() * 1e3, 3), z.velocity_zone, figure(u.max() * 1e6, 3),
+                     z.displacement_zone, z.zone, zone_outcome(z.zone, code["acceptable_zone"]).value.upper()))
+    found = table("Code zone of each point: its largest v_rms and d_rms = √(Σ |u_P,n|²/2), the worse zone deciding",
+                  ("point", "direction", "v_rms [mm/s]", "v zone", "d_rms [µm]", "d zone", "zone", "verdict"),
+                  rows, (False, False, True, False, True, False, False, False))
     return found, zone_table(code)
 
 
 def _points(solve: BlockSolve, names, points) -> Table:
-    displacement, velocity, rms = point_values(solve, points)
+    displacement, velocity, rms, _ = point_values(solve, points)
     labels = [(name, d) for name in names for d in DIRECTIONS]
     cols = [column(list(values.ravel() * scale), 3) for values, scale in ((displacement, 1e6), (velocity, 1e3), (rms, 1e3))]
     rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
@@ -178,7 +180,7 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         points = [model.cog, *(p.at for p in scene.points)]
         blocks.append(_points(solve, names, points))
         if amplitudes.get("code"):
-            blocks += _zones(amplitudes["code"], names, point_values(solve, points)[2])
+            blocks += _zones(amplitudes["code"], names, *point_values(solve, points)[2:])
     blocks.append(Definitions({
         "O": ("centre of the base at base level, origin of q", "-"),
         "q": ("displacement u_x, u_y, u_z of O and rotation θ_x, θ_y, θ_z of the block", "m, rad"),
@@ -189,6 +191,7 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         "Ω": ("frequency of a load's order, nω of its machine", "rad/s"),
         "Z": ("complex amplitude of q at Ω", "m, rad"),
         "T_P": ("map of q to the displacement of point P, [I, −[r_P]×]", "-"),
+        "d_rms": ("r.m.s. displacement of a point, the root-sum-square of every harmonic", "µm"),
         "G": ("centre of mass of block and machines", "-"),
     }))
     return tuple(blocks)

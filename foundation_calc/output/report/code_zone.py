@@ -30,14 +30,25 @@ MOST_COLUMNS = 4
 DIRECTIONS = ("horizontal", "vertical")
 
 
-def velocity_terms(motion, horizontal, height) -> np.ndarray:
-    """v_n = nω A_n / √2 [m/s] of every point (rows) and direction (horizontal, vertical), shape
-    (points, 2, K + 1), n = 0 ... K (v_0 = 0: the mean is no vibration)."""
+def harmonic_amplitudes(motion, horizontal, height) -> np.ndarray:
+    """A_n [m] of every point (rows) and direction (horizontal, vertical), shape (points, 2, K + 1)."""
     from foundation_calc.solvers.crank.response import point_series
 
     cos, sin = point_series(motion, np.asarray(horizontal, dtype=float), np.asarray(height, dtype=float))
-    n = np.arange(cos.shape[-1])
-    return n * float(motion.omega) * np.hypot(cos, sin) / np.sqrt(2.0)
+    return np.hypot(cos, sin)
+
+
+def velocity_terms(motion, horizontal, height) -> np.ndarray:
+    """v_n = nω A_n / √2 [m/s] of every point (rows) and direction (horizontal, vertical), shape
+    (points, 2, K + 1), n = 0 ... K (v_0 = 0: the mean is no vibration)."""
+    A = harmonic_amplitudes(motion, horizontal, height)
+    return np.arange(A.shape[-1]) * float(motion.omega) * A / np.sqrt(2.0)
+
+
+def displacement_rms(motion, horizontal, height) -> np.ndarray:
+    """d_rms = √(Σ_{n≥1} A_n²/2) [m] of every point and direction, shape (points, 2)."""
+    A = harmonic_amplitudes(motion, horizontal, height)[..., 1:]
+    return np.sqrt((A**2).sum(-1) / 2.0)
 
 
 def zone_table(code: dict):
@@ -46,14 +57,33 @@ def zone_table(code: dict):
     from foundation_calc.checks.codes import TABLES, zone_outcome
 
     zones = TABLES[code["code"], code["machine_group"], code["foundation"]]
-    b = zones.boundaries_mm_s
-    ranges = (f"v ≤ {b[0]:g}", f"{b[0]:g} < v ≤ {b[1]:g}", f"{b[1]:g} < v ≤ {b[2]:g}", f"v > {b[2]:g}")
+
+    def ranges(b):
+        return (f"≤ {b[0]:g}", f"{b[0]:g} - {b[1]:g}", f"{b[1]:g} - {b[2]:g}", f"> {b[2]:g}") if b else ("-",) * 4
+
     accept = code["acceptable_zone"]
     return table(
-        f"Zone table: {zones.title} support ({zones.clause})",
-        ("zone", "r.m.s. velocity [mm/s]", f"verdict (acceptable zone: {accept or 'not given, B warns'})"),
-        ((z, r, zone_outcome(z, accept).value) for z, r in zip("ABCD", ranges)),
-        (False, False, False))
+        f"Zone table: {zones.title} support ({zones.clause}); the more restrictive quantity decides (5.2.3),"
+        " a boundary value is in the lower zone",
+        ("zone", "r.m.s. velocity [mm/s]", "r.m.s. displacement [µm]", f"verdict (acceptable zone: {accept or 'not given, B warns'})"),
+        ((z, v, d, zone_outcome(z, accept).value) for z, v, d in
+         zip("ABCD", ranges(zones.boundaries_mm_s), ranges(zones.displacement_boundaries_um))),
+        (False, False, False, False))
+
+
+def judged_zone(code: dict, velocity: float, displacement: float):
+    """The zone of a point by its largest r.m.s. velocity [m/s] and displacement [m] (the
+    check's :func:`~foundation_calc.checks.codes.code_zone`)."""
+    from foundation_calc.checks.codes import TABLES, code_zone
+
+    return code_zone(TABLES[code["code"], code["machine_group"], code["foundation"]], velocity, displacement,
+                     code["acceptable_zone"])
+
+
+def _verdict(code: dict, zone_name: str) -> str:
+    from foundation_calc.checks.codes import zone_outcome
+
+    return zone_outcome(zone_name, code["acceptable_zone"]).value.upper()
 
 
 def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
@@ -65,8 +95,9 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     horizontal = [0.0, *(p.horizontal for p in scene.points)]
     height = [0.0, *(p.height for p in scene.points)]
     terms = velocity_terms(motion, horizontal, height)
-    judged = {row["point"]: row for row in code["points"]}
-    governing = [judged[name]["governing"] for name in names]
+    d_rms = displacement_rms(motion, horizontal, height).max(axis=1)
+    v_rms = np.sqrt((terms**2).sum(-1))
+    governing = [DIRECTIONS[int(np.argmax(v))] for v in v_rms]
     chosen = np.array([terms[i, DIRECTIONS.index(g)] for i, g in enumerate(governing)])  # (points, K + 1)
     strongest = chosen.max(axis=0)
     own = [int(n) for n in np.argsort(-strongest) if strongest[n] >= OWN_COLUMN * strongest.max() > 0.0][:MOST_COLUMNS]
@@ -77,24 +108,30 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     cols = [column(list(chosen[:, n] * mm), 3, strongest.max() * mm) for n in own]
     rest_col = column(list(rest * mm), 2, strongest.max() * mm)
     total_col = column(list(total * mm), 3)
-    rows = [(name, governing[i], *(c[i] for c in cols), rest_col[i], total_col[i], judged[name]["zone"],
-             judged[name]["verdict"].upper()) for i, name in enumerate(names)]
+    zones_found = [judged_zone(code, float(total[i]), float(d_rms[i])) for i in range(len(names))]
+    d_col = column(list(d_rms * 1e6), 3)
+    rows = [(name, governing[i], *(c[i] for c in cols), rest_col[i], total_col[i], f"{z.velocity_zone}", d_col[i],
+             z.displacement_zone, z.zone, _verdict(code, z.zone))
+            for i, (name, z) in enumerate(zip(names, zones_found))]
     omega = float(motion.omega)
     velocity = table(
         f"R.m.s. velocity from the harmonics: v_n = nω A_n / √2, v_rms = √(Σ v_n²) (ω = {figure(omega, 4)} rad/s)",
-        ("point", "direction", *(f"v_{n} [mm/s]" for n in own), "other n [mm/s]", "v_rms [mm/s]", "zone", "verdict"),
-        rows, (False, False, *(True,) * (len(own) + 2), False, False))
+        ("point", "direction", *(f"v_{n} [mm/s]" for n in own), "other n [mm/s]", "v_rms [mm/s]", "v zone",
+         "d_rms [µm]", "d zone", "zone", "verdict"),
+        rows, (False, False, *(True,) * (len(own) + 2), False, True, False, False, False))
     zones = zone_table(code)
     note = Paragraph(
         "Each point's horizontal and vertical displacement, as a rigid-body point of the block, is the series"
-        " Σ A_n cos(nωt − φ_n) of the damped solve above; the larger r.m.s. velocity (the mean left out, ISO 10816-1,"
-        " 3.3) is placed in the zone table, a boundary value in the lower zone.")
+        " Σ A_n cos(nωt − φ_n) of the damped solve above; its larger r.m.s. velocity √(Σ v_n²) and r.m.s."
+        " displacement √(Σ A_n²/2) (the mean left out, ISO 10816-1, 3.3) are placed in the zone table; the worse zone"
+        " decides.")
     from foundation_calc.output.report.handcalc import Definitions
 
     terms = Definitions({
         "A_n": ("amplitude of harmonic n of a point's displacement in one direction", "m"),
         "v_n": ("r.m.s. velocity of harmonic n, nω A_n/√2", "mm/s"),
         "v_rms": ("r.m.s. velocity of a point over one revolution, the mean left out", "mm/s"),
+        "d_rms": ("r.m.s. displacement of a point, √(Σ A_n²/2), largest direction", "µm"),
         "ω": ("operating speed", "rad/s"),
     })
     return (note, velocity, zones, terms)
