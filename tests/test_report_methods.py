@@ -45,26 +45,27 @@ def test_crank_chains_end_in_the_solvers_numbers(path):
             assert _close(chains["Base"][key], float(dashpots[key])), key
 
 
-def _gazetas_scene(length: float, width: float, embedment: float):
-    """The shipped Lysmer compressor on Gazetas' soil, base L × B embedded D [m]."""
+def _gazetas_scene(length: float, width: float, embedment: float, method: str = "gazetas"):
+    """The shipped Lysmer compressor on Gazetas' (or Pais & Kausel's) soil, base L × B embedded D [m]."""
     from foundation_calc.scenes import parse_scene, read_toml
 
     data = read_toml(CONFIGS / "compressor_medium_sand_lysmer.toml")
-    data["soil"]["method"] = "gazetas"
+    data["soil"]["method"] = method
     data["foundation"].update(base_length=length, base_width=width, embedment=embedment)
     data["foundation"]["block"].update(length=length, width=width)
     return parse_scene(data)
 
 
+@pytest.mark.parametrize("method", ["gazetas", "pais_kausel"])
 @pytest.mark.parametrize("base", [(6.0, 4.0, 0.0), (6.0, 4.0, 1.5), (4.0, 6.0, 0.0), (4.0, 6.0, 1.5)],
                          ids=["long-surface", "long-embedded", "short-surface", "short-embedded"])
-def test_gazetas_chain_ends_in_the_solvers_springs(base):
+def test_gazetas_chain_ends_in_the_solvers_springs(base, method):
     """Both orientations of the base (K_x, K_ry or K_y, K_rx) with and without embedment factors:
-    the chain re-types Gazetas' tables as printed, the solver evaluates them vectorised with the
-    general d/D and the sidewall terms of the impedance module."""
+    the chain re-types Gazetas' (Pais & Kausel's) tables as printed, the solver evaluates them
+    vectorised with the general d/D and the sidewall terms of the impedance module."""
     from foundation_calc.output.report.soil_methods import gazetas_chains
 
-    scene = _gazetas_scene(*base)
+    scene = _gazetas_scene(*base, method)
     static, dynamic = (chain.values for chain in gazetas_chains(scene))
     springs = scene.soil_springs()
     for key in ("K_z", "K_x", "K_phi", "xi_z", "xi_x", "xi_phi"):

@@ -12,6 +12,10 @@ factor of its grid and where a critical speed p_j / n crosses a machine's speed,
 its coarser grid and at those crossings; each verdict is the worse of the soil as given and the
 range, and the range names its governing factor.
 
+On a frequency-dependent soil (Gazetas' impedance) every mode is taken at its own frequency and
+every order n of every machine is solved with the springs and dashpots at n ω
+(:mod:`~foundation_calc.solvers.block.response`).
+
 Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
 displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
 several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
@@ -34,6 +38,7 @@ from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
     block_modes,
+    consistent_modes,
     point_motion,
     resonances,
     resonant,
@@ -256,10 +261,12 @@ def check_block_as_given(scene) -> BlockReport:
     """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
     model = scene.model()
     excitations = scene.excitations()
-    modes = block_modes(model)
+    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
+    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     rows = resonance_rows(modes, excitations, scene.limits.detuning)
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
-    motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points])
+    motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
+                                             impedance=impedance)
     limits = scene.limits
     warnings = ()
     if limits.code is not None:

@@ -107,9 +107,10 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     springs = scene.soil_springs()
     method = scene.soil.method_used
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
-    out = gazetas_chains(scene) if method == "gazetas" else [make(scene) for make in chains]
+    dependent = scene.soil.frequency_dependent  # gazetas, pais_kausel: the same dynamic chains
+    out = gazetas_chains(scene) if dependent else [make(scene) for make in chains]
     out.append(_frequencies(scene, springs))
-    if method == "gazetas":
+    if dependent:
         from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns
 
         out += gazetas_frequency_columns(scene, out[0], amplitudes)
