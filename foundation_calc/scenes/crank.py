@@ -107,8 +107,8 @@ class Limits(SceneModel):
         "a_rms,max", "m/s²", "largest allowed RMS acceleration, each point and direction", None, gt=0, examples=[0.2]
     )
     code: Literal[CODE_NAMES] | None = quantity(
-        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity of C and of every point (below"
-        " 600 rpm the RMS displacement as well)", None,
+        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity and displacement of C and of"
+        " every point", None,
         examples=["ISO 10816-3"],
     )
     machine_group: Literal[1, 2] | None = quantity(
