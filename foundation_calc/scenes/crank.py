@@ -241,6 +241,17 @@ class Point(SceneModel):
     height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
 
 
+def _number(x):
+    """A float of a scalar (a 0-d array too), an array as it is: springs taken at one frequency or at
+    an array of them (a frequency-dependent soil along a sweep)."""
+    return float(x) if getattr(x, "ndim", 0) == 0 else x
+
+
+def _largest(x) -> float:
+    """The largest element of an array, or the float itself."""
+    return float(x.max()) if getattr(x, "ndim", 0) else float(x)
+
+
 class CrankScene(OnSoil, SceneModel):
     """A scene of kind ``crank_foundation``."""
 
@@ -386,30 +397,39 @@ class CrankScene(OnSoil, SceneModel):
         ``"pais_kausel"``) takes its
         springs and dashpots; the other methods are frequency-independent and ignore it.
         """
-        f, s = self.foundation, self.soil
+        f = self.foundation
+        L, B = f.dimensions
+        return self.base_springs(L, B, f.base_area, f.base_second_moment, self.total_mass, f.moment_of_inertia,
+                                 f.cog_height, method, omega)
+
+    def base_springs(self, L, B, S, I1, M_tot, I_c, h, method: str | None = None, omega=0.0, factor=1.0) -> SoilSprings:
+        """:meth:`soil_springs` of this soil under another block: base L × B [m] (area S [m²],
+        second moment I1 [m⁴]), total mass M_tot [kg], I_c [kg m²] about its centre of mass at
+        height h [m]; ``factor`` [-] multiplies the soil's stiffness data as :meth:`Soil.factored`
+        does. Arrays welcome (a batch of candidate blocks, a frequency or a factor per element)."""
+        s = self.soil
         method = method or s.method_used
-        M_tot = self.total_mass
-        S, I1 = f.base_area, f.base_second_moment
         if method == "coefficients":
             c_phi = s.c_z if s.c_phi is None else s.c_phi
             xi_z, xi_x, xi_phi = s.damping or (0.0, 0.0, 0.0)
-            return SoilSprings(K_z=s.c_z * S, K_x=s.c_x * S, K_phi=c_phi * I1, xi_z=xi_z, xi_x=xi_x, xi_phi=xi_phi)
+            return SoilSprings(K_z=s.c_z * factor * S, K_x=s.c_x * factor * S, K_phi=c_phi * factor * I1,
+                               xi_z=xi_z, xi_x=xi_x, xi_phi=xi_phi)
         if method == "sp26":
-            return sp26_springs(s.deformation_modulus, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
-        L, B = f.dimensions
-        I_0 = f.moment_of_inertia + M_tot * f.cog_height**2
+            return sp26_springs(s.deformation_modulus * factor, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
+        I_0 = I_c + M_tot * h**2
         if method == "lysmer":
-            return lysmer_springs(s.G, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
+            return lysmer_springs(s.G * factor, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
         if method == "pais_kausel":
             from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
         else:
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs  # numpy: only when asked for
 
-        return springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0, s.material_damping or 0.0, omega)
+        return springs(s.G * factor, s.density, s.poisson, L, B, self.foundation.embedment or 0.0, M_tot, I_0,
+                       s.material_damping or 0.0, omega)
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
-        if springs.xi_z == springs.xi_x == springs.xi_phi == 0.0:
+        if all(_largest(abs(xi)) == 0.0 for xi in (springs.xi_z, springs.xi_x, springs.xi_phi)):
             return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
         from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios  # numpy: only for damped soil
 
@@ -419,7 +439,7 @@ class CrankScene(OnSoil, SceneModel):
             K_z=springs.K_z, K_x=springs.K_x, K_phi=springs.K_phi,
             M_tot=M_tot, I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
         )
-        return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
+        return {"C_x": _number(d.C_x), "C_z": _number(d.C_z), "C_phi": _number(d.C_phi)}
 
     def require_stable_rocking(self, springs: SoilSprings) -> None:
         """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 does not exceed
@@ -430,7 +450,7 @@ class CrankScene(OnSoil, SceneModel):
         the keys of the scene file that set K_φ, I1 and h.
         """
         f = self.foundation
-        K_phi, overturning = float(springs.K_phi), self.total_mass * GRAVITY * f.cog_height
+        K_phi, overturning = -_largest(-springs.K_phi), self.total_mass * GRAVITY * f.cog_height
         if K_phi > overturning:
             return
         unrelated = ("soil.c_x", "soil.c_z" if self.soil.c_phi is not None else "soil.c_x")  # no part of K_φ
@@ -473,9 +493,9 @@ class CrankScene(OnSoil, SceneModel):
             M_tot=M_tot,
             I_c=f.moment_of_inertia,
             h=f.cog_height,
-            K_x=float(springs.K_x),
-            K_z=float(springs.K_z),
-            K_phi=float(springs.K_phi),
+            K_x=_number(springs.K_x),
+            K_z=_number(springs.K_z),
+            K_phi=_number(springs.K_phi),
             **self.base_dashpots(springs, M_tot),
             g=GRAVITY,
         )
@@ -520,9 +540,9 @@ class CrankScene(OnSoil, SceneModel):
         if s.method_used == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:
-            c = float(springs.K_z) / f.base_area
-            c1 = float(springs.K_x) / f.base_area
-            c_phi = float(springs.K_phi) / f.base_second_moment
+            c = _number(springs.K_z) / f.base_area
+            c1 = _number(springs.K_x) / f.base_area
+            c_phi = _number(springs.K_phi) / f.base_second_moment
         dashpots = self.base_dashpots(springs, f.mass + rod.m)
         return CrankDesign(
             M=f.mass,
