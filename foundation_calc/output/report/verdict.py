@@ -21,16 +21,29 @@ EXIT = {"pass": 0, "warn": 0, "fail": 1}
 LIMIT_SOURCE = "scene [limits]"
 
 
+def resonance_verdict(row: dict) -> str:
+    """What decides a resonance row (README, "The resonance rule"): its verdict when the condition is
+    judged or sets a warning or failure; else "information" (inside its band, but its harmonic's
+    forcing share is under 1 %) or "not judged". A row of neither kind is never a PASS beside a
+    margin smaller than its band."""
+    if row["judged"] or row["status"] in ("warn", "fail"):
+        return row["verdict"]
+    return "information" if row["status"] == "information" else "not judged"
+
+
 def _resonance_rows(doc: dict, scene, units: DisplayUnits):
     for r in doc["resonances"]:
         critical = quantity(units, "speed", r["critical_speed"]["omega"])
+        shown = resonance_verdict(r)
+        decides = shown == r["verdict"]
         yield (
             f"{r['condition']} ({r['mode_name']}, critical {critical})",
             "margin " + percent(r["margin"]),
-            "≥ " + percent(r["required"]),
-            ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf",
-            r["verdict"],
-            f"{LIMIT_SOURCE} detuning",
+            ("≥ " + percent(r["required"]) if r["required"] > 0 else "no band") if decides
+            else f"forcing share {figure(r['forcing_share'], 2, 1.0)} < 1 %",
+            (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
+            shown,
+            f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
         )
 
 
