@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
-from foundation_calc.output.report.numbers import column, figure, percent
+from foundation_calc.output.report.numbers import column, echoed, figure, percent
 from foundation_calc.output.report.verdict import resonance_verdict
 
 DIGITS = 4
@@ -113,10 +113,12 @@ def _crank_derived(res: dict, units: DisplayUnits) -> Section:
 def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     sp = units.label("speed")
     zero, avg = res["natural_frequencies"], res["natural_frequencies_averaged_inertia"]
+    hz = sp != "Hz"  # the frequency in Hz beside a speed in rad/s or rpm
     freqs = table(
         "Natural frequencies",
-        ("mode", f"[{sp}]", f"averaged inertia [{sp}]"),
-        ((mode, _speed(units, zero[mode]), _speed(units, avg[mode])) for mode in zero),
+        ("mode", f"ω [{sp}]", *(("f [Hz]",) if hz else ()), f"averaged inertia, ω [{sp}]"),
+        ((mode, _speed(units, zero[mode]), *((figure(zero[mode] / (2.0 * math.pi), 4),) if hz else ()), _speed(units, avg[mode]))
+         for mode in zero),
     )
     shares = column([r["forcing_share"] for r in res["resonances"]], 2, scale=1.0)  # the largest share is 1
     rows = (
@@ -325,8 +327,8 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     ]
     inertia = v["inertia"]["source"]
     verification = table(
-        f"6-DOF verification (inertia: {inertia}; loss factor {num(v['loss_factor'])},"
-        f" damping ratio {num(v['damping_ratio'])})",
+        f"6-DOF verification (inertia: {inertia}; loss factor {echoed(v['loss_factor'])},"
+        f" damping ratio {echoed(v['damping_ratio'])})",  # the scene's inputs, as given
         ("quantity", "value", "unit"),
         rows,
         (False, True, False),

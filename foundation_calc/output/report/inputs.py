@@ -30,17 +30,35 @@ def _value(value) -> str:
     if isinstance(value, float):
         return echoed(value)
     if isinstance(value, (list, tuple)):
-        return ", ".join(map(_value, value))
+        return ", ".join(map(_value, value)) if value else "none"
     return str(value)
+
+
+def _entries(value) -> bool:
+    """True for a list of nested tables (a machine's ``loads``): shown as a table of its own."""
+    return isinstance(value, (list, tuple)) and bool(value) and all(isinstance(v, BaseModel) for v in value)
+
+
+def _described(field) -> tuple[str, str, str]:
+    match = _DESCRIPTION.match(field.description or "")
+    return match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
+
+
+def _entries_table(title: str, items) -> object:
+    """A row per entry and a column per key, headed ``key [unit]`` (a machine's loads)."""
+    fields = type(items[0]).model_fields
+    header = tuple(key if _described(f)[1] in ("", "-") else f"{key} [{_described(f)[1]}]" for key, f in fields.items())
+    rows = [tuple("-" if getattr(item, key) is None else _value(getattr(item, key)) for key in fields) for item in items]
+    numeric = tuple(not isinstance(getattr(items[0], key), str) for key in fields)
+    return table(title, header, rows, numeric)
 
 
 def _rows(group: str, model: BaseModel, units: DisplayUnits):
     for key, field in type(model).model_fields.items():
         value = getattr(model, key)
-        if value is None or isinstance(value, BaseModel):  # a nested table has its own block
+        if value is None or isinstance(value, BaseModel) or _entries(value):  # a nested table has its own block
             continue
-        match = _DESCRIPTION.match(field.description or "")
-        symbol, unit, meaning = match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
+        symbol, unit, meaning = _described(field)
         quantity = DISPLAYED.get((group.split("[")[0], key))
         if quantity is not None and isinstance(value, float):
             value, unit = units.convert(quantity, value), units.label(quantity)
@@ -66,6 +84,8 @@ def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
         for title, model in groups:
             rows = list(_rows(title.strip("[]").split("]")[0], model, units))
             blocks.append(table(title, header, rows, (False, False, True, False, False)))
+            blocks += [_entries_table(f"{title} {key}", getattr(model, key)) for key in type(model).model_fields
+                       if _entries(getattr(model, key))]
         if name == "soil" and hasattr(scene, "soil_springs"):
             blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))
