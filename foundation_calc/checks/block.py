@@ -6,6 +6,12 @@ Resonances: each order n of each machine against each of the six modes, margin
 (:func:`~foundation_calc.checks.resonance_rule.judge`) with the forcing share of the order on the
 mode (|φ_jᵀ Q_n| / p_j over its largest value for the machine); no condition is the source's own.
 
+Soil's modulus range (``[soil] modulus_range``): both checks also over the range, by the machinery
+of the crank foundation's (:mod:`~foundation_calc.checks.soil_range`): the resonances at every
+factor of its grid and where a critical speed p_j / n crosses a machine's speed, the amplitudes on
+its coarser grid and at those crossings; each verdict is the worse of the soil as given and the
+range, and the range names its governing factor.
+
 Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
 displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
 several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
@@ -18,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, code_zone, zone_outcome
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
@@ -61,25 +67,20 @@ class ResonanceRow:
 
 
 @dataclass(frozen=True)
-class ZoneRow:
-    """A point's largest RMS velocity in the zones of a vibration code."""
+class ZoneRow(JudgedRow):
+    """A point's zone in a vibration code: its largest RMS velocity and, when a machine runs below
+    600 r/min, its largest RMS displacement (``judged`` says which decides; ``direction`` is that
+    quantity's direction)."""
 
     point: str
     direction: str
-    value: float
-    zone: str
-    limit: float
+    judged: CodeZone
     outcome: Outcome
     table: ZoneTable
 
     @property
-    def ratio(self) -> float:
-        return self.value / self.limit
-
-    @property
-    def verdict_text(self) -> str:
-        """E.g. ``"ISO 10816-3, group 2, rigid: zone B, 1.9 mm/s RMS (x)"``."""
-        return f"{self.table.title}: zone {self.zone}, {self.value * 1e3:.3g} mm/s RMS ({self.direction})"
+    def direction_text(self) -> str:
+        return self.direction
 
 
 @dataclass(frozen=True)
@@ -97,16 +98,22 @@ class BlockReport:
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
+    #: the resonance and amplitude checks over the soil's ``modulus_range``
+    #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
+    resonance_range: object = None
+    amplitude_range: object = None
 
     @property
     def resonance_outcome(self) -> Outcome:
-        return worst(r.outcome for r in self.resonance_rows)
+        ranged = () if self.resonance_range is None else (self.resonance_range.outcome,)
+        return worst([*(r.outcome for r in self.resonance_rows), *ranged])
 
     @property
     def amplitude_outcome(self) -> Outcome:
+        ranged = [] if self.amplitude_range is None else [self.amplitude_range.outcome]
         if self.resonant:
             return Outcome.FAIL
-        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows])
+        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows] + ranged)
 
     @property
     def office_outcome(self) -> Outcome:
@@ -136,10 +143,39 @@ def resonance_text(report: BlockReport) -> str:
         return condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN))
 
     governing = phrase(report.nearest)
-    outcome = report.resonance_outcome
+    outcome = worst(r.outcome for r in report.resonance_rows)
+    ranged = "" if report.resonance_range is None else f" with the soil data as given; {report.resonance_range.text}"
     if outcome is Outcome.PASS:
-        return f"no machine's order is inside a resonance band (governing: {governing})"
-    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})"
+        return f"no machine's order is inside a resonance band (governing: {governing})" + ranged
+    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})" + ranged
+
+
+def resonance_point(factor: float, report: BlockReport):
+    """The resonance check of ``report`` (the soil as given at ``factor``) as a
+    :class:`~foundation_calc.checks.soil_range.RangePoint`: its governing condition, severity
+    required/margin."""
+    from foundation_calc.checks.resonance_rule import condition_phrase
+    from foundation_calc.checks.soil_range import RangePoint
+
+    r = report.nearest
+    needed = max(r.required, RESONANCE_FAIL_MARGIN)
+    severity = float("inf") if r.margin <= 0.0 else needed / r.margin
+    return RangePoint(factor, report.resonance_outcome, condition_phrase(condition_label(r), r.margin, needed), severity)
+
+
+def resonance_offsets(report: BlockReport) -> dict[str, tuple[float, bool]]:
+    """Condition -> (critical speed p_j / n less its machine's speed [rad/s], judged by the rule)."""
+    return {condition_label(r): (r.critical - report.speeds[r.machine], r.judged) for r in report.resonance_rows}
+
+
+def amplitude_point(factor: float, report: BlockReport):
+    """The amplitude check of ``report`` (the soil as given at ``factor``) as a
+    :class:`~foundation_calc.checks.soil_range.RangePoint`."""
+    from foundation_calc.checks.soil_range import RangePoint, worst_row_point
+
+    if report.resonant:
+        return RangePoint(factor, Outcome.FAIL, "an order is resonant with an undamped mode: no steady state", float("inf"))
+    return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 
 def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceRow, ...]:
@@ -161,7 +197,8 @@ def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceR
     return tuple(rows)
 
 
-_VALUES = {
+#: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
+LIMITED_VALUES = {
     "displacement": "peak",
     "velocity": "velocity_peak",
     "displacement_rms": "displacement_rms",
@@ -175,9 +212,9 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     shared between kinds, are left out)."""
     rows = []
     for quantity, limit in limited_quantities(limits).items():
-        if quantity not in _VALUES:
+        if quantity not in LIMITED_VALUES:
             continue
-        values = getattr(motion, _VALUES[quantity])
+        values = getattr(motion, LIMITED_VALUES[quantity])
         for p, name in enumerate(motion.names):
             for d, direction in enumerate(DIRECTIONS):
                 v = float(values[p, d])
@@ -185,24 +222,39 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
-    """The code zone of every point's largest RMS velocity (none without ``[limits] code``)."""
+def zone_rows(motion: PointMotion, limits, speed_rpm: float) -> tuple[ZoneRow, ...]:
+    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and,
+    when the slowest machine runs below 600 r/min (``speed_rpm``), its largest RMS displacement."""
     if limits.code is None:
         return ()
     table = TABLES[limits.code, limits.machine_group, limits.foundation]
-    limit = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]  # zone B warns by default
     rows = []
     for p, name in enumerate(motion.names):
-        d = int(np.argmax(motion.velocity_rms[p]))
-        v = float(motion.velocity_rms[p, d])
-        z = zone(v, table)
-        rows.append(ZoneRow(name, DIRECTIONS[d], v, z, limit, zone_outcome(z, limits.acceptable_zone), table))
+        v, x = motion.velocity_rms[p], motion.displacement_rms[p]
+        judged = code_zone(table, float(v.max()), float(x.max()), speed_rpm, limits.acceptable_zone)
+        d = int(np.argmax(v if judged.quantity == "velocity" else x))
+        rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table))
     return tuple(rows)
 
 
 def check_block(scene) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
-    ``block_foundation`` scene."""
+    ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
+    that range (module docstring)."""
+    report = check_block_as_given(scene)
+    if scene.soil.modulus_range is None:
+        return report
+    from dataclasses import replace
+
+    from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
+
+    resonance = resonances_over_range(scene, check_block_as_given, resonance_point, resonance_offsets)
+    amplitude = amplitudes_over_range(scene, check_block_as_given, resonance.crossings, amplitude_point)
+    return replace(report, resonance_range=resonance, amplitude_range=amplitude)
+
+
+def check_block_as_given(scene) -> BlockReport:
+    """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
     model = scene.model()
     excitations = scene.excitations()
     modes = block_modes(model)
@@ -226,7 +278,7 @@ def check_block(scene) -> BlockReport:
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits),
+        zone_rows=() if motion is None else zone_rows(motion, limits, min(rpm_from_omega(e.omega) for e in excitations)),
         code_warnings=warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,
@@ -234,4 +286,6 @@ def check_block(scene) -> BlockReport:
     )
 
 
-__all__ = ["BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]
+__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
+           "check_block_as_given", "condition_label", "limit_rows", "resonance_offsets", "resonance_point", "resonance_rows",
+           "resonance_text", "zone_rows"]

@@ -57,8 +57,12 @@ def eccentricity_rows(cog_xy, L: float, B: float, allowed: float) -> list[Office
 
 def bearing_row(W: float, e_x: float, e_y: float, L: float, B: float, allowable: float) -> OfficeRow:
     """Largest static base pressure q_max [Pa] (module docstring) against the allowable [Pa]."""
-    q = W / (L * B) * (1.0 + 6.0 * abs(e_x) / L + 6.0 * abs(e_y) / B)
-    return _bearing(q, allowable)
+    return _bearing(float(bearing_pressure(W, e_x, e_y, L, B)), allowable)
+
+
+def bearing_pressure(W, e_x, e_y, L, B):
+    """q_max = W / (L B) (1 + 6 |e_x| / L + 6 |e_y| / B) [Pa] (module docstring); floats or arrays."""
+    return W / (L * B) * (1.0 + 6.0 * abs(e_x) / L + 6.0 * abs(e_y) / B)
 
 
 def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
@@ -113,4 +117,4 @@ def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     return tuple(rows)
 
 
-__all__ = ["OfficeReport", "OfficeRow", "bearing_row", "crank_bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]
+__all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "crank_bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]

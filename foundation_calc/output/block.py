@@ -55,6 +55,7 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
              "judged": r.judged, "required": r.required, "status": r.status, "verdict": r.outcome.value}
             for r in report.resonance_rows
         ],
+        "modulus_range": None if report.resonance_range is None else report.resonance_range.document(),
         "verdict": report.resonance_outcome.value,
     }
 
@@ -112,13 +113,15 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
         "acceptable_zone": limits.acceptable_zone,
         "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
         "points": [
-            {"point": z.point, "governing": z.direction, "value": z.value, "zone": z.zone, "limit": z.limit,
-             "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
+            {"point": z.point, "quantity": z.judged.quantity, "governing": z.direction, "value": z.value,
+             "velocity_zone": z.judged.velocity_zone, "displacement_zone": z.judged.displacement_zone,
+             "zone": z.zone, "limit": z.limit, "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
             for z in report.zone_rows
         ],
         "warnings": list(report.code_warnings),
     }
     doc["office"] = _office(report)
+    doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
     doc["verdict"] = worst([report.amplitude_outcome, report.office_outcome]).value
     return doc
 
@@ -213,12 +216,16 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
                         f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
         out.print(lim)
     if report.zone_rows:
-        z = _table("Zones of the RMS velocity", ("point", "zone", "verdict"))
+        shown = "Zones of the RMS velocity" + (
+            " and, below 600 r/min, displacement" if any(r.judged.displacement_zone for r in report.zone_rows) else "")
+        z = _table(shown, ("point", "zone", "verdict"))
         for r in report.zone_rows:
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)
     for w in report.code_warnings:
         out.print(f"note: {escape(w)}", soft_wrap=True)
+    if report.amplitude_range is not None:
+        out.print(f"Amplitudes {escape(report.amplitude_range.text)}", soft_wrap=True)
     print_office(report, strict)
     out.print(f"{verdict_text(worst([report.amplitude_outcome, report.office_outcome]).value, strict)}: amplitudes and office checks")
 

@@ -16,9 +16,18 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.soil import OnSoil
 
 #: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
+
+
+def too_far(position, size):
+    """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
+    × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
+    import numpy as np
+
+    return np.max(np.abs(np.asarray(position, dtype=float)), axis=-1) > LENGTH_SCALE_FACTOR * size
 
 
 class BlockLimits(Limits):
@@ -43,7 +52,7 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(SceneModel):
+class BlockScene(OnSoil, SceneModel):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
@@ -95,39 +104,54 @@ class BlockScene(SceneModel):
         as m), a machine ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
         L, B = self.base
         size = (L * L + B * B) ** 0.5
-        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
-        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
-        lengths |= {f"points.{p.name!r}.at": p.at for p in self.points}
         found = [
             f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
             " was it typed in mm?"
-            for key, value in lengths.items()
-            if max(abs(v) for v in value) > LENGTH_SCALE_FACTOR * size
+            for key, value in self.plausible_lengths().items()
+            if too_far(value, size)
         ]
-        found += [
+        return found + self.speed_warnings()
+
+    def plausible_lengths(self) -> dict[str, list[float]]:
+        """The positions [m] from O that :meth:`plausibility_warnings` compares with the base's diagonal, by key."""
+        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
+        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
+        return lengths | {f"points.{p.name!r}.at": p.at for p in self.points}
+
+    def speed_warnings(self) -> list[str]:
+        """The machine speeds ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
+        return [
             f"machines.{m.name!r}.omega = {m.omega:g} rad/s is {m.omega * 30 / 3.141592653589793:.4g} rpm; if you meant"
             f" {m.omega:g} rpm, write speed_rpm = {m.omega:g}"
             for m in self.machines
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
-        return found
 
-    def model(self):
-        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`)."""
+    def model(self, base=None, block=None, machine_cogs=None):
+        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`).
+
+        ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
+        tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
+        blocks (``fcalc design``): the model's matrices are then stacks; ``machine_cogs`` (one
+        (..., 3) [m] per machine) the machines' centres of mass, moved with each candidate's block."""
+        import numpy as np
+
         from foundation_calc.solvers.block.model import block_model
         from foundation_calc.solvers.constants import GRAVITY
-
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
 
-        m_b, r_b, J_b = self.block.mass_properties
-        L, B = self.base
-        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
+        m_b, r_b, J_b = self.block.mass_properties if block is None else block
+        L, B = self.base if base is None else base
+        cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
+        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + cogs,
                   [J_b] + [m.inertia for m in self.machines])
         M = bodies_mass_matrix(*bodies)
-        springs, ratios = self.soil.six_springs(L, B, M[0, 0], M.diagonal()[3:])
+        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
+        stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
         return block_model(
-            *bodies, springs, GRAVITY, (L * L + B * B) ** 0.5,
-            dashpots=self.soil.dashpot if ratios is None else None, ratios=ratios,
+            *bodies, stack, GRAVITY, (L * L + B * B) ** 0.5,
+            dashpots=self.soil.dashpot if ratios is None else None,
+            ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
         )
 
     def excitations(self):

@@ -35,7 +35,7 @@ SYMBOLS = {
     "Lh": "L'", "Bh": "B'", "chi": "χ", "eta_z": "η_z", "eta_h": "η_h", "eta_phi": "η_φ", "K_zs": "K_z,s",
     "K_hs": "K_h,s", "K_phis": "K_φ,s", "C_zb": "C_z", "V_La": "V_La", "b_sp": "b₀", "A10": "A₁₀",
     "K_zw": "K_z(ω)", "K_xw": "K_x(ω)", "K_phiw": "K_φ(ω)", "C_phiw": "C_φ(ω)", "xi_zw": "ξ_z(ω)", "xi_xw": "ξ_x(ω)",
-    "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀",
+    "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀", "omega_s": "ω_s",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
@@ -79,6 +79,10 @@ class Chain:
         self.nomenclature[symbol] = (meaning, unit)
         return value
 
+    def blocks(self) -> tuple[Table, ...]:
+        """What the chain puts on the sheet: its table."""
+        return (self.table(),)
+
     def table(self) -> Table:
         """The chain as a table: symbol, formula, values substituted, result, unit, source."""
         return table(
@@ -94,3 +98,34 @@ def nomenclature_table(chains) -> Table:
         for symbol, entry in chain.nomenclature.items():
             seen.setdefault(symbol, entry)
     return table("Nomenclature", ("symbol", "meaning", "unit"), ((s, m, u) for s, (m, u) in seen.items()), (False, False, False))
+
+
+class Columns:
+    """One chain evaluated at several values of its inputs (the harmonics' frequencies, the
+    modes' own frequencies): a row per step, a result column per chain, the inputs that differ
+    between the columns (``lead``) as the first rows. The chains must take the same steps."""
+
+    def __init__(self, title: str, heads: tuple[str, ...], chains: list[Chain], lead: tuple[tuple[str, str, str], ...] = (),
+                 footer: Table | None = None):
+        self.title = title
+        self.footer = footer
+        self.heads = tuple(heads)
+        self.chains = list(chains)
+        first = self.chains[0]
+        self.nomenclature = first.nomenclature
+        self.values = [chain.values for chain in self.chains]
+        rows = [(SYMBOLS.get(name, name), how, *(figure(c.values[name], DIGITS) for c in self.chains), first.nomenclature[SYMBOLS.get(name, name)][1], source)
+                for name, how, source in lead]
+        for i, (symbol, formula, _, _, unit, source) in enumerate(first.rows):
+            rows.append((symbol, formula, *(chain.rows[i][3] for chain in self.chains), unit, source))
+        self.rows = rows
+
+    def blocks(self) -> tuple[Table, ...]:
+        """What the columns put on the sheet: their table and the footer table, if any."""
+        return (self.table(),) if self.footer is None else (self.table(), self.footer)
+
+    def table(self) -> Table:
+        """The columns as a table: symbol, formula, a result per column, unit, source."""
+        n = len(self.heads)
+        return table(self.title, ("", "formula", *self.heads, "unit", "source"), self.rows,
+                     (False, False, *(True,) * n, False, False))

@@ -50,24 +50,35 @@ def _lysmer_springs(scene) -> Chain:
     return chain
 
 
-def _frequencies(scene, springs) -> Chain:
+def frequency_steps(chain: Chain, K_z: str = "K_z", K_x: str = "K_x", K_phi: str = "K_phi") -> None:
+    """Add to ``chain`` k0, p1, p2 of the zero-order operator [KM] (4.5)-(4.7) on the springs
+    named ``K_z``, ``K_x``, ``K_phi`` (M_tot, I_c, h, g given before)."""
+    chain.step("P", "M_tot*g", "N", f"{KM} (3.4)", "weight of the vibrating mass")
+    chain.step("k0", f"sqrt({K_z}/M_tot)", "rad/s", f"{KM} (4.5)", "vertical natural frequency")
+    chain.step("a0", f"{K_x}/M_tot", "1/s²", f"{KM} (4.5)", "sliding coefficient")
+    chain.step("b0", f"{K_x}*h/M_tot", "m/s²", f"{KM} (4.5)", "sliding-rocking coupling")
+    chain.step("a1", f"{K_x}*h/I_c", "1/(m s²)", f"{KM} (4.5)", "rocking-sliding coupling")
+    chain.step("b1", f"({K_x}*h**2 + {K_phi} - P*h)/I_c", "1/s²", f"{KM} (4.5), weight term −P h corrected", "rocking coefficient")
+    chain.step("p2", "sqrt((a0 + b1)/2 + sqrt(((a0 - b1)/2)**2 + a1*b0))", "rad/s", f"{KM} (4.7)", "upper sliding-rocking frequency")
+    chain.step("p1", "sqrt((a0*b1 - a1*b0)/p2**2)", "rad/s", f"{KM} (4.7)", "lower sliding-rocking frequency")
+
+
+def frequency_givens(chain: Chain, scene) -> None:
+    """The block's mass, inertia and height of C that (4.5)-(4.7) take."""
     f = scene.foundation
-    chain = Chain("Natural frequencies of the block on its springs (zero-order operator)")
     chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass (block, machine, rod and slider)")
     chain.given("I_c", f.moment_of_inertia, "kg m²", "moment of inertia of the block about its centre of mass C")
     chain.given("h", f.cog_height, "m", "height of C above the base")
     chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+
+
+def _frequencies(scene, springs) -> Chain:
+    chain = Chain("Natural frequencies of the block on its springs (zero-order operator)")
+    frequency_givens(chain, scene)
     for name, meaning, unit in (("K_z", "vertical base spring", "N/m"), ("K_x", "horizontal base spring", "N/m"),
                                 ("K_phi", "rocking base spring", "N m/rad")):
         chain.given(name, float(getattr(springs, name)), unit, meaning)
-    chain.step("P", "M_tot*g", "N", f"{KM} (3.4)", "weight of the vibrating mass")
-    chain.step("k0", "sqrt(K_z/M_tot)", "rad/s", f"{KM} (4.5)", "vertical natural frequency")
-    chain.step("a0", "K_x/M_tot", "1/s²", f"{KM} (4.5)", "sliding coefficient")
-    chain.step("b0", "K_x*h/M_tot", "m/s²", f"{KM} (4.5)", "sliding-rocking coupling")
-    chain.step("a1", "K_x*h/I_c", "1/(m s²)", f"{KM} (4.5)", "rocking-sliding coupling")
-    chain.step("b1", "(K_x*h**2 + K_phi - P*h)/I_c", "1/s²", f"{KM} (4.5), weight term −P h corrected", "rocking coefficient")
-    chain.step("p2", "sqrt((a0 + b1)/2 + sqrt(((a0 - b1)/2)**2 + a1*b0))", "rad/s", f"{KM} (4.7)", "upper sliding-rocking frequency")
-    chain.step("p1", "sqrt((a0*b1 - a1*b0)/p2**2)", "rad/s", f"{KM} (4.7)", "lower sliding-rocking frequency")
+    frequency_steps(chain)
     return chain
 
 
@@ -88,13 +99,20 @@ def _dashpots(scene, springs) -> Chain:
     return chain
 
 
-def crank_chains(scene) -> list[Chain]:
-    """The hand calculations of a crank foundation scene: springs by its soil method , natural frequencies and, when the soil is damped, the dashpots."""
+def crank_chains(scene, amplitudes: dict | None = None) -> list:
+    """The hand calculations of a crank foundation scene: springs by its soil method, natural
+    frequencies and, when the soil is damped, the dashpots; on Gazetas' soil also the springs
+    at each harmonic n ω shown in ``amplitudes`` (the ``amplitudes`` document) and each mode at
+    its own frequency."""
     springs = scene.soil_springs()
     method = scene.soil.method_used
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
     out = gazetas_chains(scene) if method == "gazetas" else [make(scene) for make in chains]
     out.append(_frequencies(scene, springs))
+    if method == "gazetas":
+        from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns
+
+        out += gazetas_frequency_columns(scene, out[0], amplitudes)
     if any(float(getattr(springs, k)) > 0 for k in ("xi_z", "xi_x", "xi_phi")):
         out.append(_dashpots(scene, springs))
     return out
@@ -123,13 +141,18 @@ def methods_section(scene, documents: dict):
     from foundation_calc.output.report.handcalc import nomenclature_table
     from foundation_calc.output.report.model import Section
 
-    blocks = []
+    response: tuple = ()
     if scene.kind == "crank_foundation":
-        chains = crank_chains(scene)
+        from foundation_calc.output.report.damped_response import damped_response_blocks
+
+        chains = crank_chains(scene, documents.get("amplitudes"))
+        response = damped_response_blocks(scene, documents.get("amplitudes"))
     elif scene.kind == "platform" and "design" in documents:
         chains = [platform_chain(documents["design"])]
     else:
         return None
-    blocks += [chain.table() for chain in chains]
-    blocks.append(nomenclature_table(chains))
+    blocks = [block for chain in chains for block in chain.blocks()]
+    terms = [block for block in response if hasattr(block, "nomenclature")]
+    blocks += [block for block in response if not hasattr(block, "nomenclature")]
+    blocks.append(nomenclature_table([*chains, *terms]))
     return Section("Methods: hand calculation of the judged numbers", tuple(blocks))

@@ -92,40 +92,55 @@ def gazetas_springs_chain(scene) -> Chain:
     return chain
 
 
-def gazetas_dynamic_chain(scene, static: Chain) -> Chain:
-    """Gazetas' springs and dashpots at the operating speed ω: Pais & Kausel's stiffness
-    modifiers and the rocking radiation's rise with frequency (``impedance`` module docstring).
-    The exact harmonic balance and the first harmonic take them at ω; harmonic n at n ω by the
-    same formulas."""
+#: Names of the static chain that the chains at a frequency take as given.
+STATIC_GIVENS = ("G", "rho", "nu", "L", "B", "D", "M_tot", "I_0", "xi_m", "Lh", "Bh", "I_b", "V_s", "V_La", "K_z", "K_x",
+                 "K_phi", "C_z", "C_x")
+
+
+def gazetas_at(chain: Chain, scene, static: Chain, omega: float, meaning: str, dashpots: bool = True, name: str = "omega") -> Chain:
+    """Add to ``chain`` Gazetas' springs (and, with ``dashpots``, the dashpots and damping ratios)
+    at the circular frequency ``omega`` [rad/s] (called ``name`` in the formulas): Pais & Kausel's stiffness modifiers and the
+    rocking radiation's rise with frequency (``impedance`` module docstring), from the static
+    chain's numbers."""
     L, B = scene.foundation.dimensions
     about_short = L >= B
-    chain = Chain("Gazetas' springs and dashpots at the operating speed ω (frequency-dependent soil)")
-    for name in ("G", "rho", "nu", "L", "B", "D", "M_tot", "I_0", "xi_m", "Lh", "Bh", "I_b", "V_s", "V_La", "K_z", "K_x", "K_phi",
-                 "C_z", "C_x"):
-        meaning, unit = static.nomenclature[SYMBOLS.get(name, name)]
-        chain.given(name, static.values[name], unit, meaning)
-    chain.given("omega", scene.speed.omega_rad_s, "rad/s", "operating speed (circular frequency of the first harmonic)")
-    chain.step("a_d", "omega*Bh/V_s", "-", PK, "dimensionless frequency")
+    for given in STATIC_GIVENS:
+        meaning_of, unit = static.nomenclature[SYMBOLS.get(given, given)]
+        chain.given(given, static.values[given], unit, meaning_of)
+    chain.given(name, omega, "rad/s", meaning)
+    chain.step("a_d", f"{name}*Bh/V_s", "-", PK, "dimensionless frequency")
     chain.step("r", "Lh/Bh", "-", PK, "aspect ratio L'/B' of the base")
     chain.step("k_z", "1 - (0.4 + 0.2/r)*a_d**2/(10/(1 + 3*(r - 1)) + a_d**2)", "-", PK, "dynamic modifier of the vertical spring")
     if about_short:
         chain.step("k_phi", "1 - 0.55*a_d**2/(0.6 + 1.4/r**3 + a_d**2)", "-", f"{PK}, k_ry",
                    "dynamic modifier of the rocking spring")
-        chain.step("c_r", "1.8/(1 + 1.75*(r - 1))", "-", f"{PK}, β_yy shape", "frequency constant of the rocking radiation")
     else:
         chain.step("k_phi", "1 - (0.55 + 0.01*sqrt(r - 1))*a_d**2/(2.4 - 0.4/r**3 + a_d**2)", "-", f"{PK}, k_rx",
                    "dynamic modifier of the rocking spring")
-        chain.step("c_r", "2.2 - 0.4/r**3", "-", f"{PK}, β_xx shape", "frequency constant of the rocking radiation")
-    chain.step("c_rw", "a_d**2/(c_r + a_d**2)", "-", "[Ga] Table 1 with the frequency shape of [PK]", "rocking radiation coefficient at ω")
     chain.step("K_zw", "k_z*K_z", "N/m", PK, "vertical spring at ω")
     chain.step("K_xw", "K_x", "N/m", f"{PK} (k_x = 1)", "horizontal spring at ω")
     chain.step("K_phiw", "k_phi*K_phi", "N m/rad", PK, "rocking spring at ω")
+    if not dashpots:
+        return chain
+    if about_short:
+        chain.step("c_r", "1.8/(1 + 1.75*(r - 1))", "-", f"{PK}, β_yy shape", "frequency constant of the rocking radiation")
+    else:
+        chain.step("c_r", "2.2 - 0.4/r**3", "-", f"{PK}, β_xx shape", "frequency constant of the rocking radiation")
+    chain.step("c_rw", "a_d**2/(c_r + a_d**2)", "-", "[Ga] Table 1 with the frequency shape of [PK]", "rocking radiation coefficient at ω")
     chain.step("C_phiw", "rho*((V_La*I_b + V_s*(2*B*D*L**2/4 + D*L**3/6))*c_rw + 4/3*D**3*(V_La*B/2 + V_s*L/2))", "N m s/rad",
                f"{GA}, Table 2", "rocking radiation dashpot at ω (base and sidewalls)")
     chain.step("xi_zw", "C_z/(2*sqrt(K_zw*M_tot)) + xi_m", "-", GA, "vertical damping ratio at ω")
     chain.step("xi_xw", "C_x/(2*sqrt(K_xw*M_tot)) + xi_m", "-", GA, "horizontal damping ratio at ω")
     chain.step("xi_phiw", "C_phiw/(2*sqrt(K_phiw*I_0)) + xi_m", "-", GA, "rocking damping ratio at ω")
     return chain
+
+
+def gazetas_dynamic_chain(scene, static: Chain) -> Chain:
+    """Gazetas' springs and dashpots at the operating speed ω (:func:`gazetas_at`); the exact
+    harmonic balance and the first harmonic take them at ω, harmonic n at n ω by the same
+    formulas (:mod:`~foundation_calc.output.report.gazetas_frequencies`)."""
+    chain = Chain("Gazetas' springs and dashpots at the operating speed ω (frequency-dependent soil)")
+    return gazetas_at(chain, scene, static, scene.speed.omega_rad_s, "operating speed (circular frequency of the first harmonic)")
 
 
 def sp26_springs_chain(scene) -> Chain:
@@ -158,4 +173,4 @@ def gazetas_chains(scene) -> list[Chain]:
     return [static, gazetas_dynamic_chain(scene, static)]
 
 
-__all__ = ["gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "soil_givens", "sp26_springs_chain"]
+__all__ = ["gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "soil_givens", "sp26_springs_chain"]

@@ -45,6 +45,18 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             shown,
             f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
         )
+    yield from _range_rows(doc)
+
+
+def _range_rows(doc: dict):
+    """The check over the soil's ``modulus_range``, if the scene gives one: its governing factor."""
+    ranged = doc.get("modulus_range")
+    if ranged:
+        yield (
+            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}], governing factor"
+            f" {ranged['governing_factor']:.4g}",
+            ranged["governing"], "passes at every factor", "-", ranged["verdict"], "scene [soil] modulus_range",
+        )
 
 
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
@@ -61,18 +73,20 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             row["source"],
         )
     code = doc.get("code")
-    velocity = DisplayUnits(velocity="mm/s")  # the codes' zones are in mm/s
+    code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
     for row in (code or {}).get("points", ()):
+        kind = "velocity" if row["quantity"] == "velocity" else "amplitude"
         yield (
-            f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
-            quantity(velocity, "velocity", row["value"], row["limit"]),
-            "≤ " + quantity(velocity, "velocity", row["limit"]),
+            f"{row['point']} RMS {row['quantity']} ({row['governing']}), zone {row['zone']}",
+            quantity(code_units, kind, row["value"], row["limit"]),
+            "≤ " + quantity(code_units, kind, row["limit"]),
             ratio(row["ratio"]),
             row["verdict"],
             f"[ISO] {code['clause']}, group {code['machine_group']}, {code['foundation']}",
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])
+    yield from _range_rows(doc)
 
 
 def _runup_rows(doc: dict, scene, units: DisplayUnits):

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass
+from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass, diagonal_matrices
 from foundation_calc.solvers.rigid_body.kinematics import load_at, weight_tilt
 
 
@@ -40,15 +40,18 @@ class BlockModel:
     J_G : central inertia tensor [kg m²]
     size : the base's diagonal [m] (the scale of rotations in the eigen-solve)
     springs : the six springs at O [N/m, N m/rad]
+
+    A batch of designs (``fcalc design``) holds stacks: M, K, C (..., 6, 6), mass and size (...),
+    cog (..., 3), J_G (..., 3, 3), springs (..., 6).
     """
 
     M: np.ndarray
     K: np.ndarray
     C: np.ndarray
-    mass: float
+    mass: float | np.ndarray
     cog: np.ndarray
     J_G: np.ndarray
-    size: float
+    size: float | np.ndarray
     springs: np.ndarray
 
     @property
@@ -94,31 +97,38 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
     size : the base's diagonal [m]
     dashpots : (6,) dashpots at O [N s/m, N m s/rad], or None
     ratios : (6,) damping ratios of the uncoupled motions [-] (instead of ``dashpots``), or None
+
+    A batch of designs: a body given as a stack (:func:`~foundation_calc.solvers.rigid_body.inertia.bodies_mass_matrix`),
+    springs, ratios (..., 6) and size (...) give the stacks of :class:`BlockModel`.
     """
     M = bodies_mass_matrix(masses, cogs, inertias)
     mass, cog, J_G = centre_of_mass(M)
     springs = np.asarray(springs, dtype=float)
-    K = np.diag(springs) + weight_tilt(mass * g, cog[2])
+    K = diagonal_matrices(springs) + weight_tilt(mass * g, cog[..., 2])
     if dashpots is not None:
-        C = np.diag(np.asarray(dashpots, dtype=float))
+        C = diagonal_matrices(dashpots)
     elif ratios is not None:
-        C = np.diag(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diag(M)))
+        C = diagonal_matrices(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diagonal(M, 0, -2, -1)))
     else:
         C = np.zeros((6, 6))
-    return BlockModel(M, K, C, mass, cog, J_G, float(size), springs)
+    C = np.broadcast_to(C, K.shape)
+    size = float(size) if np.ndim(size) == 0 else np.asarray(size, dtype=float)
+    return BlockModel(M, K, C, mass, cog, J_G, size, springs)
 
 
 def excitation(name, omega, rows) -> Excitation:
     """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
-    phase [rad], point [m], inertial) each; loads of one order add."""
+    phase [rad], point [m], inertial) each; loads of one order add. A point may be a batch
+    (..., 3) (the machine on each of a batch of candidate blocks): Q is then (..., H, 6)."""
     orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
-    Q = np.zeros((len(orders), 6), dtype=complex)
+    batch = np.broadcast_shapes(*(np.shape(r[4])[:-1] for r in rows))
+    Q = np.zeros(batch + (len(orders), 6), dtype=complex)
     Q_inertial = np.zeros_like(Q)
     for n, F, Mo, phase, at, inertial in rows:
         q = load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
-        Q[np.searchsorted(orders, n)] += q
+        Q[..., np.searchsorted(orders, n), :] += q
         if inertial:
-            Q_inertial[np.searchsorted(orders, n)] += q
+            Q_inertial[..., np.searchsorted(orders, n), :] += q
     return Excitation(str(name), float(omega), orders, Q, Q_inertial)
 
 

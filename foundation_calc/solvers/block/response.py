@@ -40,8 +40,35 @@ class BlockModes:
     damping: np.ndarray
 
 
+@dataclass(frozen=True)
+class ModeBatch:
+    """The modes of a batch of blocks (a stack of :class:`~foundation_calc.solvers.block.model.BlockModel`
+    matrices): frequencies (..., 6) [rad/s] (0 where unstable), shapes (..., 6, 6), the dominant
+    motion as an index into :data:`~foundation_calc.solvers.rigid_body.modes.MOTIONS` (..., 6),
+    damping ratios (..., 6) [-], the squared frequencies p² (..., 6) [rad²/s²] as solved, and
+    ``stable`` (...): every squared frequency positive."""
+
+    frequencies: np.ndarray
+    shapes: np.ndarray
+    dominant: np.ndarray
+    damping: np.ndarray
+    squared: np.ndarray
+    stable: np.ndarray
+
+
+def batch_modes(model: BlockModel) -> ModeBatch:
+    """The six modes of Eq. (1) of :mod:`.model` without damping, for one block or a stack; a
+    block whose lowest squared frequency is not positive (to 1e-12 of the highest) is unstable."""
+    p2, shapes = eigen(model.K, model.M, model.size)
+    dominant = dominant_motions(shapes, model.mass, model.cog, np.diagonal(model.J_G, 0, -2, -1))
+    stable = p2[..., 0] > 1e-12 * p2[..., -1]
+    p = np.sqrt(np.maximum(p2, 0.0))
+    modal_c = np.sum(shapes * (model.C @ shapes), axis=-2)
+    return ModeBatch(p, shapes, dominant, modal_c / (2.0 * np.where(p > 0.0, p, np.inf)), p2, stable)
+
+
 def block_modes(model: BlockModel) -> BlockModes:
-    """The six modes of Eq. (1) of :mod:`.model` without damping.
+    """The six modes of Eq. (1) of :mod:`.model` without damping (:func:`batch_modes` of one block).
 
     Raises
     ------
@@ -49,19 +76,17 @@ def block_modes(model: BlockModel) -> BlockModes:
         when a squared frequency is not positive: a direction without a spring, or a block that
         tips over (its weight's moment W z_G above the rocking spring).
     """
-    p2, shapes = eigen(model.K, model.M, model.size)
-    dominant = tuple(MOTIONS[int(i)] for i in dominant_motions(shapes, model.mass, model.cog, np.diag(model.J_G)))
-    if p2[0] <= 1e-12 * p2[-1]:
+    batch = batch_modes(model)
+    dominant = tuple(MOTIONS[int(i)] for i in batch.dominant)
+    if not batch.stable:
         raise PhysicsError(
-            f"the block is unstable or unrestrained in {dominant[0]}: squared natural frequency {float(p2[0]):.4g} rad²/s²"
+            f"the block is unstable or unrestrained in {dominant[0]}: squared natural frequency {float(batch.squared[0]):.4g} rad²/s²"
             f" (the weight's overturning moment W z_G = {model.mass * 9.81 * model.cog[2]:.4g} N m per rad is"
             " at or above the rocking spring, or a spring is missing)",
             field="soil",
             hint="stiffen the rocking springs or lower the centre of mass",
         )
-    p = np.sqrt(p2)
-    modal_c = np.einsum("im,ij,jm->m", shapes, model.C, shapes)
-    return BlockModes(p, shapes, dominant, modal_c / (2.0 * p))
+    return BlockModes(batch.frequencies, batch.shapes, dominant, batch.damping)
 
 
 @dataclass(frozen=True)
@@ -75,6 +100,8 @@ class Resonances:
     margin : (H, 6) |n ω - p_j| / p_j [-]
     share : (H, 6) forcing share |φ_jᵀ Q_n| / p_j of order n on mode j, over its largest value
         for the machine [-] (the resonance rule's measure of what a harmonic drives)
+
+    For a batch of blocks (:class:`ModeBatch`) critical, margin and share are stacks (..., H, 6).
     """
 
     orders: np.ndarray
@@ -84,26 +111,30 @@ class Resonances:
 
 
 def resonances(modes: BlockModes, exc: Excitation, omega=None) -> Resonances:
-    """Margins of the machine's orders from every mode at its speed (or at ``omega`` [rad/s])."""
+    """Margins of the machine's orders from every mode at its speed (or at ``omega`` [rad/s]), of
+    one block or of a batch (:class:`ModeBatch`)."""
     omega = exc.omega if omega is None else omega
-    p = modes.frequencies
+    p = modes.frequencies[..., None, :]
     n = exc.orders[:, None].astype(float)
-    static = np.abs(exc.Q @ modes.shapes) / p  # (H, 6): |φ_jᵀ Q_n| / p_j
-    share = static / static.max()
-    return Resonances(exc.orders, p[None, :] / n, np.abs(n * omega - p[None, :]) / p[None, :], share)
+    static = np.hypot(exc.Q.real @ modes.shapes, exc.Q.imag @ modes.shapes) / p  # (..., H, 6): |φ_jᵀ Q_n| / p_j
+    share = static / static.max(axis=(-2, -1), keepdims=True)
+    return Resonances(exc.orders, p / n, np.abs(n * omega - p) / p, share)
 
 
-def resonant(modes: BlockModes, res: Resonances) -> bool:
-    """True when an order sits within :data:`RESONANT_MARGIN` of an undamped mode (no steady state)."""
-    return bool(np.any((res.margin < RESONANT_MARGIN) & (modes.damping[None, :] <= 0.0)))
+def resonant(modes: BlockModes, res: Resonances) -> np.ndarray:
+    """True when an order sits within :data:`RESONANT_MARGIN` of an undamped mode (no steady
+    state); one bool per block of a batch."""
+    return np.any((res.margin < RESONANT_MARGIN) & (modes.damping[..., None, :] <= 0.0), axis=(-2, -1))
 
 
 def complex_amplitudes(model: BlockModel, exc: Excitation, omega=None) -> np.ndarray:
     """Z of (K - (nω)² M + i nω C) Z = Q_n for every order, shape (..., H, 6) [m, rad], at the
     machine's speed or at the speeds ``omega`` (any shape) [rad/s] (an unbalance's load grows as
-    ω², :meth:`~foundation_calc.solvers.block.model.Excitation.loads_at`)."""
+    ω², :meth:`~foundation_calc.solvers.block.model.Excitation.loads_at`); at the machine's speed
+    the block may be a batch (stacks (..., 6, 6) give (..., H, 6))."""
     if omega is None:
-        return harmonic_response(model.K, model.C, model.M, exc.Q, exc.omega * exc.orders)
+        K, C, M = (np.asarray(A)[..., None, :, :] for A in (model.K, model.C, model.M))
+        return harmonic_response(K, C, M, exc.Q, exc.omega * exc.orders)
     omega = np.asarray(omega, dtype=float)
     return harmonic_response(model.K, model.C, model.M, exc.loads_at(omega), omega[..., None] * exc.orders)
 
@@ -125,6 +156,8 @@ class PointMotion:
     velocity_rms : (P, 3) root-sum-square of every harmonic's RMS velocity [m/s]
     displacement_rms : (P, 3) [m]
     rotation_peak : (3,) [rad]
+
+    A batch of blocks puts its axis (...) in front of every array; a peak not asked for is None.
     """
 
     names: tuple[str, ...]
@@ -133,55 +166,124 @@ class PointMotion:
     omegas: tuple[float, ...]
     displacement: tuple[np.ndarray, ...]
     rotation: tuple[np.ndarray, ...]
-    peak: np.ndarray
-    velocity_peak: np.ndarray
+    peak: np.ndarray | None
+    velocity_peak: np.ndarray | None
     velocity_rms: np.ndarray
     displacement_rms: np.ndarray
-    rotation_peak: np.ndarray
+    rotation_peak: np.ndarray | None
+
+
+def velocity(U: np.ndarray, exc: Excitation) -> np.ndarray:
+    """Complex velocity amplitudes i n ω U of displacement amplitudes U (..., H) of machine ``exc``'s orders."""
+    return U * (1j * exc.omega * exc.orders)
 
 
 def _series_peak(Z: np.ndarray, orders: np.ndarray) -> np.ndarray:
-    """Peak over one period of Σ_n Re(Z_n e^{inφ}) for each row of Z (..., H)."""
+    """Peak over one period of Σ_n Re(Z_n e^{inφ}) for each row of Z (..., H); |Z_n| for one order."""
     from foundation_calc.solvers.numerics.trig_series import peak
 
+    if len(orders) == 1:
+        return np.abs(Z[..., 0])
     K = int(orders.max())
     a = np.zeros(Z.shape[:-1] + (K + 1,), dtype=complex)
     a[..., orders] = Z
     return peak(a.real, -a.imag)
 
 
-def point_motion(model: BlockModel, excitations, names, points) -> PointMotion:
+#: Phases per period at which :func:`largest_peak` samples a series for its bounds.
+BOUND_SAMPLES = 8
+
+
+def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
+    """The largest over the rows r of Σ_m peak_m(r), and its row (the first where several tie):
+    the peak of a point's motion along one direction when several machines' peaks add (module
+    docstring), for a batch of blocks without searching every row's peak.
+
+    ``parts``: per machine, (Z, orders) with Z (N, R, H_m) complex amplitudes of its orders
+    (H_m,). A single order's peak is |Z|. Several orders are sampled at :data:`BOUND_SAMPLES`
+    phases of spacing Δφ: the largest sample s is a lower bound of the peak, and the peak is at
+    most s + Σ n²|Z_n| Δφ²/8 (within Δφ/2 of a sample |q| falls by at most max|q''| Δφ²/8) and at
+    most Σ|Z_n|. Only the rows whose upper bound reaches the largest lower bound of their block
+    can hold the largest peak; their peaks are searched exactly (:func:`_series_peak`, as the
+    single block's), so the result is the single block's to round-off.
+
+    Returns (N,) the largest peak and (N,) its row index.
+    """
+    lower = upper = 0.0
+    step = 2.0 * np.pi / BOUND_SAMPLES
+    for Z, orders in parts:
+        size = np.abs(Z)
+        if len(orders) == 1:
+            lower, upper = lower + size[..., 0], upper + size[..., 0]
+            continue
+        re, im = np.moveaxis(Z.real, -1, 0).copy(), np.moveaxis(Z.imag, -1, 0).copy()  # (H, N, R) each
+        sampled = np.zeros(size.shape[:-1])
+        for k in range(BOUND_SAMPLES):  # |Re(Σ Z_n e^{inφ})| at φ = k Δφ, one phase at a time (memory of one row set)
+            phase = orders * k * step
+            q = sum(re[h] * np.cos(phase[h]) - im[h] * np.sin(phase[h]) for h in range(len(orders)))
+            np.maximum(sampled, np.abs(q), out=sampled)
+        bend = (size * orders.astype(float) ** 2).sum(-1) * step * step / 8.0
+        lower, upper = lower + sampled, upper + np.minimum(size.sum(-1), sampled + bend)
+    # rows in block order; every block keeps at least the row of its largest lower bound
+    block, row = np.nonzero(upper >= lower.max(axis=-1, keepdims=True))
+    exact = sum(_series_peak(Z[block, row], orders) for Z, orders in parts)
+    starts = np.flatnonzero(np.diff(block, prepend=-1))
+    largest = np.maximum.reduceat(exact, starts)
+    top = np.flatnonzero(exact == np.repeat(largest, np.diff(starts, append=len(block))))
+    first = top[np.unique(block[top], return_index=True)[1]]
+    return largest, row[first]
+
+
+#: The peaks over time :func:`point_motion` can search (the RMS values cost nothing and are always given).
+PEAKS = frozenset({"peak", "velocity_peak", "rotation_peak"})
+
+
+def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS) -> PointMotion:
     """Steady motion of G and of ``points`` (P, 3) [m] from O under every machine (module
-    docstring: peaks add, RMS values add as root-sum-square)."""
-    at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
-    T = point_maps(at)  # (P, 3, 6)
+    docstring: peaks add, RMS values add as root-sum-square), of one block or of a batch (stacks
+    in ``model``, and points (..., P, 3) where they move with the block); ``peaks``: the peaks of
+    :data:`PEAKS` to search (the others are None)."""
+    cog = np.asarray(model.cog)
+    fixed = np.asarray(points, dtype=float)
+    fixed = fixed if fixed.ndim >= 2 else fixed.reshape(-1, 3)  # (P, 3), or (..., P, 3) for a batch
+    batch = np.broadcast_shapes(cog.shape[:-1], fixed.shape[:-2])
+    at = np.concatenate([np.broadcast_to(cog[..., None, :], batch + (1, 3)), np.broadcast_to(fixed, batch + fixed.shape[-2:])],
+                        axis=-2)
+    T = point_maps(at)  # (..., P, 3, 6)
     disp, rot = [], []
-    peak = np.zeros((len(at), 3))
-    vpeak, vsq, usq, rpeak = np.zeros_like(peak), np.zeros_like(peak), np.zeros_like(peak), np.zeros(3)
+    vsq = usq = np.zeros(at.shape)
+    found = {name: 0.0 for name in peaks}
     for exc in excitations:
-        Z = complex_amplitudes(model, exc)  # (H, 6)
-        U = np.einsum("pij,hj->pih", T, Z)  # (P, 3, H)
-        V = U * (1j * exc.omega * exc.orders)
+        Z = complex_amplitudes(model, exc)  # (..., H, 6)
+        U = np.einsum("...pij,...hj->...pih", T, Z)  # (..., P, 3, H)
+        V = velocity(U, exc)
+        R = np.swapaxes(Z[..., 3:], -1, -2)  # (..., 3, H)
         disp.append(U)
-        rot.append(Z[:, 3:].T)
-        peak += _series_peak(U, exc.orders)
-        vpeak += _series_peak(V, exc.orders)
-        rpeak += _series_peak(Z[:, 3:].T, exc.orders)
-        vsq += (np.abs(V) ** 2).sum(-1) / 2.0
-        usq += (np.abs(U) ** 2).sum(-1) / 2.0
+        rot.append(R)
+        for name, series in (("peak", U), ("velocity_peak", V), ("rotation_peak", R)):
+            if name in found:
+                found[name] = found[name] + _series_peak(series, exc.orders)
+        vsq = vsq + (np.abs(V) ** 2).sum(-1) / 2.0
+        usq = usq + (np.abs(U) ** 2).sum(-1) / 2.0
     return PointMotion(
         tuple(["G", *names]), tuple(e.name for e in excitations), tuple(e.orders for e in excitations),
-        tuple(e.omega for e in excitations), tuple(disp), tuple(rot), peak, vpeak, np.sqrt(vsq), np.sqrt(usq), rpeak,
+        tuple(e.omega for e in excitations), tuple(disp), tuple(rot), found.get("peak"), found.get("velocity_peak"),
+        np.sqrt(vsq), np.sqrt(usq), found.get("rotation_peak"),
     )
 
 
 __all__ = [
     "BlockModes",
+    "ModeBatch",
+    "PEAKS",
     "PointMotion",
     "Resonances",
+    "batch_modes",
     "block_modes",
+    "largest_peak",
     "complex_amplitudes",
     "point_motion",
     "resonances",
     "resonant",
+    "velocity",
 ]

@@ -16,7 +16,10 @@ import numpy as np
 def dynamic_stiffness(K, C, M, Omega) -> np.ndarray:
     """K - Ω² M + i Ω C of Eq. (1), shape Ω.shape + (n, n); Ω [rad/s] any shape."""
     w = np.asarray(Omega, dtype=float)[..., None, None]
-    return K - w * w * M + 1j * w * C
+    real = K - w * w * M
+    out = np.empty(np.broadcast_shapes(real.shape, np.shape(C)), dtype=complex)
+    out.real, out.imag = real, w * C
+    return out
 
 
 def harmonic_response(K, C, M, Q, Omega) -> np.ndarray:

@@ -55,15 +55,18 @@ def springs_at(points, stiffness) -> np.ndarray:
 
 def load_at(p, F, M) -> np.ndarray:
     """Generalised force about O of a force F [N] and moment M [N m] at p [m], Eq. (2):
-    (F, M + p × F), shape (..., 6) (complex amplitudes allowed, stacks of F and M broadcast)."""
+    (F, M + p × F), shape (..., 6) (complex amplitudes allowed, stacks of p, F and M broadcast)."""
     F, M = np.asarray(F), np.asarray(M)
-    return np.concatenate([F, M + np.cross(np.asarray(p, dtype=float), F)], axis=-1)
+    return np.concatenate(np.broadcast_arrays(F, M + np.cross(np.asarray(p, dtype=float), F)), axis=-1)
 
 
 def weight_tilt(W, z_G) -> np.ndarray:
     """Stiffness of the weight W [N] of a body whose centre of mass is z_G [m] above O, Eq. (4):
-    diag(0, 0, 0, -W z_G, -W z_G, 0) [N m/rad]."""
-    return np.diag([0.0, 0.0, 0.0, -W * z_G, -W * z_G, 0.0])
+    diag(0, 0, 0, -W z_G, -W z_G, 0) [N m/rad]; stacks of W and z_G give a stack (..., 6, 6)."""
+    tilt = -np.asarray(W, dtype=float) * np.asarray(z_G, dtype=float)
+    out = np.zeros(tilt.shape + (6, 6))
+    out[..., 3, 3] = out[..., 4, 4] = tilt
+    return out
 
 
 __all__ = ["load_at", "offset_map", "point_map", "point_maps", "spring_at", "springs_at", "weight_tilt"]

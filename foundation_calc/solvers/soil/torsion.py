@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 
 def torsion_radius(L, B):
     """r0θ of the circle with the polar second moment of an L × B base [m].
@@ -51,13 +53,13 @@ def lysmer_torsion(G, rho, L, B, J_z, material_damping):
 def gazetas_torsion(G, L, B):
     """Static torsional spring of a rectangular surface footing [N m/rad], Gazetas (1991), Table 1:
     K_t = G J_t^0.75 [4 + 11 (1 - χ)^10], J_t = L B (L² + B²)/12 the polar second moment of the
-    base, χ = B'/L' (short over long side). Its radiation damping vanishes at low frequency, as
+    base, χ = B'/L' (short over long side); L and B may be arrays. Its radiation damping vanishes at low frequency, as
     the rocking's does (:mod:`~foundation_calc.solvers.soil.gazetas`): material damping only.
 
-    >>> round(gazetas_torsion(1.0, 2.0, 2.0) / (8.0 / 3.0) ** 0.75, 12)   # square: 4 + 0
+    >>> round(float(gazetas_torsion(1.0, 2.0, 2.0)) / (8.0 / 3.0) ** 0.75, 12)   # square: 4 + 0
     4.0
     """
-    chi = min(L, B) / max(L, B)
+    chi = np.minimum(L, B) / np.maximum(L, B)
     J_t = L * B * (L * L + B * B) / 12.0
     return G * J_t**0.75 * (4.0 + 11.0 * (1.0 - chi) ** 10)
 

@@ -1,0 +1,167 @@
+"""The vectorised block-foundation evaluator of ``fcalc design`` against the scalar path of
+``fcalc check`` (``CHECKS["block_foundation"]``, one scene at a time), candidate by candidate.
+
+Both solve the same equations, the batch on stacks of matrices: outcomes must be equal and
+utilisations equal to 1e-9 relative (batched and single 6×6 eigen-solves and complex solves
+differ by round-off, about 1e-13 relative on these scenes, so 1e-9 leaves margin without hiding
+a wrong term, which moves a utilisation by percents). The scalar path's own numbers are checked
+against independent solutions elsewhere (test_block_foundation.py, test_peaks.py).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from foundation_calc.checks.block import check_block, condition_label
+from foundation_calc.checks.design.apply import apply
+from foundation_calc.checks.design.block import NOT_EVALUATED, VARIABLE_KEYS, evaluate
+from foundation_calc.checks.design.candidates import EVALUATORS
+from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
+from foundation_calc.checks.registry import CHECKS
+from foundation_calc.errors import PhysicsError
+from foundation_calc.scenes import load_scene
+
+CODES = {"pass": 0, "warn": 1, "fail": 2}
+TWO = "configs/block_two_machines.toml"
+FAN = "configs/block_fan_torsion_near_speed.toml"
+
+
+def _soil(scene, **soil):
+    return scene.model_copy(update={"soil": type(scene.soil).model_validate(soil)})
+
+
+def _limits(scene, **limits):
+    return scene.model_copy(update={"limits": scene.limits.model_copy(update=limits)})
+
+
+def _variants():
+    two, fan = load_scene(TWO), load_scene(FAN)
+    gazetas = _soil(two, method="gazetas", shear_wave_velocity=450.0, density=1950.0, poisson=0.3, material_damping=0.04)
+    gazetas = _limits(gazetas, velocity=4.0e-3, amplitude_rms=3.0e-5, code="ISO 10816-3", machine_group=1,
+                      foundation="rigid", acceptable_zone="B", bearing_pressure=5.0e4, detuning={1: 0.2, 2: 0.1})
+    sp26 = _soil(fan, method="sp26", deformation_modulus=3.0e7, soil_class="sand")
+    coefficients = _soil(two, method="coefficients", c_z=8.0e7, c_x=5.0e7, damping=[0.1, 0.08, 0.05])
+    return {"springs": two, "lysmer": fan, "gazetas": gazetas, "sp26": sp26, "coefficients": coefficients}
+
+
+SCENES = _variants()
+
+
+def _candidates(scene, count, seed):
+    rng = np.random.default_rng(seed)
+    b = scene.block
+    return {"block.length": b.length * rng.uniform(0.6, 1.6, count), "block.width": b.width * rng.uniform(0.6, 1.6, count),
+            "block.height": b.height * rng.uniform(0.4, 1.8, count)}
+
+
+def _one(scene, batch, i):
+    """Candidate ``i`` as ``fcalc check`` sees it: the scene with the block's dimensions put in and
+    the machines, loads and points moved with the block (checks/design/apply.py)."""
+    return apply(scene.model_dump(exclude_unset=True), {key: float(values[i]) for key, values in batch.items()})
+
+
+def _scalar_utilisation(check, report):
+    """Utilisation of a check from the scalar report's rows (the module docstring of checks/design/block.py)."""
+    if check == "resonance":
+        r = report.nearest
+        return max(r.required, RESONANCE_FAIL_MARGIN) / r.margin
+    if check == "amplitudes":
+        if report.resonant:
+            return math.inf
+        ratios = [row.ratio for row in report.limit_rows] + [row.ratio for row in report.zone_rows]
+        return max(ratios) if ratios else math.nan
+    return max(row.limit / row.value if row.name == "mass ratio" else row.value / row.limit for row in report.office)
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_batch_verdicts_equal_the_scalar_checks(name):
+    scene = SCENES[name]
+    batch = _candidates(scene, 60, seed=len(name))
+    verdicts = evaluate(scene, batch)
+    assert list(verdicts.outcome) == [c for c in CHECKS["block_foundation"] if c in verdicts.outcome]
+    seen = set()
+    for i in range(60):
+        one = _one(scene, batch, i)
+        report = check_block(one)
+        for check, function in CHECKS["block_foundation"].items():
+            finding = function(one)
+            if finding is None:
+                assert verdicts.outcome.get(check, np.zeros(60))[i] == 0, (check, i)
+                continue
+            assert verdicts.outcome[check][i] == CODES[finding.outcome.value], (check, i, finding.reason)
+            seen.add((check, finding.outcome.value))
+            if check in ("resonance", "amplitudes", "office"):
+                expected = _scalar_utilisation(check, report)
+                np.testing.assert_allclose(verdicts.utilisation[check][i], expected, rtol=1e-9, err_msg=f"{check} {i}")
+        governing = verdicts.reasons["resonance"][verdicts.governing["resonance"][i]]
+        assert governing == condition_label(report.nearest)
+        np.testing.assert_allclose(verdicts.volume[i], one.block.length * one.block.width * one.block.height, rtol=1e-15)
+        np.testing.assert_allclose(verdicts.mass[i], one.block.mass_properties[0], rtol=1e-15)
+    assert ("resonance", "fail") in seen  # the candidates reach both sides of the checks
+    # the fan's blocks and the stiff coefficients' (machines riding on the top) keep a mode in a band throughout
+    assert ("resonance", "pass") in seen or name in ("lysmer", "sp26", "coefficients")
+
+
+def test_governing_amplitude_names_the_scalar_paths_largest_row():
+    scene = SCENES["gazetas"]
+    batch = _candidates(scene, 40, seed=7)
+    verdicts = evaluate(scene, batch)
+    for i in range(40):
+        report = check_block(_one(scene, batch, i))
+        rows = list(report.limit_rows) + list(report.zone_rows)
+        top = max(rows, key=lambda row: row.ratio)
+        text = verdicts.reasons["amplitudes"][verdicts.governing["amplitudes"][i]]
+        if hasattr(top, "quantity"):
+            assert text == f"{top.quantity} at {top.point} ({top.direction})"
+        else:
+            assert text == f"{top.table.title} zone at {top.point}"
+
+
+def test_a_block_that_tips_over_fails_where_the_scalar_path_refuses_it():
+    """Soft rocking springs: the tall candidates' weight overturns them (fcalc check: a PhysicsError)."""
+    scene = load_scene(TWO)
+    soft = list(scene.soil.stiffness)
+    soft[3] = soft[4] = 4.0e6
+    scene = _soil(scene, method="springs", stiffness=soft, dashpot=list(scene.soil.dashpot))
+    batch = {"block.height": np.linspace(0.3, 4.0, 12)}
+    verdicts = evaluate(scene, batch)
+    refused = []
+    for i in range(12):
+        try:
+            check_block(_one(scene, batch, i))
+            refused.append(False)
+        except PhysicsError:
+            refused.append(True)
+    assert any(refused) and not all(refused)
+    for check in ("resonance", "amplitudes"):
+        assert (verdicts.outcome[check][refused] == 2).all()
+        assert np.isinf(verdicts.utilisation[check][refused]).all()
+        assert verdicts.reasons[check][verdicts.governing[check][refused][0]].startswith("the block tips over")
+
+
+def test_a_judged_runup_is_reported_as_not_evaluated():
+    scene = _limits(load_scene(TWO), transient_amplitude=1.0e-3)
+    scene = scene.model_copy(update={"operation": type(scene).model_fields["operation"].annotation.__args__[0](run_up_time=5.0)})
+    verdicts = evaluate(scene, {"block.length": np.array([6.0, 8.0])})
+    assert "runup" in NOT_EVALUATED and (verdicts.outcome["runup"] == 0).all() and np.isnan(verdicts.utilisation["runup"]).all()
+    assert "runup" not in evaluate(load_scene(TWO), {"block.length": np.array([6.0])}).outcome
+
+
+def test_inputs_warn_where_a_point_is_far_for_a_small_base():
+    scene = load_scene(TWO)
+    far = scene.points[0].model_copy(update={"at": [40.0, 0.0, 3.0]})
+    scene = scene.model_copy(update={"points": [far, *scene.points[1:]]})
+    batch = {"block.length": np.array([2.0, 7.0]), "block.width": np.array([1.5, 4.0])}
+    verdicts = evaluate(scene, batch)
+    expected = [0 if CHECKS["block_foundation"]["inputs"](_one(scene, batch, i)) is None else 1 for i in range(2)]
+    assert verdicts.outcome["inputs"].tolist() == expected == [1, 0]
+
+
+def test_keys_that_cannot_vary_are_refused():
+    assert EVALUATORS["block_foundation"] == "foundation_calc.checks.design.block"
+    assert "block.height" in VARIABLE_KEYS
+    with pytest.raises(ValueError, match="soil.c_z cannot vary"):
+        evaluate(load_scene(TWO), {"soil.c_z": np.array([1.0e8])})
