@@ -11,7 +11,9 @@ the top rise with it, those on an end face follow the face), as ``fcalc check`` 
   L × B (every soil method of :class:`~foundation_calc.scenes.block_soil.BlockSoil`, on arrays)
   and the weight's tilt: :meth:`~foundation_calc.scenes.block.BlockScene.model` with a stack;
 - the six modes by one batched Cholesky reduction and ``eigh``
-  (:func:`~foundation_calc.solvers.block.response.batch_modes`);
+  (:func:`~foundation_calc.solvers.block.response.batch_modes`); on a frequency-dependent soil
+  each at its own frequency (:func:`~foundation_calc.solvers.block.response.consistent_batch`),
+  and each order's steady state with the springs and dashpots at n ω;
 - ``resonance``: every order of every machine against every mode, forcing shares, judged by
   the resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`) over all the
   conditions of the candidate; the governing condition is the one ``fcalc check`` names;
@@ -115,12 +117,11 @@ def _resonance(scene, modes, excitations):
     return outcome, utilisation, governing * len(MOTIONS) + motion, reasons
 
 
-def _amplitudes(scene, model, modes, excitations, points):
+def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
-    from foundation_calc.units import rpm_from_omega
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
 
@@ -134,7 +135,7 @@ def _amplitudes(scene, model, modes, excitations, points):
     ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
     worst = np.zeros(n, dtype=np.int8)
     if quantities or limits.code is not None:
-        motion = point_motion(model, excitations, names[1:], points, frozenset())
+        motion = point_motion(model, excitations, names[1:], points, frozenset(), impedance=impedance)
         rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
         for quantity, limit in quantities.items():
             field = LIMITED_VALUES[quantity]
@@ -155,9 +156,8 @@ def _amplitudes(scene, model, modes, excitations, points):
             table = TABLES[limits.code, limits.machine_group, limits.foundation]
             highest = ZONES.index(limits.acceptable_zone or "B")
             top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
-            top_x = motion.displacement_rms.max(axis=-1)  # judged too below 600 rpm
-            slowest = min(rpm_from_omega(exc.omega) for exc in excitations)
-            index, by_x = code_zone_index(top, top_x, table, slowest)
+            top_x = motion.displacement_rms.max(axis=-1)  # the more restrictive of the two decides
+            index, by_x = code_zone_index(top, top_x, table)
             verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
             worst = verdicts[index].max(axis=-1)
             ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
@@ -244,7 +244,7 @@ def _mover(scene, L, B, H):
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.block.model import excitation
-    from foundation_calc.solvers.block.response import batch_modes
+    from foundation_calc.solvers.block.response import batch_modes, consistent_batch
 
     L, B, H, rho = _candidates(scene, batch)
     m_b, cog_b, J_b = _block_body(L, B, H, rho, scene)
@@ -253,12 +253,17 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     excitations = [excitation(m.name, m.omega_rad_s, [(*row[:4], move(row[4]), row[5]) for row in m.load_rows()])
                    for m in scene.machines]
     points = np.stack([move(p.at) for p in scene.points], axis=-2) if scene.points else []
-    modes = batch_modes(model)
+    impedance = None
+    if scene.soil.frequency_dependent:  # each mode at its own frequency, each order at n ω, as check_block
+        def impedance(omega):
+            return scene.soil_impedance(omega, base=(L, B), block=(m_b, cog_b, J_b),
+                                        machine_cogs=[move(m.cog) for m in scene.machines])
+    modes = batch_modes(model) if impedance is None else consistent_batch(model, impedance)
     unstable = ~modes.stable
     found = {"inputs": _inputs(scene, L, B, move)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     for check, (o, u, g, r) in (("resonance", _resonance(scene, modes, excitations)),
-                                ("amplitudes", _amplitudes(scene, model, modes, excitations, points))):
+                                ("amplitudes", _amplitudes(scene, model, modes, excitations, points, impedance))):
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
         outcome[check] = np.where(unstable, FAIL, o).astype(np.int8)
         utilisation[check] = np.where(unstable, np.inf, u)
