@@ -188,3 +188,35 @@ def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
     rule = ("the candidate's scene is checks/design/apply.py's: machines, loads and points on the block's top rise"
             " with it, those on an end face follow it (a crank's C-relative heights re-measured from the new C)")
     assert not found, (rule, [d.text for d in found])
+
+
+def test_block_evaluator_leaves_a_modulus_range_to_fcalc_checks_path():
+    """The vectorised block evaluator judges the soil as given; a scene with a modulus_range is
+    refused, so that fcalc design judges it by fcalc check's path (which checks the range)."""
+    from foundation_calc.checks.design.block import evaluate
+    from foundation_calc.scenes import parse_scene
+
+    document = read_toml(FAN)
+    document["soil"]["modulus_range"] = [0.7, 1.5]
+    with pytest.raises(NotImplementedError, match="modulus_range"):
+        evaluate(parse_scene(document), {"block.height": np.array([1.6])})
+
+
+def test_strict_crank_sizing_against_brute_force(runner_module):
+    """The compressor's crank foundation with --strict (the mass-ratio warning fails): on a
+    3 × 3 × 3 grid checked one by one through run_checks, no candidate that passes without a
+    warning is cheaper than the design the search picks, which itself passes so."""
+    args = ["design", str(COMPRESSOR), "--vary", "block.length=3:8", "--vary", "block.width=2:5",
+            "--vary", "block.height=0.8:2.4", "--points", "3", "--strict", "--json"]
+    result = runner_module.invoke(app, args)
+    assert result.exit_code == 0, result.output
+    best = json.loads(result.stdout)["best"]
+    document = read_toml(COMPRESSOR)
+    volumes = [
+        length * width * height
+        for length in (3.0, 5.5, 8.0) for width in (2.0, 3.5, 5.0) for height in (0.8, 1.6, 2.4)
+        if all(run.verdict == "pass" for run in run_checks(apply(document, {"block.length": length, "block.width": width,
+                                                                          "block.height": height})))
+    ]
+    assert best["volume"] <= min(volumes) + 1e-9
+    assert best["outcome"] == "pass"
