@@ -79,20 +79,15 @@ def verification_blocks(scene, doc: dict) -> tuple:
     sheet (K₀ v = p² M₀ v) and the forcing's harmonics: what the harmonic balance starts from."""
     import numpy as np
 
-    from foundation_calc.output.report.block_methods import modes_of
+    from foundation_calc.output.report.block_methods import matrix_table, modes_of
     from foundation_calc.output.report.handcalc import Definitions
     from foundation_calc.output.report.model import Paragraph, table
     from foundation_calc.output.report.numbers import column, figure
 
     system = verification_system(scene)
     M0, K0, Ks = system.mass[0].real, system.stiff[0].real, np.asarray(system.springs).real
-    rows = []
-    for key, matrix in (("M₀", M0), ("K_springs", Ks), ("K₀", K0)):
-        scale = np.abs(matrix).max() or None
-        rows += [(f"{key}, row {c}", *(figure(float(v), 4, scale) for v in matrix[i]), ROW_UNITS[key][i])
-                 for i, c in enumerate(COORDINATES)]
-    matrices = table("6-DOF verification: mean matrices about O1 (order x, y, z, α, β, γ)", ("row", *COORDINATES, "units"),
-                     rows, (False, *(True,) * 6, False))
+    matrices = matrix_table("6-DOF verification: mean matrices about O1 (order x, y, z, α, β, γ)",
+                            (("M₀", M0), ("K_springs", Ks), ("K₀", K0)), COORDINATES, ROW_UNITS)
     p, _, _ = modes_of(M0, K0, np.zeros_like(K0))
     names = [f["mode"] for f in doc["natural_frequencies"]]
     modes = table("Modes of the mean system: K₀ v = p² M₀ v (eigen-solve of M₀⁻¹K₀, gyroscopic terms left out)",
