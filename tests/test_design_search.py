@@ -188,3 +188,15 @@ def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
     rule = ("the candidate's scene is checks/design/apply.py's: machines, loads and points on the block's top rise"
             " with it, those on an end face follow it (a crank's C-relative heights re-measured from the new C)")
     assert not found, (rule, [d.text for d in found])
+
+
+def test_block_evaluator_leaves_a_modulus_range_to_fcalc_checks_path():
+    """The vectorised block evaluator judges the soil as given; a scene with a modulus_range is
+    refused, so that fcalc design judges it by fcalc check's path (which checks the range)."""
+    from foundation_calc.checks.design.block import evaluate
+    from foundation_calc.scenes import parse_scene
+
+    document = read_toml(FAN)
+    document["soil"]["modulus_range"] = [0.7, 1.5]
+    with pytest.raises(NotImplementedError, match="modulus_range"):
+        evaluate(parse_scene(document), {"block.height": np.array([1.6])})

@@ -58,8 +58,18 @@ def _evaluator(kind: str, scene, document, source: str, given: dict[str, float])
             return evaluate, f"vectorised evaluator of {kind}", grid.MAX_CANDIDATES, REFINE
         except NotImplementedError as exc:
             why = f"the vectorised evaluator of {kind} does not take this scene ({exc})"
-    name = f"{why}: each candidate through fcalc check's path, about 10-30 ms each"
-    return functools.partial(reference.evaluate, document, source=source), name, grid.MAX_REFERENCE_CANDIDATES, 2
+    import time
+
+    evaluate = functools.partial(reference.evaluate, document, source=source)
+    own = {key: np.array([value]) for key, value in given.items()}
+    evaluate(own)  # imports and caches: the second call is what a candidate costs
+    start = time.perf_counter()
+    evaluate(own)
+    cost = time.perf_counter() - start
+    maximum = max(1, min(grid.MAX_REFERENCE_CANDIDATES, int(grid.MAX_REFERENCE_SECONDS / cost)))
+    name = (f"{why}: each candidate through fcalc check's path, {cost * 1e3:.3g} ms on the scene's own block;"
+            f" at most {maximum} candidates")
+    return evaluate, name, maximum, 2
 
 
 def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None) -> None:

@@ -225,7 +225,12 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     ------
     ValueError
         for a key not in :data:`VARIABLE_KEYS`, or a varied height or density of a block given by its mass.
+    NotImplementedError
+        for a soil given with ``modulus_range``: its checks over the range are judged by ``fcalc
+        check``'s path (the search then uses it, candidate by candidate).
     """
+    if getattr(scene.soil, "modulus_range", None) is not None:
+        raise NotImplementedError("the soil's modulus_range is judged by fcalc check's path alone")
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
         return _evaluate(scene, batch)
 
