@@ -101,8 +101,10 @@ def design(
     """Size the block: the cheapest (concrete volume) that passes every check of fcalc check.
 
     The varied dimensions run over a grid, judged chunk by chunk by the kind's vectorised
-    evaluator (or, for a kind without one, by fcalc check's path candidate by candidate); the
-    search then refines one grid step around the cheapest passing design at a 5 times finer step.
+    evaluator (or, for a kind or scene it does not take, such as a soil's modulus_range, by fcalc
+    check's path candidate by candidate, and the output says so); the search then refines one
+    grid step around the cheapest passing design at a 5 times finer step (2 times, candidate by
+    candidate).
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
     fail. The shown designs are checked again by fcalc check's own path; a disagreement is
