@@ -220,3 +220,11 @@ def test_strict_crank_sizing_against_brute_force(runner_module):
     ]
     assert best["volume"] <= min(volumes) + 1e-9
     assert best["outcome"] == "pass"
+
+
+def test_nothing_written_when_nothing_passes(runner_module, tmp_path):
+    written = tmp_path / "best.toml"
+    result = runner_module.invoke(app, ["design", str(FAN), "--vary", "block.length=4.5:5.5", "--points", "2",
+                                        "--write", str(written)])
+    assert result.exit_code == 1 and not written.exists()
+    assert "not written: no candidate passes" in result.output
