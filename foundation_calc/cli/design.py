@@ -101,8 +101,10 @@ def design(
     """Size the block: the cheapest (concrete volume) that passes every check of fcalc check.
 
     The varied dimensions run over a grid, judged chunk by chunk by the kind's vectorised
-    evaluator (or, for a kind without one, by fcalc check's path candidate by candidate); the
-    search then refines one grid step around the cheapest passing design at a 5 times finer step.
+    evaluator (or, for a kind or scene it does not take, such as a soil's modulus_range, by fcalc
+    check's path candidate by candidate, and the output says so); the search then refines one
+    grid step around the cheapest passing design at a 5 times finer step (2 times, candidate by
+    candidate).
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
     fail. The shown designs are checked again by fcalc check's own path; a disagreement is
@@ -126,6 +128,10 @@ def design(
     sizing = _size(scene, loaded, document, searched_grid, (evaluate, evaluator, refine), given, strict)
     if write is not None and sizing.found.found:
         sizing = _write(scene, write, sizing)
+    elif write is not None:
+        from foundation_calc.output.console import stderr
+
+        stderr().print(f"{write} not written: no candidate passes", soft_wrap=True, markup=False)
     _report(sizing, json, plot)
     if sizing.disagreements:
         raise typer.Exit(4)
