@@ -21,10 +21,11 @@ from foundation_calc.scenes.project import Project
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
 
 
-def too_far(position, size):
-    """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
-    × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
-    return max(abs(v) for v in position) > LENGTH_SCALE_FACTOR * size
+def too_far(reach, size):
+    """Whether a position whose largest coordinate is ``reach`` [m] from O lies more than
+    :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal ``size`` [m]
+    away (floats or arrays over candidate blocks): probably mm typed as m."""
+    return reach > LENGTH_SCALE_FACTOR * size
 
 
 class BlockLimits(Limits):
@@ -105,7 +106,7 @@ class BlockScene(SceneModel):
             f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
             " was it typed in mm?"
             for key, value in self.plausible_lengths().items()
-            if too_far(value, size)
+            if too_far(max(abs(v) for v in value), size)
         ]
         return found + self.speed_warnings()
 
@@ -124,12 +125,13 @@ class BlockScene(SceneModel):
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
 
-    def model(self, base=None, block=None):
+    def model(self, base=None, block=None, place=None):
         """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
-        blocks (``fcalc design``): the model's matrices are then stacks."""
+        blocks (``fcalc design``), and ``place`` maps a position of the scene [m] to its
+        positions (..., 3) on those blocks (:meth:`excitations`): the model's matrices are then stacks."""
         import numpy as np
 
         from foundation_calc.solvers.block.model import block_model
@@ -138,7 +140,8 @@ class BlockScene(SceneModel):
 
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         L, B = self.base if base is None else base
-        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [m.cog for m in self.machines],
+        place = place or (lambda position: position)
+        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [place(m.cog) for m in self.machines],
                   [J_b] + [m.inertia for m in self.machines])
         M = bodies_mass_matrix(*bodies)
         springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
@@ -149,8 +152,12 @@ class BlockScene(SceneModel):
             ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
         )
 
-    def excitations(self):
-        """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`)."""
+    def excitations(self, place=None):
+        """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`);
+        ``place`` maps the position of a load [m] to its positions (..., 3) on a batch of
+        candidate blocks (:meth:`model`)."""
         from foundation_calc.solvers.block.model import excitation
 
-        return [excitation(m.name, m.omega_rad_s, m.load_rows()) for m in self.machines]
+        place = place or (lambda position: position)
+        return [excitation(m.name, m.omega_rad_s, [(*row[:4], place(row[4]), row[5]) for row in m.load_rows()])
+                for m in self.machines]

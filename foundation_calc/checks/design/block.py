@@ -2,8 +2,10 @@
 candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
 on stacks of matrices instead of one.
 
-A candidate varies the block's length, width, height or density (:data:`VARIABLE_KEYS`); the
-machines and the points stay where the scene puts them (from O, the centre of the base). For each
+A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
+height and density); the machines, their loads and the points move with the block's top and end
+faces as :func:`~foundation_calc.checks.design.apply.moved` says, to the micrometre as the
+candidate's scene file writes them (:func:`~foundation_calc.checks.design.apply.apply`). For each
 candidate:
 
 - the mass matrix of the block and the machines, the soil's six springs and damping of the base
@@ -39,8 +41,11 @@ import numpy as np
 
 from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts
 
-#: The scene keys a candidate may vary [m, m, m, kg/m³].
-VARIABLE_KEYS = ("block.length", "block.width", "block.height", "block.density")
+#: The scene keys a candidate may vary [m].
+VARIABLE_KEYS = ("block.length", "block.width", "block.height")
+
+#: Decimals [m] to which a candidate's positions are written (:func:`~foundation_calc.checks.design.apply.apply`).
+POSITION_DECIMALS = 6
 
 #: Checks the batch does not evaluate, with why: outcome PASS and utilisation NaN for every
 #: candidate, so the search must re-check its front-runners by the full path (``fcalc check``).
@@ -56,32 +61,33 @@ _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 
 def _candidates(scene, batch: Batch):
-    """(L, B, H, ρ) of every candidate, (N,) each [m, m, m, kg/m³]: the scene's values where not varied."""
+    """(L, B, H) of every candidate, (N,) each [m]: the scene's values where not varied."""
     unknown = sorted(set(batch) - set(VARIABLE_KEYS))
     if unknown:
         raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can: {', '.join(VARIABLE_KEYS)}")
-    block = scene.block
-    if block.height is None and {"block.height", "block.density"} & set(batch):
-        raise ValueError("block.height and block.density vary only for a block given by height and density (not by mass)")
-    n = len(next(iter(batch.values()))) if batch else 1
-    values = []
-    for key in VARIABLE_KEYS:
-        given = getattr(block, key.split(".")[1])
-        values.append(np.broadcast_to(np.asarray(batch.get(key, np.nan if given is None else given), dtype=float), (n,)))
-    return values
-
-
-def _block_body(L, B, H, rho, scene):
-    """Mass [kg], centre of mass (N, 3) [m] and central inertia tensor (N, 3, 3) [kg m²] of each
-    candidate block (:attr:`~foundation_calc.scenes.block_parts.BlockBody.mass_properties`)."""
-    from foundation_calc.solvers.rigid_body.inertia import block_inertia, diagonal_matrices, inertia_tensor
-
     if scene.block.height is None:
-        m, cog, J = scene.block.mass_properties
-        return np.full(L.shape, m), np.broadcast_to(np.asarray(cog, dtype=float), L.shape + (3,)), inertia_tensor(J)
+        raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
+    n = len(next(iter(batch.values()))) if batch else 1
+    return [np.broadcast_to(np.asarray(batch.get(key, getattr(scene.block, key.split(".")[1])), dtype=float), (n,))
+            for key in VARIABLE_KEYS]
+
+
+def _block_body(L, B, H, rho):
+    """Mass [kg], centre of mass (N, 3) [m] and central inertia tensor (N, 3, 3) [kg m²] of each
+    candidate block of density ρ [kg/m³] (:attr:`~foundation_calc.scenes.block_parts.BlockBody.mass_properties`)."""
+    from foundation_calc.solvers.rigid_body.inertia import block_inertia, diagonal_matrices
+
     m = L * B * H * rho
     cog = np.stack([np.zeros_like(H), np.zeros_like(H), H / 2.0], axis=-1)
     return m, cog, diagonal_matrices(np.stack(block_inertia(m, L, B, H), axis=-1))
+
+
+def _placing(scene, L, B, H):
+    """position [m] -> its positions (N, 3) on the candidate blocks, as their scene files write them."""
+    from foundation_calc.checks.design.apply import moved
+
+    old = (scene.block.length, scene.block.width, scene.block.height)
+    return lambda position: np.round(moved(position, old, (L, B, H)), POSITION_DECIMALS)
 
 
 def _resonance(scene, modes, excitations):
@@ -114,7 +120,7 @@ def _resonance(scene, modes, excitations):
     return outcome, utilisation, governing * len(MOTIONS) + motion, reasons
 
 
-def _amplitudes(scene, model, modes, excitations):
+def _amplitudes(scene, model, modes, excitations, place):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
@@ -132,7 +138,8 @@ def _amplitudes(scene, model, modes, excitations):
     ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
     worst = np.zeros(n, dtype=np.int8)
     if quantities or limits.code is not None:
-        motion = point_motion(model, excitations, names[1:], [p.at for p in scene.points], frozenset())
+        at = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
+        motion = point_motion(model, excitations, names[1:], at, frozenset())
         rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
         for quantity, limit in quantities.items():
             field = LIMITED_VALUES[quantity]
@@ -194,7 +201,7 @@ def _office(scene, model, L, B, m_b):
     return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
 
 
-def _inputs(scene, L, B):
+def _inputs(scene, L, B, place):
     """Outcome and governing index of the ``inputs`` check (plausibility warnings): a position
     more than 10 × the candidate's base diagonal from O, or a speed typed in rpm."""
     from foundation_calc.scenes.block import too_far
@@ -202,7 +209,7 @@ def _inputs(scene, L, B):
     size = np.sqrt(L * L + B * B)
     far = np.zeros(L.shape, dtype=bool)
     for position in scene.plausible_lengths().values():
-        far |= too_far(position, size)
+        far |= too_far(np.abs(place(position)).max(axis=-1), size)
     fast = bool(scene.speed_warnings())
     outcome = np.where(far | fast, WARN, PASS).astype(np.int8)
     governing = np.where(far, 1, np.where(fast, 2, 0))
@@ -218,7 +225,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     Raises
     ------
     ValueError
-        for a key not in :data:`VARIABLE_KEYS`, or a varied height or density of a block given by its mass.
+        for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
     """
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
         return _evaluate(scene, batch)
@@ -228,16 +235,17 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.block.response import batch_modes
 
-    L, B, H, rho = _candidates(scene, batch)
-    m_b, cog_b, J_b = _block_body(L, B, H, rho, scene)
-    model = scene.model(base=(L, B), block=(m_b, cog_b, J_b))
-    excitations = scene.excitations()
+    L, B, H = _candidates(scene, batch)
+    m_b, cog_b, J_b = _block_body(L, B, H, scene.block.density)
+    place = _placing(scene, L, B, H)
+    model = scene.model(base=(L, B), block=(m_b, cog_b, J_b), place=place)
+    excitations = scene.excitations(place)
     modes = batch_modes(model)
     unstable = ~modes.stable
-    found = {"inputs": _inputs(scene, L, B)}
+    found = {"inputs": _inputs(scene, L, B, place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     for check, (o, u, g, r) in (("resonance", _resonance(scene, modes, excitations)),
-                                ("amplitudes", _amplitudes(scene, model, modes, excitations))):
+                                ("amplitudes", _amplitudes(scene, model, modes, excitations, place))):
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
         outcome[check] = np.where(unstable, FAIL, o).astype(np.int8)
         utilisation[check] = np.where(unstable, np.inf, u)
@@ -253,7 +261,7 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    volume = L * B * H if scene.block.height is not None else np.full(len(L), np.nan)
+    volume = L * B * H
     return CandidateVerdicts(
         volume=volume, mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},

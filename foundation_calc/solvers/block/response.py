@@ -241,10 +241,11 @@ PEAKS = frozenset({"peak", "velocity_peak", "rotation_peak"})
 def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS) -> PointMotion:
     """Steady motion of G and of ``points`` (P, 3) [m] from O under every machine (module
     docstring: peaks add, RMS values add as root-sum-square), of one block or of a batch (stacks
-    in ``model``); ``peaks``: the peaks of :data:`PEAKS` to search (the others are None)."""
+    in ``model``, points (..., P, 3)); ``peaks``: the peaks of :data:`PEAKS` to search (the others are None)."""
     cog = np.asarray(model.cog)
-    fixed = np.asarray(points, dtype=float).reshape(-1, 3)
-    at = np.concatenate([cog[..., None, :], np.broadcast_to(fixed, cog.shape[:-1] + fixed.shape)], axis=-2)
+    given = np.asarray(points, dtype=float)
+    given = given.reshape(-1, 3) if given.ndim < 2 else given  # (P, 3), or (..., P, 3) for a batch
+    at = np.concatenate([cog[..., None, :], np.broadcast_to(given, cog.shape[:-1] + given.shape[-2:])], axis=-2)
     T = point_maps(at)  # (..., P, 3, 6)
     disp, rot = [], []
     vsq = usq = np.zeros(at.shape)

@@ -55,9 +55,9 @@ def springs_at(points, stiffness) -> np.ndarray:
 
 def load_at(p, F, M) -> np.ndarray:
     """Generalised force about O of a force F [N] and moment M [N m] at p [m], Eq. (2):
-    (F, M + p × F), shape (..., 6) (complex amplitudes allowed, stacks of F and M broadcast)."""
+    (F, M + p × F), shape (..., 6) (complex amplitudes allowed, stacks of p, F and M broadcast)."""
     F, M = np.asarray(F), np.asarray(M)
-    return np.concatenate([F, M + np.cross(np.asarray(p, dtype=float), F)], axis=-1)
+    return np.concatenate(np.broadcast_arrays(F, M + np.cross(np.asarray(p, dtype=float), F)), axis=-1)
 
 
 def weight_tilt(W, z_G) -> np.ndarray:
