@@ -44,6 +44,14 @@ from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, Ca
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
 
+#: Candidates evaluated together: stacks of this many 6×6 matrices stay in the processor's cache
+#: (10⁵ candidates take about 40 % longer in one piece than in pieces of this size).
+PIECE = 16_384
+
+#: Threads that evaluate the pieces of a batch (numpy's linear algebra and array arithmetic run
+#: outside Python's lock, so two cores share the work).
+WORKERS = 2
+
 #: Decimals [m] to which a candidate's positions are written (:func:`~foundation_calc.checks.design.apply.apply`).
 POSITION_DECIMALS = 6
 
@@ -227,11 +235,29 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     ValueError
         for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
     """
-    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
+    n = len(next(iter(batch.values()))) if batch else 1
+    if n <= PIECE:
         return _evaluate(scene, batch)
+    from concurrent.futures import ThreadPoolExecutor
+
+    pieces = [{key: values[start:start + PIECE] for key, values in batch.items()} for start in range(0, n, PIECE)]
+    with ThreadPoolExecutor(WORKERS) as pool:
+        found = list(pool.map(lambda piece: _evaluate(scene, piece), pieces))
+    return CandidateVerdicts(
+        volume=np.concatenate([v.volume for v in found]), mass=np.concatenate([v.mass for v in found]),
+        outcome={c: np.concatenate([v.outcome[c] for v in found]) for c in found[0].outcome},
+        utilisation={c: np.concatenate([v.utilisation[c] for v in found]) for c in found[0].utilisation},
+        governing={c: np.concatenate([v.governing[c] for v in found]) for c in found[0].governing},
+        reasons=found[0].reasons,  # the texts depend on the scene alone
+    )
 
 
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
+    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
+        return _evaluate_piece(scene, batch)
+
+
+def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.block.response import batch_modes
 
