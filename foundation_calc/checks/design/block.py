@@ -257,26 +257,48 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
         return _evaluate_piece(scene, batch)
 
 
+#: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
+RANGE_REASON = "the soil's modulus range (a stiffness factor within it; fcalc check names which)"
+
+
+def _dynamics(scene, model, excitations, place, checks=("resonance", "amplitudes")):
+    """check -> (outcome, utilisation, governing, reasons) of the resonance and amplitude checks on
+    ``model`` (a block that tips over fails both)."""
+    from foundation_calc.solvers.block.response import batch_modes
+
+    modes = batch_modes(model)
+    unstable = ~modes.stable
+    found = {}
+    for check in checks:
+        o, u, g, r = (_resonance(scene, modes, excitations) if check == "resonance"
+                      else _amplitudes(scene, model, modes, excitations, place))
+        r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
+        found[check] = (np.where(unstable, FAIL, o).astype(np.int8), np.where(unstable, np.inf, u),
+                        np.where(unstable, len(r) - 1, g), r)
+    return found
+
+
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
-    from foundation_calc.solvers.block.response import batch_modes
 
     L, B, H = _candidates(scene, batch)
     m_b, cog_b, J_b = _block_body(L, B, H, scene.block.density)
     place = _placing(scene, L, B, H)
     model = scene.model(base=(L, B), block=(m_b, cog_b, J_b), place=place)
     excitations = scene.excitations(place)
-    modes = batch_modes(model)
-    unstable = ~modes.stable
     found = {"inputs": _inputs(scene, L, B, place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
-    for check, (o, u, g, r) in (("resonance", _resonance(scene, modes, excitations)),
-                                ("amplitudes", _amplitudes(scene, model, modes, excitations, place))):
-        r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
-        outcome[check] = np.where(unstable, FAIL, o).astype(np.int8)
-        utilisation[check] = np.where(unstable, np.inf, u)
-        governing[check] = np.where(unstable, len(r) - 1, g)
-        reasons[check] = r
+    dynamics = _dynamics(scene, model, excitations, place)
+    if getattr(scene.soil, "modulus_range", None) is not None:
+        from foundation_calc.checks.design.block_range import over_range
+
+        ranged = over_range(scene, model, excitations, lambda s: s.model(base=(L, B), block=(m_b, cog_b, J_b), place=place),
+                            lambda on, at, checks: _dynamics(on, at, excitations, place, checks))
+        for check, worse in ranged.items():
+            o, u, g, r = dynamics[check]
+            dynamics[check] = (np.maximum(o, worse), u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
+    for check, (o, u, g, r) in dynamics.items():
+        outcome[check], utilisation[check], governing[check], reasons[check] = o, u, g, r
     o, g, r = found["inputs"]
     outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
     if judged(scene):
