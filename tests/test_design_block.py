@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.checks.block import check_block, condition_label
+
 from foundation_calc.checks.design.apply import apply
 from foundation_calc.checks.design.block import NOT_EVALUATED, VARIABLE_KEYS, evaluate
 from foundation_calc.checks.design.candidates import EVALUATORS
@@ -169,3 +170,32 @@ def test_keys_that_cannot_vary_are_refused():
     assert "block.height" in VARIABLE_KEYS
     with pytest.raises(ValueError, match="soil.c_z cannot vary"):
         evaluate(parse_scene(_document(TWO), "two"), {"soil.c_z": np.array([1.0e8])})
+
+
+def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check():
+    """The range moves critical speeds through the machines' speeds: the scalar path finds the
+    crossings by Brent's method, the batch in closed form; the outcomes must agree, and the
+    utilisations (of the data as given) to 1e-9. Some candidates fail their amplitudes only
+    at a crossing (the steady state peaks there)."""
+    from foundation_calc.errors import SceneError
+
+    document = DOCUMENTS["coefficients"] | {"soil": DOCUMENTS["coefficients"]["soil"] | {"modulus_range": [0.5, 1.5]}}
+    try:
+        scene = parse_scene(document, "range")
+    except SceneError:
+        pytest.skip("this build refuses a block's soil.modulus_range")
+    batch = {key: values[:7] for key, values in _candidates(scene, 20, seed=3).items()}
+    verdicts = evaluate(scene, batch)
+    by_range = []
+    for i in range(7):
+        one = _one(document, batch, i)
+        report = check_block(one)
+        for check in ("resonance", "amplitudes"):
+            finding = CHECKS["block_foundation"][check](one)
+            assert verdicts.outcome[check][i] == CODES[finding.outcome.value], (check, i, finding.reason)
+            np.testing.assert_allclose(verdicts.utilisation[check][i], _scalar_utilisation(check, report), rtol=1e-9)
+        from foundation_calc.checks.block import check_block_as_given
+
+        if check_block_as_given(one).amplitude_outcome.value == "pass" and report.amplitude_outcome.value == "fail":
+            by_range.append(i)
+    assert len(by_range) >= 2  # the range, not the data as given, decides there
