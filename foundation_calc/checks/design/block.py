@@ -278,25 +278,28 @@ def _dynamics(scene, model, excitations, place, checks=("resonance", "amplitudes
     return found
 
 
+def _built(scene, L, B, H):
+    """(model, excitations, place, block mass [kg]) of the candidate blocks L × B × H [m] on ``scene``."""
+    m_b, cog_b, J_b = _block_body(L, B, H, scene.block.density)
+    place = _placing(scene, L, B, H)
+    return scene.model(base=(L, B), block=(m_b, cog_b, J_b), place=place), scene.excitations(place), place, m_b
+
+
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
 
     L, B, H = _candidates(scene, batch)
-    m_b, cog_b, J_b = _block_body(L, B, H, scene.block.density)
-    place = _placing(scene, L, B, H)
-    model = scene.model(base=(L, B), block=(m_b, cog_b, J_b), place=place)
-    excitations = scene.excitations(place)
+    model, excitations, place, m_b = _built(scene, L, B, H)
     found = {"inputs": _inputs(scene, L, B, place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     dynamics = _dynamics(scene, model, excitations, place)
     if getattr(scene.soil, "modulus_range", None) is not None:
         from foundation_calc.checks.design.block_range import over_range
 
-        ranged = over_range(scene, model, excitations, lambda s: s.model(base=(L, B), block=(m_b, cog_b, J_b), place=place),
-                            lambda on, at, checks: _dynamics(on, at, excitations, place, checks))
+        ranged = over_range(scene, (L, B, H), {check: found[0] for check, found in dynamics.items()}, _built, _dynamics)
         for check, worse in ranged.items():
             o, u, g, r = dynamics[check]
-            dynamics[check] = (np.maximum(o, worse), u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
+            dynamics[check] = (worse, u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
     for check, (o, u, g, r) in dynamics.items():
         outcome[check], utilisation[check], governing[check], reasons[check] = o, u, g, r
     o, g, r = found["inputs"]

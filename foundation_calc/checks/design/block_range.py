@@ -63,26 +63,44 @@ def crossings(scene, model, excitations, low, high):
                 yield f, inside & modes.stable & verdict.judged[:, 0], at
 
 
-def over_range(scene, model, excitations, model_of, dynamics) -> dict[str, np.ndarray]:
-    """check -> (N,) the worst outcome of the resonance and amplitude checks over the scene's
-    ``soil.modulus_range`` (module docstring). ``model_of(scene)``: the candidates' model on a
-    scene's soil; ``dynamics(scene, model, checks)``: those checks on a model
-    (:func:`~foundation_calc.checks.design.block._dynamics`)."""
+def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarray]:
+    """check -> (N,) the worst outcome of the resonance and amplitude checks over the soil as
+    ``given`` (check -> (N,) outcomes) and over the scene's ``soil.modulus_range`` (module
+    docstring), for candidates ``dimensions`` (L, B, H (N,) each [m]). A candidate that already
+    fails a check is not evaluated again for it. ``built(scene, L, B, H)`` -> (model, excitations,
+    place, _) and ``dynamics(scene, model, excitations, place, checks)`` are the evaluator's
+    (:mod:`~foundation_calc.checks.design.block`)."""
     from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
 
+    from foundation_calc.checks.design.candidates import FAIL
+
     low, high = scene.soil.modulus_range
-    worst = {check: np.zeros(len(model.M), dtype=np.int8) for check in ("resonance", "amplitudes")}
+    worst = {check: np.array(outcome, dtype=np.int8) for check, outcome in given.items()}
+
+    def judge_at(on, checks, evaluate):
+        active = np.flatnonzero(np.any([worst[check] < FAIL for check in checks], axis=0))
+        if len(active):
+            for check, outcome in evaluate(on, active).items():
+                worst[check][active] = np.maximum(worst[check][active], outcome)
+
+    def crossed(on, active):
+        model, excitations, place, _ = built(on, *(d[active] for d in dimensions))
+        found = {check: np.zeros(len(active), dtype=np.int8) for check in worst}
+        for _, valid, at in crossings(on, model, excitations, low, high):
+            for check, (outcome, *_) in dynamics(on, at, excitations, place, tuple(worst)).items():
+                found[check] = np.where(valid, np.maximum(found[check], outcome), found[check])
+        return found
+
+    judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
     grids = {"resonance": set(modulus_factors(low, high)), "amplitudes": set(modulus_factors(low, high, AMPLITUDE_GRID_POINTS))}
     for factor in sorted(grids["resonance"] | grids["amplitudes"]):
         checks = tuple(check for check in worst if factor in grids[check])
-        on = scene.with_modulus_factor(factor)
-        found = dynamics(on, model_of(on), checks)
-        for check in checks:
-            worst[check] = np.maximum(worst[check], found[check][0])
-    for _, valid, at in crossings(scene, model, excitations, low, high):
-        found = dynamics(scene, at, tuple(worst))
-        for check in worst:
-            worst[check] = np.where(valid, np.maximum(worst[check], found[check][0]), worst[check])
+
+        def at_factor(on, active, checks=checks):
+            model, excitations, place, _ = built(on, *(d[active] for d in dimensions))
+            return {check: found[0] for check, found in dynamics(on, model, excitations, place, checks).items()}
+
+        judge_at(scene.with_modulus_factor(factor), checks, at_factor)
     return worst
 
 
