@@ -169,10 +169,102 @@ def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
         assert float(peaks[i]) * (1 - 0.0049) <= drawn.percentiles[key][1] <= float(peaks[i]) * (1 + 1e-12)
 
 
-def test_a_block_foundation_refuses_a_range_it_would_not_judge(runner, tmp_path):
-    """The block's checks take the soil as given: its [soil] refuses modulus_range (exit 3) rather
-    than ignore it."""
+def _block_on_springs(modulus_range, crossing_factor=None):
+    """One motor (G 6.3 unbalance) on the block of ``block_two_machines.toml``, its springs spread so
+    that one mode at a time meets the speed, dashpots a tenth of the file's (ζ of mode 5: 0.017), a
+    5 % detuning band and an RMS velocity limit of 1.4 mm/s. With ``crossing_factor`` the motor
+    runs at p5 (rocking about y) of the soil factored by it."""
     document = read_toml(CONFIGS / "block_two_machines.toml")
-    document["soil"]["modulus_range"] = [0.5, 1.5]
-    result = runner.invoke(app, ["check", str(_write(tmp_path, document))])
-    assert result.exit_code == 3 and "modulus_range is not a key" in result.stdout + result.stderr
+    document["machines"] = [document["machines"][1]]
+    document["soil"]["stiffness"] = [8.4e9, 3.0e10, 1.05e10, 6.6e10, 1.6e11, 9.1e10]
+    document["soil"]["dashpot"] = [0.1 * c for c in document["soil"]["dashpot"]]
+    document["soil"]["modulus_range"] = modulus_range
+    document["limits"] |= {"detuning": 0.05, "velocity_rms": 1.4e-3}
+    if crossing_factor is not None:
+        document["machines"][0]["speed_rpm"] = _block_frequencies(parse_scene(document), crossing_factor)[4] * 30.0 / math.pi
+    return document
+
+
+def _block_frequencies(scene, factor):
+    """The six natural frequencies [rad/s] of the block on its springs times ``factor``, by
+    scipy.linalg.eigh on the assembled K(f) = f diag(springs) + weight tilt and M."""
+    model = scene.model()
+    tilt = model.K - np.diag(model.springs)
+    return np.sqrt(eigh(factor * np.diag(model.springs) + tilt, model.M, eigvals_only=True))
+
+
+def test_a_block_that_passes_as_given_fails_where_a_mode_crosses_the_speed_inside_the_range():
+    """The motor runs at p5 of the soil factored by 0.8, which is no grid point of [0.7, 1.4]: as
+    given (p5 10.6 % away) and at both ends the block passes, inside it fails. The crossing against
+    a bisection of the eigen-solved p5 (rel 1e-7: Brent's tolerance against bisection's); the
+    verdict against a brute-force scan of 2001 factors (every mode's margin by eigh, fail inside
+    5 %); the amplitude range's worst ratio against the largest of a scan of 150 factors, which it
+    must not under-state by more than 1e-3 (the damped peak lies off the undamped crossing by about
+    ζ5² = 3e-4)."""
+    from foundation_calc.checks.block import check_block, check_block_as_given
+
+    scene = parse_scene(_block_on_springs([0.7, 1.4], crossing_factor=0.8))
+    omega = scene.machines[0].omega_rad_s
+    report = check_block(scene)
+    assert check_block_as_given(scene).resonance_outcome.value == "pass"
+    ranged = report.resonance_range
+    crossings = {label: f for f, label in ranged.crossings}
+    expected = bisect(lambda f: _block_frequencies(scene, f)[4] - omega, 0.7, 1.4, xtol=1e-13)
+    assert crossings["motor: ω = mode 5 (ry)"] == pytest.approx(expected, rel=1e-7)
+    assert [p.outcome.value for p in ranged.points if p.factor in (0.7, 1.4)] == ["pass", "pass"]
+    assert ranged.governing.factor == crossings["motor: ω = mode 5 (ry)"]
+    scan = np.geomspace(0.7, 1.4, 2001)
+    margins = np.array([np.abs(omega - p) / p for p in (_block_frequencies(scene, f) for f in scan)])
+    assert (ranged.outcome.value == "fail") == bool(margins.min() < 0.05)
+    assert report.resonance_outcome.value == "fail" and "governing factor 0.8" in report.resonance_range.text
+
+    amplitude = report.amplitude_range
+    assert crossings["motor: ω = mode 5 (ry)"] in [p.factor for p in amplitude.points]
+    worst_ratio = max(
+        max(row.ratio for row in check_block_as_given(scene.with_modulus_factor(f)).limit_rows)
+        for f in np.geomspace(0.7, 1.4, 150)
+    )
+    assert amplitude.governing.severity >= worst_ratio * (1.0 - 1e-3)
+    assert amplitude.outcome.value == "fail" and check_block_as_given(scene).amplitude_outcome.value == "pass"
+
+
+@pytest.mark.parametrize(
+    "soil",
+    [
+        {"method": "springs", "stiffness": [8.4e9, 8.0e9, 1.05e10, 6.6e10, 1.6e11, 9.1e10], "dashpot": [1.9e7] * 6},
+        {"c_z": 7.0e7, "c_x": 4.9e7, "c_psi": 6.0e7, "damping": [0.1, 0.1, 0.05]},
+        {"c_z": 7.0e7, "c_x": 4.9e7},
+        {"method": "lysmer", "shear_wave_velocity": 200.0, "density": 1800.0, "poisson": 0.3, "material_damping": 0.03},
+        {"method": "gazetas", "shear_modulus": 7.2e7, "density": 1800.0, "poisson": 0.33},
+        {"method": "sp26", "deformation_modulus": 3.0e7, "soil_class": "sand"},
+    ],
+    ids=["springs", "coefficients", "coefficients-default-c_psi", "lysmer", "gazetas", "sp26"],
+)
+def test_the_factor_scales_every_spring_and_dashpot_of_the_block(soil):
+    """Every method of the block's soil: the six springs go as f and the six dashpots as sqrt(f)
+    (the half-spaces' radiation dashpots as ρ V_s, the damping ratios' 2 ξ sqrt(K m) as sqrt K)."""
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    document["soil"] = soil
+    scene = parse_scene(document)
+    base, scaled = scene.model(), scene.with_modulus_factor(0.4).model()
+    np.testing.assert_allclose(scaled.springs, 0.4 * base.springs, rtol=1e-12)
+    np.testing.assert_allclose(np.diag(scaled.C), 0.4**0.5 * np.diag(base.C), rtol=1e-12)
+
+
+def test_a_block_range_in_check_resonance_amplitudes_and_the_sheet(runner, tmp_path):
+    """The range's verdict and governing factor reach every command and the calc sheet."""
+    path = _write(tmp_path, _block_on_springs([0.7, 1.4], crossing_factor=0.8))
+    check = runner.invoke(app, ["check", str(path), "--json"])
+    assert check.exit_code == 1, check.stdout
+    rows = {c["check"]: c for c in json.loads(check.stdout)["scenes"][0]["checks"]}
+    assert "governing factor 0.8" in rows["resonance"]["reason"] and rows["resonance"]["verdict"] == "fail"
+    assert "modulus range [0.7, 1.4]" in rows["amplitudes"]["reason"]
+    resonance = json.loads(runner.invoke(app, ["resonance", str(path), "--json"]).stdout)
+    assert resonance["modulus_range"]["verdict"] == "fail" and resonance["modulus_range"]["crossings"]
+    amplitudes = runner.invoke(app, ["amplitudes", str(path), "--json"])
+    assert amplitudes.exit_code == 1 and json.loads(amplitudes.stdout)["modulus_range"]["verdict"] == "fail"
+    sheet = tmp_path / "sheet.md"
+    assert runner.invoke(app, ["report", str(path), "-o", str(sheet)]).exit_code == 1
+    text = sheet.read_text(encoding="utf-8").replace("\\[", "[").replace("\\]", "]")
+    assert "| resonance | over the soil's modulus range [0.7, 1.4], governing factor 0.8" in text
+    assert "| amplitudes | over the soil's modulus range [0.7, 1.4], governing factor 0.8" in text

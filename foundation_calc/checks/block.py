@@ -6,6 +6,12 @@ Resonances: each order n of each machine against each of the six modes, margin
 (:func:`~foundation_calc.checks.resonance_rule.judge`) with the forcing share of the order on the
 mode (|φ_jᵀ Q_n| / p_j over its largest value for the machine); no condition is the source's own.
 
+Soil's modulus range (``[soil] modulus_range``): both checks also over the range, by the machinery
+of the crank foundation's (:mod:`~foundation_calc.checks.soil_range`): the resonances at every
+factor of its grid and where a critical speed p_j / n crosses a machine's speed, the amplitudes on
+its coarser grid and at those crossings; each verdict is the worse of the soil as given and the
+range, and the range names its governing factor.
+
 Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
 displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
 several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
@@ -97,16 +103,22 @@ class BlockReport:
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
+    #: the resonance and amplitude checks over the soil's ``modulus_range``
+    #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
+    resonance_range: object = None
+    amplitude_range: object = None
 
     @property
     def resonance_outcome(self) -> Outcome:
-        return worst(r.outcome for r in self.resonance_rows)
+        ranged = () if self.resonance_range is None else (self.resonance_range.outcome,)
+        return worst([*(r.outcome for r in self.resonance_rows), *ranged])
 
     @property
     def amplitude_outcome(self) -> Outcome:
+        ranged = [] if self.amplitude_range is None else [self.amplitude_range.outcome]
         if self.resonant:
             return Outcome.FAIL
-        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows])
+        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows] + ranged)
 
     @property
     def office_outcome(self) -> Outcome:
@@ -136,10 +148,39 @@ def resonance_text(report: BlockReport) -> str:
         return condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN))
 
     governing = phrase(report.nearest)
-    outcome = report.resonance_outcome
+    outcome = worst(r.outcome for r in report.resonance_rows)
+    ranged = "" if report.resonance_range is None else f" with the soil data as given; {report.resonance_range.text}"
     if outcome is Outcome.PASS:
-        return f"no machine's order is inside a resonance band (governing: {governing})"
-    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})"
+        return f"no machine's order is inside a resonance band (governing: {governing})" + ranged
+    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})" + ranged
+
+
+def resonance_point(factor: float, report: BlockReport):
+    """The resonance check of ``report`` (the soil as given at ``factor``) as a
+    :class:`~foundation_calc.checks.soil_range.RangePoint`: its governing condition, severity
+    required/margin."""
+    from foundation_calc.checks.resonance_rule import condition_phrase
+    from foundation_calc.checks.soil_range import RangePoint
+
+    r = report.nearest
+    needed = max(r.required, RESONANCE_FAIL_MARGIN)
+    severity = float("inf") if r.margin <= 0.0 else needed / r.margin
+    return RangePoint(factor, report.resonance_outcome, condition_phrase(condition_label(r), r.margin, needed), severity)
+
+
+def resonance_offsets(report: BlockReport) -> dict[str, tuple[float, bool]]:
+    """Condition -> (critical speed p_j / n less its machine's speed [rad/s], judged by the rule)."""
+    return {condition_label(r): (r.critical - report.speeds[r.machine], r.judged) for r in report.resonance_rows}
+
+
+def amplitude_point(factor: float, report: BlockReport):
+    """The amplitude check of ``report`` (the soil as given at ``factor``) as a
+    :class:`~foundation_calc.checks.soil_range.RangePoint`."""
+    from foundation_calc.checks.soil_range import RangePoint, worst_row_point
+
+    if report.resonant:
+        return RangePoint(factor, Outcome.FAIL, "an order is resonant with an undamped mode: no steady state", float("inf"))
+    return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 
 def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceRow, ...]:
@@ -203,7 +244,22 @@ def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
 
 def check_block(scene) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
-    ``block_foundation`` scene."""
+    ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
+    that range (module docstring)."""
+    report = check_block_as_given(scene)
+    if scene.soil.modulus_range is None:
+        return report
+    from dataclasses import replace
+
+    from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
+
+    resonance = resonances_over_range(scene, check_block_as_given, resonance_point, resonance_offsets)
+    amplitude = amplitudes_over_range(scene, check_block_as_given, resonance.crossings, amplitude_point)
+    return replace(report, resonance_range=resonance, amplitude_range=amplitude)
+
+
+def check_block_as_given(scene) -> BlockReport:
+    """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
     model = scene.model()
     excitations = scene.excitations()
     modes = block_modes(model)
@@ -235,4 +291,6 @@ def check_block(scene) -> BlockReport:
     )
 
 
-__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block", "condition_label", "resonance_text", "limit_rows", "resonance_rows", "zone_rows"]
+__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
+           "check_block_as_given", "condition_label", "limit_rows", "resonance_offsets", "resonance_point", "resonance_rows",
+           "resonance_text", "zone_rows"]

@@ -75,9 +75,7 @@ def crank_resonance(scene) -> Finding:
     details = ()
     if report.modulus_range is not None:
         reason += (f" with the soil data as given; {report.modulus_range.text}",)
-        details = tuple(
-            f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}" for p in report.modulus_range.points
-        )
+        details = report.modulus_range.details()
     return Finding("resonance", report.outcome, reason, values, report, details)
 
 
@@ -126,8 +124,7 @@ def crank_amplitudes(scene) -> Finding:
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
     if report.modulus_range is not None:
-        details += tuple(f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}"
-                         for p in report.modulus_range.points)
+        details += report.modulus_range.details()
     return Finding("amplitudes", report.outcome, reason, values, report, details)
 
 
@@ -187,7 +184,8 @@ def block_resonance(scene) -> Finding:
 
     report = check_block(scene)
     values = {"critical": ("speed", report.nearest.critical)}
-    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report)
+    details = () if report.resonance_range is None else report.resonance_range.details()
+    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report, details)
 
 
 def block_amplitudes(scene) -> Finding:
@@ -212,11 +210,15 @@ def block_amplitudes(scene) -> Finding:
         if report.zone_rows:
             worst_zone = max(report.zone_rows, key=lambda row: row.ratio)
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
+    if report.amplitude_range is not None:
+        reason += (f"; {report.amplitude_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.limit_rows
     ) + tuple(f"WARN {warning}" for warning in report.code_warnings)
+    if report.amplitude_range is not None:
+        details += report.amplitude_range.details()
     return Finding("amplitudes", report.amplitude_outcome, reason, values, report, details)
 
 

@@ -75,6 +75,10 @@ class ModulusRangeResult:
             f"{self.outcome.value.upper()}, governing factor {g.factor:.4g} ({g.text})" + (f"; {crossed}" if crossed else "")
         )
 
+    def details(self) -> tuple[str, ...]:
+        """One line per factor evaluated: ``"FAIL modulus factor 0.5: ..."``."""
+        return tuple(f"{p.outcome.value.upper()} modulus factor {p.factor:.4g}: {p.text}" for p in self.points)
+
     def document(self) -> dict:
         """The JSON form (SI): every factor, the crossings and the governing factor."""
         g = self.governing
@@ -101,42 +105,58 @@ def modulus_factors(low: float, high: float, n: int = GRID_POINTS) -> list[float
     return sorted(grid)
 
 
-def _resonance_point(factor: float, report) -> RangePoint:
+def resonance_point(factor: float, report) -> RangePoint:
+    """A crank :class:`~foundation_calc.checks.crank_resonance.ResonanceReport` at one factor."""
     g = report.governing
     if g is None:
         return RangePoint(factor, report.outcome, "no resonance condition to judge", 0.0)
     return RangePoint(factor, report.outcome, g.phrase, math.inf if g.margin <= 0.0 else g.needed / g.margin)
 
 
-def _amplitude_point(factor: float, report) -> RangePoint:
+def resonance_offsets(report) -> dict[str, tuple[float, bool]]:
+    """Condition -> (its critical speed less the operating speed [rad/s], judged by the rule) of a
+    crank :class:`~foundation_calc.checks.crank_resonance.ResonanceReport`."""
+    return {row.condition.label: (row.critical_zero_order - report.omega, row.judged) for row in report.rows}
+
+
+def worst_row_point(factor: float, outcome: Outcome, rows) -> RangePoint:
+    """The amplitude check at one factor from its rows (limit rows, code-zone rows): the worst
+    outcome and, among those, the highest ratio to its limit names it."""
+    if not rows:
+        return RangePoint(factor, outcome, "nothing judged", 0.0)
+    row = max(rows, key=lambda r: (_RANK[r.outcome], r.ratio))
+    name = getattr(row, "quantity", "r.m.s. velocity")
+    return RangePoint(factor, outcome, f"{name} at {row.point} is {row.ratio:.0%} of its limit", float(row.ratio))
+
+
+def amplitude_point(factor: float, report) -> RangePoint:
+    """A crank :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport` at one factor."""
     if report.resonant:
         approx = report.approximations[report.checked]
         return RangePoint(factor, report.outcome, f"resonant ({approx.nearest}): no steady state", math.inf)
-    rows = [*report.rows, *report.code_rows]
-    if not rows:
-        return RangePoint(factor, report.outcome, "nothing judged", 0.0)
-    row = max(rows, key=lambda r: (_RANK[r.outcome], r.ratio))
-    name = getattr(row, "quantity", "r.m.s. velocity")
-    return RangePoint(factor, report.outcome, f"{name} at {row.point} is {row.ratio:.0%} of its limit", float(row.ratio))
+    return worst_row_point(factor, report.outcome, [*report.rows, *report.code_rows])
 
 
-def amplitudes_over_range(scene, check, crossings=()) -> ModulusRangeResult:
-    """``check(scene)`` (an :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport`) at
-    :data:`AMPLITUDE_GRID_POINTS` factors of the scene's ``soil.modulus_range`` and at the
-    resonance ``crossings`` [(factor, condition)], where the steady state peaks."""
+def amplitudes_over_range(scene, check, crossings=(), point=amplitude_point) -> ModulusRangeResult:
+    """``check(scene)`` at :data:`AMPLITUDE_GRID_POINTS` factors of the scene's
+    ``soil.modulus_range`` and at the resonance ``crossings`` [(factor, condition)], where the
+    steady state peaks; ``point(factor, report)`` reads each report (default: a crank
+    :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport`)."""
     low, high = scene.soil.modulus_range
     factors = sorted({*modulus_factors(low, high, AMPLITUDE_GRID_POINTS), *(f for f, _ in crossings)})
     return ModulusRangeResult(
         low=low, high=high,
-        points=tuple(_amplitude_point(f, check(scene.with_modulus_factor(f))) for f in factors),
+        points=tuple(point(f, check(scene.with_modulus_factor(f))) for f in factors),
         crossings=tuple(crossings),
     )
 
 
-def resonances_over_range(scene, check) -> ModulusRangeResult:
-    """``check(scene)`` (a :class:`~foundation_calc.checks.crank_resonance.ResonanceReport`) at every
-    factor of the scene's ``soil.modulus_range`` and at the factors where a critical speed crosses
-    the operating speed (module docstring)."""
+def resonances_over_range(scene, check, point=resonance_point, offsets=resonance_offsets) -> ModulusRangeResult:
+    """``check(scene)`` at every factor of the scene's ``soil.modulus_range`` and at the factors
+    where a critical speed crosses the operating speed (module docstring). ``point(factor,
+    report)`` reads a report's verdict, ``offsets(report)`` its conditions (condition ->
+    (critical speed less operating speed [rad/s], judged)); the defaults read a crank
+    :class:`~foundation_calc.checks.crank_resonance.ResonanceReport`."""
     from scipy.optimize import brentq
 
     low, high = scene.soil.modulus_range
@@ -146,10 +166,10 @@ def resonances_over_range(scene, check) -> ModulusRangeResult:
     def offset(f, label):
         """Critical speed of ``label`` less the speed at factor ``f``; None where it is not listed."""
         report = reports[f] if f in reports else check(scene.with_modulus_factor(f))
-        row = next((r for r in report.rows if r.condition.label == label), None)
-        return None if row is None else row.critical_zero_order - report.omega
+        found = offsets(report).get(label)
+        return None if found is None else found[0]
 
-    labels = dict.fromkeys(row.condition.label for f in factors for row in reports[f].rows)
+    labels = dict.fromkeys(label for f in factors for label in offsets(reports[f]))
     crossings = []
     for label in labels:
         for a, b in zip(factors, factors[1:]):
@@ -157,15 +177,16 @@ def resonances_over_range(scene, check) -> ModulusRangeResult:
             if at_a is not None and at_b is not None and at_a * at_b < 0.0:
                 f = brentq(lambda x, label=label: offset(x, label) or 0.0, a, b, xtol=1e-12, rtol=1e-10)
                 report = check(scene.with_modulus_factor(f))
-                if any(r.condition.label == label and r.judged for r in report.rows):  # the rule judges it
+                if offsets(report).get(label, (0.0, False))[1]:  # the rule judges it there
                     reports[f] = report
                     crossings.append((f, label))
     return ModulusRangeResult(
         low=low, high=high,
-        points=tuple(_resonance_point(f, reports[f]) for f in sorted(reports)),
+        points=tuple(point(f, reports[f]) for f in sorted(reports)),
         crossings=tuple(crossings),
     )
 
 
-__all__ = ["AMPLITUDE_GRID_POINTS", "GRID_POINTS", "ModulusRangeResult", "RangePoint", "amplitudes_over_range",
-           "modulus_factors", "resonances_over_range"]
+__all__ = ["AMPLITUDE_GRID_POINTS", "GRID_POINTS", "ModulusRangeResult", "RangePoint", "amplitude_point",
+           "amplitudes_over_range", "modulus_factors", "resonance_offsets", "resonance_point", "resonances_over_range",
+           "worst_row_point"]

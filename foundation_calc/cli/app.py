@@ -15,7 +15,7 @@ import typer
 #: The commands in the order of ``fcalc --help``: name -> module defining a function of that name.
 COMMANDS = {
     name: f"foundation_calc.cli.{name}"
-    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup", "validate")
+    for name in ("resonance", "amplitudes", "soil", "check", "init", "schema", "platform", "bench", "sweep", "report", "runup", "validate", "design")
 }
 
 EXIT_CODES_HELP = (

@@ -22,6 +22,7 @@ class Section(str, Enum):
     batch = "batch"
     block = "block"
     soil_sample = "soil_sample"
+    design = "design"
 
 
 ScenesArg = Annotated[
@@ -78,6 +79,17 @@ def _chosen(methods, keys):
     return tuple(m for m in methods if m.key in keys)
 
 
+def _sized_scenes(loaded) -> list:
+    """The first block scene and the first crank scene with [foundation.block]: what fcalc design sizes."""
+    first = {}
+    for path, scene in loaded:
+        block = scene.kind == "block_foundation" and scene.block.height is not None
+        crank = scene.kind == "crank_foundation" and scene.foundation.block is not None
+        if (block or crank) and scene.kind not in first:
+            first[scene.kind] = (path, scene)
+    return list(first.values())
+
+
 @reports_errors
 def bench(
     scenes: ScenesArg = None,
@@ -107,6 +119,9 @@ def bench(
     of a scene and the scaling with --jobs) and on a large batch of copies of all scenes (peak memory).
     Block scenes: one scene's whole check and a sweep of 10 000 speeds of its first machine.
     Soil sample: seconds of fcalc soil --sample with 10⁵ designs of the first crank scene.
+    Design: fcalc design's search over about 10⁵ candidates with the vectorised evaluator against
+    a loop over fcalc check's path (200 candidates timed, scaled), on the first block scene and the
+    first crank scene with [foundation.block].
     """
     from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
@@ -133,6 +148,9 @@ def bench(
         skipped |= {Section.throughput, Section.startup, Section.points, Section.soil_sample}
     if not platforms:  # the batch's marginal cost is that of a platform scene
         skipped.add(Section.batch)
+    sized = _sized_scenes(loaded)
+    if not sized:
+        skipped.add(Section.design)
 
     from foundation_calc.benchmarks.accuracy import METHODS, benchmark_scene
     from foundation_calc.output import bench_report as report
@@ -148,8 +166,9 @@ def bench(
     large = BATCH_LARGE[quick] if batch_scenes is None else batch_scenes
     steps += (1 + (large > 0)) * (Section.batch not in skipped)
     steps += len(blocks) * (Section.block not in skipped)
+    steps += len(sized) * (Section.design not in skipped)
     results, platform_results, throughput, startup, truncation, batch, points = [], [], None, None, None, None, None
-    runups, block_timings, sampled = None, None, None
+    runups, block_timings, sampled, sizing = None, None, None, None
     with report.progress_bar(steps) as step:
         if Section.accuracy not in skipped:
             for path, scene in cranks:
@@ -218,6 +237,14 @@ def bench(
             for path, scene in blocks:
                 step(f"{path.name}: block check and speed sweep")
                 block_timings.append(benchmark_block(str(path), scene, MIN_TIME[quick]))
+        if Section.design not in skipped:
+            from foundation_calc.benchmarks.design import CANDIDATES, benchmark_design
+            from foundation_calc.scenes.loading import read_scene
+
+            sizing = []
+            for path, scene in sized:
+                step(f"{path.name}: fcalc design, {CANDIDATES:.0e} candidates against a loop over fcalc check")
+                sizing.append(benchmark_design(str(path), scene, read_scene(path), MIN_TIME[quick]))
     if plot is not None:
         report.plot_bench(results, plot)
     if json:
@@ -233,6 +260,10 @@ def bench(
             from foundation_calc.output.bench_block import block_document
 
             document["block"] = block_document(block_timings)
+        if sizing is not None:
+            from foundation_calc.output.bench_design import design_bench_document
+
+            document["design"] = design_bench_document(sizing)
         if sampled is not None:
             document["soil_sample"] = {"samples": sampled.samples, "seconds": sampled.seconds,
                                        "peak_bytes": sampled.peak_bytes}
@@ -248,6 +279,10 @@ def bench(
             from foundation_calc.output.bench_block import print_block
 
             print_block(block_timings)
+        if sizing is not None:
+            from foundation_calc.output.bench_design import print_design_bench
+
+            print_design_bench(sizing)
         if sampled is not None:
             from foundation_calc.output.console import stdout
 

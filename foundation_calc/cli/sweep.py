@@ -114,19 +114,9 @@ def sweep(
     import numpy as np
 
     from foundation_calc.cli.units import display_units
-    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
 
     if plot is not None:
-        from foundation_calc.output.plots import FORMATS
-
-        if plot.suffix.lower() not in FORMATS:
-            raise typer.BadParameter(
-                f"{str(plot)!r}: unsupported plot format {plot.suffix or '(none)'!r}; use one of {', '.join(FORMATS)}",
-                param_hint="'--plot'",
-            )
-        writable_path(plot, "--plot")
-        if not plotting_available():
-            raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+        plot_path(plot)
     if csv is not None:
         writable_path(csv, "--csv")
     if speed is not None:
@@ -180,6 +170,21 @@ def sweep(
         print_json(report_out.sweep_document(report, str(scene), loaded.name, loaded.plausibility_warnings()))
     else:
         report_out.print_sweep(report, str(scene), loaded.name, shown)
+
+
+def plot_path(plot: Path) -> None:
+    """A usage error (exit 2) unless ``plot`` is a writable file of a format ``--plot`` writes and
+    matplotlib is installed: checked before any work."""
+    from foundation_calc.output.plots import FORMATS, INSTALL_HINT, plotting_available
+
+    if plot.suffix.lower() not in FORMATS:
+        raise typer.BadParameter(
+            f"{str(plot)!r}: unsupported plot format {plot.suffix or '(none)'!r}; use one of {', '.join(FORMATS)}",
+            param_hint="'--plot'",
+        )
+    writable_path(plot, "--plot")
+    if not plotting_available():
+        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
 
 
 def writable_path(path: Path, option: str) -> None:

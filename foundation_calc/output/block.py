@@ -55,6 +55,7 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
              "judged": r.judged, "required": r.required, "status": r.status, "verdict": r.outcome.value}
             for r in report.resonance_rows
         ],
+        "modulus_range": None if report.resonance_range is None else report.resonance_range.document(),
         "verdict": report.resonance_outcome.value,
     }
 
@@ -119,6 +120,7 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
         "warnings": list(report.code_warnings),
     }
     doc["office"] = _office(report)
+    doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
     doc["verdict"] = worst([report.amplitude_outcome, report.office_outcome]).value
     return doc
 
@@ -219,6 +221,8 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
         out.print(z)
     for w in report.code_warnings:
         out.print(f"note: {escape(w)}", soft_wrap=True)
+    if report.amplitude_range is not None:
+        out.print(f"Amplitudes {escape(report.amplitude_range.text)}", soft_wrap=True)
     print_office(report, strict)
     out.print(f"{verdict_text(worst([report.amplitude_outcome, report.office_outcome]).value, strict)}: amplitudes and office checks")
 

@@ -16,16 +16,18 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.soil import OnSoil
 
 #: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
 BLOCK_OMEGA_PLAUSIBLE = 1000.0
 
 
-def too_far(reach, size):
-    """Whether a position whose largest coordinate is ``reach`` [m] from O lies more than
-    :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal ``size`` [m]
-    away (floats or arrays over candidate blocks): probably mm typed as m."""
-    return reach > LENGTH_SCALE_FACTOR * size
+def too_far(position, size):
+    """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
+    × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
+    import numpy as np
+
+    return np.max(np.abs(np.asarray(position, dtype=float)), axis=-1) > LENGTH_SCALE_FACTOR * size
 
 
 class BlockLimits(Limits):
@@ -50,7 +52,7 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(SceneModel):
+class BlockScene(OnSoil, SceneModel):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
@@ -106,7 +108,7 @@ class BlockScene(SceneModel):
             f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
             " was it typed in mm?"
             for key, value in self.plausible_lengths().items()
-            if too_far(max(abs(v) for v in value), size)
+            if too_far(value, size)
         ]
         return found + self.speed_warnings()
 

@@ -40,8 +40,6 @@ class BlockSoil(Soil):
     """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
-    #: The block's checks judge the soil as given: ``modulus_range`` is refused, not ignored.
-    range_keys: ClassVar[tuple[str, ...]] = ()
     no_method_text: ClassVar[str] = (
         'give soil.method = "springs" with stiffness [N/m, N m/rad] (and dashpot), "lysmer" with its keys, or'
         " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
@@ -71,6 +69,29 @@ class BlockSoil(Soil):
         " and torsional modes (ξ_psi default ξ_phi); default: undamped", None, min_length=3, max_length=4,
         examples=[[0.1, 0.1, 0.05]],
     )
+
+    modulus_range: list[float] | None = quantity(
+        "-", "-", "factors [low, high] on the soil's stiffness data (G or V_s², E, c_z, c_x, c_phi, c_psi, or the"
+        " given stiffness, whose dashpots go with its square root); every spring and dashpot is recomputed from"
+        " the factored data and a check passes only if it passes over the whole range (ACI 351.3R brackets the"
+        " modulus, e.g. [0.5, 1.5]); default: the data as given",
+        None, min_length=2, max_length=2, examples=[[0.5, 1.5]],
+    )
+
+    def factored(self, factor: float) -> BlockSoil:
+        """This soil with its stiffness data multiplied by ``factor`` [-] (and no range): as
+        :meth:`Soil.factored`, and c_ψ with the coefficients; given springs by ``factor`` and their
+        dashpots by sqrt(factor) (a half-space's radiation dashpot ρ V_s A and a fixed damping ratio's
+        2 ξ sqrt(K m) both go as the square root of the stiffness)."""
+        if self.method_used != "springs":
+            soil = super().factored(factor)
+            return soil if self.c_psi is None else soil.model_copy(update={"c_psi": self.c_psi * factor})
+        root = factor**0.5
+        return self.model_copy(update={
+            "stiffness": [k * factor for k in self.stiffness],
+            "dashpot": None if self.dashpot is None else [c * root for c in self.dashpot],
+            "modulus_range": None,
+        })
 
     @model_validator(mode="after")
     def _method_has_its_data(self):

@@ -24,7 +24,7 @@ from foundation_calc.scenes.common import (
 )
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Remark, judge
-from foundation_calc.scenes.soil import Soil
+from foundation_calc.scenes.soil import OnSoil, Soil
 from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
@@ -240,7 +240,7 @@ class Point(SceneModel):
     height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
 
 
-class CrankScene(SceneModel):
+class CrankScene(OnSoil, SceneModel):
     """A scene of kind ``crank_foundation``."""
 
     kind: Literal["crank_foundation"] = quantity("-", "-", 'scene kind, always "crank_foundation"')
@@ -374,11 +374,6 @@ class CrankScene(SceneModel):
         by its loads)."""
         mech = self.mechanism
         return self.foundation.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
-
-    def with_modulus_factor(self, factor: float):
-        """This scene on the soil whose stiffness data are multiplied by ``factor`` [-]
-        (:meth:`Soil.factored`; the copy has no ``modulus_range``)."""
-        return self.model_copy(update={"soil": self.soil.factored(factor)})
 
     def soil_springs(self, method: str | None = None, omega: float = 0.0) -> SoilSprings:
         """K_z, K_x, K_φ and damping ratios of the soil by ``method`` (default: the scene's own).

@@ -234,3 +234,12 @@ class Soil(SceneModel):
         if self.method_used in ("lysmer", "gazetas"):
             return ("lysmer", "gazetas")
         return (self.method_used,)
+
+
+class OnSoil:
+    """A scene standing on a ``soil`` (a :class:`Soil`) whose stiffness a modulus factor scales."""
+
+    def with_modulus_factor(self, factor: float):
+        """This scene on the soil whose stiffness data are multiplied by ``factor`` [-]
+        (:meth:`Soil.factored`; the copy has no ``modulus_range``)."""
+        return self.model_copy(update={"soil": self.soil.factored(factor)})

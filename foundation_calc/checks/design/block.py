@@ -4,9 +4,9 @@ on stacks of matrices instead of one.
 
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
 height and density); the machines, their loads and the points move with the block's top and end
-faces as :func:`~foundation_calc.checks.design.apply.moved` says, to the micrometre as the
-candidate's scene file writes them (:func:`~foundation_calc.checks.design.apply.apply`). For each
-candidate:
+faces as :func:`~foundation_calc.checks.design.apply.moved` says (those on the top rise with it,
+those on an end face follow the face), as ``fcalc check`` sees the scene of
+:func:`~foundation_calc.checks.design.apply.apply`. For each candidate:
 
 - the mass matrix of the block and the machines, the soil's six springs and damping of the base
   L × B (every soil method of :class:`~foundation_calc.scenes.block_soil.BlockSoil`, on arrays)
@@ -52,9 +52,6 @@ PIECE = 16_384
 #: outside Python's lock, so two cores share the work).
 WORKERS = 2
 
-#: Decimals [m] to which a candidate's positions are written (:func:`~foundation_calc.checks.design.apply.apply`).
-POSITION_DECIMALS = 6
-
 #: Checks the batch does not evaluate, with why: outcome PASS and utilisation NaN for every
 #: candidate, so the search must re-check its front-runners by the full path (``fcalc check``).
 NOT_EVALUATED = {
@@ -91,11 +88,11 @@ def _block_body(L, B, H, rho):
 
 
 def _placing(scene, L, B, H):
-    """position [m] -> its positions (N, 3) on the candidate blocks, as their scene files write them."""
+    """position [m] -> its positions (N, 3) on the candidate blocks (:func:`~foundation_calc.checks.design.apply.moved`)."""
     from foundation_calc.checks.design.apply import moved
 
     old = (scene.block.length, scene.block.width, scene.block.height)
-    return lambda position: np.round(moved(position, old, (L, B, H)), POSITION_DECIMALS)
+    return lambda position: moved(position, old, (L, B, H))
 
 
 def _resonance(scene, modes, excitations):
@@ -217,7 +214,7 @@ def _inputs(scene, L, B, place):
     size = np.sqrt(L * L + B * B)
     far = np.zeros(L.shape, dtype=bool)
     for position in scene.plausible_lengths().values():
-        far |= too_far(np.abs(place(position)).max(axis=-1), size)
+        far |= too_far(place(position), size)
     fast = bool(scene.speed_warnings())
     outcome = np.where(far | fast, WARN, PASS).astype(np.int8)
     governing = np.where(far, 1, np.where(fast, 2, 0))

@@ -32,6 +32,18 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             r["verdict"],
             f"{LIMIT_SOURCE} detuning",
         )
+    yield from _range_rows(doc)
+
+
+def _range_rows(doc: dict):
+    """The check over the soil's ``modulus_range``, if the scene gives one: its governing factor."""
+    ranged = doc.get("modulus_range")
+    if ranged:
+        yield (
+            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}], governing factor"
+            f" {ranged['governing_factor']:.4g}",
+            ranged["governing"], "passes at every factor", "-", ranged["verdict"], "scene [soil] modulus_range",
+        )
 
 
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
@@ -60,6 +72,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])
+    yield from _range_rows(doc)
 
 
 def _runup_rows(doc: dict, scene, units: DisplayUnits):

@@ -118,14 +118,14 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
 
 def excitation(name, omega, rows) -> Excitation:
     """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
-    phase [rad], point [m], inertial) each; loads of one order add. Points given as stacks
-    (..., 3) (a batch of designs) give Q of shape (..., H, 6)."""
+    phase [rad], point [m], inertial) each; loads of one order add. A point may be a batch
+    (..., 3) (the machine on each of a batch of candidate blocks): Q is then (..., H, 6)."""
     orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
-    loads = [load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
-             for _, F, Mo, phase, at, _ in rows]
-    Q = np.zeros(np.broadcast_shapes(*(q.shape for q in loads))[:-1] + (len(orders), 6), dtype=complex)
+    batch = np.broadcast_shapes(*(np.shape(r[4])[:-1] for r in rows))
+    Q = np.zeros(batch + (len(orders), 6), dtype=complex)
     Q_inertial = np.zeros_like(Q)
-    for (n, *_, inertial), q in zip(rows, loads):
+    for n, F, Mo, phase, at, inertial in rows:
+        q = load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
         Q[..., np.searchsorted(orders, n), :] += q
         if inertial:
             Q_inertial[..., np.searchsorted(orders, n), :] += q

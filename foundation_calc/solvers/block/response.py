@@ -241,11 +241,14 @@ PEAKS = frozenset({"peak", "velocity_peak", "rotation_peak"})
 def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS) -> PointMotion:
     """Steady motion of G and of ``points`` (P, 3) [m] from O under every machine (module
     docstring: peaks add, RMS values add as root-sum-square), of one block or of a batch (stacks
-    in ``model``, points (..., P, 3)); ``peaks``: the peaks of :data:`PEAKS` to search (the others are None)."""
+    in ``model``, and points (..., P, 3) where they move with the block); ``peaks``: the peaks of
+    :data:`PEAKS` to search (the others are None)."""
     cog = np.asarray(model.cog)
-    given = np.asarray(points, dtype=float)
-    given = given.reshape(-1, 3) if given.ndim < 2 else given  # (P, 3), or (..., P, 3) for a batch
-    at = np.concatenate([cog[..., None, :], np.broadcast_to(given, cog.shape[:-1] + given.shape[-2:])], axis=-2)
+    fixed = np.asarray(points, dtype=float)
+    fixed = fixed if fixed.ndim >= 2 else fixed.reshape(-1, 3)  # (P, 3), or (..., P, 3) for a batch
+    batch = np.broadcast_shapes(cog.shape[:-1], fixed.shape[:-2])
+    at = np.concatenate([np.broadcast_to(cog[..., None, :], batch + (1, 3)), np.broadcast_to(fixed, batch + fixed.shape[-2:])],
+                        axis=-2)
     T = point_maps(at)  # (..., P, 3, 6)
     disp, rot = [], []
     vsq = usq = np.zeros(at.shape)

@@ -1,0 +1,236 @@
+"""Which scene keys a sizing search may vary, and a candidate design put into a scene document.
+
+The varied keys are the block's dimensions, per kind (:data:`VARIABLES`): a
+``block_foundation``'s ``block.length``, ``block.width``, ``block.height`` (a block given by
+height and density), a ``crank_foundation``'s ``foundation.block.length``, ``width``, ``height``
+(``block.length`` … is accepted as their shorthand). Each has bounds: the plausible range of
+:data:`~foundation_calc.scenes.plausibility.RANGES` (what real blocks measure), so that a search
+never proposes a 5 km block.
+
+What changes with the block besides its dimensions (:func:`moved`, one rule for every position
+the scene gives):
+
+- the machines stand on the block: every position at or above the block's top (machines'
+  centres of mass, load and unbalance points, checked points, a crank's axis) rises or sinks
+  with the top, by H_new - H; positions below the top keep their height;
+- a position on or beyond an end face (|x| >= L/2, or |y| >= B/2) keeps its distance from that
+  face (a point on the block's corner stays on the corner); one inside keeps its coordinates;
+- a crank foundation's mass, moment of inertia, centre-of-mass height, base area, second moment
+  and base length and width, when the scene gives them beside ``[foundation.block]``, are left out
+  of the candidate's document and computed from the block (:data:`CRANK_DERIVED`: given, they
+  would disagree with the new block, which validation rejects); its positions given from the
+  centre of mass C (``mechanism.crank_axis_to_cog``, ``loads[].at.height``, ``points[].height``)
+  are moved by the rule above in base coordinates and measured again from the new C.
+
+A vectorised evaluator applies the same rule with :func:`moved` on arrays, so that its verdicts
+and those of :func:`apply` followed by ``fcalc check``'s path are the same.
+"""
+
+from __future__ import annotations
+
+import copy
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from foundation_calc.errors import ExitCode, FcalcError
+
+
+class VaryError(FcalcError, ValueError):
+    """A key that cannot vary, or a value outside its bounds: a command-line usage error."""
+
+    exit_code = ExitCode.USAGE
+
+
+@dataclass(frozen=True)
+class Variable:
+    """A scene key a search may vary: its dotted path, unit, bounds [unit] and meaning."""
+
+    key: str
+    unit: str
+    low: float
+    high: float
+    text: str
+
+
+def _dimension(key: str, plausible: str, text: str) -> Variable:
+    from foundation_calc.scenes.plausibility import RANGES
+
+    found = RANGES[plausible]
+    return Variable(key, found.unit, found.low, found.high, text)
+
+
+def _variables(prefix: str) -> dict[str, Variable]:
+    return {
+        f"{prefix}length": _dimension(f"{prefix}length", "block_length", "block length along x"),
+        f"{prefix}width": _dimension(f"{prefix}width", "block_length", "block width along y"),
+        f"{prefix}height": _dimension(f"{prefix}height", "block_height", "block height"),
+    }
+
+
+#: scene kind -> {varied key: Variable}.
+VARIABLES: dict[str, dict[str, Variable]] = {
+    "block_foundation": _variables("block."),
+    "crank_foundation": _variables("foundation.block."),
+}
+
+#: scene kind -> {shorthand: varied key}.
+ALIASES: dict[str, dict[str, str]] = {
+    "crank_foundation": {f"block.{side}": f"foundation.block.{side}" for side in ("length", "width", "height")},
+}
+
+#: Keys of a crank scene's ``[foundation]`` computed from ``[foundation.block]``: left out of a
+#: candidate's document (module docstring).
+CRANK_DERIVED = ("mass", "moment_of_inertia", "cog_height", "base_area", "base_second_moment", "base_length", "base_width")
+
+#: Tolerance of "on the face" and "at the top" [m]: coordinates typed to the millimetre.
+ON_FACE = 1e-3
+
+
+def variable(kind: str, key: str) -> Variable:
+    """The :class:`Variable` of ``key`` (or its shorthand) in a scene of ``kind``.
+
+    Raises
+    ------
+    VaryError
+        naming the keys that can vary, and the nearest one to a misspelt key.
+    """
+    known = VARIABLES.get(kind)
+    if known is None:
+        kinds = ", ".join(f'"{k}"' for k in VARIABLES)
+        raise VaryError(f'a "{kind}" scene has no dimensions fcalc design can vary (it sizes {kinds} scenes)')
+    key = ALIASES.get(kind, {}).get(key, key)
+    if key in known:
+        return known[key]
+    names = list(known) + list(ALIASES.get(kind, {}))
+    close = difflib.get_close_matches(key, names, n=1, cutoff=0.6)
+    hint = f"; did you mean {close[0]}?" if close else ""
+    raise VaryError(f"{key} cannot vary in a {kind} scene{hint} (the keys that can: {', '.join(known)})")
+
+
+def _block_table(document: Mapping[str, Any]) -> dict[str, Any] | None:
+    """The document's table of the block's dimensions, or None."""
+    if document.get("kind") == "crank_foundation":
+        foundation = document.get("foundation")
+        block = foundation.get("block") if isinstance(foundation, dict) else None
+    else:
+        block = document.get("block")
+    return block if isinstance(block, dict) else None
+
+
+def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
+    """The block's length, width and height the scene gives [m], by varied key; the values a
+    candidate leaves unchanged. A scene without them (a block given by its mass, a crank scene
+    without ``[foundation.block]``) raises :class:`VaryError` naming what it needs."""
+    kind = document.get("kind")
+    known = VARIABLES.get(kind)
+    if known is None:
+        variable(str(kind), "")
+    block = _block_table(document)
+    table = "[foundation.block]" if kind == "crank_foundation" else "[block]"
+    needed = [key for key in known if not isinstance((block or {}).get(key.rsplit(".", 1)[1]), (int, float))]
+    if needed:
+        raise VaryError(f"the block's dimensions can vary only when the scene gives {table} length, width, height"
+                        f" and density (missing: {', '.join(needed)})")
+    return {key: float(block[key.rsplit(".", 1)[1]]) for key in known}
+
+
+def moved(position, old: tuple[float, float, float], new):
+    """``position`` (… × 3 array, [x, y, z] from the centre of the base [m]) on a block resized
+    from ``old`` (L, B, H) to ``new`` (L, B, H, each a scalar or an array that broadcasts against
+    ``position[..., 0]``): positions at or above the top rise with it; positions on or beyond an
+    end face keep their distance from the face (module docstring)."""
+    position = np.asarray(position, dtype=float)
+    out = []
+    for axis, (before, after, half) in enumerate(zip(old, new, (0.5, 0.5, 1.0))):
+        c = position[..., axis]
+        if axis == 2:
+            out.append(np.where(c >= before - ON_FACE, c + (after - before), c))
+        else:
+            out.append(np.where(np.abs(c) >= half * before - ON_FACE, c + np.sign(c) * half * (after - before), c))
+    return np.stack(np.broadcast_arrays(*out), axis=-1)
+
+
+def _move(point: list, old, new) -> list[float]:
+    return [float(v) for v in moved(point, old, new)]
+
+
+def _block_positions(document: dict, old, new) -> None:
+    for machine in document.get("machines", []):
+        machine["cog"] = _move(machine["cog"], old, new)
+        for load in machine.get("loads", []):
+            if load.get("at") is not None:
+                load["at"] = _move(load["at"], old, new)
+        unbalance = machine.get("unbalance")
+        if isinstance(unbalance, dict) and unbalance.get("at") is not None:
+            unbalance["at"] = _move(unbalance["at"], old, new)
+    for point in document.get("points", []):
+        point["at"] = _move(point["at"], old, new)
+
+
+def _crank_c_height(foundation: dict, dimensions) -> float:
+    """Height of C above the base [m] of the block with ``dimensions`` and the scene's machine."""
+    from foundation_calc.solvers.crank.block import block_with_machine
+
+    block, machine = foundation["block"], foundation.get("machine") or {}
+    L, B, H = dimensions
+    return float(block_with_machine(L, B, H, block["density"], machine.get("mass", 0.0), machine.get("cog_height", 0.0),
+                                    machine.get("moment_of_inertia", 0.0)).h)
+
+
+def _crank_positions(document: dict, old, new) -> None:
+    """Move the machine, and re-measure from the new C the positions given from C."""
+    foundation = document["foundation"]
+    h_old = _crank_c_height(foundation, old)
+    machine = foundation.get("machine")
+    if isinstance(machine, dict) and "cog_height" in machine:
+        machine["cog_height"] = _move([0.0, 0.0, machine["cog_height"]], old, new)[2]
+    h_new = _crank_c_height(foundation, new)
+
+    def from_c(horizontal: float, height: float) -> tuple[float, float]:
+        x, _, z = _move([horizontal, 0.0, height + h_old], old, new)
+        return x, z - h_new
+
+    mechanism = document.get("mechanism")
+    if isinstance(mechanism, dict) and "crank_axis_to_cog" in mechanism:
+        mechanism["crank_axis_to_cog"] = from_c(0.0, mechanism["crank_axis_to_cog"])[1]
+    located = [load.get("at") for load in document.get("loads", [])] + list(document.get("points", []))
+    for at in located:
+        if isinstance(at, dict):
+            at["horizontal"], at["height"] = from_c(at.get("horizontal", 0.0), at.get("height", 0.0))
+    for key in CRANK_DERIVED:
+        foundation.pop(key, None)
+
+
+def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]) -> dict[str, Any]:
+    """A copy of the scene ``document`` (parsed TOML) with the ``candidate``'s values (varied key
+    or shorthand -> value [m]) put in, and what depends on them moved or left out (module
+    docstring). Keys the candidate does not name keep the scene's values."""
+    kind = document.get("kind")
+    old_values = given_dimensions(document)
+    new_values = dict(old_values)
+    for key, value in candidate.items():
+        found = variable(kind, key)
+        new_values[found.key] = float(value)
+    result = copy.deepcopy(dict(document))
+    block = _block_table(result)
+    for key, value in new_values.items():
+        block[key.rsplit(".", 1)[1]] = value
+    old, new = tuple(old_values.values()), tuple(new_values.values())
+    (_crank_positions if kind == "crank_foundation" else _block_positions)(result, old, new)
+    return result
+
+
+def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: str = "<design>"):
+    """The validated scene model of :func:`applied_document` (raises
+    :class:`~foundation_calc.errors.SceneError` when the candidate's scene is invalid)."""
+    from foundation_calc.scenes import parse_scene
+
+    return parse_scene(applied_document(document, candidate), source)
+
+
+__all__ = ["ALIASES", "CRANK_DERIVED", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
+           "given_dimensions", "moved", "variable"]

@@ -1,0 +1,284 @@
+"""The sizing search: the cheapest candidate that passes every check, the Pareto set of volume
+against worst margin, why the cheaper candidates fail, and a finer grid around the cheapest.
+
+Objective: the block's concrete volume (its mass is volume × density). A candidate passes when no
+check fails (a warning passes, as in ``fcalc check``; with ``strict`` it fails). The grid is
+walked in chunks (:meth:`~.grid.Grid.chunk`): per chunk the evaluator judges every candidate at
+once, and only the running results are kept (the cheapest passing candidate, the Pareto front,
+the candidate closest to passing, a thinned sample for the plot), so memory is bounded by the
+chunk. A second walk tallies the governing failure of every candidate cheaper than the chosen one
+(evaluating those alone; the volume needs no check).
+
+Refinement: around the cheapest passing grid candidate, each varied key again over one grid step
+either side at a :data:`REFINE` times finer step (the caller may choose a coarser factor for a
+slow evaluator); of those, the candidates cheaper than it are judged (no other can be the
+answer), and a cheaper passing one is the answer. The search says the step it reached; cheaper designs further from the grid's cheapest,
+between its points, are not looked for.
+
+Pareto set: among the passing candidates, those that no other passing candidate beats on both
+volume (smaller) and worst margin (larger), cheapest first.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from foundation_calc.checks.design.candidates import FAIL, WARN, Batch, CandidateVerdicts
+from foundation_calc.checks.design.grid import DECIMALS, Grid
+
+#: Candidates judged at once: bounds the memory of a search (a few hundred bytes a candidate per check).
+CHUNK = 50_000
+
+#: Refinement: the step around the cheapest design is the grid's step over this.
+REFINE = 5
+
+#: Points of the volume-margin sample kept for the plot.
+SAMPLE = 20_000
+
+Evaluate = Callable[[Batch], CandidateVerdicts]
+
+
+@dataclass
+class Front:
+    """Candidates by their values, volume and worst margin (NaN margins rank lowest)."""
+
+    values: dict[str, np.ndarray]
+    volume: np.ndarray
+    margin: np.ndarray
+
+    @classmethod
+    def empty(cls, keys) -> "Front":
+        return cls({k: np.empty(0) for k in keys}, np.empty(0), np.empty(0))
+
+    def take(self, index) -> "Front":
+        return Front({k: v[index] for k, v in self.values.items()}, self.volume[index], self.margin[index])
+
+    def joined(self, other: "Front") -> "Front":
+        return Front({k: np.concatenate([v, other.values[k]]) for k, v in self.values.items()},
+                     np.concatenate([self.volume, other.volume]), np.concatenate([self.margin, other.margin]))
+
+    def pareto(self) -> "Front":
+        """The non-dominated candidates (smaller volume, larger margin), cheapest first."""
+        margin = np.nan_to_num(self.margin, nan=-np.inf)
+        order = np.lexsort((-margin, self.volume))
+        best_before = np.maximum.accumulate(np.concatenate([[-np.inf], margin[order]]))[:-1]
+        return self.take(order[margin[order] > best_before])
+
+    def cheapest(self) -> "Front":
+        """The cheapest candidate (the larger margin among equal volumes), or an empty front."""
+        return self.pareto().take(slice(0, 1))
+
+    def safest(self) -> "Front":
+        """The candidate of the largest worst margin (the cheaper among equals)."""
+        if not len(self.volume):
+            return self
+        margin = np.nan_to_num(self.margin, nan=-np.inf)
+        order = np.lexsort((self.volume, -margin))
+        return self.take(order[:1])
+
+    def design(self, i: int) -> dict[str, float]:
+        return {k: float(v[i]) for k, v in self.values.items()}
+
+
+def passing(verdicts: CandidateVerdicts, strict: bool) -> np.ndarray:
+    """(N,) True where no check fails (nor warns, with ``strict``)."""
+    return verdicts.worst_outcome < (WARN if strict else FAIL)
+
+
+def worst_margin(verdicts: CandidateVerdicts) -> np.ndarray:
+    """(N,) worst margin, NaN where no check judges a number (without a warning for those)."""
+    stacked = np.stack(list(verdicts.utilisation.values()))
+    judged = ~np.all(np.isnan(stacked), axis=0)
+    out = np.full(stacked.shape[1], np.nan)
+    out[judged] = 1.0 - np.nanmax(stacked[:, judged], axis=0)
+    return out
+
+
+def failure_tally(verdicts: CandidateVerdicts, strict: bool) -> dict[str, int]:
+    """How many candidates each ``"check: reason"`` governs among those that do not pass: the most
+    utilised failing check of each (the first failing one in the checks' order when none has a number)."""
+    names = list(verdicts.outcome)
+    worst = WARN if strict else FAIL
+    failing = np.stack([verdicts.outcome[n] >= worst for n in names])
+    ranked = np.where(failing, np.nan_to_num(np.stack([verdicts.utilisation[n] for n in names]), nan=-1.0), -np.inf)
+    top = np.argmax(ranked, axis=0)
+    columns = np.arange(top.size)
+    fails = failing[top, columns]
+    governing = np.stack([verdicts.governing[n] for n in names])[top, columns]
+    pairs, counts = np.unique(np.stack([top[fails], governing[fails]]), axis=1, return_counts=True)
+    return {f"{names[c]}: {verdicts.reasons[names[c]][g]}": int(n) for (c, g), n in zip(pairs.T, counts)}
+
+
+def _add_counts(total: dict[str, int], more: dict[str, int]) -> None:
+    for key, count in more.items():
+        total[key] = total.get(key, 0) + count
+
+
+@dataclass
+class Search:
+    """What a search found (module docstring). ``best`` and ``closest`` are one-candidate fronts
+    (empty when there is none); ``fails_everywhere``: checks that fail on every candidate;
+    ``cheaper_failures``: ``"check: reason"`` -> count over the candidates cheaper than ``best``
+    (every candidate when none passes); ``refined_steps``: key -> the refined step (empty without
+    refinement); ``sample``: a thinned (volume, margin, passes) of the grid for the plot."""
+
+    grid: Grid
+    strict: bool
+    evaluated: int = 0
+    best: Front | None = None
+    pareto: Front | None = None
+    closest: Front | None = None
+    fail_counts: dict[str, int] = field(default_factory=dict)
+    cheaper_failures: dict[str, int] = field(default_factory=dict)
+    cheaper_count: int = 0
+    refined_steps: dict[str, float] = field(default_factory=dict)
+    refined_candidates: int = 0
+    improved_by_refinement: bool = False
+    sample: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+    seconds: float = 0.0
+    chunks: int = 0
+
+    @property
+    def found(self) -> bool:
+        return self.best is not None and len(self.best.volume) > 0
+
+    @property
+    def at_range_end(self) -> dict[str, str]:
+        """Varied key -> ``"low"`` or ``"high"``: the ends of their ranges the cheapest design takes.
+        A cheaper design may lie beyond them (below a low end plainly; above a high end when more
+        of one dimension lets the others shrink)."""
+        if not self.found:
+            return {}
+        best = self.best.design(0)
+        ends = {}
+        for a in self.grid.axes:
+            value = best[a.variable.key]
+            if len(a.values) > 1 and value in (a.values[0], a.values[-1]):
+                ends[a.variable.key] = "low" if value == a.values[0] else "high"
+        return ends
+
+    @property
+    def fails_everywhere(self) -> list[str]:
+        return [name for name, count in self.fail_counts.items() if count == self.evaluated]
+
+
+def _front(batch: Batch, verdicts: CandidateVerdicts, mask: np.ndarray) -> Front:
+    return Front({k: np.asarray(v)[mask] for k, v in batch.items()}, verdicts.volume[mask], worst_margin(verdicts)[mask])
+
+
+class _Walk:
+    """The running results of one search over batches."""
+
+    def __init__(self, found: Search, evaluate: Evaluate):
+        keys = found.grid.keys
+        self.found, self.evaluate = found, evaluate
+        self.passed, self.all_best = Front.empty(keys), Front.empty(keys)
+        self.samples: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        self.thin = max(1, math.ceil(found.grid.size / SAMPLE))
+        self.failures: dict[str, int] = {}
+
+    def add(self, batch: Batch) -> None:
+        verdicts = self.evaluate(batch)
+        ok = passing(verdicts, self.found.strict)
+        self.passed = self.passed.joined(_front(batch, verdicts, ok)).pareto()
+        self.all_best = self.all_best.joined(_front(batch, verdicts, np.ones(ok.shape, bool)).safest()).safest()
+        worst = WARN if self.found.strict else FAIL
+        for name, outcome in verdicts.outcome.items():
+            self.found.fail_counts[name] = self.found.fail_counts.get(name, 0) + int(np.count_nonzero(outcome >= worst))
+        if not len(self.passed.volume):  # the tally over every candidate, while none passes
+            _add_counts(self.failures, failure_tally(verdicts, self.found.strict))
+        self.found.evaluated += len(ok)
+        self.found.chunks += 1
+        keep = slice(None, None, self.thin)
+        self.samples.append((verdicts.volume[keep], worst_margin(verdicts)[keep], ok[keep]))
+
+
+def _refinement_batch(grid: Grid, best: dict[str, float], factor: int) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+    """The finer grid around ``best``: each key over one grid step either side (within its range)."""
+    columns, steps = [], {}
+    for a in grid.axes:
+        key, step = a.variable.key, a.step
+        if step == 0:
+            columns.append(np.array([best[key]]))
+            continue
+        fine = step / factor
+        low, high = max(best[key] - step, a.values[0]), min(best[key] + step, a.values[-1])
+        columns.append(np.round(np.linspace(low, high, int(round((high - low) / fine)) + 1), DECIMALS))
+        steps[key] = fine
+    mesh = np.meshgrid(*columns, indexing="ij")
+    return {a.variable.key: m.ravel() for a, m in zip(grid.axes, mesh)}, steps
+
+
+def _volume(batch: Batch, given: dict[str, float]) -> np.ndarray:
+    """(n,) block volume of the candidates [m³]: the product of the three dimensions."""
+    count = len(next(iter(batch.values())))
+    out = np.ones(count)
+    for key, value in given.items():
+        out = out * (batch[key] if key in batch else value)
+    return out
+
+
+def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool = False, chunk: int = CHUNK,
+           refine: int = REFINE) -> Search:
+    """Walk ``grid`` in chunks of ``chunk`` with ``evaluate`` (module docstring). ``given``: the
+    scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is);
+    ``refine``: the refinement's factor on the grid step (0 or 1: no refinement)."""
+    start = time.perf_counter()
+    found = Search(grid, strict)
+    walk = _Walk(found, evaluate)
+    for first in range(0, grid.size, chunk):
+        walk.add(grid.chunk(first, first + chunk))
+    if len(walk.passed.volume) and refine > 1 and any(a.step for a in grid.axes):
+        batch, found.refined_steps = _refinement_batch(grid, walk.passed.cheapest().design(0), refine)
+        before = walk.passed.cheapest().volume[0]
+        cheaper = _volume(batch, given) < before
+        batch = {k: v[cheaper] for k, v in batch.items()}
+        for first in range(0, len(next(iter(batch.values()))), chunk):
+            part = {k: v[first:first + chunk] for k, v in batch.items()}
+            verdicts = evaluate(part)
+            ok = passing(verdicts, strict)
+            walk.passed = walk.passed.joined(_front(part, verdicts, ok)).pareto()
+            found.refined_candidates += len(ok)
+        found.improved_by_refinement = bool(walk.passed.cheapest().volume[0] < before)
+    found.pareto = walk.passed
+    found.best = walk.passed.cheapest()
+    found.closest = walk.all_best
+    found.sample = tuple(np.concatenate(parts) for parts in zip(*walk.samples))
+    if found.found:
+        _tally_cheaper(found, evaluate, given, chunk)
+    else:
+        found.cheaper_failures, found.cheaper_count = walk.failures, found.evaluated
+    found.seconds = time.perf_counter() - start
+    return found
+
+
+def _tally_cheaper(found: Search, evaluate: Evaluate, given: dict[str, float], chunk: int) -> None:
+    """``cheaper_failures``: the governing failure of each grid candidate cheaper than the best,
+    the cheaper ones judged again, the others skipped."""
+    limit = found.best.volume[0]
+    grid = found.grid
+    for first in range(0, grid.size, chunk):
+        batch = grid.chunk(first, first + chunk)
+        cheaper = _volume(batch, given) < limit
+        if not cheaper.any():
+            continue
+        part = {k: v[cheaper] for k, v in batch.items()}
+        _add_counts(found.cheaper_failures, failure_tally(evaluate(part), found.strict))
+        found.cheaper_count += int(np.count_nonzero(cheaper))
+
+
+def thinned(front: Front, count: int) -> Front:
+    """At most ``count`` members of a front, evenly spread over it, its first and last kept."""
+    size = len(front.volume)
+    if size <= count:
+        return front
+    return front.take(np.unique(np.round(np.linspace(0, size - 1, count)).astype(int)))
+
+
+__all__ = ["CHUNK", "Front", "REFINE", "SAMPLE", "Search", "failure_tally", "passing", "search", "thinned",
+           "worst_margin"]

@@ -1,0 +1,221 @@
+"""What ``fcalc design`` prints: the search's grid and resolution, the cheapest passing design with
+its checks, the Pareto set of volume against worst margin, why the cheaper candidates fail, the
+re-check by ``fcalc check``'s path; the same as one JSON document (SI units), and as a plot.
+
+The designs shown are judged by the full path (the re-check's verdicts): what ``fcalc check``
+would say of each.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from foundation_calc.checks.design.candidates import CandidateVerdicts
+from foundation_calc.checks.design.recheck import OUTCOME_NAMES, Disagreement
+from foundation_calc.checks.design.search import Front, Search, worst_margin
+
+#: Pareto designs shown, re-checked and written to JSON at most (evenly spread over the front).
+PARETO_SHOWN = 12
+
+
+@dataclass(frozen=True)
+class Sizing:
+    """A finished search and its re-check: ``designs`` are the best (first) and the shown Pareto
+    designs (none when nothing passes: then the closest candidate alone), ``full`` the full path's
+    verdicts on them, ``evaluator`` the name of what judged the grid."""
+
+    source: str
+    name: str
+    found: Search
+    designs: Front
+    full: CandidateVerdicts
+    disagreements: tuple[Disagreement, ...]
+    evaluator: str
+    chunk: int
+    written: str | None = None
+
+
+def _finite(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def _design(sizing: Sizing, i: int) -> dict:
+    full = sizing.full
+    checks = {
+        name: {
+            "outcome": OUTCOME_NAMES[int(full.outcome[name][i])],
+            "utilisation": _finite(full.utilisation[name][i]),
+            "governing": full.reasons[name][full.governing[name][i]],
+        }
+        for name in full.outcome
+    }
+    return {"values": sizing.designs.design(i), "volume": float(full.volume[i]), "mass": float(full.mass[i]),
+            "worst_margin": _finite(worst_margin(full)[i]),
+            "outcome": OUTCOME_NAMES[int(full.worst_outcome[i])], "checks": checks}
+
+
+def _axes(found: Search) -> list[dict]:
+    return [{"key": a.variable.key, "unit": a.variable.unit, "low": float(a.values[0]), "high": float(a.values[-1]),
+             "points": len(a.values), "step": a.step, "refined_step": found.refined_steps.get(a.variable.key)}
+            for a in found.grid.axes]
+
+
+def design_document(sizing: Sizing) -> dict:
+    """The JSON document of ``fcalc design`` (SI units; a utilisation or margin that is no finite
+    number, such as a check that judges none or a design that cannot be built, is null)."""
+    found = sizing.found
+    designs = [_design(sizing, i) for i in range(len(sizing.designs.volume))]
+    document = {
+        "schema_version": 1,
+        "command": "design",
+        "scene": sizing.source,
+        "name": sizing.name,
+        "evaluator": sizing.evaluator,
+        "strict": found.strict,
+        "grid": {"candidates": found.grid.size, "axes": _axes(found), "chunk": sizing.chunk, "chunks": found.chunks,
+                 "seconds": found.seconds},
+        "refinement": {"candidates": found.refined_candidates, "improved": found.improved_by_refinement} if found.refined_steps else None,
+        "passed": found.found,
+        "best": designs[0] if found.found else None,
+        "at_range_end": found.at_range_end,
+        "pareto": designs if found.found else [],
+        "pareto_size": len(found.pareto.volume) if found.found else 0,
+        "closest": None if found.found else designs[0],
+        "fails_everywhere": found.fails_everywhere,
+        "cheaper_candidates": found.cheaper_count,
+        "cheaper_failures": [{"check": r.partition(": ")[0], "reason": r.partition(": ")[2], "count": n}
+                             for r, n in sorted(found.cheaper_failures.items(), key=lambda item: -item[1])],
+        "recheck": {"designs": len(designs), "agree": not sizing.disagreements,
+                    "disagreements": [{"values": d.design, "check": d.check, "search": d.search, "fcalc_check": d.full}
+                                      for d in sizing.disagreements]},
+        "written": sizing.written,
+    }
+    return document
+
+
+def _number(value: float | None, digits: int = 3) -> str:
+    return "-" if value is None else f"{value:.{digits}g}"
+
+
+def _values_text(values: dict[str, float]) -> str:
+    return " × ".join(f"{v:.3f}" for v in values.values())
+
+
+def print_design(sizing: Sizing) -> None:
+    """The tables of ``fcalc design`` on stdout (module docstring)."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    from foundation_calc.output.console import OUTCOME_STYLE, stdout
+
+    console = stdout()
+    document = design_document(sizing)
+    found = sizing.found
+    console.print(f"[bold]fcalc design[/]: {escape(sizing.source)}" + (f" — {escape(sizing.name)}" if sizing.name else ""))
+    sizes = " × ".join(str(len(a.values)) for a in found.grid.axes)
+    console.print(f"grid: {sizes} = {found.grid.size} candidates in {found.chunks} chunk{'s' * (found.chunks != 1)}"
+                  f" of at most {sizing.chunk}, {found.seconds:.2f} s ({escape(sizing.evaluator)})")
+    for a in document["grid"]["axes"]:
+        refined = f", refined to {a['refined_step']:.3g}" if a["refined_step"] else ""
+        console.print(f"  {a['key']}: {a['low']:g} to {a['high']:g} {a['unit']}, step {a['step']:.3g} {a['unit']}{refined}")
+    if found.refined_steps:
+        result = "found a cheaper design" if found.improved_by_refinement else "found none cheaper"
+        console.print(f"refinement: {found.refined_candidates} candidates cheaper than the cheapest within one grid step of it,"
+                      f" {result}")
+    keys = found.grid.keys
+    if found.found:
+        best = document["best"]
+        console.print(f"\n[bold]cheapest passing design[/]: {_values_text(best['values'])} m ({', '.join(keys)}),"
+                      f" volume {best['volume']:.4g} m³, mass {best['mass'] / 1e3:.4g} t,"
+                      f" worst margin {_number(best['worst_margin'])}")
+        if found.at_range_end:
+            ends = ", ".join(f"the {end} end of {key}" for key, end in found.at_range_end.items())
+            console.print(f"[bold yellow]note[/]: it takes {ends}: a cheaper design may lie beyond the range searched")
+    else:
+        best = document["closest"]
+        everywhere = ", ".join(found.fails_everywhere) or "none (each candidate fails some check)"
+        console.print(f"\n[bold red]no candidate passes[/] ({found.grid.size} of {found.grid.size} fail); checks that fail"
+                      f" on every candidate: {escape(everywhere)}")
+        console.print(f"closest to passing: {_values_text(best['values'])} m ({', '.join(keys)}), volume {best['volume']:.4g} m³:"
+                      f" worst utilisation {_number(None if best['worst_margin'] is None else 1 - best['worst_margin'])}"
+                      " (1 at the limit)")
+    checks = Table(title=None, show_edge=False)
+    for header in ("check", "verdict", "utilisation", "governed by"):
+        checks.add_column(header, overflow="fold")
+    for name, check in best["checks"].items():
+        style = OUTCOME_STYLE[check["outcome"]]
+        checks.add_row(name, f"[{style}]{check['outcome'].upper()}[/]", _number(check["utilisation"]), escape(check["governing"]))
+    console.print(checks)
+    if found.found:
+        _print_pareto(console, document, keys)
+    if document["cheaper_failures"]:
+        cheaper = "cheaper candidates" if found.found else "candidates"
+        table = Table(title=f"why the {document['cheaper_candidates']} {cheaper} fail", show_edge=False)
+        for header in ("check", "governed by", "candidates"):
+            table.add_column(header, overflow="fold")
+        for row in document["cheaper_failures"]:
+            table.add_row(row["check"], escape(row["reason"]), str(row["count"]))
+        console.print(table)
+    _print_recheck(sizing, document)
+
+
+def _print_pareto(console, document: dict, keys: list[str]) -> None:
+    from rich.table import Table
+
+    shown, size = len(document["pareto"]), document["pareto_size"]
+    title = f"Pareto set: volume against worst margin ({shown} of {size} designs)"
+    table = Table(title=title, show_edge=False)
+    for header in (*[k.rsplit(".", 1)[1] + " [m]" for k in keys], "volume [m³]", "mass [t]", "worst margin", "governed by"):
+        table.add_column(header, justify="right" if header != "governed by" else "left", overflow="fold")
+    for design in document["pareto"]:
+        top = max(design["checks"].items(), key=lambda item: -math.inf if item[1]["utilisation"] is None else item[1]["utilisation"])
+        table.add_row(*[f"{v:.3f}" for v in design["values"].values()], f"{design['volume']:.4g}", f"{design['mass'] / 1e3:.4g}",
+                      _number(design["worst_margin"]), f"{top[0]}: {top[1]['governing']}")
+    console.print(table)
+
+
+def _print_recheck(sizing: Sizing, document: dict) -> None:
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stderr, stdout
+
+    count = document["recheck"]["designs"]
+    if not sizing.disagreements:
+        stdout().print(f"re-check by fcalc check's path: {count} design{'s' * (count != 1)}, every check agrees")
+        return
+    stderr().print(f"[bold red]DISAGREEMENT[/] between the search and fcalc check's path on {len(sizing.disagreements)}"
+                   f" check{'s' * (len(sizing.disagreements) != 1)} of {count} designs (a bug in fcalc: please report it"
+                   " with the scene file):")
+    for found in sizing.disagreements:
+        stderr().print(f"  {escape(found.text)}", soft_wrap=True)
+
+
+def plot_design(sizing: Sizing, path: str | Path) -> None:
+    """Worst margin against volume: the sampled candidates (passing green, failing grey), the
+    Pareto set and the cheapest passing design; margins below -1 drawn at -1."""
+    from foundation_calc.output.plots import new_figure, save
+
+    found = sizing.found
+    fig, ax = new_figure()
+    volume, margin, ok = found.sample
+    shown = np.clip(np.nan_to_num(margin, nan=-1.0, neginf=-1.0), -1.0, None)
+    ax.scatter(volume[~ok], shown[~ok], s=4, color="0.7", label="fails", rasterized=True)
+    ax.scatter(volume[ok], shown[ok], s=4, color="tab:green", alpha=0.5, label="passes", rasterized=True)
+    if found.found:
+        front = found.pareto
+        ax.plot(front.volume, front.margin, "-o", color="tab:blue", markersize=3, label="Pareto set")
+        ax.plot(front.volume[:1], front.margin[:1], "*", color="tab:red", markersize=14,
+                label=f"cheapest passing: {front.volume[0]:.3g} m³")
+    ax.axhline(0.0, color="black", linewidth=0.8)
+    ax.set_xlabel("block volume [m³]")
+    ax.set_ylabel("worst margin 1 - max utilisation [-] (below -1 at -1)")
+    ax.set_title(sizing.name or sizing.source, fontsize=10)
+    ax.legend(loc="lower right", fontsize=8)
+    save(fig, path)
+
+
+__all__ = ["PARETO_SHOWN", "Sizing", "design_document", "plot_design", "print_design"]
