@@ -160,3 +160,31 @@ def test_nothing_passes_names_the_check_and_the_closest(runner_module):
     assert document["closest"]["worst_margin"] < 0
     text = runner_module.invoke(app, ["design", str(FAN), "--vary", "block.length=4.5:5.5", "--points", "2"]).output
     assert "no candidate passes" in text and "resonance" in text and "worst utilisation" in text
+
+
+#: A shipped scene of each kind fcalc design sizes.
+KIND_SCENES = {"block_foundation": FAN, "crank_foundation": COMPRESSOR}
+
+
+@pytest.mark.parametrize("kind", sorted(KIND_SCENES))
+def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
+    """Each kind's vectorised evaluator against fcalc check's path on the same candidates (blocks
+    0.6 to 1.6 times the scene's in each dimension, machines moved with them): every check's
+    outcome equal, utilisation within the re-check's 1e-6."""
+    import importlib
+
+    from foundation_calc.checks.design.apply import given_dimensions
+    from foundation_calc.checks.design.candidates import EVALUATORS
+    from foundation_calc.checks.design.recheck import recheck
+    from foundation_calc.scenes import parse_scene
+
+    if kind not in EVALUATORS:
+        pytest.skip(f"no vectorised evaluator for {kind}: fcalc design judges it by fcalc check's path")
+    document = read_toml(KIND_SCENES[kind])
+    rng = np.random.default_rng(3)
+    batch = {key: value * rng.uniform(0.6, 1.6, 12) for key, value in given_dimensions(document).items()}
+    searched = importlib.import_module(EVALUATORS[kind]).evaluate(parse_scene(document), batch)
+    _, found = recheck(document, batch, searched)
+    rule = ("the candidate's scene is checks/design/apply.py's: machines, loads and points on the block's top rise"
+            " with it, those on an end face follow it (a crank's C-relative heights re-measured from the new C)")
+    assert not found, (rule, [d.text for d in found])

@@ -105,7 +105,7 @@ def test_mass_property_errors(foundation, fragments):
         ({"method": "sp26", "deformation_modulus": 3e7}, ["method 'sp26' needs soil.soil_class"]),
         ({"method": "sp26", "deformation_modulus": 3e7, "soil_class": "peat"}, ["soil.soil_class", "sand"]),
         ({"method": "sp26", "deformation_modulus": 3e7, "soil_class": "sand", "poisson": 0.3},
-         ["soil.poisson is a key of method 'lysmer' and 'gazetas', not of 'sp26'", "deformation_modulus, soil_class"]),
+         ["soil.poisson is a key of methods 'lysmer', 'gazetas' and 'pais_kausel', not of 'sp26'", "deformation_modulus, soil_class"]),
         ({"shear_modulus": 7e7}, ['give soil.method = "lysmer"', "c_z and soil.c_x"]),
         ({"method": "lysmer", "shear_modulus": 7e7, "density": 1800.0, "poisson": 0.6}, ["soil.poisson", "must be <= 0.5"]),
     ],
@@ -149,7 +149,7 @@ def test_fcalc_soil_tables_and_json(runner, config):
     document = json.loads(runner.invoke(app, ["soil", str(config), "--json"]).stdout)
     used = document["method"]
     assert f"{used} *" in table.stdout
-    expected = {"lysmer": ["lysmer", "gazetas"], "sp26": ["sp26"], "coefficients": ["coefficients"]}[used]
+    expected = {"lysmer": ["lysmer", "gazetas", "pais_kausel"], "sp26": ["sp26"], "coefficients": ["coefficients"]}[used]
     assert list(document["methods"]) == expected
     numbers = document["methods"][used]
     assert numbers["K_z"] == pytest.approx(numbers["c_z"] * document["base"]["area"], rel=1e-14)
@@ -182,7 +182,7 @@ def test_fcalc_soil_names_methods_that_disagree_by_more_than_2(runner, tmp_path)
     result = runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"])
     findings = json.loads(result.stdout)["warnings"]
     assert any("'lysmer' and 'gazetas' differ by a factor of" in w for w in findings), findings
-    assert any("used by method 'gazetas' only" in w for w in findings), findings
+    assert any("used by methods 'gazetas' and 'pais_kausel' only" in w for w in findings), findings
 
 
 def test_gazetas_rocking_damping_at_the_rocking_mode_against_halls_analog(runner):

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, code_zone, zone_outcome
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
@@ -67,25 +67,20 @@ class ResonanceRow:
 
 
 @dataclass(frozen=True)
-class ZoneRow:
-    """A point's largest RMS velocity in the zones of a vibration code."""
+class ZoneRow(JudgedRow):
+    """A point's zone in a vibration code: its largest RMS velocity and, when a machine runs below
+    600 r/min, its largest RMS displacement (``judged`` says which decides; ``direction`` is that
+    quantity's direction)."""
 
     point: str
     direction: str
-    value: float
-    zone: str
-    limit: float
+    judged: CodeZone
     outcome: Outcome
     table: ZoneTable
 
     @property
-    def ratio(self) -> float:
-        return self.value / self.limit
-
-    @property
-    def verdict_text(self) -> str:
-        """E.g. ``"ISO 10816-3, group 2, rigid: zone B, 1.9 mm/s RMS (x)"``."""
-        return f"{self.table.title}: zone {self.zone}, {self.value * 1e3:.3g} mm/s RMS ({self.direction})"
+    def direction_text(self) -> str:
+        return self.direction
 
 
 @dataclass(frozen=True)
@@ -227,18 +222,18 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
-    """The code zone of every point's largest RMS velocity (none without ``[limits] code``)."""
+def zone_rows(motion: PointMotion, limits, speed_rpm: float) -> tuple[ZoneRow, ...]:
+    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and,
+    when the slowest machine runs below 600 r/min (``speed_rpm``), its largest RMS displacement."""
     if limits.code is None:
         return ()
     table = TABLES[limits.code, limits.machine_group, limits.foundation]
-    limit = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]  # zone B warns by default
     rows = []
     for p, name in enumerate(motion.names):
-        d = int(np.argmax(motion.velocity_rms[p]))
-        v = float(motion.velocity_rms[p, d])
-        z = zone(v, table)
-        rows.append(ZoneRow(name, DIRECTIONS[d], v, z, limit, zone_outcome(z, limits.acceptable_zone), table))
+        v, x = motion.velocity_rms[p], motion.displacement_rms[p]
+        judged = code_zone(table, float(v.max()), float(x.max()), speed_rpm, limits.acceptable_zone)
+        d = int(np.argmax(v if judged.quantity == "velocity" else x))
+        rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table))
     return tuple(rows)
 
 
@@ -283,7 +278,7 @@ def check_block_as_given(scene) -> BlockReport:
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits),
+        zone_rows=() if motion is None else zone_rows(motion, limits, min(rpm_from_omega(e.omega) for e in excitations)),
         code_warnings=warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,

@@ -14,12 +14,14 @@ of the machine on its support is at least 25 % above the main excitation frequen
 suitable for long-term continuous operation; D, severe enough to cause damage. A value equal to
 a boundary belongs to the lower zone.
 
-Below 600 r/min the tables judge the broad-band r.m.s. displacement [µm] as well as the velocity
-(Annex A, Tables A.1 and A.2, displacement columns: at low speeds a velocity within its zone may
-still mean a displacement beyond it). Those displacement boundaries are not stored:
-their printed values could not be checked against the standard, and a boundary is kept here only
-with its printed value and clause. For a machine below :data:`DISPLACEMENT_SPEED_RPM`,
-:func:`application_warnings` says so, and the velocity zone alone is judged. ISO 20816-3:2022,
+Below 600 r/min the tables judge the broad-band r.m.s. displacement [µm] as well (Tables A.1
+and A.2, displacement columns): at low speed a velocity within its zone may still mean a
+displacement beyond it. For a machine below :data:`DISPLACEMENT_SPEED_RPM`, :func:`code_zone`
+classifies both and the worse zone governs; at or above it the velocity zone alone is judged.
+The displacement boundaries stored here are the ones reproduced from the tables (group 1 rigid
+29/57/90, flexible 45/90/140; group 2 rigid 22/45/71, flexible 37/71/113 µm); each is, within
+1 µm, the displacement amplitude of a sinusoid with the velocity boundary's amplitude at 12.5 Hz
+(group 1) or 10 Hz (group 2), a relation the tests use to catch a mistyped digit. ISO 20816-3:2022,
 which replaced ISO 10816-3, is not accepted: its tables have not been checked against these.
 """
 
@@ -43,12 +45,12 @@ class ZoneTable:
     Attributes
     ----------
     code : the code's name as a scene writes it, e.g. ``"ISO 10816-3"``
-    displacement_boundaries_um : r.m.s. displacement at A/B, B/C, C/D [µm] for speeds below
-        :data:`DISPLACEMENT_SPEED_RPM`, or None where the printed boundary is not stored
     clause : edition, annex and table the boundaries come from
     group : machine group (1 or 2)
     foundation : support class, ``"rigid"`` or ``"flexible"``
     boundaries_mm_s : r.m.s. velocity at the zone boundaries A/B, B/C, C/D [mm/s]
+    displacement_boundaries_um : r.m.s. displacement at A/B, B/C, C/D [µm], judged below
+        :data:`DISPLACEMENT_SPEED_RPM`
     speed_range_rpm : range of machine speeds the code applies to [rpm]
     power_range_kw : range of rated power of the group, (above, up to and including) [kW]
     """
@@ -58,14 +60,19 @@ class ZoneTable:
     group: int
     foundation: str
     boundaries_mm_s: tuple[float, float, float]
+    displacement_boundaries_um: tuple[float, float, float]
     speed_range_rpm: tuple[float, float]
     power_range_kw: tuple[float, float]
-    displacement_boundaries_um: tuple[float, float, float] | None = None
 
     @property
     def boundaries(self) -> tuple[float, float, float]:
         """The zone boundaries A/B, B/C, C/D [m/s]."""
         return tuple(b / 1e3 for b in self.boundaries_mm_s)
+
+    @property
+    def displacement_boundaries(self) -> tuple[float, float, float]:
+        """The displacement zone boundaries A/B, B/C, C/D [m]."""
+        return tuple(b / 1e6 for b in self.displacement_boundaries_um)
 
     @property
     def title(self) -> str:
@@ -81,10 +88,14 @@ _GROUP_2 = dict(group=2, clause="ISO 10816-3:2009, Annex A, Table A.2", power_ra
 TABLES: dict[tuple[str, int, str], ZoneTable] = {
     (t.code, t.group, t.foundation): t
     for t in (
-        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="rigid", boundaries_mm_s=(2.3, 4.5, 7.1)),
-        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="flexible", boundaries_mm_s=(3.5, 7.1, 11.0)),
-        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="rigid", boundaries_mm_s=(1.4, 2.8, 4.5)),
-        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="flexible", boundaries_mm_s=(2.3, 4.5, 7.1)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="rigid", boundaries_mm_s=(2.3, 4.5, 7.1),
+                  displacement_boundaries_um=(29.0, 57.0, 90.0)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_1, foundation="flexible", boundaries_mm_s=(3.5, 7.1, 11.0),
+                  displacement_boundaries_um=(45.0, 90.0, 140.0)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="rigid", boundaries_mm_s=(1.4, 2.8, 4.5),
+                  displacement_boundaries_um=(22.0, 45.0, 71.0)),
+        ZoneTable(**_ISO_10816_3, **_GROUP_2, foundation="flexible", boundaries_mm_s=(2.3, 4.5, 7.1),
+                  displacement_boundaries_um=(37.0, 71.0, 113.0)),
     )
 }
 
@@ -101,12 +112,122 @@ def zone(velocity_rms: float, table: ZoneTable) -> str:
     return ZONES[int(zone_index(velocity_rms, table))]
 
 
-def zone_index(velocity_rms, table: ZoneTable):
-    """Index into :data:`ZONES` of r.m.s. velocities [m/s] (float or array) in ``table``; a
-    boundary value belongs to the lower zone."""
+def zone_index(velocity_rms, table: ZoneTable, boundaries=None):
+    """Index into :data:`ZONES` of r.m.s. velocities [m/s] (float or array) in ``table``, or of
+    other values against ``boundaries`` (the displacement's [m]); a boundary value belongs to the
+    lower zone."""
     import numpy as np
 
-    return np.sum(np.asarray(velocity_rms, dtype=float)[..., None] > np.asarray(table.boundaries), axis=-1)
+    bounds = table.boundaries if boundaries is None else boundaries
+    return np.sum(np.asarray(velocity_rms, dtype=float)[..., None] > np.asarray(bounds), axis=-1)
+
+
+def displacement_zone(displacement_rms: float, table: ZoneTable) -> str:
+    """The zone of an r.m.s. displacement [m] in ``table``; a boundary value belongs to the lower zone.
+
+    >>> displacement_zone(45e-6, TABLES["ISO 10816-3", 2, "rigid"]), displacement_zone(46e-6, TABLES["ISO 10816-3", 2, "rigid"])
+    ('B', 'C')
+    """
+    return ZONES[int(zone_index(displacement_rms, table, table.displacement_boundaries))]
+
+
+def code_zone_index(velocity_rms, displacement_rms, table: ZoneTable, speed_rpm: float):
+    """:func:`code_zone` on arrays (a batch of designs): (zone index into :data:`ZONES`, True where
+    the displacement decides). Velocities [m/s], displacements [m] of the same shape."""
+    import numpy as np
+
+    by_velocity = zone_index(velocity_rms, table)
+    if speed_rpm >= DISPLACEMENT_SPEED_RPM:
+        return by_velocity, np.zeros(np.shape(by_velocity), dtype=bool)
+    by_displacement = zone_index(displacement_rms, table, table.displacement_boundaries)
+    return np.maximum(by_velocity, by_displacement), by_displacement > by_velocity
+
+
+@dataclass(frozen=True)
+class CodeZone:
+    """The zone of one point and the quantity that decides it.
+
+    Attributes
+    ----------
+    zone : the worse of the judged quantities' zones
+    quantity : ``"velocity"`` or ``"displacement"``, the one that gives ``zone`` (the velocity on a tie)
+    value : the governing quantity's r.m.s. value [m/s or m]
+    limit : its boundary above which the verdict fails (the ``acceptable`` zone's upper boundary) [m/s or m]
+    velocity_zone : zone of the r.m.s. velocity
+    displacement_zone : zone of the r.m.s. displacement, or None at or above :data:`DISPLACEMENT_SPEED_RPM`
+    """
+
+    zone: str
+    quantity: str
+    value: float
+    limit: float
+    velocity_zone: str
+    displacement_zone: str | None
+
+    @property
+    def ratio(self) -> float:
+        return self.value / self.limit
+
+    def describe(self, table: ZoneTable) -> str:
+        """E.g. ``"zone C, 3.1 mm/s RMS > 2.8"`` or ``"zone C, 48 µm RMS > 45"`` (the code's units)."""
+        i = ZONES.index(self.zone)
+        if self.quantity == "velocity":
+            shown, bounds, unit = self.value * 1e3, table.boundaries_mm_s, "mm/s"
+        else:
+            shown, bounds, unit = self.value * 1e6, table.displacement_boundaries_um, "µm"
+        bound = f"> {bounds[i - 1]:g}" if i else f"<= {bounds[0]:g}"
+        return f"zone {self.zone}, {shown:.3g} {unit} RMS {bound}"
+
+
+class JudgedRow:
+    """What a row holding ``judged`` (a :class:`CodeZone`) and ``table`` says: the zone, the
+    deciding quantity's value and limit [m/s or m], their ratio, and the verdict's text (with
+    the row's ``direction_text``)."""
+
+    @property
+    def zone(self) -> str:
+        return self.judged.zone
+
+    @property
+    def value(self) -> float:
+        return self.judged.value
+
+    @property
+    def limit(self) -> float:
+        return self.judged.limit
+
+    @property
+    def ratio(self) -> float:
+        return self.judged.ratio
+
+    @property
+    def verdict_text(self) -> str:
+        """E.g. ``"ISO 10816-3, group 2, rigid: zone C, 3.1 mm/s RMS > 2.8 (horizontal)"`` (the code's units)."""
+        return f"{self.table.title}: {self.judged.describe(self.table)} ({self.direction_text})"
+
+
+def code_zone(table: ZoneTable, velocity_rms: float, displacement_rms: float, speed_rpm: float,
+              acceptable: str | None) -> CodeZone:
+    """Zone of a point with r.m.s. velocity [m/s] and displacement [m] at a machine speed [rpm]:
+    the velocity's zone, and below :data:`DISPLACEMENT_SPEED_RPM` the worse of it and the
+    displacement's (module docstring). ``acceptable``: the scene's ``acceptable_zone`` (None: B),
+    whose upper boundary is the row's limit.
+
+    >>> t = TABLES["ISO 10816-3", 2, "rigid"]
+    >>> z = code_zone(t, 2.0e-3, 60e-6, 300.0, None)
+    >>> z.zone, z.quantity, z.velocity_zone, z.describe(t)
+    ('C', 'displacement', 'B', 'zone C, 60 µm RMS > 45')
+    >>> code_zone(t, 2.0e-3, 60e-6, 1500.0, None).zone
+    'B'
+    """
+    highest = ZONES.index(acceptable or "B")
+    index, decides = code_zone_index(velocity_rms, displacement_rms, table, speed_rpm)
+    by_velocity = zone(velocity_rms, table)
+    by_displacement = displacement_zone(displacement_rms, table) if speed_rpm < DISPLACEMENT_SPEED_RPM else None
+    if decides:
+        return CodeZone(ZONES[int(index)], "displacement", displacement_rms, table.displacement_boundaries[highest],
+                        by_velocity, by_displacement)
+    return CodeZone(ZONES[int(index)], "velocity", velocity_rms, table.boundaries[highest], by_velocity, by_displacement)
 
 
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
@@ -128,23 +249,16 @@ def zone_verdicts(acceptable: str | None) -> tuple[Outcome, Outcome, Outcome, Ou
 
 def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | None) -> list[str]:
     """Why the code may not apply to this machine: speed outside its range, power unknown or
-    outside the group's range, a displacement boundary the code sets below 600 r/min that is not
-    stored. Empty when it applies.
+    outside the group's range. Empty when it applies.
 
-    >>> application_warnings(TABLES["ISO 10816-3", 2, "rigid"], 250.0, 100.0)[0][:60]
-    'ISO 10816-3 judges machines below 600 r/min by their r.m.s. '
+    >>> application_warnings(TABLES["ISO 10816-3", 2, "rigid"], 100.0, 100.0)[0]
+    'ISO 10816-3 applies to speeds of 120 to 15000 rpm; the machine runs at 100 rpm'
     """
     found = []
     lo, hi = table.speed_range_rpm
     if not lo <= speed_rpm <= hi:
         found.append(
             f"{table.code} applies to speeds of {lo:g} to {hi:g} rpm; the machine runs at {speed_rpm:.6g} rpm"
-        )
-    if speed_rpm < DISPLACEMENT_SPEED_RPM and table.displacement_boundaries_um is None:
-        found.append(
-            f"{table.code} judges machines below {DISPLACEMENT_SPEED_RPM:g} r/min by their r.m.s. displacement"
-            f" as well as the velocity ({table.clause}, displacement columns); those boundaries are not stored"
-            f" in fcalc: only the velocity zone is judged here - check the displacement against the printed table"
         )
     above, upto = table.power_range_kw
     if power_kw is None:
@@ -160,5 +274,6 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "ZoneTable", "application_warnings", "zone",
-           "zone_index", "zone_outcome", "zone_verdicts"]
+__all__ = ["CODES", "DISPLACEMENT_SPEED_RPM", "TABLES", "ZONES", "CodeZone", "JudgedRow", "ZoneTable",
+           "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "zone", "zone_index",
+           "zone_outcome", "zone_verdicts"]

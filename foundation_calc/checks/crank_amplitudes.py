@@ -28,7 +28,15 @@ from foundation_calc.checks.crank_resonance import (
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.codes import TABLES, ZONES, ZoneTable, application_warnings, zone, zone_outcome
+from foundation_calc.checks.codes import (
+    TABLES,
+    CodeZone,
+    JudgedRow,
+    ZoneTable,
+    application_warnings,
+    code_zone,
+    zone_outcome,
+)
 from foundation_calc.checks.limits import QUANTITIES, LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.solvers.crank.averaged import averaged_response
@@ -102,37 +110,32 @@ class Approximation:
 
 
 @dataclass(frozen=True)
-class CodeRow:
-    """The zone of one point's RMS velocity in a code's table.
+class CodeRow(JudgedRow):
+    """The zone of one point in a code's table.
 
-    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s]; the larger
-    one (``governing``) gives the zone. ``limit``: the boundary over which the design fails [m/s].
+    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s];
+    ``displacement``: its RMS displacement (horizontal, vertical) [m]. The larger velocity, and
+    below 600 r/min the larger displacement as well, give the zone (``judged``, which says which
+    quantity decides); ``governing``: the direction of the deciding quantity's larger value.
     """
 
     point: str
     horizontal: float
     vertical: float
+    displacement: tuple[float, float]
     governing: str
-    zone: str
+    judged: CodeZone
     table: ZoneTable
-    limit: float
     outcome: Outcome
 
     @property
-    def value(self) -> float:
-        return max(self.horizontal, self.vertical)
+    def direction_text(self) -> str:
+        return self.governing
 
     @property
-    def ratio(self) -> float:
-        return self.value / self.limit
-
-    @property
-    def verdict_text(self) -> str:
-        """E.g. ``"ISO 10816-3, group 2, rigid: zone C, 3.1 mm/s RMS > 2.8"`` (mm/s, the code's unit)."""
-        i = ZONES.index(self.zone)
-        mm_s = f"{self.value * 1e3:.3g} mm/s RMS"
-        bound = f"> {self.table.boundaries_mm_s[i - 1]:g}" if i else f"<= {self.table.boundaries_mm_s[0]:g}"
-        return f"{self.table.title}: zone {self.zone}, {mm_s} {bound} ({self.governing})"
+    def quantity(self) -> str:
+        """``"r.m.s. velocity"`` or ``"r.m.s. displacement"``."""
+        return f"r.m.s. {self.judged.quantity}"
 
 
 @dataclass(frozen=True)
@@ -327,7 +330,8 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
 
 
 def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
-    """Zone of every point's RMS velocity in the scene's code table, and why the code may not apply."""
+    """Zone of every point's RMS velocity (and below 600 r/min its RMS displacement) in the scene's
+    code table, and why the code may not apply."""
     code = getattr(limits, "code", None)
     if code is None:
         return (), ()
@@ -336,14 +340,16 @@ def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeR
     notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
     if approx.resonant:
         return (), notes
-    highest = limits.acceptable_zone or "B"  # zone B warns by default: C is the first that fails
-    limit = table.boundaries[ZONES.index(highest)]
+    speed_rpm = rpm_from_omega(omega)
     rows = []
     for name, values in approx.rms.items():
         horizontal, vertical = (float(v) for v in values.velocity)
-        governing = "horizontal" if horizontal >= vertical else "vertical"
-        z = zone(max(horizontal, vertical), table)
-        rows.append(CodeRow(name, horizontal, vertical, governing, z, table, limit, zone_outcome(z, limits.acceptable_zone)))
+        displacement = tuple(float(x) for x in values.displacement)
+        judged = code_zone(table, max(horizontal, vertical), max(displacement), speed_rpm, limits.acceptable_zone)
+        pair = (horizontal, vertical) if judged.quantity == "velocity" else displacement
+        governing = "horizontal" if pair[0] >= pair[1] else "vertical"
+        rows.append(CodeRow(name, horizontal, vertical, displacement, governing, judged, table,
+                            zone_outcome(judged.zone, limits.acceptable_zone)))
     return tuple(rows), notes
 
 

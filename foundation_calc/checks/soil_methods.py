@@ -6,7 +6,7 @@ dashpots, the uncoupled frequencies of the block and the coupled k0, p1, p2 of t
 zero-order operator (4.5)-(4.7), and methods that disagree by more than
 :data:`DISAGREEMENT_FACTOR` are named.
 
-A frequency-dependent method (``"gazetas"``) gives each mode its springs at its own frequency:
+A frequency-dependent method (``"gazetas"``, ``"pais_kausel"``) gives each mode its springs at its own frequency:
 the frequencies solve ω = p(K(ω)) (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`)
 and are reported beside their static values, each damping ratio is taken at its own mode's
 frequency, and :class:`DynamicRow` tables K and C at the operating speed and at each mode.
@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, HALF_SPACE_METHODS
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, zero_order_frequencies
 from foundation_calc.solvers.soil.springs import uncoupled_frequencies
@@ -157,7 +158,7 @@ def _method_result(scene, method: str) -> MethodResult:
     M_tot, h = scene.total_mass, f.cog_height
     I_0 = f.moment_of_inertia + M_tot * h**2
     s = scene.soil_springs(method)
-    dependent = method == "gazetas"  # the frequency-dependent method (Soil.frequency_dependent)
+    dependent = method in FREQUENCY_DEPENDENT_METHODS  # (Soil.frequency_dependent)
     static = _static_frequencies(scene, s, M_tot, I_0)
     freqs = _mode_frequencies(scene, method, M_tot, I_0) if dependent else static
     ratios = {"xi_z": float(s.xi_z), "xi_x": float(s.xi_x), "xi_phi": float(s.xi_phi)}
@@ -215,7 +216,7 @@ def _frequency_range(scene, results) -> list[str]:
     """Where a0 leaves the range a half-space method was fitted for: the frequency-independent
     analogs beyond :data:`A0_RANGE` at the operating speed or a mode, the frequency-dependent
     method beyond its fits' :data:`~foundation_calc.solvers.soil.impedance.A0_FITTED`."""
-    if scene.soil.method_used not in ("lysmer", "gazetas"):
+    if scene.soil.method_used not in HALF_SPACE_METHODS:
         return []
     from foundation_calc.solvers.soil.impedance import A0_FITTED
 
@@ -247,9 +248,10 @@ def compare_soil_methods(scene) -> SoilComparison:
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
     findings += _frequency_range(scene, results)
-    if scene.foundation.embedment and scene.soil.method_used != "gazetas":
+    if scene.foundation.embedment and scene.soil.method_used not in FREQUENCY_DEPENDENT_METHODS:
         findings.append(
-            f"foundation.embedment = {scene.foundation.embedment:g} m is used by method 'gazetas' only;"
+            f"foundation.embedment = {scene.foundation.embedment:g} m is used by methods 'gazetas' and"
+            " 'pais_kausel' only;"
             f" method {scene.soil.method_used!r} takes the base as a surface footing"
         )
     findings += [

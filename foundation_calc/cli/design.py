@@ -35,21 +35,30 @@ WriteOpt = Annotated[Optional[Path], typer.Option(
 )]
 
 
-def _evaluator(kind: str, scene, document, source: str):
+def _evaluator(kind: str, scene, document, source: str, given: dict[str, float]):
     """(evaluate(batch), its name, the largest grid it takes, the refinement's factor): the kind's
     vectorised evaluator, or the reference evaluator (fcalc check's path, candidate by candidate)
-    with a note on speed, refining at half the grid step rather than a fifth."""
+    with a note on speed, refining at half the grid step rather than a fifth. A vectorised
+    evaluator that does not take the scene (NotImplementedError on the scene's own block, e.g. a
+    crank scene's [[loads]]) leaves it to the reference evaluator, and the name says why."""
     import functools
     import importlib
+
+    import numpy as np
 
     from foundation_calc.checks.design import grid, reference
     from foundation_calc.checks.design.candidates import EVALUATORS
     from foundation_calc.checks.design.search import REFINE
 
+    why = f"no vectorised evaluator for {kind}"
     if kind in EVALUATORS:
-        module = importlib.import_module(EVALUATORS[kind])
-        return functools.partial(module.evaluate, scene), f"vectorised evaluator of {kind}", grid.MAX_CANDIDATES, REFINE
-    name = f"no vectorised evaluator for {kind}: each candidate through fcalc check's path, about 10-30 ms each"
+        evaluate = functools.partial(importlib.import_module(EVALUATORS[kind]).evaluate, scene)
+        try:
+            evaluate({key: np.array([value]) for key, value in given.items()})
+            return evaluate, f"vectorised evaluator of {kind}", grid.MAX_CANDIDATES, REFINE
+        except NotImplementedError as exc:
+            why = f"the vectorised evaluator of {kind} does not take this scene ({exc})"
+    name = f"{why}: each candidate through fcalc check's path, about 10-30 ms each"
     return functools.partial(reference.evaluate, document, source=source), name, grid.MAX_REFERENCE_CANDIDATES, 2
 
 
@@ -100,7 +109,7 @@ def design(
     document = read_scene(scene)
     try:
         given = given_dimensions(document)
-        evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded, document, str(scene))
+        evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded, document, str(scene), given)
         searched_grid = grid(loaded.kind, [parse_range(text) for text in vary], step, points, maximum, evaluator)
     except VaryError as exc:
         raise typer.BadParameter(str(exc), param_hint="'--vary'") from None

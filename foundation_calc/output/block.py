@@ -113,8 +113,9 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
         "acceptable_zone": limits.acceptable_zone,
         "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
         "points": [
-            {"point": z.point, "governing": z.direction, "value": z.value, "zone": z.zone, "limit": z.limit,
-             "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
+            {"point": z.point, "quantity": z.judged.quantity, "governing": z.direction, "value": z.value,
+             "velocity_zone": z.judged.velocity_zone, "displacement_zone": z.judged.displacement_zone,
+             "zone": z.zone, "limit": z.limit, "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
             for z in report.zone_rows
         ],
         "warnings": list(report.code_warnings),
@@ -215,7 +216,9 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
                         f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
         out.print(lim)
     if report.zone_rows:
-        z = _table("Zones of the RMS velocity", ("point", "zone", "verdict"))
+        shown = "Zones of the RMS velocity" + (
+            " and, below 600 r/min, displacement" if any(r.judged.displacement_zone for r in report.zone_rows) else "")
+        z = _table(shown, ("point", "zone", "verdict"))
         for r in report.zone_rows:
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)

@@ -75,10 +75,15 @@ def code_document(report: AmplitudeReport, limits) -> dict | None:
         "acceptable_zone": limits.acceptable_zone,
         "clause": table.clause if table else None,
         "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
+        "displacement_boundaries": dict(zip(("A/B", "B/C", "C/D"), table.displacement_boundaries)) if table else None,
         "points": [
             {
                 "point": row.point,
                 "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
+                "displacement_rms": dict(zip(("horizontal", "vertical"), row.displacement)),
+                "quantity": row.judged.quantity,
+                "velocity_zone": row.judged.velocity_zone,
+                "displacement_zone": row.judged.displacement_zone,
                 "governing": row.governing,
                 "value": row.value,
                 "zone": row.zone,
@@ -336,17 +341,26 @@ def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     rows = report.code_rows
     t = rows[0].table
     bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
-    table = Table(
-        title=f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s)", title_justify="left"
-    )
+    judged = [row.judged.displacement_zone is not None for row in rows]
+    title = f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s"
+    if any(judged):
+        title += "; below 600 r/min also the RMS displacement, " + ", ".join(
+            f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.displacement_boundaries_um)) + " µm"
+    table = Table(title=title + ")", title_justify="left")
     unit = units.label("velocity")
-    for col in ("point", f"horizontal [{unit}]", f"vertical [{unit}]", "governs", "zone", f"fails over [{unit}]", "verdict"):
-        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col else "left")
+    columns = ["point", f"horizontal [{unit}]", f"vertical [{unit}]"]
+    if any(judged):
+        columns += [f"displacement [{units.label('amplitude')}]", "by"]
+    columns += ["governs", "zone", "fails over", "verdict"]
+    for col in columns:
+        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col or col == "fails over" else "left")
     for row in rows:
-        table.add_row(
-            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
-            row.governing, row.zone, fmt(units.convert("velocity", row.limit)), verdict_text(row.outcome.value),
-        )
+        cells = [Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical))]
+        if any(judged):
+            cells += [fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity]
+        shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
+        cells += [row.governing, row.zone, units.show(shown, row.limit), verdict_text(row.outcome.value)]
+        table.add_row(*cells)
     return table
 
 

@@ -116,8 +116,8 @@ def print_design(sizing: Sizing) -> None:
     document = design_document(sizing)
     found = sizing.found
     console.print(f"[bold]fcalc design[/]: {escape(sizing.source)}" + (f" — {escape(sizing.name)}" if sizing.name else ""))
-    sizes = " × ".join(str(len(a.values)) for a in found.grid.axes)
-    console.print(f"grid: {sizes} = {found.grid.size} candidates in {found.chunks} chunk{'s' * (found.chunks != 1)}"
+    sizes = " × ".join(str(len(a.values)) for a in found.grid.axes) + " = " * (len(found.grid.axes) > 1)
+    console.print(f"grid: {sizes}{found.grid.size} candidates in {found.chunks} chunk{'s' * (found.chunks != 1)}"
                   f" of at most {sizing.chunk}, {found.seconds:.2f} s ({escape(sizing.evaluator)})")
     for a in document["grid"]["axes"]:
         refined = f", refined to {a['refined_step']:.3g}" if a["refined_step"] else ""

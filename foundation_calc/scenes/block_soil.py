@@ -14,7 +14,7 @@ from typing import Annotated, ClassVar, Literal
 from pydantic import Field, model_validator
 
 from foundation_calc.scenes.common import quantity
-from foundation_calc.scenes.soil import METHOD_KEYS, METHOD_REQUIRED, Soil
+from foundation_calc.scenes.soil import HALF_SPACE_METHODS, METHOD_KEYS, METHOD_REQUIRED, Soil
 
 #: Six components: along x, y, z and about x, y, z.
 Six = Annotated[list[float], Field(min_length=6, max_length=6)]
@@ -25,6 +25,7 @@ BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "coefficients": ("c_z", "c_x", "c_phi", "c_psi", "damping"),
     "lysmer": METHOD_KEYS["lysmer"],
     "gazetas": METHOD_KEYS["gazetas"],
+    "pais_kausel": METHOD_KEYS["pais_kausel"],
     "sp26": METHOD_KEYS["sp26"],
 }
 
@@ -45,11 +46,12 @@ class BlockSoil(Soil):
         " Barkan's coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
     )
 
-    method: Literal["springs", "coefficients", "lysmer", "gazetas", "sp26"] | None = quantity(
+    method: Literal["springs", "coefficients", "lysmer", "gazetas", "pais_kausel", "sp26"] | None = quantity(
         "-", "-", 'how the six springs are found: "springs" (stiffness and dashpot at O given), "coefficients"'
-        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs) or \"gazetas\" (Gazetas 1991,"
-        " surface) from shear_modulus or shear_wave_velocity, density, poisson, \"sp26\" (SP 26.13330 from"
-        " deformation_modulus and soil_class); default \"coefficients\" when c_z is given", None,
+        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs), \"gazetas\" (Gazetas 1991,"
+        " surface) or \"pais_kausel\" (Pais & Kausel 1988, surface) from shear_modulus or shear_wave_velocity,"
+        " density, poisson, \"sp26\" (SP 26.13330 from deformation_modulus and soil_class); default"
+        " \"coefficients\" when c_z is given", None,
         examples=["springs"],
     )
     stiffness: Six | None = quantity(
@@ -104,7 +106,7 @@ class BlockSoil(Soil):
             values = getattr(self, key)
             if values is not None and any(v < 0 for v in values):
                 raise ValueError(f"soil.{key} must be >= 0 in every direction (got {list(values)})")
-        if method in ("lysmer", "gazetas") and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
+        if method in HALF_SPACE_METHODS and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
             raise ValueError(f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and soil.shear_wave_velocity [m/s]")
         if self.stiffness is not None and not all(self.stiffness):
             raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
@@ -124,7 +126,7 @@ class BlockSoil(Soil):
         method = self.method_used
         if method == "springs":
             return list(self.stiffness), None
-        if method in ("lysmer", "gazetas", "sp26"):
+        if method in (*HALF_SPACE_METHODS, "sp26"):
             along, across, (k_t, xi_t) = self._planes(L, B, M, J_O)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
             return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
@@ -140,8 +142,8 @@ class BlockSoil(Soil):
     def _planes(self, L: float, B: float, M: float, J_O):
         """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
         plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
-        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' K_t with material damping (gazetas,
-        surface footing), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87)."""
+        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's K_t with material
+        damping (gazetas, pais_kausel; surface footing), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87)."""
         method, D = self.method_used, self.material_damping or 0.0
         if method == "sp26":
             from foundation_calc.solvers.constants import GRAVITY
@@ -160,9 +162,13 @@ class BlockSoil(Soil):
             return (lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], D),
                     lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], D),
                     lysmer_torsion(self.G, self.density, L, B, J_O[2], D))
-        from foundation_calc.solvers.soil.gazetas import gazetas_springs
-        from foundation_calc.solvers.soil.torsion import gazetas_torsion
+        if method == "pais_kausel":
+            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
+            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_torsion as torsion
+        else:
+            from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs
+            from foundation_calc.solvers.soil.torsion import gazetas_torsion as torsion
 
-        return (gazetas_springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D),
-                gazetas_springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D),
-                (gazetas_torsion(self.G, L, B), D))
+        return (springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D),
+                springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D),
+                (torsion(self.G, L, B), D))

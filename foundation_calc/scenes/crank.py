@@ -107,7 +107,8 @@ class Limits(SceneModel):
         "a_rms,max", "m/s²", "largest allowed RMS acceleration, each point and direction", None, gt=0, examples=[0.2]
     )
     code: Literal[CODE_NAMES] | None = quantity(
-        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity of C and of every point", None,
+        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity of C and of every point (below"
+        " 600 rpm the RMS displacement as well)", None,
         examples=["ISO 10816-3"],
     )
     machine_group: Literal[1, 2] | None = quantity(
@@ -379,9 +380,10 @@ class CrankScene(OnSoil, SceneModel):
         """K_z, K_x, K_φ and damping ratios of the soil by ``method`` (default: the scene's own).
 
         ``"coefficients"``: K = c S, c1 S, c_φ I1 and ``soil.damping``; ``"lysmer"``, ``"gazetas"``,
-        ``"sp26"``: the solvers of :mod:`foundation_calc.solvers.soil` on the rectangular base
-        (L, B), the total mass M_tot and I_0 = I_c + M_tot h² about the base axis. ``omega``
-        [rad/s] is the frequency at which a frequency-dependent method (``"gazetas"``) takes its
+        ``"pais_kausel"``, ``"sp26"``: the solvers of :mod:`foundation_calc.solvers.soil` on the
+        rectangular base (L, B), the total mass M_tot and I_0 = I_c + M_tot h² about the base axis.
+        ``omega`` [rad/s] is the frequency at which a frequency-dependent method (``"gazetas"``,
+        ``"pais_kausel"``) takes its
         springs and dashpots; the other methods are frequency-independent and ignore it.
         """
         f, s = self.foundation, self.soil
@@ -398,10 +400,12 @@ class CrankScene(OnSoil, SceneModel):
         I_0 = f.moment_of_inertia + M_tot * f.cog_height**2
         if method == "lysmer":
             return lysmer_springs(s.G, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
-        from foundation_calc.solvers.soil.gazetas import gazetas_springs  # numpy: only when asked for
+        if method == "pais_kausel":
+            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
+        else:
+            from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs  # numpy: only when asked for
 
-        return gazetas_springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0,
-                               s.material_damping or 0.0, omega)
+        return springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0, s.material_damping or 0.0, omega)
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""

@@ -1,8 +1,8 @@
 """The ``[soil]`` table of a crank-foundation scene: one method and the keys that method takes.
 
 ``method = "coefficients"`` (the default when ``c_z`` is given) takes Barkan's coefficients as the
-paper does; ``"lysmer"`` and ``"gazetas"`` take the soil's shear modulus (or shear wave
-velocity), density and Poisson's ratio; ``"sp26"`` takes the static deformation modulus and the
+paper does; ``"lysmer"``, ``"gazetas"`` and ``"pais_kausel"`` take the soil's shear modulus (or
+shear wave velocity), density and Poisson's ratio; ``"sp26"`` takes the static deformation modulus and the
 soil class. A key of another method, or a misspelt one, is an error that lists the method's keys.
 """
 
@@ -17,8 +17,14 @@ from foundation_calc.scenes.common import SceneModel, quantity
 from foundation_calc.scenes.plausibility import judge
 from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS
 
-SoilMethod = Literal["coefficients", "lysmer", "gazetas", "sp26"]
-SOIL_METHODS: tuple[str, ...] = ("coefficients", "lysmer", "gazetas", "sp26")
+SoilMethod = Literal["coefficients", "lysmer", "gazetas", "pais_kausel", "sp26"]
+SOIL_METHODS: tuple[str, ...] = ("coefficients", "lysmer", "gazetas", "pais_kausel", "sp26")
+
+#: The methods of the elastic half-space (shear modulus or V_s, density, Poisson's ratio).
+HALF_SPACE_METHODS: tuple[str, ...] = ("lysmer", "gazetas", "pais_kausel")
+
+#: The methods whose springs and dashpots change with frequency (and that take the embedment).
+FREQUENCY_DEPENDENT_METHODS: tuple[str, ...] = ("gazetas", "pais_kausel")
 
 _HALF_SPACE_KEYS = ("shear_modulus", "shear_wave_velocity", "density", "poisson", "material_damping")
 
@@ -27,6 +33,7 @@ METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "coefficients": ("c_z", "c_x", "c_phi", "damping"),
     "lysmer": _HALF_SPACE_KEYS,
     "gazetas": _HALF_SPACE_KEYS,
+    "pais_kausel": _HALF_SPACE_KEYS,
     "sp26": ("deformation_modulus", "soil_class"),
 }
 
@@ -38,6 +45,7 @@ METHOD_REQUIRED: dict[str, tuple[str, ...]] = {
     "coefficients": ("c_z", "c_x"),
     "lysmer": ("density", "poisson"),
     "gazetas": ("density", "poisson"),
+    "pais_kausel": ("density", "poisson"),
     "sp26": ("deformation_modulus", "soil_class"),
 }
 
@@ -47,16 +55,17 @@ def _method_keys(method: str) -> str:
 
 
 class Soil(SceneModel):
-    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer or gazetas (shear_modulus or shear_wave_velocity, density, poisson, material_damping), sp26 (deformation_modulus, soil_class)."""
+    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer, gazetas or pais_kausel (shear_modulus or shear_wave_velocity, density, poisson, material_damping), sp26 (deformation_modulus, soil_class)."""
 
     #: What a missing ``[soil]`` table needs, for the message (no single key is required).
     required_keys_text: ClassVar[str] = (
-        'c_z, c_x (Barkan\'s coefficients), or method = "lysmer", "gazetas" or "sp26" and its keys'
+        'c_z, c_x (Barkan\'s coefficients), or method = "lysmer", "gazetas", "pais_kausel" or "sp26" and its keys'
     )
 
     method: SoilMethod | None = quantity(
         "-", "-", 'how the springs are found: "coefficients" (Barkan\'s c_z, c_x given), "lysmer"'
-        ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "sp26" (SP 26.13330 from the static'
+        ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "pais_kausel" (Pais & Kausel 1988),'
+        ' "sp26" (SP 26.13330 from the static'
         ' modulus); default "coefficients" when c_z is given', None, examples=["lysmer"],
     )
     c_z: float | None = quantity("c", "N/m³", "coefficient of elastic uniform compression", None, gt=0, examples=[4.0e7])
@@ -106,7 +115,7 @@ class Soil(SceneModel):
     range_keys: ClassVar[tuple[str, ...]] = ("modulus_range",)
     #: What to say when neither a method nor c_z is given.
     no_method_text: ClassVar[str] = (
-        'give soil.method = "lysmer", "gazetas" or "sp26" with its keys, or Barkan\'s'
+        'give soil.method = "lysmer", "gazetas", "pais_kausel" or "sp26" with its keys, or Barkan\'s'
         " coefficients soil.c_z and soil.c_x [N/m³] (method \"coefficients\")"
     )
 
@@ -129,8 +138,10 @@ class Soil(SceneModel):
                 continue
             owners = [m for m, keys_of in cls.method_keys.items() if key in keys_of]
             if owners:
+                names = [repr(m) for m in owners]
+                named = names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
                 raise ValueError(
-                    f"soil.{key} is a key of method {' and '.join(map(repr, owners))}, not of"
+                    f"soil.{key} is a key of method{'s' if len(names) > 1 else ''} {named}, not of"
                     f" {method!r}; the keys of {method!r} are {keys}"
                 )
             close = difflib.get_close_matches(str(key), sorted(allowed), n=1, cutoff=0.6)
@@ -178,7 +189,7 @@ class Soil(SceneModel):
                 f"method {method!r} needs {', '.join('soil.' + k for k in missing)}"
                 f" (its keys: {_method_keys(method)})"
             )
-        if method in ("lysmer", "gazetas") and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
+        if method in HALF_SPACE_METHODS and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
             raise ValueError(
                 f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and"
                 " soil.shear_wave_velocity [m/s]"
@@ -192,9 +203,9 @@ class Soil(SceneModel):
 
     @property
     def frequency_dependent(self) -> bool:
-        """True when the method's springs and dashpots change with frequency (``"gazetas"``);
-        Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
-        return self.method_used == "gazetas"
+        """True when the method's springs and dashpots change with frequency (``"gazetas"``,
+        ``"pais_kausel"``); Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
+        return self.method_used in FREQUENCY_DEPENDENT_METHODS
 
     @property
     def G(self) -> float:
@@ -230,9 +241,9 @@ class Soil(SceneModel):
         return found
 
     def methods_allowed(self) -> tuple[str, ...]:
-        """Every method the data allow: the half-space data feed both Lysmer and Gazetas."""
-        if self.method_used in ("lysmer", "gazetas"):
-            return ("lysmer", "gazetas")
+        """Every method the data allow: the half-space data feed Lysmer, Gazetas and Pais & Kausel."""
+        if self.method_used in HALF_SPACE_METHODS:
+            return HALF_SPACE_METHODS
         return (self.method_used,)
 
 

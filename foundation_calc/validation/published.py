@@ -84,19 +84,22 @@ def _lewis() -> float:
     return LEWIS_COEFFICIENT
 
 
-def _iso_boundaries(group: int, foundation: str) -> tuple[float, ...]:
-    """The velocities [mm/s] at which :func:`~foundation_calc.checks.codes.zone` changes zone,
-    found by bisection on the classification itself (not read from the stored table)."""
-    from foundation_calc.checks.codes import TABLES, ZONES, zone
+def _iso_boundaries(group: int, foundation: str, quantity: str) -> tuple[float, ...]:
+    """The values at which the code's classification of ``quantity`` changes zone, found by
+    bisection on the classification itself (not read from the stored table): velocities [mm/s]
+    by :func:`~foundation_calc.checks.codes.zone`, displacements [µm] by
+    :func:`~foundation_calc.checks.codes.displacement_zone`."""
+    from foundation_calc.checks.codes import TABLES, ZONES, displacement_zone, zone
 
     table = TABLES["ISO 10816-3", group, foundation]
+    classify, shown = (zone, 1e3) if quantity == "velocity" else (displacement_zone, 1e6)
     found = []
     for above in ZONES[1:]:
-        lo, hi = 0.0, 0.1  # m/s
+        lo, hi = 0.0, 0.1  # m/s or m, above every boundary
         for _ in range(80):
             mid = 0.5 * (lo + hi)
-            lo, hi = (lo, mid) if ZONES.index(zone(mid, table)) >= ZONES.index(above) else (mid, hi)
-        found.append(hi * 1e3)
+            lo, hi = (lo, mid) if ZONES.index(classify(mid, table)) >= ZONES.index(above) else (mid, hi)
+        found.append(hi * shown)
     return tuple(found)
 
 
@@ -114,11 +117,14 @@ def _sum(name: str) -> float:
     return float(_platform().horizontal_sums[name]) / 1e8
 
 
-def _iso_case(group: int, foundation: str, printed: str) -> Case:
+def _iso_case(group: int, foundation: str, printed: str, quantity: str = "velocity") -> Case:
+    unit, suffix = ("mm/s", "") if quantity == "velocity" else ("µm", "-displacement")
+    classify = "zone" if quantity == "velocity" else "displacement_zone"
     return printed_case(
-        f"iso-10816-3-group{group}-{foundation}", f"group {group}, {foundation} [mm/s RMS]",
-        "ISO 10816-3 zone boundaries A/B, B/C, C/D", "ISO", f"Table {'A.1' if group == 1 else 'A.2'}", printed,
-        lambda: _iso_boundaries(group, foundation), "checks.codes.zone (bisection on the zone it returns)",
+        f"iso-10816-3-group{group}-{foundation}{suffix}", f"group {group}, {foundation} [{unit} RMS]",
+        f"ISO 10816-3 zone boundaries A/B, B/C, C/D of the r.m.s. {quantity}", "ISO",
+        f"Table {'A.1' if group == 1 else 'A.2'}", printed,
+        lambda: _iso_boundaries(group, foundation, quantity), f"checks.codes.{classify} (bisection on the zone it returns)",
     )
 
 
@@ -155,6 +161,10 @@ CASES: tuple[Case, ...] = (
     _iso_case(1, "flexible", "3.5 / 7.1 / 11.0"),
     _iso_case(2, "rigid", "1.4 / 2.8 / 4.5"),
     _iso_case(2, "flexible", "2.3 / 4.5 / 7.1"),
+    _iso_case(1, "rigid", "29 / 57 / 90", "displacement"),
+    _iso_case(1, "flexible", "45 / 90 / 140", "displacement"),
+    _iso_case(2, "rigid", "22 / 45 / 71", "displacement"),
+    _iso_case(2, "flexible", "37 / 71 / 113", "displacement"),
     printed_case("platform-3.18", "(c33 + c23)/c3 [-]", BGN, "BC", "Eq. (3.18)", "0.499", _stiffness_ratio, DESIGN),
     printed_case("platform-3.19", "c22 + c32 [1e8 N/m]", BGN, "BC", "Eq. (3.19)", "2.467", lambda: _sum("c22+c32"),
                  DESIGN),

@@ -129,7 +129,8 @@ def _amplitudes(scene, model, modes, excitations, place):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
-    from foundation_calc.checks.codes import TABLES, ZONES, zone_index, zone_verdicts
+    from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
+    from foundation_calc.units import rpm_from_omega
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
 
@@ -163,11 +164,14 @@ def _amplitudes(scene, model, modes, excitations, place):
             reasons += [f"{quantity} {r}" for r in rows]
         if limits.code is not None:
             table = TABLES[limits.code, limits.machine_group, limits.foundation]
-            boundary = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]
+            highest = ZONES.index(limits.acceptable_zone or "B")
             top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
+            top_x = motion.displacement_rms.max(axis=-1)  # judged too below 600 rpm
+            slowest = min(rpm_from_omega(exc.omega) for exc in excitations)
+            index, by_x = code_zone_index(top, top_x, table, slowest)
             verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
-            worst = verdicts[zone_index(top, table)].max(axis=-1)
-            ratios.append(top / boundary)
+            worst = verdicts[index].max(axis=-1)
+            ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")

@@ -63,7 +63,8 @@ class Axis:
     @property
     def step(self) -> float:
         """The grid's step [unit]; 0 for a single value."""
-        return float(self.values[1] - self.values[0]) if len(self.values) > 1 else 0.0
+        span = float(self.values[-1] - self.values[0])
+        return round(span / (len(self.values) - 1), 9) if len(self.values) > 1 else 0.0
 
 
 def axis(kind: str, given: Range, step: float | None = None, points: int | None = None) -> Axis:

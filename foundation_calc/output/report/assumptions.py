@@ -12,6 +12,8 @@ SOIL_MODELS = {
               " [RHW]: frequency-independent springs and radiation damping fitted for a0 < 1.5.",
     "gazetas": "Soil: uniform elastic half-space, Gazetas' static stiffnesses with embedment factors [Ga]"
                " and frequency-independent damping ratios.",
+    "pais_kausel": "Soil: uniform elastic half-space, Pais & Kausel's static stiffnesses with embedment"
+                   " factors [PK], Gazetas' dashpots and Pais & Kausel's frequency modifiers.",
     "sp26": "Soil: the code's coefficients from the static deformation modulus [SP26]; damping ratios of"
             " the code.",
 }

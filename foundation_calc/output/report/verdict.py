@@ -60,12 +60,13 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             row["source"],
         )
     code = doc.get("code")
-    velocity = DisplayUnits(velocity="mm/s")  # the codes' zones are in mm/s
+    code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
     for row in (code or {}).get("points", ()):
+        kind = "velocity" if row["quantity"] == "velocity" else "amplitude"
         yield (
-            f"{row['point']} RMS velocity ({row['governing']}), zone {row['zone']}",
-            quantity(velocity, "velocity", row["value"], row["limit"]),
-            "≤ " + quantity(velocity, "velocity", row["limit"]),
+            f"{row['point']} RMS {row['quantity']} ({row['governing']}), zone {row['zone']}",
+            quantity(code_units, kind, row["value"], row["limit"]),
+            "≤ " + quantity(code_units, kind, row["limit"]),
             ratio(row["ratio"]),
             row["verdict"],
             f"[ISO] {code['clause']}, group {code['machine_group']}, {code['foundation']}",

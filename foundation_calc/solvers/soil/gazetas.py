@@ -27,7 +27,9 @@ sidewall area, h = D - d/2 the depth of its centroid), Table 2::
     η_ry = 1 + 0.92 (d/L')^0.6 [1.5 + (d/L')^1.9 (d/D)^-0.6]
 
 (Some open implementations use B' in η_ry's first factor or the larger side as B'; the
-published table has L' there and B' the smaller half-side.)
+published table has L' there and B' the smaller half-side. Pais & Kausel's independent embedded
+rocking spring (:mod:`~foundation_calc.solvers.soil.pais_kausel`) sides with L': within 15 % of
+this K_ry for L'/B' = 1.5-4 and D/B' <= 0.5, where the B' reading is 19-28 % above it.)
 
 Dashpots and the change of the springs with frequency are those of
 :func:`~foundation_calc.solvers.soil.impedance.footing_impedance` (Gazetas' Tables 1-2 for the
@@ -83,7 +85,18 @@ def gazetas_springs(G, rho, nu, L, B, D, M_tot, I_0, material_damping, omega=0.0
     >>> round(float(s.K_z) / 1e6, 1), round(float(s.K_x) / 1e6, 1)
     (707.4, 549.8)
     """
-    K_z, K_h, K_phi = gazetas_static_springs(G, nu, L, B, D)
+    return footing_springs(gazetas_static_springs(G, nu, L, B, D), G, rho, nu, L, B, D, M_tot, I_0,
+                           material_damping, omega)
+
+
+def footing_springs(static, G, rho, nu, L, B, D, M_tot, I_0, material_damping, omega) -> SoilSprings:
+    """The springs K(ω) and damping ratios of a footing whose static springs ``static`` = (K_z,
+    K_x, K_φ) [N/m, N/m, N m/rad] a closed form gave (Gazetas', Pais & Kausel's): the dynamic
+    modifiers and radiation dashpots of
+    :func:`~foundation_calc.solvers.soil.impedance.footing_impedance` at ``omega`` [rad/s], each
+    ratio ξ = C/(2 sqrt(K m)) plus the material damping. Other parameters as :func:`gazetas_springs`.
+    """
+    K_z, K_h, K_phi = static
     z = footing_impedance(K_z, K_h, K_phi, G, rho, nu, L, B, D, omega)
     return SoilSprings(
         K_z=z.K_z,
@@ -137,4 +150,4 @@ def gazetas_static_springs(G, nu, L, B, D):
     return K_z * eta_z, K_h, K_phi
 
 
-__all__ = ["gazetas_springs", "gazetas_static_springs", "lysmer_analog_velocity"]
+__all__ = ["footing_springs", "gazetas_springs", "gazetas_static_springs", "lysmer_analog_velocity"]
