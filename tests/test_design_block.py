@@ -64,8 +64,10 @@ def _candidates(scene, count, seed):
             "block.height": b.height * rng.uniform(0.4, 1.8, count)}
 
 
-def _one(document, batch, i):
-    """Candidate ``i`` through the command's own path: its scene file, validated."""
+def _one(source, batch, i):
+    """Candidate ``i`` as ``fcalc check`` sees it: the scene document (or a scene's) with the block's
+    dimensions put in and the machines, loads and points moved with the block (checks/design/apply.py)."""
+    document = source if isinstance(source, dict) else source.model_dump(exclude_unset=True)
     return apply(document, {key: float(values[i]) for key, values in batch.items()})
 
 
