@@ -135,3 +135,21 @@ def test_a_block_on_pais_kausel_has_six_springs_near_gazetas(runner, tmp_path):
         springs[method] = [s["K"] for s in doc["springs"]]
     for pk, gz in zip(springs["pais_kausel"], springs["gazetas"]):
         assert pk == pytest.approx(gz, rel=0.11)
+
+
+@pytest.mark.parametrize("nu", [0.25, 0.33, 0.45])
+@pytest.mark.parametrize("ratio", [1.0, 1.5, 2.0])
+def test_the_torsion_rules_are_softer_than_the_half_space(ratio, nu):
+    """Barkan's c_ψ = 1.5 c_x and SP 26's C_ψ = C_z against the same ratios of the half-space's
+    springs (Pais & Kausel's and Gazetas', c_x the mean of both directions): 1.9-2.4 and 1.3-2.1
+    (README, block foundation's soil), so both rules make the torsion spring softer."""
+    from foundation_calc.scenes.block_soil import BARKAN_TORSION_RATIO, SP26_TORSION
+
+    L, B = 2.0 * ratio, 2.0
+    A, J = L * B, L * B * (L * L + B * B) / 12.0
+    for springs, torsion in ((pais_kausel_static_springs, pais_kausel_torsion), (gazetas_static_springs, gazetas_torsion)):
+        K_z, K_along, _ = springs(G, nu, L, B, 0.0)
+        K_across = springs(G, nu, B, L, 0.0)[1]
+        c_x, c_z, c_psi = (float(K_along) + float(K_across)) / (2 * A), float(K_z) / A, torsion(G, L, B) / J
+        assert 1.85 < c_psi / c_x < 2.45 and c_psi / c_x > BARKAN_TORSION_RATIO
+        assert 1.3 < c_psi / c_z < 2.1 and c_psi / c_z > SP26_TORSION[0]

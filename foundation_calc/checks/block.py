@@ -12,6 +12,10 @@ factor of its grid and where a critical speed p_j / n crosses a machine's speed,
 its coarser grid and at those crossings; each verdict is the worse of the soil as given and the
 range, and the range names its governing factor.
 
+On a frequency-dependent soil (Gazetas' impedance) every mode is taken at its own frequency and
+every order n of every machine is solved with the springs and dashpots at n ω
+(:mod:`~foundation_calc.solvers.block.response`).
+
 Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
 displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
 several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
@@ -34,6 +38,7 @@ from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
     block_modes,
+    consistent_modes,
     point_motion,
     resonances,
     resonant,
@@ -68,9 +73,8 @@ class ResonanceRow:
 
 @dataclass(frozen=True)
 class ZoneRow(JudgedRow):
-    """A point's zone in a vibration code: its largest RMS velocity and, when a machine runs below
-    600 r/min, its largest RMS displacement (``judged`` says which decides; ``direction`` is that
-    quantity's direction)."""
+    """A point's zone in a vibration code: its largest RMS velocity and its largest RMS displacement,
+    the more restrictive deciding (``judged`` says which; ``direction`` is that quantity's direction)."""
 
     point: str
     direction: str
@@ -222,16 +226,16 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_rows(motion: PointMotion, limits, speed_rpm: float) -> tuple[ZoneRow, ...]:
-    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and,
-    when the slowest machine runs below 600 r/min (``speed_rpm``), its largest RMS displacement."""
+def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
+    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and
+    its largest RMS displacement, the more restrictive deciding."""
     if limits.code is None:
         return ()
     table = TABLES[limits.code, limits.machine_group, limits.foundation]
     rows = []
     for p, name in enumerate(motion.names):
         v, x = motion.velocity_rms[p], motion.displacement_rms[p]
-        judged = code_zone(table, float(v.max()), float(x.max()), speed_rpm, limits.acceptable_zone)
+        judged = code_zone(table, float(v.max()), float(x.max()), limits.acceptable_zone)
         d = int(np.argmax(v if judged.quantity == "velocity" else x))
         rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table))
     return tuple(rows)
@@ -257,10 +261,12 @@ def check_block_as_given(scene) -> BlockReport:
     """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
     model = scene.model()
     excitations = scene.excitations()
-    modes = block_modes(model)
+    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
+    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     rows = resonance_rows(modes, excitations, scene.limits.detuning)
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
-    motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points])
+    motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
+                                             impedance=impedance)
     limits = scene.limits
     warnings = ()
     if limits.code is not None:
@@ -278,7 +284,7 @@ def check_block_as_given(scene) -> BlockReport:
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits, min(rpm_from_omega(e.omega) for e in excitations)),
+        zone_rows=() if motion is None else zone_rows(motion, limits),
         code_warnings=warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,

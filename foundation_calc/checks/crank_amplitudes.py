@@ -114,8 +114,8 @@ class CodeRow(JudgedRow):
     """The zone of one point in a code's table.
 
     ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s];
-    ``displacement``: its RMS displacement (horizontal, vertical) [m]. The larger velocity, and
-    below 600 r/min the larger displacement as well, give the zone (``judged``, which says which
+    ``displacement``: its RMS displacement (horizontal, vertical) [m]. The larger velocity and the
+    larger displacement give the zone, the more restrictive deciding (``judged``, which says which
     quantity decides); ``governing``: the direction of the deciding quantity's larger value.
     """
 
@@ -330,8 +330,8 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
 
 
 def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
-    """Zone of every point's RMS velocity (and below 600 r/min its RMS displacement) in the scene's
-    code table, and why the code may not apply."""
+    """Zone of every point's RMS velocity and RMS displacement in the scene's code table (the more
+    restrictive decides), and why the code may not apply."""
     code = getattr(limits, "code", None)
     if code is None:
         return (), ()
@@ -340,12 +340,11 @@ def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeR
     notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
     if approx.resonant:
         return (), notes
-    speed_rpm = rpm_from_omega(omega)
     rows = []
     for name, values in approx.rms.items():
         horizontal, vertical = (float(v) for v in values.velocity)
         displacement = tuple(float(x) for x in values.displacement)
-        judged = code_zone(table, max(horizontal, vertical), max(displacement), speed_rpm, limits.acceptable_zone)
+        judged = code_zone(table, max(horizontal, vertical), max(displacement), limits.acceptable_zone)
         pair = (horizontal, vertical) if judged.quantity == "velocity" else displacement
         governing = "horizontal" if pair[0] >= pair[1] else "vertical"
         rows.append(CodeRow(name, horizontal, vertical, displacement, governing, judged, table,

@@ -6,6 +6,14 @@ arithmetic as ``fcalc resonance`` (nearer of the zero-order and the averaged-ine
 speed). With base dashpots every point has a finite amplitude and a phase, at and through each
 resonance; without them a point whose margin is below the first approximation's resonant margin
 has no periodic solution: it is reported as resonant, never as an infinite amplitude.
+
+On a frequency-dependent soil (Gazetas', Pais & Kausel's impedance) a speed sweep is
+frequency-consistent, as ``fcalc amplitudes`` at each speed: every harmonic n ≥ 1 of every speed
+is solved with the soil's springs and dashpots at n ω (one batched first approximation and loads
+solve per harmonic over the whole chunk of speeds, harmonics spliced as
+:func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics` does; the mean on the static
+springs), and the resonance margins are to the natural frequencies that solve ω = p(K(ω)), which
+do not depend on the speed (:class:`DynamicSoil`). A soil sweep scales the static springs.
 """
 
 from __future__ import annotations
@@ -49,6 +57,20 @@ class CriticalSpeed:
     averaged: float
     band: float = 0.0
     judged: bool = True
+
+
+@dataclass(frozen=True)
+class DynamicSoil:
+    """A frequency-dependent soil along a speed sweep.
+
+    ``at(soil_frequency)``: (design, vendor loads) with the springs and dashpots taken at the
+    frequencies ``soil_frequency`` [rad/s] (an array, one per point; either part None when the
+    scene has none); ``zero``, ``averaged``: the natural frequencies that solve ω = p(K(ω))
+    (:func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`)."""
+
+    at: object
+    zero: object
+    averaged: object
 
 
 @dataclass(frozen=True)
@@ -161,24 +183,47 @@ def _varied_block(block, variable: str, values):
                    C_x=block.C_x * r, C_z=block.C_z * r, C_phi=block.C_phi * r)
 
 
-def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share) -> SweepReport:
+def _at_harmonics(static, width: int, solve):
+    """The motion whose harmonic n ≥ 1 is that of ``solve(n)`` (a (motion, resonant) pair on the
+    springs at n ω) and whose mean is ``static``'s; and where any of them is resonant."""
+    from foundation_calc.checks.crank_amplitudes import splice_harmonics
+
+    motions, resonant = [static[0]], np.asarray(static[1], dtype=bool)
+    for n in range(1, width):
+        motion, stuck = solve(n)
+        motions.append(motion)
+        resonant = resonant | np.asarray(stuck, dtype=bool)
+    return splice_harmonics(motions), resonant
+
+
+def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share, dynamic=None) -> SweepReport:
     """One chunk of :func:`sweep_chunks` (``critical`` left empty: the caller sets it)."""
     motion = resonant = None
     if design is not None:
         batch = varied(design, **{variable: values})
         motion, resonant = first_approximation_motion(batch)
+        if dynamic is not None:
+            motion, resonant = _at_harmonics((motion, resonant), motion.cos.shape[-1], lambda n: first_approximation_motion(
+                varied(dynamic.at(n * values)[0], omega=values)))
         resonant = np.asarray(resonant, dtype=bool)
-        zero, averaged = design_frequencies(batch)
+        zero, averaged = design_frequencies(batch) if dynamic is None else (dynamic.zero, dynamic.averaged)
         omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
     if vendor is not None:
         block = _varied_block(vendor.block, variable, values)
         omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
         res = loads_response(block, omega, vendor.loads)
+        loads_motion, stuck = res.motion, res.resonant
+        if dynamic is not None:
+            def solve(n):
+                found = loads_response(dynamic.at(n * values)[1].block, omega, vendor.loads)
+                return found.motion, found.resonant
+
+            loads_motion, stuck = _at_harmonics((loads_motion, stuck), loads_motion.cos.shape[-1], solve)
         if design is None:
-            zero = averaged = block_frequencies(block)
-        loads_motion = PeriodicMotion(omega, np.nan_to_num(res.motion.cos), np.nan_to_num(res.motion.sin))
+            zero = averaged = block_frequencies(block) if dynamic is None else dynamic.zero
+        loads_motion = PeriodicMotion(omega, np.nan_to_num(loads_motion.cos), np.nan_to_num(loads_motion.sin))
         motion = loads_motion if motion is None else superpose(motion, loads_motion)
-        resonant = res.resonant if resonant is None else resonant | res.resonant
+        resonant = stuck if resonant is None else resonant | stuck
     dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
     margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
@@ -218,10 +263,12 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
     )
 
 
-def _critical_speeds(design, vendor, conditions, share, detuning, lo: float, hi: float) -> tuple[CriticalSpeed, ...]:
+def _critical_speeds(design, vendor, conditions, share, detuning, lo: float, hi: float, dynamic=None) -> tuple[CriticalSpeed, ...]:
     """Critical speeds [rad/s] inside [lo, hi] of the conditions that are judged or named (the
     paper's, the extra ones, the loads'), with the band of each one's order."""
     zero, averaged = design_frequencies(design) if design is not None else (block_frequencies(vendor.block),) * 2
+    if dynamic is not None:
+        zero, averaged = dynamic.zero, dynamic.averaged
     orders = np.array([c.harmonic for c in conditions])
     required = required_detuning(detuning, orders)
     judged = judge(np.ones(len(conditions)), orders, share, required, [c.source == "paper" for c in conditions]).judged
@@ -235,13 +282,17 @@ def _critical_speeds(design, vendor, conditions, share, detuning, lo: float, hi:
 
 
 def sweep_chunks(
-    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None, chunk: int | None = None
+    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None, chunk: int | None = None,
+    dynamic: DynamicSoil | None = None,
 ):
     """:func:`sweep` in chunks of ``chunk`` points, one :class:`SweepReport` each, so that a long
     sweep's memory is bounded by a chunk (the conditions' margins are (points × conditions)
     arrays). The conditions and their forcing shares are the scene's, at its own speed and soil
     (:func:`~foundation_calc.checks.crank_resonance.machine_conditions`): which conditions are
-    judged does not change along a sweep, and the row at the scene's speed is ``fcalc check``'s."""
+    judged does not change along a sweep, and the row at the scene's speed is ``fcalc check``'s.
+    ``dynamic``: a frequency-dependent soil, for a speed sweep (module docstring)."""
+    if dynamic is not None and variable != "omega":
+        raise ValueError("a frequency-dependent soil is swept frequency-consistently by speed only")
     if variable not in VARIABLES:
         raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
     values = np.asarray(values, dtype=float)
@@ -249,10 +300,11 @@ def sweep_chunks(
                                            None if vendor is None else vendor.block)
     critical = ()
     if variable == "omega" and values.size:
-        critical = _critical_speeds(design, vendor, conditions, share, detuning, float(values.min()), float(values.max()))
+        critical = _critical_speeds(design, vendor, conditions, share, detuning, float(values.min()), float(values.max()),
+                                    dynamic)
     chunk = CHUNK if chunk is None else chunk
     for i in range(0, len(values), chunk):
-        part = _chunk(design, variable, values[i : i + chunk], limits, detuning, points, vendor, conditions, share)
+        part = _chunk(design, variable, values[i : i + chunk], limits, detuning, points, vendor, conditions, share, dynamic)
         yield replace(part, critical=critical)
 
 
@@ -277,7 +329,7 @@ _POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", 
 
 
 def sweep(
-    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None
+    design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None, dynamic=None
 ) -> SweepReport:
     """Sweep ``variable`` (``"omega"`` [rad/s] or ``"soil_factor"`` [-]) over ``values``.
 
@@ -288,14 +340,34 @@ def sweep(
     ``vendor``: the scene's ``[[loads]]``
     (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
     is added to the mechanism's, or is the whole motion when ``design`` is None; their
-    conditions n ω = k0, p1, p2 join the mechanism's. Computed in chunks (:func:`sweep_chunks`).
+    conditions n ω = k0, p1, p2 join the mechanism's. ``dynamic``: a frequency-dependent soil
+    (:class:`DynamicSoil`, :func:`scene_dynamic_soil`). Computed in chunks (:func:`sweep_chunks`).
 
     Raises
     ------
     PhysicsError
         when a point of the sweep is unstable in rocking (a soil factor too small).
     """
-    return joined(list(sweep_chunks(design, variable, values, limits, detuning, points, vendor)))
+    return joined(list(sweep_chunks(design, variable, values, limits, detuning, points, vendor, dynamic=dynamic)))
 
 
-__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "SweepReport", "joined", "sweep", "sweep_chunks"]
+def scene_dynamic_soil(scene) -> DynamicSoil | None:
+    """The :class:`DynamicSoil` of a ``crank_foundation`` scene on a frequency-dependent soil; None
+    on the others."""
+    if not scene.soil.frequency_dependent:
+        return None
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+    from foundation_calc.checks.crank_resonance import scene_block_frequencies, scene_design_frequencies
+
+    def at(soil_frequency):
+        return (None if scene.mechanism is None else scene.design(soil_frequency)), scene_vendor_loads(scene, soil_frequency)
+
+    if scene.mechanism is None:
+        frequencies, _ = scene_block_frequencies(scene)
+        return DynamicSoil(at, frequencies, frequencies)
+    zero, averaged, _ = scene_design_frequencies(scene)
+    return DynamicSoil(at, zero, averaged)
+
+
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "joined", "scene_dynamic_soil",
+           "sweep", "sweep_chunks"]

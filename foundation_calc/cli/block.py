@@ -43,7 +43,7 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     import typer
 
     from foundation_calc.output import block_sweep as out
-    from foundation_calc.solvers.block.response import block_modes
+    from foundation_calc.solvers.block.response import block_modes, consistent_modes
     from foundation_calc.solvers.block.sweep import speed_sweep
 
     names = [m.name for m in loaded.machines]
@@ -58,8 +58,9 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
         raise typer.BadParameter(f"no machine {machine!r}{hint}; the scene's machines: {', '.join(names)}", param_hint="'--machine'")
     swept = names.index(machine) if machine is not None else 0
     model = loaded.model()
-    modes = block_modes(model)
-    result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points])
+    impedance = loaded.soil_impedance if loaded.soil.frequency_dependent else None
+    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
+    result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)
     rows = out.sweep_rows(result, modes, loaded, swept)
     if json:
         from foundation_calc.output.console import print_json

@@ -152,7 +152,11 @@ def sweep(
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 
     design = None if loaded.mechanism is None else loaded.design()
-    chunks = sweep_chunks(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
+    from foundation_calc.checks.crank_sweep import scene_dynamic_soil
+
+    dynamic = scene_dynamic_soil(loaded) if variable == "omega" else None
+    chunks = sweep_chunks(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded),
+                          dynamic=dynamic)
     operating = loaded.speed.omega_rad_s if variable == "omega" else 1.0
     if csv is not None and not json and len(values) > TABLE_ROWS_WITH_CSV:
         _stream_csv(chunks, csv, plot, operating, shown, loaded.name or str(scene), len(values))

@@ -29,10 +29,13 @@ def _header(scene, source: str) -> dict:
 
 
 def _modes(report: BlockReport) -> list[dict]:
+    """Each mode; ``static_frequency`` on the static springs beside the frequency-consistent one
+    (None on a frequency-independent soil)."""
     m = report.modes
     return [
         {"mode": j + 1, "frequency": speed_triplet(float(p)), "dominant": m.dominant[j],
          "dominant_name": MOTION_NAMES[m.dominant[j]], "damping_ratio": float(m.damping[j]),
+         "static_frequency": None if m.static is None else speed_triplet(float(m.static[j])),
          "shape": [float(v) for v in m.shapes[:, j]]}
         for j, p in enumerate(m.frequencies)
     ]
@@ -138,11 +141,16 @@ def _table(title: str, columns, right=()):
 def _print_modes(report: BlockReport, units: DisplayUnits) -> None:
     out = stdout()
     speed = units.label("speed")
-    t = _table("Natural frequencies (6-DOF, undamped)", ("mode", "dominant motion", "Hz", speed, "damping ratio"),
-               ("Hz", speed, "damping ratio"))
+    static = report.modes.static
+    title = "Natural frequencies (6-DOF, undamped)"
+    columns = ["mode", "dominant motion", "Hz", speed, "damping ratio"]
+    if static is not None:
+        title += ": each mode with the soil's springs at its own frequency, beside the static springs'"
+        columns.append(f"static, {speed}")
+    t = _table(title, columns, columns[2:])
     for j, p in enumerate(report.modes.frequencies):
         t.add_row(str(j + 1), MOTION_NAMES[report.modes.dominant[j]], fmt(p / (2 * np.pi)), fmt(units.convert("speed", p)),
-                  fmt(report.modes.damping[j], 3))
+                  fmt(report.modes.damping[j], 3), *(() if static is None else (fmt(units.convert("speed", static[j])),)))
     out.print(t)
 
 
@@ -216,9 +224,7 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
                         f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
         out.print(lim)
     if report.zone_rows:
-        shown = "Zones of the RMS velocity" + (
-            " and, below 600 r/min, displacement" if any(r.judged.displacement_zone for r in report.zone_rows) else "")
-        z = _table(shown, ("point", "zone", "verdict"))
+        z = _table("Zones of the RMS velocity and displacement (the more restrictive decides)", ("point", "zone", "verdict"))
         for r in report.zone_rows:
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)

@@ -341,26 +341,23 @@ def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     rows = report.code_rows
     t = rows[0].table
     bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
-    judged = [row.judged.displacement_zone is not None for row in rows]
-    title = f"{t.title}: zones of the RMS velocity ({t.clause}; boundaries {bounds} mm/s"
-    if any(judged):
-        title += "; below 600 r/min also the RMS displacement, " + ", ".join(
-            f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.displacement_boundaries_um)) + " µm"
-    table = Table(title=title + ")", title_justify="left")
+    moved = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.displacement_boundaries_um))
+    table = Table(
+        title=f"{t.title}: zones of the RMS velocity and displacement, the more restrictive deciding ({t.clause};"
+        f" boundaries {bounds} mm/s, {moved} µm)", title_justify="left",
+    )
     unit = units.label("velocity")
-    columns = ["point", f"horizontal [{unit}]", f"vertical [{unit}]"]
-    if any(judged):
-        columns += [f"displacement [{units.label('amplitude')}]", "by"]
-    columns += ["governs", "zone", "fails over", "verdict"]
+    columns = ("point", f"horizontal [{unit}]", f"vertical [{unit}]", f"displacement [{units.label('amplitude')}]", "by",
+               "governs", "zone", "fails over", "verdict")
     for col in columns:
         table.add_column(col.replace("[", "\\["), justify="right" if "[" in col or col == "fails over" else "left")
     for row in rows:
-        cells = [Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical))]
-        if any(judged):
-            cells += [fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity]
         shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
-        cells += [row.governing, row.zone, units.show(shown, row.limit), verdict_text(row.outcome.value)]
-        table.add_row(*cells)
+        table.add_row(
+            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
+            fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.governing, row.zone,
+            units.show(shown, row.limit), verdict_text(row.outcome.value),
+        )
     return table
 
 

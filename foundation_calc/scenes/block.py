@@ -127,24 +127,57 @@ class BlockScene(OnSoil, SceneModel):
             if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
         ]
 
-    def model(self, base=None, block=None, place=None):
-        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`).
+    def _bodies(self, block=None, machine_cogs=None):
+        """(masses, cogs, central inertias) of the block and every machine (``block`` and
+        ``machine_cogs`` as :meth:`model` takes them)."""
+        m_b, r_b, J_b = self.block.mass_properties if block is None else block
+        cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
+        return ([m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines])
+
+    def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
+        """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape
+        omega.shape + (6,), at the frequencies ``omega`` [rad/s]: a frequency-dependent soil's
+        K(ω), C(ω) (``soil.frequency_dependent``), the others' constants. Dashpots from damping
+        ratios are C_i = 2 ξ_i sqrt(K_i m_i), as :func:`~foundation_calc.solvers.block.model.block_model`
+        makes them. ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates):
+        ``omega``'s leading axis is then the batch's."""
+        import numpy as np
+
+        from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
+
+        omega = np.asarray(omega, dtype=float)
+        L, B = self.base if base is None else base
+        M = bodies_mass_matrix(*self._bodies(block, machine_cogs))
+        m = np.diagonal(M, 0, -2, -1)  # batch + (6,)
+        extra = tuple(range(m.ndim - 1, omega.ndim))  # axes of omega past the batch's
+        m = np.expand_dims(m, extra)
+        L, B = np.expand_dims(L, extra), np.expand_dims(B, extra)
+
+        def six(values):
+            return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
+
+        springs, ratios = self.soil.six_springs(L, B, m[..., 0], np.moveaxis(m[..., 3:], -1, 0), omega)
+        springs = six(springs)
+        if ratios is None:
+            return springs, six(self.soil.dashpot or [0.0] * 6)
+        return springs, 2.0 * six(ratios) * np.sqrt(springs * m)
+
+    def model(self, base=None, block=None, machine_cogs=None):
+        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`),
+        a frequency-dependent soil's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
-        blocks (``fcalc design``), and ``place`` maps a position of the scene [m] to its
-        positions (..., 3) on those blocks (:meth:`excitations`): the model's matrices are then stacks."""
+        blocks (``fcalc design``): the model's matrices are then stacks; ``machine_cogs`` (one
+        (..., 3) [m] per machine) the machines' centres of mass, moved with each candidate's block."""
         import numpy as np
 
         from foundation_calc.solvers.block.model import block_model
         from foundation_calc.solvers.constants import GRAVITY
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
 
-        m_b, r_b, J_b = self.block.mass_properties if block is None else block
         L, B = self.base if base is None else base
-        place = place or (lambda position: position)
-        bodies = ([m_b] + [m.mass for m in self.machines], [r_b] + [place(m.cog) for m in self.machines],
-                  [J_b] + [m.inertia for m in self.machines])
+        bodies = self._bodies(block, machine_cogs)
         M = bodies_mass_matrix(*bodies)
         springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
         stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
@@ -154,12 +187,8 @@ class BlockScene(OnSoil, SceneModel):
             ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
         )
 
-    def excitations(self, place=None):
-        """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`);
-        ``place`` maps the position of a load [m] to its positions (..., 3) on a batch of
-        candidate blocks (:meth:`model`)."""
+    def excitations(self):
+        """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`)."""
         from foundation_calc.solvers.block.model import excitation
 
-        place = place or (lambda position: position)
-        return [excitation(m.name, m.omega_rad_s, [(*row[:4], place(row[4]), row[5]) for row in m.load_rows()])
-                for m in self.machines]
+        return [excitation(m.name, m.omega_rad_s, m.load_rows()) for m in self.machines]

@@ -29,11 +29,14 @@ BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "sp26": METHOD_KEYS["sp26"],
 }
 
-#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-].
+#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-],
+#: as the code is usually quoted (its printed clause has not been checked here). The elastic
+#: half-space gives C_ψ/C_z ≈ 1.3-2.1 (tests/test_soil_closed_forms.py): a softer torsion spring.
 SP26_TORSION = (1.0, 0.3)
 
 #: c_ψ / c_x of Barkan (1948), ch. 4: the coefficient of elastic non-uniform shear (torsion) is
-#: about 1.5 times that of uniform shear [-].
+#: about 1.5 times that of uniform shear [-], as usually quoted (the printed text has not been
+#: checked here); the elastic half-space gives 1.9-2.4 (tests/test_soil_closed_forms.py).
 BARKAN_TORSION_RATIO = 1.5
 
 
@@ -112,12 +115,14 @@ class BlockSoil(Soil):
             raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
         return self
 
-    def six_springs(self, L: float, B: float, M: float, J_O) -> tuple[list[float], list[float] | None]:
+    def six_springs(self, L: float, B: float, M: float, J_O, omega=0.0) -> tuple[list, list | None]:
         """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
         [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
         L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
         about the axes through O [kg m²] (the half-space methods' mass ratios). L, B, M and each of
         J_O may be arrays over a batch of candidate blocks; the springs and ratios broadcast.
+        ``omega``: the frequencies [rad/s] at which a frequency-dependent method (``"gazetas"``)
+        takes them (an array broadcasts as well); the other methods ignore it.
 
         Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
         K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
@@ -127,7 +132,7 @@ class BlockSoil(Soil):
         if method == "springs":
             return list(self.stiffness), None
         if method in (*HALF_SPACE_METHODS, "sp26"):
-            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O)
+            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O, omega)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
             return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
@@ -139,11 +144,13 @@ class BlockSoil(Soil):
         springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
         return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
 
-    def _planes(self, L: float, B: float, M: float, J_O):
+    def _planes(self, L: float, B: float, M: float, J_O, omega=0.0):
         """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
         plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
         Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's K_t with material
-        damping (gazetas, pais_kausel; surface footing), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87)."""
+        damping (gazetas, pais_kausel; surface footing; static: its frequency modifier is not among
+        the closed forms used), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87). Gazetas' or
+        Pais & Kausel's springs and dashpots in both planes at the frequencies ``omega`` [rad/s]."""
         method, D = self.method_used, self.material_damping or 0.0
         if method == "sp26":
             from foundation_calc.solvers.constants import GRAVITY
@@ -169,6 +176,6 @@ class BlockSoil(Soil):
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs
             from foundation_calc.solvers.soil.torsion import gazetas_torsion as torsion
 
-        return (springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D),
-                springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D),
+        return (springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D, omega),
+                springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D, omega),
                 (torsion(self.G, L, B), D))

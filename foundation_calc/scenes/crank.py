@@ -107,8 +107,8 @@ class Limits(SceneModel):
         "a_rms,max", "m/s²", "largest allowed RMS acceleration, each point and direction", None, gt=0, examples=[0.2]
     )
     code: Literal[CODE_NAMES] | None = quantity(
-        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity of C and of every point (below"
-        " 600 rpm the RMS displacement as well)", None,
+        "-", "-", "vibration code whose zones A/B/C/D judge the RMS velocity and displacement of C and of"
+        " every point", None,
         examples=["ISO 10816-3"],
     )
     machine_group: Literal[1, 2] | None = quantity(
@@ -239,6 +239,17 @@ class Point(SceneModel):
         "u", "m", "horizontal position from the centre of mass C, positive in +x", examples=[2.5]
     )
     height: float = quantity("H", "m", "height above the centre of mass C (negative: below C)", examples=[1.3])
+
+
+def _number(x):
+    """A float of a scalar (a 0-d array too), an array as it is: springs taken at one frequency or at
+    an array of them (a frequency-dependent soil along a sweep)."""
+    return float(x) if getattr(x, "ndim", 0) == 0 else x
+
+
+def _largest(x) -> float:
+    """The largest element of an array, or the float itself."""
+    return float(x.max()) if getattr(x, "ndim", 0) else float(x)
 
 
 class CrankScene(OnSoil, SceneModel):
@@ -409,7 +420,7 @@ class CrankScene(OnSoil, SceneModel):
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
-        if springs.xi_z == springs.xi_x == springs.xi_phi == 0.0:
+        if all(_largest(abs(xi)) == 0.0 for xi in (springs.xi_z, springs.xi_x, springs.xi_phi)):
             return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
         from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios  # numpy: only for damped soil
 
@@ -419,7 +430,7 @@ class CrankScene(OnSoil, SceneModel):
             K_z=springs.K_z, K_x=springs.K_x, K_phi=springs.K_phi,
             M_tot=M_tot, I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
         )
-        return {"C_x": float(d.C_x), "C_z": float(d.C_z), "C_phi": float(d.C_phi)}
+        return {"C_x": _number(d.C_x), "C_z": _number(d.C_z), "C_phi": _number(d.C_phi)}
 
     def require_stable_rocking(self, springs: SoilSprings) -> None:
         """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 does not exceed
@@ -430,7 +441,7 @@ class CrankScene(OnSoil, SceneModel):
         the keys of the scene file that set K_φ, I1 and h.
         """
         f = self.foundation
-        K_phi, overturning = float(springs.K_phi), self.total_mass * GRAVITY * f.cog_height
+        K_phi, overturning = -_largest(-springs.K_phi), self.total_mass * GRAVITY * f.cog_height
         if K_phi > overturning:
             return
         unrelated = ("soil.c_x", "soil.c_z" if self.soil.c_phi is not None else "soil.c_x")  # no part of K_φ
@@ -473,9 +484,9 @@ class CrankScene(OnSoil, SceneModel):
             M_tot=M_tot,
             I_c=f.moment_of_inertia,
             h=f.cog_height,
-            K_x=float(springs.K_x),
-            K_z=float(springs.K_z),
-            K_phi=float(springs.K_phi),
+            K_x=_number(springs.K_x),
+            K_z=_number(springs.K_z),
+            K_phi=_number(springs.K_phi),
             **self.base_dashpots(springs, M_tot),
             g=GRAVITY,
         )
@@ -520,9 +531,9 @@ class CrankScene(OnSoil, SceneModel):
         if s.method_used == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:
-            c = float(springs.K_z) / f.base_area
-            c1 = float(springs.K_x) / f.base_area
-            c_phi = float(springs.K_phi) / f.base_second_moment
+            c = _number(springs.K_z) / f.base_area
+            c1 = _number(springs.K_x) / f.base_area
+            c_phi = _number(springs.K_phi) / f.base_second_moment
         dashpots = self.base_dashpots(springs, f.mass + rod.m)
         return CrankDesign(
             M=f.mass,

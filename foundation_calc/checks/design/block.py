@@ -12,7 +12,9 @@ those on an end face follow the face), as ``fcalc check`` sees the scene of
   L × B (every soil method of :class:`~foundation_calc.scenes.block_soil.BlockSoil`, on arrays)
   and the weight's tilt: :meth:`~foundation_calc.scenes.block.BlockScene.model` with a stack;
 - the six modes by one batched Cholesky reduction and ``eigh``
-  (:func:`~foundation_calc.solvers.block.response.batch_modes`);
+  (:func:`~foundation_calc.solvers.block.response.batch_modes`); on a frequency-dependent soil
+  each at its own frequency (:func:`~foundation_calc.solvers.block.response.consistent_batch`),
+  and each order's steady state with the springs and dashpots at n ω;
 - ``resonance``: every order of every machine against every mode, forcing shares, judged by
   the resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`) over all the
   conditions of the candidate; the governing condition is the one ``fcalc check`` names;
@@ -35,6 +37,7 @@ error) fails the resonance and amplitude checks with utilisation inf.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from types import SimpleNamespace
 
 import numpy as np
@@ -57,6 +60,10 @@ WORKERS = 2
 NOT_EVALUATED = {
     "runup": "the start-up and run-down are integrated in time (0.5-10 s a scene); judged by the re-check of the"
              " chosen designs only",
+    "modulus_range crossings on a frequency-dependent soil": "over a soil's modulus_range the resonance and amplitude"
+             " checks are judged at the grid factors fcalc check takes, but on a frequency-dependent soil (gazetas) not"
+             " at the factors between them where a critical speed crosses a machine's speed (their amplitude peak);"
+             " the re-check of the chosen designs judges those",
 }
 
 #: Outcome code of each status of :mod:`~foundation_calc.checks.resonance_rule` (clear, information, warn, fail).
@@ -125,12 +132,11 @@ def _resonance(scene, modes, excitations):
     return outcome, utilisation, governing * len(MOTIONS) + motion, reasons
 
 
-def _amplitudes(scene, model, modes, excitations, place):
+def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
-    from foundation_calc.units import rpm_from_omega
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
 
@@ -144,8 +150,7 @@ def _amplitudes(scene, model, modes, excitations, place):
     ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
     worst = np.zeros(n, dtype=np.int8)
     if quantities or limits.code is not None:
-        at = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
-        motion = point_motion(model, excitations, names[1:], at, frozenset())
+        motion = point_motion(model, excitations, names[1:], points, frozenset(), impedance=impedance)
         rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
         for quantity, limit in quantities.items():
             field = LIMITED_VALUES[quantity]
@@ -166,9 +171,8 @@ def _amplitudes(scene, model, modes, excitations, place):
             table = TABLES[limits.code, limits.machine_group, limits.foundation]
             highest = ZONES.index(limits.acceptable_zone or "B")
             top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
-            top_x = motion.displacement_rms.max(axis=-1)  # judged too below 600 rpm
-            slowest = min(rpm_from_omega(exc.omega) for exc in excitations)
-            index, by_x = code_zone_index(top, top_x, table, slowest)
+            top_x = motion.displacement_rms.max(axis=-1)  # the more restrictive of the two decides
+            index, by_x = code_zone_index(top, top_x, table)
             verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
             worst = verdicts[index].max(axis=-1)
             ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
@@ -262,38 +266,67 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
 RANGE_REASON = "the soil's modulus range (a stiffness factor within it; fcalc check names which)"
 
 
-def _dynamics(scene, model, excitations, place, checks=("resonance", "amplitudes")):
+def _dynamics(scene, built, checks=("resonance", "amplitudes")):
     """check -> (outcome, utilisation, governing, reasons) of the resonance and amplitude checks on
-    ``model`` (a block that tips over fails both)."""
-    from foundation_calc.solvers.block.response import batch_modes
+    the candidates ``built`` (:func:`_built`; a block that tips over fails both)."""
+    from foundation_calc.solvers.block.response import batch_modes, consistent_batch
 
-    modes = batch_modes(model)
+    model, excitations = built.model, built.excitations
+    modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance)
     unstable = ~modes.stable
     found = {}
     for check in checks:
         o, u, g, r = (_resonance(scene, modes, excitations) if check == "resonance"
-                      else _amplitudes(scene, model, modes, excitations, place))
+                      else _amplitudes(scene, model, modes, excitations, built.points, built.impedance))
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
         found[check] = (np.where(unstable, FAIL, o).astype(np.int8), np.where(unstable, np.inf, u),
                         np.where(unstable, len(r) - 1, g), r)
     return found
 
 
-def _built(scene, L, B, H):
-    """(model, excitations, place, block mass [kg]) of the candidate blocks L × B × H [m] on ``scene``."""
-    m_b, cog_b, J_b = _block_body(L, B, H, scene.block.density)
+@dataclass(frozen=True)
+class _Built:
+    """Candidate blocks on a scene's soil: their model (stacks), every machine's loads, the points
+    (N, P, 3) [m], the soil's impedance ω -> (springs, dashpots) of a frequency-dependent soil
+    (else None), ``place`` (position [m] -> (N, 3) on each block) and the blocks' masses [kg]."""
+
+    model: object
+    excitations: list
+    points: np.ndarray
+    impedance: object
+    place: object
+    block_mass: np.ndarray
+
+
+def _built(scene, L, B, H) -> _Built:
+    """The candidate blocks L × B × H [m] on ``scene`` (:class:`_Built`)."""
+    from foundation_calc.solvers.block.model import excitation
+
+    block = _block_body(L, B, H, scene.block.density)
     place = _placing(scene, L, B, H)
-    return scene.model(base=(L, B), block=(m_b, cog_b, J_b), place=place), scene.excitations(place), place, m_b
+    cogs = [place(m.cog) for m in scene.machines]
+    model = scene.model(base=(L, B), block=block, machine_cogs=cogs)
+    excitations = [excitation(m.name, m.omega_rad_s, [(*row[:4], place(row[4]), row[5]) for row in m.load_rows()])
+                   for m in scene.machines]
+    points = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
+    impedance = None
+    if scene.soil.frequency_dependent:  # each mode at its own frequency, each order at n ω, as check_block
+
+        def impedance(omega):
+            return scene.soil_impedance(omega, base=(L, B), block=block, machine_cogs=cogs)
+
+    return _Built(model, excitations, points, impedance, place, block[0])
 
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
 
     L, B, H = _candidates(scene, batch)
-    model, excitations, place, m_b = _built(scene, L, B, H)
-    found = {"inputs": _inputs(scene, L, B, place)}
+    built = _built(scene, L, B, H)
+    model, m_b = built.model, built.block_mass
+    found = {"inputs": _inputs(scene, L, B, built.place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
-    dynamics = _dynamics(scene, model, excitations, place)
+    dynamics = _dynamics(scene, built)
     if getattr(scene.soil, "modulus_range", None) is not None:
         from foundation_calc.checks.design.block_range import over_range
 

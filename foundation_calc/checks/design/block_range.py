@@ -67,9 +67,10 @@ def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarra
     """check -> (N,) the worst outcome of the resonance and amplitude checks over the soil as
     ``given`` (check -> (N,) outcomes) and over the scene's ``soil.modulus_range`` (module
     docstring), for candidates ``dimensions`` (L, B, H (N,) each [m]). A candidate that already
-    fails a check is not evaluated again for it. ``built(scene, L, B, H)`` -> (model, excitations,
-    place, _) and ``dynamics(scene, model, excitations, place, checks)`` are the evaluator's
-    (:mod:`~foundation_calc.checks.design.block`)."""
+    fails a check is not evaluated again for it. ``built(scene, L, B, H)`` (the candidates on a
+    scene's soil) and ``dynamics(scene, built, checks)`` are the evaluator's
+    (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent soil Eq. (1) does not
+    hold: there the crossings are not added (:data:`~foundation_calc.checks.design.block.NOT_EVALUATED`)."""
     from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
 
     from foundation_calc.checks.design.candidates import FAIL
@@ -84,21 +85,21 @@ def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarra
                 worst[check][active] = np.maximum(worst[check][active], outcome)
 
     def crossed(on, active):
-        model, excitations, place, _ = built(on, *(d[active] for d in dimensions))
+        candidates = built(on, *(d[active] for d in dimensions))
         found = {check: np.zeros(len(active), dtype=np.int8) for check in worst}
-        for _, valid, at in crossings(on, model, excitations, low, high):
-            for check, (outcome, *_) in dynamics(on, at, excitations, place, tuple(worst)).items():
+        for _, valid, at in crossings(on, candidates.model, candidates.excitations, low, high):
+            for check, (outcome, *_) in dynamics(on, replace(candidates, model=at), tuple(worst)).items():
                 found[check] = np.where(valid, np.maximum(found[check], outcome), found[check])
         return found
 
-    judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
+    if not scene.soil.frequency_dependent:
+        judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
     grids = {"resonance": set(modulus_factors(low, high)), "amplitudes": set(modulus_factors(low, high, AMPLITUDE_GRID_POINTS))}
     for factor in sorted(grids["resonance"] | grids["amplitudes"]):
         checks = tuple(check for check in worst if factor in grids[check])
 
         def at_factor(on, active, checks=checks):
-            model, excitations, place, _ = built(on, *(d[active] for d in dimensions))
-            return {check: found[0] for check, found in dynamics(on, model, excitations, place, checks).items()}
+            return {check: found[0] for check, found in dynamics(on, built(on, *(d[active] for d in dimensions)), checks).items()}
 
         judge_at(scene.with_modulus_factor(factor), checks, at_factor)
     return worst

@@ -211,12 +211,11 @@ def _peaks_table(solve: DampedSolve, scene, amplitudes: dict) -> Table:
                  head, rows, (False, False) + (True,) * (len(head) - 2))
 
 
-def _terms(scene):
-    """The symbols of the solve for the sheet's nomenclature (a chain of definitions only)."""
-    from foundation_calc.output.report.handcalc import Chain
+def _terms():
+    """The symbols of the solve for the sheet's nomenclature."""
+    from foundation_calc.output.report.handcalc import Definitions
 
-    terms = Chain("")
-    terms.nomenclature.update({
+    return Definitions({
         "M, C, K": ("mass, damping and stiffness matrices about C, order x, y, θ (M̄, C̄, K̄: averaged over a revolution)", "SI"),
         "n": ("order of the harmonic", "-"),
         "F_n": ("complex amplitude of harmonic n of the forcing (F_x, F_y, M_θ)", "N, N, N m"),
@@ -224,7 +223,6 @@ def _terms(scene):
         "φ": ("phase lag of a harmonic, q_n = |Z_n| cos(nωt − φ)", "°"),
         "μ": ("moving-mass ratio m/M_tot", "-"),
     })
-    return terms
 
 
 def damped_response_blocks(scene, amplitudes: dict | None) -> tuple:
@@ -255,12 +253,15 @@ def damped_response_blocks(scene, amplitudes: dict | None) -> tuple:
         blocks.append(_matrix_table(op, f"Matrices of the {op.source}" + (f" at {at}" if soil else "")))
     blocks.append(_harmonics_table(solve, solved_harmonics(amplitudes)))
     blocks.append(_peaks_table(solve, scene, amplitudes))
-    blocks.append(_terms(scene))
+    blocks.append(_terms())
     if "first_approximation" in amplitudes["approximations"]:
         blocks.append(Paragraph(
             "Error estimate for this design: the spread column is |peak of the first approximation − peak here| / peak"
             " here. Both closed forms leave out terms of first order in μ = m/M_tot; their spread is the scale of what"
             " the averaged operator leaves out (run with --exact for its errors against the exact periodic solution)."))
+    from foundation_calc.output.report.code_zone import code_zone_blocks
+
+    blocks += code_zone_blocks(scene, amplitudes.get("code"), solve.motion())
     return tuple(blocks)
 
 

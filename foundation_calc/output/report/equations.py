@@ -78,6 +78,21 @@ PLATFORM = (
         "(3.21): c13 = (M+4m)K/M = 1.005·10⁸ N/m in the example (printed 4.005·10⁸, which is c3).",
     ),
     Equation(
+        'M(t) dot.double(q) + G(t) dot(q) + K(t) q = F(t), quad q = (x, y, z, alpha, beta, gamma)',
+        "M(t) q'' + G(t) q' + K(t) q = F(t),  q = (x, y, z, α, β, γ): corner O1's displacement and the platform's rotation",
+        "[BC] Eqs. (1.1)-(1.9), re-derived (6-DOF verification)",
+        "the printed rotational equations are omitted and the rotor matrix A_j(φ) is garbled (its entry (3,2) is"
+        " −sin δ2 cos φ); K holds the isolators' K_springs = Σ T_iᵀ diag(c_i1, c_i2, c_i3) T_i and the weight's tilt.",
+    ),
+    Equation(
+        'D(Omega_m) Q_m + sum_(k != 0) A_k (Omega_(m-k)) Q_(m-k) = F_m - K_m q_s, quad'
+        ' D(Omega) = K_0 + i (eta "sgn" Omega + beta Omega) K_"springs" + i Omega G_0 - Omega^2 M_0',
+        "D(Ω_m) Q_m + Σ_{k≠0} A_k(Ω_{m−k}) Q_{m−k} = F_m − K_m q_s,  D(Ω) = K_0 + i(η sgn Ω + β Ω) K_springs + iΩ G_0 − Ω² M_0",
+        "harmonic balance over the rotors' combination frequencies Ω_n = n·ω (6-DOF verification)",
+        "harmonics are added while the estimate of a left-out one exceeds 10⁻¹² of the largest; the estimates"
+        " left out, summed as peaks, are the truncation error on the sheet.",
+    ),
+    Equation(
         'z = - M_Sigma g / c_3',
         "z = −M_Σ g / c3",
         "[BC] static deflection",

@@ -35,7 +35,8 @@ SYMBOLS = {
     "Lh": "L'", "Bh": "B'", "chi": "χ", "eta_z": "η_z", "eta_h": "η_h", "eta_phi": "η_φ", "K_zs": "K_z,s",
     "K_hs": "K_h,s", "K_phis": "K_φ,s", "C_zb": "C_z", "V_La": "V_La", "b_sp": "b₀", "A10": "A₁₀",
     "K_zw": "K_z(ω)", "K_xw": "K_x(ω)", "K_phiw": "K_φ(ω)", "C_phiw": "C_φ(ω)", "xi_zw": "ξ_z(ω)", "xi_xw": "ξ_x(ω)",
-    "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀", "omega_s": "ω_s",
+    "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀", "omega_s": "ω_s", "xi": "ξ", "c31_41": "(c31+c41)", "c11_21": "(c11+c21)", "c22_32": "(c22+c32)",
+    "c12_42": "(c12+c42)", "omega_i": "ω_i", "rho_P": "ρ_P", "Omega_r": "Ω_r", "eta_s": "η_r",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
@@ -89,6 +90,17 @@ class Chain:
             self.title, ("", "formula", "values", "result", "unit", "source"), self.rows,
             (False, False, False, True, False, False),
         )
+
+
+class Definitions:
+    """Symbols a section uses outside a chain (a solve's matrices, a table's columns), for the
+    nomenclature: ``{symbol: (meaning, unit)}``; it puts nothing on the sheet itself."""
+
+    def __init__(self, entries: dict[str, tuple[str, str]]):
+        self.nomenclature = dict(entries)
+
+    def blocks(self) -> tuple:
+        return ()
 
 
 def nomenclature_table(chains) -> Table:

@@ -10,11 +10,11 @@ compares every end value with the solvers'.
 from __future__ import annotations
 
 from foundation_calc.output.report.handcalc import Chain
+from foundation_calc.output.report.platform_methods import platform_chain
 from foundation_calc.output.report.soil_methods import gazetas_chains, soil_givens, sp26_springs_chain
 from foundation_calc.solvers.constants import GRAVITY
 
 KM = "[KM]"
-BC = "[BC]"
 RHW = "[RHW] ch. 10; [DR] ch. 5"
 
 
@@ -107,33 +107,16 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     springs = scene.soil_springs()
     method = scene.soil.method_used
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
-    out = gazetas_chains(scene) if method == "gazetas" else [make(scene) for make in chains]
+    dependent = scene.soil.frequency_dependent  # gazetas, pais_kausel: the same dynamic chains
+    out = gazetas_chains(scene) if dependent else [make(scene) for make in chains]
     out.append(_frequencies(scene, springs))
-    if method == "gazetas":
+    if dependent:
         from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns
 
         out += gazetas_frequency_columns(scene, out[0], amplitudes)
     if any(float(getattr(springs, k)) > 0 for k in ("xi_z", "xi_x", "xi_phi")):
         out.append(_dashpots(scene, springs))
     return out
-
-
-def platform_chain(doc: dict) -> Chain:
-    """The platform's design (3.14) and static deflection, from the ``design`` document's inputs."""
-    i, d = doc["inputs"], doc["design"]
-    chain = Chain("Platform design: isolator stiffness and static deflection")
-    chain.given("M_sigma", d["M_sigma"], "kg", "moving mass M + 4m (platform, product and unbalances)")
-    chain.given("m", i["m"], "kg", "unbalanced mass of one exciter")
-    chain.given("l", i["l"], "m", "eccentricity of the unbalances")
-    chain.given("u", i["u"], "m", "required circular amplitude")
-    chain.given("omega", doc["speed"]["omega"], "rad/s", "exciter speed")
-    chain.given("g", i["g"], "m/s²", "acceleration of gravity")
-    sign = "+" if i["regime"] == "below" else "-"
-    chain.step("c0", f"M_sigma*omega**2 {sign} m*l*omega**2/u", "N/m", f"{BC} (3.14), {i['regime']} resonance", "summed horizontal stiffness c0 = c1 = c2")
-    chain.given("c3", d["c3"], "N/m", "summed vertical stiffness")
-    chain.step("z", "-M_sigma*g/c3", "m", f"{BC} static deflection (sign corrected)", "static deflection")
-    chain.step("omega_t", "sqrt(c0/M_sigma)", "rad/s", BC, "translational natural frequency")
-    return chain
 
 
 def methods_section(scene, documents: dict):
@@ -149,10 +132,20 @@ def methods_section(scene, documents: dict):
         response = damped_response_blocks(scene, documents.get("amplitudes"))
     elif scene.kind == "platform" and "design" in documents:
         chains = [platform_chain(documents["design"])]
+    elif scene.kind == "block_foundation":
+        from foundation_calc.output.report.block_methods import block_sections_blocks
+
+        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"))
     else:
         return None
+    runup = []
+    if "runup" in documents:
+        from foundation_calc.output.report.runup_methods import runup_columns
+
+        runup = runup_columns(scene, documents["runup"])
     blocks = [block for chain in chains for block in chain.blocks()]
     terms = [block for block in response if hasattr(block, "nomenclature")]
     blocks += [block for block in response if not hasattr(block, "nomenclature")]
-    blocks.append(nomenclature_table([*chains, *terms]))
+    blocks += [block for columns in runup for block in columns.blocks()]
+    blocks.append(nomenclature_table([*chains, *terms, *runup]))
     return Section("Methods: hand calculation of the judged numbers", tuple(blocks))

@@ -1,4 +1,4 @@
-"""Hand calculations of the soil springs and damping by Gazetas' formulas and by SP 26.13330.
+"""Hand calculations of the soil springs and damping by Gazetas', Pais & Kausel's formulas and by SP 26.13330.
 
 The same chains as the Lysmer chain of :mod:`~foundation_calc.output.report.methods`, for the
 two other elastic-soil methods, each printing the formulas of its solver with their table
@@ -18,6 +18,8 @@ GA = "[Ga] Table 1"
 GA2 = "[Ga] Table 2 (d = D)"
 SP26 = "[SP26]"
 PK = "[PK]; [NIST] Table 2-3a"
+PK2 = "[PK]; [NIST] Table 2-2a"
+PK2B = "[PK]; [NIST] Table 2-2b (d = D)"
 
 
 def soil_givens(chain: Chain, scene) -> None:
@@ -80,6 +82,12 @@ def gazetas_springs_chain(scene) -> Chain:
         chain.step("K_z", "K_zs", "N/m", GA, "vertical base spring")
         chain.step("K_x", "K_hs", "N/m", GA, "horizontal base spring")
         chain.step("K_phi", "K_phis", "N m/rad", GA, "rocking base spring")
+    return _radiation(chain)
+
+
+def _radiation(chain: Chain) -> Chain:
+    """Gazetas' radiation dashpots at ω = 0 and the damping ratios, on the springs K_z, K_x, K_φ
+    the chain has found (Gazetas' or Pais & Kausel's)."""
     chain.step("V_s", "sqrt(G/rho)", "m/s", GA, "shear wave velocity")
     chain.step("V_La", "3.4*V_s/(pi*(1 - nu))", "m/s", GA, "Lysmer's analog wave velocity")
     chain.step("C_z", "rho*(V_La*B*L + V_s*2*D*(L + B))", "N s/m", f"{GA}, Table 2", "vertical radiation dashpot (base and sidewalls)")
@@ -90,6 +98,36 @@ def gazetas_springs_chain(scene) -> Chain:
     chain.step("xi_x", "C_x/(2*sqrt(K_x*M_tot)) + xi_m", "-", GA, "horizontal damping ratio (radiation + material)")
     chain.step("xi_phi", "C_phi/(2*sqrt(K_phi*I_0)) + xi_m", "-", GA, "rocking damping ratio (radiation + material)")
     return chain
+
+
+def pais_kausel_springs_chain(scene) -> Chain:
+    """Pais & Kausel's static springs (embedment factors when embedded) and Gazetas' low-frequency
+    damping (:mod:`foundation_calc.solvers.soil.pais_kausel`)."""
+    L, B = scene.foundation.dimensions
+    D = scene.foundation.embedment or 0.0
+    chain = Chain("Soil springs and radiation damping: Pais & Kausel's formulas (soil.method = \"pais_kausel\")")
+    soil_givens(chain, scene)
+    chain.given("D", D, "m", "embedment depth (sidewall in contact over all of it)" if D > 0.0 else "embedment depth (surface base)")
+    chain.step("Lh", "max(L, B)/2", "m", PK2, "longer half-side of the base")
+    chain.step("Bh", "min(L, B)/2", "m", PK2, "shorter half-side of the base")
+    chain.step("r", "Lh/Bh", "-", PK2, "aspect ratio L'/B' of the base")
+    chain.step("I_b", "B*L**3/12", "m⁴", GA, "second moment of the base about the rocking axis")
+    chain.step("eta_z", "1 + (0.25 + 0.25/r)*(D/Bh)**0.8", "-", PK2B, "embedment factor of the vertical spring")
+    chain.step("eta_h", "1 + (0.33 + 1.34/(1 + r))*(D/Bh)**0.8", "-", PK2B, "embedment factor of the horizontal spring")
+    chain.step("K_z", "eta_z*G*Bh/(1 - nu)*(3.1*r**0.75 + 1.6)", "N/m", PK2, "vertical base spring")
+    if L >= B:
+        chain.step("K_x", "eta_h*G*Bh/(2 - nu)*(6.8*r**0.65 + 2.4)", "N/m", f"{PK2} (K_x, L along the long side)",
+                   "horizontal base spring")
+        chain.step("eta_phi", "1 + D/Bh + 1.6/(0.35 + r**4)*(D/Bh)**2", "-", f"{PK2B}, η_ry", "embedment factor of the rocking spring")
+        chain.step("K_phi", "eta_phi*G*Bh**3/(1 - nu)*(3.73*r**2.4 + 0.27)", "N m/rad",
+                   f"{PK2} (K_ry, rocking about the short axis)", "rocking base spring")
+    else:
+        chain.step("K_x", "eta_h*G*Bh/(2 - nu)*(6.8*r**0.65 + 0.8*r + 1.6)", "N/m", f"{PK2} (K_y, L along the short side)",
+                   "horizontal base spring")
+        chain.step("eta_phi", "1 + D/Bh + 1.6/(0.35 + r)*(D/Bh)**2", "-", f"{PK2B}, η_rx", "embedment factor of the rocking spring")
+        chain.step("K_phi", "eta_phi*G*Bh**3/(1 - nu)*(3.2*r + 0.8)", "N m/rad", f"{PK2} (K_rx, rocking about the long axis)",
+                   "rocking base spring")
+    return _radiation(chain)
 
 
 #: Names of the static chain that the chains at a frequency take as given.
@@ -139,7 +177,8 @@ def gazetas_dynamic_chain(scene, static: Chain) -> Chain:
     """Gazetas' springs and dashpots at the operating speed ω (:func:`gazetas_at`); the exact
     harmonic balance and the first harmonic take them at ω, harmonic n at n ω by the same
     formulas (:mod:`~foundation_calc.output.report.gazetas_frequencies`)."""
-    chain = Chain("Gazetas' springs and dashpots at the operating speed ω (frequency-dependent soil)")
+    springs = "Pais & Kausel's springs and Gazetas'" if scene.soil.method_used == "pais_kausel" else "Gazetas' springs and"
+    chain = Chain(f"{springs} dashpots at the operating speed ω (frequency-dependent soil)")
     return gazetas_at(chain, scene, static, scene.speed.omega_rad_s, "operating speed (circular frequency of the first harmonic)")
 
 
@@ -168,9 +207,11 @@ def sp26_springs_chain(scene) -> Chain:
 
 
 def gazetas_chains(scene) -> list[Chain]:
-    """Gazetas' static springs and, the soil being frequency-dependent, those at the speed ω."""
-    static = gazetas_springs_chain(scene)
+    """Gazetas' (or, for ``soil.method = "pais_kausel"``, Pais & Kausel's) static springs and, the
+    soil being frequency-dependent, those at the speed ω."""
+    static = (pais_kausel_springs_chain if scene.soil.method_used == "pais_kausel" else gazetas_springs_chain)(scene)
     return [static, gazetas_dynamic_chain(scene, static)]
 
 
-__all__ = ["gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "soil_givens", "sp26_springs_chain"]
+__all__ = ["gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "pais_kausel_springs_chain",
+           "soil_givens", "sp26_springs_chain"]

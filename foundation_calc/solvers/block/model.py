@@ -59,6 +59,18 @@ class BlockModel:
         """True when a dashpot acts."""
         return bool(np.any(self.C != 0.0))
 
+    def soil_matrices(self, springs, dashpots) -> tuple[np.ndarray, np.ndarray]:
+        """K and C of Eq. (1) with the springs and dashpots at O replaced by ``springs`` and
+        ``dashpots`` [N/m, N m/rad; N s/m, N m s/rad] (a frequency-dependent soil's at each
+        frequency), shaped batch + extra + (6,): the model's batch axes first (none for one
+        block), then any further axes (the frequencies of several orders); K, C batch + extra + (6, 6)."""
+        springs = np.asarray(springs, dtype=float)
+        extra = springs.ndim - np.ndim(self.springs)
+        batch = np.ndim(self.springs) - 1
+        own = np.expand_dims(self.springs, tuple(range(batch, batch + extra)))
+        K = np.expand_dims(self.K, tuple(range(batch, batch + extra))) + diagonal_matrices(springs - own)
+        return K, diagonal_matrices(np.broadcast_to(dashpots, springs.shape))
+
 
 @dataclass(frozen=True)
 class Excitation:

@@ -10,11 +10,17 @@ take every relative value, so the peak of the sum tends to the **sum of the mach
 (:func:`foundation_calc.solvers.numerics.trig_series.peak`). The mean square of the sum is the
 sum of the mean squares of all harmonics, so **RMS values add as the root-sum-square of every
 harmonic of every machine**: sqrt(Σ |V|²/2).
+
+A soil whose springs and dashpots depend on frequency (Gazetas' impedance,
+:mod:`foundation_calc.solvers.soil.impedance`) is given as ``impedance``: a function Ω -> (springs,
+dashpots) at O, each (..., 6). Every order n is then solved with K(nω), C(nω) (the equations are
+linear: order by order, the base's impedance at that order's frequency), and every mode j at its
+own frequency, p_j = p_j(K(p_j)) (:func:`consistent_modes`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -32,12 +38,15 @@ RESONANT_MARGIN = 1e-6
 class BlockModes:
     """Undamped modes: frequencies p [rad/s] ascending, mass-normalised shapes (6, 6) as columns,
     the dominant motion of each (:data:`~foundation_calc.solvers.rigid_body.modes.MOTIONS`), and
-    the modal damping ratios ζ = φᵀ C φ / (2 p) [-]."""
+    the modal damping ratios ζ = φᵀ C φ / (2 p) [-]. On a frequency-dependent soil each mode is
+    taken at its own frequency (:func:`consistent_modes`) and ``static`` holds the frequencies on
+    the static springs [rad/s] (None otherwise)."""
 
     frequencies: np.ndarray
     shapes: np.ndarray
     dominant: tuple[str, ...]
     damping: np.ndarray
+    static: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -46,7 +55,8 @@ class ModeBatch:
     matrices): frequencies (..., 6) [rad/s] (0 where unstable), shapes (..., 6, 6), the dominant
     motion as an index into :data:`~foundation_calc.solvers.rigid_body.modes.MOTIONS` (..., 6),
     damping ratios (..., 6) [-], the squared frequencies p² (..., 6) [rad²/s²] as solved, and
-    ``stable`` (...): every squared frequency positive."""
+    ``stable`` (...): every squared frequency positive; ``static_frequencies`` (..., 6) [rad/s]:
+    on a frequency-dependent soil (:func:`consistent_batch`) each mode's on the static springs."""
 
     frequencies: np.ndarray
     shapes: np.ndarray
@@ -54,6 +64,7 @@ class ModeBatch:
     damping: np.ndarray
     squared: np.ndarray
     stable: np.ndarray
+    static_frequencies: np.ndarray | None = None
 
 
 def batch_modes(model: BlockModel) -> ModeBatch:
@@ -87,6 +98,53 @@ def block_modes(model: BlockModel) -> BlockModes:
             hint="stiffen the rocking springs or lower the centre of mass",
         )
     return BlockModes(batch.frequencies, batch.shapes, dominant, batch.damping)
+
+
+def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
+    """The six modes of Eq. (1) of :mod:`.model` on the soil ``impedance`` (module docstring), each
+    at its own frequency, of one block or of a batch: p_j solves p = p_j(K(p)) by
+    :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency` from the static p_j, the
+    mode at each frequency being the one whose shape is nearest the static mode's (largest
+    |φ_kᵀ M φ_j|: the rocking modes soften more than the others and may pass them); its shape,
+    dominant motion and damping ratio are those of the springs and dashpots at p_j. Sorted by
+    frequency; ``static`` gives the static frequency of each. ``impedance(ω)`` takes ω shaped as
+    the batch (...)."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    static = batch_modes(model)  # a block that tips over keeps p = 0, its fixed point
+
+    def at(omega, j):
+        K, C = model.soil_matrices(*impedance(omega))
+        modes = batch_modes(replace(model, K=K, C=C))
+        nearness = np.abs(np.einsum("...i,...ij,...jk->...k", static.shapes[..., :, j], model.M, modes.shapes))
+        return modes, np.argmax(nearness, axis=-1)[..., None]
+
+    def frequency(omega, j):
+        modes, k = at(omega, j)
+        return np.take_along_axis(modes.frequencies, k, -1)[..., 0]
+
+    columns = []
+    for j in range(6):
+        modes, k = at(consistent_frequency(lambda w, j=j: frequency(w, j), static.frequencies[..., j]), j)
+        pick = lambda a: np.take_along_axis(a, k, -1)[..., 0]  # noqa: E731
+        columns.append((pick(modes.frequencies), np.take_along_axis(modes.shapes, k[..., None, :], -1)[..., 0],
+                        pick(modes.dominant), pick(modes.damping), pick(modes.squared), modes.stable))
+    p = np.stack([c[0] for c in columns], -1)
+    order = np.argsort(p, axis=-1)
+    sort = lambda a: np.take_along_axis(a, order, -1)  # noqa: E731
+    shapes = np.take_along_axis(np.stack([c[1] for c in columns], -1), order[..., None, :], -1)
+    stable = np.logical_and.reduce([c[5] for c in columns])
+    return ModeBatch(sort(p), shapes, sort(np.stack([c[2] for c in columns], -1)), sort(np.stack([c[3] for c in columns], -1)),
+                     sort(np.stack([c[4] for c in columns], -1)), stable & static.stable, sort(static.frequencies))
+
+
+def consistent_modes(model: BlockModel, impedance) -> BlockModes:
+    """:func:`consistent_batch` of one block, as :func:`block_modes` gives its modes (``static``:
+    the static frequency of each mode)."""
+    block_modes(model)  # a block that tips over on the static springs: the same error
+    batch = consistent_batch(model, impedance)
+    return BlockModes(batch.frequencies, batch.shapes, tuple(MOTIONS[int(i)] for i in batch.dominant), batch.damping,
+                      batch.static_frequencies)
 
 
 @dataclass(frozen=True)
@@ -127,11 +185,19 @@ def resonant(modes: BlockModes, res: Resonances) -> np.ndarray:
     return np.any((res.margin < RESONANT_MARGIN) & (modes.damping[..., None, :] <= 0.0), axis=(-2, -1))
 
 
-def complex_amplitudes(model: BlockModel, exc: Excitation, omega=None) -> np.ndarray:
+def complex_amplitudes(model: BlockModel, exc: Excitation, omega=None, impedance=None) -> np.ndarray:
     """Z of (K - (nω)² M + i nω C) Z = Q_n for every order, shape (..., H, 6) [m, rad], at the
     machine's speed or at the speeds ``omega`` (any shape) [rad/s] (an unbalance's load grows as
     ω², :meth:`~foundation_calc.solvers.block.model.Excitation.loads_at`); at the machine's speed
-    the block may be a batch (stacks (..., 6, 6) give (..., H, 6))."""
+    the block may be a batch (stacks (..., 6, 6) give (..., H, 6)); on the soil ``impedance``
+    (module docstring) each order with K(nω), C(nω)."""
+    if impedance is not None:
+        speeds = np.asarray(exc.omega if omega is None else omega, dtype=float)
+        Omega = np.broadcast_to(speeds[..., None] * exc.orders, np.shape(model.K)[:-2] + speeds.shape + exc.orders.shape)
+        K, C = model.soil_matrices(*impedance(Omega))
+        batch = np.ndim(model.M) - 2
+        M = np.expand_dims(model.M, tuple(range(batch, Omega.ndim)))
+        return harmonic_response(K, C, M, exc.Q if omega is None else exc.loads_at(speeds), Omega)
     if omega is None:
         K, C, M = (np.asarray(A)[..., None, :, :] for A in (model.K, model.C, model.M))
         return harmonic_response(K, C, M, exc.Q, exc.omega * exc.orders)
@@ -238,11 +304,11 @@ def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
 PEAKS = frozenset({"peak", "velocity_peak", "rotation_peak"})
 
 
-def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS) -> PointMotion:
+def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, impedance=None) -> PointMotion:
     """Steady motion of G and of ``points`` (P, 3) [m] from O under every machine (module
     docstring: peaks add, RMS values add as root-sum-square), of one block or of a batch (stacks
     in ``model``, and points (..., P, 3) where they move with the block); ``peaks``: the peaks of
-    :data:`PEAKS` to search (the others are None)."""
+    :data:`PEAKS` to search (the others are None); on the soil ``impedance`` if given."""
     cog = np.asarray(model.cog)
     fixed = np.asarray(points, dtype=float)
     fixed = fixed if fixed.ndim >= 2 else fixed.reshape(-1, 3)  # (P, 3), or (..., P, 3) for a batch
@@ -254,7 +320,7 @@ def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS) -> 
     vsq = usq = np.zeros(at.shape)
     found = {name: 0.0 for name in peaks}
     for exc in excitations:
-        Z = complex_amplitudes(model, exc)  # (..., H, 6)
+        Z = complex_amplitudes(model, exc, impedance=impedance)  # (..., H, 6)
         U = np.einsum("...pij,...hj->...pih", T, Z)  # (..., P, 3, H)
         V = velocity(U, exc)
         R = np.swapaxes(Z[..., 3:], -1, -2)  # (..., 3, H)
@@ -282,6 +348,8 @@ __all__ = [
     "block_modes",
     "largest_peak",
     "complex_amplitudes",
+    "consistent_batch",
+    "consistent_modes",
     "point_motion",
     "resonances",
     "resonant",

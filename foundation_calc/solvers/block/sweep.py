@@ -36,10 +36,13 @@ class SpeedSweep:
     margin: np.ndarray
 
 
-def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, omega, points) -> SpeedSweep:
+def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, omega, points, impedance=None) -> SpeedSweep:
     """Sweep machine ``swept`` (index into ``excitations``) over the speeds ``omega`` [rad/s];
     ``points`` (P, 3) [m] from O besides G. A swept machine given by a balance grade keeps the
-    rotor's eccentricity, so its force grows as ω²; vendor loads keep their amplitudes."""
+    rotor's eccentricity, so its force grows as ω²; vendor loads keep their amplitudes. On the
+    soil ``impedance`` (:mod:`.response`) every order n of every speed is solved with the springs
+    and dashpots at n ω, in the same batched solve, and ``modes`` are the frequency-consistent
+    ones (:func:`~foundation_calc.solvers.block.response.consistent_modes`)."""
     omega = np.asarray(omega, dtype=float)
     exc: Excitation = excitations[swept]
     others = [e for i, e in enumerate(excitations) if i != swept]
@@ -47,9 +50,9 @@ def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, o
     base_peak = np.zeros((len(at), 3))
     base_sq = np.zeros((len(at), 3))
     if others:
-        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:])
+        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:], impedance=impedance)
         base_peak, base_sq = fixed.peak, fixed.velocity_rms**2
-    Z = complex_amplitudes(model, exc, omega)  # (N, H, 6)
+    Z = complex_amplitudes(model, exc, omega, impedance)  # (N, H, 6)
     U = np.einsum("pij,nhj->npih", point_maps(at), Z)  # (N, P, 3, H)
     V = U * (1j * omega[:, None, None, None] * exc.orders)
     peak = base_peak + _series_peak(U, exc.orders)

@@ -1,0 +1,200 @@
+"""The block foundation's 6-DOF equations as the sheet's own calculation.
+
+Equation (1) of :mod:`foundation_calc.solvers.block.model` about O (centre of the base at base
+level, x along the length, y along the width, z up)::
+
+    M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}),    q = (u_x, u_y, u_z, θ_x, θ_y, θ_z)
+
+The sheet prints M, K, C with their numbers, finds the modes from them itself (K v = p² M v by an
+eigen-solve of M⁻¹K, ζ = vᵀ C v / (2 p vᵀ M v)), prints each machine's generalised loads Q_n
+about O, solves (K − Ω² M + i Ω C) Z = Q_n at Ω = nω, and carries Z to every point by
+u_P = T_P Z (T_P = [I, −[r_P]×]): the peak of each machine's series, added over the machines,
+and the r.m.s. velocity √(Σ |nω u_P,n|²/2) over every harmonic of every machine.
+``tests/test_report_block_methods.py`` compares the modes, Z and the points' values with the
+checks'.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.output.report.handcalc import Definitions
+from foundation_calc.output.report.model import Paragraph, Table, table
+from foundation_calc.output.report.numbers import column, figure
+
+COORDINATES = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
+DIRECTIONS = ("x", "y", "z")
+#: Units of a row's entries: translations (N/m, N) then rotations (N, N m/rad) for K, and so on.
+ROW_UNITS = {
+    "M": ("kg, kg m", "kg, kg m", "kg, kg m", "kg m, kg m²", "kg m, kg m²", "kg m, kg m²"),
+    "K": ("N/m, N", "N/m, N", "N/m, N", "N, N m/rad", "N, N m/rad", "N, N m/rad"),
+    "C": ("N s/m, N s", "N s/m, N s", "N s/m, N s", "N s, N m s/rad", "N s, N m s/rad", "N s, N m s/rad"),
+}
+
+
+@dataclass(frozen=True)
+class BlockSolve:
+    """The sheet's modes and harmonic response of the block (SI)."""
+
+    frequencies: np.ndarray
+    damping: np.ndarray
+    machines: tuple[str, ...]
+    omegas: tuple[float, ...]
+    orders: tuple[np.ndarray, ...]
+    loads: tuple[np.ndarray, ...]
+    responses: tuple[np.ndarray, ...]
+
+
+def modes_of(M, K, C) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sheet's own modes: p ascending [rad/s] from an eigen-solve of M⁻¹K, the shapes
+    mass-normalised (columns, vᵀ M v = 1) and ζ = vᵀ C v / (2 p) [-]."""
+    squared, shapes = np.linalg.eig(np.linalg.solve(M, K))
+    order = np.argsort(squared.real)
+    p = np.sqrt(squared.real[order])
+    v = shapes.real[:, order]
+    v = v / np.sqrt(np.einsum("ni,nm,mi->i", v, M, v))
+    return p, v, np.einsum("ni,nm,mi->i", v, C, v) / (2.0 * p)
+
+
+def block_solve(model, excitations) -> BlockSolve:
+    """Modes from an eigen-solve of M⁻¹K and Z of every machine's orders by one complex solve each."""
+    p, _, zeta = modes_of(model.M, model.K, model.C)
+    responses = []
+    for exc in excitations:
+        Z = [np.linalg.solve(model.K - (n * exc.omega) ** 2 * model.M + 1j * n * exc.omega * model.C, q)
+             for n, q in zip(exc.orders, exc.Q)]
+        responses.append(np.array(Z).reshape(len(exc.orders), 6))
+    return BlockSolve(p, zeta, tuple(e.name for e in excitations), tuple(e.omega for e in excitations),
+                      tuple(e.orders for e in excitations), tuple(e.Q for e in excitations), tuple(responses))
+
+
+def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
+    """(peak displacement, peak velocity, r.m.s. velocity, r.m.s. displacement), each (P, 3), of
+    the body points ``points`` (P, 3) [m] from O: each machine's series' peak (trig_series.peak),
+    added over the machines; an r.m.s. value the root-sum-square of every harmonic."""
+    from foundation_calc.solvers.numerics.trig_series import peak
+    from foundation_calc.solvers.rigid_body.kinematics import point_maps
+
+    T = point_maps(np.asarray(points, dtype=float))
+    shape = (len(points), 3)
+    displacement, velocity, square, square_u = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    for omega, orders, Z in zip(solve.omegas, solve.orders, solve.responses):
+        U = np.einsum("pij,hj->pih", T, Z)
+        V = U * (1j * omega * orders)
+        for series, total in ((U, displacement), (V, velocity)):
+            a = np.zeros(series.shape[:-1] + (int(orders.max()) + 1,), complex)
+            a[..., orders] = series
+            total += peak(a.real, -a.imag)
+        square += (np.abs(V) ** 2).sum(-1) / 2.0
+        square_u += (np.abs(U) ** 2).sum(-1) / 2.0
+    return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
+
+
+def _matrices(model) -> Table:
+    rows = []
+    for key, matrix in (("M", model.M), ("K", model.K), ("C", model.C)):
+        scale = np.abs(matrix).max() or None
+        for i, coordinate in enumerate(COORDINATES):
+            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), ROW_UNITS[key][i]))
+    return table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)", ("row", *COORDINATES, "units"), rows,
+                 (False, *(True,) * 6, False))
+
+
+def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
+    rows = [(str(j + 1), dominant[j], figure(p, 4), figure(p / (2 * np.pi), 4), figure(z, 3, 1.0))
+            for j, (p, z) in enumerate(zip(solve.frequencies, solve.damping))]
+    return table("Modes: K v = p² M v (eigen-solve of M⁻¹K), ζ = vᵀ C v / (2 p vᵀ M v)",
+                 ("mode", "dominant motion", "p [rad/s]", "f [Hz]", "ζ"), rows, (False, False, True, True, True))
+
+
+def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
+    labels, loads, amplitudes = [], [], []
+    for name, omega, orders, Q, Z in zip(solve.machines, solve.omegas, solve.orders, solve.loads, solve.responses):
+        for h, n in enumerate(orders):
+            labels.append((name, str(int(n)), n * omega))
+            loads.append(np.abs(Q[h]))
+            amplitudes.append(np.abs(Z[h]))
+    loads, amplitudes = np.array(loads), np.array(amplitudes)
+    omega_col = column([w for *_, w in labels], 4)
+    q_cols = [column(list(loads[:, j]), 4, loads[:, j].max() or None) for j in range(6)]
+    z_cols = [column(list(amplitudes[:, j]), 3, amplitudes[:, j].max() or None) for j in range(6)]
+    head = ("machine", "n", "Ω = nω [rad/s]")
+    forcing = table("Generalised loads about O: |Q_n| (F [N], M + r_F × F [N m])",
+                    (*head, "F_x", "F_y", "F_z", "M_x", "M_y", "M_z"),
+                    [(m, n, omega_col[k], *(c[k] for c in q_cols)) for k, (m, n, _) in enumerate(labels)],
+                    (False, False, *(True,) * 7))
+    response = table("Z = (K − Ω² M + i Ω C)⁻¹ Q_n: |Z| ([m], [rad])",
+                     (*head, *COORDINATES),
+                     [(m, n, omega_col[k], *(c[k] for c in z_cols)) for k, (m, n, _) in enumerate(labels)],
+                     (False, False, *(True,) * 7))
+    return forcing, response
+
+
+def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
+    """The code check of every point from the sheet's r.m.s. velocities and displacements: the
+    largest direction's values placed in the zone table, the worse zone deciding."""
+    from foundation_calc.checks.codes import zone_outcome
+    from foundation_calc.output.report.code_zone import judged_zone, zone_table
+
+    rows = []
+    for name, v, u in zip(names, rms, rms_u):
+        z = judged_zone(code, float(v.max()), float(u.max()))
+        d = int(np.argmax(v if z.quantity == "velocity" else u))
+        rows.append((name, DIRECTIONS[d], figure(v.max() * 1e3, 3), z.velocity_zone, figure(u.max() * 1e6, 3),
+                     z.displacement_zone, z.zone, zone_outcome(z.zone, code["acceptable_zone"]).value.upper()))
+    found = table("Code zone of each point: its largest v_rms and d_rms = √(Σ |u_P,n|²/2), the worse zone deciding",
+                  ("point", "direction", "v_rms [mm/s]", "v zone", "d_rms [µm]", "d zone", "zone", "verdict"),
+                  rows, (False, False, True, False, True, False, False, False))
+    return found, zone_table(code)
+
+
+def _points(solve: BlockSolve, names, points) -> Table:
+    displacement, velocity, rms, _ = point_values(solve, points)
+    labels = [(name, d) for name in names for d in DIRECTIONS]
+    cols = [column(list(values.ravel() * scale), 3) for values, scale in ((displacement, 1e6), (velocity, 1e3), (rms, 1e3))]
+    rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
+    return table("Points: u_P = T_P Z; peaks of each machine's series added; v_rms = √(Σ |nω u_P,n|²/2)",
+                 ("point", "direction", "peak displacement [µm]", "peak velocity [mm/s]", "v_rms [mm/s]"), rows,
+                 (False, False, True, True, True))
+
+
+def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
+    """The 6-DOF calculation of a block scene as sheet blocks (the ``amplitudes`` document gives
+    the modes' names and whether a steady state exists)."""
+    model = scene.model()
+    excitations = scene.excitations()
+    solve = block_solve(model, excitations)
+    blocks: list = [Paragraph(
+        "Rigid block in six degrees of freedom about O (centre of the base at base level, x along the length, y along"
+        " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
+        " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
+        " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
+    blocks.append(_matrices(model))
+    dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6
+    blocks.append(_modes(solve, dominant))
+    if amplitudes is not None and not amplitudes.get("resonant", False):
+        blocks += _harmonics(solve)
+        names = ["G", *(p.name for p in scene.points)]
+        points = [model.cog, *(p.at for p in scene.points)]
+        blocks.append(_points(solve, names, points))
+        if amplitudes.get("code"):
+            blocks += _zones(amplitudes["code"], names, *point_values(solve, points)[2:])
+    blocks.append(Definitions({
+        "O": ("centre of the base at base level, origin of q", "-"),
+        "q": ("displacement u_x, u_y, u_z of O and rotation θ_x, θ_y, θ_z of the block", "m, rad"),
+        "M, K, C": ("mass, stiffness and damping matrices about O", "SI"),
+        "p, v": ("natural frequency and mode shape of K v = p² M v", "rad/s, -"),
+        "ζ": ("modal damping ratio", "-"),
+        "Q_n": ("generalised load of order n about O (forces and moments)", "N, N m"),
+        "Ω": ("frequency of a load's order, nω of its machine", "rad/s"),
+        "Z": ("complex amplitude of q at Ω", "m, rad"),
+        "T_P": ("map of q to the displacement of point P, [I, −[r_P]×]", "-"),
+        "d_rms": ("r.m.s. displacement of a point, the root-sum-square of every harmonic", "µm"),
+        "G": ("centre of mass of block and machines", "-"),
+    }))
+    return tuple(blocks)
+
+
+__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "point_values"]

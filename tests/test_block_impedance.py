@@ -1,0 +1,87 @@
+"""A block foundation on Gazetas' frequency-dependent soil: every mode at its own frequency, every
+order at n ω. The yardstick is the crank foundation's plane model on the same soil, an independent
+implementation (its own 3-DOF matrices, springs from the crank scene, fixed points of its own):
+a block with the crank scene's base, mass and loads in the plane x-z must move as it does."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from foundation_calc.checks.block import check_block
+from foundation_calc.checks.crank_resonance import scene_block_frequencies
+from foundation_calc.scenes import load_scene, parse_scene
+from foundation_calc.solvers.block.response import complex_amplitudes, point_motion
+from foundation_calc.solvers.crank.loads import loads_response
+from tests.test_block_foundation import CONFIGS, _block_like_crank
+
+GAZETAS = {"method": "gazetas", "shear_wave_velocity": 150.0, "density": 1800.0, "poisson": 0.33, "material_damping": 0.03}
+
+
+def _pair():
+    crank = load_scene(f"{CONFIGS}/compressor_vendor_loads.toml")
+    document = _block_like_crank(crank) | {"soil": GAZETAS}
+    return crank.model_copy(update={"soil": crank.soil.__class__(**GAZETAS)}), parse_scene(document)
+
+
+def test_the_plane_modes_are_the_crank_foundations_frequency_consistent_ones():
+    """Sliding x, vertical and rocking about y of the block against the crank foundation's p1, k0,
+    p2 on the same soil (each solving ω = p(K(ω)); rel 1e-8, the fixed points' tolerance 1e-10 with
+    margin). The rocking falls well below its static value and its damping is radiation, not only
+    the soil's material damping 0.03."""
+    crank, block = _pair()
+    frequencies, static = scene_block_frequencies(crank)
+    modes = check_block(block).modes
+    by_motion = dict(zip(modes.dominant, modes.frequencies))
+    statics = dict(zip(modes.dominant, modes.static))
+    for motion, mode in (("x", "p1"), ("z", "k0"), ("ry", "p2")):
+        assert by_motion[motion] == pytest.approx(getattr(frequencies, mode), rel=1e-8)
+        assert statics[motion] == pytest.approx(getattr(static, mode), rel=1e-8)
+    assert by_motion["ry"] < 0.9 * statics["ry"]
+    assert dict(zip(modes.dominant, modes.damping))["ry"] > 0.3
+
+
+def test_each_order_moves_as_the_crank_foundation_does_with_the_springs_at_its_own_frequency():
+    """Order n of the block against the crank foundation's loads solved on its soil taken at n ω
+    (atol 1e-10 of the largest amplitude, as the static plane test); against the static springs the
+    block's motion differs by more than 5 %, so the test sees the frequency dependence."""
+    crank, block = _pair()
+    omega = crank.speed.omega_rad_s
+    model, (exc,) = block.model(), block.excitations()
+    Z = complex_amplitudes(model, exc, impedance=block.soil_impedance)
+    G = point_motion(model, [exc], [], np.zeros((0, 3)), impedance=block.soil_impedance).displacement[0][0]
+    expected = np.stack([G[0], -G[2], Z[:, 4]])
+    got = np.empty_like(expected)
+    for h, n in enumerate(exc.orders):
+        motion = loads_response(crank.block(n * omega), omega, crank.harmonic_loads()).motion
+        got[:, h] = (motion.cos - 1j * motion.sin)[:, n]
+    scale = np.abs(got).max(axis=1, keepdims=True)
+    np.testing.assert_allclose(expected / scale, got / scale, rtol=0, atol=1e-10)
+    static = point_motion(model, [exc], [], np.zeros((0, 3))).displacement[0][0]
+    assert np.abs(static - G).max() > 0.05 * np.abs(G).max()
+
+
+def test_a_sweep_on_gazetas_soil_is_the_single_speed_steady_state_at_each_speed():
+    """The block sweep (springs and dashpots at every n ω of every speed, in one batched solve)
+    against ``check_block`` of the scene with the compressor (vendor loads, amplitudes fixed) at
+    each of the speeds, one at a time (rel 1e-9: the same algebra, batched); and the margins
+    against the frequency-consistent modes."""
+    from foundation_calc.solvers.block.response import consistent_modes
+    from foundation_calc.solvers.block.sweep import speed_sweep
+    from tests.conftest import read_toml
+
+    document = read_toml(f"{CONFIGS}/block_two_machines.toml")
+    document["soil"] = {"method": "gazetas", "shear_wave_velocity": 250.0, "density": 1900.0, "poisson": 0.3,
+                        "material_damping": 0.03}
+    scene = parse_scene(document)
+    model, excitations = scene.model(), scene.excitations()
+    modes = consistent_modes(model, scene.soil_impedance)
+    rpm = np.array([300.0, 600.0, 1100.0])
+    sweep = speed_sweep(model, modes, excitations, 0, rpm * np.pi / 30.0, [p.at for p in scene.points], scene.soil_impedance)
+    for i, speed in enumerate(rpm):
+        document["machines"][0]["speed_rpm"] = float(speed)
+        single = check_block(parse_scene(document))
+        np.testing.assert_allclose(sweep.peak[i], single.motion.peak, rtol=1e-9)
+        np.testing.assert_allclose(sweep.velocity_rms[i], single.motion.velocity_rms, rtol=1e-9)
+        np.testing.assert_allclose(sweep.margin[i, 0], [r.margin for r in single.resonance_rows if r.machine == "compressor" and r.order == 1],
+                                   rtol=1e-9)
