@@ -75,3 +75,26 @@ def test_block_code_zones_are_the_checks():
         (p["point"], p["governing"], p["velocity_zone"], p["displacement_zone"], p["zone"], p["verdict"])
         for p in doc["code"]["points"]]
     assert any("Table A.2" in getattr(b, "title", "") for b in blocks)
+
+
+def test_a_frequency_dependent_block_soil_takes_each_order_and_mode_at_its_frequency():
+    """The fan block on Gazetas' soil: Z of order n with K(nω), C(nω), and the j-th mode on
+    K(ω_j*) returning the check's ω_j* (the fixed point, iterated to 1e-10 by the solver)."""
+    from foundation_calc.output.report.block_methods import block_solve, point_values
+    from foundation_calc.scenes import parse_scene, read_toml
+
+    data = read_toml(CONFIGS / "block_fan_torsion_near_speed.toml")
+    data["soil"]["method"] = "gazetas"
+    scene = parse_scene(data)
+    assert scene.soil.frequency_dependent
+    doc = _amplitudes(scene)
+    own = [m["frequency"]["omega"] for m in doc["modes"]]
+    solve = block_solve(scene.model(), scene.excitations(), scene.soil_impedance, own)
+    for p, judged in zip(solve.frequencies, own):
+        assert abs(p - judged) <= 1e-8 * judged  # the fixed point's own tolerance, 1e-10, with margin
+    names = ["G", *(p.name for p in scene.points)]
+    _, _, rms, _ = point_values(solve, [doc["points"][name]["at"] for name in names])
+    for i, name in enumerate(names):
+        for j, d in enumerate(("x", "y", "z")):
+            judged = doc["points"][name]["velocity_rms"][d]
+            assert abs(rms[i, j] - judged) <= TOLERANCE * judged, (name, d)

@@ -29,17 +29,27 @@ def _amplitudes(scene) -> dict:
     return amplitudes_document(check_scene_amplitudes(scene), scene, "")
 
 
-@pytest.mark.parametrize("base", [(6.0, 4.0, 1.5), (4.0, 6.0, 0.0)], ids=["long-embedded", "short-surface"])
+def _pais_kausel_scene(length: float, width: float, embedment: float):
+    """The same scene with Pais & Kausel's static springs (Gazetas' dynamic modifiers and dashpots)."""
+    from foundation_calc.scenes import parse_scene
+
+    data = _gazetas_scene(length, width, embedment).model_dump(exclude_none=True)
+    data["soil"]["method"] = "pais_kausel"
+    return parse_scene(data)
+
+
+@pytest.mark.parametrize("base", [(6.0, 4.0, 1.5, "gazetas"), (4.0, 6.0, 0.0, "gazetas"), (6.0, 4.0, 1.5, "pais_kausel")],
+                         ids=["long-embedded", "short-surface", "pais-kausel"])
 def test_each_harmonic_and_each_mode_at_its_own_frequency(base):
     from foundation_calc.checks.crank_resonance import scene_design_frequencies
     from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns, shown_harmonics
-    from foundation_calc.output.report.soil_methods import gazetas_springs_chain
+    from foundation_calc.output.report.soil_methods import gazetas_chains
 
-    scene = _gazetas_scene(*base)
+    scene = (_gazetas_scene if base[3] == "gazetas" else _pais_kausel_scene)(*base[:3])
     amplitudes = _amplitudes(scene)
     harmonics = shown_harmonics(amplitudes)
     assert 2 in harmonics  # the crank's 2ω is on the sheet
-    by_harmonic, by_mode = gazetas_frequency_columns(scene, gazetas_springs_chain(scene), amplitudes)
+    by_harmonic, by_mode = gazetas_frequency_columns(scene, gazetas_chains(scene)[0], amplitudes)
     omega = scene.speed.omega_rad_s
     for n, values in zip(harmonics, by_harmonic.values):
         springs = scene.soil_springs(omega=n * omega)  # what splice_harmonics solves harmonic n with

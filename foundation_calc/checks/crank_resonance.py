@@ -164,12 +164,50 @@ def _label(n: int, mode: str) -> str:
     return f"{n if n > 1 else ''}ω = {mode}"
 
 
-def _mode_order(M, shapes) -> list[int]:
+#: Column orders k0, p1, p2 of ascending modes, by the column of k0.
+_ORDERS = np.array([[0, 1, 2], [1, 0, 2], [2, 0, 1]])
+
+
+def _mode_order(M, shapes) -> np.ndarray:
     """Columns of ``shapes`` (ascending frequencies) in the order k0, p1, p2: k0 is the mode whose
-    motion is most vertical (largest share of its kinetic energy in y), p1 and p2 the others."""
-    vertical = shapes[1] ** 2 * M[1, 1]
-    k0 = int(np.argmax(vertical))
-    return [k0, *(j for j in range(3) if j != k0)]
+    motion is most vertical (largest share of its kinetic energy in y), p1 and p2 the others.
+    Stacks (..., 3, 3) give (..., 3)."""
+    vertical = shapes[..., 1, :] ** 2 * M[..., 1, 1, None]
+    return _ORDERS[np.argmax(vertical, axis=-1)]
+
+
+def forcing_shares(M, K, forces) -> np.ndarray:
+    """Forcing share [-] of each harmonic on each mode: the modal weights
+    (:func:`~foundation_calc.solvers.numerics.modal_forcing.modal_forcing_weights`) of ``forces``
+    (H, 3) on (K, M), modes in the order k0, p1, p2, over the largest weight; shape (..., H, 3)
+    for stacks (..., 3, 3) of operators."""
+    from foundation_calc.solvers.numerics.modal_forcing import modal_forcing_weights
+
+    _, shapes, weights = modal_forcing_weights(M, K, forces)
+    weights = np.take_along_axis(weights, _mode_order(M, shapes)[..., None, :], axis=-1)
+    largest = weights.max(axis=(-2, -1), keepdims=True)
+    return np.where(largest > 0.0, weights / np.where(largest > 0.0, largest, 1.0), 0.0)
+
+
+def harmonic_conditions(orders, load_orders=(), mechanism: bool = True) -> tuple[ResonanceCondition, ...]:
+    """The conditions n ω = k0, p1, p2 of every order n of ``orders``, in that order: the paper's
+    own where it names them, else one of the mechanism's harmonics, of the loads' orders or of the
+    speed itself (a machine given by its loads)."""
+    known = {(c.harmonic, c.mode): c for c in CONDITIONS} if mechanism else {}
+    conditions = []
+    for n in orders:
+        for mode in _MODES:
+            condition = known.get((n, mode))
+            if condition is None:
+                source = "loads" if n in load_orders else "harmonic" if mechanism else "speed"
+                excitation = {
+                    "loads": f"loads of order {n}",
+                    "harmonic": f"harmonic {n} of the mechanism's forcing",
+                    "speed": "the speed itself (no load of order 1)",
+                }[source]
+                condition = ResonanceCondition(_label(n, mode), n, mode, source, excitation)
+            conditions.append(condition)
+    return tuple(conditions)
 
 
 def machine_conditions(design: CrankDesign | None, loads=None, block=None) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
@@ -182,7 +220,6 @@ def machine_conditions(design: CrankDesign | None, loads=None, block=None) -> tu
     """
     from foundation_calc.solvers.crank.averaged import averaged_operator
     from foundation_calc.solvers.crank.loads import matrices
-    from foundation_calc.solvers.numerics.modal_forcing import modal_forcing_weights
 
     forces: dict[int, np.ndarray] = {1: np.zeros(3, dtype=complex)}
     if design is not None:
@@ -198,26 +235,8 @@ def machine_conditions(design: CrankDesign | None, loads=None, block=None) -> tu
             load_orders.add(n)
             forces[n] = forces.get(n, 0.0) + generalized[np.asarray(loads.order) == n].sum(axis=0)
     orders = sorted(forces)
-    _, shapes, weights = modal_forcing_weights(M, K, np.array([forces[n] for n in orders]))
-    weights = weights[:, _mode_order(M, shapes)]
-    largest = weights.max()
-    shares = weights / largest if largest > 0.0 else np.zeros_like(weights)
-    known = {(c.harmonic, c.mode): c for c in CONDITIONS} if design is not None else {}
-    conditions, share = [], []
-    for i, n in enumerate(orders):
-        for j, mode in enumerate(_MODES):
-            condition = known.get((n, mode))
-            if condition is None:
-                source = "loads" if n in load_orders else "harmonic" if design is not None else "speed"
-                excitation = {
-                    "loads": f"loads of order {n}",
-                    "harmonic": f"harmonic {n} of the mechanism's forcing",
-                    "speed": "the speed itself (no load of order 1)",
-                }[source]
-                condition = ResonanceCondition(_label(n, mode), n, mode, source, excitation)
-            conditions.append(condition)
-            share.append(float(shares[i, j]))
-    return tuple(conditions), np.array(share)
+    shares = forcing_shares(M, K, np.array([forces[n] for n in orders]))
+    return harmonic_conditions(orders, load_orders, design is not None), shares.ravel()
 
 
 def judge_conditions(omega, zero, averaged, conditions, share, detuning):
@@ -313,7 +332,7 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
 
 
-def _consistent(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
     """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
     NaturalFrequencies on the springs taken at ω."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
@@ -330,8 +349,8 @@ def scene_design_frequencies(scene):
     if not scene.soil.frequency_dependent:
         return None
     static, static_averaged = design_frequencies(scene.design())
-    zero = _consistent(static, lambda w: design_frequencies(scene.design(w))[0])
-    averaged = _consistent(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
+    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
     return zero, averaged, static
 
 
@@ -343,4 +362,4 @@ def scene_block_frequencies(scene):
     from foundation_calc.solvers.crank.loads import block_frequencies
 
     static = block_frequencies(scene.block())
-    return _consistent(static, lambda w: block_frequencies(scene.block(w))), static
+    return consistent_frequencies(static, lambda w: block_frequencies(scene.block(w))), static

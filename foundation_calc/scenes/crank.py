@@ -397,26 +397,35 @@ class CrankScene(OnSoil, SceneModel):
         ``"pais_kausel"``) takes its
         springs and dashpots; the other methods are frequency-independent and ignore it.
         """
-        f, s = self.foundation, self.soil
+        f = self.foundation
+        L, B = f.dimensions
+        return self.base_springs(L, B, f.base_area, f.base_second_moment, self.total_mass, f.moment_of_inertia,
+                                 f.cog_height, method, omega)
+
+    def base_springs(self, L, B, S, I1, M_tot, I_c, h, method: str | None = None, omega=0.0, factor=1.0) -> SoilSprings:
+        """:meth:`soil_springs` of this soil under another block: base L × B [m] (area S [m²],
+        second moment I1 [m⁴]), total mass M_tot [kg], I_c [kg m²] about its centre of mass at
+        height h [m]; ``factor`` [-] multiplies the soil's stiffness data as :meth:`Soil.factored`
+        does. Arrays welcome (a batch of candidate blocks, a frequency or a factor per element)."""
+        s = self.soil
         method = method or s.method_used
-        M_tot = self.total_mass
-        S, I1 = f.base_area, f.base_second_moment
         if method == "coefficients":
             c_phi = s.c_z if s.c_phi is None else s.c_phi
             xi_z, xi_x, xi_phi = s.damping or (0.0, 0.0, 0.0)
-            return SoilSprings(K_z=s.c_z * S, K_x=s.c_x * S, K_phi=c_phi * I1, xi_z=xi_z, xi_x=xi_x, xi_phi=xi_phi)
+            return SoilSprings(K_z=s.c_z * factor * S, K_x=s.c_x * factor * S, K_phi=c_phi * factor * I1,
+                               xi_z=xi_z, xi_x=xi_x, xi_phi=xi_phi)
         if method == "sp26":
-            return sp26_springs(s.deformation_modulus, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
-        L, B = f.dimensions
-        I_0 = f.moment_of_inertia + M_tot * f.cog_height**2
+            return sp26_springs(s.deformation_modulus * factor, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
+        I_0 = I_c + M_tot * h**2
         if method == "lysmer":
-            return lysmer_springs(s.G, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
+            return lysmer_springs(s.G * factor, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
         if method == "pais_kausel":
             from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
         else:
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs  # numpy: only when asked for
 
-        return springs(s.G, s.density, s.poisson, L, B, f.embedment or 0.0, M_tot, I_0, s.material_damping or 0.0, omega)
+        return springs(s.G * factor, s.density, s.poisson, L, B, self.foundation.embedment or 0.0, M_tot, I_0,
+                       s.material_damping or 0.0, omega)
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""

@@ -25,7 +25,10 @@ import numpy as np
 PASS, WARN, FAIL = 0, 1, 2
 
 #: scene kind -> module whose ``evaluate(scene, batch)`` returns :class:`CandidateVerdicts`.
-EVALUATORS: dict[str, str] = {"block_foundation": "foundation_calc.checks.design.block"}
+EVALUATORS: dict[str, str] = {
+    "block_foundation": "foundation_calc.checks.design.block",
+    "crank_foundation": "foundation_calc.checks.design.crank",
+}
 
 #: A batch: varied scene key -> (N,) values [SI].
 Batch = Mapping[str, np.ndarray]

@@ -58,13 +58,31 @@ def modes_of(M, K, C) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return p, v, np.einsum("ni,nm,mi->i", v, C, v) / (2.0 * p)
 
 
-def block_solve(model, excitations) -> BlockSolve:
-    """Modes from an eigen-solve of M⁻¹K and Z of every machine's orders by one complex solve each."""
-    p, _, zeta = modes_of(model.M, model.K, model.C)
+def block_solve(model, excitations, impedance=None, own=None) -> BlockSolve:
+    """Modes from an eigen-solve of M⁻¹K and Z of every machine's orders by one complex solve each.
+
+    On a frequency-dependent soil (``impedance``: Ω -> (springs, dashpots) at O, the scene's
+    ``soil_impedance``) order n takes K(nω), C(nω), and mode j is the j-th of the eigen-solve on
+    K(ω_j*), ω_j* its own frequency as the resonance check found it (``own``, rad/s): it returns
+    ω_j* when ω* = p(K(ω*)) holds."""
+
+    def matrices(frequency):
+        if impedance is None:
+            return model.K, model.C
+        return model.soil_matrices(*impedance(np.asarray(frequency, dtype=float)))
+
+    if impedance is None:
+        p, _, zeta = modes_of(model.M, model.K, model.C)
+    else:
+        pairs = [modes_of(model.M, *matrices(w)) for w in own]
+        p = np.array([pair[0][j] for j, pair in enumerate(pairs)])
+        zeta = np.array([pair[2][j] for j, pair in enumerate(pairs)])
     responses = []
     for exc in excitations:
-        Z = [np.linalg.solve(model.K - (n * exc.omega) ** 2 * model.M + 1j * n * exc.omega * model.C, q)
-             for n, q in zip(exc.orders, exc.Q)]
+        Z = []
+        for n, q in zip(exc.orders, exc.Q):
+            K, C = matrices(n * exc.omega)
+            Z.append(np.linalg.solve(K - (n * exc.omega) ** 2 * model.M + 1j * n * exc.omega * C, q))
         responses.append(np.array(Z).reshape(len(exc.orders), 6))
     return BlockSolve(p, zeta, tuple(e.name for e in excitations), tuple(e.omega for e in excitations),
                       tuple(e.orders for e in excitations), tuple(e.Q for e in excitations), tuple(responses))
@@ -92,14 +110,20 @@ def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
     return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
 
 
-def _matrices(model) -> Table:
+def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
+    """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
+    entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0."""
     rows = []
-    for key, matrix in (("M", model.M), ("K", model.K), ("C", model.C)):
+    for key, matrix in matrices:
         scale = np.abs(matrix).max() or None
-        for i, coordinate in enumerate(COORDINATES):
-            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), ROW_UNITS[key][i]))
-    return table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)", ("row", *COORDINATES, "units"), rows,
-                 (False, *(True,) * 6, False))
+        for i, coordinate in enumerate(coordinates):
+            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), units[key][i]))
+    return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
+
+
+def _matrices(model) -> Table:
+    return matrix_table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)",
+                        (("M", model.M), ("K", model.K), ("C", model.C)), COORDINATES, ROW_UNITS)
 
 
 def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
@@ -165,13 +189,20 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     the modes' names and whether a steady state exists)."""
     model = scene.model()
     excitations = scene.excitations()
-    solve = block_solve(model, excitations)
+    dependent = scene.soil.frequency_dependent and amplitudes is not None
+    own = [m["frequency"]["omega"] for m in amplitudes["modes"]] if dependent else None
+    solve = block_solve(model, excitations, scene.soil_impedance if dependent else None, own)
     blocks: list = [Paragraph(
         "Rigid block in six degrees of freedom about O (centre of the base at base level, x along the length, y along"
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
         " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
         " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
     blocks.append(_matrices(model))
+    if dependent:
+        blocks.append(Paragraph(
+            "The soil's springs and dashpots depend on frequency (soil.method = \"" + scene.soil.method_used + "\"): the matrices"
+            " above hold the static springs; each order n is solved with K(nω), C(nω) at O, and each mode j is the j-th"
+            " of K(ω_j*) v = p² M v at its own frequency ω_j* = p_j(K(ω_j*)), as the resonance check takes it."))
     dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6
     blocks.append(_modes(solve, dominant))
     if amplitudes is not None and not amplitudes.get("resonant", False):
@@ -197,4 +228,4 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     return tuple(blocks)
 
 
-__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "point_values"]
+__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "matrix_table", "modes_of", "point_values"]

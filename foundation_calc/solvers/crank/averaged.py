@@ -30,7 +30,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -129,18 +129,23 @@ def base_dashpot_matrix(design: CrankDesign) -> np.ndarray:
     )
 
 
-def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
-    """Ascending natural frequencies [rad/s] of (K, M) and their mode shapes (columns), or
-    :class:`PhysicsError` when double precision cannot resolve them (a singular mass matrix, or
-    frequencies more than 1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is
-    round-off)."""
+def natural_modes(M, K) -> tuple[np.ndarray, np.ndarray]:
+    """Ascending natural frequencies [rad/s] of (K, M) and their mode shapes (columns), for one
+    (3, 3) pair or stacks (..., 3, 3); a singular M gives frequencies 0 and unit shapes."""
     try:
         squared, shapes = np.linalg.eig(np.linalg.solve(M, K))
     except np.linalg.LinAlgError:
-        squared, shapes = np.zeros(3), np.eye(3)
-    order = np.argsort(np.abs(squared.real))
-    natural = np.sqrt(np.abs(squared.real[order]))
-    shapes = shapes.real[:, order]
+        squared, shapes = np.zeros(np.shape(M)[:-1]), np.broadcast_to(np.eye(3), np.shape(M))
+    order = np.argsort(np.abs(squared.real), axis=-1)
+    natural = np.sqrt(np.abs(np.take_along_axis(squared.real, order, axis=-1)))
+    return natural, np.take_along_axis(shapes.real, order[..., None, :], axis=-1)
+
+
+def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`natural_modes` of one design, or :class:`PhysicsError` when double precision cannot
+    resolve them (a singular mass matrix, or frequencies more than
+    1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is round-off)."""
+    natural, shapes = natural_modes(M, K)
     if not np.all(np.isfinite(natural)) or natural[0] <= RESOLVED_FREQUENCY_RATIO * natural[-1]:
         raise PhysicsError(
             f"the natural frequencies of the averaged operator ({', '.join(f'{w:.3g}' for w in natural)} rad/s)"
@@ -153,20 +158,44 @@ def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
 
 def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
     """ζ_j = v_j·C v_j / (2 p_j v_j·M v_j) [-] of each mode shape v_j (columns of ``shapes``);
-    0 for a shape of no modal mass (round-off), never NaN."""
-    damping = np.einsum("ij,ik,kj->j", shapes, C, shapes)
-    inertia = 2.0 * natural * np.einsum("ij,ik,kj->j", shapes, M, shapes)
+    0 for a shape of no modal mass (round-off), never NaN. Stacks (..., 3, 3) welcome."""
+    damping = np.einsum("...ij,...ik,...kj->...j", shapes, C, shapes)
+    inertia = 2.0 * natural * np.einsum("...ij,...ik,...kj->...j", shapes, M, shapes)
     return np.where(inertia > 0.0, damping / np.where(inertia > 0.0, inertia, 1.0), 0.0)
+
+
+def block_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """M, C, K (..., 3, 3) of the block on its soil, the mechanism left out: the terms of the
+    exact equations (:mod:`~foundation_calc.solvers.crank.dynamics`) in M_tot, I_c and the base's
+    springs and dashpots, which are linear in q already (fields may be arrays: a batch of blocks)."""
+    from foundation_calc.solvers.crank.loads import RigidBlock, matrices
+
+    d = design
+    M, K, C = matrices(RigidBlock(M_tot=d.M_tot, I_c=d.I_c, h=d.h, K_x=d.c1 * d.S, K_z=d.c * d.S,
+                                  K_phi=d.c_phi * d.I1, C_x=d.C_x, C_z=d.C_z, C_phi=d.C_phi, g=d.g))
+    return M, C, K
+
+
+def mechanism_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
+    """The mechanism's part of :func:`averaged_operator`: M̄, C̄, K̄ (3, 3) of the exact equations
+    with no block (M_tot = 0, I_c = 0, no soil) and the forcing's coefficients. The forcing -r0
+    (q = 0) holds no block term, so these depend on the mechanism and the speed alone: one call
+    serves every block that carries the same machine."""
+    bare = replace(design, M=-design.rod.m, I_c=0.0, c=0.0, c1=0.0, c_phi=0.0, C_x=0.0, C_z=0.0, C_phi=0.0)
+    lin = linearise(bare, phases(FORCING_SAMPLES))
+    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
+    return M, C, K, fc, fs
 
 
 def averaged_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
     """M̄, C̄, K̄ (3, 3) of the exact equations linearised about rest and averaged over a
     revolution, and the cosine and sine coefficients (3, :data:`FORCING_HARMONICS` + 1) of the
-    exact forcing -r0 (module docstring); order x, y, θ."""
-    lin = linearise(design, phases(FORCING_SAMPLES))
-    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
-    fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
-    return M, C, K, fc, fs
+    exact forcing -r0 (module docstring); order x, y, θ: the mechanism's part
+    (:func:`mechanism_operator`) plus the block's (:func:`block_matrices`)."""
+    M, C, K, fc, fs = mechanism_operator(design)
+    M_b, C_b, K_b = block_matrices(design)
+    return M + M_b, C + C_b, K + K_b, fc, fs
 
 
 def averaged_response(design: CrankDesign) -> AveragedResponse:
@@ -228,6 +257,9 @@ __all__ = [
     "averaged_operator",
     "averaged_response",
     "base_dashpot_matrix",
+    "block_matrices",
     "linearise",
+    "mechanism_operator",
     "modal_damping_ratios",
+    "natural_modes",
 ]

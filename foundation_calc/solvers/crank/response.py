@@ -93,8 +93,16 @@ def theta_minus_sine(theta):
     """
     theta = np.asarray(theta, dtype=float)
     t = theta * theta
+    # the terms beyond the first whose size, at the largest |θ| summed, is below 2⁻⁶⁰ of θ³/6
+    largest = min(float(t.max(initial=0.0)), _SERIES_ANGLE**2)
+    terms, size = 0, 1.0
+    for ratio in _TAYLOR_RATIOS[::-1]:
+        size *= largest / ratio
+        if size < 2.0**-60:
+            break
+        terms += 1
     taylor = 1.0
-    for ratio in _TAYLOR_RATIOS:
+    for ratio in _TAYLOR_RATIOS[len(_TAYLOR_RATIOS) - terms :]:
         taylor = 1.0 - t / ratio * taylor
     return np.where(np.abs(theta) <= _SERIES_ANGLE, theta * t / 6.0 * taylor, theta - np.sin(theta))
 

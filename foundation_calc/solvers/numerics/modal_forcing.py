@@ -25,14 +25,15 @@ def modal_forcing_weights(M, K, forces) -> tuple[np.ndarray, np.ndarray, np.ndar
 
     Parameters
     ----------
-    M, K : mass and stiffness matrices, shape (D, D) (symmetric, M positive definite)
+    M, K : mass and stiffness matrices, shape (D, D) (symmetric, M positive definite), or stacks
+        (..., D, D) of them
     forces : complex generalised force of each harmonic, shape (N, D)
 
     Returns
     -------
-    natural : p_j [rad/s], ascending, shape (D,)
-    shapes : φ_j as columns, shape (D, D)
-    weights : w_nj = |φ_jᵀ F_n|/p_j, shape (N, D) (0 for a mode of zero frequency)
+    natural : p_j [rad/s], ascending, shape (..., D)
+    shapes : φ_j as columns, shape (..., D, D)
+    weights : w_nj = |φ_jᵀ F_n|/p_j, shape (..., N, D) (0 for a mode of zero frequency)
 
     The modes are :func:`~foundation_calc.solvers.numerics.symmetric_modes.symmetric_modes`.
 
@@ -43,7 +44,8 @@ def modal_forcing_weights(M, K, forces) -> tuple[np.ndarray, np.ndarray, np.ndar
     squared, shapes = symmetric_modes(np.asarray(K, dtype=float), np.asarray(M, dtype=float))
     natural = np.sqrt(np.clip(squared, 0.0, None))
     modal = np.abs(np.asarray(forces, dtype=complex) @ shapes)
-    weights = np.where(natural > 0.0, modal / np.where(natural > 0.0, natural, 1.0), 0.0)
+    p = natural[..., None, :]  # stacks of structures: (..., D) frequencies against (..., N, D) weights
+    weights = np.where(p > 0.0, modal / np.where(p > 0.0, p, 1.0), 0.0)
     return natural, shapes, weights
 
 
