@@ -101,6 +101,28 @@ def test_sweep_of_one_machine(runner):
     assert unnamed.exit_code == 2 and "compressor, motor" in unnamed.stderr
 
 
+def test_a_block_sweep_writes_its_rows_to_csv_and_a_plot(runner, tmp_path):
+    """--csv holds the --json rows (SI, the shortest round-trip floats: equal to the last bit);
+    --plot writes a PNG; --soil stays a crank scene's (exit 2)."""
+    import csv
+
+    pytest.importorskip("matplotlib")
+    args = ["sweep", "configs/block_two_machines.toml", "--speed", "1000:2600:5", "--machine", "motor"]
+    doc = json.loads(runner.invoke(app, [*args, "--json"]).stdout)
+    table, picture = tmp_path / "sweep.csv", tmp_path / "sweep.png"
+    result = runner.invoke(app, [*args, "--csv", str(table), "--plot", str(picture)])
+    assert result.exit_code == 0, result.stderr
+    rows = list(csv.DictReader(table.open(encoding="utf-8")))
+    assert len(rows) == len(doc["points"]) == 5
+    for row, point in zip(rows, doc["points"]):
+        assert float(row["omega_rad_s"]) == point["omega"] and row["status"] == point["status"]
+        assert [float(row[f"peak_{d}_m"]) for d in "xyz"] == [point["peak"][d] for d in "xyz"]
+        assert int(row["nearest_mode"]) == point["nearest"]["mode"] and float(row["margin"]) == point["nearest"]["margin"]
+    assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    soil = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--soil", "0.5:1.5:3"])
+    assert soil.exit_code == 2 and "--speed" in soil.stderr
+
+
 def test_office_checks_judge_as_their_sources_say(tmp_path, runner):
     """Eccentricity (a "should": warns), bearing pressure (statics against the allowable: fails),
     on a block and on a crank scene, values by hand."""

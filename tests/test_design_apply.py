@@ -111,3 +111,20 @@ def test_a_candidate_that_cannot_be_built_fails_with_its_reason():
     assert verdicts.outcome["resonance"][0] == FAIL and verdicts.utilisation["resonance"][0] == math.inf
     assert "unstable in rocking" in verdicts.reasons["resonance"][verdicts.governing["resonance"][0]]
     assert verdicts.worst_margin[0] == -math.inf
+
+
+def test_crank_helpers_on_arrays_match_the_document_rule():
+    """The array helpers a vectorised crank evaluator uses give, candidate by candidate, what the
+    candidate's scene holds (two heights in one call)."""
+    from foundation_calc.checks.design.apply import moved_from_c, moved_machine_height
+
+    document = read_toml(COMPRESSOR)
+    before = parse_scene(document)
+    heights = np.array([1.2, 2.3])
+    after = [apply(document, {"block.height": h}) for h in heights]
+    old, new = (6.0, 4.0, 1.6), (6.0, 4.0, heights)
+    machine = moved_machine_height(before.foundation.machine.cog_height, old, new)
+    assert machine.tolist() == pytest.approx([s.foundation.machine.cog_height for s in after], rel=1e-12)
+    h_new = np.array([s.foundation.cog_height for s in after])
+    _, a = moved_from_c(0.0, before.mechanism.crank_axis_to_cog, before.foundation.cog_height, h_new, old, new)
+    assert a.tolist() == pytest.approx([s.mechanism.crank_axis_to_cog for s in after], rel=1e-12)

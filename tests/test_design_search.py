@@ -188,3 +188,18 @@ def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
     rule = ("the candidate's scene is checks/design/apply.py's: machines, loads and points on the block's top rise"
             " with it, those on an end face follow it (a crank's C-relative heights re-measured from the new C)")
     assert not found, (rule, [d.text for d in found])
+
+
+def test_block_evaluator_judges_a_modulus_range_as_fcalc_checks_path():
+    """A scene with a soil modulus_range: the vectorised block evaluator judges the range (its grid
+    factors and crossings) and agrees with fcalc check's path, check by check."""
+    from foundation_calc.checks.design import reference
+    from foundation_calc.checks.design.block import evaluate
+    from foundation_calc.scenes import parse_scene
+
+    document = read_toml(FAN)
+    document["soil"]["modulus_range"] = [0.7, 1.5]
+    batch = {"block.height": np.array([1.2, 2.4])}
+    fast, slow = evaluate(parse_scene(document), batch), reference.evaluate(document, batch, source="range")
+    for check in ("resonance", "amplitudes", "office"):
+        assert fast.outcome[check].tolist() == slow.outcome[check].tolist(), check

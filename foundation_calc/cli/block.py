@@ -37,9 +37,10 @@ def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnit
     return exit_code(worst([report.amplitude_outcome, report.office_outcome]), strict)
 
 
-def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: str | None) -> int:
+def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: str | None, csv=None, plot=None) -> int:
     """The block's peaks and RMS velocities along a sweep of one machine's speed ``omega``
-    [rad/s] (the others at their own); a picture, not a check: exit 0."""
+    [rad/s] (the others at their own), and its ``csv`` and ``plot`` files if asked; a picture,
+    not a check: exit 0."""
     import typer
 
     from foundation_calc.output import block_sweep as out
@@ -62,6 +63,12 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)
     rows = out.sweep_rows(result, modes, loaded, swept)
+    if csv is not None:
+        from foundation_calc.output.files import write_chunks_atomically
+
+        write_chunks_atomically(csv, (out.sweep_csv(rows),))
+    if plot is not None:
+        out.plot_sweep(rows, modes, loaded, swept, plot, units, loaded.name or source)
     if json:
         from foundation_calc.output.console import print_json
 

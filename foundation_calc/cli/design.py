@@ -58,8 +58,18 @@ def _evaluator(kind: str, scene, document, source: str, given: dict[str, float])
             return evaluate, f"vectorised evaluator of {kind}", grid.MAX_CANDIDATES, REFINE
         except NotImplementedError as exc:
             why = f"the vectorised evaluator of {kind} does not take this scene ({exc})"
-    name = f"{why}: each candidate through fcalc check's path, about 10-30 ms each"
-    return functools.partial(reference.evaluate, document, source=source), name, grid.MAX_REFERENCE_CANDIDATES, 2
+    import time
+
+    evaluate = functools.partial(reference.evaluate, document, source=source)
+    own = {key: np.array([value]) for key, value in given.items()}
+    evaluate(own)  # imports and caches: the second call is what a candidate costs
+    start = time.perf_counter()
+    evaluate(own)
+    cost = time.perf_counter() - start
+    maximum = max(1, min(grid.MAX_REFERENCE_CANDIDATES, int(grid.MAX_REFERENCE_SECONDS / cost)))
+    name = (f"{why}: each candidate through fcalc check's path, {cost * 1e3:.3g} ms on the scene's own block;"
+            f" at most {maximum} candidates")
+    return evaluate, name, maximum, 2
 
 
 def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None) -> None:
@@ -91,8 +101,10 @@ def design(
     """Size the block: the cheapest (concrete volume) that passes every check of fcalc check.
 
     The varied dimensions run over a grid, judged chunk by chunk by the kind's vectorised
-    evaluator (or, for a kind without one, by fcalc check's path candidate by candidate); the
-    search then refines one grid step around the cheapest passing design at a 5 times finer step.
+    evaluator (or, for a kind or scene it does not take, such as a soil's modulus_range, by fcalc
+    check's path candidate by candidate, and the output says so); the search then refines one
+    grid step around the cheapest passing design at a 5 times finer step (2 times, candidate by
+    candidate).
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
     fail. The shown designs are checked again by fcalc check's own path; a disagreement is
@@ -116,6 +128,10 @@ def design(
     sizing = _size(scene, loaded, document, searched_grid, (evaluate, evaluator, refine), given, strict)
     if write is not None and sizing.found.found:
         sizing = _write(scene, write, sizing)
+    elif write is not None:
+        from foundation_calc.output.console import stderr
+
+        stderr().print(f"{write} not written: no candidate passes", soft_wrap=True, markup=False)
     _report(sizing, json, plot)
     if sizing.disagreements:
         raise typer.Exit(4)

@@ -142,10 +142,9 @@ def sweep(
     loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
     if loaded.kind in KIND_MODULES:
-        if variable != "omega" or csv is not None or plot is not None:
-            raise typer.BadParameter("a block_foundation scene is swept by --speed, without --csv or --plot",
-                                     param_hint="'--soil' / '--csv' / '--plot'")
-        run_kind("sweep", loaded, str(scene), json=json, units=shown, omega=values, machine=machine)
+        if variable != "omega":
+            raise typer.BadParameter("a block_foundation scene is swept by --speed", param_hint="'--soil'")
+        run_kind("sweep", loaded, str(scene), json=json, units=shown, omega=values, machine=machine, csv=csv, plot=plot)
     if machine is not None:
         raise typer.BadParameter("--machine names a machine of a block_foundation scene", param_hint="'--machine'")
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]

@@ -22,8 +22,9 @@ the scene gives):
   centre of mass C (``mechanism.crank_axis_to_cog``, ``loads[].at.height``, ``points[].height``)
   are moved by the rule above in base coordinates and measured again from the new C.
 
-A vectorised evaluator applies the same rule with :func:`moved` on arrays, so that its verdicts
-and those of :func:`apply` followed by ``fcalc check``'s path are the same.
+A vectorised evaluator applies the same rule on arrays with :func:`moved` (and, for a crank
+scene, :func:`moved_machine_height` and :func:`moved_from_c`), so that its verdicts and those of
+:func:`apply` followed by ``fcalc check``'s path are the same.
 """
 
 from __future__ import annotations
@@ -181,18 +182,36 @@ def _crank_c_height(foundation: dict, dimensions) -> float:
                                     machine.get("moment_of_inertia", 0.0)).h)
 
 
+def moved_from_c(horizontal, height, h_old, h_new, old, new):
+    """(horizontal, height) from C [m] of a position given from C (a crank scene's points, loads,
+    the crank axis's ``a``) on a block resized from ``old`` to ``new`` (L, B, H), C moving from
+    ``h_old`` to ``h_new`` above the base: moved in base coordinates by :func:`moved`, measured
+    again from the new C. Arrays broadcast (a batch of candidates), as :func:`moved`."""
+    at = np.stack(np.broadcast_arrays(np.asarray(horizontal, dtype=float), 0.0, np.asarray(height, dtype=float) + h_old),
+                  axis=-1)
+    x, _, z = np.moveaxis(moved(at, old, new), -1, 0)
+    return x, z - h_new
+
+
+def moved_machine_height(cog_height, old, new):
+    """A crank machine's ``cog_height`` above the base [m] on a block resized from ``old`` to
+    ``new``: it rises with the top when it stands on it (:func:`moved`)."""
+    return np.moveaxis(moved(np.stack(np.broadcast_arrays(0.0, 0.0, np.asarray(cog_height, dtype=float)), axis=-1),
+                             old, new), -1, 0)[2]
+
+
 def _crank_positions(document: dict, old, new) -> None:
     """Move the machine, and re-measure from the new C the positions given from C."""
     foundation = document["foundation"]
     h_old = _crank_c_height(foundation, old)
     machine = foundation.get("machine")
     if isinstance(machine, dict) and "cog_height" in machine:
-        machine["cog_height"] = _move([0.0, 0.0, machine["cog_height"]], old, new)[2]
+        machine["cog_height"] = float(moved_machine_height(machine["cog_height"], old, new))
     h_new = _crank_c_height(foundation, new)
 
     def from_c(horizontal: float, height: float) -> tuple[float, float]:
-        x, _, z = _move([horizontal, 0.0, height + h_old], old, new)
-        return x, z - h_new
+        x, z = moved_from_c(horizontal, height, h_old, h_new, old, new)
+        return float(x), float(z)
 
     mechanism = document.get("mechanism")
     if isinstance(mechanism, dict) and "crank_axis_to_cog" in mechanism:
@@ -233,4 +252,5 @@ def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: s
 
 
 __all__ = ["ALIASES", "CRANK_DERIVED", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
-           "given_dimensions", "moved", "variable"]
+           "given_dimensions", "moved", "moved_from_c",
+           "moved_machine_height", "variable"]

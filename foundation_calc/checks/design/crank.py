@@ -155,16 +155,25 @@ class _Verdicts:
 
 
 def _resonance(out: _Verdicts, scene, designs, d0, M, K, mech, harmonics, stable):
+    """The resonance rule on every candidate, as :func:`~foundation_calc.checks.crank_resonance.check_resonances`
+    judges one design; returns (zero-order frequencies, margins, judgement, conditions), the
+    arrays over every condition n ω = k0, p1, p2 of harmonics 1 ... ``harmonics``.
+
+    Only the conditions that can decide somewhere in the batch are judged (a source's, order 1,
+    or a forcing share of at least 1 % on some candidate); every other one is information at most,
+    never the verdict: its margin is inf, its status clear."""
     from foundation_calc.checks.crank_resonance import forcing_shares, harmonic_conditions, judge_conditions
-    from foundation_calc.checks.resonance_rule import FAIL as RULE_FAIL, WARN as RULE_WARN
+    from foundation_calc.checks.resonance_rule import FAIL as RULE_FAIL, FORCING_SHARE, WARN as RULE_WARN, Judgement
 
     _, _, _, fc, fs = mech
-    orders = range(1, harmonics + 1)
-    conditions = harmonic_conditions(orders)
+    conditions = harmonic_conditions(range(1, harmonics + 1))
     forces = np.swapaxes(fc - 1j * fs, -1, -2)[:, 1 : harmonics + 1]  # (N, harmonics, 3)
     shares = forcing_shares(M, K, forces).reshape(len(d0.S), -1)
+    deciding = np.array([c.source == "paper" or c.harmonic == 1 for c in conditions]) | (shares >= FORCING_SHARE).any(0)
+    kept = np.nonzero(deciding)[0]
     zero, averaged = _frequencies(designs)
-    margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, conditions, shares, scene.limits.detuning)
+    margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, [conditions[i] for i in kept], shares[:, kept],
+                                           scene.limits.detuning)
     worst = verdict.worst
     outcome = np.select([worst >= RULE_FAIL, worst == RULE_WARN], [FAIL, WARN], PASS)
     g = np.maximum(verdict.governing, 0)[:, None]
@@ -174,13 +183,22 @@ def _resonance(out: _Verdicts, scene, designs, d0, M, K, mech, harmonics, stable
     utilisation = np.where(verdict.governing >= 0, utilisation, np.nan)
     unstable = len(conditions)
     out.put("resonance", np.where(stable, outcome, FAIL), np.where(stable, utilisation, np.inf),
-            np.where(stable, g[:, 0], unstable), [c.label for c in conditions] + [_UNSTABLE])
-    return zero, margins, verdict, conditions
+            np.where(stable, kept[g[:, 0]], unstable), [c.label for c in conditions] + [_UNSTABLE])
+
+    def widened(values, fill):  # the kept conditions' columns among every condition's
+        full = np.full(values.shape[:-1] + (len(conditions),), fill, dtype=values.dtype)
+        full[..., kept] = values
+        return full
+
+    judgement = Judgement(judged=widened(verdict.judged, False), status=widened(verdict.status, 0),
+                          needed=widened(verdict.needed, np.inf), governing=kept[g[:, 0]])
+    return zero, widened(margins, np.inf), judgement, conditions
 
 
-def _motion(scene, designs, d0, block, mech, harmonics):
+def _motion(scene, designs, d0, block, mech, harmonics, decoupled):
     """The averaged-operator steady state of every candidate (harmonics 0 ... ``harmonics``) and
-    its resonant mask; ``block``: M, C, K of the blocks on the static springs; a
+    its resonant mask; ``block``: M, C, K of the blocks on the static springs; ``decoupled``: y
+    apart from x and θ (:attr:`~foundation_calc.solvers.crank.batch.MechanismOperator.decoupled`); a
     frequency-dependent soil takes harmonic n on the springs at n ω."""
     from foundation_calc.solvers.crank.averaged import block_matrices
     from foundation_calc.solvers.crank.batch import harmonic_response, resonant_blocks
@@ -193,11 +211,11 @@ def _motion(scene, designs, d0, block, mech, harmonics):
         M, C, K = (np.stack([p[i] for p in parts], axis=-3) for i in range(3))
         resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega)
         M_m, C_m, K_m = (x[:, None] for x in (M_m, C_m, K_m))
-        Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics, per_harmonic=True)
+        Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics, per_harmonic=True, decoupled=decoupled)
     else:
         M, C, K = block
         resonant, _ = resonant_blocks(M_m + M, C, K_m + K, omega)
-        Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics)
+        Z = harmonic_response(M_m + M, C_m + C, K_m + K, omega, fc, fs, harmonics, decoupled=decoupled)
     Z = np.where(resonant[:, None, None], 0.0, Z)
     return PeriodicMotion(omega=omega, cos=Z.real, sin=-Z.imag), resonant
 
@@ -218,7 +236,7 @@ def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
     if points:
         cos, sin = point_series(motion, designs.points_u, designs.points_H)  # (points, N, 2, 2K + 1)
         series.append((np.moveaxis(cos, 0, 1), np.moveaxis(sin, 0, 1)))
-    statistic = {q: np.concatenate([_statistic(q, c, s, motion.omega) for c, s in series], axis=1) for q in wanted}
+    statistic = _statistics(wanted, limited, series, motion.omega)
     ratios, fails, reasons = [], [], []
     for quantity, limit in limited.items():
         values = statistic[quantity]  # (N, points, 2)
@@ -263,15 +281,44 @@ def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
 #: The time derivative of each limited quantity.
 _ORDER = {"displacement": 0, "velocity": 1, "acceleration": 2}
 
+#: Phases a revolution at which a series is sampled for a lower bound of its peak.
+_BOUND_PHASES = 16
 
-def _statistic(quantity, cos, sin, omega):
-    """Peak or RMS (``*_rms``, the mean left out) of ``quantity`` of series (..., K + 1), as
-    :func:`~foundation_calc.solvers.crank.response.peaks` and ``rms_values`` take them."""
-    from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
 
-    name = quantity.removesuffix("_rms")
-    cos, sin = derivative(cos, sin, omega, _ORDER[name])
-    return rms(cos, sin) if quantity.endswith("_rms") else peak(cos, sin)
+def _statistics(wanted, limited, series, omega) -> dict[str, np.ndarray]:
+    """quantity -> (N, points, 2) values of each wanted statistic of the ``series`` (C's, the
+    points'): RMS values by Parseval; peaks to round-off (:func:`~foundation_calc.solvers.numerics.trig_series.peak`)
+    where they can decide the check, elsewhere their upper bound Σ|c_n|.
+
+    A peak decides nothing when its upper bound over its limit is below the largest lower bound
+    (the series sampled at :data:`_BOUND_PHASES` phases) over its limit of any row of the same
+    candidate: it is not the largest ratio, and if it exceeds its limit so does that row. The
+    largest ratio, every row's pass or fail that can change the verdict, and what governs are
+    then those of the exact peaks."""
+    from foundation_calc.solvers.numerics.trig_series import basis, derivative, peak, rms
+
+    parts = {q: [derivative(c, s, omega, _ORDER[q.removesuffix("_rms")]) for c, s in series] for q in wanted}
+    found = {q: np.concatenate([rms(c, s) for c, s in parts[q]], axis=1) for q in wanted if q.endswith("_rms")}
+    bounds = {}
+    for q in wanted - set(found):
+        low, up = [], []
+        for c, s in parts[q]:
+            cb, sb = basis(c.shape[-1] - 1, 2.0 * np.pi * np.arange(_BOUND_PHASES) / _BOUND_PHASES)
+            low.append(np.abs(c @ cb.T + s @ sb.T).max(axis=-1))
+            up.append(np.hypot(c, s).sum(axis=-1))
+        bounds[q] = (np.concatenate(low, axis=1), np.concatenate(up, axis=1))
+    best = np.zeros(next(iter(parts.values()))[0][0].shape[0])
+    for q, limit in limited.items():
+        best = np.maximum(best, (found[q] if q in found else bounds[q][0]).max(axis=(1, 2)) / limit)
+    for q, (_, up) in bounds.items():
+        need = up / limited[q] >= best[:, None, None]
+        values, start = up.copy(), 0
+        for c, s in parts[q]:
+            part = need[:, start : start + c.shape[1]]
+            values[:, start : start + c.shape[1]][part] = peak(c[part], s[part]) if part.any() else []
+            start += c.shape[1]
+        found[q] = values
+    return found
 
 
 def _office(out: _Verdicts, scene, designs):
@@ -345,12 +392,12 @@ def _physics(out: _Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resona
         designs = CandidateDesigns(scene, *stand_in)
     d0 = designs.at(0.0)
     block = block_matrices(d0)
-    mech = mech.at(designs.a)
+    decoupled, mech = mech.decoupled, mech.at(designs.a)
     judgement = None
     if resonance:
         judgement = _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
     if amplitudes:
-        motion, resonant = _motion(scene, designs, d0, block, mech, harmonics)
+        motion, resonant = _motion(scene, designs, d0, block, mech, harmonics, decoupled)
         _amplitudes(out, scene, designs, motion, resonant, stable)
     return given, judgement
 

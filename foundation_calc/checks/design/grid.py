@@ -21,8 +21,10 @@ from foundation_calc.checks.design.apply import Variable, VaryError, variable
 MAX_CANDIDATES = 2_000_000
 
 #: Largest grid of a kind without a vectorised evaluator (each candidate through fcalc check's
-#: path, about 10-20 ms): about a minute.
+#: path, 5-30 ms, far more with a soil's modulus_range): at most this many candidates, and at
+#: most :data:`MAX_REFERENCE_SECONDS` of them at the cost of the scene's own block.
 MAX_REFERENCE_CANDIDATES = 5_000
+MAX_REFERENCE_SECONDS = 120.0
 
 #: Decimals a grid value is rounded to [m]: a micrometre, so that values print and write as typed (4.3, not 4.300000000000001).
 DECIMALS = 6
@@ -140,5 +142,5 @@ def grid(kind: str, ranges: Sequence[Range], step: float | None = None, points: 
     return found
 
 
-__all__ = ["Axis", "DECIMALS", "DEFAULT_STEP", "Grid", "MAX_CANDIDATES", "MAX_REFERENCE_CANDIDATES", "Range", "axis", "grid",
+__all__ = ["Axis", "DECIMALS", "DEFAULT_STEP", "Grid", "MAX_CANDIDATES", "MAX_REFERENCE_CANDIDATES", "MAX_REFERENCE_SECONDS", "Range", "axis", "grid",
            "parse_range"]

@@ -110,14 +110,20 @@ def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
     return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
 
 
-def _matrices(model) -> Table:
+def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
+    """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
+    entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0."""
     rows = []
-    for key, matrix in (("M", model.M), ("K", model.K), ("C", model.C)):
+    for key, matrix in matrices:
         scale = np.abs(matrix).max() or None
-        for i, coordinate in enumerate(COORDINATES):
-            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), ROW_UNITS[key][i]))
-    return table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)", ("row", *COORDINATES, "units"), rows,
-                 (False, *(True,) * 6, False))
+        for i, coordinate in enumerate(coordinates):
+            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), units[key][i]))
+    return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
+
+
+def _matrices(model) -> Table:
+    return matrix_table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)",
+                        (("M", model.M), ("K", model.K), ("C", model.C)), COORDINATES, ROW_UNITS)
 
 
 def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
@@ -222,4 +228,4 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     return tuple(blocks)
 
 
-__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "point_values"]
+__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "matrix_table", "modes_of", "point_values"]

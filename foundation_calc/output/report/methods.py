@@ -131,7 +131,9 @@ def methods_section(scene, documents: dict):
         chains = crank_chains(scene, documents.get("amplitudes"))
         response = damped_response_blocks(scene, documents.get("amplitudes"))
     elif scene.kind == "platform" and "design" in documents:
-        chains = [platform_chain(documents["design"])]
+        from foundation_calc.output.report.platform_methods import verification_blocks
+
+        chains, response = [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
     elif scene.kind == "block_foundation":
         from foundation_calc.output.report.block_methods import block_sections_blocks
 

@@ -55,3 +55,62 @@ def platform_chain(doc: dict) -> Chain:
 
 
 __all__ = ["platform_chain"]
+
+
+#: The platform's coordinates: corner O1's displacement and the Krylov angles.
+COORDINATES = ("x", "y", "z", "α", "β", "γ")
+ROW_UNITS = {
+    "M₀": ("kg, kg m", "kg, kg m", "kg, kg m", "kg m, kg m²", "kg m, kg m²", "kg m, kg m²"),
+    "K_springs": ("N/m, N", "N/m, N", "N/m, N", "N, N m/rad", "N, N m/rad", "N, N m/rad"),
+    "K₀": ("N/m, N", "N/m, N", "N/m, N", "N, N m/rad", "N, N m/rad", "N, N m/rad"),
+}
+
+
+def verification_system(scene):
+    """The 6-DOF equations the verification solves for the scene's design (PeriodicSystem)."""
+    from foundation_calc.solvers.platform.dynamics import periodic_system
+    from foundation_calc.solvers.platform.verification import build
+
+    return periodic_system(*build(scene.design(), scene.model()))
+
+
+def verification_blocks(scene, doc: dict) -> tuple:
+    """The mean matrices of the 6-DOF verification with their numbers, its modes solved on the
+    sheet (K₀ v = p² M₀ v) and the forcing's harmonics: what the harmonic balance starts from."""
+    import numpy as np
+
+    from foundation_calc.output.report.block_methods import matrix_table, modes_of
+    from foundation_calc.output.report.handcalc import Definitions
+    from foundation_calc.output.report.model import Paragraph, table
+    from foundation_calc.output.report.numbers import column, figure
+
+    system = verification_system(scene)
+    M0, K0, Ks = system.mass[0].real, system.stiff[0].real, np.asarray(system.springs).real
+    matrices = matrix_table("6-DOF verification: mean matrices about O1 (order x, y, z, α, β, γ)",
+                            (("M₀", M0), ("K_springs", Ks), ("K₀", K0)), COORDINATES, ROW_UNITS)
+    p, _, _ = modes_of(M0, K0, np.zeros_like(K0))
+    names = [f["mode"] for f in doc["natural_frequencies"]]
+    modes = table("Modes of the mean system: K₀ v = p² M₀ v (eigen-solve of M₀⁻¹K₀, gyroscopic terms left out)",
+                  ("mode", "dominant motion", "p [rad/s]", "f [Hz]", "ω/p"),
+                  [(str(j + 1), names[j], figure(w, 4), figure(w / (2 * np.pi), 4), figure(doc["speed"]["omega"] / w, 4))
+                   for j, w in enumerate(p)], (False, False, True, True, True))
+    live = [k for k in range(len(system.force)) if np.abs(system.force[k]).max() > 0.0]
+    cols = [column([abs(system.force[k][j]) for k in live], 4) for j in range(6)]
+    forcing = table("Forcing harmonics F_n (|F|: forces [N] along x, y, z, moments [N m] about O1), Ω = n·ω",
+                    ("n", "Ω [rad/s]", "F_x", "F_y", "F_z", "M_α", "M_β", "M_γ"),
+                    [(", ".join(str(int(v)) for v in system.force_keys[k]), figure(abs(float(system.frequencies(system.force_keys[k]))), 4),
+                      *(c[i] for c in cols)) for i, k in enumerate(live)], (False, *(True,) * 7))
+    note = Paragraph(
+        "K₀ = K_springs + the weight's tilt and the rotors' mean terms; K_springs = Σ T_iᵀ diag(c_i1, c_i2, c_i3) T_i,"
+        " T_i = [I, −[r_i]×], from the isolator table above. The harmonic balance (Equations used) couples these"
+        " harmonics through the rotors' periodic terms; its steady state gives the verification's amplitudes.")
+    terms = Definitions({
+        "M₀, K₀": ("mean mass and stiffness matrices of the 6-DOF equations about O1", "SI"),
+        "K_springs": ("stiffness matrix of the twelve isolator springs about O1", "N/m, N, N m/rad"),
+        "F_n": ("complex amplitude of the forcing at harmonic vector n", "N, N m"),
+        "p": ("natural frequency of the mean system", "rad/s"),
+    })
+    return (note, matrices, modes, forcing, terms)
+
+
+__all__ += ["verification_blocks", "verification_system"]

@@ -58,21 +58,36 @@ class MechanismOperator:
     The exact equations hold the rod's position p = (p_u, p_v - a) in products of at most two
     factors (m |p|² θ'', m p × (...)); the drive's torque takes the arm M' - C1, free of a. So
     every averaged matrix and forcing coefficient is a polynomial of degree 2 in a, given
-    exactly by its values at a0 - 1, a0, a0 + 1 m (:attr:`samples`: (M, C, K, fc, fs) at each).
+    exactly by its values at a0 - 1, a0, a0 + 1 m (:attr:`samples`: (M, C, K, fc, fs) at each,
+    the forcing's harmonics 0 ... :attr:`harmonics`).
     """
 
     a0: float
     samples: tuple
 
+    harmonics: int
+
     @classmethod
     def of(cls, design) -> "MechanismOperator":
+        """The samples of ``design``'s mechanism, the forcing kept to the highest harmonic
+        :func:`forcing_harmonics` finds in any of them (:attr:`harmonics`)."""
         a0 = float(design.a)
-        return cls(a0, tuple(mechanism_operator(replace(design, a=a0 + step)) for step in (-1.0, 0.0, 1.0)))
+        samples = [mechanism_operator(replace(design, a=a0 + step)) for step in (-1.0, 0.0, 1.0)]
+        kept = max(forcing_harmonics(fc, fs) for *_, fc, fs in samples)
+        return cls(a0, tuple((*s[:3], s[3][:, : kept + 1], s[4][:, : kept + 1]) for s in samples), kept)
 
     @property
-    def harmonics(self) -> int:
-        """:func:`forcing_harmonics` over the three samples."""
-        return max(forcing_harmonics(fc, fs) for *_, fc, fs in self.samples)
+    def decoupled(self) -> bool:
+        """Whether the vertical motion is uncoupled from sliding and rocking: the mechanism's
+        averaged entries between y and (x, θ) are round-off (below 1e-12 of the matrix's scale:
+        max |M|, max |K|, and sqrt(max |M| max |K|) for C) in every sample. The block's own
+        matrices never couple them. Then each harmonic solves a 2 × 2 system and a scalar."""
+        for M, C, K, *_ in self.samples:
+            scales = (np.abs(M).max(), np.sqrt(np.abs(M).max() * np.abs(K).max()), np.abs(K).max())
+            for A, scale in zip((M, C, K), scales):
+                if np.abs(A[[0, 1, 1, 2], [1, 0, 2, 1]]).max() > 1e-12 * scale:
+                    return False
+        return True
 
     def at(self, a) -> tuple[np.ndarray, ...]:
         """M, C, K (..., 3, 3) and fc, fs (..., 3, K + 1) at the distances ``a`` [m] (any shape)."""
@@ -111,20 +126,35 @@ def resonant_blocks(M, C, K, omega):
     return ((ratios < UNDAMPED_RATIO) & (margin < RESONANT_MARGIN)).any(axis=-1), natural
 
 
-def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool = False):
+def harmonic_response(M, C, K, omega, fc, fs, harmonics: int, per_harmonic: bool = False, decoupled: bool = False):
     """Complex harmonics Z_n (n = 0 ... ``harmonics``) of x, y, θ, shape (..., 3, harmonics + 1):
     cos = Z.real, sin = -Z.imag. ``M``, ``C``, ``K``: (..., 3, 3), or with ``per_harmonic``
     (..., harmonics + 1, 3, 3), an operator per harmonic (springs that depend on frequency);
-    ``fc``, ``fs``: the forcing's coefficients (..., 3, > ``harmonics``), one per system or shared."""
+    ``fc``, ``fs``: the forcing's coefficients (..., 3, > ``harmonics``), one per system or shared.
+    ``decoupled`` (:attr:`MechanismOperator.decoupled`): y solved alone, x and θ as a 2 × 2 system,
+    the y-(x, θ) entries (round-off) left out."""
     w = np.arange(harmonics + 1) * omega
     if not per_harmonic:
         M, C, K = (np.asarray(x)[..., None, :, :] for x in (M, C, K))
     # matrix indices first: every entry of the stacked systems is one contiguous array
     M, C, K = (np.moveaxis(np.asarray(x, dtype=float), (-2, -1), (0, 1)) for x in (M, C, K))
-    ops = np.empty(np.broadcast_shapes(K.shape, w.shape), dtype=complex)
+    force = np.moveaxis(fc[..., : harmonics + 1] - 1j * fs[..., : harmonics + 1], -2, 0)  # (3, ..., harmonics + 1)
+    shape = np.broadcast_shapes(K.shape[2:], w.shape)
+
+    def entry(i, j):
+        e = np.empty(shape, dtype=complex)
+        e.real = K[i, j] - (w * w) * M[i, j]
+        e.imag = w * C[i, j]
+        return e
+
+    if decoupled:
+        a, b, c, d = entry(0, 0), entry(0, 2), entry(2, 0), entry(2, 2)
+        det = a * d - b * c
+        Z = [(d * force[0] - b * force[2]) / det, force[1] / entry(1, 1), (a * force[2] - c * force[0]) / det]
+        return np.moveaxis(np.stack(np.broadcast_arrays(*Z)), 0, -2)
+    ops = np.empty(K.shape[:2] + shape, dtype=complex)
     ops.real = K - (w * w) * M
     ops.imag = w * C
-    force = np.moveaxis(fc[..., : harmonics + 1] - 1j * fs[..., : harmonics + 1], -2, 0)  # (3, ..., harmonics + 1)
     return np.moveaxis(solve3(ops, force), 0, -2)
 
 
