@@ -175,3 +175,28 @@ def test_the_decoupled_solve_is_the_full_one_without_round_off_couplings():
     lapack = np.swapaxes(np.linalg.solve(ops, np.swapaxes(fc - 1j * fs, -1, -2)[:, :9, :, None])[..., 0], -1, -2)
     scale = np.abs(lapack).max(axis=-1, keepdims=True)
     assert np.abs(split - full).max() <= 1e-12 * scale.max() and np.all(np.abs(full - lapack) <= 1e-12 * scale)
+
+
+def test_the_code_zone_by_the_more_restrictive_of_velocity_and_displacement():
+    """ISO 10816-3 (5.2.3) judges a point by the worse of its r.m.s. velocity and r.m.s.
+    displacement zones. At the compressor's 150 rpm the displacement decides (its boundaries
+    correspond to the velocity's at 10 Hz), so a batch that judged the velocity alone would
+    give other utilisations and zones than the full path; with only the code limiting, the
+    code zone row is the amplitude check's utilisation."""
+    doc = read_toml(CONFIGS / "compressor_medium_sand_lysmer.toml")
+    doc["points"] = [{"name": "top edge", "horizontal": 3.0, "height": 1.2}]
+    doc["mechanism"].update(slider_mass=2500.0, crank_radius=0.3)  # forces that reach zones B-D
+    doc["limits"] = {"code": "ISO 10816-3", "machine_group": 2, "foundation": "rigid", "detuning": 0.2}
+    scene = parse_scene(doc)
+    batch = sample_batch(scene, 20, seed=3)
+    verdicts = evaluate(scene, batch)
+    L, B, H = (batch[f"foundation.block.{k}"] for k in ("length", "width", "height"))
+    by_displacement = 0
+    for i in range(20):
+        run = next(r for r in run_checks(_candidate(doc, L[i], B[i], H[i])) if r.check == "amplitudes")
+        assert verdicts.outcome["amplitudes"][i] == CODES[run.verdict], i
+        if run.report.resonant:
+            continue
+        assert verdicts.utilisation["amplitudes"][i] == pytest.approx(_utilisation(run), rel=1e-9), i
+        by_displacement += any(row.judged.quantity == "displacement" for row in run.report.code_rows)
+    assert by_displacement > 0  # the sample reaches the displacement's zones

@@ -223,7 +223,7 @@ def _motion(scene, designs, d0, block, mech, harmonics, decoupled):
 def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
     :func:`~foundation_calc.checks.crank_amplitudes.check_amplitudes` judges them."""
-    from foundation_calc.checks.codes import TABLES, ZONES, application_warnings
+    from foundation_calc.checks.codes import TABLES, ZONES, application_warnings, code_zone_index
     from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.solvers.crank.response import DIRECTIONS, point_series
     from foundation_calc.units import rpm_from_omega
@@ -231,7 +231,7 @@ def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
     limits, points = scene.limits, scene.points
     names = ["C", *(p.name for p in points)]
     limited = limited_quantities(limits)
-    wanted = set(limited) | ({"velocity_rms"} if limits.code is not None else set())
+    wanted = set(limited) | ({"velocity_rms", "displacement_rms"} if limits.code is not None else set())
     series = [(motion.cos[:, None, :2, :], motion.sin[:, None, :2, :])]  # C: x and y themselves
     if points:
         cos, sin = point_series(motion, designs.points_u, designs.points_H)  # (points, N, 2, 2K + 1)
@@ -250,16 +250,19 @@ def _amplitudes(out: _Verdicts, scene, designs, motion, resonant, stable):
         table = TABLES[limits.code, limits.machine_group, limits.foundation]
         power = None if limits.machine_power is None else limits.machine_power / 1e3
         warned = bool(application_warnings(table, rpm_from_omega(motion.omega), power))
-        limit = table.boundaries[ZONES.index(limits.acceptable_zone or "B")]
+        highest = ZONES.index(limits.acceptable_zone or "B")
         velocity = statistic["velocity_rms"].max(axis=-1).T  # (points, N): the larger direction governs
-        zone = (velocity[..., None] > np.array(table.boundaries)).sum(axis=-1)
+        displacement = statistic["displacement_rms"].max(axis=-1).T
+        zone, by_displacement = code_zone_index(velocity, displacement, table)  # the more restrictive decides
         acceptable = limits.acceptable_zone
         by_zone = np.array([PASS, WARN, FAIL, FAIL] if acceptable is None else
                            [PASS if z <= ZONES.index(acceptable) else FAIL for z in range(4)])
+        ratio = np.where(by_displacement, displacement / table.displacement_boundaries[highest],
+                         velocity / table.boundaries[highest])
         for i, name in enumerate(names):
-            ratios.append(velocity[i] / limit)
+            ratios.append(ratio[i])
             fails.append(by_zone[zone[i]])
-            reasons.append(f"{table.title} zone at {name} (r.m.s. velocity)")
+            reasons.append(f"{table.title} zone at {name}")
     n = len(resonant)
     if ratios:
         ratio = np.stack(ratios)
