@@ -103,8 +103,9 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     rows.append(("resonance", "Every order of every machine against each of the six modes (undamped"
                               " frequencies); an order whose forcing share on a mode is under 1 % is not judged."))
     from foundation_calc.checks.limits import limited_quantities
+    from foundation_calc.output.report.verdict import quantity_name
 
-    judged = [f"RMS {q.removesuffix('_rms')}" if q.endswith("_rms") else f"peak {q}" for q in limited_quantities(limits)]
+    judged = [quantity_name(q) for q in limited_quantities(limits)]
     rows.append(("amplitudes", "Judged at G and the scene's points, along x, y and z: "
                                + (", ".join(judged) if judged else "no limit in [limits]")
                                + (f"; zones of {limits.code} (RMS velocity and displacement)" if getattr(limits, "code", None) else "; no vibration code zone")

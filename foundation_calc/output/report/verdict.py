@@ -59,13 +59,22 @@ def _range_rows(doc: dict):
         )
 
 
+def quantity_name(quantity: str) -> str:
+    """A limited quantity as a reader names it, not by its key.
+
+    >>> quantity_name("velocity_rms"), quantity_name("displacement")
+    ('RMS velocity', 'peak displacement')
+    """
+    return f"RMS {quantity.removesuffix('_rms')}" if quantity.endswith("_rms") else f"peak {quantity}"
+
+
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
     from foundation_calc.checks.limits import display_quantity
 
     for row in doc["limits"]:
         kind = display_quantity(row["quantity"])
         yield (
-            f"{row['point']} {row['direction']} {row['quantity']}",
+            f"{row['point']}, {row['direction']}: {quantity_name(row['quantity'])}",
             measure(units, kind, row["value"], row["limit"]),
             measure(units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
