@@ -53,9 +53,9 @@ def _range_rows(doc: dict):
     ranged = doc.get("modulus_range")
     if ranged:
         yield (
-            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}], governing factor"
-            f" {ranged['governing_factor']:.4g}",
-            ranged["governing"], "passes at every factor", "-", ranged["verdict"], "scene [soil] modulus_range",
+            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}]: {ranged['governing']}",
+            f"governing factor {ranged['governing_factor']:.4g}", "every factor passes", "-", ranged["verdict"],
+            "scene [soil] modulus_range",
         )
 
 
