@@ -33,7 +33,7 @@ REFERENCES: dict[str, str] = {
     "NIST": "NEHRP Consultants Joint Venture, Soil-Structure Interaction for Building Structures, NIST GCR"
             " 12-917-21, National Institute of Standards and Technology, Gaithersburg, MD, 2012, Tables 2-2, 2-3.",
     "ACI": "ACI Committee 351, Report on Foundations for Dynamic Equipment, ACI 351.3R-18, American Concrete"
-           " Institute, Farmington Hills, MI, 2018, section 4.5.",
+           " Institute, Farmington Hills, MI, 2018.",
     "SP26": "SP 26.13330.2012, Foundations of machines with dynamic loads (updated edition of SNiP 2.02.05-87),"
             " Ministry of Regional Development of the Russian Federation, Moscow, 2012.",
     "ISO": "ISO 10816-3:2009, Mechanical vibration — Evaluation of machine vibration by measurements on"

@@ -11,43 +11,50 @@ against independent solutions elsewhere (test_block_foundation.py, test_peaks.py
 from __future__ import annotations
 
 import math
+import tomllib
 
 import numpy as np
 import pytest
 
 from foundation_calc.checks.block import check_block, condition_label
+
 from foundation_calc.checks.design.apply import apply
 from foundation_calc.checks.design.block import NOT_EVALUATED, VARIABLE_KEYS, evaluate
 from foundation_calc.checks.design.candidates import EVALUATORS
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 from foundation_calc.checks.registry import CHECKS
 from foundation_calc.errors import PhysicsError
-from foundation_calc.scenes import load_scene
+from foundation_calc.scenes import parse_scene
 
 CODES = {"pass": 0, "warn": 1, "fail": 2}
 TWO = "configs/block_two_machines.toml"
 FAN = "configs/block_fan_torsion_near_speed.toml"
 
 
-def _soil(scene, **soil):
-    return scene.model_copy(update={"soil": type(scene.soil).model_validate(soil)})
-
-
-def _limits(scene, **limits):
-    return scene.model_copy(update={"limits": scene.limits.model_copy(update=limits)})
+def _document(path, soil=None, **limits):
+    with open(path, "rb") as f:
+        document = tomllib.load(f)
+    if soil is not None:
+        document["soil"] = soil
+    document["limits"] |= limits
+    return document
 
 
 def _variants():
-    two, fan = load_scene(TWO), load_scene(FAN)
-    gazetas = _soil(two, method="gazetas", shear_wave_velocity=450.0, density=1950.0, poisson=0.3, material_damping=0.04)
-    gazetas = _limits(gazetas, velocity=4.0e-3, amplitude_rms=3.0e-5, code="ISO 10816-3", machine_group=1,
-                      foundation="rigid", acceptable_zone="B", bearing_pressure=5.0e4, detuning={1: 0.2, 2: 0.1})
-    sp26 = _soil(fan, method="sp26", deformation_modulus=3.0e7, soil_class="sand")
-    coefficients = _soil(two, method="coefficients", c_z=8.0e7, c_x=5.0e7, damping=[0.1, 0.08, 0.05])
-    return {"springs": two, "lysmer": fan, "gazetas": gazetas, "sp26": sp26, "coefficients": coefficients}
+    gazetas = _document(TWO, {"method": "gazetas", "shear_wave_velocity": 450.0, "density": 1950.0, "poisson": 0.3,
+                              "material_damping": 0.04},
+                        velocity=4.0e-3, amplitude_rms=3.0e-5, code="ISO 10816-3", machine_group=1, foundation="rigid",
+                        acceptable_zone="B", bearing_pressure=5.0e4, detuning={"1": 0.2, "2": 0.1})
+    return {
+        "springs": _document(TWO),
+        "lysmer": _document(FAN),
+        "gazetas": gazetas,
+        "sp26": _document(FAN, {"method": "sp26", "deformation_modulus": 3.0e7, "soil_class": "sand"}),
+        "coefficients": _document(TWO, {"method": "coefficients", "c_z": 2.0e8, "c_x": 1.2e8, "damping": [0.1, 0.08, 0.05]}),
+    }
 
 
-SCENES = _variants()
+DOCUMENTS = _variants()
 
 
 def _candidates(scene, count, seed):
@@ -57,10 +64,11 @@ def _candidates(scene, count, seed):
             "block.height": b.height * rng.uniform(0.4, 1.8, count)}
 
 
-def _one(scene, batch, i):
-    """Candidate ``i`` as ``fcalc check`` sees it: the scene with the block's dimensions put in and
-    the machines, loads and points moved with the block (checks/design/apply.py)."""
-    return apply(scene.model_dump(exclude_unset=True), {key: float(values[i]) for key, values in batch.items()})
+def _one(source, batch, i):
+    """Candidate ``i`` as ``fcalc check`` sees it: the scene document (or a scene's) with the block's
+    dimensions put in and the machines, loads and points moved with the block (checks/design/apply.py)."""
+    document = source if isinstance(source, dict) else source.model_dump(exclude_unset=True)
+    return apply(document, {key: float(values[i]) for key, values in batch.items()})
 
 
 def _scalar_utilisation(check, report):
@@ -76,15 +84,16 @@ def _scalar_utilisation(check, report):
     return max(row.limit / row.value if row.name == "mass ratio" else row.value / row.limit for row in report.office)
 
 
-@pytest.mark.parametrize("name", sorted(SCENES))
+@pytest.mark.parametrize("name", sorted(DOCUMENTS))
 def test_batch_verdicts_equal_the_scalar_checks(name):
-    scene = SCENES[name]
+    document = DOCUMENTS[name]
+    scene = parse_scene(document, name)
     batch = _candidates(scene, 60, seed=len(name))
     verdicts = evaluate(scene, batch)
     assert list(verdicts.outcome) == [c for c in CHECKS["block_foundation"] if c in verdicts.outcome]
     seen = set()
     for i in range(60):
-        one = _one(scene, batch, i)
+        one = _one(document, batch, i)
         report = check_block(one)
         for check, function in CHECKS["block_foundation"].items():
             finding = function(one)
@@ -101,16 +110,15 @@ def test_batch_verdicts_equal_the_scalar_checks(name):
         np.testing.assert_allclose(verdicts.volume[i], one.block.length * one.block.width * one.block.height, rtol=1e-15)
         np.testing.assert_allclose(verdicts.mass[i], one.block.mass_properties[0], rtol=1e-15)
     assert ("resonance", "fail") in seen  # the candidates reach both sides of the checks
-    # the fan's blocks and the stiff coefficients' (machines riding on the top) keep a mode in a band throughout
-    assert ("resonance", "pass") in seen or name in ("lysmer", "sp26", "coefficients")
+    assert ("resonance", "pass") in seen or name in ("lysmer", "sp26")
 
 
 def test_governing_amplitude_names_the_scalar_paths_largest_row():
-    scene = SCENES["gazetas"]
+    scene = parse_scene(DOCUMENTS["gazetas"], "gazetas")
     batch = _candidates(scene, 40, seed=7)
     verdicts = evaluate(scene, batch)
     for i in range(40):
-        report = check_block(_one(scene, batch, i))
+        report = check_block(_one(DOCUMENTS["gazetas"], batch, i))
         rows = list(report.limit_rows) + list(report.zone_rows)
         top = max(rows, key=lambda row: row.ratio)
         text = verdicts.reasons["amplitudes"][verdicts.governing["amplitudes"][i]]
@@ -122,16 +130,15 @@ def test_governing_amplitude_names_the_scalar_paths_largest_row():
 
 def test_a_block_that_tips_over_fails_where_the_scalar_path_refuses_it():
     """Soft rocking springs: the tall candidates' weight overturns them (fcalc check: a PhysicsError)."""
-    scene = load_scene(TWO)
-    soft = list(scene.soil.stiffness)
-    soft[3] = soft[4] = 4.0e6
-    scene = _soil(scene, method="springs", stiffness=soft, dashpot=list(scene.soil.dashpot))
+    document = _document(TWO)
+    document["soil"]["stiffness"][3:5] = [4.0e6, 4.0e6]
+    scene = parse_scene(document, "soft")
     batch = {"block.height": np.linspace(0.3, 4.0, 12)}
     verdicts = evaluate(scene, batch)
     refused = []
     for i in range(12):
         try:
-            check_block(_one(scene, batch, i))
+            check_block(_one(document, batch, i))
             refused.append(False)
         except PhysicsError:
             refused.append(True)
@@ -143,25 +150,54 @@ def test_a_block_that_tips_over_fails_where_the_scalar_path_refuses_it():
 
 
 def test_a_judged_runup_is_reported_as_not_evaluated():
-    scene = _limits(load_scene(TWO), transient_amplitude=1.0e-3)
-    scene = scene.model_copy(update={"operation": type(scene).model_fields["operation"].annotation.__args__[0](run_up_time=5.0)})
-    verdicts = evaluate(scene, {"block.length": np.array([6.0, 8.0])})
+    document = _document(TWO, transient_amplitude=1.0e-3) | {"operation": {"run_up_time": 5.0}}
+    verdicts = evaluate(parse_scene(document, "runup"), {"block.length": np.array([6.0, 8.0])})
     assert "runup" in NOT_EVALUATED and (verdicts.outcome["runup"] == 0).all() and np.isnan(verdicts.utilisation["runup"]).all()
-    assert "runup" not in evaluate(load_scene(TWO), {"block.length": np.array([6.0])}).outcome
+    assert "runup" not in evaluate(parse_scene(_document(TWO), "two"), {"block.length": np.array([6.0])}).outcome
 
 
 def test_inputs_warn_where_a_point_is_far_for_a_small_base():
-    scene = load_scene(TWO)
-    far = scene.points[0].model_copy(update={"at": [40.0, 0.0, 3.0]})
-    scene = scene.model_copy(update={"points": [far, *scene.points[1:]]})
-    batch = {"block.length": np.array([2.0, 7.0]), "block.width": np.array([1.5, 4.0])}
+    document = _document(TWO)
+    document["points"][0]["at"] = [1.5, 0.3, 45.0]  # far above the block's top: it rises with the top
+    scene = parse_scene(document, "far")
+    batch = {"block.length": np.array([2.0, 7.0, 7.0]), "block.width": np.array([1.5, 4.0, 4.0]),
+             "block.height": np.array([2.2, 2.2, 50.0])}
     verdicts = evaluate(scene, batch)
-    expected = [0 if CHECKS["block_foundation"]["inputs"](_one(scene, batch, i)) is None else 1 for i in range(2)]
-    assert verdicts.outcome["inputs"].tolist() == expected == [1, 0]
+    expected = [0 if CHECKS["block_foundation"]["inputs"](_one(document, batch, i)) is None else 1 for i in range(3)]
+    assert verdicts.outcome["inputs"].tolist() == expected == [1, 0, 1]
 
 
 def test_keys_that_cannot_vary_are_refused():
     assert EVALUATORS["block_foundation"] == "foundation_calc.checks.design.block"
     assert "block.height" in VARIABLE_KEYS
     with pytest.raises(ValueError, match="soil.c_z cannot vary"):
-        evaluate(load_scene(TWO), {"soil.c_z": np.array([1.0e8])})
+        evaluate(parse_scene(_document(TWO), "two"), {"soil.c_z": np.array([1.0e8])})
+
+
+def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check():
+    """The range moves critical speeds through the machines' speeds: the scalar path finds the
+    crossings by Brent's method, the batch in closed form; the outcomes must agree, and the
+    utilisations (of the data as given) to 1e-9. Some candidates fail their amplitudes only
+    at a crossing (the steady state peaks there)."""
+    from foundation_calc.errors import SceneError
+
+    document = DOCUMENTS["coefficients"] | {"soil": DOCUMENTS["coefficients"]["soil"] | {"modulus_range": [0.5, 1.5]}}
+    try:
+        scene = parse_scene(document, "range")
+    except SceneError:
+        pytest.skip("this build refuses a block's soil.modulus_range")
+    batch = {key: values[:7] for key, values in _candidates(scene, 20, seed=3).items()}
+    verdicts = evaluate(scene, batch)
+    by_range = []
+    for i in range(7):
+        one = _one(document, batch, i)
+        report = check_block(one)
+        for check in ("resonance", "amplitudes"):
+            finding = CHECKS["block_foundation"][check](one)
+            assert verdicts.outcome[check][i] == CODES[finding.outcome.value], (check, i, finding.reason)
+            np.testing.assert_allclose(verdicts.utilisation[check][i], _scalar_utilisation(check, report), rtol=1e-9)
+        from foundation_calc.checks.block import check_block_as_given
+
+        if check_block_as_given(one).amplitude_outcome.value == "pass" and report.amplitude_outcome.value == "fail":
+            by_range.append(i)
+    assert len(by_range) >= 2  # the range, not the data as given, decides there

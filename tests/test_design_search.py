@@ -190,16 +190,19 @@ def test_vectorised_evaluator_agrees_with_fcalc_check(kind):
     assert not found, (rule, [d.text for d in found])
 
 
-def test_block_evaluator_leaves_a_modulus_range_to_fcalc_checks_path():
-    """The vectorised block evaluator judges the soil as given; a scene with a modulus_range is
-    refused, so that fcalc design judges it by fcalc check's path (which checks the range)."""
+def test_block_evaluator_judges_a_modulus_range_as_fcalc_checks_path():
+    """A scene with a soil modulus_range: the vectorised block evaluator judges the range (its grid
+    factors and crossings) and agrees with fcalc check's path, check by check."""
+    from foundation_calc.checks.design import reference
     from foundation_calc.checks.design.block import evaluate
     from foundation_calc.scenes import parse_scene
 
     document = read_toml(FAN)
     document["soil"]["modulus_range"] = [0.7, 1.5]
-    with pytest.raises(NotImplementedError, match="modulus_range"):
-        evaluate(parse_scene(document), {"block.height": np.array([1.6])})
+    batch = {"block.height": np.array([1.2, 2.4])}
+    fast, slow = evaluate(parse_scene(document), batch), reference.evaluate(document, batch, source="range")
+    for check in ("resonance", "amplitudes", "office"):
+        assert fast.outcome[check].tolist() == slow.outcome[check].tolist(), check
 
 
 def test_strict_crank_sizing_against_brute_force(runner_module):
@@ -220,3 +223,11 @@ def test_strict_crank_sizing_against_brute_force(runner_module):
     ]
     assert best["volume"] <= min(volumes) + 1e-9
     assert best["outcome"] == "pass"
+
+
+def test_nothing_written_when_nothing_passes(runner_module, tmp_path):
+    written = tmp_path / "best.toml"
+    result = runner_module.invoke(app, ["design", str(FAN), "--vary", "block.length=4.5:5.5", "--points", "2",
+                                        "--write", str(written)])
+    assert result.exit_code == 1 and not written.exists()
+    assert "not written: no candidate passes" in result.output

@@ -73,8 +73,9 @@ def _result_rows(check: dict) -> list[str]:
     """The verdicts of the rows of one check's result document, in the sheet's order."""
     result = check["result"]
     name = check["check"]
-    if name == "resonance":
-        return [r["verdict"] for r in result["resonances"]]
+    if name == "resonance":  # a condition that is not judged and sets no warning shows why instead of PASS
+        return [r["verdict"] if r["judged"] or r["status"] in ("warn", "fail") else
+                "information" if r["status"] == "information" else "not judged" for r in result["resonances"]]
     if name == "amplitudes":
         code = result.get("code") or {}
         return [r["verdict"] for r in result["limits"]] + [r["verdict"] for r in code.get("points", ())] + [
@@ -125,6 +126,8 @@ def test_sheet_and_check_give_one_verdict(runner, scenes):
                 assert any(abs(x - expected) <= VALUE_TOLERANCE * abs(expected) for x in shown), (scene.name, name)
             sheet_rows = [r[5].lower() for r in tables["checks"] if r[0] == check["check"]]
             assert sheet_rows == _result_rows(check), (scene.name, check["check"])
+        # a checking engineer never reads PASS beside a demand above its limit
+        assert not [r for r in tables["checks"] if r[5] == "PASS" and r[4] not in ("-", "inf") and float(r[4]) > 1.0], scene.name
 
 
 def test_failing_start_up_fails_the_sheet(runner, scenes, tmp_path):

@@ -65,3 +65,21 @@ def test_sweep_rate_definition_is_the_readmes(runner):
     assert definition == "η = r Ω'/ω_i²"  # what solvers.numerics.runup computes
     shown = runner.invoke(app, ["runup", "--help"], env={"COLUMNS": "200"}).stdout
     assert definition in " ".join(shown.replace("│", " ").split())
+
+
+@pytest.mark.parametrize(("n", "width"), [(10_000, 256), (300, 256), (50, 256), (7, 3), (1_000, 1)])
+def test_envelope_is_the_running_maximum_over_one_period(n, width):
+    """The plot's envelope (numpy windows) against scipy.ndimage.maximum_filter1d, an independent
+    running maximum, with the trailing window and the mirrored start it used before: equal exactly
+    (a maximum has no round-off)."""
+    import numpy as np
+    from scipy.ndimage import maximum_filter1d
+
+    from foundation_calc.output.runup import ENVELOPE_POINTS, _envelope
+
+    values = np.random.default_rng(n).random(n)
+    t = np.arange(n) * 0.01
+    expected = maximum_filter1d(values, size=width, origin=(width - 1) // 2) if width > 1 else values
+    stride = max(1, n // ENVELOPE_POINTS)
+    times, envelope = _envelope(t, values, width * 0.01)
+    assert np.array_equal(times, t[::stride]) and np.array_equal(envelope, expected[::stride])

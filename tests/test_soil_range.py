@@ -266,5 +266,5 @@ def test_a_block_range_in_check_resonance_amplitudes_and_the_sheet(runner, tmp_p
     sheet = tmp_path / "sheet.md"
     assert runner.invoke(app, ["report", str(path), "-o", str(sheet)]).exit_code == 1
     text = sheet.read_text(encoding="utf-8").replace("\\[", "[").replace("\\]", "]")
-    assert "| resonance | over the soil's modulus range [0.7, 1.4], governing factor 0.8" in text
-    assert "| amplitudes | over the soil's modulus range [0.7, 1.4], governing factor 0.8" in text
+    assert "| resonance | over the soil's modulus range [0.7, 1.4]: motor: ω = mode 5 (ry) at 0.0% (needs 5%) | governing factor 0.8" in text
+    assert "| amplitudes | over the soil's modulus range [0.7, 1.4]: velocity\\_rms" in text

@@ -54,7 +54,7 @@ def test_resonance_imports_only_its_own_path():
 
 def test_runup_without_a_run_time_fails_before_importing_scipy():
     """The missing run time is a scene error (exit 3) found before the time integration's
-    scipy.signal (about a second) is imported."""
+    scipy (a third of a second) is imported."""
     code, modules = _modules("runup", str(CONFIGS / "platform_paper_example.toml"))
     assert code == 3
     assert not [m for m in modules if m.split(".")[0] == "scipy"]

@@ -170,7 +170,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     else:
         built, names, omega, carried = _structure(scene)
         machines = [("", built, omega)]
-    # the time integration (scipy.signal, ~1 s to import) only for a scene that is run up: fcalc check
+    # the time integration (scipy.linalg's Schur form) only for a scene that is run up: fcalc check
     # and the sheet ask judged() of every scene
     from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
 

@@ -128,6 +128,10 @@ def design(
     sizing = _size(scene, loaded, document, searched_grid, (evaluate, evaluator, refine), given, strict)
     if write is not None and sizing.found.found:
         sizing = _write(scene, write, sizing)
+    elif write is not None:
+        from foundation_calc.output.console import stderr
+
+        stderr().print(f"{write} not written: no candidate passes", soft_wrap=True, markup=False)
     _report(sizing, json, plot)
     if sizing.disagreements:
         raise typer.Exit(4)

@@ -11,7 +11,7 @@ from foundation_calc.checks.runup import RunupReport, run_title
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.units import speed_triplet
 
-if TYPE_CHECKING:  # the solver imports scipy.signal: not before a run is computed
+if TYPE_CHECKING:  # the solver imports scipy: not before a run is computed
     from foundation_calc.solvers.numerics.runup import RunupResult
 
 
@@ -223,13 +223,23 @@ def _envelope(t, values, period):
     """(times, envelope) of a record: the running maximum over one ``period`` [s] (the operating
     speed's), thinned to about :data:`ENVELOPE_POINTS` points."""
     import numpy as np
-    from scipy.ndimage import maximum_filter1d
 
     step = float(np.median(np.diff(t))) if len(t) > 1 else 1.0
     width = max(1, int(round(period / step)))
-    upper = maximum_filter1d(values, size=width, origin=(width - 1) // 2) if width > 1 else values
     stride = max(1, len(values) // ENVELOPE_POINTS)
-    return t[::stride], upper[::stride]
+    kept = np.arange(0, len(values), stride)
+    if width == 1:
+        return t[kept], values[kept]
+    # the maximum of the trailing window of one period ending at each kept sample; before the first
+    # full period the record is mirrored at its start (scipy.ndimage's "reflect"). After the pass of
+    # length L, block[j] is the maximum of padded[j : j + L]; two blocks of the largest L <= width
+    # cover a window: O(n log width).
+    padded = np.pad(values, (width - 1, 0), mode="symmetric")
+    block, length = padded.copy(), 1
+    while 2 * length <= width:
+        block[:-length] = np.maximum(block[:-length], block[length:])
+        length *= 2
+    return t[kept], np.maximum(block[kept], block[kept + width - length])
 
 
 def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> None:

@@ -13,7 +13,8 @@ from dataclasses import dataclass
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
-from foundation_calc.output.report.numbers import column, figure, percent
+from foundation_calc.output.report.numbers import column, echoed, figure, percent
+from foundation_calc.output.report.verdict import resonance_verdict
 
 DIGITS = 4
 #: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
@@ -112,11 +113,14 @@ def _crank_derived(res: dict, units: DisplayUnits) -> Section:
 def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
     sp = units.label("speed")
     zero, avg = res["natural_frequencies"], res["natural_frequencies_averaged_inertia"]
+    hz = sp != "Hz"  # the frequency in Hz beside a speed in rad/s or rpm
     freqs = table(
         "Natural frequencies",
-        ("mode", f"[{sp}]", f"averaged inertia [{sp}]"),
-        ((mode, _speed(units, zero[mode]), _speed(units, avg[mode])) for mode in zero),
+        ("mode", f"ω [{sp}]", *(("f [Hz]",) if hz else ()), f"averaged inertia, ω [{sp}]"),
+        ((mode, _speed(units, zero[mode]), *((figure(zero[mode] / (2.0 * math.pi), 4),) if hz else ()), _speed(units, avg[mode]))
+         for mode in zero),
     )
+    shares = column([r["forcing_share"] for r in res["resonances"]], 2, scale=1.0)  # the largest share is 1
     rows = (
         (
             r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),
@@ -124,18 +128,24 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
             _speed(units, r["critical_speed"]["omega"]),
             _speed(units, r["critical_speed_averaged_inertia"]["omega"]),
             pct(r["margin"]),
-            pct(r["required"]),
-            r["verdict"].upper(),
+            pct(r["required"]) if r["required"] > 0 else "none",
+            share,
+            resonance_verdict(r).upper(),
         )
-        for r in res["resonances"]
+        for r, share in zip(res["resonances"], shares)
     )
     resonances = table(
         "Resonances: critical speeds and margins",
-        ("condition", "mode", f"critical [{sp}]", f"avg. inertia [{sp}]", "margin", "required", "verdict"),
+        ("condition", "mode", f"critical [{sp}]", f"avg. inertia [{sp}]", "margin", "required", "forcing share", "verdict"),
         rows,
-        (False, False, True, True, True, True, False),
+        (False, False, True, True, True, True, True, False),
     )
-    return Section("Natural frequencies and resonances", (freqs, resonances))
+    rule = Paragraph(
+        "Judged: the paper's conditions and every harmonic whose forcing share reaches 1 %; required: the"
+        " band of the condition's order. INFORMATION: inside its band, not judged (forcing share under"
+        " 1 %); NOT JUDGED: outside its band and not judged. The rule: README, \"The resonance rule\"."
+    )
+    return Section("Natural frequencies and resonances", (freqs, resonances, rule))
 
 
 def _largest_harmonics(approximation: dict) -> dict[str, float]:
@@ -317,8 +327,8 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     ]
     inertia = v["inertia"]["source"]
     verification = table(
-        f"6-DOF verification (inertia: {inertia}; loss factor {num(v['loss_factor'])},"
-        f" damping ratio {num(v['damping_ratio'])})",
+        f"6-DOF verification (inertia: {inertia}; loss factor {echoed(v['loss_factor'])},"
+        f" damping ratio {echoed(v['damping_ratio'])})",  # the scene's inputs, as given
         ("quantity", "value", "unit"),
         rows,
         (False, True, False),

@@ -10,7 +10,7 @@ from foundation_calc.output.report.assumptions import assumptions_section
 from foundation_calc.output.report.inputs import inputs_section
 from foundation_calc.output.report.methods import methods_section
 from foundation_calc.output.report.model import Section, Sheet
-from foundation_calc.output.report.references import references_section
+from foundation_calc.output.report.references import cited, references_section
 from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
 from foundation_calc.output.report.verdict import checks_section, summary_section
 
@@ -98,5 +98,6 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
         report = next(run.report for run in runs if run.check == "runup")
         sections.append(runup_section(documents["runup"], report, loaded, units, figures))
     sections.append(checks_section(runs, documents, loaded, units))
-    sections.append(references_section(sections))
+    if cited(sections):  # a sheet that cites nothing has no empty References table
+        sections.append(references_section(sections))
     return Sheet(sheet_title(title), tuple(sections), page_header(title)), scene_run

@@ -13,8 +13,6 @@ from foundation_calc.output.report.model import Figure
 
 def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
     """Peaks of C against the crank speed [rad/s] with the operating speed and the detuning bands shaded."""
-    import matplotlib.pyplot as plt
-
     fig, ax = new_figure(7.0, 3.6)
     xs = [units.convert("speed", w) for w in series.omega]
     for label, peaks in series.peaks.items():
@@ -32,7 +30,6 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
     fig.legend(fontsize=7, loc="outside upper center", ncols=4)
     buffer = io.StringIO()
     fig.savefig(buffer, format="svg")
-    plt.close(fig)
     svg = buffer.getvalue()
     svg = svg[svg.index("<svg"):]  # drop the XML prolog and DOCTYPE so the SVG can sit inline in HTML
     caption = (
@@ -47,8 +44,6 @@ def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnit
 def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Figure:
     """The platform's six natural frequencies (6-DOF, undamped) on the speed axis, each with its
     ±detuning band, and the operating speed: how far the design sits from every mode."""
-    import matplotlib.pyplot as plt
-
     fig, ax = new_figure(7.0, 2.6)
     omega = doc["speed"]["omega"]
     modes = sorted((units.convert("speed", f["omega"]), f["mode"]) for f in doc["natural_frequencies"])
@@ -66,7 +61,6 @@ def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Fi
     fig.legend(fontsize=7, loc="outside upper center")
     buffer = io.StringIO()
     fig.savefig(buffer, format="svg")
-    plt.close(fig)
     svg = buffer.getvalue()
     caption = (
         f"Natural frequencies of the platform on its isolators (6-DOF, undamped) with the ±{detuning:.0%}"

@@ -13,7 +13,7 @@ table { border-collapse: collapse; margin: 0.5em 0 1em; page-break-inside: avoid
 caption { text-align: left; font-weight: bold; padding-bottom: 0.2em; }
 th, td { border: 1px solid #aaa; padding: 2px 6px; vertical-align: top; }
 th { background: #eee; } td.n { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
-td { overflow-wrap: break-word; }
+td { overflow-wrap: break-word; } td.n.w { white-space: normal; } table.long { width: 100%; }
 .eq { margin: 0.4em 0; page-break-inside: avoid; } .eq code { font-size: 10pt; } .src { color: #444; } .fix { color: #7a2000; }
 figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; height: auto; }
 @page { size: A4; margin: 15mm; }
@@ -22,14 +22,23 @@ table.signs { width: 100%; } table.signs td { height: 2.2em; } table.signs td:la
 """
 
 
+#: A numeric cell longer than this may wrap; a table with a text cell longer than LONG_TEXT takes
+#: the page's width, so its text columns are not squeezed by the numbers (as in the PDF).
+NOWRAP_CHARS = 16
+LONG_TEXT = 40
+
+
+def _cell(text: str, numeric: bool) -> str:
+    kind = (' class="n w"' if len(text) > NOWRAP_CHARS else " class=n") if numeric else ""
+    return f"<td{kind}>{escape(text)}</td>"
+
+
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
-    body = "".join(
-        "<tr>" + "".join(f'<td{" class=n" if n else ""}>{escape(c)}</td>' for c, n in zip(row, t.numeric)) + "</tr>"
-        for row in t.rows
-    )
+    body = "".join("<tr>" + "".join(_cell(c, n) for c, n in zip(row, t.numeric)) + "</tr>" for row in t.rows)
     caption = f"<caption>{escape(t.title)}</caption>" if t.title else ""
-    wide = ' class="signs"' if t.wide is not None else ""
+    long = any(len(c) > LONG_TEXT for row in t.rows for c, n in zip(row, t.numeric) if not n)
+    wide = ' class="signs"' if t.wide is not None else ' class="long"' if long else ""
     return f"<table{wide}>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 

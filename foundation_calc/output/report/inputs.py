@@ -12,7 +12,7 @@ import re
 from pydantic import BaseModel
 
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.report.model import Section, table
+from foundation_calc.output.report.model import Paragraph, Section, table
 from foundation_calc.output.report.numbers import echoed
 
 _DESCRIPTION = re.compile(r"^\s*(?P<symbol>.*?)\s*\[(?P<unit>[^\]]*)\]\s*:\s*(?P<meaning>.*)$", re.S)
@@ -30,17 +30,61 @@ def _value(value) -> str:
     if isinstance(value, float):
         return echoed(value)
     if isinstance(value, (list, tuple)):
-        return ", ".join(map(_value, value))
+        return ", ".join(map(_value, value)) if value else "none"
     return str(value)
+
+
+def _entries(value) -> bool:
+    """True for a list of nested tables (a machine's ``loads``): shown as a table of its own."""
+    return isinstance(value, (list, tuple)) and bool(value) and all(isinstance(v, BaseModel) for v in value)
+
+
+def _described(field) -> tuple[str, str, str]:
+    match = _DESCRIPTION.match(field.description or "")
+    return match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
+
+
+def _columns(model_type, prefix: str = ""):
+    """(label, path, field) of every key of an entry; a nested table's keys as ``at.height``."""
+    for key, field in model_type.model_fields.items():
+        nested = field.annotation if isinstance(field.annotation, type) and issubclass(field.annotation, BaseModel) else None
+        if nested is not None:
+            yield from _columns(nested, f"{prefix}{key}.")
+        else:
+            yield f"{prefix}{key}", field
+
+
+def _flat(items) -> bool:
+    """True when every column of every entry holds a plain value (no list of tables, no optional
+    nested table): the entries fit one table, a row each."""
+    return not any(isinstance(_get(item, path), BaseModel) or _entries(_get(item, path))
+                   for item in items for path, _ in _columns(type(item)))
+
+
+def _get(model, path: str):
+    for key in path.split("."):
+        model = getattr(model, key)
+    return model
+
+
+def _entries_table(title: str, items) -> tuple:
+    """A row per entry and a column per key, headed ``key [unit]`` (loads, points), then what each
+    key means, as one line."""
+    columns = list(_columns(type(items[0])))
+    header = tuple(path if _described(f)[1] in ("", "-") else f"{path} [{_described(f)[1]}]" for path, f in columns)
+    rows = [tuple("-" if _get(item, path) is None else _value(_get(item, path)) for path, _ in columns) for item in items]
+    numeric = tuple(not isinstance(_get(items[0], path), str) for path, _ in columns)
+    meanings = "; ".join(f"{path}{'' if _described(f)[0] in ('', '-') else ' (' + _described(f)[0] + ')'}: {_described(f)[2]}"
+                         for path, f in columns)
+    return table(title, header, rows, numeric), Paragraph(meanings + ".")
 
 
 def _rows(group: str, model: BaseModel, units: DisplayUnits):
     for key, field in type(model).model_fields.items():
         value = getattr(model, key)
-        if value is None or isinstance(value, BaseModel):  # a nested table has its own block
+        if value is None or isinstance(value, BaseModel) or _entries(value):  # a nested table has its own block
             continue
-        match = _DESCRIPTION.match(field.description or "")
-        symbol, unit, meaning = match.group("symbol", "unit", "meaning") if match else ("", "", field.description or "")
+        symbol, unit, meaning = _described(field)
         quantity = DISPLAYED.get((group.split("[")[0], key))
         if quantity is not None and isinstance(value, float):
             value, unit = units.convert(quantity, value), units.label(quantity)
@@ -61,11 +105,17 @@ def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
             for key in (type(value).model_fields if isinstance(value, BaseModel) else ())
             if isinstance(getattr(value, key), BaseModel)
         ]
+        if _entries(value) and _flat(value):  # [[loads]], [[points]]: one table, a row per entry
+            blocks += _entries_table(f"[[{name}]]", value)
+            continue
         if isinstance(value, (list, tuple)):
             groups = [(f"[[{name}]] {i + 1}", item) for i, item in enumerate(value) if isinstance(item, BaseModel)]
         for title, model in groups:
             rows = list(_rows(title.strip("[]").split("]")[0], model, units))
             blocks.append(table(title, header, rows, (False, False, True, False, False)))
+            for key in type(model).model_fields:
+                if _entries(getattr(model, key)):
+                    blocks += _entries_table(f"{title} {key}", getattr(model, key))
         if name == "soil" and hasattr(scene, "soil_springs"):
             blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))

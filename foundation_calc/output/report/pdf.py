@@ -17,8 +17,9 @@ PREAMBLE = """#set text(size: 9pt)
 #show table.cell.where(y: 0): strong
 """
 
-#: A text column with a cell longer than this shares the page's free width and wraps.
+#: A table with a text cell longer than this wraps its text columns longer than SHORT_CHARS.
 WRAP_CHARS = 40
+SHORT_CHARS = 24
 
 #: Tables longer than this (rows, or characters of text) may break across pages, their header
 #: repeated; shorter ones stay whole. A table taller than a page must break or it runs off the page.
@@ -37,12 +38,14 @@ def _table(t: Table) -> str:
     cells = [string(h) for h in t.header] + [string(c) for row in t.rows for c in row]
     columns = ", ".join(["auto"] * len(t.header))
     width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
-    text_columns = [j for j in range(len(t.header)) if not t.numeric[j]]
-    # long text columns share the free width in proportion to their longest cells and wrap (a hand
-    # calculation's formula and values both); a sign box takes all of it
-    wrapped = [t.wide] if t.wide is not None else [j for j in text_columns if width[j] > WRAP_CHARS]
-    if wrapped:
-        columns = ", ".join(f"{width[j] if t.wide is None else 1}fr" if j in wrapped else "auto" for j in range(len(t.header)))
+    if t.wide is not None:  # the sign boxes: the signature column takes the free width
+        columns = ", ".join("1fr" if j == t.wide else "auto" for j in range(len(t.header)))
+    elif max((width[j] for j in range(len(t.header)) if not t.numeric[j]), default=0) > WRAP_CHARS:
+        # long text wraps: every text column longer than SHORT_CHARS shares the free width in
+        # proportion to its longest cell (a hand calculation's formula and values both), so a long
+        # item column is not squeezed by a long source
+        shares = [min(width[j], WRAP_CHARS * 2) if not t.numeric[j] and width[j] > SHORT_CHARS else 0 for j in range(len(t.header))]
+        columns = ", ".join(f"{share}fr" if share else "auto" for share in shares)
     inset = "8pt" if t.wide is not None else "2.5pt"  # a sign box is tall enough to sign in
     body = (
         f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: {inset}),"

@@ -12,21 +12,22 @@ from foundation_calc.output.report.numbers import DIGITS, figure, quantity
 
 CLOSED_FORM_NOTE = (
     "closed form: the mode alone, Faddeeva envelope of the passage with the unbalance force growing as"
-    " (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote [Le]; integration: the same mode's motion"
+    " (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote [Le]; integrated: the same mode's motion"
     " in the time integration of the whole linear model; all modes: largest displacement of any point in"
-    " the passage's window. η = (dΩ/dt)/ω_n² is the sweep rate, ζ the mode's damping ratio."
+    " the passage's window, at time t. Order: the harmonic of the shaft speed Ω that passes the mode."
+    " η = (dΩ/dt)/ω_n² is the sweep rate, ζ the mode's damping ratio."
 )
 
 
 def _passages(key: str, run: dict, units: DisplayUnits):
     from foundation_calc.checks.runup import run_title
 
-    a = units.label("amplitude")
+    a, sp = units.label("amplitude"), units.label("speed")
     steady = run["steady_amplitude"]
     rows = (
         (
-            str(p["mode"]), quantity(units, "speed", p["natural_frequency"]), f"{p['harmonic']:g}ω",
-            quantity(units, "speed", p["speed"]), figure(p["sweep_rate"], 3), figure(p["damping_ratio"], 3),
+            str(p["mode"]), figure(units.convert("speed", p["natural_frequency"]), DIGITS["speed"]), f"{p['harmonic']:g}ω",
+            figure(units.convert("speed", p["speed"]), DIGITS["speed"]), figure(p["sweep_rate"], 3), figure(p["damping_ratio"], 3),
             *(figure(units.convert("amplitude", p[k]), DIGITS["amplitude"]) for k in ("closed_form_peak", "lewis_peak", "integrated_peak")),
             figure(p["peak_time"], 3), figure(units.convert("amplitude", p["total_peak"]), DIGITS["amplitude"]),
             "-" if p["ratio_to_steady"] is None else figure(p["ratio_to_steady"], 3), p["point"],
@@ -37,11 +38,13 @@ def _passages(key: str, run: dict, units: DisplayUnits):
         f"{run_title(key).capitalize()} in {figure(run['duration'], 3)} s ({'damped' if run['damped'] else 'undamped'});"
         f" steady amplitude at the operating speed {quantity(units, 'amplitude', steady)}"
     )
-    header = ("mode", "ω_n", "harmonic", "at speed", "η", "ζ", f"closed form [{a}]", f"Lewis [{a}]",
-              f"integration [{a}]", "at t [s]", f"all modes [{a}]", "× steady", "point")
+    # the units once in the title, not in every cell or heading, so thirteen columns fit the page
+    shown_units = f". Speeds ω_n, Ω in {sp}; peaks in {a}; t in s"
+    header = ("mode", "ω_n", "order", "at Ω", "η", "ζ", "closed form", "Lewis", "integrated", "at t", "all modes",
+              "× steady", "point")
     if not run["passages"]:
         return Paragraph(f"{title}: no resonance that the loads drive is passed.")
-    return table(title, header, rows, (True,) * 12 + (False,))
+    return table(title + shown_units, header, rows, (True,) * 12 + (False,))
 
 
 def _motor(motor: dict, units: DisplayUnits):

@@ -21,16 +21,29 @@ EXIT = {"pass": 0, "warn": 0, "fail": 1}
 LIMIT_SOURCE = "scene [limits]"
 
 
+def resonance_verdict(row: dict) -> str:
+    """What decides a resonance row (README, "The resonance rule"): its verdict when the condition is
+    judged or sets a warning or failure; else "information" (inside its band, but its harmonic's
+    forcing share is under 1 %) or "not judged". A row of neither kind is never a PASS beside a
+    margin smaller than its band."""
+    if row["judged"] or row["status"] in ("warn", "fail"):
+        return row["verdict"]
+    return "information" if row["status"] == "information" else "not judged"
+
+
 def _resonance_rows(doc: dict, scene, units: DisplayUnits):
     for r in doc["resonances"]:
         critical = quantity(units, "speed", r["critical_speed"]["omega"])
+        shown = resonance_verdict(r)
+        decides = shown == r["verdict"]
         yield (
             f"{r['condition']} ({r['mode_name']}, critical {critical})",
             "margin " + percent(r["margin"]),
-            "≥ " + percent(r["required"]),
-            ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf",
-            r["verdict"],
-            f"{LIMIT_SOURCE} detuning",
+            ("≥ " + percent(r["required"]) if r["required"] > 0 else "no band") if decides
+            else f"forcing share {figure(r['forcing_share'], 2, 1.0)} < 1 %",
+            (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
+            shown,
+            f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
         )
     yield from _range_rows(doc)
 
@@ -40,9 +53,9 @@ def _range_rows(doc: dict):
     ranged = doc.get("modulus_range")
     if ranged:
         yield (
-            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}], governing factor"
-            f" {ranged['governing_factor']:.4g}",
-            ranged["governing"], "passes at every factor", "-", ranged["verdict"], "scene [soil] modulus_range",
+            f"over the soil's modulus range [{ranged['low']:g}, {ranged['high']:g}]: {ranged['governing']}",
+            f"governing factor {ranged['governing_factor']:.4g}", "every factor passes", "-", ranged["verdict"],
+            "scene [soil] modulus_range",
         )
 
 
@@ -158,7 +171,7 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
             ("≥ " if above else "≤ ") + shown(row, row["limit"]),
             ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
             row["verdict"],
-            row["source"],
+            row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
         )
 
 
@@ -188,9 +201,17 @@ def verdict_line(runs) -> str:
     )
 
 
+def _reason(run, units: DisplayUnits) -> str:
+    """A check's reason as ``fcalc check`` gives it; the plausibility warnings' count only, as the
+    sheet lists every warning itself (the console's reason shows the first and points to stderr)."""
+    if run.check == "inputs":
+        return units.render(run.reason).split(":", 1)[0] + ": each is listed under Verdict, Input warnings"
+    return units.render(run.reason)
+
+
 def summary_section(runs, warnings, units: DisplayUnits) -> Section:
     """Page 1: the overall verdict and each check's verdict and reason, as ``fcalc check`` prints them."""
-    rows = ((run.check, run.verdict.upper(), units.render(run.reason)) for run in runs)
+    rows = ((run.check, run.verdict.upper(), _reason(run, units)) for run in runs)
     blocks = [Paragraph(verdict_line(runs)), table("", ("check", "verdict", "reason"), rows, (False, False, False))]
     if warnings:
         blocks.append(table("Input warnings (values probably typed in another unit: the check inputs warns)", ("warning",), ((w,) for w in warnings), (False,)))
@@ -204,7 +225,7 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         reader = ROWS.get(run.check)
         found = list(reader(documents[run.check], scene, units)) if reader is not None else []
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
-            found = [(units.render(run.reason), "-", "-", "-", run.verdict, "fcalc check")]
+            found = [(_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
         rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
     checks = table(
         "Every check (ratio = demand/limit; above 1 fails)",

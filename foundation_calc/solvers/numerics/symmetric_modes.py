@@ -16,7 +16,7 @@ def symmetric_modes(K, M, scale=None) -> tuple[np.ndarray, np.ndarray]:
     """p² (ascending, units of K/M) and mass-normalised shapes (columns) of K φ = p² M φ, for one
     (D, D) pair or stacks (..., D, D). Only the symmetric parts of K and M are used.
 
-    ``scale``: optional diagonal matrix S (D, D) of coordinate scales; the problem is solved in
+    ``scale``: optional diagonal matrix S (D, D) (or a stack (..., D, D)) of coordinate scales; the problem is solved in
     the coordinates q = S⁻¹ u (S K S, S M S: rotations scaled by a length to the size of the
     translations, say) and the shapes are returned in the original ones (φ = S L⁻ᵀ v), the
     eigenvalues unchanged.
@@ -30,11 +30,13 @@ def symmetric_modes(K, M, scale=None) -> tuple[np.ndarray, np.ndarray]:
     numpy.linalg.LinAlgError
         when M is not positive definite in double precision (the callers name the cause).
     """
-    if scale is not None:
-        M, K = scale @ M @ scale, scale @ K @ scale
+    if scale is not None:  # S A S of a diagonal S (or a stack of them), element by element
+        s = np.diagonal(scale, 0, -2, -1)
+        outer = s[..., :, None] * s[..., None, :]
+        M, K = M * outer, K * outer
     Li = np.linalg.inv(np.linalg.cholesky(0.5 * (M + np.swapaxes(M, -1, -2))))
     p2, v = np.linalg.eigh(Li @ (0.5 * (K + np.swapaxes(K, -1, -2))) @ np.swapaxes(Li, -1, -2))
-    back = np.swapaxes(Li, -1, -2) if scale is None else scale @ np.swapaxes(Li, -1, -2)
+    back = np.swapaxes(Li, -1, -2) if scale is None else s[..., :, None] * np.swapaxes(Li, -1, -2)
     return p2, back @ v
 
 

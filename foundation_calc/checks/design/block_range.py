@@ -1,0 +1,108 @@
+"""The soil's modulus range (``[soil] modulus_range``) over a batch of candidate blocks: the
+resonance and amplitude checks at the stiffness factors where ``fcalc check`` evaluates them
+(:mod:`~foundation_calc.checks.soil_range`): the resonances at the factors of its grid, the
+amplitudes at those of its coarser grid, and both at every factor where a critical speed
+p_j / n crosses a machine's speed and the resonance rule judges that condition there.
+
+The crossings in closed form: every soil method's springs are proportional to the factor f
+(:meth:`~foundation_calc.scenes.block_soil.BlockSoil.factored` scales G or V_s², E, the
+coefficients or the given stiffness) and its dashpots to sqrt(f) (a damping ratio ξ that does not
+depend on the modulus, C = 2 ξ sqrt(K m); given dashpots by sqrt(f)), so that
+
+    K(f) = f K_s + K_W,   C(f) = sqrt(f) C(1)                                                (1)
+
+with K_s the springs at f = 1 and K_W the weight's tilt. Mode j's frequency equals Ω = n ω where
+det(f K_s + K_W - Ω² M) = 0: f is an eigenvalue of the symmetric K_s^(-1/2) (Ω² M - K_W) K_s^(-1/2)
+(one batched ``eigvalsh`` per machine and order), which ``fcalc check`` finds instead by Brent's
+method between grid factors (to 1e-10).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+
+def scaled(model, factor):
+    """The block of ``model`` (the soil as given) on the soil scaled by ``factor`` (N,), Eq. (1)."""
+    from foundation_calc.solvers.rigid_body.inertia import diagonal_matrices
+
+    f = np.asarray(factor, dtype=float)
+    K_s = diagonal_matrices(model.springs)
+    return replace(model, K=f[:, None, None] * K_s + (model.K - K_s), C=np.sqrt(f)[:, None, None] * model.C,
+                   springs=f[:, None] * model.springs)
+
+
+def crossings(scene, model, excitations, low, high):
+    """Yield (factor (N,), valid (N,), scaled model): for every machine, order and root of Eq. (1),
+    the factor where a critical speed crosses the machine's speed, valid where it lies within
+    (low, high), the block is stable there and the rule judges the condition (1 elsewhere)."""
+    from foundation_calc.checks.resonance_rule import judge, required_detuning
+    from foundation_calc.solvers.block.response import batch_modes, resonances
+    from foundation_calc.solvers.rigid_body.inertia import diagonal_matrices
+
+    rows = np.arange(len(model.M))
+    root = 1.0 / np.sqrt(np.broadcast_to(model.springs, model.K.shape[:-1]))
+    weight = model.K - diagonal_matrices(model.springs)
+    for exc in excitations:
+        for h, n in enumerate(exc.orders):
+            Omega = n * exc.omega
+            factors = np.linalg.eigvalsh((Omega**2 * model.M - weight) * root[:, :, None] * root[:, None, :])
+            for k in range(factors.shape[-1]):
+                inside = (factors[:, k] > low) & (factors[:, k] < high)
+                if not inside.any():
+                    continue
+                f = np.where(inside, factors[:, k], 1.0)
+                at = scaled(model, f)
+                modes = batch_modes(at)
+                res = resonances(modes, exc)
+                j = np.argmin(res.margin[:, h, :], axis=-1)
+                verdict = judge(res.margin[rows, h, j][:, None], [n], res.share[rows, h, j][:, None],
+                                required_detuning(scene.limits.detuning, [n]), [False])
+                yield f, inside & modes.stable & verdict.judged[:, 0], at
+
+
+def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarray]:
+    """check -> (N,) the worst outcome of the resonance and amplitude checks over the soil as
+    ``given`` (check -> (N,) outcomes) and over the scene's ``soil.modulus_range`` (module
+    docstring), for candidates ``dimensions`` (L, B, H (N,) each [m]). A candidate that already
+    fails a check is not evaluated again for it. ``built(scene, L, B, H)`` (the candidates on a
+    scene's soil) and ``dynamics(scene, built, checks)`` are the evaluator's
+    (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent soil Eq. (1) does not
+    hold: there the crossings are not added (:data:`~foundation_calc.checks.design.block.NOT_EVALUATED`)."""
+    from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
+
+    from foundation_calc.checks.design.candidates import FAIL
+
+    low, high = scene.soil.modulus_range
+    worst = {check: np.array(outcome, dtype=np.int8) for check, outcome in given.items()}
+
+    def judge_at(on, checks, evaluate):
+        active = np.flatnonzero(np.any([worst[check] < FAIL for check in checks], axis=0))
+        if len(active):
+            for check, outcome in evaluate(on, active).items():
+                worst[check][active] = np.maximum(worst[check][active], outcome)
+
+    def crossed(on, active):
+        candidates = built(on, *(d[active] for d in dimensions))
+        found = {check: np.zeros(len(active), dtype=np.int8) for check in worst}
+        for _, valid, at in crossings(on, candidates.model, candidates.excitations, low, high):
+            for check, (outcome, *_) in dynamics(on, replace(candidates, model=at), tuple(worst)).items():
+                found[check] = np.where(valid, np.maximum(found[check], outcome), found[check])
+        return found
+
+    if not scene.soil.frequency_dependent:
+        judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
+    grids = {"resonance": set(modulus_factors(low, high)), "amplitudes": set(modulus_factors(low, high, AMPLITUDE_GRID_POINTS))}
+    for factor in sorted(grids["resonance"] | grids["amplitudes"]):
+        checks = tuple(check for check in worst if factor in grids[check])
+
+        def at_factor(on, active, checks=checks):
+            return {check: found[0] for check, found in dynamics(on, built(on, *(d[active] for d in dimensions)), checks).items()}
+
+        judge_at(scene.with_modulus_factor(factor), checks, at_factor)
+    return worst
+
+
+__all__ = ["crossings", "over_range", "scaled"]
