@@ -3,12 +3,18 @@
 from __future__ import annotations
 
 import copy
+import os
 from pathlib import Path
 
-import pytest
-from typer.testing import CliRunner
+from foundation_calc.cli.app import BLAS_THREAD_VARIABLES
 
-from foundation_calc.scenes import read_toml
+for _variable in BLAS_THREAD_VARIABLES:  # one thread, as fcalc's main() runs (before numpy is imported)
+    os.environ.setdefault(_variable, "1")
+
+import pytest  # noqa: E402
+from typer.testing import CliRunner  # noqa: E402
+
+from foundation_calc.scenes import read_toml  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIGS = ROOT / "configs"

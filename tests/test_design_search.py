@@ -203,3 +203,31 @@ def test_block_evaluator_judges_a_modulus_range_as_fcalc_checks_path():
     fast, slow = evaluate(parse_scene(document), batch), reference.evaluate(document, batch, source="range")
     for check in ("resonance", "amplitudes", "office"):
         assert fast.outcome[check].tolist() == slow.outcome[check].tolist(), check
+
+
+def test_strict_crank_sizing_against_brute_force(runner_module):
+    """The compressor's crank foundation with --strict (the mass-ratio warning fails): on a
+    3 × 3 × 3 grid checked one by one through run_checks, no candidate that passes without a
+    warning is cheaper than the design the search picks, which itself passes so."""
+    args = ["design", str(COMPRESSOR), "--vary", "block.length=3:8", "--vary", "block.width=2:5",
+            "--vary", "block.height=0.8:2.4", "--points", "3", "--strict", "--json"]
+    result = runner_module.invoke(app, args)
+    assert result.exit_code == 0, result.output
+    best = json.loads(result.stdout)["best"]
+    document = read_toml(COMPRESSOR)
+    volumes = [
+        length * width * height
+        for length in (3.0, 5.5, 8.0) for width in (2.0, 3.5, 5.0) for height in (0.8, 1.6, 2.4)
+        if all(run.verdict == "pass" for run in run_checks(apply(document, {"block.length": length, "block.width": width,
+                                                                          "block.height": height})))
+    ]
+    assert best["volume"] <= min(volumes) + 1e-9
+    assert best["outcome"] == "pass"
+
+
+def test_nothing_written_when_nothing_passes(runner_module, tmp_path):
+    written = tmp_path / "best.toml"
+    result = runner_module.invoke(app, ["design", str(FAN), "--vary", "block.length=4.5:5.5", "--points", "2",
+                                        "--write", str(written)])
+    assert result.exit_code == 1 and not written.exists()
+    assert "not written: no candidate passes" in result.output

@@ -18,7 +18,7 @@ import tomli_w
 
 from foundation_calc.cli.app import app
 from tests.conftest import CONFIGS
-from tests.sheet_numbers import numbers
+from tests.sheet_numbers import NUMBER, numbers
 
 pytest.importorskip("matplotlib")
 
@@ -90,6 +90,18 @@ def _result_rows(check: dict) -> list[str]:
     return [c["verdict"] for c in result["checks"]]
 
 
+def _mixed_notation(column: list[str]) -> list[str]:
+    """The cells of ``column`` that show one quantity (same text around the number) in both plain
+    and ``a.bc·10ⁿ`` notation, as "0.00135 mm" above "6.70·10⁻⁴ mm"; an exact 0 fits either."""
+    notations: dict[str, dict[bool, str]] = {}
+    for cell in column:
+        found = NUMBER.findall(cell)
+        if len(found) != 1 or found[0] in ("0", "-0"):
+            continue
+        notations.setdefault(NUMBER.sub("#", cell), {})["·10" in found[0]] = cell
+    return [cell for seen in notations.values() if len(seen) > 1 for cell in seen.values()]
+
+
 def _numbers(text: str) -> list[float]:
     return numbers(text)
 
@@ -126,6 +138,8 @@ def test_sheet_and_check_give_one_verdict(runner, scenes):
                 assert any(abs(x - expected) <= VALUE_TOLERANCE * abs(expected) for x in shown), (scene.name, name)
             sheet_rows = [r[5].lower() for r in tables["checks"] if r[0] == check["check"]]
             assert sheet_rows == _result_rows(check), (scene.name, check["check"])
+        for at in (2, 3):  # value and limit columns: one notation per quantity (numbers.py)
+            assert not _mixed_notation([r[at] for r in tables["checks"]]), (scene.name, _mixed_notation([r[at] for r in tables["checks"]]))
         # a checking engineer never reads PASS beside a demand above its limit
         assert not [r for r in tables["checks"] if r[5] == "PASS" and r[4] not in ("-", "inf") and float(r[4]) > 1.0], scene.name
 

@@ -107,8 +107,10 @@ def design(
     candidate).
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
-    fail. The shown designs are checked again by fcalc check's own path; a disagreement is
-    reported as an internal error (exit 4). Machines and points on the block's top rise with it,
+    fail. A check the evaluator defers (a run-up, integrated in time) is judged by fcalc check's
+    path on the candidates that pass the others, cheapest first, until one passes (at most 20).
+    The shown designs are checked again by fcalc check's own path; a disagreement on a check the
+    search evaluated is reported as an internal error (exit 4). Machines and points on the block's top rise with it,
     those on an end face follow the face (README, "Sizing"). Exit 0 when a design passes, 1 when
     none does, 2 for bad options, 3 for an invalid scene.
     """
@@ -139,16 +141,22 @@ def design(
 
 
 def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bool):
-    """Search with ``judge`` (evaluate, its name, refinement factor), then re-check the best and
-    the shown Pareto designs (or the closest one)."""
+    """Search with ``judge`` (evaluate, its name, refinement factor), the checks it defers
+    confirmed by fcalc check's path; then re-check the best and the shown Pareto designs (or the
+    closest one), and leave out the Pareto designs that fail a deferred check there."""
+    import dataclasses
+    import functools
+
     import numpy as np
 
+    from foundation_calc.checks.design import reference
     from foundation_calc.checks.design.recheck import recheck
-    from foundation_calc.checks.design.search import CHUNK, search, thinned
+    from foundation_calc.checks.design.search import CHUNK, passing, search, thinned
     from foundation_calc.output.design import PARETO_SHOWN, Sizing
 
     evaluate, evaluator, refine = judge
-    found = search(searched_grid, evaluate, given, strict, refine=refine)
+    confirm = functools.partial(reference.evaluate, document, source=str(scene))
+    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm)
     if found.found:
         pareto = thinned(found.pareto, PARETO_SHOWN)
         designs = pareto if pareto.volume[0] == found.best.volume[0] else found.best.joined(pareto)
@@ -156,7 +164,17 @@ def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bo
         designs = found.closest
     batch = {k: np.asarray(v) for k, v in designs.values.items()}
     full, disagreements = recheck(document, batch, evaluate(batch), str(scene))
-    return Sizing(str(scene), loaded.name, found, designs, full, tuple(disagreements), evaluator, CHUNK)
+    failing = 0
+    if found.found and found.deferred:  # the Pareto designs the full path confirms, the best first
+        keep = passing(full, strict)
+        keep[0] = True
+        failing = int(np.count_nonzero(~keep))
+        designs = designs.take(keep)
+        full = dataclasses.replace(full, volume=full.volume[keep], mass=full.mass[keep],
+                                   **{name: {c: a[keep] for c, a in getattr(full, name).items()}
+                                      for name in ("outcome", "utilisation", "governing")})
+    return Sizing(str(scene), loaded.name, found, designs, full, tuple(disagreements), evaluator, CHUNK,
+                  pareto_failing=failing)
 
 
 def _tidy(value):

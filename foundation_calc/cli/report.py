@@ -13,7 +13,7 @@ from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt, display_units
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML), crank_foundation or platform.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML): crank_foundation, platform or block_foundation.")]
 OutputOpt = Annotated[
     Optional[Path],
     typer.Option("-o", "--output", metavar="FILE", help="FILE.pdf, FILE.html or FILE.md; default: the scene's name with .pdf."),

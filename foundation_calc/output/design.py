@@ -26,7 +26,8 @@ PARETO_SHOWN = 12
 class Sizing:
     """A finished search and its re-check: ``designs`` are the best (first) and the shown Pareto
     designs (none when nothing passes: then the closest candidate alone), ``full`` the full path's
-    verdicts on them, ``evaluator`` the name of what judged the grid."""
+    verdicts on them, ``evaluator`` the name of what judged the grid, ``pareto_failing`` how many
+    Pareto designs of the batch's checks the re-check found failing a deferred check (left out)."""
 
     source: str
     name: str
@@ -37,6 +38,7 @@ class Sizing:
     evaluator: str
     chunk: int
     written: str | None = None
+    pareto_failing: int = 0
 
 
 def _finite(value: float) -> float | None:
@@ -87,14 +89,29 @@ def design_document(sizing: Sizing) -> dict:
         "closest": None if found.found else designs[0],
         "fails_everywhere": found.fails_everywhere,
         "cheaper_candidates": found.cheaper_count,
-        "cheaper_failures": [{"check": r.partition(": ")[0], "reason": r.partition(": ")[2], "count": n}
-                             for r, n in sorted(found.cheaper_failures.items(), key=lambda item: -item[1])],
+        "cheaper_failures": _failures(found.cheaper_failures),
+        "deferred": _deferred(sizing),
         "recheck": {"designs": len(designs), "agree": not sizing.disagreements,
                     "disagreements": [{"values": d.design, "check": d.check, "search": d.search, "fcalc_check": d.full}
                                       for d in sizing.disagreements]},
         "written": sizing.written,
     }
     return document
+
+
+def _failures(counts: dict[str, int]) -> list[dict]:
+    return [{"check": r.partition(": ")[0], "reason": r.partition(": ")[2], "count": n}
+            for r, n in sorted(counts.items(), key=lambda item: -item[1])]
+
+
+def _deferred(sizing: Sizing) -> dict | None:
+    """The checks the search's evaluator deferred to fcalc check's path, and what that path found."""
+    found = sizing.found
+    if not found.deferred:
+        return None
+    return {"checks": list(found.deferred), "full_path_checks": found.confirmations, "bound": found.bound,
+            "failed": found.deferred_failed, "failures": _failures(found.deferred_failures),
+            "unconfirmed": found.unconfirmed, "pareto_failing": sizing.pareto_failing}
 
 
 def _number(value: float | None, digits: int = 3) -> str:
@@ -116,7 +133,7 @@ def print_design(sizing: Sizing) -> None:
     document = design_document(sizing)
     found = sizing.found
     console.print(f"[bold]fcalc design[/]: {escape(sizing.source)}" + (f" — {escape(sizing.name)}" if sizing.name else ""))
-    sizes = " × ".join(str(len(a.values)) for a in found.grid.axes) + " = " * (len(found.grid.axes) > 1)
+    sizes = " × ".join(str(len(a.values)) for a in found.grid.axes) + " = " if len(found.grid.axes) > 1 else ""
     console.print(f"grid: {sizes}{found.grid.size} candidates in {found.chunks} chunk{'s' * (found.chunks != 1)}"
                   f" of at most {sizing.chunk}, {found.seconds:.2f} s ({escape(sizing.evaluator)})")
     for a in document["grid"]["axes"]:
@@ -126,6 +143,7 @@ def print_design(sizing: Sizing) -> None:
         result = "found a cheaper design" if found.improved_by_refinement else "found none cheaper"
         console.print(f"refinement: {found.refined_candidates} candidates cheaper than the cheapest within one grid step of it,"
                       f" {result}")
+    _print_deferred(console, document["deferred"], found.found)
     keys = found.grid.keys
     if found.found:
         best = document["best"]
@@ -161,6 +179,29 @@ def print_design(sizing: Sizing) -> None:
             table.add_row(row["check"], escape(row["reason"]), str(row["count"]))
         console.print(table)
     _print_recheck(sizing, document)
+
+
+def _print_deferred(console, deferred: dict | None, passed: bool) -> None:
+    """What the search left to fcalc check's path and what that path found."""
+    from rich.markup import escape
+
+    if deferred is None:
+        return
+    checks = ", ".join(deferred["checks"])
+    console.print(f"deferred to fcalc check's path: {checks} (not evaluated in the batch);"
+                  f" {deferred['full_path_checks']} full-path check{'s' * (deferred['full_path_checks'] != 1)}"
+                  f" of the candidates passing the others, cheapest first (at most {deferred['bound']})")
+    if deferred["failed"]:
+        reasons = "; ".join((row["reason"] if row["check"] in deferred["checks"] else f"{row['check']}: {row['reason']}")
+                            + f" ({row['count']})" for row in deferred["failures"])
+        cheaper = "cheaper candidates pass" if passed else "candidates pass"
+        console.print(f"  {deferred['failed']} {cheaper} the batch checks but fail {checks}: {escape(reasons)}")
+    if deferred["unconfirmed"]:
+        console.print(f"  [bold yellow]note[/]: {deferred['unconfirmed']} more candidates pass the batch checks, not judged"
+                      f" by the full path (the bound of {deferred['bound']} reached)")
+    if deferred["pareto_failing"]:
+        console.print(f"  {deferred['pareto_failing']} Pareto design{'s' * (deferred['pareto_failing'] != 1)} of the"
+                      f" batch checks fail {checks} by the full path: left out of the Pareto set")
 
 
 def _print_pareto(console, document: dict, keys: list[str]) -> None:

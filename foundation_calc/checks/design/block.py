@@ -351,6 +351,7 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
         volume=volume, mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},
         governing={c: governing[c] for c in order}, reasons={c: reasons[c] for c in order},
+        deferred=tuple(c for c in order if c in NOT_EVALUATED),
     )
 
 

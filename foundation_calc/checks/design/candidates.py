@@ -47,6 +47,8 @@ class CandidateVerdicts:
     governing : check name -> (N,) int index into ``reasons[check]``: what governs the check there
     reasons : check name -> the texts ``governing`` indexes (e.g. ``"3ω = p1"``,
         ``"displacement at crankshaft bearing, z"``)
+    deferred : the checks the evaluator does not evaluate (reported PASS, utilisation NaN), left
+        to the full path (``fcalc check``'s): a search confirms its candidates by that path
     """
 
     volume: np.ndarray
@@ -55,6 +57,7 @@ class CandidateVerdicts:
     utilisation: dict[str, np.ndarray]
     governing: dict[str, np.ndarray]
     reasons: dict[str, tuple[str, ...]]
+    deferred: tuple[str, ...] = ()
 
     @property
     def worst_outcome(self) -> np.ndarray:

@@ -461,7 +461,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         one = evaluate(scene, {f"foundation.block.{k}": np.array([getattr(scene.foundation.block, k)]) for k in VARIED})
         return CandidateVerdicts(*(v[:0] for v in (one.volume, one.mass)),
                                  *({c: a[:0] for c, a in d.items()} for d in (one.outcome, one.utilisation, one.governing)),
-                                 one.reasons)
+                                 one.reasons, one.deferred)
     mech = MechanismOperator.of(scene.design())
     harmonics = mech.harmonics
     checks = checks_judged(scene)
@@ -476,6 +476,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         utilisation={c: np.concatenate([p.utilisation[c] for p in parts]) for c in order},
         governing={c: np.concatenate([p.governing[c] for p in parts]) for c in order},
         reasons={c: parts[0].reasons[c] for c in order},
+        deferred=("runup",) if "runup" in order else (),
     )
 
 

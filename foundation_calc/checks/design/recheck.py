@@ -5,6 +5,8 @@ The search's evaluator and the reference evaluator (:mod:`.reference`, one
 :func:`~foundation_calc.checks.batch.run_checks` a candidate) must give each check the same
 outcome on the same design, and the same utilisation within :data:`UTILISATION_AGREEMENT`; any
 difference is a :class:`Disagreement`, which the command reports as the internal error it is.
+A check the search's evaluator defers (``CandidateVerdicts.deferred``: it did not evaluate it) is
+no disagreement: the full path's verdict on it stands.
 """
 
 from __future__ import annotations
@@ -57,12 +59,15 @@ def _agree(a: float, b: float) -> bool:
 
 def disagreements(designs: Mapping[str, np.ndarray], searched: CandidateVerdicts, full: CandidateVerdicts) -> list[Disagreement]:
     """Every check of every design (key -> (n,) values) whose outcome differs between the two
-    verdicts, or whose utilisations differ by more than :data:`UTILISATION_AGREEMENT`."""
+    verdicts, or whose utilisations differ by more than :data:`UTILISATION_AGREEMENT`; the checks
+    ``searched`` defers are left out."""
     found = []
     count = len(full.volume)
     for i in range(count):
         design = {k: float(v[i]) for k, v in designs.items()}
         for check in dict.fromkeys([*full.outcome, *searched.outcome]):
+            if check in searched.deferred:
+                continue
             (o1, u1), (o2, u2) = _said(searched, check, i), _said(full, check, i)
             if o1 != o2 or not _agree(u1, u2):
                 found.append(Disagreement(design, check, f"{OUTCOME_NAMES[o1]} ({u1:.6g})", f"{OUTCOME_NAMES[o2]} ({u2:.6g})"))

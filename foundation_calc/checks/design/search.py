@@ -17,6 +17,14 @@ between its points, are not looked for.
 
 Pareto set: among the passing candidates, those that no other passing candidate beats on both
 volume (smaller) and worst margin (larger), cheapest first.
+
+Deferred checks: a check the evaluator does not evaluate (``CandidateVerdicts.deferred``, such as
+a run-up integrated in time) is judged by the full path (``confirm``, one
+:func:`~foundation_calc.checks.batch.run_checks` a candidate): the candidates that pass the
+batch's checks are taken in order of volume and confirmed one by one until one passes every
+check, at most ``bound`` of them (:data:`CONFIRM`); the refinement then looks around that one, its
+cheaper batch-passing candidates confirmed the same way. The Pareto set is then the confirmed
+design and the batch's front above it, which the caller re-checks by the full path.
 """
 
 from __future__ import annotations
@@ -40,6 +48,10 @@ REFINE = 5
 
 #: Points of the volume-margin sample kept for the plot.
 SAMPLE = 20_000
+
+#: Candidates confirmed by the full path at most, when the evaluator defers a check: a run-up
+#: costs 0.1-10 s a candidate.
+CONFIRM = 20
 
 Evaluate = Callable[[Batch], CandidateVerdicts]
 
@@ -73,6 +85,11 @@ class Front:
     def cheapest(self) -> "Front":
         """The cheapest candidate (the larger margin among equal volumes), or an empty front."""
         return self.pareto().take(slice(0, 1))
+
+    def by_volume(self, count: int) -> "Front":
+        """The ``count`` cheapest candidates, cheapest first (the larger margin among equal volumes)."""
+        order = np.lexsort((-np.nan_to_num(self.margin, nan=-np.inf), self.volume))
+        return self.take(order[:count])
 
     def safest(self) -> "Front":
         """The candidate of the largest worst margin (the cheaper among equals)."""
@@ -126,7 +143,12 @@ class Search:
     (empty when there is none); ``fails_everywhere``: checks that fail on every candidate;
     ``cheaper_failures``: ``"check: reason"`` -> count over the candidates cheaper than ``best``
     (every candidate when none passes); ``refined_steps``: key -> the refined step (empty without
-    refinement); ``sample``: a thinned (volume, margin, passes) of the grid for the plot."""
+    refinement); ``sample``: a thinned (volume, margin, passes) of the grid for the plot;
+    ``deferred``: the checks the evaluator left to the full path, ``confirmations`` how many
+    candidates that path judged (at most ``bound``), ``deferred_failures`` the ``"check: reason"``
+    governing those it failed (``deferred_failed`` of them; those on the grid are also in
+    ``cheaper_failures``), ``unconfirmed`` how many candidates that pass the batch's checks it never
+    judged when none it judged passes (0 otherwise)."""
 
     grid: Grid
     strict: bool
@@ -143,6 +165,12 @@ class Search:
     sample: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
     seconds: float = 0.0
     chunks: int = 0
+    deferred: tuple[str, ...] = ()
+    bound: int = CONFIRM
+    confirmations: int = 0
+    deferred_failed: int = 0
+    deferred_failures: dict[str, int] = field(default_factory=dict)
+    unconfirmed: int = 0
 
     @property
     def found(self) -> bool:
@@ -182,11 +210,16 @@ class _Walk:
         self.samples: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
         self.thin = max(1, math.ceil(found.grid.size / SAMPLE))
         self.failures: dict[str, int] = {}
+        self.queue, self.queued = Front.empty(keys), 0
 
     def add(self, batch: Batch) -> None:
         verdicts = self.evaluate(batch)
         ok = passing(verdicts, self.found.strict)
         self.passed = self.passed.joined(_front(batch, verdicts, ok)).pareto()
+        if verdicts.deferred:  # the cheapest that pass the batch's checks, for the full path
+            self.found.deferred = verdicts.deferred
+            self.queue = self.queue.joined(_front(batch, verdicts, ok)).by_volume(self.found.bound)
+            self.queued += int(np.count_nonzero(ok))
         self.all_best = self.all_best.joined(_front(batch, verdicts, np.ones(ok.shape, bool)).safest()).safest()
         worst = WARN if self.found.strict else FAIL
         for name, outcome in verdicts.outcome.items():
@@ -224,44 +257,85 @@ def _volume(batch: Batch, given: dict[str, float]) -> np.ndarray:
     return out
 
 
+def _confirmed(found: Search, queue: Front, confirm: Evaluate, on_grid: dict[str, int]) -> Front:
+    """The first of ``queue`` (cheapest first) that passes ``confirm`` (the full path), or an empty
+    front; the failing ones it judges tallied into ``found`` and into ``on_grid``."""
+    for i in range(len(queue.volume)):
+        if found.confirmations >= found.bound:
+            break
+        one = queue.take(slice(i, i + 1))
+        full = confirm({k: np.asarray(v) for k, v in one.values.items()})
+        found.confirmations += 1
+        if passing(full, found.strict)[0]:
+            return one
+        tally = failure_tally(full, found.strict)
+        found.deferred_failed += 1
+        _add_counts(found.deferred_failures, tally)
+        _add_counts(on_grid, tally)
+    return queue.take(slice(0, 0))
+
+
+def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], chunk: int, refine: int,
+            confirm: Evaluate | None) -> Front:
+    """The cheapest design after the refinement around ``around`` (module docstring)."""
+    grid, strict = found.grid, found.strict
+    batch, found.refined_steps = _refinement_batch(grid, around.design(0), refine)
+    before = around.volume[0]
+    cheaper = _volume(batch, given) < before
+    batch = {k: v[cheaper] for k, v in batch.items()}
+    queue = Front.empty(grid.keys)
+    for first in range(0, len(next(iter(batch.values()))), chunk):
+        part = {k: v[first:first + chunk] for k, v in batch.items()}
+        verdicts = walk.evaluate(part)
+        ok = passing(verdicts, strict)
+        walk.passed = walk.passed.joined(_front(part, verdicts, ok)).pareto()
+        queue = queue.joined(_front(part, verdicts, ok)).by_volume(found.bound)
+        found.refined_candidates += len(ok)
+    best = walk.passed.cheapest()
+    if found.deferred and confirm is not None:
+        best = _confirmed(found, queue, confirm, {})
+        best = best if len(best.volume) else around
+    found.improved_by_refinement = bool(best.volume[0] < before)
+    return best
+
+
 def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool = False, chunk: int = CHUNK,
-           refine: int = REFINE) -> Search:
+           refine: int = REFINE, confirm: Evaluate | None = None, bound: int = CONFIRM) -> Search:
     """Walk ``grid`` in chunks of ``chunk`` with ``evaluate`` (module docstring). ``given``: the
     scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is);
-    ``refine``: the refinement's factor on the grid step (0 or 1: no refinement)."""
+    ``refine``: the refinement's factor on the grid step (0 or 1: no refinement); ``confirm``: the
+    full path, which judges the checks ``evaluate`` defers, on at most ``bound`` candidates."""
     start = time.perf_counter()
-    found = Search(grid, strict)
+    found = Search(grid, strict, bound=bound)
     walk = _Walk(found, evaluate)
     for first in range(0, grid.size, chunk):
         walk.add(grid.chunk(first, first + chunk))
-    if len(walk.passed.volume) and refine > 1 and any(a.step for a in grid.axes):
-        batch, found.refined_steps = _refinement_batch(grid, walk.passed.cheapest().design(0), refine)
-        before = walk.passed.cheapest().volume[0]
-        cheaper = _volume(batch, given) < before
-        batch = {k: v[cheaper] for k, v in batch.items()}
-        for first in range(0, len(next(iter(batch.values()))), chunk):
-            part = {k: v[first:first + chunk] for k, v in batch.items()}
-            verdicts = evaluate(part)
-            ok = passing(verdicts, strict)
-            walk.passed = walk.passed.joined(_front(part, verdicts, ok)).pareto()
-            found.refined_candidates += len(ok)
-        found.improved_by_refinement = bool(walk.passed.cheapest().volume[0] < before)
+    best, on_grid = walk.passed.cheapest(), {}
+    if found.deferred and confirm is not None:
+        best = _confirmed(found, walk.queue, confirm, on_grid)
+        if not len(best.volume):
+            found.unconfirmed = walk.queued - found.confirmations
+    if len(best.volume) and refine > 1 and any(a.step for a in grid.axes):
+        best = _refine(found, walk, best, given, chunk, refine, confirm)
+    found.best = best
     found.pareto = walk.passed
-    found.best = walk.passed.cheapest()
-    found.closest = walk.all_best
+    if found.deferred and confirm is not None and len(best.volume):  # the confirmed design, the batch's front above it
+        found.pareto = best.joined(walk.passed.take(walk.passed.volume > best.volume[0]))
+    unjudged = found.deferred and not found.found and len(walk.queue.volume)
+    found.closest = walk.queue.take(slice(0, 1)) if unjudged else walk.all_best
     found.sample = tuple(np.concatenate(parts) for parts in zip(*walk.samples))
-    if found.found:
-        _tally_cheaper(found, evaluate, given, chunk)
+    if found.found or unjudged:
+        _tally_cheaper(found, evaluate, given, chunk, best.volume[0] if found.found else np.inf)
+        _add_counts(found.cheaper_failures, on_grid)
     else:
         found.cheaper_failures, found.cheaper_count = walk.failures, found.evaluated
     found.seconds = time.perf_counter() - start
     return found
 
 
-def _tally_cheaper(found: Search, evaluate: Evaluate, given: dict[str, float], chunk: int) -> None:
-    """``cheaper_failures``: the governing failure of each grid candidate cheaper than the best,
-    the cheaper ones judged again, the others skipped."""
-    limit = found.best.volume[0]
+def _tally_cheaper(found: Search, evaluate: Evaluate, given: dict[str, float], chunk: int, limit: float) -> None:
+    """``cheaper_failures``: the governing failure of each grid candidate cheaper than ``limit``
+    [m³] that fails the batch's checks (those cheaper judged again, the others skipped)."""
     grid = found.grid
     for first in range(0, grid.size, chunk):
         batch = grid.chunk(first, first + chunk)

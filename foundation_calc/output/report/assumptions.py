@@ -8,13 +8,13 @@ from foundation_calc.output.report.model import Section, table
 SOIL_MODELS = {
     "coefficients": "Soil: linear springs at the base from Barkan's coefficients c_z, c_x, c_φ (Winkler"
                     " model) [Ba]; damping only as the ratios given in soil.damping.",
-    "lysmer": "Soil: uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs"
+    "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs"
               " [RHW]: frequency-independent springs and radiation damping fitted for a0 < 1.5.",
-    "gazetas": "Soil: uniform elastic half-space, Gazetas' static stiffnesses with embedment factors [Ga]"
+    "gazetas": "Uniform elastic half-space, Gazetas' static stiffnesses with embedment factors [Ga]"
                " and frequency-independent damping ratios.",
-    "pais_kausel": "Soil: uniform elastic half-space, Pais & Kausel's static stiffnesses with embedment"
+    "pais_kausel": "Uniform elastic half-space, Pais & Kausel's static stiffnesses with embedment"
                    " factors [PK], Gazetas' dashpots and Pais & Kausel's frequency modifiers.",
-    "sp26": "Soil: the code's coefficients from the static deformation modulus [SP26]; damping ratios of"
+    "sp26": "The code's coefficients from the static deformation modulus [SP26]; damping ratios of"
             " the code.",
 }
 
@@ -57,10 +57,73 @@ def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
     return rows
 
 
+#: soil.method of a block -> how its six springs and dashpots at O are found.
+BLOCK_SOIL_MODELS = {
+    "springs": "The six springs (and dashpots) at O as the scene gives them; their source is the"
+               " scene's. Frequency-independent.",
+    "coefficients": "Winkler springs from Barkan's coefficients [Ba]: K_x = K_y = c_x A, K_z = c_z A,"
+                    " K_θx = c_φ I_x, K_θy = c_φ I_y, K_θz = c_ψ J_z (c_ψ default 1.5 c_x); dashpots 2 ξ √(K m)"
+                    " of each uncoupled motion from the given damping ratios. Frequency-independent.",
+    "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs in"
+              " each vertical plane (equivalent radius per motion) and Reissner-Sagoci's in torsion [RHW]:"
+              " radiation plus material damping. Frequency-independent, fitted for a0 < 1.5.",
+    "gazetas": "Uniform elastic half-space under a rigid surface base, Gazetas' stiffnesses and"
+               " radiation dashpots of the rectangle [Ga]. Frequency-dependent: every order n is solved"
+               " with K(nω), C(nω) and every mode at its own frequency; torsion static, with material"
+               " damping only.",
+    "pais_kausel": "Uniform elastic half-space under a rigid surface base, Pais & Kausel's"
+                   " stiffnesses with their frequency modifiers [PK] and Gazetas' dashpots. Frequency-"
+                   "dependent: every order n is solved with K(nω), C(nω) and every mode at its own"
+                   " frequency; torsion static, with material damping only.",
+    "sp26": "The code's coefficients C_z, C_x, C_φ from the deformation modulus and the soil class,"
+            " C_ψ = C_z and ξ_ψ = 0.3 ξ_z, damping ratios of the code [SP26]. Frequency-independent.",
+}
+
+
+def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
+    soil, limits = scene.soil, scene.limits
+    rows = [
+        ("model", "Rigid block with every machine rigidly attached: six degrees of freedom about O, the"
+                  " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
+        ("soil", BLOCK_SOIL_MODELS[soil.method_used]),
+        ("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
+                 " contact, no uplift; no embedment, side soil, layering or coupling through the soil with"
+                 " neighbouring foundations."),
+    ]
+    if soil.method_used == "springs" and soil.dashpot is None or soil.method_used == "coefficients" and not soil.damping:
+        rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
+                                " keeps the speeds away from them."))
+    rows.append(("loads", "Each machine's loads as given, harmonic orders n at nω (amplitude, phase, point);"
+                          " an unbalance from its balance grade, F = m_r G ω rotating normal to its axis; no"
+                          " interaction of the machines with the block's motion."))
+    if len(scene.machines) > 1:
+        rows.append(("machines", "Steady state of each machine solved alone; the peaks of the machines added"
+                                 " (an upper bound: their relative phase is not known) and the RMS values"
+                                 " combined as the root-sum-square of every harmonic."))
+    rows.append(("resonance", "Every order of every machine against each of the six modes (undamped"
+                              " frequencies); an order whose forcing share on a mode is under 1 % is not judged."))
+    from foundation_calc.checks.limits import limited_quantities
+    from foundation_calc.output.report.verdict import quantity_name
+
+    judged = [quantity_name(q) for q in limited_quantities(limits)]
+    rows.append(("amplitudes", "Judged at G and the scene's points, along x, y and z: "
+                               + (", ".join(judged) if judged else "no limit in [limits]")
+                               + (f"; zones of {limits.code} (RMS velocity and displacement)" if getattr(limits, "code", None) else "; no vibration code zone")
+                               + "."))
+    if "runup" not in checks:
+        rows.append(("start-up", "Start-up and run-down not checked (no [operation] run time with [limits]"
+                                 " transient_amplitude)."))
+    missing = [] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]
+    text = "; ".join([*missing, "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
+                                " grout and machines, transmission to neighbouring structures and people."])
+    rows.append(("not checked", text[0].upper() + text[1:]))
+    return rows
+
+
 def assumptions_section(scene, runs) -> Section:
     """The scene's assumptions and what the sheet does not check."""
     checks = {run.check for run in runs}
-    maker = {"crank_foundation": _crank, "platform": _platform}.get(scene.kind)
+    maker = {"crank_foundation": _crank, "platform": _platform, "block_foundation": _block}.get(scene.kind)
     rows = maker(scene, checks) if maker else [
         ("model", f"Scene kind {scene.kind!r}: the checks {', '.join(sorted(checks))} as fcalc check runs them.")
     ]

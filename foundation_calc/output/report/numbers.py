@@ -17,6 +17,7 @@ ratios print at one precision everywhere.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 #: Significant figures per kind of quantity shown on a sheet.
 DIGITS = {
@@ -61,11 +62,51 @@ def column(values, digits: int, scale: float | None = None) -> list[str]:
     >>> column([0.113, 0.0255, 5e-20], 3, scale=0.1)
     ['0.113', '0.0255', '0']
     """
-    shown = [figure(v, digits, scale) for v in values]
+    return _one_notation(values, [digits] * len(values), [scale] * len(values))
+
+
+def _one_notation(values, digits, scales) -> list[str]:
+    """Each value at its own figures and round-off scale, all plain or all ``a.bc·10^n``."""
+    shown = [figure(v, d, s) for v, d, s in zip(values, digits, scales)]
     kept = [v for v, text in zip(values, shown) if v is not None and text != "0"]
     if all(PLAIN_RANGE[0] <= abs(v) < PLAIN_RANGE[1] for v in kept):
         return shown
-    return ["0" if text == "0" else "-" if v is None else _scientific(v, digits) for v, text in zip(values, shown)]
+    return ["0" if text == "0" else "-" if v is None else _scientific(v, d) for v, d, text in zip(values, digits, shown)]
+
+
+@dataclass(frozen=True)
+class Measure:
+    """A table cell holding one number: ``prefix``, the value at ``digits`` figures, `` unit``,
+    ``suffix``. Its notation is chosen with the other cells of its column that show the same
+    quantity (same unit and suffix): see :func:`cells`."""
+
+    value: float | None
+    digits: int
+    unit: str = ""
+    scale: float | None = None
+    prefix: str = ""
+    suffix: str = ""
+
+
+def cells(column_cells) -> list[str]:
+    """The texts of one table column whose cells are strings or :class:`Measure` s: the measures
+    of one quantity (unit and suffix) all in plain or all in ``a.bc·10^n`` notation, so a column
+    never shows ``0.00135 mm`` above ``6.70·10⁻⁴ mm``.
+
+    >>> cells([Measure(0.00135, 3, "mm"), Measure(6.7e-4, 3, "mm"), "margin 68.0 %", Measure(8.21, 3)])
+    ['1.35·10⁻³ mm', '6.70·10⁻⁴ mm', 'margin 68.0 %', '8.21']
+    """
+    texts = [c if isinstance(c, str) else None for c in column_cells]
+    groups: dict[tuple[str, str], list[int]] = {}
+    for i, c in enumerate(column_cells):
+        if isinstance(c, Measure):
+            groups.setdefault((c.unit, c.suffix), []).append(i)
+    for at in groups.values():
+        ms = [column_cells[i] for i in at]
+        numbers = _one_notation([m.value for m in ms], [m.digits for m in ms], [m.scale for m in ms])
+        for i, m, number in zip(at, ms, numbers):
+            texts[i] = f"{m.prefix}{number}{' ' + m.unit if m.unit and m.value is not None else ''}{m.suffix}"
+    return texts
 
 
 def _scientific(value: float, digits: int) -> str:
@@ -109,3 +150,11 @@ def quantity(units, kind: str, si_value: float | None, scale: float | None = Non
     shown = units.convert(kind, si_value)
     shown_scale = None if scale is None else units.convert(kind, scale)
     return f"{figure(shown, DIGITS[kind], shown_scale)} {units.label(kind)}"
+
+
+def measure(units, kind: str, si_value: float | None, scale: float | None = None, prefix: str = "") -> Measure | str:
+    """:func:`quantity` as a :class:`Measure`, its notation left to its column (``-`` for None)."""
+    if si_value is None:
+        return "-"
+    shown_scale = None if scale is None else units.convert(kind, scale)
+    return Measure(units.convert(kind, si_value), DIGITS[kind], units.label(kind), shown_scale, prefix)

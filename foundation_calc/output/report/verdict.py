@@ -12,7 +12,7 @@ from collections.abc import Callable
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.model import Paragraph, Section, table
-from foundation_calc.output.report.numbers import figure, percent, quantity, ratio
+from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio
 
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
 EXIT = {"pass": 0, "warn": 0, "fail": 1}
@@ -40,7 +40,7 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             f"{r['condition']} ({r['mode_name']}, critical {critical})",
             "margin " + percent(r["margin"]),
             ("≥ " + percent(r["required"]) if r["required"] > 0 else "no band") if decides
-            else f"forcing share {figure(r['forcing_share'], 2, 1.0)} < 1 %",
+            else Measure(r["forcing_share"], 2, scale=1.0, prefix="forcing share ", suffix=" < 1 %"),
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
             f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
@@ -59,15 +59,24 @@ def _range_rows(doc: dict):
         )
 
 
+def quantity_name(quantity: str) -> str:
+    """A limited quantity as a reader names it, not by its key.
+
+    >>> quantity_name("velocity_rms"), quantity_name("displacement")
+    ('RMS velocity', 'peak displacement')
+    """
+    return f"RMS {quantity.removesuffix('_rms')}" if quantity.endswith("_rms") else f"peak {quantity}"
+
+
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
     from foundation_calc.checks.limits import display_quantity
 
     for row in doc["limits"]:
         kind = display_quantity(row["quantity"])
         yield (
-            f"{row['point']} {row['direction']} {row['quantity']}",
-            quantity(units, kind, row["value"], row["limit"]),
-            "≤ " + quantity(units, kind, row["limit"]),
+            f"{row['point']}, {row['direction']}: {quantity_name(row['quantity'])}",
+            measure(units, kind, row["value"], row["limit"]),
+            measure(units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
             row["source"],
@@ -78,8 +87,8 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
         kind = "velocity" if row["quantity"] == "velocity" else "amplitude"
         yield (
             f"{row['point']} RMS {row['quantity']} ({row['governing']}), zone {row['zone']}",
-            quantity(code_units, kind, row["value"], row["limit"]),
-            "≤ " + quantity(code_units, kind, row["limit"]),
+            measure(code_units, kind, row["value"], row["limit"]),
+            measure(code_units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
             f"[ISO] {code['clause']}, group {code['machine_group']}, {code['foundation']}",
@@ -95,8 +104,8 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
     for row in doc["limits"]:
         yield (
             f"{row['point']}, largest displacement during {run_title(row['run'])}",
-            quantity(units, "amplitude", row["value"]),
-            "-" if row["limit"] is None else "≤ " + quantity(units, "amplitude", row["limit"]),
+            measure(units, "amplitude", row["value"]),
+            "-" if row["limit"] is None else measure(units, "amplitude", row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
             f"{LIMIT_SOURCE} transient_amplitude" if row["limit"] is not None else "not limited",
@@ -104,8 +113,8 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
     for t in (doc.get("motor") or {}).get("sommerfeld", ()):
         yield (
             f"motor torque at mode {t['mode']} ({t['harmonic']:g}ω, {quantity(units, 'speed', t['speed'])})",
-            f"{figure(t['torque_needed'], 4)} N m needed",
-            f"≤ {figure(t['torque_available'], 4)} N m",
+            Measure(t["torque_needed"], 4, "N m", suffix=" needed"),
+            Measure(t["torque_available"], 4, "N m", prefix="≤ "),
             ratio(t["ratio"]),
             t["verdict"],
             "scene [drive]",
@@ -130,19 +139,19 @@ def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
     rocking = limits.rocking_percent
     return {
         "exciter height": (
-            (f"c/ζ = {figure(d['c'] / zeta, 3)}", f"≤ {figure(height, 3)}", _ratio(d["c"] / zeta, height), f"{LIMIT_SOURCE} exciter_height_ratio")
+            (Measure(d["c"] / zeta, 3, prefix="c/ζ = "), Measure(height, 3, prefix="≤ "), _ratio(d["c"] / zeta, height), f"{LIMIT_SOURCE} exciter_height_ratio")
             if d["c"] >= 0 and zeta > 0
-            else (f"c = {figure(d['c'], 4)} m", "c ≥ 0 (above the support plane)", "-", "design rule")
+            else (Measure(d["c"], 4, "m", prefix="c = "), "c ≥ 0 (above the support plane)", "-", "design rule")
         ),
         "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), f"{LIMIT_SOURCE} detuning"),
         "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), f"{LIMIT_SOURCE} detuning"),
         "rocking": (
-            f"{figure(v['rocking_percent'], 3, 100)} % of u", f"≤ {figure(rocking, 3)} % of u",
+            Measure(v["rocking_percent"], 3, "% of u", 100), Measure(rocking, 3, "% of u", prefix="≤ "),
             _ratio(v["rocking_percent"], rocking), f"{LIMIT_SOURCE} rocking_percent",
         ),
         "tolerances": (
-            ("resonant: " + ", ".join(resonant)) if resonant else f"worst {figure(worst, 3, 100)} % of u",
-            f"no resonance, ≤ {figure(rocking, 3)} % of u",
+            ("resonant: " + ", ".join(resonant)) if resonant else Measure(worst, 3, "% of u", 100, prefix="worst "),
+            Measure(rocking, 3, "% of u", prefix="no resonance, ≤ "),
             "-" if resonant else _ratio(worst, rocking),
             f"{LIMIT_SOURCE} rocking_percent",
         ),
@@ -158,17 +167,17 @@ def _design_rows(doc: dict, scene, units: DisplayUnits):
 
 #: check name (as in the registry) -> rows (item, value, limit, ratio, verdict, source) of its document.
 def _office_rows(doc: dict, scene, units: DisplayUnits):
-    def shown(row, v):
+    def shown(row, v, prefix):
         if row["unit"] == "Pa":
-            return f"{figure(v / 1e3, 4)} kPa"
-        return percent(v) if row["check"].startswith("eccentricity") else figure(v, 3)
+            return Measure(v / 1e3, 4, "kPa", prefix=prefix)
+        return prefix + percent(v) if row["check"].startswith("eccentricity") else Measure(v, 3, prefix=prefix)
 
     for row in doc["office"]:
         above = row["check"] == "mass ratio"  # a ratio that must stay at or above its limit
         yield (
             row["text"],
-            shown(row, row["value"]),
-            ("≥ " if above else "≤ ") + shown(row, row["limit"]),
+            shown(row, row["value"], ""),
+            shown(row, row["limit"], "≥ " if above else "≤ "),
             ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
             row["verdict"],
             row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
@@ -227,6 +236,10 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
             found = [(_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
         rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
+    if rows:  # value and limit: one notation per quantity in each column
+        columns = list(zip(*rows))
+        columns[2], columns[3] = cells(columns[2]), cells(columns[3])
+        rows = list(zip(*columns))
     checks = table(
         "Every check (ratio = demand/limit; above 1 fails)",
         ("check", "item", "value", "limit", "ratio", "verdict", "limit's source"),
