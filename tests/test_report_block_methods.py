@@ -98,3 +98,19 @@ def test_a_frequency_dependent_block_soil_takes_each_order_and_mode_at_its_frequ
         for j, d in enumerate(("x", "y", "z")):
             judged = doc["points"][name]["velocity_rms"][d]
             assert abs(rms[i, j] - judged) <= TOLERANCE * judged, (name, d)
+
+
+def test_each_matrix_column_is_in_one_notation():
+    """A column of one matrix holds one quantity: its entries are all plain or all a.bc·10ⁿ (the
+    sheet's number format), not "213624" above "1.052·10⁶" (M of block_two_machines, column θ_y)."""
+    from foundation_calc.output.report.block_methods import matrix_table
+
+    scene = load_scene(CONFIGS / "block_two_machines.toml")
+    model = scene.model()
+    names = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
+    units = {k: ("-",) * 6 for k in "MKC"}
+    rows = matrix_table("t", (("M", model.M), ("K", model.K), ("C", model.C)), names, units).rows
+    for block in range(3):
+        for j in range(1, 7):
+            entries = [row[j] for row in rows[6 * block: 6 * block + 6] if row[j] != "0"]
+            assert len({"·10" in e for e in entries}) <= 1, (block, j, entries)

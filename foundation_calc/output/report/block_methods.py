@@ -112,12 +112,14 @@ def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
 
 def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
     """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
-    entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0."""
+    entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0,
+    and each matrix's column is in one notation (:func:`~.numbers.column`)."""
     rows = []
     for key, matrix in matrices:
         scale = np.abs(matrix).max() or None
+        shown = [column([float(v) for v in matrix[:, j]], 4, scale) for j in range(len(coordinates))]
         for i, coordinate in enumerate(coordinates):
-            rows.append((f"{key}, row {coordinate}", *(figure(float(v), 4, scale) for v in matrix[i]), units[key][i]))
+            rows.append((f"{key}, row {coordinate}", *(entries[i] for entries in shown), units[key][i]))
     return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
 
 
