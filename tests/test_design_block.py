@@ -156,6 +156,22 @@ def test_a_judged_runup_is_reported_as_not_evaluated():
     assert "runup" not in evaluate(parse_scene(_document(TWO), "two"), {"block.length": np.array([6.0])}).outcome
 
 
+def test_a_batch_in_pieces_keeps_its_deferred_checks(monkeypatch):
+    """A batch larger than a piece is judged piece by piece on threads and put together again;
+    the run-up it leaves to the full path must stay deferred, or the search would take a design
+    that fails its run-up for a disagreement."""
+    from foundation_calc.checks.design import block
+
+    document = _document(TWO, transient_amplitude=1.0e-3) | {"operation": {"run_up_time": 5.0}}
+    scene = parse_scene(document, "runup")
+    whole = evaluate(scene, {"block.length": np.linspace(6.0, 8.0, 5)})
+    monkeypatch.setattr(block, "PIECE", 2)
+    pieces = evaluate(scene, {"block.length": np.linspace(6.0, 8.0, 5)})
+    assert whole.deferred == pieces.deferred == ("runup",)
+    for check in whole.outcome:
+        assert np.array_equal(whole.utilisation[check], pieces.utilisation[check], equal_nan=True)
+
+
 def test_inputs_warn_where_a_point_is_far_for_a_small_base():
     document = _document(TWO)
     document["points"][0]["at"] = [1.5, 0.3, 45.0]  # far above the block's top: it rises with the top

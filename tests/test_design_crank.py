@@ -200,3 +200,19 @@ def test_the_code_zone_by_the_more_restrictive_of_velocity_and_displacement():
         assert verdicts.utilisation["amplitudes"][i] == pytest.approx(_utilisation(run), rel=1e-9), i
         by_displacement += any(row.judged.quantity == "displacement" for row in run.report.code_rows)
     assert by_displacement > 0  # the sample reaches the displacement's zones
+
+
+def test_chunks_on_threads_give_the_verdicts_of_one_chunk(monkeypatch):
+    """A batch of several chunks is judged on threads: the verdicts equal those of one chunk
+    (utilisations to 1e-12: arrays of other lengths may round differently in their products)."""
+    from foundation_calc.checks.design import crank
+
+    scene = parse_scene(_variant("coefficients"))
+    batch = sample_batch(scene, 40, seed=5)
+    whole = evaluate(scene, batch)
+    monkeypatch.setattr(crank, "CHUNK", 7)
+    chunked = evaluate(scene, batch)
+    for check in whole.outcome:
+        assert np.array_equal(whole.outcome[check], chunked.outcome[check])
+        np.testing.assert_allclose(chunked.utilisation[check], whole.utilisation[check], rtol=1e-12)
+        assert np.array_equal(whole.governing[check], chunked.governing[check])

@@ -253,7 +253,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         outcome={c: np.concatenate([v.outcome[c] for v in found]) for c in found[0].outcome},
         utilisation={c: np.concatenate([v.utilisation[c] for v in found]) for c in found[0].utilisation},
         governing={c: np.concatenate([v.governing[c] for v in found]) for c in found[0].governing},
-        reasons=found[0].reasons,  # the texts depend on the scene alone
+        reasons=found[0].reasons, deferred=found[0].deferred,  # they depend on the scene alone
     )
 
 

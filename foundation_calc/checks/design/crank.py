@@ -38,6 +38,10 @@ VARIED = ("length", "width", "height")
 #: Candidates judged in one array operation; bounds the working memory (about 40 kB a candidate).
 CHUNK = 4096
 
+#: Threads that judge the chunks of a batch (numpy's array arithmetic and linear algebra run
+#: outside Python's lock, so two cores share the work).
+WORKERS = 2
+
 #: The reason of a check the batch does not evaluate (the search re-checks by the full path).
 NOT_EVALUATED = "not evaluated in the batch (a time integration): the full check re-judges the chosen designs"
 
@@ -465,8 +469,17 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     mech = MechanismOperator.of(scene.design())
     harmonics = mech.harmonics
     checks = checks_judged(scene)
-    parts = [_chunk(scene, L[i : i + CHUNK], B[i : i + CHUNK], H[i : i + CHUNK], mech, harmonics, checks)
-             for i in range(0, len(L), CHUNK)]
+    def chunk(i):
+        return _chunk(scene, L[i : i + CHUNK], B[i : i + CHUNK], H[i : i + CHUNK], mech, harmonics, checks)
+
+    starts = range(0, len(L), CHUNK)
+    if len(starts) == 1:
+        parts = [chunk(0)]
+    else:
+        from concurrent.futures import ThreadPoolExecutor
+
+        with ThreadPoolExecutor(WORKERS) as pool:
+            parts = list(pool.map(chunk, starts))
     order = [c for c in checks if c in parts[0].outcome]
     volume = L * B * H
     return CandidateVerdicts(
