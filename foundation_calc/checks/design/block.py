@@ -42,7 +42,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -50,10 +50,6 @@ VARIABLE_KEYS = ("block.length", "block.width", "block.height")
 #: Candidates evaluated together: stacks of this many 6×6 matrices stay in the processor's cache
 #: (10⁵ candidates take about 40 % longer in one piece than in pieces of this size).
 PIECE = 16_384
-
-#: Threads that evaluate the pieces of a batch (numpy's linear algebra and array arithmetic run
-#: outside Python's lock, so two cores share the work).
-WORKERS = 2
 
 #: Checks the batch does not evaluate, with why: outcome PASS and utilisation NaN for every
 #: candidate, so the search must re-check its front-runners by the full path (``fcalc check``).
@@ -241,20 +237,8 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
     """
     n = len(next(iter(batch.values()))) if batch else 1
-    if n <= PIECE:
-        return _evaluate(scene, batch)
-    from concurrent.futures import ThreadPoolExecutor
-
-    pieces = [{key: values[start:start + PIECE] for key, values in batch.items()} for start in range(0, n, PIECE)]
-    with ThreadPoolExecutor(WORKERS) as pool:
-        found = list(pool.map(lambda piece: _evaluate(scene, piece), pieces))
-    return CandidateVerdicts(
-        volume=np.concatenate([v.volume for v in found]), mass=np.concatenate([v.mass for v in found]),
-        outcome={c: np.concatenate([v.outcome[c] for v in found]) for c in found[0].outcome},
-        utilisation={c: np.concatenate([v.utilisation[c] for v in found]) for c in found[0].utilisation},
-        governing={c: np.concatenate([v.governing[c] for v in found]) for c in found[0].governing},
-        reasons=found[0].reasons, deferred=found[0].deferred,  # they depend on the scene alone
-    )
+    return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
+                     n, PIECE)
 
 
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:

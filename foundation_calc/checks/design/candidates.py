@@ -16,7 +16,7 @@ condition; an office rule: value / allowed value). The worst margin of a candida
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,6 +29,9 @@ EVALUATORS: dict[str, str] = {
     "block_foundation": "foundation_calc.checks.design.block",
     "crank_foundation": "foundation_calc.checks.design.crank",
 }
+
+#: Threads that judge the pieces of a batch (:func:`in_pieces`).
+WORKERS = 2
 
 #: A batch: varied scene key -> (N,) values [SI].
 Batch = Mapping[str, np.ndarray]
@@ -68,3 +71,34 @@ class CandidateVerdicts:
     def worst_margin(self) -> np.ndarray:
         """(N,) 1 - the largest utilisation over the checks [-] (negative: the candidate fails)."""
         return 1.0 - np.nanmax(np.stack(list(self.utilisation.values())), axis=0)
+
+
+def in_pieces(
+    judge: Callable[[int, int], CandidateVerdicts], count: int, size: int, workers: int = WORKERS
+) -> CandidateVerdicts:
+    """``judge(start, stop)`` over the consecutive pieces of at most ``size`` of a batch of ``count``
+    candidates, put together in order. More than one piece runs on ``workers`` threads: numpy's
+    array arithmetic and linear algebra run outside Python's lock, so the cores share the work."""
+    starts = range(0, count, size)
+    if len(starts) <= 1:
+        return judge(0, count)
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(workers) as pool:
+        parts = list(pool.map(lambda start: judge(start, start + size), starts))
+    return concatenated(parts)
+
+
+def concatenated(parts: Sequence[CandidateVerdicts]) -> CandidateVerdicts:
+    """The verdicts of consecutive pieces of one batch as one (their reasons and deferred checks
+    depend on the scene alone: the first piece's)."""
+    first = parts[0]
+    return CandidateVerdicts(
+        volume=np.concatenate([p.volume for p in parts]),
+        mass=np.concatenate([p.mass for p in parts]),
+        outcome={c: np.concatenate([p.outcome[c] for p in parts]) for c in first.outcome},
+        utilisation={c: np.concatenate([p.utilisation[c] for p in parts]) for c in first.utilisation},
+        governing={c: np.concatenate([p.governing[c] for p in parts]) for c in first.governing},
+        reasons=first.reasons,
+        deferred=first.deferred,
+    )

@@ -30,17 +30,13 @@ from dataclasses import replace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces
 
 #: The scene keys a candidate may vary, by their short names.
 VARIED = ("length", "width", "height")
 
 #: Candidates judged in one array operation; bounds the working memory (about 40 kB a candidate).
 CHUNK = 4096
-
-#: Threads that judge the chunks of a batch (numpy's array arithmetic and linear algebra run
-#: outside Python's lock, so two cores share the work).
-WORKERS = 2
 
 #: The reason of a check the batch does not evaluate (the search re-checks by the full path).
 NOT_EVALUATED = "not evaluated in the batch (a time integration): the full check re-judges the chosen designs"
@@ -469,28 +465,19 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     mech = MechanismOperator.of(scene.design())
     harmonics = mech.harmonics
     checks = checks_judged(scene)
-    def chunk(i):
-        return _chunk(scene, L[i : i + CHUNK], B[i : i + CHUNK], H[i : i + CHUNK], mech, harmonics, checks)
+    def judge(start, stop):
+        parts = L[start:stop], B[start:stop], H[start:stop]
+        found = _chunk(scene, *parts, mech, harmonics, checks)
+        order = [c for c in checks if c in found.outcome]
+        volume = parts[0] * parts[1] * parts[2]
+        return CandidateVerdicts(
+            volume=volume, mass=scene.foundation.block.density * volume,
+            outcome={c: found.outcome[c] for c in order}, utilisation={c: found.utilisation[c] for c in order},
+            governing={c: found.governing[c] for c in order}, reasons={c: found.reasons[c] for c in order},
+            deferred=("runup",) if "runup" in order else (),
+        )
 
-    starts = range(0, len(L), CHUNK)
-    if len(starts) == 1:
-        parts = [chunk(0)]
-    else:
-        from concurrent.futures import ThreadPoolExecutor
-
-        with ThreadPoolExecutor(WORKERS) as pool:
-            parts = list(pool.map(chunk, starts))
-    order = [c for c in checks if c in parts[0].outcome]
-    volume = L * B * H
-    return CandidateVerdicts(
-        volume=volume,
-        mass=scene.foundation.block.density * volume,
-        outcome={c: np.concatenate([p.outcome[c] for p in parts]) for c in order},
-        utilisation={c: np.concatenate([p.utilisation[c] for p in parts]) for c in order},
-        governing={c: np.concatenate([p.governing[c] for p in parts]) for c in order},
-        reasons={c: parts[0].reasons[c] for c in order},
-        deferred=("runup",) if "runup" in order else (),
-    )
+    return in_pieces(judge, len(L), CHUNK)
 
 
 __all__ = ["CHUNK", "NOT_EVALUATED", "SAMPLE_SPREAD", "VARIED", "CandidateDesigns", "block_dimensions", "checks_judged",
