@@ -249,3 +249,25 @@ def test_absolute_and_relative_paths_together(runner, monkeypatch, tmp_path):
     result = runner.invoke(app, ["check", str(CONFIGS / "frame_saw.toml"), "rel/b.toml"])
     assert result.exit_code == 0, result.output
     assert "frame_saw.toml" in result.stdout and "b.toml" in result.stdout
+
+
+def test_junit_carries_each_checks_own_time(runner, monkeypatch, tmp_path):
+    """A check that takes at least 50 ms is reported with at least that time; a suite's time is
+    the sum of its test cases', the run's the sum of its suites' (JUnit's ``time``, seconds)."""
+    import time
+
+    def slow_resonance(scene):
+        time.sleep(0.05)
+        return registry.crank_resonance(scene)
+
+    monkeypatch.setitem(registry.CHECKS, "crank_foundation", {"resonance": slow_resonance})
+    report = tmp_path / "junit.xml"
+    _invoke(runner, CONFIGS / "crank_press.toml", CONFIGS / "frame_saw.toml", "--junit", report)
+    root = ET.parse(report).getroot()
+    suites = root.findall("testsuite")
+    assert len(suites) == 2
+    for suite in suites:
+        times = [float(case.get("time")) for case in suite.iter("testcase")]
+        assert times and min(times) >= 0.05
+        assert float(suite.get("time")) == pytest.approx(sum(times), abs=1e-5)
+    assert float(root.get("time")) == pytest.approx(sum(float(s.get("time")) for s in suites), abs=1e-5)

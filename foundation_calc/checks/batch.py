@@ -9,6 +9,7 @@ the run is the worst of all: 4 internal > 3 invalid > 1 fail (or warn with ``str
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -29,6 +30,8 @@ class CheckRun:
     ``verdict`` is ``pass``/``warn``/``fail`` from the finding, ``invalid`` for a scene that
     cannot be loaded or designed, ``internal`` for a bug. ``reason`` is in the parts of
     :data:`~foundation_calc.checks.registry.Reason`; ``problems`` are ``(field, message)``.
+    ``seconds`` is the wall-clock time the check took [s] (JUnit's ``time``); it is no part of
+    the result, so two runs of one check compare equal.
     """
 
     check: str
@@ -38,6 +41,7 @@ class CheckRun:
     report: Any = None
     problems: tuple[tuple[str, str], ...] = ()
     details: tuple[str, ...] = ()
+    seconds: float = field(default=0.0, compare=False)
 
     def exit_code(self, strict: bool) -> ExitCode:
         if strict and self.verdict == "warn":
@@ -136,6 +140,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     source = str(path)
     if skip_non_scenes and _not_regular(path):
         return SceneRun(source, "", "", (), skipped=True, skip_note=f"{_not_regular(path)}, not a regular file: not opened")
+    start = time.perf_counter()
     try:
         document = read_toml(path)
         if skip_non_scenes and not is_scene(document):
@@ -144,7 +149,7 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
     except Exception as exc:  # noqa: BLE001 - reported per scene, see the module docstring
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise
-        return SceneRun(source, "", "", (_error_run("load", exc),))
+        return SceneRun(source, "", "", (replace(_error_run("load", exc), seconds=time.perf_counter() - start),))
     return SceneRun(source, scene.kind, scene.name, run_checks(scene), scene, warnings=tuple(scene.plausibility_warnings()))
 
 
@@ -157,6 +162,7 @@ def run_checks(scene) -> tuple[CheckRun, ...]:
     the same rows."""
     runs = []
     for name, check in CHECKS[scene.kind].items():
+        start = time.perf_counter()
         try:
             finding = check(scene)
             if finding is None:  # the scene gives nothing this check judges
@@ -165,10 +171,11 @@ def run_checks(scene) -> tuple[CheckRun, ...]:
         except Exception as exc:  # noqa: BLE001 - one check's error must not stop the others
             if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
                 raise
-            runs.append(_error_run(name, exc))
+            runs.append(replace(_error_run(name, exc), seconds=time.perf_counter() - start))
             continue
         f = finding
-        runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details))
+        runs.append(CheckRun(name, f.outcome.value, f.reason, f.values, f.report, details=f.details,
+                             seconds=time.perf_counter() - start))
     return tuple(runs)
 
 

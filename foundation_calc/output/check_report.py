@@ -285,7 +285,7 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False, interrupted: str = "
             case = ET.SubElement(
                 suite, "testcase", name=run.check, classname=_classname(scene.source), file=scene.source
             )
-            case.set("time", "0")
+            case.set("time", f"{run.seconds:.6f}")
             reason = _reason(run, _SI)
             text = "\n".join((reason, *run.details))
             if verdict == "fail":
@@ -299,9 +299,12 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False, interrupted: str = "
             tally["tests"] += 1
         for key in ("tests", "failures", "errors"):
             suite.set(key, str(tally[key]))
+        suite.set("time", f"{sum(run.seconds for run in scene.runs):.6f}")
+        totals["time"] += sum(run.seconds for run in scene.runs)
         totals.update(tally)
     for key in ("tests", "failures", "errors"):
         root.set(key, str(totals[key]))
+    root.set("time", f"{totals['time']:.6f}")
     ET.indent(root)
     for element in root.iter():
         element.text = element.text and _xml_safe(element.text)
