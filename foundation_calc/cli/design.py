@@ -118,8 +118,9 @@ def design(
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
     fail. With --margin M every utilisation must be at most 1 - M; the output says when the answer
-    sits within 1 % of its bound (on a limit), and which check holds it there. A check the evaluator defers (a run-up, integrated in time) is judged by fcalc check's
-    path on the candidates that pass the others, cheapest first, until one passes (at most 20).
+    sits within 1 % of its bound (on a limit), and which check holds it there. A check the
+    evaluator defers (a run-up, integrated in time) is judged by fcalc check's path on the
+    candidates that pass the others, cheapest first, until one passes (at most 20).
     The shown designs are checked again by fcalc check's own path; a disagreement on a check the
     search evaluated is reported as an internal error (exit 4). Machines and points on the block's top rise with it,
     those on an end face follow the face (README, "Sizing"). Exit 0 when a design passes, 1 when
