@@ -24,6 +24,11 @@ PointsOpt = Annotated[Optional[int], typer.Option(
     "--points", metavar="N", show_default=False, help="Grid points of every range, instead of --step.",
 )]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="A candidate that warns (e.g. the mass ratio) does not pass.")]
+MarginOpt = Annotated[Optional[float], typer.Option(
+    "--margin", metavar="M", show_default=False,
+    help="Ask a reserve: a candidate passes only when every utilisation is at most 1 - M (0 <= M < 1),"
+    " a warning's too.",
+)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the tables.")]
 PlotOpt = Annotated[Optional[Path], typer.Option(
     "--plot", metavar="FILE", show_default=False,
@@ -31,7 +36,8 @@ PlotOpt = Annotated[Optional[Path], typer.Option(
 )]
 WriteOpt = Annotated[Optional[Path], typer.Option(
     "--write", metavar="BEST.toml", show_default=False,
-    help="Write the cheapest passing design as a scene file: the scene with the varied keys replaced.",
+    help="Write the cheapest passing design as a scene file: the scene's own text with the varied keys and the"
+    " positions that moved changed, its comments and layout kept.",
 )]
 
 
@@ -72,9 +78,12 @@ def _evaluator(kind: str, scene, document, source: str, given: dict[str, float])
     return evaluate, name, maximum, 2
 
 
-def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None) -> None:
+def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None, margin: float | None) -> None:
     from foundation_calc.cli.sweep import plot_path, writable_path
 
+    if margin is not None and not 0.0 <= margin < 1.0:
+        raise typer.BadParameter(f"the reserve must be 0 <= M < 1 (a fraction of every limit; got {margin:g})",
+                                 param_hint="'--margin'")
     if step is not None and points is not None:
         raise typer.BadParameter("give --step or --points, not both", param_hint="'--step' / '--points'")
     if step is not None and not step > 0:
@@ -94,6 +103,7 @@ def design(
     step: StepOpt = None,
     points: PointsOpt = None,
     strict: StrictOpt = False,
+    margin: MarginOpt = None,
     json: JsonOpt = False,
     plot: PlotOpt = None,
     write: WriteOpt = None,
@@ -107,8 +117,10 @@ def design(
     candidate).
     Shows the cheapest passing design with its checks, the Pareto set of volume against worst
     margin (1 - the largest utilisation), and which check governs where the cheaper candidates
-    fail. A check the evaluator defers (a run-up, integrated in time) is judged by fcalc check's
-    path on the candidates that pass the others, cheapest first, until one passes (at most 20).
+    fail. With --margin M every utilisation must be at most 1 - M; the output says when the answer
+    sits within 1 % of its bound (on a limit), and which check holds it there. A check the
+    evaluator defers (a run-up, integrated in time) is judged by fcalc check's path on the
+    candidates that pass the others, cheapest first, until one passes (at most 20).
     The shown designs are checked again by fcalc check's own path; a disagreement on a check the
     search evaluated is reported as an internal error (exit 4). Machines and points on the block's top rise with it,
     those on an end face follow the face (README, "Sizing"). Exit 0 when a design passes, 1 when
@@ -118,7 +130,7 @@ def design(
     from foundation_calc.checks.design.grid import grid, parse_range
     from foundation_calc.scenes.loading import parse_scene, read_scene
 
-    _options(plot, write, step, points)
+    _options(plot, write, step, points, margin)
     loaded = parse_scene(read_scene(scene), str(scene), expect=("block_foundation", "crank_foundation"))
     document = read_scene(scene)
     try:
@@ -127,7 +139,7 @@ def design(
         searched_grid = grid(loaded.kind, [parse_range(text) for text in vary], step, points, maximum, evaluator)
     except VaryError as exc:
         raise typer.BadParameter(str(exc), param_hint="'--vary'") from None
-    sizing = _size(scene, loaded, document, searched_grid, (evaluate, evaluator, refine), given, strict)
+    sizing = _size(scene, loaded, document, searched_grid, (evaluate, evaluator, refine), given, (strict, margin))
     if write is not None and sizing.found.found:
         sizing = _write(scene, write, sizing)
     elif write is not None:
@@ -140,10 +152,11 @@ def design(
     raise typer.Exit(0 if sizing.found.found else 1)
 
 
-def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bool):
-    """Search with ``judge`` (evaluate, its name, refinement factor), the checks it defers
-    confirmed by fcalc check's path; then re-check the best and the shown Pareto designs (or the
-    closest one), and leave out the Pareto designs that fail a deferred check there."""
+def _size(scene: Path, loaded, document, searched_grid, judge, given, rule: tuple[bool, float | None]):
+    """Search with ``judge`` (evaluate, its name, refinement factor) by ``rule`` (strict, the
+    reserve), the checks it defers confirmed by fcalc check's path; then re-check the best and the
+    shown Pareto designs (or the closest one), and leave out the Pareto designs that fail a
+    deferred check there (or its reserve)."""
     import dataclasses
     import functools
 
@@ -151,12 +164,13 @@ def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bo
 
     from foundation_calc.checks.design import reference
     from foundation_calc.checks.design.recheck import recheck
-    from foundation_calc.checks.design.search import CHUNK, passing, search, thinned
+    from foundation_calc.checks.design.search import CHUNK, search, thinned
     from foundation_calc.output.design import PARETO_SHOWN, Sizing
 
     evaluate, evaluator, refine = judge
+    strict, margin = rule
     confirm = functools.partial(reference.evaluate, document, source=str(scene))
-    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm)
+    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm, margin=margin)
     if found.found:
         pareto = thinned(found.pareto, PARETO_SHOWN)
         designs = pareto if pareto.volume[0] == found.best.volume[0] else found.best.joined(pareto)
@@ -166,7 +180,7 @@ def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bo
     full, disagreements = recheck(document, batch, evaluate(batch), str(scene))
     failing = 0
     if found.found and found.deferred:  # the Pareto designs the full path confirms, the best first
-        keep = passing(full, strict)
+        keep = found.passes(full)
         keep[0] = True
         failing = int(np.count_nonzero(~keep))
         designs = designs.take(keep)
@@ -177,37 +191,51 @@ def _size(scene: Path, loaded, document, searched_grid, judge, given, strict: bo
                   pareto_failing=failing)
 
 
-def _tidy(value):
-    """``value`` (a document) with every float to 12 significant digits: 2.1, not 2.0999999999999996
-    (a moved position; the difference, 1e-16 m, changes no verdict)."""
-    if isinstance(value, float):
-        return float(f"{value:.12g}")
-    if isinstance(value, dict):
-        return {k: _tidy(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_tidy(v) for v in value]
-    return value
+#: What follows a key of the scene that the written design leaves out (a crank scene's mass
+#: properties and base given beside [foundation.block]: computed from the block).
+LEFT_OUT = "left out by fcalc design: computed from [foundation.block]"
 
 
 def _write(scene: Path, path: Path, sizing):
-    """Write the cheapest design: the user's scene file (without office defaults) with the varied
-    keys replaced (:func:`~foundation_calc.checks.design.apply.applied_document`)."""
+    """Write the cheapest design: the user's scene file (its own text, without office defaults)
+    with the values of :func:`~foundation_calc.checks.design.apply.applied_document` written into
+    it (:func:`~foundation_calc.output.scene_edit.edited_scene`), after checking that fcalc check's
+    path judges the edited scene as the re-check judged the design."""
     import dataclasses
 
-    import tomli_w
-
     from foundation_calc.checks.design.apply import applied_document
+    from foundation_calc.checks.design.grid import DECIMALS
     from foundation_calc.output.files import write_atomically
-    from foundation_calc.scenes import read_toml
+    from foundation_calc.output.scene_edit import edited_scene
+    from foundation_calc.scenes.loading import parse_toml, read_text
 
     best = sizing.designs.design(0)
-    values = ", ".join(f"{k} = {v:.6g} m" for k, v in best.items())
-    header = f"# Sized by fcalc design from {scene.name}: {values}.\n# fcalc check passes it; its other keys are the scene's.\n"
+    text = read_text(scene)
+    edited = edited_scene(text, applied_document(parse_toml(text, str(scene)), best), decimals=DECIMALS, note=LEFT_OUT)
+    _same_verdicts(scene, edited.text, sizing.full)
     try:
-        write_atomically(path, header + tomli_w.dumps(_tidy(applied_document(read_toml(scene), best))))
+        write_atomically(path, edited.text)
     except OSError as exc:
         raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'--write'") from None
-    return dataclasses.replace(sizing, written=str(path))
+    return dataclasses.replace(sizing, written=str(path), written_changes=edited.changes)
+
+
+def _same_verdicts(scene: Path, text: str, full) -> None:
+    """Raise (a bug: exit 4) unless fcalc check's path gives each check of the edited scene
+    ``text`` as it stands (read with the office defaults of ``scene``) the outcome the re-check
+    gave the design (``full``, its first design): the numbers written are rounded to the grid's
+    precision, and the edit is not the search's own :func:`~.apply.applied_document`."""
+    from foundation_calc.checks.batch import run_checks
+    from foundation_calc.checks.design.recheck import OUTCOME_NAMES
+    from foundation_calc.checks.design.reference import judged
+    from foundation_calc.scenes.loading import parse_scene, parse_toml
+    from foundation_calc.scenes.project import with_office_defaults
+
+    written = parse_scene(with_office_defaults(parse_toml(text, str(scene)), scene), str(scene))
+    now = {run.check: OUTCOME_NAMES[judged(run)[0]] for run in run_checks(written)}
+    said = {name: OUTCOME_NAMES[int(column[0])] for name, column in full.outcome.items()}
+    if any(said.get(name, "pass") != now.get(name, "pass") for name in {*said, *now}):  # a check not run passes
+        raise RuntimeError(f"the written design is judged {now}, the re-check judged it {said}")
 
 
 def _report(sizing, json: bool, plot: Path | None) -> None:
@@ -222,6 +250,4 @@ def _report(sizing, json: bool, plot: Path | None) -> None:
     else:
         out.print_design(sizing)
         if sizing.written:
-            from foundation_calc.output.console import stdout
-
-            stdout().print(f"written: {sizing.written}")
+            out.print_written(sizing)

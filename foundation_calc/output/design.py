@@ -1,6 +1,7 @@
-"""What ``fcalc design`` prints: the search's grid and resolution, the cheapest passing design with
-its checks, the Pareto set of volume against worst margin, why the cheaper candidates fail, the
-re-check by ``fcalc check``'s path; the same as one JSON document (SI units), and as a plot.
+"""What ``fcalc design`` prints: the search's grid and resolution, the reserve asked, the cheapest
+passing design with its checks (and the check that holds it on a limit, if one does), the Pareto
+set of volume against worst margin, why the cheaper candidates fail, the re-check by ``fcalc
+check``'s path, the keys written; the same as one JSON document (SI units), and as a plot.
 
 The designs shown are judged by the full path (the re-check's verdicts): what ``fcalc check``
 would say of each.
@@ -16,6 +17,7 @@ import numpy as np
 
 from foundation_calc.checks.design.candidates import CandidateVerdicts
 from foundation_calc.checks.design.recheck import OUTCOME_NAMES, Disagreement
+from foundation_calc.checks.design.reserve import ON_LIMIT, bound, on_limit
 from foundation_calc.checks.design.search import Front, Search, worst_margin
 
 #: Pareto designs shown, re-checked and written to JSON at most (evenly spread over the front).
@@ -27,7 +29,8 @@ class Sizing:
     """A finished search and its re-check: ``designs`` are the best (first) and the shown Pareto
     designs (none when nothing passes: then the closest candidate alone), ``full`` the full path's
     verdicts on them, ``evaluator`` the name of what judged the grid, ``pareto_failing`` how many
-    Pareto designs of the batch's checks the re-check found failing a deferred check (left out)."""
+    Pareto designs of the batch's checks the re-check found failing a deferred check (left out);
+    ``written_changes`` the keys ``--write`` changed (:class:`~foundation_calc.output.scene_edit.Change`)."""
 
     source: str
     name: str
@@ -39,6 +42,7 @@ class Sizing:
     chunk: int
     written: str | None = None
     pareto_failing: int = 0
+    written_changes: tuple = ()
 
 
 def _finite(value: float) -> float | None:
@@ -78,11 +82,13 @@ def design_document(sizing: Sizing) -> dict:
         "name": sizing.name,
         "evaluator": sizing.evaluator,
         "strict": found.strict,
+        "margin": found.margin,
         "grid": {"candidates": found.grid.size, "axes": _axes(found), "chunk": sizing.chunk, "chunks": found.chunks,
                  "seconds": found.seconds},
         "refinement": {"candidates": found.refined_candidates, "improved": found.improved_by_refinement} if found.refined_steps else None,
         "passed": found.found,
         "best": designs[0] if found.found else None,
+        "on_limit": _on_limit(sizing) if found.found else None,
         "at_range_end": found.at_range_end,
         "pareto": designs if found.found else [],
         "pareto_size": len(found.pareto.volume) if found.found else 0,
@@ -95,8 +101,16 @@ def design_document(sizing: Sizing) -> dict:
                     "disagreements": [{"values": d.design, "check": d.check, "search": d.search, "fcalc_check": d.full}
                                       for d in sizing.disagreements]},
         "written": sizing.written,
+        "written_changes": [{"key": c.key, "from": c.old, "to": c.new} for c in sizing.written_changes],
     }
     return document
+
+
+def _on_limit(sizing: Sizing) -> dict | None:
+    """The check that holds the answer on a limit (:func:`~foundation_calc.checks.design.reserve.on_limit`), or None."""
+    found = on_limit(sizing.full, 0, sizing.found.margin)
+    return None if found is None else {"check": found.check, "governing": found.governing,
+                                       "utilisation": found.utilisation, "limit": found.limit}
 
 
 def _failures(counts: dict[str, int]) -> list[dict]:
@@ -143,6 +157,9 @@ def print_design(sizing: Sizing) -> None:
         result = "found a cheaper design" if found.improved_by_refinement else "found none cheaper"
         console.print(f"refinement: {found.refined_candidates} candidates cheaper than the cheapest within one grid step of it,"
                       f" {result}")
+    if found.margin is not None:
+        console.print(f"reserve: every utilisation at most {bound(found.margin):.4g} (--margin {found.margin:g}),"
+                      " a warning's too")
     _print_deferred(console, document["deferred"], found.found)
     keys = found.grid.keys
     if found.found:
@@ -150,17 +167,19 @@ def print_design(sizing: Sizing) -> None:
         console.print(f"\n[bold]cheapest passing design[/]: {_values_text(best['values'])} m ({', '.join(keys)}),"
                       f" volume {best['volume']:.4g} m³, mass {best['mass'] / 1e3:.4g} t,"
                       f" worst margin {_number(best['worst_margin'])}")
+        _print_on_limit(console, document["on_limit"], found.margin)
         if found.at_range_end:
             ends = ", ".join(f"the {end} end of {key}" for key, end in found.at_range_end.items())
             console.print(f"[bold yellow]note[/]: it takes {ends}: a cheaper design may lie beyond the range searched")
     else:
         best = document["closest"]
         everywhere = ", ".join(found.fails_everywhere) or "none (each candidate fails some check)"
-        console.print(f"\n[bold red]no candidate passes[/] ({found.grid.size} of {found.grid.size} fail); checks that fail"
-                      f" on every candidate: {escape(everywhere)}")
+        reserve = "" if found.margin is None else f" with the reserve {found.margin:g}"
+        console.print(f"\n[bold red]no candidate passes[/]{reserve} ({found.grid.size} of {found.grid.size} fail); checks that"
+                      f" fail on every candidate: {escape(everywhere)}")
         console.print(f"closest to passing: {_values_text(best['values'])} m ({', '.join(keys)}), volume {best['volume']:.4g} m³:"
                       f" worst utilisation {_number(None if best['worst_margin'] is None else 1 - best['worst_margin'])}"
-                      " (1 at the limit)")
+                      + (" (1 at the limit)" if found.margin is None else f" (at most {bound(found.margin):.4g} to pass)"))
     checks = Table(title=None, show_edge=False)
     for header in ("check", "verdict", "utilisation", "governed by"):
         checks.add_column(header, overflow="fold")
@@ -172,13 +191,44 @@ def print_design(sizing: Sizing) -> None:
         _print_pareto(console, document, keys)
     if document["cheaper_failures"]:
         cheaper = "cheaper candidates" if found.found else "candidates"
-        table = Table(title=f"why the {document['cheaper_candidates']} {cheaper} fail", show_edge=False)
+        reserve = "" if found.margin is None else " (or lack the reserve)"
+        table = Table(title=f"why the {document['cheaper_candidates']} {cheaper} fail{reserve}", show_edge=False)
         for header in ("check", "governed by", "candidates"):
             table.add_column(header, overflow="fold")
         for row in document["cheaper_failures"]:
             table.add_row(row["check"], escape(row["reason"]), str(row["count"]))
         console.print(table)
     _print_recheck(sizing, document)
+
+
+def _print_on_limit(console, found: dict | None, margin: float | None) -> None:
+    """The note that the answer sits on a limit, naming the check that holds it there."""
+    from rich.markup import escape
+
+    if found is None:
+        return
+    where = f"{escape(found['check'])} ({escape(found['governing'])}) at utilisation {found['utilisation']:.4g}"
+    if margin:
+        console.print(f"[bold yellow]on a limit[/]: {where}, within {ON_LIMIT:.0%} of the bound {found['limit']:.4g}"
+                      f" that the reserve {margin:g} sets")
+    else:
+        console.print(f"[bold yellow]on a limit[/]: {where}, within {ON_LIMIT:.0%} of its limit: a small change in the"
+                      " data (a soil's stiffness, a machine's speed) may fail it; --margin M asks every check for a reserve")
+
+
+def print_written(sizing: Sizing) -> None:
+    """The file ``--write`` wrote and the keys it changed in it."""
+    from rich.markup import escape
+
+    from foundation_calc.output.console import stdout
+
+    console = stdout()
+    changes = sizing.written_changes
+    console.print(f"written: {escape(sizing.written)} (the scene's text, {len(changes)} key{'s' * (len(changes) != 1)}"
+                  " changed, comments and layout kept)", soft_wrap=True)
+    for change in changes:
+        after = "commented out" if change.new is None else f"-> {change.new}"
+        console.print(f"  {change.key}: {change.old} {after}", soft_wrap=True, markup=False)
 
 
 def _print_deferred(console, deferred: dict | None, passed: bool) -> None:
@@ -252,6 +302,8 @@ def plot_design(sizing: Sizing, path: str | Path) -> None:
         ax.plot(front.volume[:1], front.margin[:1], "*", color="tab:red", markersize=14,
                 label=f"cheapest passing: {front.volume[0]:.3g} m³")
     ax.axhline(0.0, color="black", linewidth=0.8)
+    if found.margin:
+        ax.axhline(found.margin, color="tab:orange", linewidth=0.8, linestyle="--", label=f"reserve {found.margin:g}")
     ax.set_xlabel("block volume [m³]")
     ax.set_ylabel("worst margin 1 - max utilisation [-] (below -1 at -1)")
     ax.set_title(sizing.name or sizing.source, fontsize=10)
@@ -259,4 +311,4 @@ def plot_design(sizing: Sizing, path: str | Path) -> None:
     save(fig, path)
 
 
-__all__ = ["PARETO_SHOWN", "Sizing", "design_document", "plot_design", "print_design"]
+__all__ = ["PARETO_SHOWN", "Sizing", "design_document", "plot_design", "print_design", "print_written"]

@@ -40,6 +40,12 @@ MAX_SCENE_BYTES = 1_000_000
 
 def read_toml(path: str | Path) -> dict[str, Any]:
     """Return the TOML document at ``path`` as a dict, or raise :class:`SceneError`."""
+    return parse_toml(read_text(path), str(path))
+
+
+def read_text(path: str | Path) -> str:
+    """The text of the scene file at ``path`` (UTF-8, a byte-order mark dropped, at most
+    :data:`MAX_SCENE_BYTES`), or raise :class:`SceneError`."""
     source = str(path)
     try:
         with open(path, "rb") as handle:  # never more than the limit: the path may be /dev/zero
@@ -53,9 +59,13 @@ def read_toml(path: str | Path) -> dict[str, Any]:
             source, [("", f"is over {MAX_SCENE_BYTES} bytes; a scene file must be under that")]
         )
     try:
-        text = raw.decode("utf-8").removeprefix("\ufeff")  # Windows editors may write a BOM
+        return raw.decode("utf-8").removeprefix("\ufeff")  # Windows editors may write a BOM
     except UnicodeDecodeError as exc:
         raise SceneError(source, [("", f"is not UTF-8 text (byte {exc.start})")]) from None
+
+
+def parse_toml(text: str, source: str) -> dict[str, Any]:
+    """The TOML document ``text`` (of the file ``source``) as a dict, or raise :class:`SceneError`."""
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

@@ -219,7 +219,9 @@ def _crank_positions(document: dict, old, new) -> None:
     located = [load.get("at") for load in document.get("loads", [])] + list(document.get("points", []))
     for at in located:
         if isinstance(at, dict):
-            at["horizontal"], at["height"] = from_c(at.get("horizontal", 0.0), at.get("height", 0.0))
+            for key, value in zip(("horizontal", "height"), from_c(at.get("horizontal", 0.0), at.get("height", 0.0))):
+                if key in at or value != 0.0:  # a key left out (0, at C) stays out while it stays 0
+                    at[key] = value
     for key in CRANK_DERIVED:
         foundation.pop(key, None)
 

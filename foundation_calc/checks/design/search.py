@@ -2,7 +2,8 @@
 against worst margin, why the cheaper candidates fail, and a finer grid around the cheapest.
 
 Objective: the block's concrete volume (its mass is volume × density). A candidate passes when no
-check fails (a warning passes, as in ``fcalc check``; with ``strict`` it fails). The grid is
+check fails (a warning passes, as in ``fcalc check``; with ``strict`` it fails) and, with a
+reserve ``margin``, every utilisation is at most 1 - margin (:mod:`.reserve`). The grid is
 walked in chunks (:meth:`~.grid.Grid.chunk`): per chunk the evaluator judges every candidate at
 once, and only the running results are kept (the cheapest passing candidate, the Pareto front,
 the candidate closest to passing, a thinned sample for the plot), so memory is bounded by the
@@ -36,8 +37,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, WARN, Batch, CandidateVerdicts
+from foundation_calc.checks.design.candidates import Batch, CandidateVerdicts
 from foundation_calc.checks.design.grid import DECIMALS, Grid
+from foundation_calc.checks.design.reserve import failing_checks
 
 #: Candidates judged at once: bounds the memory of a search (about 4 kB a candidate of a block
 #: scene: 42 MiB peak; larger chunks are no faster).
@@ -103,9 +105,9 @@ class Front:
         return {k: float(v[i]) for k, v in self.values.items()}
 
 
-def passing(verdicts: CandidateVerdicts, strict: bool) -> np.ndarray:
-    """(N,) True where no check fails (nor warns, with ``strict``)."""
-    return verdicts.worst_outcome < (WARN if strict else FAIL)
+def passing(verdicts: CandidateVerdicts, strict: bool, margin: float | None = None) -> np.ndarray:
+    """(N,) True where no check fails (nor warns, with ``strict``), nor exceeds the reserve ``margin``."""
+    return ~np.any(np.stack(list(failing_checks(verdicts, strict, margin).values())), axis=0)
 
 
 def worst_margin(verdicts: CandidateVerdicts) -> np.ndarray:
@@ -117,12 +119,12 @@ def worst_margin(verdicts: CandidateVerdicts) -> np.ndarray:
     return out
 
 
-def failure_tally(verdicts: CandidateVerdicts, strict: bool) -> dict[str, int]:
+def failure_tally(verdicts: CandidateVerdicts, strict: bool, margin: float | None = None) -> dict[str, int]:
     """How many candidates each ``"check: reason"`` governs among those that do not pass: the most
-    utilised failing check of each (the first failing one in the checks' order when none has a number)."""
+    utilised failing check of each (the first failing one in the checks' order when none has a number;
+    a check short of the reserve ``margin`` fails)."""
     names = list(verdicts.outcome)
-    worst = WARN if strict else FAIL
-    failing = np.stack([verdicts.outcome[n] >= worst for n in names])
+    failing = np.stack(list(failing_checks(verdicts, strict, margin).values()))
     ranked = np.where(failing, np.nan_to_num(np.stack([verdicts.utilisation[n] for n in names]), nan=-1.0), -np.inf)
     top = np.argmax(ranked, axis=0)
     columns = np.arange(top.size)
@@ -148,7 +150,8 @@ class Search:
     candidates that path judged (at most ``bound``), ``deferred_failures`` the ``"check: reason"``
     governing those it failed (``deferred_failed`` of them; those on the grid are also in
     ``cheaper_failures``), ``unconfirmed`` how many candidates that pass the batch's checks it never
-    judged when none it judged passes (0 otherwise)."""
+    judged when none it judged passes (0 otherwise); ``margin``: the reserve asked of every
+    utilisation (None: none, fcalc check's rule)."""
 
     grid: Grid
     strict: bool
@@ -171,6 +174,15 @@ class Search:
     deferred_failed: int = 0
     deferred_failures: dict[str, int] = field(default_factory=dict)
     unconfirmed: int = 0
+    margin: float | None = None
+
+    def passes(self, verdicts: CandidateVerdicts) -> np.ndarray:
+        """(N,) True where a candidate passes (:func:`passing` with this search's rule)."""
+        return passing(verdicts, self.strict, self.margin)
+
+    def tally(self, verdicts: CandidateVerdicts) -> dict[str, int]:
+        """:func:`failure_tally` with this search's rule."""
+        return failure_tally(verdicts, self.strict, self.margin)
 
     @property
     def found(self) -> bool:
@@ -214,18 +226,17 @@ class _Walk:
 
     def add(self, batch: Batch) -> None:
         verdicts = self.evaluate(batch)
-        ok = passing(verdicts, self.found.strict)
+        ok = self.found.passes(verdicts)
         self.passed = self.passed.joined(_front(batch, verdicts, ok)).pareto()
         if verdicts.deferred:  # the cheapest that pass the batch's checks, for the full path
             self.found.deferred = verdicts.deferred
             self.queue = self.queue.joined(_front(batch, verdicts, ok)).by_volume(self.found.bound)
             self.queued += int(np.count_nonzero(ok))
         self.all_best = self.all_best.joined(_front(batch, verdicts, np.ones(ok.shape, bool)).safest()).safest()
-        worst = WARN if self.found.strict else FAIL
-        for name, outcome in verdicts.outcome.items():
-            self.found.fail_counts[name] = self.found.fail_counts.get(name, 0) + int(np.count_nonzero(outcome >= worst))
+        for name, fails in failing_checks(verdicts, self.found.strict, self.found.margin).items():
+            self.found.fail_counts[name] = self.found.fail_counts.get(name, 0) + int(np.count_nonzero(fails))
         if not len(self.passed.volume):  # the tally over every candidate, while none passes
-            _add_counts(self.failures, failure_tally(verdicts, self.found.strict))
+            _add_counts(self.failures, self.found.tally(verdicts))
         self.found.evaluated += len(ok)
         self.found.chunks += 1
         keep = slice(None, None, self.thin)
@@ -266,9 +277,9 @@ def _confirmed(found: Search, queue: Front, confirm: Evaluate, on_grid: dict[str
         one = queue.take(slice(i, i + 1))
         full = confirm({k: np.asarray(v) for k, v in one.values.items()})
         found.confirmations += 1
-        if passing(full, found.strict)[0]:
+        if found.passes(full)[0]:
             return one
-        tally = failure_tally(full, found.strict)
+        tally = found.tally(full)
         found.deferred_failed += 1
         _add_counts(found.deferred_failures, tally)
         _add_counts(on_grid, tally)
@@ -278,7 +289,7 @@ def _confirmed(found: Search, queue: Front, confirm: Evaluate, on_grid: dict[str
 def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], chunk: int, refine: int,
             confirm: Evaluate | None) -> Front:
     """The cheapest design after the refinement around ``around`` (module docstring)."""
-    grid, strict = found.grid, found.strict
+    grid = found.grid
     batch, found.refined_steps = _refinement_batch(grid, around.design(0), refine)
     before = around.volume[0]
     cheaper = _volume(batch, given) < before
@@ -287,7 +298,7 @@ def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], 
     for first in range(0, len(next(iter(batch.values()))), chunk):
         part = {k: v[first:first + chunk] for k, v in batch.items()}
         verdicts = walk.evaluate(part)
-        ok = passing(verdicts, strict)
+        ok = found.passes(verdicts)
         walk.passed = walk.passed.joined(_front(part, verdicts, ok)).pareto()
         queue = queue.joined(_front(part, verdicts, ok)).by_volume(found.bound)
         found.refined_candidates += len(ok)
@@ -300,13 +311,15 @@ def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], 
 
 
 def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool = False, chunk: int = CHUNK,
-           refine: int = REFINE, confirm: Evaluate | None = None, bound: int = CONFIRM) -> Search:
+           refine: int = REFINE, confirm: Evaluate | None = None, bound: int = CONFIRM,
+           margin: float | None = None) -> Search:
     """Walk ``grid`` in chunks of ``chunk`` with ``evaluate`` (module docstring). ``given``: the
     scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is);
     ``refine``: the refinement's factor on the grid step (0 or 1: no refinement); ``confirm``: the
-    full path, which judges the checks ``evaluate`` defers, on at most ``bound`` candidates."""
+    full path, which judges the checks ``evaluate`` defers, on at most ``bound`` candidates;
+    ``margin``: the reserve asked of every utilisation [-] (None: none)."""
     start = time.perf_counter()
-    found = Search(grid, strict, bound=bound)
+    found = Search(grid, strict, bound=bound, margin=margin)
     walk = _Walk(found, evaluate)
     for first in range(0, grid.size, chunk):
         walk.add(grid.chunk(first, first + chunk))
@@ -343,7 +356,7 @@ def _tally_cheaper(found: Search, evaluate: Evaluate, given: dict[str, float], c
         if not cheaper.any():
             continue
         part = {k: v[cheaper] for k, v in batch.items()}
-        _add_counts(found.cheaper_failures, failure_tally(evaluate(part), found.strict))
+        _add_counts(found.cheaper_failures, found.tally(evaluate(part)))
         found.cheaper_count += int(np.count_nonzero(cheaper))
 
 
