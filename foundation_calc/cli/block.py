@@ -74,16 +74,30 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     return 0
 
 
-def soil(loaded, source: str, json: bool) -> int:
+def soil(loaded, source: str, json: bool, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float = 0.0, seed: int = 0) -> int:
     """The block's six springs, damping ratios and dashpots at O, and the uncoupled frequencies
-    sqrt(K_i / m_i); judges nothing."""
+    sqrt(K_i / m_i); with ``sample`` > 0 the uncertain soil sampled that many times
+    (:func:`~foundation_calc.checks.block_sample.sample_block`); judges nothing."""
     from foundation_calc.output import block_soil as out
+    from foundation_calc.output import soil as soil_out
 
+    drawn = None
+    if sample:
+        import typer
+
+        from foundation_calc.checks.block_sample import sample_block
+
+        if speed_cov:
+            raise typer.BadParameter("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
+                                     param_hint="'--speed-cov'")
+        drawn = sample_block(loaded, sample, modulus_cov, seed)
     model = loaded.model()
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(out.soil_document(model, loaded, source))
+        print_json(out.soil_document(model, loaded, source) | {"sample": soil_out.sample_document(drawn)})
     else:
         out.print_soil(model, loaded, source)
+        if drawn is not None:
+            soil_out.print_sample(drawn)
     return 0
