@@ -152,3 +152,31 @@ def test_fcalc_soil_samples_a_block(runner):
     assert table.exit_code == 0 and "probability of failing" in table.stdout and "mode 1, lowest" in table.stdout
     speed = runner.invoke(app, ["soil", path, "--sample", "500", "--speed-cov", "0.05"])
     assert speed.exit_code == 2 and "--speed-cov" in speed.stderr
+
+
+@pytest.mark.parametrize(("config", "modulus_range", "crossed"), [
+    ("frame_saw.toml", [0.4, 1.5], "3ω = p1"),
+    ("block_fan_torsion_near_speed.toml", [0.5, 1.5], "fan: ω = mode 5 (ry)"),
+])
+def test_the_range_reaches_check_alike_on_both_kinds(runner, tmp_path, config, modulus_range, crossed):
+    """One range machinery (``checks/soil_range.py``) on a crank and a block scene: `fcalc check
+    --json` gives the same `modulus_range` document for the resonances and the amplitudes, with the
+    crossing where a critical speed passes the running speed and the factors it judged (the calc
+    sheet reads this document, whatever the kind: output/report/verdict.py)."""
+    import tomli_w
+
+    document = read_toml(CONFIGS / config)
+    document["soil"]["modulus_range"] = modulus_range
+    path = tmp_path / config
+    path.write_text(tomli_w.dumps(document), encoding="utf-8")
+    result = runner.invoke(app, ["check", str(path), "--json"])
+    assert result.exit_code == 1, result.stderr
+    checks = {c["check"]: c for c in json.loads(result.stdout)["scenes"][0]["checks"]}
+    ranged = {check: checks[check]["result"]["modulus_range"] for check in ("resonance", "amplitudes")}
+    for found in ranged.values():
+        assert set(found) == {"low", "high", "verdict", "governing_factor", "governing", "crossings", "factors"}
+        assert [found["low"], found["high"]] == modulus_range
+    crossings = {c["condition"]: c["factor"] for c in ranged["resonance"]["crossings"]}
+    assert modulus_range[0] < crossings[crossed] < modulus_range[1]
+    assert crossings[crossed] in [f["factor"] for f in ranged["amplitudes"]["factors"]]  # the amplitudes peak there
+    assert ranged["resonance"]["verdict"] == "fail" and f"{crossed} crossed at factor" in checks["resonance"]["reason"]
