@@ -273,8 +273,10 @@ def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
 @dataclass(frozen=True)
 class Built:
     """Candidate blocks on a scene's soil: their model (stacks), every machine's loads, the points
-    (N, P, 3) [m], the soil's impedance ω -> (springs, dashpots) of a frequency-dependent soil
-    (else None), ``place`` (position [m] -> (N, 3) on each block) and the blocks' masses [kg]."""
+    (N, P, 3) [m] (or (P, 3), the same on every block), the soil's impedance ω -> (springs,
+    dashpots) of a frequency-dependent soil (else None), ``place`` (position [m] -> (N, 3) on each
+    block) and the blocks' masses [kg]; :func:`dynamics` reads the first four (a sample of one
+    block's soil, :mod:`~foundation_calc.checks.block_sample`, gives no others)."""
 
     model: object
     excitations: list
