@@ -117,7 +117,7 @@ def test_a_block_sweep_writes_its_rows_to_csv_and_a_plot(runner, tmp_path):
     for row, point in zip(rows, doc["points"]):
         assert float(row["omega_rad_s"]) == point["omega"] and row["status"] == point["status"]
         assert [float(row[f"peak_{d}_m"]) for d in "xyz"] == [point["peak"][d] for d in "xyz"]
-        assert int(row["nearest_mode"]) == point["nearest"]["mode"] and float(row["margin"]) == point["nearest"]["margin"]
+        assert row["governing_condition"] == point["governing_condition"] and float(row["margin"]) == point["margin"]
     assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     soil = runner.invoke(app, ["sweep", "configs/block_two_machines.toml", "--soil", "0.5:1.5:3"])
     assert soil.exit_code == 2 and "--speed" in soil.stderr

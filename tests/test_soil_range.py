@@ -104,38 +104,6 @@ def test_a_range_out_of_order_is_refused(runner, tmp_path, bad):
     assert result.exit_code == 3 and "modulus_range" in result.stderr, result.stderr
 
 
-def test_sampled_probability_of_a_resonance_failure_against_the_lognormal_cdf():
-    """The frame saw fails its resonance check exactly where the stiffness factor F leaves an
-    interval found by bisection of the scalar check; with F lognormal (median 1, COV 0.3) that
-    probability is Φ(ln f_low / s) + 1 - Φ(ln f_high / s). The sample of 20 000 must agree within
-    4 standard errors sqrt(p (1 - p)/n)."""
-    from scipy.stats import norm
-
-    from foundation_calc.checks.crank_resonance import check_scene_resonances
-    from foundation_calc.checks.soil_sample import sample_scene
-
-    scene = parse_scene(read_toml(CONFIGS / "frame_saw.toml"))
-
-    def fails(f):
-        return check_scene_resonances(scene.with_modulus_factor(f)).outcome.value == "fail"
-
-    grid = np.geomspace(0.2, 5.0, 400)
-    failing = np.array([fails(f) for f in grid])
-    edges = np.flatnonzero(failing[1:] != failing[:-1])
-    s = math.sqrt(math.log1p(0.3**2))
-    probability = 0.0
-    bounds = [bisect(lambda f: float(fails(f)) - 0.5, grid[i], grid[i + 1], xtol=1e-10) for i in edges]
-    points = [0.0, *bounds, math.inf]
-    for i, (a, b) in enumerate(zip(points, points[1:])):
-        inside = failing[0] if i == 0 else failing[edges[i - 1] + 1]
-        if inside:
-            probability += (1.0 if b == math.inf else norm.cdf(math.log(b) / s)) - (0.0 if a == 0.0 else norm.cdf(math.log(a) / s))
-    n = 20_000
-    sampled = sample_scene(scene, n, 0.3, seed=3).failure_probability["resonance"]
-    assert 0.05 < probability < 0.5  # the interval is inside the sampled range: a test that can fail
-    assert sampled == pytest.approx(probability, abs=4.0 * math.sqrt(probability * (1 - probability) / n))
-
-
 def test_fcalc_soil_sample_reports_percentiles_and_probabilities(runner):
     result = runner.invoke(app, ["soil", str(CONFIGS / "frame_saw.toml"), "--sample", "2000", "--json"])
     assert result.exit_code == 0

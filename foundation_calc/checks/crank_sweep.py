@@ -24,7 +24,8 @@ import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
 from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
-from foundation_calc.checks.resonance_rule import FAIL, STATUS_NAMES, WARN, judge, required_detuning
+from foundation_calc.checks.resonance_rule import judge, required_detuning
+from foundation_calc.checks.sweep_status import STATUSES, row_verdicts
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -37,9 +38,6 @@ VARIABLES = ("omega", "soil_factor")
 
 #: Points whose peaks are found together: peak() holds ~64 × 4 × 8 bytes per series and sample.
 CHUNK = 4096
-
-#: Status of a point, worst last.
-STATUSES = ("pass", "warn", "fail", "resonant")
 
 #: Harmonics of the first approximation reported per point (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
@@ -228,32 +226,23 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
     peaks = _peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
     margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
     margins = np.broadcast_to(margins, values.shape + (len(conditions),))
-    governing = np.broadcast_to(verdict.governing, values.shape)
-    rule_status = np.broadcast_to(verdict.worst, values.shape)
-    margin = np.take_along_axis(margins, np.maximum(governing, 0)[:, None], axis=-1)[:, 0]
     limited = limited_quantities(limits)
     located, over_quantities = _located(motion, omega, points, limited)
-    over = np.zeros(values.shape, dtype=bool)
-    for mask in over_quantities.values():
-        over |= mask
-    status = np.where(
-        resonant, "resonant",
-        np.where((rule_status == FAIL) | over, "fail", np.where(rule_status == WARN, "warn", "pass")),
-    )
+    rows = row_verdicts(margins, verdict, over_quantities, resonant)
     return SweepReport(
         variable=variable,
         values=values,
         omega=omega,
         peaks=peaks,
         resonant=np.asarray(resonant, dtype=bool),
-        margin=margin,
-        governing=governing,
-        resonance_status=np.asarray(STATUS_NAMES)[rule_status],
-        needed=np.take_along_axis(np.broadcast_to(verdict.needed, margins.shape), np.maximum(governing, 0)[:, None], axis=-1)[:, 0],
+        margin=rows.margin,
+        governing=rows.governing,
+        resonance_status=rows.resonance_status,
+        needed=rows.needed,
         points=located,
-        over_limit=over,
+        over_limit=rows.over_limit,
         over_quantities=over_quantities,
-        status=status,
+        status=rows.status,
         harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
         damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
         critical=(),

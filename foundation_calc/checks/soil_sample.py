@@ -162,20 +162,28 @@ def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed
     fails_amplitude = ~stable | resonant
     if scene.limits.amplitude is not None:
         fails_amplitude |= (horizontal > scene.limits.amplitude) | (vertical > scene.limits.amplitude)
-    ok = stable & ~resonant
+    values = {"modulus_factor": factor, "k0": zero.k0, "p1": zero.p1, "p2": zero.p2, "resonance_margin": margin,
+              "peak_horizontal_C": horizontal, "peak_vertical_C": vertical}
+    return summary(SoilSample(n, cov_modulus, cov_speed, seed, {}, {}), values, stable & ~resonant, ~stable, fails_resonance,
+                   fails_amplitude)
 
-    def pct(values):
-        kept = values[ok] if ok.any() else values
+
+def summary(drawn: SoilSample, values: dict, ok, tips_over, fails_resonance, fails_amplitude) -> SoilSample:
+    """``drawn`` with the :data:`PERCENTILES` of every sampled quantity in ``values`` (name -> (n,),
+    over the samples ``ok``: those that stand and have a steady state, or all when none does) and
+    the fraction of the samples that tip over and that fail each check (bool (n,) each); every
+    kind's sample reports through here."""
+
+    def pct(sampled):
+        sampled = np.asarray(sampled, dtype=float)
+        kept = sampled[ok] if ok.any() else sampled
         return tuple(float(v) for v in np.percentile(kept, PERCENTILES))
 
-    return SoilSample(
-        samples=n, cov_modulus=cov_modulus, cov_speed=cov_speed, seed=seed,
-        percentiles={
-            "modulus_factor": pct(factor), "k0": pct(zero.k0), "p1": pct(zero.p1), "p2": pct(zero.p2),
-            "resonance_margin": pct(margin), "peak_horizontal_C": pct(horizontal), "peak_vertical_C": pct(vertical),
-        },
+    return replace(
+        drawn,
+        percentiles={key: pct(sampled) for key, sampled in values.items()},
         failure_probability={
-            "tips_over": float(np.mean(~stable)),
+            "tips_over": float(np.mean(tips_over)),
             "resonance": float(np.mean(fails_resonance)),
             "amplitudes": float(np.mean(fails_amplitude)),
             "any": float(np.mean(fails_resonance | fails_amplitude)),
@@ -183,4 +191,4 @@ def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed
     )
 
 
-__all__ = ["PERCENTILES", "SoilSample", "lognormal_factors", "sample_scene", "sampled_peaks"]
+__all__ = ["PERCENTILES", "SoilSample", "lognormal_factors", "sample_scene", "sampled_peaks", "summary"]

@@ -37,15 +37,16 @@ def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnit
     return exit_code(worst([report.amplitude_outcome, report.office_outcome]), strict)
 
 
-def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: str | None, csv=None, plot=None) -> int:
-    """The block's peaks and RMS velocities along a sweep of one machine's speed ``omega``
-    [rad/s] (the others at their own), and its ``csv`` and ``plot`` files if asked; a picture,
-    not a check: exit 0."""
+def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: str | None, alone: bool = False, csv=None,
+          plot=None) -> int:
+    """The block's peaks and RMS values along a sweep of one machine's speed ``omega`` [rad/s],
+    the others at their own (or left out, ``alone``), each row judged as ``fcalc check`` judges
+    the scene (:mod:`~foundation_calc.checks.block_sweep`), and its ``csv`` and ``plot`` files if
+    asked; a picture, not a check: exit 0."""
     import typer
 
+    from foundation_calc.checks.block_sweep import sweep_block
     from foundation_calc.output import block_sweep as out
-    from foundation_calc.solvers.block.response import block_modes, consistent_modes
-    from foundation_calc.solvers.block.sweep import speed_sweep
 
     names = [m.name for m in loaded.machines]
     if machine is None and len(names) > 1:
@@ -57,37 +58,46 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
         close = difflib.get_close_matches(machine, names, n=1)
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         raise typer.BadParameter(f"no machine {machine!r}{hint}; the scene's machines: {', '.join(names)}", param_hint="'--machine'")
-    swept = names.index(machine) if machine is not None else 0
-    model = loaded.model()
-    impedance = loaded.soil_impedance if loaded.soil.frequency_dependent else None
-    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
-    result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)
-    rows = out.sweep_rows(result, modes, loaded, swept)
+    result = sweep_block(loaded, names.index(machine) if machine is not None else 0, omega, alone)
     if csv is not None:
         from foundation_calc.output.files import write_chunks_atomically
 
-        write_chunks_atomically(csv, (out.sweep_csv(rows),))
+        write_chunks_atomically(csv, (out.sweep_csv(result),))
     if plot is not None:
-        out.plot_sweep(rows, modes, loaded, swept, plot, units, loaded.name or source)
+        out.plot_sweep(result, plot, units, loaded.name or source)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(out.sweep_document(rows, loaded, source, names[swept]))
+        print_json(out.sweep_document(result, loaded, source, loaded.plausibility_warnings()))
     else:
-        out.print_sweep(rows, loaded, source, names[swept], units)
+        out.print_sweep(result, loaded, source, units)
     return 0
 
 
-def soil(loaded, source: str, json: bool) -> int:
+def soil(loaded, source: str, json: bool, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float = 0.0, seed: int = 0) -> int:
     """The block's six springs, damping ratios and dashpots at O, and the uncoupled frequencies
-    sqrt(K_i / m_i); judges nothing."""
+    sqrt(K_i / m_i); with ``sample`` > 0 the uncertain soil sampled that many times
+    (:func:`~foundation_calc.checks.block_sample.sample_block`); judges nothing."""
     from foundation_calc.output import block_soil as out
+    from foundation_calc.output import soil as soil_out
 
+    drawn = None
+    if sample:
+        import typer
+
+        from foundation_calc.checks.block_sample import sample_block
+
+        if speed_cov:
+            raise typer.BadParameter("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
+                                     param_hint="'--speed-cov'")
+        drawn = sample_block(loaded, sample, modulus_cov, seed)
     model = loaded.model()
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(out.soil_document(model, loaded, source))
+        print_json(out.soil_document(model, loaded, source) | {"sample": soil_out.sample_document(drawn)})
     else:
         out.print_soil(model, loaded, source)
+        if drawn is not None:
+            soil_out.print_sample(drawn)
     return 0

@@ -45,7 +45,7 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
     loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
     warn_implausible(loaded)
     if loaded.kind in KIND_MODULES:
-        run_kind("soil", loaded, str(scene), json=json)
+        run_kind("soil", loaded, str(scene), json=json, sample=sample, modulus_cov=modulus_cov, speed_cov=speed_cov, seed=seed)
     comparison = compare_soil_methods(loaded)
     drawn = None
     if sample and loaded.mechanism is None:

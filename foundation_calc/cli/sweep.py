@@ -46,9 +46,12 @@ TABLE_ROWS_WITH_CSV = 1000
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of the table.")]
 MachineOpt = Annotated[
     Optional[str],
-    typer.Option("--machine", metavar="NAME", help="block_foundation: the machine whose speed is swept (the others keep theirs).",
-                 show_default=False),
+    typer.Option("--machine", metavar="NAME", help="block_foundation: the machine whose speed is swept (the others keep theirs"
+                 " unless --alone).", show_default=False),
 ]
+AloneOpt = Annotated[bool, typer.Option(
+    "--alone", help="block_foundation: the swept machine alone; the others stand still (their mass stays on the block,"
+    " their loads and resonances are left out).")]
 
 
 def parse_range(text: str, option: str, units: dict[str, str] | None = None, default_unit: str = "") -> tuple[float, float, int, str]:
@@ -97,6 +100,7 @@ def sweep(
     json: JsonOpt = False,
     units: UnitsOpt = None,
     machine: MachineOpt = None,
+    alone: AloneOpt = False,
 ) -> None:
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
@@ -106,8 +110,9 @@ def sweep(
     and every limit exceeded. Statuses: resonant (no periodic solution), fail (a judged condition
     inside its band, or a peak or RMS limit exceeded), warn, pass. A scene's [[loads]] add their
     linear steady state and their resonance conditions. A long sweep written with --csv is
-    streamed and summarised. A sweep is a picture, not a check: it exits 0 unless the scene or
-    the options are invalid.
+    streamed and summarised. A block_foundation scene sweeps one machine's speed (--machine; the
+    others at their own, or left out with --alone), its rows judged and worded the same way. A
+    sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
     """
     if (speed is None) == (soil is None):
         raise typer.BadParameter("give exactly one of --speed and --soil", param_hint="'--speed' / '--soil'")
@@ -144,9 +149,11 @@ def sweep(
     if loaded.kind in KIND_MODULES:
         if variable != "omega":
             raise typer.BadParameter("a block_foundation scene is swept by --speed", param_hint="'--soil'")
-        run_kind("sweep", loaded, str(scene), json=json, units=shown, omega=values, machine=machine, csv=csv, plot=plot)
-    if machine is not None:
-        raise typer.BadParameter("--machine names a machine of a block_foundation scene", param_hint="'--machine'")
+        run_kind("sweep", loaded, str(scene), json=json, units=shown, omega=values, machine=machine, alone=alone, csv=csv,
+                 plot=plot)
+    if machine is not None or alone:
+        raise typer.BadParameter("--machine and --alone choose among the machines of a block_foundation scene",
+                                 param_hint="'--machine'" if machine is not None else "'--alone'")
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 

@@ -56,9 +56,19 @@ def mark_resonances(ax, marks, operating: float | None, lo: float, hi: float, op
         ax.set_xlim(lo, hi)
 
 
+#: Font size of a plot's title [pt].
+TITLE_SIZE = 8
+
+
+def title(ax, text: str) -> None:
+    """Set the plot's title, wrapped at draw time to the figure's width so that a long scene name
+    stays inside the picture (each ``\n`` in ``text`` still starts a line)."""
+    ax.set_title(text, fontsize=TITLE_SIZE, wrap=True)
+
+
 def save(fig, path: str | Path) -> None:
     """Write the figure as PNG (or the format of the path's suffix); unreferenced, it is freed."""
     fig.savefig(path, dpi=120)
 
 
-__all__ = ["FORMATS", "INSTALL_HINT", "mark_resonances", "new_figure", "plotting_available", "save"]
+__all__ = ["FORMATS", "INSTALL_HINT", "mark_resonances", "new_figure", "plotting_available", "save", "title"]

@@ -172,6 +172,9 @@ SAMPLE_ROWS = (
     ("margin from the nearest paper resonance", "%", "resonance_margin", 100.0),
     ("peak horizontal displacement of C", "mm", "peak_horizontal_C", 1e3),
     ("peak vertical displacement of C", "mm", "peak_vertical_C", 1e3),
+    *((f"mode {j}" + (", lowest" if j == 1 else ""), "Hz", f"mode{j}", None) for j in range(1, 7)),
+    ("resonance utilisation (needed / governing margin)", "-", "resonance_utilisation", 1.0),
+    ("amplitude utilisation (largest value / limit)", "-", "amplitude_utilisation", 1.0),
 )
 
 
@@ -204,7 +207,7 @@ def print_sample(drawn) -> None:
     table.add_column("unit")
     for p in PERCENTILES:
         table.add_column(f"{p:g} %", justify="right")
-    for label, unit, key, scale in SAMPLE_ROWS:
+    for label, unit, key, scale in (row for row in SAMPLE_ROWS if row[2] in drawn.percentiles):
         values = drawn.percentiles[key]
         table.add_row(label, unit, *(fmt(hz_from_omega(v) if scale is None else v * scale) for v in values))
     out.print(table)

@@ -12,7 +12,8 @@ from pathlib import Path
 import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
-from foundation_calc.checks.resonance_rule import bands_text, condition_phrase
+from foundation_calc.checks.resonance_rule import bands_text
+from foundation_calc.checks.sweep_status import status_text as row_status_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
@@ -40,22 +41,10 @@ def _governing(report, i: int) -> str | None:
 
 
 def status_text(row: dict) -> str:
-    """Why a point has its status, the failing causes first: the governing resonance condition
-    when the rule fails or warns there, every limit the point exceeds; then, when the resonance
-    rule is satisfied, the governing condition and its margin, e.g.
-    ``"fail: inside 3ω = p1 at 15.7% (needs 20%); over displacement limit"`` or
-    ``"fail: over displacement limit; resonances clear, governing 3ω = p1 at 30.9% (needs 20%)"``."""
-    phrase = None
-    if row["governing_condition"] is not None:
-        phrase = condition_phrase(row["governing_condition"], row["margin"], row["needed"])
-    causes = []
-    if phrase is not None and row["resonance_status"] in ("warn", "fail"):
-        causes.append(f"inside {phrase}")
-    if row["over_limits"]:
-        causes.append(f"over {', '.join(row['over_limits'])} limit")
-    if phrase is not None and row["resonance_status"] not in ("warn", "fail"):
-        causes.append(f"resonances clear, governing {phrase}")
-    return f"{row['status']}: " + "; ".join(causes) if causes else row["status"]
+    """Why a point has its status (:func:`~foundation_calc.checks.sweep_status.status_text`, the
+    words of every kind's sweep), from a row of :func:`_rows`."""
+    return row_status_text(row["status"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
+                           row["over_limits"])
 
 
 def _harmonics(report, i: int) -> dict | None:
@@ -285,7 +274,7 @@ def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> 
     calculation sheet, the operating speed (or the scene's soil, factor 1) and the detuning band
     of each critical speed inside the range (:func:`~foundation_calc.output.plots.mark_resonances`).
     ``operating``: the scene's speed [rad/s] for a speed sweep."""
-    from foundation_calc.output.plots import mark_resonances, new_figure, save
+    from foundation_calc.output.plots import mark_resonances, new_figure, save, title
 
     fig, ax = new_figure()
     speed = report.variable == "omega"
@@ -309,10 +298,8 @@ def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> 
     mark_resonances(ax, marks, units.convert("speed", operating) if speed else 1.0, lo, hi,
                     "operating speed" if speed else "the scene's soil (factor 1)")
     ax.set_ylabel(f"peak displacement [{units.label('amplitude')}]")
-    ax.set_title(
-        f"{name}: {method(report)}\nshaded: the detuning band of each judged resonance ([limits] detuning ="
-        f" {bands_text(report.detuning)}); red: the paper's, orange: others judged, grey: not judged", fontsize=8,
-    )
+    title(ax, f"{name}: {method(report)}\nshaded: the detuning band of each judged resonance ([limits] detuning ="
+          f" {bands_text(report.detuning)}); red: the paper's, orange: others judged, grey: not judged")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, path)

@@ -250,13 +250,15 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
 RANGE_REASON = "the soil's modulus range (a stiffness factor within it; fcalc check names which)"
 
 
-def _dynamics(scene, built, checks=("resonance", "amplitudes")):
+def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
     """check -> (outcome, utilisation, governing, reasons) of the resonance and amplitude checks on
-    the candidates ``built`` (:func:`_built`; a block that tips over fails both)."""
+    the candidates ``built`` (:class:`Built`; a block that tips over fails both); ``modes``: their
+    modes, if the caller has them already."""
     from foundation_calc.solvers.block.response import batch_modes, consistent_batch
 
     model, excitations = built.model, built.excitations
-    modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance)
+    if modes is None:
+        modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance)
     unstable = ~modes.stable
     found = {}
     for check in checks:
@@ -269,10 +271,12 @@ def _dynamics(scene, built, checks=("resonance", "amplitudes")):
 
 
 @dataclass(frozen=True)
-class _Built:
+class Built:
     """Candidate blocks on a scene's soil: their model (stacks), every machine's loads, the points
-    (N, P, 3) [m], the soil's impedance ω -> (springs, dashpots) of a frequency-dependent soil
-    (else None), ``place`` (position [m] -> (N, 3) on each block) and the blocks' masses [kg]."""
+    (N, P, 3) [m] (or (P, 3), the same on every block), the soil's impedance ω -> (springs,
+    dashpots) of a frequency-dependent soil (else None), ``place`` (position [m] -> (N, 3) on each
+    block) and the blocks' masses [kg]; :func:`dynamics` reads the first four (a sample of one
+    block's soil, :mod:`~foundation_calc.checks.block_sample`, gives no others)."""
 
     model: object
     excitations: list
@@ -282,8 +286,8 @@ class _Built:
     block_mass: np.ndarray
 
 
-def _built(scene, L, B, H) -> _Built:
-    """The candidate blocks L × B × H [m] on ``scene`` (:class:`_Built`)."""
+def _built(scene, L, B, H) -> Built:
+    """The candidate blocks L × B × H [m] on ``scene`` (:class:`Built`)."""
     from foundation_calc.solvers.block.model import excitation
 
     block = _block_body(L, B, H, scene.block.density)
@@ -299,7 +303,7 @@ def _built(scene, L, B, H) -> _Built:
         def impedance(omega):
             return scene.soil_impedance(omega, base=(L, B), block=block, machine_cogs=cogs)
 
-    return _Built(model, excitations, points, impedance, place, block[0])
+    return Built(model, excitations, points, impedance, place, block[0])
 
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
@@ -310,15 +314,15 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     model, m_b = built.model, built.block_mass
     found = {"inputs": _inputs(scene, L, B, built.place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
-    dynamics = _dynamics(scene, built)
+    moving = dynamics(scene, built)
     if getattr(scene.soil, "modulus_range", None) is not None:
         from foundation_calc.checks.design.block_range import over_range
 
-        ranged = over_range(scene, (L, B, H), {check: found[0] for check, found in dynamics.items()}, _built, _dynamics)
+        ranged = over_range(scene, (L, B, H), {check: found[0] for check, found in moving.items()}, _built, dynamics)
         for check, worse in ranged.items():
-            o, u, g, r = dynamics[check]
-            dynamics[check] = (worse, u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
-    for check, (o, u, g, r) in dynamics.items():
+            o, u, g, r = moving[check]
+            moving[check] = (worse, u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
+    for check, (o, u, g, r) in moving.items():
         outcome[check], utilisation[check], governing[check], reasons[check] = o, u, g, r
     o, g, r = found["inputs"]
     outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
@@ -339,4 +343,4 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     )
 
 
-__all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "evaluate"]
+__all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]

@@ -11,7 +11,14 @@ depend on the modulus, C = 2 ξ sqrt(K m); given dashpots by sqrt(f)), so that
 
     K(f) = f K_s + K_W,   C(f) = sqrt(f) C(1)                                                (1)
 
-with K_s the springs at f = 1 and K_W the weight's tilt. Mode j's frequency equals Ω = n ω where
+with K_s the springs at f = 1 and K_W the weight's tilt. On a frequency-dependent soil (Gazetas,
+Pais & Kausel) the springs are G times a function of a0 = ω B / V_s with V_s = sqrt(G / ρ), and the
+dashpots ρ V_s times one (or 2 ξ sqrt(K m) with ξ a function of a0), so that at every frequency
+
+    K(f, ω) = f K(1, ω / sqrt(f)),   C(f, ω) = sqrt(f) C(1, ω / sqrt(f))                     (2)
+
+of which (1) is the frequency-independent case (checked against the factored scene for every
+method: tests/test_soil_range_kinds.py). Mode j's frequency equals Ω = n ω where
 det(f K_s + K_W - Ω² M) = 0: f is an eigenvalue of the symmetric K_s^(-1/2) (Ω² M - K_W) K_s^(-1/2)
 (one batched ``eigvalsh`` per machine and order), which ``fcalc check`` finds instead by Brent's
 method between grid factors (to 1e-10).
@@ -32,6 +39,31 @@ def scaled(model, factor):
     K_s = diagonal_matrices(model.springs)
     return replace(model, K=f[:, None, None] * K_s + (model.K - K_s), C=np.sqrt(f)[:, None, None] * model.C,
                    springs=f[:, None] * model.springs)
+
+
+def scaled_impedance(impedance, factor):
+    """The soil ``impedance`` (ω -> (springs, dashpots), each ω.shape + (6,)) scaled by ``factor``
+    (N,), Eq. (2): ω's leading axis is the factors'."""
+    f = np.asarray(factor, dtype=float)
+
+    def at(omega):
+        omega = np.asarray(omega, dtype=float)
+        g = f.reshape(f.shape + (1,) * (omega.ndim - f.ndim))
+        springs, dashpots = impedance(omega / np.sqrt(g))
+        return g[..., None] * springs, np.sqrt(g)[..., None] * dashpots
+
+    return at
+
+
+def on_factors(model, factor):
+    """One block's ``model`` (the soil as given) on the soil scaled by each ``factor`` (N,): a batch
+    of N blocks, Eq. (1)."""
+    n = len(factor)
+    batch = replace(model, M=np.broadcast_to(model.M, (n, 6, 6)), K=np.broadcast_to(model.K, (n, 6, 6)),
+                    C=np.broadcast_to(model.C, (n, 6, 6)), mass=np.full(n, model.mass), cog=np.broadcast_to(model.cog, (n, 3)),
+                    J_G=np.broadcast_to(model.J_G, (n, 3, 3)), size=np.full(n, model.size),
+                    springs=np.broadcast_to(model.springs, (n, 6)))
+    return scaled(batch, factor)
 
 
 def crossings(scene, model, excitations, low, high):
@@ -105,4 +137,4 @@ def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarra
     return worst
 
 
-__all__ = ["crossings", "over_range", "scaled"]
+__all__ = ["crossings", "on_factors", "over_range", "scaled", "scaled_impedance"]

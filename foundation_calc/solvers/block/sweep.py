@@ -1,4 +1,5 @@
-"""The block's steady state along a sweep of one machine's speed, the others at their own.
+"""The block's steady state along a sweep of one machine's speed, the others at their own (or
+left out: ``excitations`` holds the machines that run).
 
 Source: :mod:`.response` at every speed at once: one batched solve of (K - (nω)² M + i nω C) Z = Q_n
 for all speeds and orders of the swept machine, its points' peaks over their period searched
@@ -26,12 +27,16 @@ class SpeedSweep:
     ----------
     omega : the swept machine's speeds [rad/s], shape (N,)
     peak : (N, P, 3) peak displacement of G and every point along x, y, z [m]
+    velocity_peak : (N, P, 3) peak velocity [m/s]
+    displacement_rms : (N, P, 3) RMS displacement [m]
     velocity_rms : (N, P, 3) RMS velocity [m/s]
     margin : (N, H, 6) |n ω - p_j| / p_j of the swept machine's orders against every mode [-]
     """
 
     omega: np.ndarray
     peak: np.ndarray
+    velocity_peak: np.ndarray
+    displacement_rms: np.ndarray
     velocity_rms: np.ndarray
     margin: np.ndarray
 
@@ -47,19 +52,18 @@ def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, o
     exc: Excitation = excitations[swept]
     others = [e for i, e in enumerate(excitations) if i != swept]
     at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
-    base_peak = np.zeros((len(at), 3))
-    base_sq = np.zeros((len(at), 3))
+    peak = velocity_peak = usq = vsq = np.zeros((len(at), 3))
     if others:
-        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:], impedance=impedance)
-        base_peak, base_sq = fixed.peak, fixed.velocity_rms**2
+        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:], frozenset({"peak", "velocity_peak"}),
+                             impedance=impedance)
+        peak, velocity_peak, usq, vsq = fixed.peak, fixed.velocity_peak, fixed.displacement_rms**2, fixed.velocity_rms**2
     Z = complex_amplitudes(model, exc, omega, impedance)  # (N, H, 6)
     U = np.einsum("pij,nhj->npih", point_maps(at), Z)  # (N, P, 3, H)
     V = U * (1j * omega[:, None, None, None] * exc.orders)
-    peak = base_peak + _series_peak(U, exc.orders)
-    rms = np.sqrt(base_sq + (np.abs(V) ** 2).sum(-1) / 2.0)
     p = modes.frequencies
     margin = np.abs(omega[:, None, None] * exc.orders[None, :, None] - p) / p
-    return SpeedSweep(omega, peak, rms, margin)
+    return SpeedSweep(omega, peak + _series_peak(U, exc.orders), velocity_peak + _series_peak(V, exc.orders),
+                      np.sqrt(usq + (np.abs(U) ** 2).sum(-1) / 2.0), np.sqrt(vsq + (np.abs(V) ** 2).sum(-1) / 2.0), margin)
 
 
 __all__ = ["SpeedSweep", "speed_sweep"]
