@@ -63,12 +63,16 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)
     rows = out.sweep_rows(result, modes, loaded, swept)
-    if csv is not None:
-        from foundation_calc.output.files import write_chunks_atomically
+    from foundation_calc.cli.outputs import writing
 
-        write_chunks_atomically(csv, (out.sweep_csv(rows),))
+    if csv is not None:
+        from foundation_calc.output.files import write_atomically
+
+        with writing(csv, "--csv"):
+            write_atomically(csv, out.sweep_csv(rows))
     if plot is not None:
-        out.plot_sweep(rows, modes, loaded, swept, plot, units, loaded.name or source)
+        with writing(plot, "--plot"):
+            out.plot_sweep(rows, modes, loaded, swept, plot, units, loaded.name or source)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -73,7 +73,7 @@ def _evaluator(kind: str, scene, document, source: str, given: dict[str, float])
 
 
 def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None) -> None:
-    from foundation_calc.cli.sweep import plot_path, writable_path
+    from foundation_calc.cli.outputs import plot_path, writable_path
 
     if step is not None and points is not None:
         raise typer.BadParameter("give --step or --points, not both", param_hint="'--step' / '--points'")
@@ -197,16 +197,16 @@ def _write(scene: Path, path: Path, sizing):
     import tomli_w
 
     from foundation_calc.checks.design.apply import applied_document
+    from foundation_calc.cli.outputs import writing
     from foundation_calc.output.files import write_atomically
     from foundation_calc.scenes import read_toml
 
     best = sizing.designs.design(0)
     values = ", ".join(f"{k} = {v:.6g} m" for k, v in best.items())
     header = f"# Sized by fcalc design from {scene.name}: {values}.\n# fcalc check passes it; its other keys are the scene's.\n"
-    try:
-        write_atomically(path, header + tomli_w.dumps(_tidy(applied_document(read_toml(scene), best))))
-    except OSError as exc:
-        raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'--write'") from None
+    text = header + tomli_w.dumps(_tidy(applied_document(read_toml(scene), best)))
+    with writing(path, "--write"):
+        write_atomically(path, text)
     return dataclasses.replace(sizing, written=str(path))
 
 
@@ -214,7 +214,10 @@ def _report(sizing, json: bool, plot: Path | None) -> None:
     from foundation_calc.output import design as out
 
     if plot is not None:
-        out.plot_design(sizing, plot)
+        from foundation_calc.cli.outputs import writing
+
+        with writing(plot, "--plot"):
+            out.plot_design(sizing, plot)
     if json:
         from foundation_calc.output.console import print_json
 
