@@ -8,8 +8,8 @@
   and written in place, never replaced (a FIFO waits for its reader, as a shell's ``>`` does);
 * the file this process's stdout or stderr already writes to (``--junit /dev/stdout > log``):
   written through that stream, after what it holds, not replaced under it;
-* a symbolic link is followed: the rule applies to the file it names, which a regular file is
-  replaced in its own folder (the link stays, naming the new file);
+* a symbolic link is followed: the rule applies to the file it names; a regular file is replaced
+  in its own folder, and the link stays, naming the new file;
 * anything else (a folder, a block device, a socket) or a missing folder: :class:`OutputPathError`,
   nothing written. An entry that is not a regular file is never replaced.
 """
