@@ -191,17 +191,20 @@ def test_a_link_to_a_fifo_streams_into_the_fifo(runner, tmp_path):
 def test_stdout_redirected_to_a_file_gets_the_report_in_order(tmp_path):
     """``--junit /dev/stdout > log``: the report goes through the stream that writes ``log``, after
     what it already holds and before the table; replacing ``log`` would lose the earlier output and
-    send the table to a file nobody sees."""
-    log = tmp_path / "log.txt"
+    send the table to a file nobody sees. The link is made in tmp_path, as /dev/stdout is made
+    (to /proc/self/fd/1): a writer that replaces what it is given must not replace the system's."""
+    log, stdout = tmp_path / "log.txt", tmp_path / "stdout"
+    stdout.symlink_to("/proc/self/fd/1")
     code = "import sys; from foundation_calc.cli.app import main; sys.argv[0] = 'fcalc'; main()"
     with open(log, "wb") as out:
         out.write(b"earlier output\n")
         out.flush()
-        done = subprocess.run([sys.executable, "-c", code, "check", SAW, "--jobs", "1", "--junit", "/dev/stdout"],
+        done = subprocess.run([sys.executable, "-c", code, "check", SAW, "--jobs", "1", "--junit", str(stdout)],
                               stdout=out, timeout=60)
     assert done.returncode == 0
+    assert stdout.is_symlink() and os.readlink(stdout) == "/proc/self/fd/1"
     text = log.read_text(encoding="utf-8")
-    assert text.startswith("earlier output\n<?xml") and "</testsuites>" in text
+    assert text.startswith("earlier output\n<?xml") and "</testsuites>" in text, text[:200]
     assert text.index("</testsuites>") < text.index("1 scene: 1 pass") and text.rstrip().endswith("exit code 0")
 
 
