@@ -172,3 +172,26 @@ def test_every_soil_method_gives_six_springs_that_turn_with_the_base(method):
     L, B = scene.base
     swapped = parse_scene({**data, "block": {**data["block"], "length": B, "width": L}}).model().springs
     np.testing.assert_allclose(swapped[[1, 0, 2, 4, 3, 5]], k, rtol=1e-12)
+
+
+@pytest.mark.parametrize("config", ["block_two_machines.toml", "compressor_vendor_loads.toml"])
+def test_amplitudes_judges_the_amplitudes_alone(runner, tmp_path, config):
+    """Each command judges its own check, on a block as on a crank scene: a bearing pressure over
+    its allowable fails `check`'s office check (exit 1), not `amplitudes` (exit 0, verdict pass),
+    which lists the office rows of a block for information only."""
+    from tests.conftest import CONFIGS
+
+    text = (CONFIGS / config).read_text(encoding="utf-8").replace("[limits]", "[limits]\nbearing_pressure = 1.0e4", 1)
+    scene = tmp_path / config
+    scene.write_text(text, encoding="utf-8")
+    checked = runner.invoke(app, ["check", str(scene), "--json", "--jobs", "1"])
+    verdicts = {c["check"]: c["verdict"] for c in json.loads(checked.stdout)["scenes"][0]["checks"]}
+    assert checked.exit_code == 1 and verdicts["office"] == "fail" and verdicts["amplitudes"] == "pass", verdicts
+    result = runner.invoke(app, ["amplitudes", str(scene), "--json"])
+    doc = json.loads(result.stdout)
+    assert result.exit_code == 0 and doc["verdict"] == "pass", result.output
+    table = runner.invoke(app, ["amplitudes", str(scene)], env={"COLUMNS": "200"})
+    assert table.exit_code == 0 and table.stdout.rstrip().splitlines()[-1].startswith("PASS"), table.stdout
+    if "office" in doc:  # a block's office rows: information, judged by check
+        assert [row["verdict"] for row in doc["office"] if row["check"] == "bearing pressure"] == ["fail"]
+        assert "fcalc check judges them" in " ".join(table.stdout.split())

@@ -72,6 +72,24 @@ def test_bad_output_paths_are_usage_errors(runner, tmp_path, option, target, wor
     assert "Traceback" not in result.output
 
 
+@pytest.mark.parametrize("config", ["frame_saw.toml", "compressor_vendor_loads.toml"])
+def test_the_sweep_names_the_governing_condition_as_every_command_does(runner, config):
+    """At the scene's own speed the sweep's row names the governing condition in the words of
+    resonance, amplitudes and check (README, "The resonance rule"): a condition of the [[loads]]
+    too, which the row once called "ω = p2 (loads)" where the others say "ω = p2"."""
+    scene = str(CONFIGS / config)
+    rpm = {"frame_saw.toml": "250", "compressor_vendor_loads.toml": "1500"}[config]
+    resonance = json.loads(runner.invoke(app, ["resonance", scene, "--json"]).stdout)["rule"]["governing"]
+    amplitudes = json.loads(runner.invoke(app, ["amplitudes", scene, "--json"]).stdout)["resonance_rule"]["governing"]
+    (row,) = json.loads(runner.invoke(app, ["sweep", scene, "--speed", rpm, "--json"]).stdout)["points"]
+    assert row["governing_condition"] == resonance["condition"] == amplitudes["condition"]
+    checked = runner.invoke(app, ["check", scene, "--json", "--jobs", "1"]).stdout
+    reason = next(c["reason"] for c in json.loads(checked)["scenes"][0]["checks"] if c["check"] == "resonance")
+    phrase = reason.split("governing resonance ")[1]  # e.g. "ω = p2 at 50.5% (needs 20%)"
+    table = runner.invoke(app, ["sweep", scene, "--speed", rpm], env={"COLUMNS": "400"}).stdout
+    assert f"governing {phrase}" in table, table
+
+
 @pytest.mark.parametrize("spec", ["250", "250rpm", "250:250", "250:250:1"])
 def test_a_single_speed_sweep_is_the_scenes_check(runner, spec):
     result = runner.invoke(app, ["sweep", str(SAW), "--speed", spec, "--json"])

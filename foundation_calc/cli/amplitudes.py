@@ -37,7 +37,9 @@ def amplitudes(
     phases at and through every resonance. A machine given by its [[loads]] adds (or alone gives)
     the block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits]
     key, when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped
-    scene's speed is resonant.
+    scene's speed is resonant. It judges the amplitudes alone, on a block_foundation too: a
+    block's office checks (bearing pressure, eccentricity, mass ratio) are listed for
+    information, and fcalc check judges them.
     """
     from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code

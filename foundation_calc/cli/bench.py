@@ -123,10 +123,10 @@ def bench(
     a loop over fcalc check's path (200 candidates timed, scaled), on the first block scene and the
     first crank scene with [foundation.block].
     """
-    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
+    from foundation_calc.cli.outputs import plot_path, writing
 
-    if plot is not None and not plotting_available():
-        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    if plot is not None:
+        plot_path(plot)
     skipped = set(skip or [])
     paths = list(scenes) if scenes else _default_scenes()
 
@@ -246,7 +246,8 @@ def bench(
                 step(f"{path.name}: fcalc design, {CANDIDATES:.0e} candidates against a loop over fcalc check")
                 sizing.append(benchmark_design(str(path), scene, read_scene(path), MIN_TIME[quick]))
     if plot is not None:
-        report.plot_bench(results, plot)
+        with writing(plot, "--plot"):
+            report.plot_bench(results, plot)
     if json:
         from foundation_calc.output.console import print_json
 

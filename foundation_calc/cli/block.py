@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from foundation_calc.checks.outcomes import exit_code, worst
+from foundation_calc.checks.outcomes import exit_code
 from foundation_calc.output.display_units import DisplayUnits
 
 
@@ -23,7 +23,8 @@ def resonance(loaded, source: str, json: bool, strict: bool, units: DisplayUnits
 
 
 def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnits) -> int:
-    """Damped steady state per machine and order, peaks and RMS, limits, code zones, office checks."""
+    """Damped steady state per machine and order, peaks and RMS, limits, code zones; judges the
+    amplitudes alone, as for a crank scene (the office checks are listed, ``fcalc check`` judges them)."""
     from foundation_calc.checks.block import check_block
     from foundation_calc.output import block as out
 
@@ -34,7 +35,7 @@ def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnit
         print_json(out.amplitudes_document(report, loaded, source))
     else:
         out.print_amplitudes(report, loaded, source, units, strict)
-    return exit_code(worst([report.amplitude_outcome, report.office_outcome]), strict)
+    return exit_code(report.amplitude_outcome, strict)
 
 
 def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: str | None, alone: bool = False, csv=None,
@@ -59,12 +60,16 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         raise typer.BadParameter(f"no machine {machine!r}{hint}; the scene's machines: {', '.join(names)}", param_hint="'--machine'")
     result = sweep_block(loaded, names.index(machine) if machine is not None else 0, omega, alone)
+    from foundation_calc.cli.outputs import writing
+
     if csv is not None:
         from foundation_calc.output.files import write_chunks_atomically
 
-        write_chunks_atomically(csv, (out.sweep_csv(result),))
+        with writing(csv, "--csv"):
+            write_chunks_atomically(csv, (out.sweep_csv(result),))
     if plot is not None:
-        out.plot_sweep(result, plot, units, loaded.name or source)
+        with writing(plot, "--plot"):
+            out.plot_sweep(result, plot, units, loaded.name or source)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -54,6 +54,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
     Scenes of the same name in different folders get ``<stem>-2.pdf``, ``<stem>-3.pdf``… in the
     order they were checked.
     """
+    from foundation_calc.cli.outputs import writing
     from foundation_calc.cli.report import command_line
     from foundation_calc.output.report import write_sheet
     from foundation_calc.output.report.documents import scene_sheet
@@ -70,7 +71,9 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
         used[path.stem] = used.get(path.stem, 0) + 1
         suffix = "" if used[path.stem] == 1 else f"-{used[path.stem]}"
         sheet, _ = scene_sheet(path, command_line(), shown)
-        write_sheet(sheet, folder / f"{path.stem}{suffix}.pdf")
+        target = folder / f"{path.stem}{suffix}.pdf"
+        with writing(target, "--report-dir"):
+            write_sheet(sheet, target)
 
 
 @reports_errors
@@ -145,6 +148,10 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
     from foundation_calc.output import check_report
 
     shown = display_units(units)
+    if junit is not None:
+        from foundation_calc.cli.outputs import writable_path
+
+        writable_path(junit, "--junit")
     if report_dir is not None:
         from foundation_calc.cli.report import check_output
 
@@ -159,10 +166,10 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)
     if junit is not None:
-        try:
+        from foundation_calc.cli.outputs import writing
+
+        with writing(junit, "--junit"):
             check_report.write_junit(junit, scenes, strict)
-        except OSError as exc:
-            raise typer.BadParameter(f"cannot write {junit}: {exc.strerror or exc}", param_hint="'--junit'") from None
     if report_dir is not None:
         from foundation_calc.cli.report import SHEET_UNITS
 

@@ -79,7 +79,7 @@ def _evaluator(kind: str, scene, document, source: str, given: dict[str, float])
 
 
 def _options(plot: Path | None, write: Path | None, step: float | None, points: int | None, margin: float | None) -> None:
-    from foundation_calc.cli.sweep import plot_path, writable_path
+    from foundation_calc.cli.outputs import plot_path, writable_path
 
     if margin is not None and not 0.0 <= margin < 1.0:
         raise typer.BadParameter(f"the reserve must be 0 <= M < 1 (a fraction of every limit; got {margin:g})",
@@ -205,6 +205,7 @@ def _write(scene: Path, path: Path, sizing):
 
     from foundation_calc.checks.design.apply import applied_document
     from foundation_calc.checks.design.grid import DECIMALS
+    from foundation_calc.cli.outputs import writing
     from foundation_calc.output.files import write_atomically
     from foundation_calc.output.scene_edit import edited_scene
     from foundation_calc.scenes.loading import parse_toml, read_text
@@ -213,10 +214,8 @@ def _write(scene: Path, path: Path, sizing):
     text = read_text(scene)
     edited = edited_scene(text, applied_document(parse_toml(text, str(scene)), best), decimals=DECIMALS, note=LEFT_OUT)
     _same_verdicts(scene, edited.text, sizing.full)
-    try:
+    with writing(path, "--write"):
         write_atomically(path, edited.text)
-    except OSError as exc:
-        raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'--write'") from None
     return dataclasses.replace(sizing, written=str(path), written_changes=edited.changes)
 
 
@@ -242,7 +241,10 @@ def _report(sizing, json: bool, plot: Path | None) -> None:
     from foundation_calc.output import design as out
 
     if plot is not None:
-        out.plot_design(sizing, plot)
+        from foundation_calc.cli.outputs import writing
+
+        with writing(plot, "--plot"):
+            out.plot_design(sizing, plot)
     if json:
         from foundation_calc.output.console import print_json
 

@@ -23,9 +23,11 @@ ForceOpt = Annotated[bool, typer.Option("--force", help="Overwrite PATH if it ex
 def init(kind: KindArg, path: PathArg = None, force: ForceOpt = False) -> None:
     """Write a starting scene of KIND: the shipped example, every key with symbol, unit and range.
 
-    Never overwrites an existing file without --force; the file is written atomically (a
-    temporary file in the same folder, then renamed), so an interrupted run leaves no half file.
+    Never overwrites an existing file without --force; a file is written atomically (a
+    temporary file in the same folder, then renamed), so an interrupted run leaves no half file;
+    a FIFO or a device (--force) is written in place, never replaced.
     """
+    from foundation_calc.cli.outputs import writable_path, writing
     from foundation_calc.output.files import write_atomically
     from foundation_calc.scenes.template import scene_template
 
@@ -38,12 +40,12 @@ def init(kind: KindArg, path: PathArg = None, force: ForceOpt = False) -> None:
         target = target / f"{kind}.toml"
     if target.exists() and not force:
         raise typer.BadParameter(f"{target} exists; use --force to overwrite it", param_hint="PATH")
-    try:
-        write_atomically(target, text, overwrite=force)
-    except FileExistsError:
-        raise typer.BadParameter(f"{target} exists; use --force to overwrite it", param_hint="PATH") from None
-    except OSError as exc:
-        raise typer.BadParameter(f"cannot write {target}: {exc.strerror or exc}", param_hint="PATH") from None
+    writable_path(target, "PATH")
+    with writing(target, "PATH"):
+        try:
+            write_atomically(target, text, overwrite=force)
+        except FileExistsError:
+            raise typer.BadParameter(f"{target} exists; use --force to overwrite it", param_hint="PATH") from None
     from foundation_calc.output.console import stderr
 
     stderr().print(f"wrote {target} (kind {kind}); check it with: fcalc check {target}", soft_wrap=True, markup=False)

@@ -62,8 +62,11 @@ def report(
     from foundation_calc.output.report import write_sheet
     from foundation_calc.output.report.documents import scene_sheet
 
+    from foundation_calc.cli.outputs import writable_path, writing
+
     path = output if output is not None else scene.with_suffix(".pdf")
     check_output(path, "'-o'")
+    writable_path(path, "-o")
     shown = display_units(units, SHEET_UNITS)
     sheet, checked = scene_sheet(scene, command_line(), shown, exact)
     print_warnings(checked.warnings, str(scene))  # on the sheet too, in its summary
@@ -74,10 +77,8 @@ def report(
         from foundation_calc.validation.record import run_record
 
         sheet = replace(sheet, sections=(*sheet.sections, validation_section(run_record())))
-    try:
+    with writing(path, "-o"):
         written = write_sheet(sheet, path)
-    except OSError as exc:
-        raise typer.BadParameter(f"cannot write {path}: {exc.strerror or exc}", param_hint="'-o'") from None
     for file in written:
         print(f"wrote {file}", file=sys.stderr)
     raise typer.Exit(int(checked.exit_code(strict=False)))

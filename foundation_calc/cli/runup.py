@@ -43,11 +43,11 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.checks.runup import check_runup, run_times
     from foundation_calc.output import runup as report_out
-    from foundation_calc.output.plots import INSTALL_HINT, plotting_available
+    from foundation_calc.cli.outputs import plot_path, writing
     from foundation_calc.scenes import load_scene
 
-    if plot is not None and not plotting_available():
-        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
+    if plot is not None:
+        plot_path(plot)
     loaded = load_scene(scene, expect=("crank_foundation", "platform", "block_foundation"))
     warn_implausible(loaded)
     scene_up, scene_down = run_times(loaded)
@@ -62,5 +62,6 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
         report_out.print_runup_report(report, loaded, str(scene))
     report_out.print_warnings(report)
     if plot is not None:
-        report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
+        with writing(plot, "--plot"):
+            report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
     raise typer.Exit(int(exit_code(report.outcome)))

@@ -118,6 +118,7 @@ def sweep(
         raise typer.BadParameter("give exactly one of --speed and --soil", param_hint="'--speed' / '--soil'")
     import numpy as np
 
+    from foundation_calc.cli.outputs import plot_path, writable_path, writing
     from foundation_calc.cli.units import display_units
 
     if plot is not None:
@@ -171,9 +172,11 @@ def sweep(
     if csv is not None:
         from foundation_calc.output.files import write_chunks_atomically
 
-        write_chunks_atomically(csv, (report_out.csv_header(report), report_out.csv_rows(report)))
+        with writing(csv, "--csv"):
+            write_chunks_atomically(csv, (report_out.csv_header(report), report_out.csv_rows(report)))
     if plot is not None:
-        report_out.plot_sweep(report, plot, shown, loaded.name or str(scene), operating)
+        with writing(plot, "--plot"):
+            report_out.plot_sweep(report, plot, shown, loaded.name or str(scene), operating)
     if json:
         from foundation_calc.output.console import print_json
 
@@ -182,36 +185,12 @@ def sweep(
         report_out.print_sweep(report, str(scene), loaded.name, shown)
 
 
-def plot_path(plot: Path) -> None:
-    """A usage error (exit 2) unless ``plot`` is a writable file of a format ``--plot`` writes and
-    matplotlib is installed: checked before any work."""
-    from foundation_calc.output.plots import FORMATS, INSTALL_HINT, plotting_available
-
-    if plot.suffix.lower() not in FORMATS:
-        raise typer.BadParameter(
-            f"{str(plot)!r}: unsupported plot format {plot.suffix or '(none)'!r}; use one of {', '.join(FORMATS)}",
-            param_hint="'--plot'",
-        )
-    writable_path(plot, "--plot")
-    if not plotting_available():
-        raise typer.BadParameter(f"matplotlib is not installed: {INSTALL_HINT}", param_hint="'--plot'")
-
-
-def writable_path(path: Path, option: str) -> None:
-    """A usage error (exit 2) unless ``path`` can be written as a file: its folder exists, and it is
-    not itself a folder."""
-    folder = path.parent
-    if path.is_dir():
-        raise typer.BadParameter(f"{str(path)!r} is a folder; give a file name", param_hint=f"'{option}'")
-    if not folder.is_dir():
-        raise typer.BadParameter(f"folder {str(folder)!r} of {str(path)!r} does not exist", param_hint=f"'{option}'")
-
-
 def _stream_csv(chunks, csv: Path, plot, operating: float, shown, name: str, count: int) -> None:
     """Write a long sweep to ``csv`` chunk by chunk (memory: one chunk, and 3 numbers a point for
     ``plot``), then print a summary of its statuses."""
     from collections import Counter
 
+    from foundation_calc.cli.outputs import writing
     from foundation_calc.output import sweep_report as report_out
     from foundation_calc.output.files import write_chunks_atomically
 
@@ -227,7 +206,9 @@ def _stream_csv(chunks, csv: Path, plot, operating: float, shown, name: str, cou
                 kept.append(report_out.plotted(part))
             yield report_out.csv_rows(part)
 
-    write_chunks_atomically(csv, texts())
+    with writing(csv, "--csv"):
+        write_chunks_atomically(csv, texts())
     if plot is not None:
-        report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name, operating)
+        with writing(plot, "--plot"):
+            report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name, operating)
     report_out.print_sweep_summary(count, statuses, first[0], str(csv), shown)

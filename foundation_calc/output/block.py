@@ -6,7 +6,6 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
-from foundation_calc.checks.outcomes import worst
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.units import speed_triplet
@@ -78,7 +77,9 @@ def office_document(report, scene, source: str) -> dict:
 
 
 def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
-    """The JSON document of ``fcalc amplitudes`` for a block scene."""
+    """The JSON document of ``fcalc amplitudes`` for a block scene: its ``verdict`` is the
+    amplitudes' alone; ``office`` lists the office checks' rows for information (``fcalc check``
+    judges them, in its office check)."""
     doc = resonance_document(report, scene, source, "amplitudes")
     doc.pop("verdict")
     motion = report.motion
@@ -125,7 +126,7 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
     }
     doc["office"] = _office(report)
     doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
-    doc["verdict"] = worst([report.amplitude_outcome, report.office_outcome]).value
+    doc["verdict"] = report.amplitude_outcome.value
     return doc
 
 
@@ -233,14 +234,14 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
     if report.amplitude_range is not None:
         out.print(f"Amplitudes {escape(report.amplitude_range.text)}", soft_wrap=True)
     print_office(report, strict)
-    out.print(f"{verdict_text(worst([report.amplitude_outcome, report.office_outcome]).value, strict)}: amplitudes and office checks")
+    out.print(f"{verdict_text(report.amplitude_outcome.value, strict)}: amplitudes")
 
 
 def print_office(report: BlockReport, strict: bool = False) -> None:
-    """The office checks' table."""
+    """The office checks' table, for information: ``fcalc check`` judges them."""
     from rich.markup import escape
 
-    t = _table("Office checks", ("check", "result", "source", "verdict"))
+    t = _table("Office checks, for information: fcalc check judges them", ("check", "result", "source", "verdict"))
     for o in report.office:
         t.add_row(o.name, escape(o.text), o.source, verdict_text(o.outcome.value, strict))
     stdout().print(t)

@@ -314,5 +314,7 @@ def junit_xml(scenes: list[SceneRun], strict: bool = False, interrupted: str = "
 
 
 def write_junit(path: str | Path, scenes: list[SceneRun], strict: bool = False, interrupted: str = "") -> None:
-    """Write :func:`junit_xml` to ``path`` atomically."""
-    write_atomically(path, junit_xml(scenes, strict, interrupted))
+    """Write :func:`junit_xml` to ``path`` (:mod:`foundation_calc.output.files`: a regular file
+    atomically, a FIFO or a device in place); the report of an ``interrupted`` run does not wait
+    for a FIFO's reader (the signals that would end the wait are ignored by then)."""
+    write_atomically(path, junit_xml(scenes, strict, interrupted), wait=not interrupted)

@@ -67,8 +67,16 @@ def title(ax, text: str) -> None:
 
 
 def save(fig, path: str | Path) -> None:
-    """Write the figure as PNG (or the format of the path's suffix); unreferenced, it is freed."""
-    fig.savefig(path, dpi=120)
+    """Write the figure in the format of the path's suffix (PNG without one), drawn in memory and
+    written by the rule of :mod:`foundation_calc.output.files` (a regular file replaced whole, a
+    FIFO or a device written in place); unreferenced, the figure is freed."""
+    import io
+
+    from foundation_calc.output.files import write_atomically
+
+    buffer = io.BytesIO()
+    fig.savefig(buffer, dpi=120, format=Path(path).suffix[1:].lower() or "png")
+    write_atomically(path, buffer.getvalue())
 
 
 __all__ = ["FORMATS", "INSTALL_HINT", "mark_resonances", "new_figure", "plotting_available", "save", "title"]

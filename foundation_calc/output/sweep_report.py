@@ -29,15 +29,12 @@ def method(report) -> str:
     return " + ".join(parts)
 
 
-def _condition_label(condition) -> str:
-    """A condition's label, with "(loads)" for a harmonic of the scene's [[loads]]."""
-    return condition.label + (" (loads)" if condition.source == "loads" else "")
-
-
 def _governing(report, i: int) -> str | None:
-    """The label of the condition that governs point i's resonance verdict (None: no condition)."""
+    """The label of the condition that governs point i's resonance verdict (None: no condition):
+    the condition's own label, as resonance, amplitudes and check name it (its source, such as
+    the [[loads]], is the critical speeds' column, not part of its name)."""
     g = int(report.governing[i])
-    return None if g < 0 else _condition_label(report.conditions[g])
+    return None if g < 0 else report.conditions[g].label
 
 
 def status_text(row: dict) -> str:

@@ -25,7 +25,8 @@ def missing_packages(suffix: str) -> list[str]:
 def write_sheet(sheet, path: Path) -> list[Path]:
     """Write ``sheet`` to ``path`` in the format its suffix names; returns every file written.
 
-    A Markdown sheet's plots go beside it as ``<stem>-figureN.svg``.
+    A Markdown sheet's plots go beside it as ``<stem>-figureN.svg``. Every file is written by
+    the rule of :mod:`foundation_calc.output.files`.
     """
     from foundation_calc.output.files import write_atomically
 
@@ -47,8 +48,5 @@ def write_sheet(sheet, path: Path) -> list[Path]:
         return [path, *(path.parent / name for name in names)]
     from foundation_calc.output.report import pdf
 
-    data = pdf.render(sheet)
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_bytes(data)
-    tmp.replace(path)
+    write_atomically(path, pdf.render(sheet))
     return [path]
