@@ -39,7 +39,7 @@ OPTIONS = {
                                                     "--csv", f], b"omega_rad_s,"),
     "sweep --plot": ("sweep.png", lambda f: ["sweep", SAW, "--speed", "100:600:5", "--plot", f], b"\x89PNG"),
     "design --write": ("best.toml", lambda f: ["design", TWO, "--vary", "block.height=1.2:1.6", "--points", "2",
-                                               "--write", f], b"# Sized by fcalc design"),
+                                               "--write", f], b"# A reciprocating compressor and its drive motor"),
     "design --plot": ("design.svg", lambda f: ["design", TWO, "--vary", "block.height=1.2:1.6", "--points", "2",
                                                "--plot", f], b"<?xml"),
     "runup --plot": ("runup.png", lambda f: ["runup", SAW, "--time", "0.3", "--plot", f], b"\x89PNG"),
