@@ -58,7 +58,7 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         raise typer.BadParameter(f"no machine {machine!r}{hint}; the scene's machines: {', '.join(names)}", param_hint="'--machine'")
     swept = names.index(machine) if machine is not None else 0
-    model = loaded.stable_model()
+    model = loaded.model()
     impedance = loaded.soil_impedance if loaded.soil.frequency_dependent else None
     modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)

@@ -66,7 +66,6 @@ def sweep_document(rows, scene, source: str, machine: str) -> dict:
              "peak": dict(zip("xyz", r.peak)), "velocity_rms": dict(zip("xyz", r.velocity_rms)), "status": r.status.value}
             for r in rows
         ],
-        "warnings": scene.plausibility_warnings(),
     }
 
 
