@@ -259,7 +259,7 @@ def check_block(scene) -> BlockReport:
 
 def check_block_as_given(scene) -> BlockReport:
     """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
-    model = scene.model()
+    model = scene.stable_model()
     excitations = scene.excitations()
     impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
     modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)

@@ -120,7 +120,7 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> BlockSweep:
     from foundation_calc.solvers.block.sweep import speed_sweep
 
     omega = np.asarray(omega, dtype=float)
-    model = scene.model()
+    model = scene.stable_model()
     impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
     modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
     everyone = scene.excitations()

@@ -105,8 +105,8 @@ def _block_structures(scene):
     from foundation_calc.solvers.block.response import block_modes
     from foundation_calc.solvers.block.runup import machine_structure
 
-    model = scene.model()
-    block_modes(model)  # a PhysicsError naming the soil when the block is unstable
+    model = scene.stable_model()  # a PhysicsError naming the likely culprit when the block tips over
+    block_modes(model)
     at = [p.at for p in scene.points]
     built = [(e.name, machine_structure(model, e, at), e.omega) for e in scene.excitations()]
     return built, ("G", *(p.name for p in scene.points))

@@ -19,7 +19,7 @@ def resonance(loaded, source: str, json: bool, strict: bool, units: DisplayUnits
         print_json(out.resonance_document(report, loaded, source))
     else:
         out.print_resonance(report, loaded, source, units, strict)
-    return exit_code(report.resonance_outcome, strict)
+    return exit_code(report.resonance_outcome, strict, bool(loaded.plausibility_warnings()))
 
 
 def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnits) -> int:

@@ -58,6 +58,7 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
             for r in report.resonance_rows
         ],
         "modulus_range": None if report.resonance_range is None else report.resonance_range.document(),
+        "warnings": scene.plausibility_warnings(),
         "verdict": report.resonance_outcome.value,
     }
 

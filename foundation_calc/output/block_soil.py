@@ -33,6 +33,7 @@ def soil_document(model, scene, source: str) -> dict:
         "total_mass": model.mass,
         "base": {"length": scene.block.length, "width": scene.block.width},
         "springs": _rows(model),
+        "warnings": scene.plausibility_warnings(),
     }
 
 

@@ -15,19 +15,41 @@ from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoi
 from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
+from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
 from foundation_calc.scenes.project import Project
 from foundation_calc.scenes.soil import OnSoil
 
-#: Speed [rad/s] above which a machine's ``omega`` was probably meant as rpm (about 9500 rpm).
-BLOCK_OMEGA_PLAUSIBLE = 1000.0
+#: How far [m] a position may lie beyond the block's footprint or below its base and still count
+#: as on it: coordinates are typed to the millimetre (a point on an edge or a corner is on the block).
+ON_BLOCK = 1e-3
+
+#: What each code of :func:`placement` says about a position, after its key and value.
+PLACEMENT_TEXTS = {
+    1: "is more than {far:g} × the base's diagonal {size:.3g} m from O; was it typed in mm?",
+    2: "is below the block's base (z < 0; O is the centre of the base, z up); was z measured downward, or"
+       " from the block's top?",
+    3: "is outside the block's footprint (|x| <= L/2 = {x:g} m, |y| <= B/2 = {y:g} m; O is the centre of the"
+       " base); was it measured from a corner?",
+}
 
 
-def too_far(position, size):
-    """Whether a position [m] from O lies more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
-    × the base's diagonal ``size`` [m] (a float or an array of candidate sizes) away: probably mm typed as m."""
+def placement(position, L, B):
+    """Where positions [m] from O, shape (..., 3), lie on a block whose base is L × B [m] (floats,
+    or arrays over a batch of candidate blocks that broadcast with the positions' leading axes):
+    0 on the block (its footprint |x| <= L/2, |y| <= B/2, at or above its base z = 0, to
+    :data:`ON_BLOCK`), 1 more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` ×
+    the base's diagonal from O (probably mm typed as m), 2 below the base, 3 beyond the footprint.
+
+    >>> placement([[0.5, 0.0, 2.0], [0.5, 0.0, -1.0], [4.0, 0.0, 1.0], [0.0, 0.0, 900.0]], 6.0, 4.0).tolist()
+    [0, 2, 3, 1]
+    """
     import numpy as np
 
-    return np.max(np.abs(np.asarray(position, dtype=float)), axis=-1) > LENGTH_SCALE_FACTOR * size
+    p = np.asarray(position, dtype=float)
+    far = np.max(np.abs(p), axis=-1) > LENGTH_SCALE_FACTOR * np.hypot(L, B)
+    below = p[..., 2] < -ON_BLOCK
+    beyond = (np.abs(p[..., 0]) > L / 2.0 + ON_BLOCK) | (np.abs(p[..., 1]) > B / 2.0 + ON_BLOCK)
+    return np.where(far, 1, np.where(below, 2, np.where(beyond, 3, 0)))
 
 
 class BlockLimits(Limits):
@@ -52,7 +74,7 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(OnSoil, SceneModel):
+class BlockScene(Plausible, OnSoil, SceneModel):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
@@ -98,34 +120,59 @@ class BlockScene(OnSoil, SceneModel):
         """(L, B): the base's length along x and width along y [m]."""
         return self.block.length, self.block.width
 
-    def plausibility_warnings(self) -> list[str]:
-        """Values that are valid but probably in the wrong unit: a length over
-        :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal (mm typed
-        as m), a machine ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
+    def positions(self) -> dict[str, list[float]]:
+        """The positions [m] from O that the scene gives, by key as written: every machine's centre
+        of mass, its loads' and unbalance's points, the checked points, and the block's centre of
+        mass when the block is given by its mass."""
+        found = {} if self.block.cog is None else {"block.cog": self.block.cog}
+        for i, m in enumerate(self.machines):
+            found[f"machines[{i}].cog"] = m.cog
+            found |= {f"machines[{i}].loads[{j}].at": ld.at for j, ld in enumerate(m.loads) if ld.at is not None}
+            if m.unbalance is not None and m.unbalance.at is not None:
+                found[f"machines[{i}].unbalance.at"] = m.unbalance.at
+        return found | {f"points[{k}].at": p.at for k, p in enumerate(self.points)}
+
+    def related_findings(self, prefix: str, found: list) -> list:
+        """The positions that are not on the block (:func:`placement`): more than
+        :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal from O (mm
+        typed as m), below its base or beyond its footprint (measured from a corner, or downward);
+        the table judges every other key (:func:`~foundation_calc.scenes.plausibility.findings`)."""
+        positions = self.positions()
         L, B = self.base
-        size = (L * L + B * B) ** 0.5
-        found = [
-            f"{key} = {list(value)} m is more than {LENGTH_SCALE_FACTOR:g} × the base's diagonal {size:.3g} m from O;"
-            " was it typed in mm?"
-            for key, value in self.plausible_lengths().items()
-            if too_far(value, size)
-        ]
-        return found + self.speed_warnings()
+        codes = placement(list(positions.values()), L, B).tolist() if positions else []
+        sizes = {"far": LENGTH_SCALE_FACTOR, "size": (L * L + B * B) ** 0.5, "x": L / 2.0, "y": B / 2.0}
+        return [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
+                for (key, value), code in zip(positions.items(), codes) if code]
 
-    def plausible_lengths(self) -> dict[str, list[float]]:
-        """The positions [m] from O that :meth:`plausibility_warnings` compares with the base's diagonal, by key."""
-        lengths = {f"machines.{m.name!r}.cog": m.cog for m in self.machines}
-        lengths |= {f"machines.{m.name!r}.loads[{i}].at": ld.at for m in self.machines for i, ld in enumerate(m.loads) if ld.at}
-        return lengths | {f"points.{p.name!r}.at": p.at for p in self.points}
+    def stable_model(self):
+        """:meth:`model` of the scene as it is, for the checks.
 
-    def speed_warnings(self) -> list[str]:
-        """The machine speeds ``omega`` above :data:`BLOCK_OMEGA_PLAUSIBLE` (rpm typed as rad/s)."""
-        return [
-            f"machines.{m.name!r}.omega = {m.omega:g} rad/s is {m.omega * 30 / 3.141592653589793:.4g} rpm; if you meant"
-            f" {m.omega:g} rpm, write speed_rpm = {m.omega:g}"
-            for m in self.machines
-            if m.omega is not None and m.omega > BLOCK_OMEGA_PLAUSIBLE
-        ]
+        Raises
+        ------
+        PhysicsError
+            when the block tips over: a rocking spring at O no stiffer than the weight's
+            overturning moment W z_G (README "Block foundation"), naming the likely culprit, an
+            implausible input the springs or the weight depend on (a modulus typed in MPa, a block
+            in mm), or else the key that sets the rocking springs.
+        """
+        import numpy as np
+
+        from foundation_calc.solvers.constants import GRAVITY
+
+        model = self.model()
+        rocking = np.diagonal(model.K)[3:5]  # K_rx, K_ry less W z_G (block_model)
+        if (rocking > 0.0).all():
+            return model
+        axis = "x" if not rocking[0] > 0.0 else "y"
+        spring, tilt = float(model.springs[3 if axis == "x" else 4]), float(model.mass * GRAVITY * model.cog[2])
+        text = (f"the block tips over about {axis}: its rocking spring K_r{axis} = {spring:.4g} N m/rad at O does not"
+                f" exceed the overturning moment of the weight W z_G = {tilt:.4g} N m per rad"
+                f" (K_r{axis}/(W z_G) - 1 = {spring / tilt - 1.0:.4g})")
+        weight = ("machines[].mass", "machines[].cog")
+        culprits = [x for x in self.plausibility_findings() if x.key not in self.soil.not_rocking
+                    and (x.key.startswith(("soil.", "block.", "V_s")) or key_pattern(x.key) in weight)]
+        key = self.soil.rocking_key
+        raise culprit_error(text, culprits, key, f"stiffen {key}, or lower the centre of mass (block.height, machines[].cog)")
 
     def _bodies(self, block=None, machine_cogs=None):
         """(masses, cogs, central inertias) of the block and every machine (``block`` and

@@ -98,6 +98,12 @@ class BlockSoil(Soil):
             "modulus_range": None,
         })
 
+    @property
+    def rocking_key(self) -> str:
+        """The key that sets the rocking springs: ``soil.stiffness`` given at O, else the method's
+        (:attr:`Soil.rocking_key`)."""
+        return "soil.stiffness" if self.method_used == "springs" else super().rocking_key
+
     @model_validator(mode="after")
     def _method_has_its_data(self):
         method = self.method_used

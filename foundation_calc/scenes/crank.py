@@ -23,7 +23,7 @@ from foundation_calc.scenes.common import (
     quantity,
 )
 from foundation_calc.scenes.foundation import Foundation
-from foundation_calc.scenes.plausibility import Remark, judge
+from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
 from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
@@ -141,13 +141,6 @@ class Limits(SceneModel):
     def _detuning_bands(cls, value):
         return detuning_bands(value)
 
-    def plausibility_findings(self) -> list:
-        """The limits outside the ranges of :data:`~foundation_calc.scenes.plausibility.RANGES`."""
-        ranges = {"amplitude": "amplitude_limit", "amplitude_rms": "amplitude_limit", "velocity": "velocity_limit",
-                  "velocity_rms": "velocity_limit", "acceleration": "acceleration_limit",
-                  "acceleration_rms": "acceleration_limit", "transient_amplitude": "transient_amplitude_limit"}
-        return [f for key, name in ranges.items() for f in judge(f"limits.{key}", getattr(self, key), name)]
-
     @field_validator("code", mode="before")
     @classmethod
     def _known_code(cls, code):
@@ -252,7 +245,7 @@ def _largest(x) -> float:
     return float(x.max()) if getattr(x, "ndim", 0) else float(x)
 
 
-class CrankScene(OnSoil, SceneModel):
+class CrankScene(Plausible, OnSoil, SceneModel):
     """A scene of kind ``crank_foundation``."""
 
     kind: Literal["crank_foundation"] = quantity("-", "-", 'scene kind, always "crank_foundation"')
@@ -293,18 +286,11 @@ class CrankScene(OnSoil, SceneModel):
             raise ValueError(f"point names must be distinct and not 'C' (the centre of mass): {', '.join(repeated)}")
         return points
 
-    def plausibility_warnings(self) -> list[str]:
-        """The text of every :meth:`plausibility_findings` (never an error)."""
-        return [str(f) for f in self.plausibility_findings()]
-
-    def plausibility_findings(self) -> list:
-        """Values that are valid but probably typed in the wrong unit (mm as m, t/m³ as kg/m³, rpm
-        as rad/s, degrees as radians), each naming the key as the scene file writes it.
-
-        Values outside :data:`~foundation_calc.scenes.plausibility.RANGES` (foundation, soil,
-        limits, load phases, speed, the block-to-machine mass ratio); a length of the machine, a
-        load or a point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the
-        foundation's size sqrt(S) away.
+    def related_findings(self, prefix: str, found: list) -> list:
+        """Values implausible against the rest of the scene (the table judges each key on its own,
+        :func:`~foundation_calc.scenes.plausibility.findings`): a length of the machine, a load or a
+        point more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the
+        foundation's size sqrt(S) away (mm typed as m), and the block-to-machine mass ratio.
         """
         size = self.foundation.base_area**0.5
         mech = self.mechanism
@@ -318,22 +304,16 @@ class CrankScene(OnSoil, SceneModel):
             **machine,
             **{f"loads[{i}].at.horizontal": load.at.horizontal for i, load in enumerate(self.loads)},
             **{f"loads[{i}].at.height": load.at.height for i, load in enumerate(self.loads)},
-            **{f"points.{p.name!r}.horizontal": p.horizontal for p in self.points},
-            **{f"points.{p.name!r}.height": p.height for p in self.points},
+            **{f"points[{i}].horizontal": p.horizontal for i, p in enumerate(self.points)},
+            **{f"points[{i}].height": p.height for i, p in enumerate(self.points)},
         }
-        found: list = [*self.foundation.plausibility_findings(), *self.soil.plausibility_findings()]
-        found += [
+        far = [
             Remark(key, f"{key} = {value:g} m is {abs(value) / size:.3g} × the foundation's size sqrt(S) = {size:.3g} m;"
                    " was it typed in mm?")
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
-        found += self.limits.plausibility_findings()
-        found += [f for i, load in enumerate(self.loads) for f in judge(f"loads[{i}].phase", load.phase, "phase")]
-        if mech is not None:
-            found += judge("mechanism.omega", mech.omega, "crank_speed")
-        found += self._mass_ratio_findings(found)
-        return found
+        return far + self._mass_ratio_findings(found + far)
 
     def _mass_ratio_findings(self, found: list) -> list:
         """The block-to-machine mass ratio against the rule of thumb, for a scene that gives
@@ -453,32 +433,19 @@ class CrankScene(OnSoil, SceneModel):
         K_phi, overturning = -_largest(-springs.K_phi), self.total_mass * GRAVITY * f.cog_height
         if K_phi > overturning:
             return
-        unrelated = ("soil.c_x", "soil.c_z" if self.soil.c_phi is not None else "soil.c_x")  # no part of K_φ
         culprits = [x for x in self.plausibility_findings()
-                    if any(part in x.key for part in ("soil.", "foundation.")) and x.key not in unrelated]
+                    if any(part in x.key for part in ("soil.", "foundation.")) and x.key not in self.soil.not_rocking]
         text = (
             f"the foundation is unstable in rocking: the soil's rocking stiffness K_φ = c_φ·I1 = {K_phi:.4g} N m"
             f" does not exceed the overturning moment of the weight P·h = {overturning:.4g} N m"
             f" (c_φ·I1/(P·h) - 1 = {K_phi / overturning - 1.0:.4g})"
         )
-        if culprits:
-            raise PhysicsError(text + "; likely culprit: " + "; ".join(x.brief() for x in culprits), field=culprits[0].key)
-        spring = self._rocking_spring_key()
+        spring = self.soil.rocking_key
         base = "foundation.base_second_moment" if f.given("base_second_moment") else (
             "foundation.base_length" if f.given("base_length") else "foundation.block.length")
         height = "foundation.cog_height" if f.given("cog_height") else "foundation.block.height" + (
             "" if f.machine is None else " and foundation.machine.cog_height")
-        raise PhysicsError(text, field=spring, hint=f"increase {spring} or {base}, or lower {height}")
-
-    def _rocking_spring_key(self) -> str:
-        """The key of the scene's soil method that sets the rocking spring K_φ."""
-        s = self.soil
-        method = s.method_used
-        if method == "coefficients":
-            return "soil.c_phi" if s.c_phi is not None else "soil.c_z"
-        if method == "sp26":
-            return "soil.deformation_modulus"
-        return "soil.shear_modulus" if s.shear_modulus is not None else "soil.shear_wave_velocity"
+        raise culprit_error(text, culprits, spring, f"increase {spring} or {base}, or lower {height}")
 
     def block(self, soil_frequency: float = 0.0) -> RigidBlock:
         """The block (with the whole machine's mass) on the soil method's springs and dashpots, for

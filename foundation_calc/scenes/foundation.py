@@ -12,7 +12,7 @@ from typing import ClassVar
 from pydantic import model_validator
 
 from foundation_calc.scenes.common import SceneModel, quantity
-from foundation_calc.scenes.plausibility import RANGES, Remark, judge
+from foundation_calc.scenes.plausibility import RANGES, Remark
 
 #: Relative difference within which a given value and the same value computed from other keys
 #: (base_area from base_length × base_width, mass from the block…) count as agreeing [-]:
@@ -180,19 +180,14 @@ class Foundation(SceneModel):
         """True when the scene file gives ``key`` (not computed from other keys)."""
         return key in self.model_fields_set
 
-    def plausibility_findings(self) -> list:
-        """The keys the scene gives whose values lie outside the foundation rows of
-        :data:`~foundation_calc.scenes.plausibility.RANGES`: base, block, mass (a value computed
-        from other keys is judged through them)."""
-        mine = {"mass": "foundation_mass", "base_area": "base_area", "base_length": "block_length",
-                "base_width": "block_length"}
-        found = [f for k, name in mine.items() if self.given(k) for f in judge(f"foundation.{k}", getattr(self, k), name)]
+    def related_findings(self, prefix: str, found: list) -> list:
+        """A base given by S and I1 alone whose rectangle lies outside the plausible plan dimensions,
+        when the foundation's keys themselves are plausible (``found``: their findings;
+        :func:`~foundation_calc.scenes.plausibility.findings` judges the keys the scene gives, a value
+        computed from other keys through them)."""
         if self.given("base_second_moment") and not self.given("base_length") and self.block is None and not found:
-            found += self._base_rectangle_findings()
-        if self.block is not None:
-            block = {"length": "block_length", "width": "block_length", "height": "block_height", "density": "block_density"}
-            found += [f for k, name in block.items() for f in judge(f"foundation.block.{k}", getattr(self.block, k), name)]
-        return found
+            return self._base_rectangle_findings()
+        return []
 
     def _base_rectangle_findings(self) -> list:
         """I1 that makes the base a rectangle outside the plausible plan dimensions, given S."""

@@ -17,7 +17,7 @@ from typing import Annotated, Literal
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
-from foundation_calc.scenes.plausibility import Remark, judge
+from foundation_calc.scenes.plausibility import Plausible, Remark
 from foundation_calc.scenes.project import Project
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
@@ -159,10 +159,11 @@ class Limits(SceneModel):
 
 
 #: What a warning about a value given on the command line advises instead (formatted with the value).
-OPTION_ADVICE = {"operation.omega": "use --rpm {value:g}"}
+OPTION_ADVICE = {"operation.omega": "use --rpm {value:g}", "operation.speed_rpm": "use --hz {value:g}",
+                 "operation.frequency_hz": "use --rpm {value:g}"}
 
 
-class PlatformScene(SceneModel):
+class PlatformScene(Plausible, SceneModel):
     """A scene of kind ``platform``."""
 
     kind: Literal["platform"] = quantity("-", "-", 'scene kind, always "platform"')
@@ -194,22 +195,20 @@ class PlatformScene(SceneModel):
         """``key``, or the command-line option that gave its value."""
         return self._given_as.get(key, key)
 
-    def plausibility_warnings(self) -> list[str]:
-        """The text of every :meth:`plausibility_findings` (never an error)."""
-        return [str(f) for f in self.plausibility_findings()]
+    def related_findings(self, prefix: str, found: list) -> list:
+        """An exciter eccentricity more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR`
+        × the platform (mm typed as m); the table judges every other key
+        (:func:`~foundation_calc.scenes.plausibility.findings`)."""
+        if self.exciter.eccentricity <= LENGTH_SCALE_FACTOR * max(self.platform.length, self.platform.width):
+            return []
+        return [Remark("exciter.eccentricity", f"exciter.eccentricity = {self.exciter.eccentricity:g} m"
+                       " exceeds the platform; was it typed in mm?")]
 
     def plausibility_findings(self) -> list:
-        """Values that are valid but probably typed in the wrong unit (mm as m, rpm as rad/s):
-        the amplitude and speed outside :data:`~foundation_calc.scenes.plausibility.RANGES`, an
-        eccentricity more than :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the platform."""
-        op, size = self.operation, max(self.platform.length, self.platform.width)
-        found: list = [*judge("operation.amplitude", op.amplitude, "platform_amplitude")]
-        if self.exciter.eccentricity > LENGTH_SCALE_FACTOR * size:
-            found.append(Remark("exciter.eccentricity", f"exciter.eccentricity = {self.exciter.eccentricity:g} m"
-                                " exceeds the platform; was it typed in mm?"))
-        found += judge("operation.omega", op.omega, "platform_speed")
+        """The table's findings (:class:`~foundation_calc.scenes.plausibility.Plausible`), a value
+        given on the command line named by its option (``--amp``) with the option's advice."""
         return [f if self.key_as_given(f.key) == f.key else replace(f, key=self.key_as_given(f.key), advice=OPTION_ADVICE.get(f.key, ""))
-                for f in found]
+                for f in super().plausibility_findings()]
 
     @model_validator(mode="after")
     def _position_or_vertical(self):

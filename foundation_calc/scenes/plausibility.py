@@ -5,7 +5,16 @@ unit: soil density 1.8 (t/m³ for kg/m³), a block 6000 long (mm for m), an ampl
 (mm for m), a load phase -90 (degrees for radians). Such a value is a *warning* about the input,
 never an error: it is printed on stderr, listed in the JSON ``warnings`` and on the calculation
 sheet, and changes the exit code only with ``--strict``. Every range is one row of
-:data:`RANGES`, with its source; the scene models name the key as the user wrote it.
+:data:`RANGES`, with its source.
+
+One table serves every scene kind: :data:`KEYS` says which range judges each key a scene file may
+give (``soil.density``, ``machines[].loads[].phase``), :data:`INERTIA_KEYS` which moments of
+inertia are judged against the mass beside them, and :func:`findings` walks any validated scene
+and judges every value its file gives, naming the key as the user wrote it
+(``machines[0].loads[1].phase``). Rules that relate several values (a position against the
+block's size, a mass ratio) belong to the model that holds them: a model's ``related_findings``
+method, which :func:`findings` calls after judging the model's own keys. A scene kind inherits
+:class:`Plausible` and is judged by construction.
 
 A :class:`Slip` is suggested only when the value is far outside (:attr:`PlausibleRange.slip_beyond`)
 and the value in that unit lands inside the range, so a soft but real soil is not told it was
@@ -15,7 +24,10 @@ typed in kN/m³.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, replace
+
+from foundation_calc.errors import PhysicsError
 
 
 def _number(value: float) -> str:
@@ -58,12 +70,19 @@ class PlausibleRange:
             return f"±{_number(self.high)}{unit}"
         return f"{_number(self.low)} to {_number(self.high)}{unit}"
 
+    def outside(self, value):
+        """True where ``value`` (a float or an array of candidates) lies outside the range."""
+        size = abs(value) if self.magnitude else value
+        return (size < self.low) | (size > self.high)
+
     def judge(self, key: str, value: float) -> "Implausible | None":
         """The finding for ``key = value`` (key as the user wrote it), or None inside the range."""
-        size = abs(value) if self.magnitude else value
-        if self.low <= size <= self.high:
-            return None
-        return Implausible(key, value, self)
+        return Implausible(key, value, self) if self.outside(value) else None
+
+    def in_unit(self, unit: str, per_unit: float, slips: tuple[Slip, ...]) -> "PlausibleRange":
+        """The same range for a value given in ``unit``, one of which is ``per_unit`` of this
+        range's unit (a speed as ``speed_rpm``: rpm, π/30 rad/s), with that unit's ``slips``."""
+        return replace(self, unit=unit, low=self.low / per_unit, high=self.high / per_unit, slips=slips)
 
 
 #: Standard gravity [m/s²], which defines the kilogram-force of kgf/cm³ and turns unit weights into densities.
@@ -80,6 +99,7 @@ _LIGHT_BLOCK = (
     " foundation.machine.mass and the block's dimensions"
 )
 _RPM = Slip("rpm", math.pi / 30.0, "write speed_rpm = {value:g}")
+_SPEED_BASIS = "large ball mills turn at about 12 rpm (1.2 rad/s)"
 
 #: Every plausible range, by name (one name may serve several keys: block and base lengths).
 RANGES: dict[str, PlausibleRange] = {
@@ -149,7 +169,7 @@ RANGES: dict[str, PlausibleRange] = {
     ),
     "transient_amplitude_limit": PlausibleRange(
         "displacement limits during start-up and run-down", "m", 1e-6, 5e-2, _JUDGEMENT, (_MM, _MICRON),
-        basis="ten times the steady limits: a passage through resonance may be allowed more",
+        slip_beyond=1.0, basis="ten times the steady limits: a passage through resonance may be allowed more",
     ),
     "velocity_limit": PlausibleRange(
         "velocity limits of machine foundations", "m/s", 1e-4, 5e-2, _JUDGEMENT, (Slip("mm/s", 1e-3),),
@@ -176,12 +196,26 @@ RANGES: dict[str, PlausibleRange] = {
         " a machine given by its loads may be either, so the lower rule; above 100 × is fcalc's bracket",
     ),
     "crank_speed": PlausibleRange(
-        "crank speeds", "rad/s", 0.0, 200.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
-        basis="frame saws run at 250-350 rpm, compressors up to about 1000 rpm; 200 rad/s is 1900 rpm",
+        "crank speeds", "rad/s", 1.2, 200.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
+        basis=f"frame saws run at 250-350 rpm, compressors up to about 1000 rpm; 200 rad/s is 1900 rpm; {_SPEED_BASIS}",
     ),
-    "platform_speed": PlausibleRange(
-        "exciter speeds of vibro-tables", "rad/s", 0.0, 1000.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
-        basis="1000 rad/s is about 9500 rpm",
+    "machine_speed": PlausibleRange(
+        "machine speeds", "rad/s", 1.2, 1000.0, _JUDGEMENT, (_RPM,), slip_beyond=1.0,
+        basis=f"1000 rad/s is about 9500 rpm; {_SPEED_BASIS}",
+    ),
+    "machine_mass": PlausibleRange(
+        "masses of machines on foundations", "kg", 100.0, 5e6, _JUDGEMENT, (Slip("t", 1e3),), slip_beyond=1.0,
+        basis="a pump of 100 kg to a turbine-generator set of 5000 t; a machine lighter than 100 kg has no block"
+        " of its own, so a lighter mass was probably typed in t",
+    ),
+    "radius_of_gyration": PlausibleRange(
+        "radii of gyration k = sqrt(J/m) about the centre of mass", "m", 0.1, 30.0, _JUDGEMENT,
+        basis="a moment of inertia J is m k²: a body 0.3 m across has k of about 0.1 m, a 60 m mat about 17 m;"
+        " J typed in t·m² makes k 32 times too small",
+    ),
+    "balance_grade": PlausibleRange(
+        "balance quality grades", "mm/s", 0.4, 4000.0, "ISO 21940-11, Table 1", (Slip("m/s", 1e3),),
+        basis="grades G 0.4 (gyroscopes, precision spindles) to G 4000 (crankshafts of slow marine diesel engines)",
     ),
     "platform_amplitude": PlausibleRange(
         "amplitudes of vibro-tables", "m", 1e-4, 1e-2, _JUDGEMENT, (_MM,),
@@ -279,4 +313,145 @@ def judge(key: str, value: float | None, range_name: str) -> list[Implausible]:
     return [] if found is None else [found]
 
 
-__all__ = ["Implausible", "PlausibleRange", "RANGES", "Remark", "Slip", "judge"]
+def _speeds(prefix: str, range_name: str) -> dict[str, str]:
+    """The three keys of a speed (``omega``, ``speed_rpm``, ``frequency_hz``) under ``prefix``."""
+    return {f"{prefix}{name}": range_name for name in ("omega", *SPEED_UNITS)}
+
+
+#: A speed given in another unit than rad/s is judged in its own unit: key's last name -> (unit,
+#: rad/s per unit, the slips of that unit). ``omega`` is judged in rad/s with the range's slips.
+SPEED_UNITS: dict[str, tuple[str, float, tuple[Slip, ...]]] = {
+    "speed_rpm": ("rpm", math.pi / 30.0, (Slip("Hz", 60.0, "write frequency_hz = {value:g}"),)),
+    "frequency_hz": ("Hz", 2.0 * math.pi, (Slip("rpm", 1.0 / 60.0, "write speed_rpm = {value:g}"),)),
+}
+
+#: The range that judges each key a scene file may give, for every scene kind: the key as written,
+#: ``[]`` standing for any list index. A key that is not listed is not judged on its own (a
+#: position is judged against the block by its scene's ``related_findings``).
+KEYS: dict[str, str] = {
+    # the soil (crank and block foundations; only the keys of the scene's method can be given)
+    "soil.density": "soil_density",
+    "soil.shear_modulus": "shear_modulus",
+    "soil.shear_wave_velocity": "shear_wave_velocity",
+    "soil.poisson": "poisson",
+    "soil.deformation_modulus": "deformation_modulus",
+    **{f"soil.{k}": "subgrade_coefficient" for k in ("c_z", "c_x", "c_phi", "c_psi")},
+    # a crank foundation's [foundation] (a value computed from [foundation.block] is judged through it)
+    "foundation.mass": "foundation_mass",
+    "foundation.base_area": "base_area",
+    "foundation.base_length": "block_length",
+    "foundation.base_width": "block_length",
+    "foundation.block.length": "block_length",
+    "foundation.block.width": "block_length",
+    "foundation.block.height": "block_height",
+    "foundation.block.density": "block_density",
+    # a block foundation's [block] and [[machines]]
+    "block.length": "block_length",
+    "block.width": "block_length",
+    "block.height": "block_height",
+    "block.density": "block_density",
+    "block.mass": "foundation_mass",
+    "machines[].mass": "machine_mass",
+    "machines[].unbalance.balance_grade_mm_s": "balance_grade",
+    # limits (crank and block foundations; a platform's transient_amplitude)
+    **{f"limits.{k}": "amplitude_limit" for k in ("amplitude", "amplitude_rms")},
+    **{f"limits.{k}": "velocity_limit" for k in ("velocity", "velocity_rms")},
+    **{f"limits.{k}": "acceleration_limit" for k in ("acceleration", "acceleration_rms")},
+    "limits.transient_amplitude": "transient_amplitude_limit",
+    # phases of loads and rotors
+    "loads[].phase": "phase",
+    "machines[].loads[].phase": "phase",
+    "extra_exciters[].phase": "phase",
+    # speeds: a crank mechanism's, a machine's given by its loads (crank [operation], [[machines]]), a platform's exciter
+    **_speeds("mechanism.", "crank_speed"),
+    **_speeds("operation.", "machine_speed"),
+    **_speeds("machines[].", "machine_speed"),
+    "operation.amplitude": "platform_amplitude",
+}
+
+#: Moments of inertia about a body's own centre of mass, each judged as J = m k² against the
+#: ``mass`` beside it and :data:`RANGES` ``["radius_of_gyration"]`` (J typed in t·m² lies 1000 × low).
+INERTIA_KEYS: tuple[str, ...] = (
+    "machines[].inertia", "block.inertia", "platform.inertia", "foundation.moment_of_inertia",
+    "foundation.machine.moment_of_inertia",
+)
+
+
+def key_pattern(key: str) -> str:
+    """``key`` with every list index as ``[]``: ``machines[0].loads[1].phase`` -> ``machines[].loads[].phase``."""
+    return re.sub(r"\[\d+\]", "[]", key)
+
+
+def _inertia(key: str, inertia, mass: float) -> list[Implausible]:
+    """The first component of ``inertia`` [kg m²] (a number or [Jx, Jy, Jz]; 0 is a point mass and
+    not judged) outside m k² with the radii of gyration of :data:`RANGES`, ``mass`` [kg] its body's."""
+    k = RANGES["radius_of_gyration"]
+    plausible = PlausibleRange(
+        f"moments of inertia of a body of {_number(mass)} kg about its centre of mass (k = {k.span()})",
+        "kg m²", mass * k.low**2, mass * k.high**2, k.source, (Slip("t·m²", 1e3),), slip_beyond=1.0,
+    )
+    parts = [(key, inertia)] if isinstance(inertia, (int, float)) else [(f"{key}[{i}]", j) for i, j in enumerate(inertia)]
+    return next(([found] for part, j in parts if j > 0 and (found := plausible.judge(part, j))), [])
+
+
+def _judge_key(key: str, value, model) -> list[Implausible]:
+    """The finding of one value the user gave, ``key`` as written, ``model`` the table holding it."""
+    pattern = key_pattern(key)
+    if pattern in INERTIA_KEYS:
+        return _inertia(key, value, model.mass)
+    name = KEYS.get(pattern)
+    if name is None or not isinstance(value, (int, float)):
+        return []
+    plausible = RANGES[name]
+    unit = SPEED_UNITS.get(pattern.rsplit(".", 1)[-1])
+    found = (plausible if unit is None else plausible.in_unit(*unit)).judge(key, value)
+    return [] if found is None else [found]
+
+
+def findings(model, prefix: str = "") -> list:
+    """Every value the scene file gives in ``model`` (a validated scene, or a table of one under the
+    key ``prefix``) outside its range of :data:`KEYS` or :data:`INERTIA_KEYS`, field by field and
+    depth first, each named as written (``machines[0].loads[1].phase``); after a table's own keys,
+    its ``related_findings(prefix, found)`` (``found``: the findings in the table so far), if it has
+    one. A value the scene computes from others is not judged (it is not among the fields set).
+    """
+    found: list = []
+    for name in (n for n in type(model).model_fields if n in model.model_fields_set):
+        value, key = getattr(model, name), f"{prefix}{name}"
+        if hasattr(value, "model_fields_set"):
+            found += findings(value, f"{key}.")
+        elif isinstance(value, list) and value and hasattr(value[0], "model_fields_set"):
+            for i, item in enumerate(value):
+                found += findings(item, f"{key}[{i}].")
+        else:
+            found += _judge_key(key, value, model)
+    related = getattr(model, "related_findings", None)
+    return found + (related(prefix, found) if related is not None else [])
+
+
+class Plausible:
+    """A scene kind whose inputs the table judges (every kind inherits it): :func:`findings` of the
+    scene, and of its own ``related_findings`` rules."""
+
+    def plausibility_findings(self) -> list:
+        """Values that are valid but probably typed in the wrong unit (:func:`findings`), never an error."""
+        return findings(self)
+
+    def plausibility_warnings(self) -> list[str]:
+        """The text of every :meth:`plausibility_findings`."""
+        return [str(f) for f in self.plausibility_findings()]
+
+
+def culprit_error(text: str, culprits: list, field: str, hint: str) -> PhysicsError:
+    """The error of a foundation that tips over, ``text`` saying why: it names the likely culprits,
+    implausible inputs the rocking spring or the overturning moment depends on (a modulus typed in
+    MPa, a block in mm), else ``field``, the key to change, and ``hint``."""
+    if culprits:
+        return PhysicsError(f"{text}; likely culprit: " + "; ".join(x.brief() for x in culprits), field=culprits[0].key)
+    return PhysicsError(text, field=field, hint=hint)
+
+
+__all__ = [
+    "INERTIA_KEYS", "KEYS", "Implausible", "Plausible", "PlausibleRange", "RANGES", "Remark", "SPEED_UNITS", "Slip",
+    "culprit_error", "findings", "judge", "key_pattern",
+]

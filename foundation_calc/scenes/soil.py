@@ -221,24 +221,30 @@ class Soil(SceneModel):
             return self.shear_wave_velocity
         return (self.shear_modulus / self.density) ** 0.5
 
-    def plausibility_findings(self) -> list:
-        """The method's values outside the soil ranges of :data:`~foundation_calc.scenes.plausibility.RANGES`
-        (never an error). The derived V_s = sqrt(G/ρ) is judged when G and ρ themselves are
-        plausible: a slow V_s then means a static modulus where a dynamic one is meant."""
+    def related_findings(self, prefix: str, found: list) -> list:
+        """The derived V_s = sqrt(G/ρ) outside the range of shear wave velocities, when G and ρ
+        themselves are plausible (``found``: the soil's findings): a slow V_s then means a static
+        modulus where a dynamic one is meant (:func:`~foundation_calc.scenes.plausibility.findings`
+        judges the keys themselves)."""
+        if found or self.method_used not in HALF_SPACE_METHODS or self.shear_wave_velocity is not None:
+            return []
+        return judge(f"V_s = sqrt({prefix}shear_modulus/{prefix}density)", self.V_s, "shear_wave_velocity")
+
+    @property
+    def rocking_key(self) -> str:
+        """The key of the scene's soil method that sets the rocking spring K_φ."""
         method = self.method_used
         if method == "coefficients":
-            return [f for k in ("c_z", "c_x", "c_phi") for f in judge(f"soil.{k}", getattr(self, k), "subgrade_coefficient")]
+            return "soil.c_phi" if self.c_phi is not None else "soil.c_z"
         if method == "sp26":
-            return judge("soil.deformation_modulus", self.deformation_modulus, "deformation_modulus")
-        found = [
-            *judge("soil.density", self.density, "soil_density"),
-            *judge("soil.poisson", self.poisson, "poisson"),
-            *judge("soil.shear_modulus", self.shear_modulus, "shear_modulus"),
-            *judge("soil.shear_wave_velocity", self.shear_wave_velocity, "shear_wave_velocity"),
-        ]
-        if not found and self.shear_wave_velocity is None:
-            found = judge("V_s = sqrt(soil.shear_modulus/soil.density)", self.V_s, "shear_wave_velocity")
-        return found
+            return "soil.deformation_modulus"
+        return "soil.shear_modulus" if self.shear_modulus is not None else "soil.shear_wave_velocity"
+
+    @property
+    def not_rocking(self) -> tuple[str, ...]:
+        """The keys of the soil that no rocking spring depends on (never the culprit of a block that
+        tips over): Barkan's c_x and c_ψ, and c_z when c_φ is given."""
+        return ("soil.c_x", "soil.c_psi") + (("soil.c_z",) if self.c_phi is not None else ())
 
     def methods_allowed(self) -> tuple[str, ...]:
         """Every method the data allow: the half-space data feed Lysmer, Gazetas and Pais & Kausel."""

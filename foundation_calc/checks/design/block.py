@@ -22,8 +22,10 @@ those on an end face follow the face), as ``fcalc check`` sees the scene of
   peaks (machines' peaks added) and RMS values (root-sum-square) of G and the points against
   ``[limits]``, and the code zone of each point's largest RMS velocity;
 - ``office``: eccentricity of the combined centre of mass, bearing pressure, mass ratio;
-- ``inputs``: the positions of the scene more than 10 × the base's diagonal from O, and machine
-  speeds typed in rpm (a warning; no number);
+- ``inputs``: the plausibility warnings of the candidate's scene (a warning; no number): its
+  positions off the block (more than 10 × the base's diagonal from O, below the base, beyond the
+  footprint), its dimensions against their ranges, and the scene's findings that do not depend on
+  the block;
 - ``runup``: not evaluated here (:data:`NOT_EVALUATED`).
 
 Utilisation (demand over capacity, :mod:`.candidates`): resonance, the margin the governing
@@ -210,21 +212,28 @@ def _office(scene, model, L, B, m_b):
     return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
 
 
-def _inputs(scene, L, B, place):
-    """Outcome and governing index of the ``inputs`` check (plausibility warnings): a position
-    more than 10 × the candidate's base diagonal from O, or a speed typed in rpm."""
-    from foundation_calc.scenes.block import too_far
+def _inputs(scene, L, B, H, place):
+    """Outcome and governing index of the ``inputs`` check (plausibility warnings), as ``fcalc
+    check`` finds them on each candidate's scene: a position not on the candidate's block
+    (:func:`~foundation_calc.scenes.block.placement`: mm typed as m, below the base, beyond the
+    footprint), a dimension outside its plausible range, or any finding of the scene that does not
+    depend on the block (the soil, the machines, the limits)."""
+    from foundation_calc.scenes.block import placement
+    from foundation_calc.scenes.plausibility import KEYS, RANGES
 
-    size = np.sqrt(L * L + B * B)
-    far = np.zeros(L.shape, dtype=bool)
-    for position in scene.plausible_lengths().values():
-        far |= too_far(place(position), size)
-    fast = bool(scene.speed_warnings())
-    outcome = np.where(far | fast, WARN, PASS).astype(np.int8)
-    governing = np.where(far, 1, np.where(fast, 2, 0))
+    positions = scene.positions()
+    fixed = any(f.key not in positions and f.key not in VARIABLE_KEYS for f in scene.plausibility_findings())
+    sizes = np.zeros(L.shape, dtype=bool)
+    for key, values in zip(VARIABLE_KEYS, (L, B, H)):
+        sizes |= RANGES[KEYS[key]].outside(values)
+    placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
+    for position in positions.values():
+        placed = np.where(placed == 0, placement(place(position), L, B), placed)
+    governing = np.where(placed > 0, placed, np.where(sizes, 4, 5 if fixed else 0))
     reasons = ("no input outside its plausible range", "a position from O more than 10 × the base's diagonal (mm typed as m?)",
-               "a machine speed above the plausible range (rpm typed as rad/s?)")
-    return outcome, governing, reasons
+               "a position below the block's base", "a position beyond the block's footprint",
+               "a block dimension outside its plausible range", "an input value outside its plausible range")
+    return np.where(governing > 0, WARN, PASS).astype(np.int8), governing, reasons
 
 
 def evaluate(scene, batch: Batch) -> CandidateVerdicts:
@@ -312,7 +321,7 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     L, B, H = _candidates(scene, batch)
     built = _built(scene, L, B, H)
     model, m_b = built.model, built.block_mass
-    found = {"inputs": _inputs(scene, L, B, built.place)}
+    found = {"inputs": _inputs(scene, L, B, H, built.place)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     moving = dynamics(scene, built)
     if getattr(scene.soil, "modulus_range", None) is not None:

@@ -343,9 +343,7 @@ def _inputs(out: _Verdicts, scene, designs):
     fixed = [x for x in scene.plausibility_findings() if not _block_dependent(x.key)]
 
     def outside(values, name):
-        r = RANGES[name]
-        size = np.abs(values) if r.magnitude else values
-        return (size < r.low) | (size > r.high)
+        return RANGES[name].outside(values)
 
     block = outside(designs.L, "block_length") | outside(designs.B, "block_length") | outside(designs.H, "block_height")
     block |= outside(np.full(len(designs.L), f.block.density), "block_density")
@@ -373,7 +371,7 @@ def _block_dependent(key: str) -> bool:
     from foundation_calc.checks.design.apply import CRANK_DERIVED
 
     derived = tuple(f"foundation.{k}" for k in CRANK_DERIVED)
-    return key.startswith(("foundation.block.", "block-to-machine", "points.", *derived)) or key in (
+    return key.startswith(("foundation.block.", "block-to-machine", "points[", *derived)) or key in (
         "foundation.machine.cog_height", "mechanism.crank_radius", "mechanism.rod_length", "mechanism.crank_axis_to_cog")
 
 
