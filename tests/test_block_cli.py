@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -112,7 +113,8 @@ def test_a_block_sweep_writes_its_rows_to_csv_and_a_plot(runner, tmp_path):
     table, picture = tmp_path / "sweep.csv", tmp_path / "sweep.png"
     result = runner.invoke(app, [*args, "--csv", str(table), "--plot", str(picture)])
     assert result.exit_code == 0, result.stderr
-    rows = list(csv.DictReader(table.open(encoding="utf-8")))
+    with table.open(encoding="utf-8") as stream:
+        rows = list(csv.DictReader(stream))
     assert len(rows) == len(doc["points"]) == 5
     for row, point in zip(rows, doc["points"]):
         assert float(row["omega_rad_s"]) == point["omega"] and row["status"] == point["status"]
@@ -134,7 +136,7 @@ def test_office_checks_judge_as_their_sources_say(tmp_path, runner):
     row = bearing_row(1.0e6, 0.2, 0.0, 4.0, 2.0, 1.6e5)
     assert row.value == pytest.approx(162.5e3, rel=1e-14) and row.outcome.value == "fail"
     assert mass_ratio_row(20e3, 10e3, 3.0).outcome.value == "warn"
-    text = open("configs/compressor_vendor_loads.toml").read().replace("detuning = 0.2", "detuning = 0.2\nbearing_pressure = 5.0e4")
+    text = Path("configs/compressor_vendor_loads.toml").read_text().replace("detuning = 0.2", "detuning = 0.2\nbearing_pressure = 5.0e4")
     scene = tmp_path / "crank.toml"
     scene.write_text(text)
     result = runner.invoke(app, ["check", str(scene), "--json"])
@@ -161,7 +163,7 @@ def test_every_soil_method_gives_six_springs_that_turn_with_the_base(method):
 
     from foundation_calc.scenes import parse_scene
 
-    data = tomllib.load(open("configs/block_fan_torsion_near_speed.toml", "rb"))
+    data = tomllib.loads(Path("configs/block_fan_torsion_near_speed.toml").read_text(encoding="utf-8"))
     soil = {"method": method, "deformation_modulus": 3.0e7, "soil_class": "sand"} if method == "sp26" else {
         "method": method, "shear_wave_velocity": 150.0, "density": 1850.0, "poisson": 0.33, "material_damping": 0.03}
     data["soil"] = soil

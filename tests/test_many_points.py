@@ -150,7 +150,9 @@ def test_the_summary_table_cuts_no_number_on_a_terminal(many_points):
             break
         chunks.append(chunk)
     os.close(main)
-    assert process.wait() == 1, process.stderr.read()
+    with process:  # waits, and closes the stderr pipe
+        errors = process.stderr.read()
+    assert process.returncode == 1, errors
     out = b"".join(chunks).decode("utf-8")
     assert "…" not in out
     assert "values over their limits" in " ".join(out.split())  # the summary line wraps at 80

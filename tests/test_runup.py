@@ -8,6 +8,7 @@ the printed three significant figures; Lewis' 1.467/sqrt(η) (Lewis 1932, printe
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -144,17 +145,42 @@ def test_cli_runup_exit_codes_and_json(runner, tmp_path):
     assert result.exit_code == 0, result.output
     doc = json.loads(result.stdout)
     assert set(doc["runs"]) == {"run_up", "run_down"} and doc["runs"]["run_up"]["passages"]
-    text = open("configs/frame_saw_soft_soil_runup.toml").read().replace("transient_amplitude = 2.0e-2", "transient_amplitude = 1.0e-3")
+    text = Path("configs/frame_saw_soft_soil_runup.toml").read_text().replace("transient_amplitude = 2.0e-2",
+                                                                               "transient_amplitude = 1.0e-3")
     scene = tmp_path / "tight.toml"
     scene.write_text(text)
     assert runner.invoke(app, ["runup", str(scene), "--time", "5"]).exit_code == 1
     bare = tmp_path / "bare.toml"
-    bare.write_text(open("configs/frame_saw.toml").read())
+    bare.write_text(Path("configs/frame_saw.toml").read_text())
     result = runner.invoke(app, ["runup", str(bare)])
     assert result.exit_code == 3 and "run_up_time" in result.output
     result = runner.invoke(app, ["runup", str(bare), "--time", "2", "--json"])  # no soil damping
     assert result.exit_code == 0 and "undamped" in result.stderr and json.loads(result.stdout)["warnings"]
 
+
+def test_a_platform_that_tips_over_is_refused_by_name_before_its_start_up(runner, tmp_path):
+    """platform_damped.toml with its centre of mass raised to ζ = 3 m on vertical isolators of
+    K = 1e5 N/m: the weight's tilting moment exceeds the isolators' rocking stiffness, a squared
+    natural frequency is negative (-0.99 rad²/s²). The run-up names the isolators and the cause,
+    as `fcalc check`'s design row does, and takes no square root of it (the suite turns warnings
+    into errors: the loss factor's modal damping sqrt(p²) would warn of a NaN)."""
+    from foundation_calc.cli.app import app
+    from foundation_calc.errors import PhysicsError
+    from foundation_calc.scenes import parse_scene, read_toml
+    from foundation_calc.solvers.platform.runup import structure
+
+    document = read_toml(Path("configs/platform_damped.toml"))
+    document["platform"]["cog"][2] = 3.0
+    document["isolators"]["vertical_reference"] = 1.0e5
+    scene = parse_scene(document)
+    with pytest.raises(PhysicsError, match="unstable") as err:
+        structure(scene.design(), scene.model())
+    assert err.value.field == "isolators.vertical"
+    path = tmp_path / "tall.toml"
+    path.write_text(Path("configs/platform_damped.toml").read_text().replace("cog = [1.5, 1.0, 0.65]", "cog = [1.5, 1.0, 3.0]")
+                    .replace("vertical_reference = 1.0e8", "vertical_reference = 1.0e5"))
+    result = runner.invoke(app, ["runup", str(path)])
+    assert result.exit_code == 3 and "isolators.vertical: the platform is unstable" in result.stderr, result.output
 
 def one_mode_with_unbalance(zeta):
     """M = 1000 kg on k = M (100 rad/s)², damping ratio ζ, unbalance m e = 1 kg m."""
@@ -196,7 +222,7 @@ def test_drive_keys_are_validated(runner, tmp_path, drive, message):
     from foundation_calc.cli.app import app
 
     scene = tmp_path / "motor.toml"
-    scene.write_text(open("configs/frame_saw_soft_soil_runup.toml").read() + f"\n[drive]\n{drive}\n")
+    scene.write_text(Path("configs/frame_saw_soft_soil_runup.toml").read_text() + f"\n[drive]\n{drive}\n")
     result = runner.invoke(app, ["runup", str(scene)])
     assert result.exit_code == 3 and message in result.output
 

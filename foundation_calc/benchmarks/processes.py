@@ -92,23 +92,22 @@ def _descendants(pid: int) -> list[int]:
 def run_process(command, env=None, sample_memory: bool = False) -> ProcessRun:
     """Run ``command`` (stdout and stderr discarded) through the launcher and measure it; with
     ``sample_memory`` the peaks of the workers it starts are read while it runs."""
-    launcher = subprocess.Popen((sys.executable, "-c", LAUNCHER, *command), stdout=subprocess.PIPE, env=env, text=True)
-    pid = int(launcher.stdout.readline())
-    seen: dict[int, int] = {}
-    sampler = None
-    if sample_memory and Path("/proc/self/status").exists():
-        done = threading.Event()
+    with subprocess.Popen((sys.executable, "-c", LAUNCHER, *command), stdout=subprocess.PIPE, env=env, text=True) as launcher:
+        pid = int(launcher.stdout.readline())
+        seen: dict[int, int] = {}
+        sampler = None
+        if sample_memory and Path("/proc/self/status").exists():
+            done = threading.Event()
 
-        def sample() -> None:
-            while not done.wait(SAMPLE_INTERVAL):
-                for process in (pid, *_descendants(pid)):
-                    seen[process] = max(seen.get(process, 0), _high_water(process))
+            def sample() -> None:
+                while not done.wait(SAMPLE_INTERVAL):
+                    for process in (pid, *_descendants(pid)):
+                        seen[process] = max(seen.get(process, 0), _high_water(process))
 
-        sampler = threading.Thread(target=sample, daemon=True)
-        sampler.start()
-    seconds, returncode, cpu, max_rss = json.loads(launcher.stdout.read())
-    launcher.wait()
-    if sampler is not None:
+            sampler = threading.Thread(target=sample, daemon=True)
+            sampler.start()
+        seconds, returncode, cpu, max_rss = json.loads(launcher.stdout.read())
+    if sampler is not None:  # the launcher has exited (the with block waits for it and closes its pipe)
         done.set()
         sampler.join()
     largest = max_rss * 1024  # Linux reports kilobytes

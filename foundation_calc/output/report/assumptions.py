@@ -62,7 +62,8 @@ BLOCK_SOIL_MODELS = {
     "springs": "The six springs (and dashpots) at O as the scene gives them; their source is the"
                " scene's. Frequency-independent.",
     "coefficients": "Winkler springs from Barkan's coefficients [Ba]: K_x = K_y = c_x A, K_z = c_z A,"
-                    " K_θx = c_φ I_x, K_θy = c_φ I_y, K_θz = c_ψ J_z (c_ψ default 1.5 c_x); dashpots 2 ξ √(K m)"
+                    " K_θx = c_φ I_x, K_θy = c_φ I_y, K_θz = c_ψ J_z (c_ψ default 1.5 c_x, as Barkan is usually quoted:"
+                    " unverified against his text); dashpots 2 ξ √(K m)"
                     " of each uncoupled motion from the given damping ratios. Frequency-independent.",
     "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs in"
               " each vertical plane (equivalent radius per motion) and Reissner-Sagoci's in torsion [RHW]:"
@@ -76,7 +77,8 @@ BLOCK_SOIL_MODELS = {
                    "dependent: every order n is solved with K(nω), C(nω) and every mode at its own"
                    " frequency; torsion static, with material damping only.",
     "sp26": "The code's coefficients C_z, C_x, C_φ from the deformation modulus and the soil class,"
-            " C_ψ = C_z and ξ_ψ = 0.3 ξ_z, damping ratios of the code [SP26]. Frequency-independent.",
+            " C_ψ = C_z and ξ_ψ = 0.3 ξ_z (torsion as the code is usually quoted: unverified against its"
+            " text), damping ratios of the code [SP26]. Frequency-independent.",
 }
 
 

@@ -38,7 +38,7 @@ def modal_forcing_weights(M, K, forces) -> tuple[np.ndarray, np.ndarray, np.ndar
     The modes are :func:`~foundation_calc.solvers.numerics.symmetric_modes.symmetric_modes`.
 
     >>> p, phi, w = modal_forcing_weights(np.diag([2.0, 1.0]), np.diag([8.0, 9.0]), np.array([[2.0, 0.0], [0.0, 3.0]]))
-    >>> p.tolist(), np.round(w, 12).tolist()
+    >>> np.round(p, 12).tolist(), np.round(w, 12).tolist()
     ([2.0, 3.0], [[0.707106781187, 0.0], [0.0, 1.0]])
     """
     squared, shapes = symmetric_modes(np.asarray(K, dtype=float), np.asarray(M, dtype=float))

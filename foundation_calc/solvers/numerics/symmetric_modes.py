@@ -22,7 +22,7 @@ def symmetric_modes(K, M, scale=None) -> tuple[np.ndarray, np.ndarray]:
     eigenvalues unchanged.
 
     >>> p2, phi = symmetric_modes(np.diag([8.0, 9.0]), np.diag([2.0, 1.0]))
-    >>> p2.tolist(), np.round(phi.T @ np.diag([2.0, 1.0]) @ phi, 12).tolist()
+    >>> np.round(p2, 12).tolist(), np.round(phi.T @ np.diag([2.0, 1.0]) @ phi, 12).tolist()
     ([4.0, 9.0], [[1.0, 0.0], [0.0, 1.0]])
 
     Raises

@@ -77,7 +77,7 @@ def summed_stiffness(M, m, l, u, omega, sigma):
 
     >>> import math
     >>> round(summed_stiffness(2e4, 25.0, 0.2, 1e-3, 50 * math.pi, -1.0) / 1e8, 5)
-    3.70726
+    3.70727
     """
     return (M + m) * omega**2 + sigma * m * l * omega**2 / u
 

@@ -23,7 +23,7 @@ from scipy.linalg import eigh
 from foundation_calc.solvers.numerics.runup import Structure
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.platform.design import PlatformDesign
-from foundation_calc.solvers.platform.dynamics import periodic_system
+from foundation_calc.solvers.platform.dynamics import natural_frequencies, periodic_system
 from foundation_calc.solvers.rigid_body.kinematics import point_map
 from foundation_calc.solvers.platform.verification import PlatformModel, build, product_corners
 
@@ -44,8 +44,17 @@ def _loads(design: PlatformDesign, model: PlatformModel, scale: float):
 
 def structure(design: PlatformDesign, model: PlatformModel) -> tuple[Structure, tuple[str, ...]]:
     """The platform of ``design`` and ``model`` as a :class:`Structure`, and the names of its
-    points: the centre of mass and the eight corners of the product box (module docstring)."""
+    points: the centre of mass and the eight corners of the product box (module docstring).
+
+    Raises
+    ------
+    PhysicsError
+        when the platform has no stable rest position to start from (a squared natural frequency
+        not positive: it tips over under its weight, or a direction has no spring), from
+        :func:`~foundation_calc.solvers.platform.dynamics.natural_frequencies`.
+    """
     ratios, at_1, system = _loads(design, model, 1.0)
+    natural_frequencies(*build(design, model), system)  # raises before the modal damping's sqrt(p²)
     _, at_2, _ = _loads(design, model, 2.0)
     w2 = design.omega**2
     inertial_k = (at_2 - at_1) / (3.0 * w2)  # F(s ω) = s² ω² A + B
