@@ -20,7 +20,7 @@ def print_soil_validity(validity) -> None:
 
     from foundation_calc.output.console import stdout
 
-    stdout().print(Text(soil_validity_line(validity), style="yellow" if validity.beyond else ""), soft_wrap=True)
+    stdout().print(Text(soil_validity_line(validity), style="yellow" if validity.beyond else ""))
 
 
 def soil_validity_document(validity) -> dict | None:
@@ -51,7 +51,7 @@ def print_supports(rows) -> None:
     from foundation_calc.output.console import stdout
 
     for line in support_lines(rows):
-        stdout().print(Text(line), soft_wrap=True)
+        stdout().print(Text(line))
 
 
 def support_document(limits, rows) -> dict:
