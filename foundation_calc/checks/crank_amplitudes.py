@@ -510,7 +510,7 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
         return base
     live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
     width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
-    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False) for n in range(width)]
+    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False, supports) for n in range(width)]
     approximations = dict(base.approximations)
     for key, a in live.items():
         if any(r.approximations[key].resonant for r in by_n):
