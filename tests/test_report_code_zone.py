@@ -33,7 +33,7 @@ def test_rms_velocity_and_zone_of_every_point_are_the_checks():
         for j, direction in enumerate(DIRECTIONS):
             ours = float(np.sqrt((terms[i, j] ** 2).sum()))
             assert abs(ours - row["velocity_rms"][direction]) <= TOLERANCE * row["velocity_rms"][direction], (row["point"], direction)
-    _, velocity, zones, _ = code_zone_blocks(scene, doc["code"], motion)
+    _, velocity, zones, *_ = code_zone_blocks(scene, doc["code"], motion)
     assert [(r[-5], r[-4], r[-3], r[-2], r[-1].lower()) for r in velocity.rows] == [
         (row["velocity_zone"], f"{row['displacement_rms'][max(row['displacement_rms'], key=row['displacement_rms'].get)] * 1e6:.3g}",
          row["displacement_zone"], row["zone"], row["verdict"]) for row in judged]

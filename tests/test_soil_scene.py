@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import copy
 import json
+import math
 
 import pytest
 import tomli_w
@@ -202,19 +203,27 @@ def test_gazetas_rocking_damping_at_the_rocking_mode_against_halls_analog(runner
 
 
 def test_fcalc_soil_names_the_frequencies_beyond_each_methods_range(runner, tmp_path):
-    """a0 = ω B'/V_s: 150 rpm on a 4 m wide base over V_s = 170 m/s is 0.18 (the modes sit at
-    0.8-1.7); 1500 rpm is 1.85 (beyond the analogs' 1); 1800 rpm is 2.22 (beyond the fitted 2)."""
+    """Each method by its own a0 and range (checks/soil_validity.py), on a 6 m × 4 m base over
+    V_s = 170 m/s: Lysmer's a0 = ω r/V_s (r0 = √(BL/π) = 2.76 m, r0ψ = (BL³/(3π))^¼ = 3.09 m)
+    against 1.5, Gazetas' a0 = ω B'/V_s (B' = 2 m) against 2. At 150 rpm only Lysmer's p2 lies
+    beyond (its a0 by test_soil_validity.py); 1500 rpm puts Lysmer's speed at a0 = 2.55 in sliding
+    and 2.86 in rocking, Gazetas' at 1.85 (within 2); 1800 rpm puts Gazetas' at 2.22."""
+    r0, r_rock = math.sqrt(24.0 / math.pi), (4.0 * 6.0**3 / (3.0 * math.pi)) ** 0.25
     document = read_toml(LYSMER)
     quiet = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
-    assert not any("the operating speed (a0" in w for w in quiet["warnings"])
-    assert any("method 'lysmer': a0 = ω B'/V_s at k0" in w for w in quiet["warnings"]), quiet["warnings"]
-    assert not any("method 'gazetas': a0" in w for w in quiet["warnings"])
+    lysmer = [w for w in quiet["warnings"] if "soil method 'lysmer'" in w]
+    assert len(lysmer) == 1 and "at p2: rocking 2.56, horizontal 2.29" in lysmer[0], quiet["warnings"]
+    assert not any("the operating speed" in w or "soil method 'gazetas'" in w for w in quiet["warnings"])
     document["mechanism"]["speed_rpm"] = 1500.0
+    omega = 1500.0 * math.pi / 30.0
     loud = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
-    assert any("the operating speed (a0 = 1.85)" in w for w in loud["warnings"]), loud["warnings"]
+    speed = f"at the operating speed: rocking {omega * r_rock / 170.0:.3g}, horizontal {omega * r0 / 170.0:.3g}"
+    assert any(speed in w for w in loud["warnings"]), loud["warnings"]
+    assert not any("soil method 'gazetas'" in w for w in loud["warnings"])  # 157.1 · 2/170 = 1.85 <= 2
     document["mechanism"]["speed_rpm"] = 1800.0
     louder = json.loads(runner.invoke(app, ["soil", str(_write(tmp_path, document)), "--json"]).stdout)
-    assert any("method 'gazetas': a0 = ω B'/V_s at the operating speed (a0 = 2.22)" in w for w in louder["warnings"])
+    gazetas = [w for w in louder["warnings"] if "soil method 'gazetas'" in w]
+    assert len(gazetas) == 1 and f"at the operating speed: horizontal {1800.0 * math.pi / 30.0 * 2.0 / 170.0:.3g}" in gazetas[0]
 
 
 def test_fcalc_soil_tables_the_frequency_dependent_springs(runner):

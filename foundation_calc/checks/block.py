@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, code_zone, zone_outcome
+from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, point_zone, zone_outcome
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
@@ -74,13 +74,16 @@ class ResonanceRow:
 @dataclass(frozen=True)
 class ZoneRow(JudgedRow):
     """A point's zone in a vibration code: its largest RMS velocity and its largest RMS displacement,
-    the more restrictive deciding (``judged`` says which; ``direction`` is that quantity's direction)."""
+    the more restrictive deciding (``judged`` says which; ``direction`` is that quantity's direction);
+    ``support``: the support class of x, y, z (:mod:`~foundation_calc.checks.support`), each
+    direction judged in its class's table (``table``: the governing one's)."""
 
     point: str
     direction: str
     judged: CodeZone
     outcome: Outcome
     table: ZoneTable
+    support: tuple = ()
 
     @property
     def direction_text(self) -> str:
@@ -106,6 +109,9 @@ class BlockReport:
     #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
     resonance_range: object = None
     amplitude_range: object = None
+    #: a0 of the judged modes and orders against the soil method's fitted range
+    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
+    soil_validity: object = None
 
     @property
     def resonance_outcome(self) -> Outcome:
@@ -226,18 +232,20 @@ def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def zone_rows(motion: PointMotion, limits) -> tuple[ZoneRow, ...]:
+def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and
-    its largest RMS displacement, the more restrictive deciding."""
+    its largest RMS displacement, the more restrictive deciding, each direction in the table of its
+    support class (``supports``: point name -> (x, y, z) classes,
+    :func:`~foundation_calc.checks.support.block_supports`)."""
     if limits.code is None:
         return ()
-    table = TABLES[limits.code, limits.machine_group, limits.foundation]
     rows = []
     for p, name in enumerate(motion.names):
         v, x = motion.velocity_rms[p], motion.displacement_rms[p]
-        judged = code_zone(table, float(v.max()), float(x.max()), limits.acceptable_zone)
-        d = int(np.argmax(v if judged.quantity == "velocity" else x))
-        rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table))
+        tables = [TABLES[limits.code, limits.machine_group, c.support] for c in supports[name]]
+        judged, table, d = point_zone(tables, [float(a) for a in v], [float(a) for a in x], limits.acceptable_zone)
+        rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table,
+                            supports[name]))
     return tuple(rows)
 
 
@@ -245,11 +253,14 @@ def check_block(scene) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
     that range (module docstring)."""
-    report = check_block_as_given(scene)
-    if scene.soil.modulus_range is None:
-        return report
     from dataclasses import replace
 
+    from foundation_calc.checks.soil_validity import block_validity
+
+    report = check_block_as_given(scene)
+    report = replace(report, soil_validity=block_validity(scene, report))
+    if scene.soil.modulus_range is None:
+        return report
     from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
 
     resonance = resonances_over_range(scene, check_block_as_given, resonance_point, resonance_offsets)
@@ -268,9 +279,12 @@ def check_block_as_given(scene) -> BlockReport:
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
                                              impedance=impedance)
     limits = scene.limits
-    warnings = ()
+    warnings, supports = (), None
     if limits.code is not None:
-        table = TABLES[limits.code, limits.machine_group, limits.foundation]
+        from foundation_calc.checks.support import block_supports
+
+        supports = block_supports(scene, modes, model.cog)
+        table = TABLES[limits.code, limits.machine_group, "rigid"]  # the group's speed and power ranges
         power = None if limits.machine_power is None else limits.machine_power / 1e3
         found = []
         for exc in excitations:
@@ -284,7 +298,7 @@ def check_block_as_given(scene) -> BlockReport:
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits),
+        zone_rows=() if motion is None else zone_rows(motion, limits, supports),
         code_warnings=warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,

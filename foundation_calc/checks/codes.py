@@ -225,6 +225,35 @@ def code_zone(table: ZoneTable, velocity_rms: float, displacement_rms: float, ac
     return CodeZone(ZONES[int(index)], "velocity", velocity_rms, table.boundaries[highest], by_velocity, by_displacement)
 
 
+def point_zone(tables, velocity, displacement, acceptable: str | None) -> tuple[CodeZone, ZoneTable, int]:
+    """The zone of a point whose directions may be judged in different tables (a support rigid in
+    one measuring direction and flexible in another, ISO 10816-3:2009, 3.4): the directions of one
+    table together by their largest r.m.s. velocity [m/s] and displacement [m] (:func:`code_zone`),
+    the worst zone (then the larger ratio to its limit) governing. ``tables``, ``velocity`` and
+    ``displacement`` hold one entry per direction. Returns the zone, its table and the index of
+    the governing direction (the deciding quantity's largest in that table's directions, the first
+    on a tie). With one table it is :func:`code_zone` of the largest values.
+
+    >>> rigid, flexible = TABLES["ISO 10816-3", 2, "rigid"], TABLES["ISO 10816-3", 2, "flexible"]
+    >>> z, table, d = point_zone((flexible, rigid), (3.5e-3, 2.0e-3), (1e-6, 1e-6), None)
+    >>> z.zone, table.foundation, d
+    ('B', 'flexible', 0)
+    """
+    groups: dict[ZoneTable, list[int]] = {}
+    for d, table in enumerate(tables):
+        groups.setdefault(table, []).append(d)
+    found = None
+    for table, directions in groups.items():
+        judged = code_zone(table, max(velocity[d] for d in directions), max(displacement[d] for d in directions),
+                           acceptable)
+        values = velocity if judged.quantity == "velocity" else displacement
+        governing = max(directions, key=lambda d: values[d])
+        severity = (ZONES.index(judged.zone), judged.ratio)
+        if found is None or severity > found[0]:
+            found = (severity, judged, table, governing)
+    return found[1:]
+
+
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
     """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
     zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
@@ -270,5 +299,5 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
 
 
 __all__ = ["CODES", "TABLES", "ZONES", "CodeZone", "JudgedRow", "ZoneTable",
-           "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "zone", "zone_index",
+           "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "point_zone", "zone", "zone_index",
            "zone_outcome", "zone_verdicts"]

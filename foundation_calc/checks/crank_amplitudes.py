@@ -34,7 +34,7 @@ from foundation_calc.checks.codes import (
     JudgedRow,
     ZoneTable,
     application_warnings,
-    code_zone,
+    point_zone,
     zone_outcome,
 )
 from foundation_calc.checks.limits import QUANTITIES, LimitRow, exceeds, limited_quantities
@@ -117,6 +117,9 @@ class CodeRow(JudgedRow):
     ``displacement``: its RMS displacement (horizontal, vertical) [m]. The larger velocity and the
     larger displacement give the zone, the more restrictive deciding (``judged``, which says which
     quantity decides); ``governing``: the direction of the deciding quantity's larger value.
+    ``support``: the support class of each direction (:mod:`~foundation_calc.checks.support`); a
+    direction of another class is judged in its own table (:func:`~foundation_calc.checks.codes.point_zone`)
+    and ``table`` is the governing one's.
     """
 
     point: str
@@ -127,6 +130,7 @@ class CodeRow(JudgedRow):
     judged: CodeZone
     table: ZoneTable
     outcome: Outcome
+    support: tuple = ()
 
     @property
     def direction_text(self) -> str:
@@ -190,6 +194,9 @@ class AmplitudeReport:
     resonance: ResonanceReport | None = None
     #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
     modulus_range: object = None
+    #: a0 of the judged modes and orders against the soil method's fitted range
+    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
+    soil_validity: object = None
 
     @property
     def omega(self) -> float:
@@ -329,38 +336,59 @@ def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
     return tuple(rows)
 
 
-def _code_rows(approx: Approximation, limits, omega: float) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
+def _code_rows(approx: Approximation, limits, omega: float, supports=None) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
     """Zone of every point's RMS velocity and RMS displacement in the scene's code table (the more
-    restrictive decides), and why the code may not apply."""
+    restrictive decides; each direction in the table of its support class, ``supports``: point
+    name -> (horizontal, vertical) :class:`~foundation_calc.checks.support.SupportClass`, as
+    :func:`scene_supports` gives them; None: the scene's ``limits.foundation`` everywhere), and why
+    the code may not apply."""
     code = getattr(limits, "code", None)
     if code is None:
         return (), ()
-    table = TABLES[code, limits.machine_group, limits.foundation]
+    group = limits.machine_group
     power = None if limits.machine_power is None else limits.machine_power / 1e3
-    notes = tuple(application_warnings(table, rpm_from_omega(omega), power))
+    # the speed and power ranges are the group's, whatever the support
+    notes = tuple(application_warnings(TABLES[code, group, "rigid"], rpm_from_omega(omega), power))
     if approx.resonant:
         return (), notes
+    if supports is None and limits.foundation is None:
+        raise ValueError("the code's support class: give limits.foundation or the classification from the modes")
     rows = []
     for name, values in approx.rms.items():
         horizontal, vertical = (float(v) for v in values.velocity)
         displacement = tuple(float(x) for x in values.displacement)
-        judged = code_zone(table, max(horizontal, vertical), max(displacement), limits.acceptable_zone)
-        pair = (horizontal, vertical) if judged.quantity == "velocity" else displacement
-        governing = "horizontal" if pair[0] >= pair[1] else "vertical"
-        rows.append(CodeRow(name, horizontal, vertical, displacement, governing, judged, table,
-                            zone_outcome(judged.zone, limits.acceptable_zone)))
+        classes = () if supports is None else supports[name]
+        tables = [TABLES[code, group, kind] for kind in [c.support for c in classes] or [limits.foundation] * 2]
+        judged, table, d = point_zone(tables, (horizontal, vertical), displacement, limits.acceptable_zone)
+        rows.append(CodeRow(name, horizontal, vertical, displacement, DIRECTIONS[d], judged, table,
+                            zone_outcome(judged.zone, limits.acceptable_zone), classes))
     return tuple(rows), notes
 
 
+def scene_supports(scene):
+    """The support class of every point and direction of a ``crank_foundation`` scene with a
+    vibration code (:func:`~foundation_calc.checks.support.crank_supports`, from the block's modes
+    k0, p1, p2, each at its own frequency on a frequency-dependent soil); None without a code."""
+    if getattr(scene.limits, "code", None) is None:
+        return None
+    from foundation_calc.checks.crank_resonance import scene_block_frequencies
+    from foundation_calc.checks.support import crank_supports
+    from foundation_calc.solvers.crank.loads import block_frequencies
+
+    consistent = scene_block_frequencies(scene)
+    return crank_supports(scene, block_frequencies(scene.block()) if consistent is None else consistent[0])
+
+
 def check_amplitudes(
-    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None
+    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None, supports=None
 ) -> AmplitudeReport:
     """Amplitudes of ``design`` by every approximation asked for, and the limit rows.
 
     ``limits``: the scene's ``[limits]`` (peak and RMS limits [m, m/s, m/s²], a code) or None;
     ``points``: objects with ``name``, ``horizontal``, ``height`` [m]. ``vendor``: the scene's
     ``[[loads]]``, whose linear steady state is added to every approximation of the mechanism,
-    or is the only one (``"loads"``) when ``design`` is None.
+    or is the only one (``"loads"``) when ``design`` is None. ``supports``: the code's support
+    class of every point and direction (:func:`scene_supports`), None for ``limits.foundation``.
 
     Raises
     ------
@@ -401,7 +429,7 @@ def check_amplitudes(
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator")
         }
-    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega)
+    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega, supports)
     detuning = getattr(limits, "detuning", DEFAULT_DETUNING)
     if design is None:
         resonance = check_block_resonances(vendor.block, vendor.omega, vendor.loads, detuning)
@@ -429,10 +457,10 @@ def scene_vendor_loads(scene, soil_frequency: float = 0.0) -> VendorLoads | None
     return None if loads is None else VendorLoads(scene.block(soil_frequency), loads, scene.speed.omega_rad_s)
 
 
-def _at_soil_frequency(scene, soil_frequency: float, exact: bool) -> AmplitudeReport:
+def _at_soil_frequency(scene, soil_frequency: float, exact: bool, supports=None) -> AmplitudeReport:
     design = None if scene.mechanism is None else scene.design(soil_frequency)
     return check_amplitudes(design, scene.limits, scene.points, exact=exact,
-                            vendor=scene_vendor_loads(scene, soil_frequency))
+                            vendor=scene_vendor_loads(scene, soil_frequency), supports=supports)
 
 
 def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
@@ -451,9 +479,13 @@ def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
 def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     """:func:`check_amplitudes` of a ``crank_foundation`` scene: its mechanism, its loads or both;
     with ``soil.modulus_range`` also over that range (:func:`~foundation_calc.checks.soil_range.amplitudes_over_range`;
-    the verdict is the worse of the two).
+    the verdict is the worse of the two); the soil model's validity at the modes and judged orders
+    (:func:`~foundation_calc.checks.soil_validity.crank_validity`).
     """
+    from foundation_calc.checks.soil_validity import crank_validity
+
     report = _scene_amplitudes(scene, exact)
+    report = replace(report, soil_validity=crank_validity(scene, report.resonance))
     if scene.soil.modulus_range is None:
         return report
     from foundation_calc.checks.crank_resonance import check_scene_resonances
@@ -472,19 +504,20 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     the exact harmonic balance, which couples the harmonics, takes them at the speed ω.
     """
     omega = scene.speed.omega_rad_s
-    base = _at_soil_frequency(scene, omega if scene.soil.frequency_dependent else 0.0, exact)
+    supports = scene_supports(scene)
+    base = _at_soil_frequency(scene, omega if scene.soil.frequency_dependent else 0.0, exact, supports)
     if not scene.soil.frequency_dependent:
         return base
     live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
     width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
-    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False) for n in range(width)]
+    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False, supports) for n in range(width)]
     approximations = dict(base.approximations)
     for key, a in live.items():
         if any(r.approximations[key].resonant for r in by_n):
             continue
         motion = splice_harmonics([r.approximations[key].motion for r in by_n])
         approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
-    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega)
+    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega, supports)
     from foundation_calc.checks.crank_resonance import scene_resonances_as_given
 
     return replace(base, approximations=approximations, rows=_rows(approximations[base.checked], scene.limits),
@@ -501,6 +534,7 @@ __all__ = [
     "VendorLoads",
     "check_amplitudes",
     "check_scene_amplitudes",
+    "scene_supports",
     "scene_vendor_loads",
     "splice_harmonics",
     "zone_outcome",

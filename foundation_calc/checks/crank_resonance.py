@@ -107,6 +107,9 @@ class ResonanceReport:
     conditions_checked: int = 0
     static: NaturalFrequencies | None = None
     modulus_range: object = None
+    #: a0 of the judged modes and orders against the soil method's fitted range
+    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
+    soil_validity: object = None
 
     @property
     def outcome(self) -> Outcome:
@@ -313,8 +316,12 @@ def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]
 
 def check_scene_resonances(scene) -> ResonanceReport:
     """The resonance report of a ``crank_foundation`` scene: its mechanism, its loads or both; with
-    ``soil.modulus_range``, also over that range (the verdict is the worse of the two)."""
+    ``soil.modulus_range``, also over that range (the verdict is the worse of the two); the soil
+    model's validity at its modes and judged orders (:func:`~foundation_calc.checks.soil_validity.crank_validity`)."""
+    from foundation_calc.checks.soil_validity import crank_validity
+
     report = scene_resonances_as_given(scene)
+    report = replace(report, soil_validity=crank_validity(scene, report))
     if scene.soil.modulus_range is None:
         return report
     from foundation_calc.checks.soil_range import resonances_over_range

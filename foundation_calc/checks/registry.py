@@ -61,6 +61,31 @@ def inputs(scene) -> Finding | None:
     return Finding("inputs", Outcome.WARN, reason, details=tuple(f"WARN {w}" for w in warnings))
 
 
+def soil_notes(validity) -> tuple[Reason, tuple[str, ...]]:
+    """The soil model's validity (:mod:`~foundation_calc.checks.soil_validity`) as a reason's
+    tail and details, the same on every kind's resonance and amplitudes: said when an a0 lies
+    beyond the method's range, which does not change the verdict."""
+    if validity is None or not validity.beyond:
+        return (), ()
+    return (f"; {validity.brief}",), validity.details()
+
+
+def support_details(rows) -> tuple[str, ...]:
+    """The code's support class of the zone ``rows`` (:mod:`~foundation_calc.checks.support`), as
+    details: a line per direction and class."""
+    from foundation_calc.checks.support import CLAUSE, support_lines
+
+    return tuple(f"SUPPORT {line} ({CLAUSE})" for line in support_lines({r.point: r.support for r in rows if r.support}))
+
+
+def _support(row) -> str:
+    """`` (support ...)`` of a zone row's governing direction (:func:`~foundation_calc.checks.support.governing_support`)."""
+    from foundation_calc.checks.support import governing_support
+
+    phrase = governing_support(row)
+    return f"; {phrase}" if phrase else ""
+
+
 def crank_resonance(scene) -> Finding:
     """Margin of the crank speed from every resonance (``fcalc resonance``)."""
     from foundation_calc.checks.crank_resonance import check_scene_resonances
@@ -76,7 +101,8 @@ def crank_resonance(scene) -> Finding:
     if report.modulus_range is not None:
         reason += (f" with the soil data as given; {report.modulus_range.text}",)
         details = report.modulus_range.details()
-    return Finding("resonance", report.outcome, reason, values, report, details)
+    noted, notes = soil_notes(report.soil_validity)
+    return Finding("resonance", report.outcome, reason + noted, values, report, details + notes)
 
 
 def crank_amplitudes(scene) -> Finding:
@@ -110,7 +136,7 @@ def crank_amplitudes(scene) -> Finding:
         if report.code_rows:
             worst_zone = max(report.code_rows, key=lambda row: row.ratio)
             values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
-            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
+            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
         if report.resonance is not None:
             reason += (f"; {report.resonance.statement}",)
     if report.code_warnings:
@@ -122,10 +148,12 @@ def crank_amplitudes(scene) -> Finding:
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
+    details += support_details(report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
     if report.modulus_range is not None:
         details += report.modulus_range.details()
-    return Finding("amplitudes", report.outcome, reason, values, report, details)
+    noted, notes = soil_notes(report.soil_validity)
+    return Finding("amplitudes", report.outcome, reason + noted, values, report, details + notes)
 
 
 def platform_design(scene) -> Finding:
@@ -185,7 +213,9 @@ def block_resonance(scene) -> Finding:
     report = check_block(scene)
     values = {"critical": ("speed", report.nearest.critical)}
     details = () if report.resonance_range is None else report.resonance_range.details()
-    return Finding("resonance", report.resonance_outcome, (resonance_text(report),), values, report, details)
+    noted, notes = soil_notes(report.soil_validity)
+    return Finding("resonance", report.resonance_outcome, (resonance_text(report), *noted), values, report,
+                   details + notes)
 
 
 def block_amplitudes(scene) -> Finding:
@@ -209,17 +239,18 @@ def block_amplitudes(scene) -> Finding:
                       " of the limit ", values["limit"])
         if report.zone_rows:
             worst_zone = max(report.zone_rows, key=lambda row: row.ratio)
-            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}")
+            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
     if report.amplitude_range is not None:
         reason += (f"; {report.amplitude_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.limit_rows
-    ) + tuple(f"WARN {warning}" for warning in report.code_warnings)
+    ) + support_details(report.zone_rows) + tuple(f"WARN {warning}" for warning in report.code_warnings)
     if report.amplitude_range is not None:
         details += report.amplitude_range.details()
-    return Finding("amplitudes", report.amplitude_outcome, reason, values, report, details)
+    noted, notes = soil_notes(report.soil_validity)
+    return Finding("amplitudes", report.amplitude_outcome, reason + noted, values, report, details + notes)
 
 
 def crank_office(scene) -> Finding | None:

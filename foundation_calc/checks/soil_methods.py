@@ -205,41 +205,30 @@ def _disagreements(results: tuple[MethodResult, ...]) -> list[str]:
     return found
 
 
-#: Dimensionless frequency a0 = ω B'/V_s up to which Lysmer's and Hall's frequency-independent
-#: damping holds: Richart, Hall & Woods fit the analogs' damping over the frequencies of block
-#: foundations, and Gazetas' dashpot coefficients stay within about 10 % of their low-frequency
-#: limit below it [-].
-A0_RANGE = 1.0
-
-
 def _frequency_range(scene, results) -> list[str]:
-    """Where a0 leaves the range a half-space method was fitted for: the frequency-independent
-    analogs beyond :data:`A0_RANGE` at the operating speed or a mode, the frequency-dependent
-    method beyond its fits' :data:`~foundation_calc.solvers.soil.impedance.A0_FITTED`."""
+    """Where a0 leaves the range a half-space method was fitted for, at the operating speed or a
+    mode (:func:`~foundation_calc.checks.soil_validity.plane_validity`, each method's a0 and range)."""
     if scene.soil.method_used not in HALF_SPACE_METHODS:
         return []
-    from foundation_calc.solvers.soil.impedance import A0_FITTED
+    from foundation_calc.checks.soil_validity import plane_validity
+    from foundation_calc.solvers.crank.loads import RigidBlock
 
-    half_width = min(scene.foundation.dimensions) / 2.0
+    f = scene.foundation
+    M_tot, I_c, h = scene.total_mass, f.moment_of_inertia, f.cog_height
+
+    def block_at(method):
+        def at(omega):
+            s = scene.soil_springs(method, omega)
+            return RigidBlock(M_tot, I_c, h, float(s.K_x), float(s.K_z), float(s.K_phi), 0.0, 0.0, 0.0, GRAVITY)
+        return at
+
+    L, B = f.dimensions
     found = []
     for r in results:
-        limit = A0_FITTED if r.dynamic else A0_RANGE
-        at = {"the operating speed": scene.speed.omega_rad_s, "k0": r.k0, "p1": r.p1, "p2": r.p2}
-        beyond = {name: w * half_width / scene.soil.V_s for name, w in at.items() if w * half_width / scene.soil.V_s > limit}
-        if not beyond:
-            continue
-        where = ", ".join(f"{name} (a0 = {a0:.3g})" for name, a0 in beyond.items())
-        if r.dynamic:
-            found.append(
-                f"method {r.method!r}: a0 = ω B'/V_s at {where} is beyond {limit:g}, the range its"
-                " frequency-dependent coefficients were fitted for; the springs and dashpots there are extrapolated"
-            )
-        else:
-            found.append(
-                f"method {r.method!r}: a0 = ω B'/V_s at {where} is beyond {limit:g}: its springs and damping are"
-                " frequency-independent and over-state the radiation there; compare with method 'gazetas',"
-                " whose impedance depends on frequency"
-            )
+        validity = plane_validity(r.method, scene.soil.V_s, L, B, {"k0": r.k0, "p1": r.p1, "p2": r.p2},
+                                  block_at(r.method), {"the operating speed": scene.speed.omega_rad_s})
+        if validity.beyond:
+            found.append(validity.text)
     return found
 
 

@@ -8,6 +8,13 @@ import numpy as np
 from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.notes import (
+    point_support_document,
+    print_soil_validity,
+    print_supports,
+    soil_validity_document,
+    support_document,
+)
 from foundation_calc.units import speed_triplet
 
 #: What each dominant motion is called in tables.
@@ -59,6 +66,7 @@ def resonance_document(report: BlockReport, scene, source: str, command: str = "
         ],
         "modulus_range": None if report.resonance_range is None else report.resonance_range.document(),
         "warnings": scene.plausibility_warnings(),
+        "soil_validity": soil_validity_document(report.soil_validity),
         "verdict": report.resonance_outcome.value,
     }
 
@@ -117,10 +125,12 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
         "code": limits.code, "machine_group": limits.machine_group, "foundation": limits.foundation,
         "acceptable_zone": limits.acceptable_zone,
         "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
+        **support_document(limits, report.zone_rows),
         "points": [
             {"point": z.point, "quantity": z.judged.quantity, "governing": z.direction, "value": z.value,
              "velocity_zone": z.judged.velocity_zone, "displacement_zone": z.judged.displacement_zone,
-             "zone": z.zone, "limit": z.limit, "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text}
+             "zone": z.zone, "limit": z.limit, "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text,
+             **point_support_document(z)}
             for z in report.zone_rows
         ],
         "warnings": list(report.code_warnings),
@@ -179,6 +189,7 @@ def print_resonance(report: BlockReport, scene, source: str, units: DisplayUnits
                   f"{r.margin:.1%}", f"{r.required:.0%}", f"{r.share:.3g}" + ("" if r.judged else " (not judged)"),
                   verdict_text(r.outcome.value, strict) if r.status != "information" else "info")
     out.print(t)
+    print_soil_validity(report.soil_validity)
     out.print(resonance_summary(report, strict), soft_wrap=True)
 
 
@@ -230,11 +241,13 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
         for r in report.zone_rows:
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)
+        print_supports(report.zone_rows)
     for w in report.code_warnings:
         out.print(f"note: {escape(w)}", soft_wrap=True)
     if report.amplitude_range is not None:
         out.print(f"Amplitudes {escape(report.amplitude_range.text)}", soft_wrap=True)
     print_office(report, strict)
+    print_soil_validity(report.soil_validity)
     out.print(f"{verdict_text(report.amplitude_outcome.value, strict)}: amplitudes")
 
 

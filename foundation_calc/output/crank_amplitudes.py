@@ -14,6 +14,13 @@ from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.crank_resonance import rule_document
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.notes import (
+    point_support_document,
+    print_soil_validity,
+    print_supports,
+    soil_validity_document,
+    support_document,
+)
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
@@ -76,6 +83,7 @@ def code_document(report: AmplitudeReport, limits) -> dict | None:
         "clause": table.clause if table else None,
         "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
         "displacement_boundaries": dict(zip(("A/B", "B/C", "C/D"), table.displacement_boundaries)) if table else None,
+        **support_document(limits, rows),
         "points": [
             {
                 "point": row.point,
@@ -91,6 +99,7 @@ def code_document(report: AmplitudeReport, limits) -> dict | None:
                 "ratio": row.ratio,
                 "verdict": row.outcome.value,
                 "reason": row.verdict_text,
+                **point_support_document(row),
             }
             for row in rows
         ],
@@ -162,6 +171,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         "code": code_document(report, scene.limits),
         "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
         "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
+        "soil_validity": soil_validity_document(report.soil_validity),
         "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
@@ -340,22 +350,27 @@ def _limits_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool
 def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     rows = report.code_rows
     t = rows[0].table
-    bounds = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.boundaries_mm_s))
-    moved = ", ".join(f"{name} {b:g}" for name, b in zip(("A/B", "B/C", "C/D"), t.displacement_boundaries_um))
+    tables = {row.table.foundation: row.table for row in rows}
+    bounds = "; ".join(
+        f"{kind} ({table.clause}) {', '.join(f'{n} {b:g}' for n, b in zip(('A/B', 'B/C', 'C/D'), table.boundaries_mm_s))}"
+        f" mm/s, {', '.join(f'{n} {b:g}' for n, b in zip(('A/B', 'B/C', 'C/D'), table.displacement_boundaries_um))} µm"
+        for kind, table in tables.items()
+    )
     table = Table(
-        title=f"{t.title}: zones of the RMS velocity and displacement, the more restrictive deciding ({t.clause};"
-        f" boundaries {bounds} mm/s, {moved} µm)", title_justify="left",
+        title=f"{t.code}, group {t.group}: zones of the RMS velocity and displacement, the more restrictive deciding"
+        f" (boundaries: {bounds})", title_justify="left",
     )
     unit = units.label("velocity")
     columns = ("point", f"horizontal [{unit}]", f"vertical [{unit}]", f"displacement [{units.label('amplitude')}]", "by",
-               "governs", "zone", "fails over", "verdict")
+               "governs", "support", "zone", "fails over", "verdict")
     for col in columns:
         table.add_column(col.replace("[", "\\["), justify="right" if "[" in col or col == "fails over" else "left")
     for row in rows:
         shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
         table.add_row(
             Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
-            fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.governing, row.zone,
+            fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.governing, row.table.foundation,
+            row.zone,
             units.show(shown, row.limit), verdict_text(row.outcome.value),
         )
     return table
@@ -428,6 +443,8 @@ def print_amplitudes_report(
         out.print(_limits_table(report, units, all_points))
     if report.code_rows:
         out.print(_code_table(report, units))
+        print_supports(report.code_rows)
     for warning in report.code_warnings:
         out.print(Text(f"warning: {warning}", style="yellow"))
+    print_soil_validity(report.soil_validity)
     out.print(summary_line(report))

@@ -9,6 +9,7 @@ from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, STATUS_NAMES, bands_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.output.notes import print_soil_validity, soil_validity_document
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
@@ -98,6 +99,7 @@ def resonance_document(report: ResonanceReport, scene, source: str) -> dict:
         ],
         "rule": rule_document(report),
         "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
+        "soil_validity": soil_validity_document(report.soil_validity),
         "warnings": scene.plausibility_warnings(),
         "verdict": report.outcome.value,
     }
@@ -177,4 +179,5 @@ def print_resonance_report(
         f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
         " The rule: README, \"The resonance rule\".", soft_wrap=True,
     )
+    print_soil_validity(report.soil_validity)
     out.print(summary_line(report, strict, units), soft_wrap=True)

@@ -244,7 +244,13 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     ------
     ValueError
         for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
+    NotImplementedError
+        for a code whose support class the modes of each candidate decide (no ``[limits] foundation``).
     """
+    if scene.limits.code is not None and scene.limits.foundation is None:
+        from foundation_calc.checks.support import PER_CANDIDATE
+
+        raise NotImplementedError(PER_CANDIDATE)
     n = len(next(iter(batch.values()))) if batch else 1
     return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
                      n, PIECE)

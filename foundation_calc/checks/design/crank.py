@@ -454,6 +454,10 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     if scene.mechanism is None or scene.loads:
         raise NotImplementedError("the batch judges a crank foundation's [mechanism] alone; a scene with [[loads]]"
                                   " is judged by the full path")
+    if scene.limits.code is not None and scene.limits.foundation is None:
+        from foundation_calc.checks.support import PER_CANDIDATE
+
+        raise NotImplementedError(PER_CANDIDATE)
     L, B, H = block_dimensions(scene, batch)
     if not len(L):  # an empty batch: the verdicts' arrays of a batch of one, emptied
         one = evaluate(scene, {f"foundation.block.{k}": np.array([getattr(scene.foundation.block, k)]) for k in VARIED})

@@ -162,18 +162,18 @@ def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
     """The code check of every point from the sheet's r.m.s. velocities and displacements: the
     largest direction's values placed in the zone table, the worse zone deciding."""
     from foundation_calc.checks.codes import zone_outcome
-    from foundation_calc.output.report.code_zone import judged_zone, zone_table
+    from foundation_calc.output.report.code_zone import judged_zone, support_blocks, zone_tables
 
     rows = []
-    for name, v, u in zip(names, rms, rms_u):
-        z = judged_zone(code, float(v.max()), float(u.max()))
-        d = int(np.argmax(v if z.quantity == "velocity" else u))
+    for name, v, u, point in zip(names, rms, rms_u, code["points"]):
+        z, zones, d = judged_zone(code, point, v, u)
         rows.append((name, DIRECTIONS[d], figure(v.max() * 1e3, 3), z.velocity_zone, figure(u.max() * 1e6, 3),
-                     z.displacement_zone, z.zone, zone_outcome(z.zone, code["acceptable_zone"]).value.upper()))
-    found = table("Code zone of each point: its largest v_rms and d_rms = √(Σ |u_P,n|²/2), the worse zone deciding",
-                  ("point", "direction", "v_rms [mm/s]", "v zone", "d_rms [µm]", "d zone", "zone", "verdict"),
-                  rows, (False, False, True, False, True, False, False, False))
-    return found, zone_table(code)
+                     z.displacement_zone, z.zone, zone_outcome(z.zone, code["acceptable_zone"]).value.upper(), zones.foundation))
+    found = table("Code zone of each point: its largest v_rms and d_rms = √(Σ |u_P,n|²/2), the worse zone deciding;"
+                  " each direction in the table of its support class",
+                  ("point", "direction", "v_rms [mm/s]", "v zone", "d_rms [µm]", "d zone", "zone", "verdict", "support"),
+                  rows, (False, False, True, False, True, False, False, False, False))
+    return (found, *zone_tables(code), *support_blocks(code))
 
 
 def _points(solve: BlockSolve, names, points) -> Table:

@@ -51,12 +51,13 @@ def displacement_rms(motion, horizontal, height) -> np.ndarray:
     return np.sqrt((A**2).sum(-1) / 2.0)
 
 
-def zone_table(code: dict):
-    """The code's zone table (:data:`~foundation_calc.checks.codes.TABLES`) with its clause and
-    each zone's verdict for the scene's acceptable zone; ``code``: the amplitudes document's part."""
+def zone_table(code: dict, kind: str):
+    """The code's zone table of the support class ``kind`` (:data:`~foundation_calc.checks.codes.TABLES`)
+    with its clause and each zone's verdict for the scene's acceptable zone; ``code``: the
+    amplitudes document's part."""
     from foundation_calc.checks.codes import TABLES, zone_outcome
 
-    zones = TABLES[code["code"], code["machine_group"], code["foundation"]]
+    zones = TABLES[code["code"], code["machine_group"], kind]
 
     def ranges(b):
         return (f"≤ {b[0]:g}", f"{b[0]:g} - {b[1]:g}", f"{b[1]:g} - {b[2]:g}", f"> {b[2]:g}") if b else ("-",) * 4
@@ -71,13 +72,50 @@ def zone_table(code: dict):
         (False, False, False, False))
 
 
-def judged_zone(code: dict, velocity: float, displacement: float):
-    """The zone of a point by its largest r.m.s. velocity [m/s] and displacement [m] (the
-    check's :func:`~foundation_calc.checks.codes.code_zone`)."""
-    from foundation_calc.checks.codes import TABLES, code_zone
+def zone_tables(code: dict) -> tuple:
+    """:func:`zone_table` of every support class the points are judged in."""
+    used = dict.fromkeys(c["support"] for p in code["points"] for c in p["support"]) or {code["foundation"]: None}
+    return tuple(zone_table(code, kind) for kind in used)
 
-    return code_zone(TABLES[code["code"], code["machine_group"], code["foundation"]], velocity, displacement,
-                     code["acceptable_zone"])
+
+def judged_zone(code: dict, point: dict, velocity, displacement):
+    """The zone of a point by its r.m.s. velocity [m/s] and displacement [m] in each direction,
+    each in the table of its support class (the check's :func:`~foundation_calc.checks.codes.point_zone`;
+    ``point``: the point's entry of the ``code`` part): (zone, table, governing direction's index)."""
+    from foundation_calc.checks.codes import TABLES, point_zone
+
+    kinds = [c["support"] for c in point["support"]] or [code["foundation"]] * len(velocity)
+    tables = [TABLES[code["code"], code["machine_group"], kind] for kind in kinds]
+    return point_zone(tables, [float(v) for v in velocity], [float(x) for x in displacement], code["acceptable_zone"])
+
+
+def support_blocks(code: dict) -> tuple:
+    """The support class of every point and direction (ISO 10816-3:2009, 3.4) as a sheet table,
+    from the ``code`` part: the lowest natural frequency in the direction against 1.25 × the main
+    excitation frequency, or the scene's class."""
+    from foundation_calc.checks.support import CLAUSE, RIGID_RATIO
+
+    hz = 1.0 / (2.0 * np.pi)
+    rows = []
+    for p in code["points"]:
+        for c in p["support"]:
+            f = c["frequency"]
+            rows.append((p["point"], c["direction"], c["mode"] or "-", "-" if f is None else figure(f * hz, 4),
+                         figure(RIGID_RATIO * c["excitation"] * hz, 4), c["by_modes"],
+                         c["support"] + (" (given in the scene)" if c["given"] else "")))
+    if not rows:
+        return ()
+    note = Paragraph(
+        f"Support class ({CLAUSE}): rigid in a measuring direction when the lowest natural frequency of machine and"
+        f" foundation in that direction is at least {RIGID_RATIO:g} times the main excitation frequency (the speed;"
+        " the highest machine speed on a block with several), flexible otherwise. A mode lies in a direction at a point"
+        " when it carries at least 1 % of the point's static compliance along it, (φ_P,j/p_j)² over its sum over the"
+        " modes. [limits] foundation, when given, overrides the modes' class.")
+    found = table("Support class of each point and direction: lowest mode in the direction, its frequency f and"
+                  f" {RIGID_RATIO:g} f_exc",
+                  ("point", "direction", "lowest mode", "f [Hz]", f"{RIGID_RATIO:g} f_exc [Hz]", "modes say", "judged as"),
+                  rows, (False, False, False, True, True, False, False))
+    return (note, found)
 
 
 def _verdict(code: dict, zone_name: str) -> str:
@@ -95,7 +133,8 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     horizontal = [0.0, *(p.horizontal for p in scene.points)]
     height = [0.0, *(p.height for p in scene.points)]
     terms = velocity_terms(motion, horizontal, height)
-    d_rms = displacement_rms(motion, horizontal, height).max(axis=1)
+    d_each = displacement_rms(motion, horizontal, height)
+    d_rms = d_each.max(axis=1)
     v_rms = np.sqrt((terms**2).sum(-1))
     governing = [DIRECTIONS[int(np.argmax(v))] for v in v_rms]
     chosen = np.array([terms[i, DIRECTIONS.index(g)] for i, g in enumerate(governing)])  # (points, K + 1)
@@ -108,7 +147,7 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
     cols = [column(list(chosen[:, n] * mm), 3, strongest.max() * mm) for n in own]
     rest_col = column(list(rest * mm), 2, strongest.max() * mm)
     total_col = column(list(total * mm), 3)
-    zones_found = [judged_zone(code, float(total[i]), float(d_rms[i])) for i in range(len(names))]
+    zones_found = [judged_zone(code, code["points"][i], v_rms[i], d_each[i])[0] for i in range(len(names))]
     d_col = column(list(d_rms * 1e6), 3)
     rows = [(name, governing[i], *(c[i] for c in cols), rest_col[i], total_col[i], f"{z.velocity_zone}", d_col[i],
              z.displacement_zone, z.zone, _verdict(code, z.zone))
@@ -119,7 +158,7 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
         ("point", "direction", *(f"v_{n} [mm/s]" for n in own), "other n [mm/s]", "v_rms [mm/s]", "v zone",
          "d_rms [µm]", "d zone", "zone", "verdict"),
         rows, (False, False, *(True,) * (len(own) + 2), False, True, False, False, False))
-    zones = zone_table(code)
+    zones = zone_tables(code)
     note = Paragraph(
         "Each point's horizontal and vertical displacement, as a rigid-body point of the block, is the series"
         " Σ A_n cos(nωt − φ_n) of the damped solve above; its larger r.m.s. velocity √(Σ v_n²) and r.m.s."
@@ -134,7 +173,7 @@ def code_zone_blocks(scene, code: dict | None, motion) -> tuple:
         "d_rms": ("r.m.s. displacement of a point, √(Σ A_n²/2), largest direction", "µm"),
         "ω": ("operating speed", "rad/s"),
     })
-    return (note, velocity, zones, terms)
+    return (note, velocity, *zones, *support_blocks(code), terms)
 
 
-__all__ = ["code_zone_blocks", "velocity_terms", "zone_table"]
+__all__ = ["code_zone_blocks", "judged_zone", "support_blocks", "velocity_terms", "zone_table", "zone_tables"]

@@ -91,7 +91,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             measure(code_units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
-            f"[ISO] {code['clause']}, group {code['machine_group']}, {code['foundation']}",
+            f"[ISO] {code['tables'][row['foundation']]['clause']}, group {code['machine_group']}, {row['foundation']}",
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])

@@ -51,6 +51,9 @@ import numpy as np
 #: Largest a0 = ω B'/V_s of the fits of [2] (Pais & Kausel fitted a0 <= 2; Gazetas' charts end at 2).
 A0_FITTED = 2.0
 
+#: Where :data:`A0_FITTED` comes from.
+A0_SOURCE = "Pais & Kausel (1988), fitted for a0 <= 2; Gazetas (1991), charts to a0 = 2"
+
 
 @dataclass(frozen=True)
 class Impedance:
@@ -178,5 +181,5 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, max_iteratio
     raise ArithmeticError(f"ω = p(K(ω)) did not converge in {max_iterations} iterations (last {omega!r} rad/s)")
 
 
-__all__ = ["A0_FITTED", "Impedance", "consistent_frequency", "footing_impedance", "rocking_radiation_coefficient",
+__all__ = ["A0_FITTED", "A0_SOURCE", "Impedance", "consistent_frequency", "footing_impedance", "rocking_radiation_coefficient",
            "stiffness_modifiers"]

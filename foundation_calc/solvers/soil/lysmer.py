@@ -23,6 +23,14 @@ import math
 
 from foundation_calc.solvers.soil.springs import SoilSprings
 
+#: Largest dimensionless frequency a0 = ω r/V_s (r the equivalent radius of the motion: r0 for
+#: vertical and sliding, r0ψ for rocking, r0θ for torsion) over which the analogs' springs and
+#: frequency-independent damping ratios were fitted to the half-space solutions [-].
+A0_FITTED = 1.5
+
+#: Where :data:`A0_FITTED` comes from.
+A0_SOURCE = "Richart, Hall & Woods (1970), ch. 7"
+
 
 def equivalent_radii(L, B):
     """Radii of the circles equivalent to an L × B base: (r0 for area, r0ψ for rocking) [m].
@@ -80,4 +88,4 @@ def lysmer_springs(G, rho, nu, L, B, M_tot, I_0, material_damping) -> SoilSpring
     )
 
 
-__all__ = ["equivalent_radii", "lysmer_springs"]
+__all__ = ["A0_FITTED", "A0_SOURCE", "equivalent_radii", "lysmer_springs"]

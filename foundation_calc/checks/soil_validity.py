@@ -1,0 +1,326 @@
+"""The soil model's range of validity: the dimensionless frequency a0 of every judged mode and
+harmonic against the range its soil method was fitted over.
+
+A half-space method replaces the soil by springs and dashpots fitted to rigorous solutions over a
+range of the dimensionless frequency a0 = ω b/V_s, b the length the method scales the footing by
+(V_s the soil's shear wave velocity). Beyond it the springs and dashpots are extrapolated. Each
+method declares its range in its own module:
+
+- ``"lysmer"``: a0 = ω r/V_s with the equivalent radius r of each motion (r0 = √(BL/π) vertical and
+  sliding, r0ψ = (BL³/(3π))^¼ rocking in the plane of L, r0θ = (LB(L² + B²)/(6π))^¼ torsion),
+  a0 <= 1.5 (:data:`foundation_calc.solvers.soil.lysmer.A0_FITTED`, Richart, Hall & Woods 1970);
+- ``"gazetas"``, ``"pais_kausel"``: a0 = ω B'/V_s, B' the shorter half-side, a0 <= 2
+  (:data:`foundation_calc.solvers.soil.impedance.A0_FITTED`, Pais & Kausel 1988, Gazetas 1991);
+- ``"coefficients"``, ``"sp26"``, ``"springs"``: frequency-independent springs; no range of a0
+  applies (:data:`NO_RANGE`).
+
+The frequencies judged (:func:`soil_validity`): every natural frequency the resonance check judges,
+with the motions whose springs hold at least :data:`MOTION_SHARE` of the mode's strain energy
+(:func:`spring_shares`: a spring the mode barely strains cannot make its frequency wrong), and
+every order n ω the resonance rule judges (order 1 always), with every motion (a harmonic loads
+whichever springs its forces reach). The soil as given (a ``modulus_range`` scales V_s and the
+modes' frequencies alike: their a0 stays).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Smallest share of a mode's strain energy held by one motion's spring for that motion to be
+#: judged at the mode's frequency [-]: a spring holding 1 % of it moves the frequency by 0.5 %
+#: for a 100 % error (dp/p = ½ Σ e_i dK_i/K_i), a tenth of the 5 % that fails any resonance.
+MOTION_SHARE = 0.01
+
+#: What a frequency-independent method's validity is, by method.
+NO_RANGE = {
+    "coefficients": "Barkan's coefficients give frequency-independent springs: no range of a0 applies",
+    "sp26": "SP 26.13330's springs and damping ratios do not depend on frequency: no range of a0 applies",
+    "springs": "the springs and dashpots given at O are taken at every frequency: no range of a0 applies",
+}
+
+#: How each half-space method defines a0.
+DEFINITIONS = {
+    "lysmer": "a0 = ω r/V_s, r the equivalent radius of the motion (r0 = √(BL/π) vertical and sliding,"
+              " r0ψ = (BL³/(3π))^¼ rocking, r0θ = (LB(L² + B²)/(6π))^¼ torsion)",
+    "gazetas": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+    "pais_kausel": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+}
+
+
+@dataclass(frozen=True)
+class FittedRange:
+    """The range of a0 a soil method holds over.
+
+    Attributes
+    ----------
+    method : the soil method, as ``[soil] method`` names it
+    a0_max : largest a0 of the fit [-]; None for a frequency-independent method
+    definition : how the method forms a0 ("" when none applies)
+    source : where the range comes from, or why none applies
+    """
+
+    method: str
+    a0_max: float | None
+    definition: str
+    source: str
+
+    @property
+    def applies(self) -> bool:
+        return self.a0_max is not None
+
+
+def fitted_range(method: str) -> FittedRange:
+    """The declared range of ``method`` (module docstring)."""
+    if method == "lysmer":
+        from foundation_calc.solvers.soil.lysmer import A0_FITTED, A0_SOURCE
+    elif method in ("gazetas", "pais_kausel"):
+        from foundation_calc.solvers.soil.impedance import A0_FITTED, A0_SOURCE
+    else:
+        return FittedRange(method, None, "", NO_RANGE[method])
+    return FittedRange(method, A0_FITTED, DEFINITIONS[method], A0_SOURCE)
+
+
+def characteristic_lengths(method: str, L: float, B: float) -> dict[str, float]:
+    """The length b [m] of a0 = ω b/V_s of each motion by ``method`` on a base L (along x, the
+    plane model's plane) × B [m]: the block's x, y, z, rx, ry, rz and the plane model's
+    horizontal (x), vertical (z) and rocking (about the axis normal to the plane, ry).
+
+    >>> b = characteristic_lengths("lysmer", 6.0, 4.0)
+    >>> round(b["z"], 4), round(b["rocking"], 4), round(characteristic_lengths("gazetas", 6.0, 4.0)["rz"], 4)
+    (2.764, 3.0943, 2.0)
+    """
+    if method == "lysmer":
+        from foundation_calc.solvers.soil.lysmer import equivalent_radii
+        from foundation_calc.solvers.soil.torsion import torsion_radius
+
+        r0, r_ry = equivalent_radii(L, B)
+        r_rx = equivalent_radii(B, L)[1]
+        lengths = {"x": r0, "y": r0, "z": r0, "rx": r_rx, "ry": r_ry, "rz": torsion_radius(L, B)}
+    else:
+        half = min(L, B) / 2.0
+        lengths = dict.fromkeys(("x", "y", "z", "rx", "ry", "rz"), half)
+    lengths = {k: float(v) for k, v in lengths.items()}
+    return lengths | {"horizontal": lengths["x"], "vertical": lengths["z"], "rocking": lengths["ry"]}
+
+
+@dataclass(frozen=True)
+class JudgedFrequency:
+    """A frequency the checks judge and the motions whose springs matter there.
+
+    ``at`` names it (``"p2"``, ``"2ω"``, ``"mode 5 (ry)"``, ``"fan: 2ω"``); ``omega`` [rad/s]."""
+
+    at: str
+    omega: float
+    motions: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class A0Value:
+    """a0 = ω b/V_s [-] of one motion at one judged frequency ``omega`` [rad/s], b = ``length`` [m]."""
+
+    at: str
+    omega: float
+    motion: str
+    length: float
+    a0: float
+
+
+@dataclass(frozen=True)
+class SoilValidity:
+    """Every judged a0 of a scene and those beyond its method's fitted range.
+
+    ``V_s`` [m/s] is None and ``values`` empty for a method without a range."""
+
+    fitted: FittedRange
+    V_s: float | None
+    values: tuple[A0Value, ...]
+
+    @property
+    def beyond(self) -> tuple[A0Value, ...]:
+        """The values past the range, largest first."""
+        if not self.fitted.applies:
+            return ()
+        return tuple(sorted((v for v in self.values if v.a0 > self.fitted.a0_max), key=lambda v: -v.a0))
+
+    @property
+    def largest(self) -> A0Value | None:
+        return max(self.values, key=lambda v: v.a0, default=None)
+
+    @property
+    def text(self) -> str:
+        """One line: the worst value past the range, the largest within it, or why none applies."""
+        f = self.fitted
+        if not f.applies:
+            return f"method {f.method!r}: {f.source}"
+        if not self.beyond:
+            top = self.largest
+            where = "" if top is None else f" (largest {top.a0:.3g}, {top.motion} at {top.at})"
+            return f"a0 within the range of soil method {f.method!r}, a0 <= {f.a0_max:g}, at every judged frequency{where}"
+        places = {}
+        for v in self.beyond:
+            places.setdefault(v.at, []).append(f"{v.motion} {v.a0:.3g}")
+        where = "; ".join(f"at {at}: {', '.join(values)}" for at, values in places.items())
+        return (f"a0 beyond the range of soil method {f.method!r} (a0 <= {f.a0_max:g}, {f.source}): {where};"
+                " its springs and damping there are extrapolated")
+
+    @property
+    def brief(self) -> str:
+        """The largest a0 past the range in a phrase (empty when none is), for a check's reason."""
+        if not self.beyond:
+            return ""
+        top = self.beyond[0]
+        return (f"soil model: a0 of {top.motion} = {top.a0:.3g} at {top.at} is beyond the range of soil method"
+                f" {self.fitted.method!r} (a0 <= {self.fitted.a0_max:g})")
+
+    def details(self) -> tuple[str, ...]:
+        """A line per value past the range (``WARN ...``), for JUnit and the JSON documents."""
+        f = self.fitted
+        return tuple(
+            f"WARN soil model: a0 = ω b/V_s = {v.a0:.4g} > {f.a0_max:g} at {v.at} ({v.omega:.6g} rad/s), {v.motion}"
+            f" (b = {v.length:.4g} m, V_s = {self.V_s:.4g} m/s): beyond the range of method {f.method!r} ({f.source})"
+            for v in self.beyond
+        )
+
+    def document(self) -> dict:
+        """The JSON part (SI units)."""
+        f = self.fitted
+        return {
+            "method": f.method,
+            "a0_max": f.a0_max,
+            "definition": f.definition or None,
+            "source": f.source,
+            "shear_wave_velocity": self.V_s,
+            "values": [{"at": v.at, "omega": v.omega, "motion": v.motion, "length": v.length, "a0": v.a0} for v in self.values],
+            "beyond": [{"at": v.at, "omega": v.omega, "motion": v.motion, "length": v.length, "a0": v.a0} for v in self.beyond],
+            "text": self.text,
+        }
+
+
+def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
+                  frequencies: Iterable[JudgedFrequency]) -> SoilValidity:
+    """a0 = ω b/V_s of every motion of every judged frequency against ``method``'s fitted range.
+
+    Parameters
+    ----------
+    method : the soil method
+    V_s : shear wave velocity of the soil [m/s] (unused by a method without a range)
+    lengths : motion -> b [m] (:func:`characteristic_lengths`)
+    frequencies : the judged frequencies and the motions judged at each
+
+    >>> v = soil_validity("lysmer", 170.0, characteristic_lengths("lysmer", 6.0, 4.0),
+    ...                   [JudgedFrequency("p2", 140.56, ("horizontal", "rocking"))])
+    >>> [(x.motion, round(x.a0, 3)) for x in v.beyond]
+    [('rocking', 2.558), ('horizontal', 2.285)]
+    """
+    fitted = fitted_range(method)
+    if not fitted.applies:
+        return SoilValidity(fitted, None, ())
+    values = tuple(
+        A0Value(f.at, float(f.omega), motion, lengths[motion], float(f.omega) * lengths[motion] / V_s)
+        for f in frequencies if not math.isnan(f.omega)
+        for motion in f.motions
+    )
+    return SoilValidity(fitted, float(V_s), values)
+
+
+def spring_shares(springs: np.ndarray, motion: np.ndarray) -> np.ndarray:
+    """Share of each spring in each mode's strain energy, k_i q_ij² / Σ_i k_i q_ij² [-], shape (D, J):
+    ``springs`` (J, D) the springs each mode was solved on, ``motion`` (D, J) each spring's
+    motion in each mode.
+
+    >>> spring_shares(np.array([[1.0, 3.0]]), np.array([[1.0], [1.0]])).ravel().tolist()
+    [0.25, 0.75]
+    """
+    energy = np.asarray(springs, dtype=float).T * np.asarray(motion, dtype=float) ** 2
+    return energy / energy.sum(axis=0, keepdims=True)
+
+
+def mode_frequencies(labels, frequencies, shares: np.ndarray, motions) -> list[JudgedFrequency]:
+    """Each mode with the motions holding at least :data:`MOTION_SHARE` of its strain energy."""
+    return [
+        JudgedFrequency(label, float(p), tuple(m for i, m in enumerate(motions) if shares[i, j] >= MOTION_SHARE))
+        for j, (label, p) in enumerate(zip(labels, frequencies))
+    ]
+
+
+def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[str, float], block_at,
+                   speeds: Mapping[str, float]) -> SoilValidity:
+    """:func:`soil_validity` of the plane model: the modes ``frequencies`` (name -> p [rad/s]) of
+    the block ``block_at(ω)`` with the motions they strain, and ``speeds`` (name -> ω [rad/s],
+    e.g. the judged orders n ω) with every motion."""
+    from foundation_calc.checks.plane_modes import BASE_MOTIONS, plane_modes
+
+    if not fitted_range(method).applies:
+        return soil_validity(method, V_s, {}, ())
+    modes = plane_modes(frequencies, block_at)
+    shares = spring_shares(modes.springs, modes.base_motion())
+    judged = mode_frequencies(modes.labels, modes.frequencies, shares, BASE_MOTIONS)
+    judged += [JudgedFrequency(at, w, BASE_MOTIONS) for at, w in speeds.items()]
+    return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged)
+
+
+def judged_orders(rows) -> list[int]:
+    """The orders n the resonance rule judges on any mode (``rows`` with ``judged`` and the order
+    as ``order`` or ``condition.harmonic``), and 1 (the speed) always, ascending."""
+    orders = {1}
+    for row in rows:
+        if row.judged:
+            orders.add(int(getattr(row, "order", None) or row.condition.harmonic))
+    return sorted(orders)
+
+
+def _order_label(n: int) -> str:
+    return f"{n if n > 1 else ''}ω"
+
+
+def crank_validity(scene, report) -> SoilValidity:
+    """The soil model's validity of a ``crank_foundation`` scene at the modes k0, p1, p2 of its
+    resonance ``report`` (:class:`~foundation_calc.checks.crank_resonance.ResonanceReport`, on a
+    frequency-dependent soil each at its own frequency) and every order the rule judges."""
+    soil, f = scene.soil, scene.foundation
+    method = soil.method_used
+    V_s = soil.V_s if fitted_range(method).applies else None
+    zero = report.zero_order
+    modes = {m: float(getattr(zero, m)) for m in ("k0", "p1", "p2")}
+    speeds = {_order_label(n): n * report.omega for n in judged_orders(report.rows)}
+    L, B = f.dimensions
+    return plane_validity(method, V_s, L, B, modes, scene.block, speeds)
+
+
+def block_validity(scene, report) -> SoilValidity:
+    """The soil model's validity of a ``block_foundation`` scene at its six modes (with the
+    motions each strains) and every machine's orders the rule judges (``report``: a
+    :class:`~foundation_calc.checks.block.BlockReport`)."""
+    from foundation_calc.solvers.rigid_body.modes import MOTIONS
+
+    soil = scene.soil
+    method = soil.method_used
+    if not fitted_range(method).applies:
+        return soil_validity(method, None, {}, ())
+    modes = report.modes
+    if soil.frequency_dependent:
+        springs = np.asarray(scene.soil_impedance(modes.frequencies)[0])  # (6 modes, 6 springs)
+    else:
+        springs = np.broadcast_to(scene.model().springs, (len(modes.frequencies), 6))
+    shares = spring_shares(springs, modes.shapes)
+    labels = [f"mode {j + 1} ({motion})" for j, motion in enumerate(modes.dominant)]
+    judged = mode_frequencies(labels, modes.frequencies, shares, MOTIONS)
+    harmonics: dict[float, list[str]] = {}  # machines at one speed share their orders' frequencies
+    for machine, speed in report.speeds.items():
+        for n in judged_orders([r for r in report.resonance_rows if r.machine == machine]):
+            harmonics.setdefault(n * speed, []).append((machine, n))
+    several = len(report.speeds) > 1
+    for omega, orders in harmonics.items():
+        names = ", ".join(f"{m}: {_order_label(n)}" if several else _order_label(n) for m, n in orders)
+        judged.append(JudgedFrequency(names, omega, MOTIONS))
+    L, B = scene.base
+    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B), judged)
+
+
+__all__ = ["DEFINITIONS", "MOTION_SHARE", "NO_RANGE", "A0Value", "FittedRange", "JudgedFrequency", "SoilValidity",
+           "block_validity", "characteristic_lengths", "crank_validity", "fitted_range", "judged_orders",
+           "mode_frequencies", "plane_validity", "soil_validity", "spring_shares"]
