@@ -43,8 +43,8 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
     not a check: exit 0."""
     import typer
 
+    from foundation_calc.checks.block import scene_modes
     from foundation_calc.output import block_sweep as out
-    from foundation_calc.solvers.block.response import block_modes, consistent_modes
     from foundation_calc.solvers.block.sweep import speed_sweep
 
     names = [m.name for m in loaded.machines]
@@ -59,8 +59,7 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
         raise typer.BadParameter(f"no machine {machine!r}{hint}; the scene's machines: {', '.join(names)}", param_hint="'--machine'")
     swept = names.index(machine) if machine is not None else 0
     model = loaded.model()
-    impedance = loaded.soil_impedance if loaded.soil.frequency_dependent else None
-    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
+    modes, impedance = scene_modes(loaded, model)
     result = speed_sweep(model, modes, loaded.excitations(), swept, omega, [p.at for p in loaded.points], impedance)
     rows = out.sweep_rows(result, modes, loaded, swept)
     if csv is not None:
@@ -80,14 +79,17 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
 
 def soil(loaded, source: str, json: bool) -> int:
     """The block's six springs, damping ratios and dashpots at O, and the uncoupled frequencies
-    sqrt(K_i / m_i); judges nothing."""
+    sqrt(K_i / m_i); on a frequency-dependent soil (labelled static) and at each machine's speed
+    and each mode's own frequency; judges nothing."""
+    from foundation_calc.checks.block_soil import soil_at_frequencies
     from foundation_calc.output import block_soil as out
 
     model = loaded.model()
+    columns = soil_at_frequencies(loaded, model)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(out.soil_document(model, loaded, source))
+        print_json(out.soil_document(model, loaded, source, columns))
     else:
-        out.print_soil(model, loaded, source)
+        out.print_soil(model, loaded, source, columns)
     return 0
