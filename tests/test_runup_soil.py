@@ -52,7 +52,7 @@ def _block(method: str):
 def _block_runup(method: str):
     from foundation_calc.checks.runup import check_runup
 
-    return check_runup(_block(method), 2.0, None)
+    return check_runup(_block(method), 1.0, None)
 
 
 @functools.lru_cache(maxsize=None)
@@ -69,10 +69,10 @@ def _crank_scene(name: str):
 
 @functools.lru_cache(maxsize=None)
 def _crank_runup(name: str):
-    """The start-up in 1 s of :func:`_crank_scene` ``name``."""
+    """The start-up in 0.5 s of :func:`_crank_scene` ``name``."""
     from foundation_calc.checks.runup import check_runup
 
-    return check_runup(_crank_scene(name), 1.0, None)
+    return check_runup(_crank_scene(name), 0.5, None)
 
 
 @pytest.mark.parametrize("method", ["gazetas", "pais_kausel"])
@@ -88,7 +88,7 @@ def test_runup_passes_the_modes_resonance_reports(runner, tmp_path, method):
     path = tmp_path / f"{method}.toml"
     path.write_text(tomli_w.dumps(_block_document(method)), encoding="utf-8")
     resonance = runner.invoke(app, ["resonance", str(path), "--json"])
-    run = runner.invoke(app, ["runup", str(path), "--time", "2", "--json"])
+    run = runner.invoke(app, ["runup", str(path), "--time", "1", "--json"])
     assert run.exit_code == 0, run.stderr
     modes = json.loads(resonance.stdout)["modes"]
     frequencies = [m["frequency"]["omega"] for m in modes]
@@ -127,7 +127,7 @@ def test_crank_runup_passes_the_averaged_frequencies_resonance_reports(scene):
 
     scene, report = scene()
     averaged = scene_resonances_as_given(scene).averaged
-    run = (report or check_runup(scene, 1.0, None)).runs["run_up"]
+    run = (report or check_runup(scene, 0.5, None)).runs["run_up"]
     expected = sorted(float(getattr(averaged, name)) for name in ("k0", "p1", "p2"))
     assert list(run.natural) == pytest.approx(expected, rel=1e-12)
     assert len(run.names) == 3

@@ -89,6 +89,7 @@ def sheet_modes(structure, natural) -> tuple[np.ndarray, np.ndarray, np.ndarray]
 def runup_columns(scene, runup: dict) -> list[Columns]:
     """A table of passage columns for every run of the ``runup`` document with passages."""
     from foundation_calc.checks.runup import run_title
+    from foundation_calc.output.runup import mode_label
 
     structures = _structures(scene)
     out = []
@@ -100,7 +101,7 @@ def runup_columns(scene, runup: dict) -> list[Columns]:
         direction = 1 if kind == "run_up" else -1
         modes = sheet_modes(structure, run["natural_frequencies"])
         chains = [passage_chain(structure, list(names), omega, run["duration"], direction, p, modes) for p in run["passages"]]
-        heads = tuple(f"mode {p['mode']}, {p['harmonic']:g}ω" for p in run["passages"])
+        heads = tuple(f"mode {mode_label(p['mode'] - 1, run.get('mode_names'))}, {p['harmonic']:g}ω" for p in run["passages"])
         lead = tuple((name, "given", source) for name, source in
                      (("omega_i", "modes of M⁻¹K(ω_i)" if structure.at_frequency is not None else "modes of M⁻¹K"),
                       ("r", "harmonic"), ("zeta", "φᵀCφ/(2ω_i)"), ("F_m", "φᵀ(A Ω_r² + B)"),
