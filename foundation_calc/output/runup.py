@@ -292,7 +292,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
             ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
         for k, (when, p) in enumerate(marks):
             ax.axvline(when, color="0.6", lw=0.8)
-            ax.annotate(f"mode {p.mode + 1}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
+            ax.annotate(f"mode {mode_label(p.mode, report.names)}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
                         xytext=(2, -10 - 9 * (k % 3)), textcoords="offset points", fontsize=7, color="0.3")
         twin = ax.twinx()
         twin.plot(t, speed, color="0.45", lw=0.9, ls="-.", label="shaft speed")
