@@ -39,7 +39,7 @@ The alternative, modal superposition with each mode on its own K(p_j), C(p_j) (t
 modal analysis of structures on springs and dashpots, Roesset, Whitman & Dobry, J. Struct. Div.
 ASCE 99(3), 1973), gets the ringing right but not the steady state: on the README's two-machine
 block on Gazetas' soil its steady peaks at the operating speeds differ from the frequency-domain
-solution by 2-6 % and, along one direction, by up to 36 % (its modes, each from a different K,
+solution by 1-8 % and, along one direction, by up to 23 % (its modes, each from a different K,
 are not orthogonal).
 """
 
