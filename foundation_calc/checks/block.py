@@ -268,12 +268,20 @@ def check_block(scene) -> BlockReport:
     return replace(report, resonance_range=resonance, amplitude_range=amplitude)
 
 
+def scene_modes(scene, model) -> tuple[BlockModes, object]:
+    """The modes of a block scene's ``model`` and its soil's impedance (None on a
+    frequency-independent soil): on a frequency-dependent soil each mode at its own frequency
+    (:func:`~foundation_calc.solvers.block.response.consistent_modes`). Every command takes the
+    scene's modes from here (resonance, amplitudes, sweep, run-up), so they are one set."""
+    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
+    return (block_modes(model) if impedance is None else consistent_modes(model, impedance)), impedance
+
+
 def check_block_as_given(scene) -> BlockReport:
     """:func:`check_block` with the soil data as given (no ``modulus_range``)."""
     model = scene.stable_model()
     excitations = scene.excitations()
-    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
-    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
+    modes, impedance = scene_modes(scene, model)
     rows = resonance_rows(modes, excitations, scene.limits.detuning)
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
@@ -308,4 +316,4 @@ def check_block_as_given(scene) -> BlockReport:
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
            "check_block_as_given", "condition_label", "limit_rows", "resonance_offsets", "resonance_point", "resonance_rows",
-           "resonance_text", "zone_rows"]
+           "resonance_text", "scene_modes", "zone_rows"]

@@ -113,16 +113,14 @@ class _Row:
 def sweep_block(scene, swept: int, omega, alone: bool = False) -> BlockSweep:
     """Sweep machine ``swept`` (index into ``scene.machines``) of a ``block_foundation`` scene
     over the speeds ``omega`` [rad/s] (module docstring); ``alone``: leave the other machines out."""
-    from foundation_calc.checks.block import LIMITED_VALUES
+    from foundation_calc.checks.block import LIMITED_VALUES, scene_modes
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.checks.resonance_rule import judge, required_detuning
-    from foundation_calc.solvers.block.response import block_modes, consistent_modes
     from foundation_calc.solvers.block.sweep import speed_sweep
 
     omega = np.asarray(omega, dtype=float)
     model = scene.stable_model()
-    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
-    modes = block_modes(model) if impedance is None else consistent_modes(model, impedance)
+    modes, impedance = scene_modes(scene, model)
     everyone = scene.excitations()
     running = [everyone[swept]] if alone else everyone  # in the scene's order, as fcalc check lists them
     at = 0 if alone else swept

@@ -167,27 +167,16 @@ def _label(n: int, mode: str) -> str:
     return f"{n if n > 1 else ''}ω = {mode}"
 
 
-#: Column orders k0, p1, p2 of ascending modes, by the column of k0.
-_ORDERS = np.array([[0, 1, 2], [1, 0, 2], [2, 0, 1]])
-
-
-def _mode_order(M, shapes) -> np.ndarray:
-    """Columns of ``shapes`` (ascending frequencies) in the order k0, p1, p2: k0 is the mode whose
-    motion is most vertical (largest share of its kinetic energy in y), p1 and p2 the others.
-    Stacks (..., 3, 3) give (..., 3)."""
-    vertical = shapes[..., 1, :] ** 2 * M[..., 1, 1, None]
-    return _ORDERS[np.argmax(vertical, axis=-1)]
-
-
 def forcing_shares(M, K, forces) -> np.ndarray:
     """Forcing share [-] of each harmonic on each mode: the modal weights
     (:func:`~foundation_calc.solvers.numerics.modal_forcing.modal_forcing_weights`) of ``forces``
     (H, 3) on (K, M), modes in the order k0, p1, p2, over the largest weight; shape (..., H, 3)
     for stacks (..., 3, 3) of operators."""
+    from foundation_calc.solvers.crank.averaged import mode_order
     from foundation_calc.solvers.numerics.modal_forcing import modal_forcing_weights
 
     _, shapes, weights = modal_forcing_weights(M, K, forces)
-    weights = np.take_along_axis(weights, _mode_order(M, shapes)[..., None, :], axis=-1)
+    weights = np.take_along_axis(weights, mode_order(M, shapes)[..., None, :], axis=-1)
     largest = weights.max(axis=(-2, -1), keepdims=True)
     return np.where(largest > 0.0, weights / np.where(largest > 0.0, largest, 1.0), 0.0)
 
@@ -359,6 +348,19 @@ def scene_design_frequencies(scene):
     zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
     averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
     return zero, averaged, static
+
+
+def scene_frequencies(scene) -> NaturalFrequencies:
+    """k0, p1, p2 [rad/s] of a ``crank_foundation`` scene's operator with the mechanism's inertia
+    averaged, as its resonance check reports them (a machine given by its loads: its block's), on
+    a frequency-dependent soil each at its own frequency: the modes its start-up passes."""
+    if scene.mechanism is None:
+        from foundation_calc.solvers.crank.loads import block_frequencies
+
+        found = scene_block_frequencies(scene)
+        return block_frequencies(scene.block()) if found is None else found[0]
+    found = scene_design_frequencies(scene)
+    return design_frequencies(scene.design())[1] if found is None else found[1]
 
 
 def scene_block_frequencies(scene):

@@ -13,7 +13,12 @@ is solved with the soil's springs and dashpots at n ω (one batched first approx
 solve per harmonic over the whole chunk of speeds, harmonics spliced as
 :func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics` does; the mean on the static
 springs), and the resonance margins are to the natural frequencies that solve ω = p(K(ω)), which
-do not depend on the speed (:class:`DynamicSoil`). A soil sweep scales the static springs.
+do not depend on the speed (:class:`DynamicSoil`). A soil sweep on such a soil multiplies the soil's
+stiffness data (G, or V_s by the square root) by the factor and recomputes everything from them
+at each factor: the springs and dashpots at each harmonic's n ω and the natural frequencies each at
+its own, at the scene's speed (:func:`factored_soil_chunks`): each point is ``fcalc amplitudes``
+and ``fcalc resonance`` of the scene with that soil. On a frequency-independent soil a soil sweep
+multiplies the springs by the factor and the dashpots by its square root.
 """
 
 from __future__ import annotations
@@ -297,6 +302,43 @@ def sweep_chunks(
         yield replace(part, critical=critical)
 
 
+def factored_soil_chunks(scene, values, limits, detuning, points=()):
+    """A soil sweep of a ``crank_foundation`` scene on a frequency-dependent soil (module
+    docstring), one :class:`SweepReport` of one point per factor of ``values`` [-]: the scene with
+    its soil's stiffness data × factor (:meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`)
+    at its own speed, on the springs and dashpots at n ω and the natural frequencies that solve
+    ω = p(K(ω)) (:func:`scene_dynamic_soil`). ``limits``, ``detuning``, ``points`` as
+    :func:`sweep` takes them; the conditions and their forcing shares are the scene's as given,
+    as :func:`sweep_chunks` takes them."""
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+
+    vendor = scene_vendor_loads(scene)
+    conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(),
+                                           None if vendor is None else vendor.loads, None if vendor is None else vendor.block)
+    omega = np.array([scene.speed.omega_rad_s])
+    for factor in np.asarray(values, dtype=float):
+        at = scene.with_modulus_factor(float(factor))
+        design = None if at.mechanism is None else at.design()
+        part = _chunk(design, "omega", omega, limits, detuning, points, scene_vendor_loads(at), conditions, share,
+                      scene_dynamic_soil(at))
+        yield replace(part, variable="soil_factor", values=np.array([factor]))
+
+
+def scene_sweep_chunks(scene, variable: str, values):
+    """The chunks of a sweep of a ``crank_foundation`` scene (:func:`sweep_chunks`) of ``variable``
+    over ``values``, with its [limits], [[points]] and [[loads]]: frequency-consistent on a
+    frequency-dependent soil (module docstring)."""
+    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+
+    points = [(p.name, p.horizontal, p.height) for p in scene.points]
+    limits, detuning = scene.limits, scene.limits.detuning
+    if variable == "soil_factor" and scene.soil.frequency_dependent:
+        return factored_soil_chunks(scene, values, limits, detuning, points)
+    design = None if scene.mechanism is None else scene.design()
+    dynamic = scene_dynamic_soil(scene) if variable == "omega" else None
+    return sweep_chunks(design, variable, values, limits, detuning, points, scene_vendor_loads(scene), dynamic=dynamic)
+
+
 def joined(parts: list[SweepReport]) -> SweepReport:
     """One report of the chunks ``parts`` (their point arrays joined end to end)."""
     first = parts[0]
@@ -358,5 +400,5 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
     return DynamicSoil(at, zero, averaged)
 
 
-__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "joined", "scene_dynamic_soil",
-           "sweep", "sweep_chunks"]
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "factored_soil_chunks", "joined",
+           "scene_dynamic_soil", "scene_sweep_chunks", "sweep", "sweep_chunks"]

@@ -52,6 +52,8 @@ class RunupReport:
     warnings : findings that do not change the verdict (undamped)
     outcome : worst judged row or motor torque (PASS when nothing is judged: see ``judged``)
     speeds : a block's machines as (name, speed [rad/s]); empty for one machine
+    names : what the resonance check calls each mode, ascending frequency (a block's dominant
+        motion, a crank foundation's k0, p1, p2; empty for a platform)
     """
 
     runs: dict
@@ -66,6 +68,7 @@ class RunupReport:
     warnings: tuple
     outcome: Outcome
     speeds: tuple = ()
+    names: tuple = ()
 
     @property
     def judged(self) -> bool:
@@ -101,14 +104,16 @@ DIRECTIONS = {"platform": ("x", "y", "z"), "crank_foundation": ("horizontal", "v
 
 def _block_structures(scene):
     """One structure per machine of a block scene as (name, structure, speed [rad/s]), and the
-    names of the points (G first)."""
-    from foundation_calc.solvers.block.response import block_modes
+    names of the points (G first): the block with the scene's modes, the resonance check's
+    (:func:`~foundation_calc.checks.block.scene_modes`; a PhysicsError naming the soil when the
+    block is unstable)."""
+    from foundation_calc.checks.block import scene_modes
     from foundation_calc.solvers.block.runup import machine_structure
 
     model = scene.stable_model()  # a PhysicsError naming the likely culprit when the block tips over
-    block_modes(model)
+    modes, impedance = scene_modes(scene, model)
     at = [p.at for p in scene.points]
-    built = [(e.name, machine_structure(model, e, at), e.omega) for e in scene.excitations()]
+    built = [(e.name, machine_structure(model, e, at, modes, impedance), e.omega) for e in scene.excitations()]
     return built, ("G", *(p.name for p in scene.points))
 
 
@@ -128,12 +133,33 @@ def _structure(scene):
     loads = scene.harmonic_loads()
     if scene.mechanism is None:  # a machine given by its vendor's loads alone
         omega = scene.speed.omega_rad_s
-        return block_structure(scene.block(), loads, omega, horizontal, height), names, omega, 0.0
+        return _on_soil(scene, block_structure(scene.block(), loads, omega, horizontal, height)), names, omega, 0.0
     design = scene.design()
     built = structure(design, horizontal, height)
     if loads is not None:
         built = with_vendor_loads(built, loads, design.omega)
-    return built, names, design.omega, mechanism_inertia(design)
+    return _on_soil(scene, built), names, design.omega, mechanism_inertia(design)
+
+
+def _on_soil(scene, built):
+    """A crank foundation's structure ``built`` with its scene's modes, the resonance check's
+    averaged-inertia k0, p1, p2 (:func:`~foundation_calc.checks.crank_resonance.scene_frequencies`,
+    :func:`~foundation_calc.solvers.crank.runup.crank_modes`), and on a frequency-dependent soil
+    its damping and stiffness at any frequency: the base's springs and dashpots there
+    (:meth:`~foundation_calc.scenes.crank.CrankScene.block`) in place of the static ones."""
+    from foundation_calc.checks.crank_resonance import scene_frequencies
+    from foundation_calc.solvers.crank.loads import matrices
+    from foundation_calc.solvers.crank.runup import crank_modes
+
+    if scene.soil.frequency_dependent:
+        _, _, static = matrices(scene.block())
+
+        def at_frequency(omega):
+            _, K, C = matrices(scene.block(omega))
+            return built.damping + (C - static), K
+
+        built = replace(built, at_frequency=at_frequency)
+    return replace(built, modes=crank_modes(built, scene_frequencies(scene)))
 
 
 def run_times(scene) -> tuple[float | None, float | None]:
@@ -174,7 +200,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     # and the sheet ask judged() of every scene
     from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
 
-    steadies = [steady_peaks(b, w)[:2] for _, b, w in machines]
+    steadies = [steady_peaks(b, w) for _, b, w in machines]
     steady_points, steady_directions = sum(s[0] for s in steadies), sum(s[1] for s in steadies)
     runs: dict = {}
     for k, (machine, built, omega) in enumerate(machines):
@@ -236,6 +262,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         rows=tuple(rows), warnings=tuple(warnings),
         outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
         speeds=tuple((m, float(w)) for m, _, w in machines if m),
+        names=() if machines[0][1].modes is None else machines[0][1].modes.names,
     )
 
 

@@ -81,8 +81,10 @@ def sweep(loaded, source: str, json: bool, units: DisplayUnits, omega, machine: 
 
 def soil(loaded, source: str, json: bool, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float = 0.0, seed: int = 0) -> int:
     """The block's six springs, damping ratios and dashpots at O, and the uncoupled frequencies
-    sqrt(K_i / m_i); with ``sample`` > 0 the uncertain soil sampled that many times
+    sqrt(K_i / m_i); on a frequency-dependent soil (labelled static) and at each machine's speed
+    and each mode's own frequency; with ``sample`` > 0 the uncertain soil sampled that many times
     (:func:`~foundation_calc.checks.block_sample.sample_block`); judges nothing."""
+    from foundation_calc.checks.block_soil import soil_at_frequencies
     from foundation_calc.output import block_soil as out
     from foundation_calc.output import soil as soil_out
 
@@ -97,12 +99,13 @@ def soil(loaded, source: str, json: bool, sample: int = 0, modulus_cov: float = 
                                      param_hint="'--speed-cov'")
         drawn = sample_block(loaded, sample, modulus_cov, seed)
     model = loaded.model()
+    columns = soil_at_frequencies(loaded, model)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(out.soil_document(model, loaded, source) | {"sample": soil_out.sample_document(drawn)})
+        print_json(out.soil_document(model, loaded, source, columns) | {"sample": soil_out.sample_document(drawn)})
     else:
-        out.print_soil(model, loaded, source)
+        out.print_soil(model, loaded, source, columns)
         if drawn is not None:
             soil_out.print_sample(drawn)
     return 0

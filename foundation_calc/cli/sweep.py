@@ -141,7 +141,7 @@ def sweep(
 
         shown = replace(shown, speed=unit)  # the table speaks the unit the sweep was given in
 
-    from foundation_calc.checks.crank_sweep import joined, sweep_chunks
+    from foundation_calc.checks.crank_sweep import joined
     from foundation_calc.output import sweep_report as report_out
     from foundation_calc.scenes import load_scene
 
@@ -155,15 +155,9 @@ def sweep(
     if machine is not None or alone:
         raise typer.BadParameter("--machine and --alone choose among the machines of a block_foundation scene",
                                  param_hint="'--machine'" if machine is not None else "'--alone'")
-    points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+    from foundation_calc.checks.crank_sweep import scene_sweep_chunks
 
-    design = None if loaded.mechanism is None else loaded.design()
-    from foundation_calc.checks.crank_sweep import scene_dynamic_soil
-
-    dynamic = scene_dynamic_soil(loaded) if variable == "omega" else None
-    chunks = sweep_chunks(design, variable, values, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded),
-                          dynamic=dynamic)
+    chunks = scene_sweep_chunks(loaded, variable, values)
     operating = loaded.speed.omega_rad_s if variable == "omega" else 1.0
     if csv is not None and not json and len(values) > TABLE_ROWS_WITH_CSV:
         _stream_csv(chunks, csv, plot, operating, shown, loaded.name or str(scene), len(values))

@@ -1,4 +1,7 @@
-"""``fcalc soil`` of a block scene: the six springs and dashpots at O of the scene's soil method."""
+"""``fcalc soil`` of a block scene: the six springs and dashpots at O of the scene's soil method;
+on a frequency-dependent soil also at each machine's speed and at each mode's own frequency
+(:mod:`foundation_calc.checks.block_soil`), in the crank foundation's layout
+(:func:`~foundation_calc.output.soil.frequency_table`)."""
 
 from __future__ import annotations
 
@@ -6,8 +9,14 @@ import numpy as np
 
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
 from foundation_calc.solvers.rigid_body.modes import MOTIONS
+from foundation_calc.units import hz_from_omega
 
 UNITS = {"K": ("N/m",) * 3 + ("N m/rad",) * 3, "C": ("N s/m",) * 3 + ("N m s/rad",) * 3}
+
+#: Rows of the tables at each frequency: (label, unit, scale from SI) of each spring, then of each
+#: dashpot (units that keep four significant figures short, so nine columns fit 80 characters).
+SPRINGS_AT = tuple((f"K_{m}(ω)", "MN/m" if i < 3 else "MN m/rad", 1e-6) for i, m in enumerate(MOTIONS))
+DASHPOTS_AT = tuple((f"C_{m}(ω)", "MN s/m" if i < 3 else "MN m s/rad", 1e-6) for i, m in enumerate(MOTIONS))
 
 
 def _rows(model) -> list[dict]:
@@ -23,30 +32,67 @@ def _rows(model) -> list[dict]:
     ]
 
 
-def soil_document(model, scene, source: str) -> dict:
-    """JSON (SI) of ``fcalc soil`` for a block scene."""
+def _at_document(column) -> dict:
+    """One frequency's springs and dashpots (SI), named as the table's column is."""
+    return {
+        "at": column.at, "machine": column.name if column.at == "speed" else None,
+        "mode": column.mode, "mode_name": column.name if column.at == "mode" else None,
+        "omega": column.omega, "a0": column.a0,
+        "springs": dict(zip(MOTIONS, map(float, column.springs))),
+        "dashpots": dict(zip(MOTIONS, map(float, column.dashpots))),
+    }
+
+
+def soil_document(model, scene, source: str, columns=()) -> dict:
+    """JSON (SI) of ``fcalc soil`` for a block scene; ``columns``: the springs and dashpots at each
+    frequency of a frequency-dependent soil (:func:`~foundation_calc.checks.block_soil.soil_at_frequencies`)."""
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "soil",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
         "method": scene.soil.method_used,
+        "frequency_dependent": scene.soil.frequency_dependent,
         "total_mass": model.mass,
         "base": {"length": scene.block.length, "width": scene.block.width},
         "springs": _rows(model),
         "warnings": scene.plausibility_warnings(),
+        "at_frequencies": [_at_document(c) for c in columns],
     }
 
 
-def print_soil(model, scene, source: str) -> None:
-    """The table of ``fcalc soil`` for a block scene."""
+def _frequency_rows(columns) -> list:
+    """The rows of a table at the frequencies of ``columns``: f [Hz], a0, then every spring and dashpot."""
+    rows = [("f", "Hz", [hz_from_omega(c.omega) for c in columns]), ("a0", "-", [c.a0 for c in columns])]
+    rows += [(label, unit, [c.springs[i] * scale for c in columns]) for i, (label, unit, scale) in enumerate(SPRINGS_AT)]
+    return rows + [(label, unit, [c.dashpots[i] * scale for c in columns]) for i, (label, unit, scale) in enumerate(DASHPOTS_AT)]
+
+
+def print_soil(model, scene, source: str, columns=()) -> None:
+    """The tables of ``fcalc soil`` for a block scene: the springs and dashpots at O (at rest on a
+    frequency-dependent soil), then at each machine's speed and at each mode's own frequency."""
     from rich.markup import escape
     from rich.table import Table
 
-    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {scene.soil.method_used!r}",
+    from foundation_calc.output.soil import frequency_table
+
+    out = stdout()
+    rest = ", static (ω = 0)" if scene.soil.frequency_dependent else ""
+    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {scene.soil.method_used!r}{rest}",
                   title_justify="left")
     for col in ("motion", "K", "unit", "C", "unit", "ξ", "uncoupled, Hz"):
         table.add_column(col, justify="left" if col in ("motion", "unit") else "right")
     for i, row in enumerate(_rows(model)):
         table.add_row(row["motion"], fmt(row["K"], 4), UNITS["K"][i], fmt(row["C"], 4), UNITS["C"][i], fmt(row["xi"], 3),
                       fmt(row["omega_uncoupled"] / (2 * np.pi), 4))
-    stdout().print(table)
+    out.print(table)
+    speeds = [c for c in columns if c.at != "mode"]
+    modes = [c for c in columns if c.at == "mode"]
+    if speeds:
+        out.print(frequency_table("Springs and dashpots at O at rest and at each machine's speed ω",
+                                  [c.label for c in speeds], _frequency_rows(speeds), 4))
+    if modes:
+        out.print(frequency_table("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of"
+                                  " fcalc resonance, its dominant motion)", [c.label for c in modes], _frequency_rows(modes), 4))
+        out.print("a0 = ω B'/V_s (B' the base's shorter half-side). The modes and the checks take the soil at these"
+                  " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at rest"
+                  " only.", soft_wrap=True)

@@ -15,9 +15,16 @@ if TYPE_CHECKING:  # the solver imports scipy: not before a run is computed
     from foundation_calc.solvers.numerics.runup import RunupResult
 
 
+def mode_label(mode: int, names) -> str:
+    """``"2 (k0)"``: a mode's number (ascending frequency, from 1) and its name in ``names`` (the
+    resonance check's: a block's dominant motion, a crank foundation's k0, p1, p2), if any."""
+    return f"{mode + 1} ({names[mode]})" if names else str(mode + 1)
+
+
 def _passage_document(p, result: RunupResult, points) -> dict:
     return {
         "mode": p.mode + 1,
+        "mode_name": result.names[p.mode] if result.names else None,
         "natural_frequency": p.natural,
         "harmonic": p.ratio,
         "speed": p.speed,
@@ -47,7 +54,7 @@ def _motor_document(report: RunupReport) -> dict | None:
         "stuck_speed": m.stuck_speed,
         "transient_points": {n: float(v) for n, v in zip(report.points, m.transient_points)},
         "sommerfeld": [
-            {"mode": t.mode + 1, "harmonic": t.ratio, "speed": t.speed, "torque_needed": t.needed,
+            {"mode": t.mode + 1, "mode_name": report.names[t.mode] if report.names else None, "harmonic": t.ratio, "speed": t.speed, "torque_needed": t.needed,
              "torque_available": t.available, "ratio": t.needed / t.available, "verdict": t.outcome.value}
             for t in report.torques
         ],
@@ -56,6 +63,13 @@ def _motor_document(report: RunupReport) -> dict | None:
 
 #: What a run-up figure of a point is (tables, JSON ``displacement``).
 DISPLACEMENT = "|u|: magnitude of the point's displacement vector ({}), largest over time"
+
+#: What a run on a frequency-dependent soil is (tables; the README's "Start-up on a frequency-dependent soil").
+SOIL_NOTE = (
+    "frequency-dependent soil: the modes are fcalc resonance's, each on the springs and dashpots at its own"
+    " frequency; each harmonic r ω is integrated on the springs and dashpots at its own frequency r Ω as the"
+    " speed changes, so a passage meets its mode where resonance puts it and the steady state is fcalc amplitudes'"
+)
 
 #: Verdict of a row, and of a run, that no limit judges.
 NOT_JUDGED = "not judged"
@@ -88,6 +102,7 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
                 "speed": r.omega,
                 "damped": r.damped,
                 "natural_frequencies": [float(w) for w in r.natural],
+                "mode_names": list(r.names) or None,
                 "steady_amplitude": r.steady,
                 "steady_points": {n: float(v) for n, v in zip(report.points, r.steady_points)},
                 "transient_points": {n: float(v) for n, v in zip(report.points, r.transient_points)},
@@ -119,7 +134,7 @@ def _passages_table(key: str, r: RunupResult, points) -> Table:
         table.add_column(escape(name), justify="left" if name == "point" else "right")
     for p in r.passages:
         table.add_row(
-            str(p.mode + 1), fmt(p.natural), f"{p.ratio:g}ω", fmt(p.speed), fmt(p.eta, 3), fmt(p.zeta, 3),
+            escape(mode_label(p.mode, r.names)), fmt(p.natural), f"{p.ratio:g}ω", fmt(p.speed), fmt(p.eta, 3), fmt(p.zeta, 3),
             fmt(p.closed_form, 4), fmt(p.lewis, 4), fmt(p.integrated, 4), fmt(p.peak_time, 4), fmt(p.total, 4),
             fmt(p.total / r.steady, 3) if r.steady > 0.0 else "-", escape(points[p.point]),
         )
@@ -141,7 +156,7 @@ def _motor_table(report: RunupReport) -> Table:
         table.add_column(escape(name), justify="right")
     for t in report.torques:
         table.add_row(
-            str(t.mode + 1), f"{t.ratio:g}ω", fmt(t.speed), fmt(t.needed, 4), fmt(t.available, 4),
+            escape(mode_label(t.mode, report.names)), f"{t.ratio:g}ω", fmt(t.speed), fmt(t.needed, 4), fmt(t.available, 4),
             fmt(t.needed / t.available, 3), verdict_text(t.outcome.value),
         )
     return table
@@ -174,6 +189,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         " integration: the same mode's motion in the time integration of the whole linear model;"
         " all modes: largest displacement of any point in the passage's window"
     )
+    if getattr(getattr(scene, "soil", None), "frequency_dependent", False):
+        out.print(SOIL_NOTE)
     if report.motor is not None:
         out.print(_motor_table(report))
     table = Table(title="Largest displacement during the runs", title_justify="left")
@@ -188,7 +205,7 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         )
     out.print(table)
     out.print(_directions_table(report))
-    same = " (the steady ones are fcalc amplitudes' peaks of the same point)" if scene.kind == "crank_foundation" else ""
+    same = " (the steady ones are fcalc amplitudes' peaks of the same point)" if scene.kind != "platform" else ""
     out.print(DISPLACEMENT.format(", ".join(report.directions)) + f"; per direction: the largest |component|{same}")
     if report.judged:
         out.print(f"Verdict: {verdict_text(report.outcome.value)}")
@@ -275,7 +292,7 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
             ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
         for k, (when, p) in enumerate(marks):
             ax.axvline(when, color="0.6", lw=0.8)
-            ax.annotate(f"mode {p.mode + 1}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
+            ax.annotate(f"mode {mode_label(p.mode, report.names)}, {p.ratio:g}ω", (when, 1.0), xycoords=("data", "axes fraction"),
                         xytext=(2, -10 - 9 * (k % 3)), textcoords="offset points", fontsize=7, color="0.3")
         twin = ax.twinx()
         twin.plot(t, speed, color="0.45", lw=0.9, ls="-.", label="shaft speed")

@@ -104,22 +104,32 @@ def _dynamic_document(result: MethodResult) -> dict:
     }
 
 
-def _dynamic_table(result: MethodResult):
+def frequency_table(title: str, heads, rows, digits: int = 5):
+    """A table of a frequency-dependent soil's quantities at several frequencies: one column per
+    frequency (``heads``), one row per quantity (``rows``: label, unit, the values in that unit),
+    ``digits`` significant figures."""
+    from rich.markup import escape
     from rich.table import Table
 
-    names = {"speed": "speed", "k0": "at k0", "p1": "at p1", "p2": "at p2"}
-    table = Table(title=f"{result.method}: springs and dashpots at the operating speed and at each mode's own frequency",
-                  title_justify="left")
+    table = Table(title=escape(title), title_justify="left")
     table.add_column("quantity")
     table.add_column("unit")
-    for row in result.dynamic:
-        table.add_column(names[row.at], justify="right")
-    for label, unit, attribute, scale in DYNAMIC_ROWS:
-        table.add_row(label, unit, *(
-            fmt(hz_from_omega(getattr(row, attribute)) if scale is None else getattr(row, attribute) * scale)
-            for row in result.dynamic
-        ))
+    for head in heads:
+        table.add_column(escape(head), justify="right")
+    for label, unit, values in rows:
+        table.add_row(label, unit, *(fmt(v, digits) for v in values))
     return table
+
+
+def _dynamic_table(result: MethodResult):
+    names = {"speed": "speed", "k0": "at k0", "p1": "at p1", "p2": "at p2"}
+    rows = [
+        (label, unit, [hz_from_omega(getattr(row, attribute)) if scale is None else getattr(row, attribute) * scale
+                       for row in result.dynamic])
+        for label, unit, attribute, scale in DYNAMIC_ROWS
+    ]
+    return frequency_table(f"{result.method}: springs and dashpots at the operating speed and at each mode's own frequency",
+                           [names[row.at] for row in result.dynamic], rows)
 
 
 def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:

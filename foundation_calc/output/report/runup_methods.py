@@ -5,7 +5,8 @@ For each passage of mode i by harmonic r (:mod:`foundation_calc.solvers.numerics
 ramp of duration T to the operating speed ω, the sweep rate η = r ω / (T ω_i²), the static
 deflection of the mode's force at the point it moves most, x_st = |φ_iᵀ(A Ω_r² + B)| / ω_i² ·
 |T_P φ_i| (φ_i mass-normalised, found on the sheet by an eigen-solve of M⁻¹K of the run-up's
-structure), Lewis' undamped peak 1.467/√η · x_st [Le] and the closed form with damping,
+structure: on a frequency-dependent soil with K and C at the mode's own frequency ω_i, the
+resonance check's, :func:`sheet_modes`), Lewis' undamped peak 1.467/√η · x_st [Le] and the closed form with damping,
 R(ζ, η) · x_st, R the envelope's maximum through the Faddeeva function (passage.py; it is a
 table look-up for a hand calculation, printed as a given). ``tests/test_report_runup_methods.py``
 compares every value with the ``runup`` check's.
@@ -67,9 +68,28 @@ def passage_chain(structure, names, omega: float, duration: float, direction: in
     return chain
 
 
+def sheet_modes(structure, natural) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sheet's own modes of the run-up's ``structure``: p [rad/s] ascending, shapes
+    mass-normalised (columns) and ζ = φᵀ C φ / (2 p), of M⁻¹K; on a frequency-dependent soil mode i
+    is the eigenpair nearest the run's ω_i of ``natural`` [rad/s] (the resonance check's) with K
+    and C taken at ω_i."""
+    if structure.at_frequency is None:
+        return modes_of(structure.mass, structure.stiffness, structure.damping)
+    from foundation_calc.solvers.numerics.runup import matrices_at
+
+    natural = np.asarray(natural, dtype=float)
+    C, K = matrices_at(structure, natural)
+    found = [modes_of(structure.mass, K[i], C[i]) for i in range(natural.size)]
+    nearest = [int(np.argmin(np.abs(p - w))) for (p, _, _), w in zip(found, natural)]
+    return (np.array([p[k] for (p, _, _), k in zip(found, nearest)]),
+            np.column_stack([v[:, k] for (_, v, _), k in zip(found, nearest)]),
+            np.array([z[k] for (_, _, z), k in zip(found, nearest)]))
+
+
 def runup_columns(scene, runup: dict) -> list[Columns]:
     """A table of passage columns for every run of the ``runup`` document with passages."""
     from foundation_calc.checks.runup import run_title
+    from foundation_calc.output.runup import mode_label
 
     structures = _structures(scene)
     out = []
@@ -79,15 +99,16 @@ def runup_columns(scene, runup: dict) -> list[Columns]:
         kind, _, machine = key.partition(":")
         structure, names, omega = structures[f":{machine}" if machine else ""]
         direction = 1 if kind == "run_up" else -1
-        modes = modes_of(structure.mass, structure.stiffness, structure.damping)
+        modes = sheet_modes(structure, run["natural_frequencies"])
         chains = [passage_chain(structure, list(names), omega, run["duration"], direction, p, modes) for p in run["passages"]]
-        heads = tuple(f"mode {p['mode']}, {p['harmonic']:g}ω" for p in run["passages"])
+        heads = tuple(f"mode {mode_label(p['mode'] - 1, run.get('mode_names'))}, {p['harmonic']:g}ω" for p in run["passages"])
         lead = tuple((name, "given", source) for name, source in
-                     (("omega_i", "modes of M⁻¹K"), ("r", "harmonic"), ("zeta", "φᵀCφ/(2ω_i)"), ("F_m", "φᵀ(A Ω_r² + B)"),
+                     (("omega_i", "modes of M⁻¹K(ω_i)" if structure.at_frequency is not None else "modes of M⁻¹K"),
+                      ("r", "harmonic"), ("zeta", "φᵀCφ/(2ω_i)"), ("F_m", "φᵀ(A Ω_r² + B)"),
                       ("rho_P", "|T_P φ|"), ("R", "Faddeeva envelope, passage.py")))
         out.append(Columns(f"{run_title(key).capitalize()}: each resonance passed (closed form; T = {run['duration']:g} s,"
                            f" ω = {omega:.4g} rad/s, C_L = 1.467)", heads, chains, lead))
     return out
 
 
-__all__ = ["passage_chain", "runup_columns"]
+__all__ = ["passage_chain", "runup_columns", "sheet_modes"]

@@ -21,12 +21,14 @@ CLOSED_FORM_NOTE = (
 
 def _passages(key: str, run: dict, units: DisplayUnits):
     from foundation_calc.checks.runup import run_title
+    from foundation_calc.output.runup import mode_label
 
     a, sp = units.label("amplitude"), units.label("speed")
     steady = run["steady_amplitude"]
     rows = (
         (
-            str(p["mode"]), figure(units.convert("speed", p["natural_frequency"]), DIGITS["speed"]), f"{p['harmonic']:g}ω",
+            mode_label(p["mode"] - 1, run.get("mode_names")), figure(units.convert("speed", p["natural_frequency"]), DIGITS["speed"]),
+            f"{p['harmonic']:g}ω",
             figure(units.convert("speed", p["speed"]), DIGITS["speed"]), figure(p["sweep_rate"], 3), figure(p["damping_ratio"], 3),
             *(figure(units.convert("amplitude", p[k]), DIGITS["amplitude"]) for k in ("closed_form_peak", "lewis_peak", "integrated_peak")),
             figure(p["peak_time"], 3), figure(units.convert("amplitude", p["total_peak"]), DIGITS["amplitude"]),

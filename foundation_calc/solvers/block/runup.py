@@ -9,6 +9,11 @@ vendor's load as the inertia forces it stands for), with its tangential part Q_n
 -i Ω'/r term of :class:`~foundation_calc.solvers.numerics.sweep_response.RotatingLoad`). The
 harmonic of order n has speed ratio n. Points: the combined centre of mass G and the scene's
 points, each moving by u_P = T_P q (Eq. (1) of :mod:`~foundation_calc.solvers.rigid_body.kinematics`).
+
+The modes are the block's as the resonance check found them (:class:`~foundation_calc.solvers.block.response.BlockModes`,
+on a frequency-dependent soil each at its own frequency); on such a soil the structure carries its
+springs and dashpots at any frequency, Ω -> K(Ω), C(Ω) of Eq. (1), and each harmonic is integrated
+on those at its own frequency (:mod:`~foundation_calc.solvers.numerics.runup`).
 """
 
 from __future__ import annotations
@@ -16,18 +21,27 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.solvers.block.model import BlockModel, Excitation
-from foundation_calc.solvers.numerics.runup import Structure
+from foundation_calc.solvers.block.response import BlockModes
+from foundation_calc.solvers.numerics.runup import Modes, Structure
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.rigid_body.kinematics import point_maps
 
 
-def machine_structure(model: BlockModel, machine: Excitation, points) -> Structure:
+def machine_structure(model: BlockModel, machine: Excitation, points, modes: BlockModes, impedance=None) -> Structure:
     """The block of ``model`` under the loads of ``machine`` alone, measured at G and at
-    ``points`` (P, 3) [m] from O (module docstring)."""
+    ``points`` (P, 3) [m] from O, with the block's ``modes``; ``impedance``: a frequency-dependent
+    soil, Ω -> (springs, dashpots) at O (module docstring)."""
     at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
     inertial = np.asarray(machine.Q, dtype=complex) / machine.omega**2
     load = RotatingLoad(machine.orders.astype(float), inertial, np.zeros_like(inertial))
-    return Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at))
+
+    def at_frequency(omega):
+        K, C = model.soil_matrices(*impedance(omega))
+        return C, K
+
+    return Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at),
+                     modes=Modes(modes.frequencies, modes.shapes, modes.damping, modes.dominant),
+                     at_frequency=None if impedance is None else at_frequency)
 
 
 __all__ = ["machine_structure"]

@@ -141,6 +141,18 @@ def natural_modes(M, K) -> tuple[np.ndarray, np.ndarray]:
     return natural, np.take_along_axis(shapes.real, order[..., None, :], axis=-1)
 
 
+#: Column orders k0, p1, p2 of ascending modes, by the column of k0.
+_ORDERS = np.array([[0, 1, 2], [1, 0, 2], [2, 0, 1]])
+
+
+def mode_order(M, shapes) -> np.ndarray:
+    """Columns of ``shapes`` (ascending frequencies) in the order k0, p1, p2: k0 is the mode whose
+    motion is most vertical (largest share of its kinetic energy in y), p1 and p2 the others.
+    Stacks (..., 3, 3) give (..., 3)."""
+    vertical = shapes[..., 1, :] ** 2 * M[..., 1, 1, None]
+    return _ORDERS[np.argmax(vertical, axis=-1)]
+
+
 def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
     """:func:`natural_modes` of one design, or :class:`PhysicsError` when double precision cannot
     resolve them (a singular mass matrix, or frequencies more than
@@ -261,5 +273,6 @@ __all__ = [
     "linearise",
     "mechanism_operator",
     "modal_damping_ratios",
+    "mode_order",
     "natural_modes",
 ]

@@ -1,9 +1,17 @@
 """The crank foundation as a linear structure for start-up and run-down.
 
 The exact equations linearised about rest with their coefficients averaged over a revolution
-(M̄, C̄, K̄ of :func:`~foundation_calc.solvers.crank.averaged.linearise`; C̄ holds the base
-dashpots) and the mechanism's exact forcing -r0(φ), expanded in harmonics n = 0 ... N of the
-crank angle φ(t) = ∫Ω dt. Each harmonic splits into a part ∝ Ω² (the mechanism's inertia) and a
+(M̄, C̄ of :func:`~foundation_calc.solvers.crank.averaged.linearise`; C̄ holds the base dashpots),
+the stiffness of the block on its soil with the weight's -P h (Krichever & Makarov (3.2)-(3.4),
+:func:`~foundation_calc.solvers.crank.averaged.block_matrices`): the operator whose natural
+frequencies the resonance check reports as the averaged-inertia k0, p1, p2, so that the start-up
+passes those very modes (:func:`crank_modes`). The exact linearisation's K̄ also holds the rod's
+weight at its mean height above C, -m g (a - l'⟨cos ψ⟩) in K̄_θθ, which that operator leaves out:
+a relative 10⁻⁶ on the frequencies of the shipped scenes; it still decides whether the rest
+position is stable (:func:`require_stable_rest`).
+
+The mechanism's exact forcing -r0(φ) is expanded in harmonics n = 0 ... N of the crank angle
+φ(t) = ∫Ω dt. Each harmonic splits into a part ∝ Ω² (the mechanism's inertia) and a
 constant part (the weight of rod and slider), found from the forcing at ω and 2ω; the split is
 checked at 3ω. Points: the centre of mass C and the scene's points, displaced (x + H θ, y + u θ)
 to first order (README, "Model").
@@ -12,6 +20,11 @@ A machine given by its vendor's loads (``[[loads]]``, :mod:`~foundation_calc.sol
 adds each load F cos(nφ + φ_F) as an unbalanced force: its amplitude grows as (Ω/ω)², the vendor's
 F being the amplitude at the operating speed ω. Without a mechanism the structure is the rigid
 block of :func:`~foundation_calc.solvers.crank.loads.matrices`.
+
+On a frequency-dependent soil the structure carries the springs and dashpots at any frequency
+(``Structure.at_frequency``, built by the caller from the scene) and each mode its own frequency
+(:func:`crank_modes`); :mod:`~foundation_calc.solvers.numerics.runup` integrates each harmonic on
+the soil at its own frequency.
 """
 
 from __future__ import annotations
@@ -21,12 +34,13 @@ from dataclasses import replace
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError, PhysicsError
-from foundation_calc.solvers.crank.averaged import linearise
+from foundation_calc.solvers.crank.averaged import block_matrices, linearise, mode_order
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Structure
+from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
+from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Modes, Structure, matrices_at
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
 
@@ -58,8 +72,9 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     """
     require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
     lin = linearise(design, phases(SAMPLES))
-    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
-    require_stable_rest(K, design.a)
+    M, C, exact = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    require_stable_rest(exact, design.a)
+    K = block_matrices(design)[2]
     if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0:
         C = np.zeros_like(C)  # the mechanism's mean velocity terms vanish: what is left is round-off
     f1, f2, f3 = (_forcing(design, s) for s in (1.0, 2.0, 3.0))
@@ -146,6 +161,29 @@ def block_structure(block: RigidBlock, loads: HarmonicLoads, omega: float, horiz
     return Structure(mass=M, damping=C, stiffness=K, load=vendor_load(loads, omega), points=_point_maps(horizontal, height))
 
 
+#: The crank foundation's modes in the order of :class:`~foundation_calc.solvers.crank.frequencies.NaturalFrequencies`.
+MODE_NAMES = ("k0", "p1", "p2")
+
+
+def crank_modes(built: Structure, frequencies: NaturalFrequencies) -> Modes:
+    """The modes k0, p1, p2 of ``built`` at the natural frequencies ``frequencies`` [rad/s] its
+    scene's resonance check reports, ascending: mode j's shape is the eigenvector of
+    K(p_j) v = p² M v whose motion is k0 (the most vertical) or p1, p2 (the others, lower first)
+    (:func:`~foundation_calc.solvers.crank.averaged.mode_order`), with K, C at p_j on a
+    frequency-dependent soil, and its damping ratio φᵀ C(p_j) φ / (2 p_j)."""
+    from scipy.linalg import eigh
+
+    p = np.array([float(getattr(frequencies, name)) for name in MODE_NAMES])
+    C, K = matrices_at(built, p)
+    shapes = np.empty((3, 3))
+    for j in range(3):
+        _, v = eigh(K[j], built.mass)
+        shapes[:, j] = v[:, mode_order(built.mass, v)[j]]
+    zeta = np.einsum("nj,jnm,mj->j", shapes, C, shapes) / (2.0 * p)
+    order = np.argsort(p)
+    return Modes(p[order], shapes[:, order], zeta[order], tuple(MODE_NAMES[j] for j in order))
+
+
 def mechanism_inertia(design: CrankDesign) -> float:
     """Mean inertia of the rod (slider lumped in) referred to the crank shaft [kg m²]:
     ⟨m |∂p/∂φ|² + m ρ² (∂ψ/∂φ)²⟩ over a revolution, ∂ψ/∂φ = λ cos φ / cos ψ (twice its mean
@@ -157,4 +195,5 @@ def mechanism_inertia(design: CrankDesign) -> float:
     return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
 
 
-__all__ = ["block_structure", "mechanism_inertia", "require_stable_rest", "structure", "vendor_load", "with_vendor_loads"]
+__all__ = ["MODE_NAMES", "block_structure", "crank_modes", "mechanism_inertia", "require_stable_rest", "structure", "vendor_load",
+           "with_vendor_loads"]

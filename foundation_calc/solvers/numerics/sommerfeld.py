@@ -22,6 +22,12 @@ Sommerfeld: in the steady state at speed Ω the shaft needs the mean torque
 the note's estimate). A motor with T below the peak of T_s near a resonance sticks there when it
 approaches slowly; a fast approach can carry the shaft through on its kinetic energy, which the
 integration shows.
+
+On a frequency-dependent soil (``Structure.at_frequency``) each harmonic h moves on the springs
+and dashpots at its own frequency r_h Ω, as in :mod:`~.runup`: Z_h of T_s with K(r_h Ω), C(r_h Ω),
+and in the integration each harmonic's motion q_h (q = Σ q_h) with M⁻¹K and M⁻¹C interpolated
+linearly in frequency between the nodes of :func:`~.runup.soil_nodes` (every mode's own frequency
+among them), at the speed Ω the integration has reached.
 """
 
 from __future__ import annotations
@@ -31,7 +37,16 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from foundation_calc.solvers.numerics.runup import HOLD_FRACTION, HOLD_PERIODS, Structure, _moving, modal_damping, modes
+from foundation_calc.solvers.numerics.runup import (
+    HOLD_FRACTION,
+    HOLD_PERIODS,
+    Structure,
+    _moving,
+    matrices_at,
+    modal_damping,
+    modes,
+    soil_nodes,
+)
 from foundation_calc.solvers.numerics.sweep_response import point_displacements
 
 #: Speeds of the steady torque curve from rest to the operating speed, and around every
@@ -94,14 +109,15 @@ class MotorRun:
 def steady_torque(structure: Structure, speeds) -> np.ndarray:
     """T_s(Ω) of the module docstring at ``speeds`` [rad/s] [N m]."""
     load = _moving(structure.load)
-    M, C, K = structure.mass, structure.damping, structure.stiffness
+    M = structure.mass
     W = np.asarray(speeds, dtype=float)
     total = np.zeros_like(W)
     for r, A, B in zip(load.ratio, load.inertial, load.constant):
         if r <= 0.0:
             continue
         w = r * W
-        D = K[None] - (w * w)[:, None, None] * M[None] + 1j * w[:, None, None] * C[None]
+        C, K = matrices_at(structure, w)
+        D = K - (w * w)[:, None, None] * M[None] + 1j * w[:, None, None] * C
         F = A[None] * (W * W)[:, None] + B[None]
         Z = np.linalg.solve(D, F[..., None])[..., 0]
         total += 0.5 * np.real(-1j * r * (W * W) * (Z.conj() @ A))
@@ -150,11 +166,32 @@ def motor_runup(structure: Structure, omega, torque, inertia) -> MotorRun:
         when the inertia is smaller than the unbalances' coupling V·M⁻¹V (it must include them).
     """
     load = _moving(structure.load)
-    M, C, K = structure.mass, structure.damping, structure.stiffness
+    M = structure.mass
     n = M.shape[0]
     Minv = np.linalg.inv(M)
     ratios = load.ratio
     inv_r = np.where(ratios > 0.0, 1.0 / np.where(ratios > 0.0, ratios, 1.0), 0.0)
+    natural, _ = modes(structure)
+    # the harmonics in groups, each group's motion on its own matrices (module docstring)
+    groups = np.eye(ratios.size) if structure.at_frequency is not None else np.ones((1, ratios.size))
+    G = groups.shape[0]
+    if structure.at_frequency is None:
+        fixed = (Minv @ structure.damping)[None], (Minv @ structure.stiffness)[None]
+
+        def operators(w):
+            """Each group's M⁻¹C and M⁻¹K (G, n, n) at the shaft speed w [rad/s]."""
+            return fixed
+    else:
+        nodes = soil_nodes(natural, ratios * omega)
+        C_t, K_t = structure.at_frequency(nodes)
+        MinvC_t, MinvK_t = Minv @ C_t, Minv @ K_t
+
+        def operators(w):
+            """Each group's M⁻¹C and M⁻¹K (G, n, n) at the shaft speed w [rad/s]."""
+            at = ratios * w
+            k = np.clip(np.searchsorted(nodes, at) - 1, 0, nodes.size - 2)
+            part = np.clip((at - nodes[k]) / (nodes[k + 1] - nodes[k]), 0.0, 1.0)[:, None, None]
+            return ((1.0 - part) * MinvC_t[k] + part * MinvC_t[k + 1], (1.0 - part) * MinvK_t[k] + part * MinvK_t[k + 1])
 
     def parts(phi):
         e = np.exp(1j * np.outer(ratios, np.atleast_1d(phi)))  # (H, N)
@@ -171,47 +208,48 @@ def motor_runup(structure: Structure, omega, torque, inertia) -> MotorRun:
             " it must include every rotating part"
         )
 
-    A_T, iA_T, B_T = load.inertial.T, (1j * inv_r[:, None] * load.inertial).T, load.constant.T
-    MinvC, MinvK = Minv @ C, Minv @ K
+    A, iA, Bc = load.inertial, 1j * inv_r[:, None] * load.inertial, load.constant
+    size = G * n
 
     def rhs(t, y, held=False):
-        q, v, phi, w = y[:n], y[n : 2 * n], y[2 * n], y[2 * n + 1]
-        e = np.exp(1j * ratios * phi)
-        U, V, B = (A_T @ e).real, (iA_T @ e).real, (B_T @ e).real
-        MV = Minv @ V
-        rest = Minv @ (w * w * U + B) - MinvC @ v - MinvK @ q
-        dw = 0.0 if held else (torque - V @ rest) / (inertia - V @ MV)
+        q, v, phi, w = y[:size].reshape(G, n), y[size : 2 * size].reshape(G, n), y[2 * size], y[2 * size + 1]
+        e = np.exp(1j * ratios * phi)[:, None]
+        U, V, B = groups @ (A * e).real, groups @ (iA * e).real, groups @ (Bc * e).real  # (G, n) each
+        MinvC, MinvK = operators(w)
+        rest = (w * w * U + B) @ Minv.T - np.einsum("gij,gj->gi", MinvC, v) - np.einsum("gij,gj->gi", MinvK, q)
+        total = V.sum(axis=0)
+        dw = 0.0 if held else (torque - total @ rest.sum(axis=0)) / (inertia - total @ Minv @ total)
         out = np.empty_like(y)
-        out[:n], out[n : 2 * n], out[2 * n], out[2 * n + 1] = v, rest - dw * MV, w, dw
+        out[:size], out[size : 2 * size] = v.ravel(), (rest - dw * V @ Minv.T).ravel()
+        out[2 * size], out[2 * size + 1] = w, dw
         return out
 
     def arrived(t, y):
-        return y[2 * n + 1] - omega
+        return y[2 * size + 1] - omega
 
     arrived.terminal = True
     arrived.direction = 1
-    q0 = np.linalg.solve(K, parts(0.0)[2][:, 0])
+    q0 = np.linalg.solve(structure.stiffness, (groups @ Bc.real).T).T  # at rest, φ = 0, on the static springs
     t_max = PATIENCE * inertia * omega / torque
-    natural, _ = modes(structure)
     options = dict(
         method="DOP853", rtol=RTOL,
-        atol=RTOL * np.concatenate([np.abs(q0) + 1e-12, np.abs(q0) * natural.max() + 1e-12, [1e-6, 1e-6]]),
+        atol=RTOL * np.concatenate([np.abs(q0).ravel() + 1e-12, np.abs(q0).ravel() * natural.max() + 1e-12, [1e-6, 1e-6]]),
         max_step=2.0 * np.pi / (4.0 * max(natural.max(), ratios.max() * omega)),
     )
-    sol = solve_ivp(rhs, (0.0, t_max), np.concatenate([q0, np.zeros(n), [0.0, 0.0]]), events=arrived, **options)
+    sol = solve_ivp(rhs, (0.0, t_max), np.concatenate([q0.ravel(), np.zeros(size), [0.0, 0.0]]), events=arrived, **options)
     reached = sol.status == 1
     t, y = sol.t, sol.y
     if reached:  # the control holds the speed: run on so that a mode passed last reaches its peak
         hold = max(HOLD_FRACTION * t[-1], HOLD_PERIODS * 2.0 * np.pi / natural.min())
         held = solve_ivp(lambda s, x: rhs(s, x, True), (t[-1], t[-1] + hold), y[:, -1], **options)
         t, y = np.concatenate([t, held.t[1:]]), np.concatenate([y, held.y[:, 1:]], axis=1)
-    q = y[:n]
+    q = y[:size].reshape(G, n, -1).sum(axis=0)
     disp = point_displacements(structure.points, q)
     tail = sol.t >= 0.9 * sol.t[-1]  # the record up to arrival or the end of patience
     return MotorRun(
         torque=float(torque), inertia=float(inertia), needs=torque_needs(structure, omega), reached=bool(reached),
-        time=float(sol.t[-1]), stuck_speed=None if reached else float(sol.y[2 * n + 1][tail].mean()),
-        t=t, speed=y[2 * n + 1], magnitude=disp.max(axis=0), transient_points=disp.max(axis=1),
+        time=float(sol.t[-1]), stuck_speed=None if reached else float(sol.y[2 * size + 1][tail].mean()),
+        t=t, speed=y[2 * size + 1], magnitude=disp.max(axis=0), transient_points=disp.max(axis=1),
     )
 
 

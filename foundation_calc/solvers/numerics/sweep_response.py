@@ -66,9 +66,9 @@ class RotatingLoad:
 
     def steady(self, M, C, K, omega):
         """Complex amplitudes Z_h of the steady state at constant speed Ω [rad/s], shape (H, n):
-        q(t) = Σ_h Re(Z_h e^{i r_h Ω t})."""
+        q(t) = Σ_h Re(Z_h e^{i r_h Ω t}); C and K (n, n), or one pair per harmonic (H, n, n)."""
         w = self.ratio * omega
-        D = K[None] - (w * w)[:, None, None] * M[None] + 1j * w[:, None, None] * C[None]
+        D = K - (w * w)[:, None, None] * M[None] + 1j * w[:, None, None] * C
         return np.linalg.solve(D, (self.inertial * omega * omega + self.constant)[..., None])[..., 0]
 
 
@@ -142,7 +142,70 @@ def _filter_coefficients(lam, h):
 MAX_STEPS = 4_000_000
 
 
-def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, points, observers) -> SweepResponse:
+@dataclass(frozen=True)
+class Schedule:
+    """Which harmonics of the load are integrated together and on which matrices.
+
+    The equations are linear in the load, so their solution is the sum of the solutions of any
+    split of the load's harmonics, each group with its own damping and stiffness: ``groups`` holds
+    the harmonics (indices into the load's) of each part, and ``systems`` the (C, K) pairs (n, n)
+    they may use. ``index(g, t)`` gives, for group g, the system of the step that ends at each
+    time t [s] (an int array shaped as t). A structure with one C and K is one group on one system
+    (:meth:`single`); a frequency-dependent soil integrates each harmonic on the springs and
+    dashpots at its own forcing frequency (:mod:`~foundation_calc.solvers.numerics.runup`).
+    """
+
+    groups: tuple
+    systems: tuple
+    index: object
+
+    @classmethod
+    def single(cls, C, K, harmonics: int) -> Schedule:
+        """Every harmonic (``harmonics`` of them) together on one damping C and stiffness K."""
+        return cls((np.arange(harmonics),), ((C, K),), lambda g, t: np.zeros(np.shape(t), dtype=int))
+
+
+@dataclass(frozen=True)
+class _Stepper:
+    """The exponential step of M s'' + C s' + K s = f with step h, in the complex Schur form of its
+    state matrix A = Z T Zᴴ (module docstring): z = Zᴴ (q, q'), z-input per unit load ``to_z``."""
+
+    T: np.ndarray
+    Z: np.ndarray
+    E: np.ndarray
+    b0: np.ndarray
+    b1: np.ndarray
+    to_z: np.ndarray
+    upper: np.ndarray
+
+    @classmethod
+    def of(cls, Minv, C, K, step) -> _Stepper:
+        n = Minv.shape[0]
+        A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])
+        T, Z = schur(A.astype(complex), output="complex")
+        E, b0, b1 = _filter_coefficients(np.diag(T).copy(), step)
+        return cls(T, Z, E, b0, b1, Z.conj().T[:, n:] @ Minv, np.triu(T, 1))
+
+    def enter(self, state, force):
+        """(z, u) of the physical state (q, q') and load ``force`` (n,) at one time: where the
+        step after it starts."""
+        z = self.Z.conj().T @ state.astype(complex)
+        return z, self.to_z @ force + self.upper @ z
+
+    def advance(self, force, z_prev, u_prev):
+        """z at the times of ``force`` (n, N), the step before each one starting from
+        (``z_prev``, ``u_prev``); returns z (2n, N) and the inputs u (2n, N)."""
+        g = self.to_z @ force
+        z, u_all = np.empty_like(g), np.empty_like(g)
+        for k in range(g.shape[0] - 1, -1, -1):
+            u = g[k] + self.T[k, k + 1 :] @ z[k + 1 :]
+            u_all[k] = u
+            z[k] = first_order_recursion(self.E[k], self.b0[k], self.b1[k], u, self.E[k] * z_prev[k] + self.b0[k] * u_prev[k])
+        return z, u_all
+
+
+def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, points, observers,
+              schedule: Schedule | None = None) -> SweepResponse:
     """Integrate the module's equations from (q0 [m], v0 [m/s]) over [0, t_end] [s].
 
     Parameters
@@ -153,56 +216,72 @@ def integrate(M, C, K, load: RotatingLoad, ramp: Ramp, t_end, step, q0, v0, poin
     ramp : the shaft's speed against time
     t_end : end of the run [s]
     step : time step h [s] (:func:`time_step`)
-    q0, v0 : initial displacement and velocity (n,)
+    q0, v0 : initial displacement and velocity (n,); with a ``schedule``, one per group (G, n)
     points : maps from q to the displacement of each point, shape (P, d, n) [m per unit q]
     observers : rows W (m, n) whose |W q| is recorded at every step (modal coordinates)
+    schedule : the load's harmonics in groups, each on its own damping and stiffness
+        (:class:`Schedule`); None: every harmonic on C and K
 
     Raises
     ------
     ValueError
         when the run needs more than :data:`MAX_STEPS` steps.
     """
+    if schedule is None:
+        schedule = Schedule.single(C, K, load.ratio.size)
+        q0, v0 = np.asarray(q0, dtype=float)[None], np.asarray(v0, dtype=float)[None]
     n = M.shape[0]
     Minv = np.linalg.inv(M)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])
-    T, Z = schur(A.astype(complex), output="complex")
-    lam = np.diag(T).copy()
-    E, b0, b1 = _filter_coefficients(lam, step)
-    to_z = Z.conj().T[:, n:] @ Minv  # z-input per unit load
-    back = Z[:n]  # q = Re(Z[:n] z)
     steps = int(np.ceil(t_end / step))
     if steps > MAX_STEPS:
         raise ValueError(
             f"the run of {t_end:.6g} s needs {steps} steps of {step:.3g} s, more than {MAX_STEPS};"
             f" the longest run this structure allows is {MAX_STEPS * step:.6g} s"
         )
+    built: dict[int, _Stepper] = {}
+
+    def stepper(k: int) -> _Stepper:
+        if k not in built:
+            built[k] = _Stepper.of(Minv, *schedule.systems[k], step)
+        return built[k]
+
+    loads = [RotatingLoad(load.ratio[h], load.inertial[h], load.constant[h]) for h in schedule.groups]
     t = np.arange(steps + 1) * step
-    z_prev = Z.conj().T @ np.concatenate([q0, v0]).astype(complex)
-    u_prev = None
+    carried = []  # per group: (system, z, u, load) at the last time integrated
+    for g, part in enumerate(loads):
+        k = int(schedule.index(g, t[:1])[0])
+        force = part.at(*ramp.speed(t[:1]))[:, 0]
+        carried.append((k, *stepper(k).enter(np.concatenate([q0[g], v0[g]]), force), force))
+    q_start = np.sum(q0, axis=0)
+    start = np.einsum("pdn,n->pd", points, q_start)
     magnitude = np.empty(steps + 1)
-    point_peaks = np.zeros(points.shape[0])
-    direction_peaks = np.zeros(points.shape[:2])
+    magnitude[0] = np.linalg.norm(start, axis=1).max(initial=0.0)
+    point_peaks = np.linalg.norm(start, axis=1)
+    direction_peaks = np.abs(start)
     observed = np.empty((observers.shape[0], steps + 1))
-    for start in range(0, steps + 1, CHUNK):
-        tc = t[start : start + CHUNK]
+    observed[:, 0] = np.abs(observers @ q_start)
+    for first in range(1, steps + 1, CHUNK):
+        tc = t[first : first + CHUNK]
         omega, domega, phi = ramp.speed(tc)
-        g = to_z @ load.at(omega, domega, phi)
-        z = np.empty_like(g)
-        u_all = np.empty_like(g)
-        for k in range(2 * n - 1, -1, -1):
-            u = g[k] + T[k, k + 1 :] @ z[k + 1 :]
-            u_all[k] = u
-            if u_prev is None:  # first chunk: z_0 is the initial state
-                z[k, 0] = z_prev[k]
-                z[k, 1:] = first_order_recursion(E[k], b0[k], b1[k], u[1:], E[k] * z_prev[k] + b0[k] * u[0])
-            else:
-                z[k] = first_order_recursion(E[k], b0[k], b1[k], u, E[k] * z_prev[k] + b0[k] * u_prev[k])
-        z_prev, u_prev = z[:, -1], u_all[:, -1]
-        q = (back @ z).real
+        q = np.zeros((n, tc.size))
+        for g, part in enumerate(loads):
+            force = part.at(omega, domega, phi)
+            index = schedule.index(g, tc)
+            k, z, u, before = carried[g]
+            edges = np.concatenate([[0], np.flatnonzero(np.diff(index)) + 1, [tc.size]])
+            for a, b in zip(edges[:-1], edges[1:]):
+                if int(index[a]) != k:  # the system changes: carry the physical state over
+                    state = (stepper(k).Z @ z).real
+                    k = int(index[a])
+                    z, u = stepper(k).enter(state, before)
+                zs, us = stepper(k).advance(force[:, a:b], z, u)
+                z, u, before = zs[:, -1], us[:, -1], force[:, b - 1]
+                q[:, a:b] += (stepper(k).Z[:n] @ zs).real
+            carried[g] = (k, z, u, before)
         vectors = np.einsum("pdn,nt->pdt", points, q)
         disp = np.linalg.norm(vectors, axis=1)
-        magnitude[start : start + tc.size] = disp.max(axis=0)
-        observed[:, start : start + tc.size] = np.abs(observers @ q)
+        magnitude[first : first + tc.size] = disp.max(axis=0)
+        observed[:, first : first + tc.size] = np.abs(observers @ q)
         point_peaks = np.maximum(point_peaks, disp.max(axis=1))
         direction_peaks = np.maximum(direction_peaks, np.abs(vectors).max(axis=2))
     return SweepResponse(t=t, magnitude=magnitude, point_peaks=point_peaks, direction_peaks=direction_peaks,
@@ -245,4 +324,5 @@ def refined_peak(t, values, lo, hi):
     return float(values[i]), float(t[i])
 
 
-__all__ = ["CHUNK", "first_order_recursion", "point_displacements", "MAX_STEPS", "STEPS_PER_PERIOD", "Ramp", "RotatingLoad", "SweepResponse", "integrate", "refined_peak", "time_step"]
+__all__ = ["CHUNK", "first_order_recursion", "point_displacements", "MAX_STEPS", "STEPS_PER_PERIOD", "Ramp", "RotatingLoad", "Schedule",
+           "SweepResponse", "integrate", "refined_peak", "time_step"]
