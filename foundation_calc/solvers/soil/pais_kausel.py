@@ -81,10 +81,10 @@ def pais_kausel_torsion(G, L, B):
     """Static torsional spring of a rectangular surface footing, K_t = G B³ [4.25 r^2.45 + 4.06]
     (module docstring) [N m/rad]; L, B the full sides [m] in either order.
 
-    >>> round(pais_kausel_torsion(1.0, 2.0, 2.0), 12)   # unit square: 4.25 + 4.06
+    >>> round(float(pais_kausel_torsion(1.0, 2.0, 2.0)), 12)   # unit square: 4.25 + 4.06
     8.31
     """
-    half_short, r = min(L, B) / 2.0, max(L, B) / min(L, B)
+    half_short, r = np.minimum(L, B) / 2.0, np.maximum(L, B) / np.minimum(L, B)
     return G * half_short**3 * (4.25 * r**2.45 + 4.06)
 
 
