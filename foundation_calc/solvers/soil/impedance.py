@@ -251,13 +251,18 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
         tips over) is its own root
     rtol : relative width of the final bracket [-]
 
+    Returns
+    -------
+    The root [rad/s], the midpoint of the final bracket: an array shaped as ``omega_static``, a
+    float for a scalar.
+
     Raises
     ------
     PhysicsError
         when ``frequency_at`` rises with frequency so that [p(p_s), p_s] brackets no root (no
         soil method of fcalc does: a new method must keep its springs falling with frequency).
 
-    >>> round(float(consistent_frequency(lambda w: 100.0 * (1.0 - 0.001 * w) ** 0.5, 100.0)), 6)
+    >>> round(consistent_frequency(lambda w: 100.0 * (1.0 - 0.001 * w) ** 0.5, 100.0), 6)
     95.124922
     """
     from foundation_calc.errors import PhysicsError
@@ -282,7 +287,8 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
         width = hi - lo
         done = (width <= rtol * hi) | (g_lo == 0.0) | (g_hi == 0.0) | np.isnan(width)
         if np.all(done):
-            return np.where(g_lo == 0.0, lo, np.where(g_hi == 0.0, hi, lo + width / 2.0))
+            root = np.where(g_lo == 0.0, lo, np.where(g_hi == 0.0, hi, lo + width / 2.0))
+            return root if root.ndim else float(root)  # a float for a float, as frequency_at gives
         slope = g_lo - g_hi  # > 0 where not done
         secant = lo + g_lo * width / np.where(done, 1.0, slope)
         halve = (width > widths[-2] / 2.0) | ~((secant > lo) & (secant < hi))
