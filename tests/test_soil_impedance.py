@@ -1,6 +1,7 @@
 """Frequency-dependent impedance of a footing: the published forms' own consistency, the plane-wave
-radiation of base and sidewalls by numerical integration, the fixed point ω = p(K(ω)) against a
-root bracketing, and the per-harmonic steady state against a direct complex solve."""
+radiation of base and sidewalls by numerical integration, the torsion against the torsional cone's
+wave equation, the root of ω = p(K(ω)) against Brent's and where a plain iteration cycles, and the
+per-harmonic steady state against a direct complex solve."""
 
 from __future__ import annotations
 
@@ -11,11 +12,15 @@ import pytest
 from scipy.optimize import brentq
 
 from foundation_calc.scenes import load_scene, parse_scene
+from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.soil.impedance import (
     consistent_frequency,
     footing_impedance,
+    footing_torsion,
     rocking_radiation_coefficient,
     stiffness_modifiers,
+    torsion_modifier,
+    torsion_radiation_coefficient,
 )
 from tests.conftest import CONFIGS, read_toml
 
@@ -108,6 +113,73 @@ def test_the_rocking_mode_solves_omega_equals_p_of_k_of_omega():
     fixed = consistent_frequency(p, p(0.0))
     assert fixed == pytest.approx(brentq(lambda w: w - p(w), 1.0, p(0.0)), rel=1e-9)
     assert fixed < 0.9 * p(0.0)  # the rocking spring softens by about a fifth at a0 ≈ 1.1
+
+
+def test_a_root_where_the_plain_iteration_cycles():
+    """p(ω) = c + 40 tanh((c - ω)/s) falls through ω = c with slope -40/s: for s = 5 (slope -8)
+    the plain iteration ω_{k+1} = p(ω_k) from p(0) jumps between c ± 40 for ever (the former
+    solver's ArithmeticError after 200 steps), for s = 50 (slope -0.8) it converges slowly. The
+    bracket [p(p_s), p_s] closes on c in both, every element of a batch at once: rel 1e-9 (the
+    solver's bracket 1e-10), in at most 40 evaluations of p (bisection alone takes 37)."""
+    c, scale = np.array([30.0, 50.0, 80.0, 50.0]), np.array([5.0, 5.0, 5.0, 50.0])
+    calls = []
+
+    def p(w):
+        calls.append(w)
+        return c + 40.0 * np.tanh((c - w) / scale)
+
+    assert consistent_frequency(p, p(0.0)) == pytest.approx(c, rel=1e-9)
+    assert len(calls) <= 41
+
+
+def test_a_frequency_that_rises_with_frequency_is_a_physics_error():
+    """Springs that stiffen with frequency break the bracket's premise: a PhysicsError (fcalc's exit
+    3, naming the soil), not a wrong root nor an endless loop."""
+    with pytest.raises(PhysicsError, match="rises with frequency"):
+        consistent_frequency(lambda w: 50.0 + 0.5 * w, 50.0)
+
+
+@pytest.mark.parametrize(("L", "B"), [(4.0, 4.0), (6.0, 4.0), (3.0, 9.0)])
+def test_torsion_dashpot_at_high_frequency_against_plane_wave_quadrature(L, B):
+    """At high frequency every point of the base radiates a plane shear wave, traction ρ V_s times
+    its velocity θ' (x² + y²)^½: C_t → ρ V_s ∫ (x² + y²) dA (Veletsos' exact limit for a disk),
+    by Gauss-Legendre quadrature (exact for the quadratic integrand): rel 1e-9 (c̃_t = 1 - 1e-12
+    at a0 ~ 1e6). At rest the spring is static and torsion radiates nothing (c̃_t ~ a0²)."""
+    nodes, weights = np.polynomial.legendre.leggauss(4)
+    x, y = L * nodes / 2.0, B * nodes / 2.0
+    area = np.outer(weights, weights) * L * B / 4.0
+    integral = float(np.sum(area * (x[:, None] ** 2 + y[None, :] ** 2)))
+    K, C = footing_torsion(1.0, G, RHO, L, B, 1.0e8)
+    assert float(C) == pytest.approx(RHO * V_S * integral, rel=1e-9)
+    K0, C0 = footing_torsion(1.0, G, RHO, L, B, 0.0)
+    assert (float(K0), float(C0)) == (1.0, 0.0)
+    r = max(L, B) / min(L, B)
+    assert torsion_radiation_coefficient(1e-5, r) == pytest.approx(torsion_radiation_coefficient(2e-5, r) / 4.0, rel=1e-8)
+
+
+def _torsional_cone(b0):
+    """Dynamic stiffness S/K of the torsional cone (Wolf 1994, ch. 2; Meek & Wolf 1992) at
+    b0 = ω z0/V_s, from the cone's own wave equation: G (I u')' = -ω² ρ I u with I ∝ z⁴ (the
+    cone's polar moment), whose outgoing solution is u = h1(k z)/z (h1 the spherical Hankel
+    function of the second kind, e^{iωt}); S = -G I u'(z0)/u(z0), K = 3 G I/z0 its static value."""
+    from scipy.special import spherical_jn, spherical_yn
+
+    h = spherical_jn(1, b0) - 1j * spherical_yn(1, b0)
+    dh = spherical_jn(1, b0, True) - 1j * spherical_yn(1, b0, True)
+    return -(b0 * dh - h) / h / 3.0  # z0 = 1, I = 1, G = 1: u'/u = (k h1' z - h1)/(z h1)
+
+
+@pytest.mark.parametrize("a0", [0.25, 0.5, 1.0, 1.5, 2.0, 3.0])
+def test_torsion_modifier_of_a_square_against_the_torsional_cone(a0):
+    """Pais & Kausel's k_t(a0) of a square against the torsional cone of the disk with the same
+    polar moment (r0 = (2 J_t/π)^¼ = 1.1415 B'), apex height z0 = (9π/32) r0 so that its static
+    stiffness is Reissner-Sagoci's 16 G r0³/3: b0 = (9π/32) a0 r0/B'. Two independent
+    approximations of the rigorous solution (the cone's own error a few per cent, Pais & Kausel's
+    fit about 5 %; 0.003-0.015 apart here, a0 = 3 beyond the fits included): within 0.025; the
+    former static spring (k_t = 1) is 0.07-0.30 away from a0 = 0.5 on."""
+    r0 = (2.0 * (4.0 / 3.0) * 2.0 / math.pi) ** 0.25  # B' = L' = 1: J_t = (4/3) L' B' (L'² + B'²)
+    cone = _torsional_cone(9.0 * math.pi / 32.0 * a0 * r0)
+    assert float(torsion_modifier(a0, 1.0)) == pytest.approx(cone.real, abs=0.025)
 
 
 def test_resonance_check_uses_each_modes_own_frequency():

@@ -12,8 +12,8 @@ Distributions (independent):
   for a machine whose speed drifts or is not yet fixed.
 
 A frequency-dependent soil (Gazetas) is sampled as the checks take it: the factor scales G (so
-V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (fixed-point
-iteration over the whole array), and each harmonic n of the response takes the springs at n ω.
+V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (a bracketed root,
+the whole array at once), and each harmonic n of the response takes the springs at n ω.
 The sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
 
 Per sample: k0, p1, p2 (the paper's operator), the margin of the speed from the nearest of the

@@ -96,6 +96,9 @@ def design_document(sizing: Sizing) -> dict:
         "fails_everywhere": found.fails_everywhere,
         "cheaper_candidates": found.cheaper_count,
         "cheaper_failures": _failures(found.cheaper_failures),
+        "unevaluated": {"count": found.unevaluated_count,
+                        "errors": [{"error": kind, "count": n, "example": example, "message": message}
+                                   for kind, (n, example, message) in found.unevaluated.items()]},
         "deferred": _deferred(sizing),
         "recheck": {"designs": len(designs), "agree": not sizing.disagreements,
                     "disagreements": [{"values": d.design, "check": d.check, "search": d.search, "fcalc_check": d.full}
@@ -161,6 +164,7 @@ def print_design(sizing: Sizing) -> None:
         console.print(f"reserve: every utilisation at most {bound(found.margin):.4g} (--margin {found.margin:g}),"
                       " a warning's too")
     _print_deferred(console, document["deferred"], found.found)
+    _print_unevaluated(console, document["unevaluated"])
     keys = found.grid.keys
     if found.found:
         best = document["best"]
@@ -252,6 +256,19 @@ def _print_deferred(console, deferred: dict | None, passed: bool) -> None:
     if deferred["pareto_failing"]:
         console.print(f"  {deferred['pareto_failing']} Pareto design{'s' * (deferred['pareto_failing'] != 1)} of the"
                       f" batch checks fail {checks} by the full path: left out of the Pareto set")
+
+
+def _print_unevaluated(console, unevaluated: dict) -> None:
+    """How many candidates could not be evaluated, by the kind of error, with an example of each."""
+    from rich.markup import escape
+
+    if not unevaluated["count"]:
+        return
+    count = unevaluated["count"]
+    console.print(f"[bold yellow]note[/]: {count} candidate{'s' * (count != 1)} could not be evaluated (left out of the search):")
+    for row in unevaluated["errors"]:
+        console.print(f"  {row['error']} ({row['count']}), e.g. {_values_text(row['example'])} m: {escape(row['message'])}",
+                      soft_wrap=True)
 
 
 def _print_pareto(console, document: dict, keys: list[str]) -> None:

@@ -153,10 +153,12 @@ class BlockSoil(Soil):
     def _planes(self, L: float, B: float, M: float, J_O, omega=0.0):
         """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
         plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
-        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's K_t with material
-        damping (gazetas, pais_kausel; surface footing; static: its frequency modifier is not among
-        the closed forms used), C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26, SNiP 2.02.05-87). Gazetas' or
-        Pais & Kausel's springs and dashpots in both planes at the frequencies ``omega`` [rad/s]."""
+        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's static K_t with
+        Pais & Kausel's modifier k_t(a0) and radiation C_t = ρ V_s J_t c̃_t(a0) (gazetas, pais_kausel;
+        surface footing; :func:`~foundation_calc.solvers.soil.impedance.footing_torsion`), ξ_ψ =
+        C_t/(2 sqrt(K_t(ω) J_z)) plus the material damping, C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26,
+        SNiP 2.02.05-87). Gazetas' or Pais & Kausel's springs and dashpots in both planes and in
+        torsion at the frequencies ``omega`` [rad/s]."""
         method, D = self.method_used, self.material_damping or 0.0
         if method == "sp26":
             from foundation_calc.solvers.constants import GRAVITY
@@ -182,6 +184,9 @@ class BlockSoil(Soil):
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs
             from foundation_calc.solvers.soil.torsion import gazetas_torsion as torsion
 
+        from foundation_calc.solvers.soil.impedance import footing_torsion
+
+        K_t, C_t = footing_torsion(torsion(self.G, L, B), self.G, self.density, L, B, omega)
         return (springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D, omega),
                 springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D, omega),
-                (torsion(self.G, L, B), D))
+                (K_t, C_t / (2.0 * (K_t * J_O[2]) ** 0.5) + D))

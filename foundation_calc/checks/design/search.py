@@ -19,6 +19,15 @@ between its points, are not looked for.
 Pareto set: among the passing candidates, those that no other passing candidate beats on both
 volume (smaller) and worst margin (larger), cheapest first.
 
+Candidates that cannot be evaluated: where the evaluator raises an error of a design's physics
+(:data:`UNEVALUABLE`, what ``fcalc check`` reports as an invalid scene, or arithmetic that fails)
+on a batch, the batch is halved until the candidates that raise are alone (:meth:`_Walk.judge`;
+k of them in a chunk of N cost about N log2(4k) candidates' evaluations, none when every
+candidate can be evaluated). Those are counted by the error's kind with an example
+(``Search.unevaluated``), left out of the search and never chosen; the others are judged as
+usual. One candidate never ends a search; a search of which no candidate can be evaluated raises
+the first error.
+
 Deferred checks: a check the evaluator does not evaluate (``CandidateVerdicts.deferred``, such as
 a run-up integrated in time) is judged by the full path (``confirm``, one
 :func:`~foundation_calc.checks.batch.run_checks` a candidate): the candidates that pass the
@@ -37,9 +46,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import Batch, CandidateVerdicts
+from foundation_calc.checks.design.candidates import Batch, CandidateVerdicts, concatenated
 from foundation_calc.checks.design.grid import DECIMALS, Grid
 from foundation_calc.checks.design.reserve import failing_checks
+from foundation_calc.errors import FcalcError
 
 #: Candidates judged at once: bounds the memory of a search (about 4 kB a candidate of a block
 #: scene: 42 MiB peak; larger chunks are no faster).
@@ -56,6 +66,12 @@ SAMPLE = 20_000
 CONFIRM = 20
 
 Evaluate = Callable[[Batch], CandidateVerdicts]
+
+#: Errors by which an evaluator says that a candidate cannot be evaluated (module docstring): an
+#: error fcalc reports of a design (:class:`~foundation_calc.errors.FcalcError`: a block that
+#: cannot be built or computed), arithmetic that fails, a singular matrix. Any other error is a
+#: bug and ends the search.
+UNEVALUABLE = (FcalcError, ArithmeticError, np.linalg.LinAlgError)
 
 
 @dataclass
@@ -151,7 +167,9 @@ class Search:
     governing those it failed (``deferred_failed`` of them; those on the grid are also in
     ``cheaper_failures``), ``unconfirmed`` how many candidates that pass the batch's checks it never
     judged when none it judged passes (0 otherwise); ``margin``: the reserve asked of every
-    utilisation (None: none, fcalc check's rule)."""
+    utilisation (None: none, fcalc check's rule); ``unevaluated``: the kind of error ->
+    (how many candidates raised it, the first one's values, its message) of the candidates that
+    could not be evaluated (module docstring), each counted once."""
 
     grid: Grid
     strict: bool
@@ -175,6 +193,8 @@ class Search:
     deferred_failures: dict[str, int] = field(default_factory=dict)
     unconfirmed: int = 0
     margin: float | None = None
+    unevaluated: dict[str, tuple[int, dict[str, float], str]] = field(default_factory=dict)
+    first_error: Exception | None = field(default=None, repr=False)
 
     def passes(self, verdicts: CandidateVerdicts) -> np.ndarray:
         """(N,) True where a candidate passes (:func:`passing` with this search's rule)."""
@@ -183,6 +203,18 @@ class Search:
     def tally(self, verdicts: CandidateVerdicts) -> dict[str, int]:
         """:func:`failure_tally` with this search's rule."""
         return failure_tally(verdicts, self.strict, self.margin)
+
+    @property
+    def unevaluated_count(self) -> int:
+        """How many candidates could not be evaluated."""
+        return sum(count for count, _, _ in self.unevaluated.values())
+
+    def skipped(self, batch: Batch, error: Exception) -> None:
+        """Count the one candidate ``batch`` that raised ``error`` (module docstring)."""
+        kind = type(error).__name__
+        count, example, message = self.unevaluated.get(kind, (0, {k: float(v[0]) for k, v in batch.items()}, str(error)))
+        self.unevaluated[kind] = (count + 1, example, message)
+        self.first_error = self.first_error or error
 
     @property
     def found(self) -> bool:
@@ -224,8 +256,31 @@ class _Walk:
         self.failures: dict[str, int] = {}
         self.queue, self.queued = Front.empty(keys), 0
 
+    def judge(self, batch: Batch, count: bool = True) -> tuple[Batch, CandidateVerdicts | None]:
+        """``evaluate`` on the candidates of ``batch`` that can be evaluated, and those candidates
+        (None for the verdicts when none can): a batch that raises an error of :data:`UNEVALUABLE`
+        is halved until the candidates that raise it are alone, each counted in
+        ``Search.unevaluated`` when ``count`` (the first time the search meets it)."""
+        try:
+            return batch, self.evaluate(batch)
+        except UNEVALUABLE as error:
+            size = len(next(iter(batch.values())))
+            if size == 1:
+                if count:
+                    self.found.skipped(batch, error)
+                return batch, None
+        halves = [self.judge({k: np.asarray(v)[part] for k, v in batch.items()}, count)
+                  for part in (slice(0, size // 2), slice(size // 2, None))]
+        judged = [(part, verdicts) for part, verdicts in halves if verdicts is not None]
+        if not judged:
+            return batch, None
+        return ({k: np.concatenate([part[k] for part, _ in judged]) for k in batch},
+                concatenated([verdicts for _, verdicts in judged]))
+
     def add(self, batch: Batch) -> None:
-        verdicts = self.evaluate(batch)
+        batch, verdicts = self.judge(batch)
+        if verdicts is None:
+            return
         ok = self.found.passes(verdicts)
         self.passed = self.passed.joined(_front(batch, verdicts, ok)).pareto()
         if verdicts.deferred:  # the cheapest that pass the batch's checks, for the full path
@@ -296,8 +351,9 @@ def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], 
     batch = {k: v[cheaper] for k, v in batch.items()}
     queue = Front.empty(grid.keys)
     for first in range(0, len(next(iter(batch.values()))), chunk):
-        part = {k: v[first:first + chunk] for k, v in batch.items()}
-        verdicts = walk.evaluate(part)
+        part, verdicts = walk.judge({k: v[first:first + chunk] for k, v in batch.items()})
+        if verdicts is None:
+            continue
         ok = found.passes(verdicts)
         walk.passed = walk.passed.joined(_front(part, verdicts, ok)).pareto()
         queue = queue.joined(_front(part, verdicts, ok)).by_volume(found.bound)
@@ -323,6 +379,8 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
     walk = _Walk(found, evaluate)
     for first in range(0, grid.size, chunk):
         walk.add(grid.chunk(first, first + chunk))
+    if not found.evaluated and found.first_error is not None:
+        raise found.first_error  # nothing to report: no candidate could be evaluated
     best, on_grid = walk.passed.cheapest(), {}
     if found.deferred and confirm is not None:
         best = _confirmed(found, walk.queue, confirm, on_grid)
@@ -338,7 +396,7 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
     found.closest = walk.queue.take(slice(0, 1)) if unjudged else walk.all_best
     found.sample = tuple(np.concatenate(parts) for parts in zip(*walk.samples))
     if found.found or unjudged:
-        _tally_cheaper(found, evaluate, given, chunk, best.volume[0] if found.found else np.inf)
+        _tally_cheaper(found, walk, given, chunk, best.volume[0] if found.found else np.inf)
         _add_counts(found.cheaper_failures, on_grid)
     else:
         found.cheaper_failures, found.cheaper_count = walk.failures, found.evaluated
@@ -346,18 +404,20 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
     return found
 
 
-def _tally_cheaper(found: Search, evaluate: Evaluate, given: dict[str, float], chunk: int, limit: float) -> None:
+def _tally_cheaper(found: Search, walk: _Walk, given: dict[str, float], chunk: int, limit: float) -> None:
     """``cheaper_failures``: the governing failure of each grid candidate cheaper than ``limit``
-    [m³] that fails the batch's checks (those cheaper judged again, the others skipped)."""
+    [m³] that fails the batch's checks (those cheaper judged again, the others skipped; those
+    that cannot be evaluated, counted already, left out)."""
     grid = found.grid
     for first in range(0, grid.size, chunk):
         batch = grid.chunk(first, first + chunk)
         cheaper = _volume(batch, given) < limit
         if not cheaper.any():
             continue
-        part = {k: v[cheaper] for k, v in batch.items()}
-        _add_counts(found.cheaper_failures, found.tally(evaluate(part)))
-        found.cheaper_count += int(np.count_nonzero(cheaper))
+        _, verdicts = walk.judge({k: v[cheaper] for k, v in batch.items()}, count=False)
+        if verdicts is not None:
+            _add_counts(found.cheaper_failures, found.tally(verdicts))
+            found.cheaper_count += len(verdicts.volume)
 
 
 def thinned(front: Front, count: int) -> Front:
@@ -368,5 +428,5 @@ def thinned(front: Front, count: int) -> Front:
     return front.take(np.unique(np.round(np.linspace(0, size - 1, count)).astype(int)))
 
 
-__all__ = ["CHUNK", "Front", "REFINE", "SAMPLE", "Search", "failure_tally", "passing", "search", "thinned",
+__all__ = ["CHUNK", "Front", "REFINE", "SAMPLE", "Search", "UNEVALUABLE", "failure_tally", "passing", "search", "thinned",
            "worst_margin"]

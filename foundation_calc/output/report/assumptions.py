@@ -70,12 +70,12 @@ BLOCK_SOIL_MODELS = {
               " radiation plus material damping. Frequency-independent, fitted for a0 < 1.5.",
     "gazetas": "Uniform elastic half-space under a rigid surface base, Gazetas' stiffnesses and"
                " radiation dashpots of the rectangle [Ga]. Frequency-dependent: every order n is solved"
-               " with K(nω), C(nω) and every mode at its own frequency; torsion static, with material"
-               " damping only.",
+               " with K(nω), C(nω) and every mode at its own frequency; torsion with Pais & Kausel's"
+               " modifier and radiation dashpot [PK].",
     "pais_kausel": "Uniform elastic half-space under a rigid surface base, Pais & Kausel's"
                    " stiffnesses with their frequency modifiers [PK] and Gazetas' dashpots. Frequency-"
                    "dependent: every order n is solved with K(nω), C(nω) and every mode at its own"
-                   " frequency; torsion static, with material damping only.",
+                   " frequency, torsion included.",
     "sp26": "The code's coefficients C_z, C_x, C_φ from the deformation modulus and the soil class,"
             " C_ψ = C_z and ξ_ψ = 0.3 ξ_z (torsion as the code is usually quoted: unverified against its"
             " text), damping ratios of the code [SP26]. Frequency-independent.",

@@ -4,8 +4,8 @@ at each mode's own frequency.
 On a frequency-dependent soil (``soil.method = "gazetas"``) the amplitudes solve harmonic n with
 the springs and dashpots at n ω (:func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics`),
 and the resonance check takes every mode at the root of ω = p(K(ω))
-(:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`, iterated from the static
-value). The sheet shows both as columns of one chain
+(:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`, bracketed between the
+static value p_s and p(p_s)). The sheet shows both as columns of one chain
 (:func:`~foundation_calc.output.report.soil_methods.gazetas_at`, then [KM] (4.5)-(4.7) for the
 modes), so the number behind every judged harmonic and critical speed is on the page;
 ``tests/test_report_gazetas_frequencies.py`` compares them with the solvers'.
@@ -61,7 +61,7 @@ def mode_columns(scene, static: Chain, consistent: dict[str, float], footer=None
         chains.append(chain)
     return Columns("Each mode at its own frequency: springs at ω*, then (4.5)-(4.7); the mode's own row equals ω* = p(K(ω*))",
                    tuple(f"at ω* of {m}" for m in MODES), chains,
-                   (("omega_s", "ω* = p(K(ω*)), iterated from the static value", "[KM] (4.7) with [PK]"),),
+                   (("omega_s", "ω* = p(K(ω*)), the root between p(p_s) and the static p_s", "[KM] (4.7) with [PK]"),),
                    footer)
 
 

@@ -15,7 +15,8 @@ A soil whose springs and dashpots depend on frequency (Gazetas' impedance,
 :mod:`foundation_calc.solvers.soil.impedance`) is given as ``impedance``: a function Ω -> (springs,
 dashpots) at O, each (..., 6). Every order n is then solved with K(nω), C(nω) (the equations are
 linear: order by order, the base's impedance at that order's frequency), and every mode j at its
-own frequency, p_j = p_j(K(p_j)) (:func:`consistent_modes`).
+own frequency, p_j = p_j(K(p_j)) with p_j(ω) the j-th lowest on the springs at ω
+(:func:`consistent_modes`).
 """
 
 from __future__ import annotations
@@ -102,40 +103,52 @@ def block_modes(model: BlockModel) -> BlockModes:
 
 def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     """The six modes of Eq. (1) of :mod:`.model` on the soil ``impedance`` (module docstring), each
-    at its own frequency, of one block or of a batch: p_j solves p = p_j(K(p)) by
-    :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency` from the static p_j, the
-    mode at each frequency being the one whose shape is nearest the static mode's (largest
-    |φ_kᵀ M φ_j|: the rocking modes soften more than the others and may pass them); its shape,
-    dominant motion and damping ratio are those of the springs and dashpots at p_j. Sorted by
-    frequency; ``static`` gives the static frequency of each. ``impedance(ω)`` takes ω shaped as
-    the batch (...)."""
+    at its own frequency, of one block or of a batch: the j-th lowest frequency p_j solves
+    p = p_j(K(p)), p_j(ω) the j-th lowest on the springs at ω
+    (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`: the springs fall with
+    frequency, so p_j(ω) does too and the root is one and bracketed; the six roots are every root
+    of det(K(ω) - ω² M) = 0). A mode that softens more than another (rocking) passes it by rank
+    at its own frequency, where it is found. Its shape, dominant motion and damping ratio are those
+    of the springs and dashpots at p_j; ``static_frequencies`` gives each mode's frequency on the
+    static springs, of the static mode of the nearest shape (:func:`nearest_shapes`).
+    ``impedance(ω)`` takes ω shaped as the batch (...)."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
 
     static = batch_modes(model)  # a block that tips over keeps p = 0, its fixed point
 
-    def at(omega, j):
+    def at(omega):
         K, C = model.soil_matrices(*impedance(omega))
-        modes = batch_modes(replace(model, K=K, C=C))
-        nearness = np.abs(np.einsum("...i,...ij,...jk->...k", static.shapes[..., :, j], model.M, modes.shapes))
-        return modes, np.argmax(nearness, axis=-1)[..., None]
-
-    def frequency(omega, j):
-        modes, k = at(omega, j)
-        return np.take_along_axis(modes.frequencies, k, -1)[..., 0]
+        return batch_modes(replace(model, K=K, C=C))
 
     columns = []
     for j in range(6):
-        modes, k = at(consistent_frequency(lambda w, j=j: frequency(w, j), static.frequencies[..., j]), j)
-        pick = lambda a: np.take_along_axis(a, k, -1)[..., 0]  # noqa: E731
-        columns.append((pick(modes.frequencies), np.take_along_axis(modes.shapes, k[..., None, :], -1)[..., 0],
-                        pick(modes.dominant), pick(modes.damping), pick(modes.squared), modes.stable))
+        modes = at(consistent_frequency(lambda w, j=j: at(w).frequencies[..., j], static.frequencies[..., j]))
+        columns.append((modes.frequencies[..., j], modes.shapes[..., :, j], modes.dominant[..., j], modes.damping[..., j],
+                        modes.squared[..., j], modes.stable))
     p = np.stack([c[0] for c in columns], -1)
-    order = np.argsort(p, axis=-1)
+    order = np.argsort(p, axis=-1)  # ascending by the proof; round-off may swap equal roots
     sort = lambda a: np.take_along_axis(a, order, -1)  # noqa: E731
     shapes = np.take_along_axis(np.stack([c[1] for c in columns], -1), order[..., None, :], -1)
     stable = np.logical_and.reduce([c[5] for c in columns])
+    pairs = nearest_shapes(static.shapes, shapes, model.M)
     return ModeBatch(sort(p), shapes, sort(np.stack([c[2] for c in columns], -1)), sort(np.stack([c[3] for c in columns], -1)),
-                     sort(np.stack([c[4] for c in columns], -1)), stable & static.stable, sort(static.frequencies))
+                     sort(np.stack([c[4] for c in columns], -1)), stable & static.stable,
+                     np.take_along_axis(static.frequencies, pairs, -1))
+
+
+def nearest_shapes(before: np.ndarray, after: np.ndarray, M: np.ndarray) -> np.ndarray:
+    """For each mode of ``after`` (shapes as columns, (..., 6, 6)), the index of the mode of
+    ``before`` of the nearest shape, each used once (..., 6): the pairs of the largest
+    |φ_bᵀ M φ_a| taken greedily, largest first (the mass-normalised shapes' modal assurance)."""
+    near = np.abs(np.einsum("...ib,...ij,...ja->...ba", before, M, after))  # (..., before, after)
+    pairs = np.zeros(near.shape[:-2] + (near.shape[-1],), dtype=int)
+    for _ in range(near.shape[-1]):
+        flat = np.argmax(near.reshape(near.shape[:-2] + (-1,)), axis=-1)
+        b, a = np.divmod(flat, near.shape[-1])
+        np.put_along_axis(pairs, a[..., None], b[..., None], -1)
+        np.put_along_axis(near, b[..., None, None], -1.0, -2)  # b is taken: its row out
+        np.put_along_axis(near, a[..., None, None], -1.0, -1)  # a is paired: its column out
+    return pairs
 
 
 def consistent_modes(model: BlockModel, impedance) -> BlockModes:
@@ -348,6 +361,7 @@ __all__ = [
     "block_modes",
     "largest_peak",
     "complex_amplitudes",
+    "nearest_shapes",
     "consistent_batch",
     "consistent_modes",
     "point_motion",
