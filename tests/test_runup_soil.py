@@ -343,7 +343,7 @@ def test_block_soil_at_each_speed_and_mode(runner, tmp_path):
         assert entry["springs"]["ry"] == pytest.approx(static["ry"] * k_ry, rel=1e-12)
         assert entry["springs"]["x"] == pytest.approx(static["x"], rel=1e-12)
     text = runner.invoke(app, ["soil", str(path)], env={"COLUMNS": "80"}).stdout
-    assert "static (ω = 0)" in text and "ω, compressor" in text and "4 (ry)" in text
+    assert "static (ω = 0)" in text and "ω, compressor" in text and "5 (ry)" in text
     assert max(len(line) for line in text.splitlines() if "│" in line) <= 80
     plain = json.loads(runner.invoke(app, ["soil", str(CONFIGS / "block_two_machines.toml"), "--json"]).stdout)
     assert plain["frequency_dependent"] is False and plain["at_frequencies"] == []
