@@ -228,7 +228,7 @@ def block_amplitudes(scene) -> Finding:
     if report.resonant:
         reason: Reason = ("an order is resonant with an undamped mode: no steady state",)
     elif not report.limit_rows and not report.zone_rows:
-        reason = ("no amplitude or velocity limit in [limits]",)
+        reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
         reason = ()
         if report.limit_rows:
