@@ -191,7 +191,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
 def _office(scene, model, L, B, m_b):
     """Outcome, utilisation, governing index and reasons of the ``office`` check
     (:func:`~foundation_calc.checks.office.office_rows`)."""
-    from foundation_calc.checks.office import bearing_pressure
+    from foundation_calc.checks.office import bearing_pressure, settlement
     from foundation_calc.solvers.constants import GRAVITY
 
     limits = scene.limits
@@ -204,6 +204,11 @@ def _office(scene, model, L, B, m_b):
         ratios.append(q / limits.bearing_pressure)
         outcomes.append(np.where(q > limits.bearing_pressure, FAIL, PASS))
         reasons.append("bearing pressure")
+    if limits.settlement is not None:
+        s = settlement(model.mass * GRAVITY, model.springs[..., 2])
+        ratios.append(s / limits.settlement)
+        outcomes.append(np.where(s > limits.settlement, FAIL, PASS))
+        reasons.append("settlement")
     mu = m_b / sum(m.mass for m in scene.machines)
     ratios.append(limits.mass_ratio / mu)
     outcomes.append(np.where(mu < limits.mass_ratio, WARN, PASS))

@@ -38,10 +38,16 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no run time with [limits]"
                                  " transient_amplitude, and no [drive])."))
-    rows.append(("not checked", "Bearing pressure and settlement of the soil, strength of the block, anchors"
-                                " and machine, fatigue, out-of-plane vibration, transmission to neighbouring"
-                                " structures."))
+    text = "; ".join([*_static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
+                      " out-of-plane vibration, transmission to neighbouring structures."])
+    rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
+
+
+def _static_missing(limits) -> list[str]:
+    """The office checks on the soil a scene leaves out, for want of their allowables."""
+    return ([] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]) + (
+        [] if limits.settlement is not None else ["static settlement W/K_z (no [limits] settlement)"])
 
 
 def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
@@ -115,8 +121,7 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no [operation] run time with [limits]"
                                  " transient_amplitude)."))
-    missing = [] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]
-    text = "; ".join([*missing, "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
+    text = "; ".join([*_static_missing(limits), "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
                                 " grout and machines, transmission to neighbouring structures and people."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
