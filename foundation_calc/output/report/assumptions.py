@@ -95,8 +95,11 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                   " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
         ("soil", BLOCK_SOIL_MODELS[soil.method_used]),
         ("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
-                 " contact, no uplift; no embedment, side soil, layering or coupling through the soil with"
-                 " neighbouring foundations."),
+                 " contact, no uplift; "
+                 + ("no embedment, side soil, " if not scene.embedment else
+                    f"embedded {scene.embedment:g} m, sidewalls in full contact (the method's embedment factors"
+                    " and sidewall dashpots; no torsional sidewall dashpot); no ")
+                 + "layering or coupling through the soil with neighbouring foundations."),
     ]
     if soil.method_used == "springs" and soil.dashpot is None or soil.method_used == "coefficients" and not soil.damping:
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
