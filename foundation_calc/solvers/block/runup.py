@@ -9,6 +9,8 @@ vendor's load as the inertia forces it stands for), with its tangential part Q_n
 -i Ω'/r term of :class:`~foundation_calc.solvers.numerics.sweep_response.RotatingLoad`). The
 harmonic of order n has speed ratio n. Points: the combined centre of mass G and the scene's
 points, each moving by u_P = T_P q (Eq. (1) of :mod:`~foundation_calc.solvers.rigid_body.kinematics`).
+Several machines started together are one structure whose harmonics turn at their speeds'
+ratios to the fastest machine's (:func:`machines_structure`).
 """
 
 from __future__ import annotations
@@ -24,10 +26,23 @@ from foundation_calc.solvers.rigid_body.kinematics import point_maps
 def machine_structure(model: BlockModel, machine: Excitation, points) -> Structure:
     """The block of ``model`` under the loads of ``machine`` alone, measured at G and at
     ``points`` (P, 3) [m] from O (module docstring)."""
+    return machines_structure(model, [machine], points)[0]
+
+
+def machines_structure(model: BlockModel, machines, points) -> tuple[Structure, float]:
+    """The block under every one of ``machines`` at once, started and stopped together: each runs
+    from rest to its own speed ω_m in the same time, so its shaft turns at Ω_m = Ω ω_m/ω of one
+    reference shaft Ω, ω the fastest machine's speed. Its order n is then a harmonic of speed
+    ratio n ω_m/ω whose amplitude Q_n (Ω_m/ω_m)² = Q_n (Ω/ω)² (module docstring) is an inertial
+    load Q_n/ω² of the reference shaft; its tangential part follows from the ratio
+    (:class:`~foundation_calc.solvers.numerics.sweep_response.RotatingLoad`). Returns the
+    structure and ω [rad/s]; one machine is :func:`machine_structure`."""
+    omega = max(m.omega for m in machines)
     at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
-    inertial = np.asarray(machine.Q, dtype=complex) / machine.omega**2
-    load = RotatingLoad(machine.orders.astype(float), inertial, np.zeros_like(inertial))
-    return Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at))
+    ratio = np.concatenate([m.orders * (m.omega / omega) for m in machines]).astype(float)
+    inertial = np.concatenate([np.asarray(m.Q, dtype=complex) for m in machines]) / omega**2
+    load = RotatingLoad(ratio, inertial, np.zeros_like(inertial))
+    return Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at)), omega
 
 
-__all__ = ["machine_structure"]
+__all__ = ["machine_structure", "machines_structure"]
