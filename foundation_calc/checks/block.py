@@ -16,8 +16,8 @@ On a frequency-dependent soil (Gazetas' impedance) every mode is taken at its ow
 every order n of every machine is solved with the springs and dashpots at n ω
 (:mod:`~foundation_calc.solvers.block.response`).
 
-Amplitudes: the peak of the displacement and of the velocity over time, and the RMS of the
-displacement and of the velocity, of the centre of mass G and of every point, along x, y and z;
+Amplitudes: the peak of the displacement, of the velocity and of the acceleration over time, and
+their RMS values, of the centre of mass G and of every point, along x, y and z;
 several machines combine as :mod:`~foundation_calc.solvers.block.response` says (peaks add, RMS
 values add as root-sum-square). A code zone judges each point's largest RMS velocity.
 """
@@ -213,17 +213,16 @@ LIMITED_VALUES = {
     "velocity": "velocity_peak",
     "displacement_rms": "displacement_rms",
     "velocity_rms": "velocity_rms",
+    "acceleration": "acceleration_peak",
+    "acceleration_rms": "acceleration_rms",
 }
 
 
 def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
-    """Each limited quantity (peak or RMS displacement or velocity) of every point and direction;
-    acceleration limits are not judged for a block (a crank scene's keys, accepted for files
-    shared between kinds, are left out)."""
+    """Each limited quantity (peak or RMS displacement, velocity or acceleration) of every point and
+    direction, as the crank foundation's (:mod:`~foundation_calc.checks.limits`)."""
     rows = []
     for quantity, limit in limited_quantities(limits).items():
-        if quantity not in LIMITED_VALUES:
-            continue
         values = getattr(motion, LIMITED_VALUES[quantity])
         for p, name in enumerate(motion.names):
             for d, direction in enumerate(DIRECTIONS):

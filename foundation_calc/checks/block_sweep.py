@@ -51,8 +51,8 @@ class BlockSweep:
     alone : the other machines are left out
     speed : the swept machine's speed in the scene [rad/s]
     omega : (N,) its speeds [rad/s]
-    peak, velocity_peak, displacement_rms, velocity_rms : (N, 3) the largest over G and the points
-        along x, y, z [m, m/s]
+    peak, velocity_peak, displacement_rms, velocity_rms, acceleration_peak, acceleration_rms : (N, 3) the
+        largest over G and the points along x, y, z [m, m/s, m/s²]
     conditions : the conditions judged at every row, machine by machine in the scene's order
     rows : the rows' verdicts (:class:`~foundation_calc.checks.sweep_status.RowVerdicts`)
     limits : limited quantity -> limit (SI) judged along the sweep
@@ -67,6 +67,8 @@ class BlockSweep:
     velocity_peak: np.ndarray
     displacement_rms: np.ndarray
     velocity_rms: np.ndarray
+    acceleration_peak: np.ndarray
+    acceleration_rms: np.ndarray
     conditions: tuple[SweepCondition, ...]
     rows: RowVerdicts
     limits: dict
@@ -132,8 +134,8 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> BlockSweep:
     margins[:, first : first + own] = result.margin.reshape(len(omega), own)
     required = required_detuning(scene.limits.detuning, orders)
     verdict = judge(margins, orders, share, required, np.zeros(orders.shape, dtype=bool))
-    largest = {key: getattr(result, key).max(axis=1) for key in ("peak", "velocity_peak", "displacement_rms", "velocity_rms")}
-    limits = {q: v for q, v in limited_quantities(scene.limits).items() if q in LIMITED_VALUES}
+    largest = {key: getattr(result, key).max(axis=1) for key in LIMITED_VALUES.values()}
+    limits = limited_quantities(scene.limits)
     over = {q: exceeds(largest[LIMITED_VALUES[q]], v).any(axis=-1) for q, v in limits.items()}
     judged = verdict.judged[0]
     conditions = tuple(

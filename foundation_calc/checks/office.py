@@ -1,6 +1,6 @@
 """Office checks of a block foundation that DYNA6 and ACI 351.3R calculation sheets carry:
-eccentricity of the combined centre of mass, static bearing pressure, foundation-to-machine
-mass ratio.
+eccentricity of the combined centre of mass, static bearing pressure and settlement,
+foundation-to-machine mass ratio; a crank foundation's bearing pressure and settlement.
 
 Sources:
 
@@ -13,6 +13,10 @@ Sources:
   e_x, e_y (contact over the whole base, e within the kern) is at most
   q_max = W / (L B) (1 + 6 |e_x| / L + 6 |e_y| / B); above the allowable of the scene
   (``[limits] bearing_pressure``, from the geotechnical report) the check **fails**.
+- Static settlement: s = W / K_z, the total weight W on the static vertical spring K_z of the
+  scene's soil method (its ω = 0 value for a frequency-dependent one): the elastic settlement of
+  the soil model the dynamic checks use, not a consolidation settlement. Above the allowable of the
+  scene (``[limits] settlement``) the check **fails**; crank and block scenes alike.
 - Mass ratio: the same rules of thumb: a block at least 2-3 times the mass of a rotating
   machine and 3-5 times that of a reciprocating one. A rule of thumb, so below
   ``[limits] mass_ratio`` (default 3) the check **warns**.
@@ -80,6 +84,46 @@ def _bearing(q: float, allowable: float, formula: str = "q_max = W/(L B) (1 + 6|
     )
 
 
+def settlement(W, K_z):
+    """Static settlement s = W / K_z [m] of the weight W [N] on the vertical spring K_z [N/m]
+    (module docstring); floats or arrays.
+
+    >>> round(settlement(1.0e6, 2.0e9), 6)
+    0.0005
+    """
+    return W / K_z
+
+
+def static_rows(W: float, K_z: float, limits, bearing: OfficeRow | None = None) -> list[OfficeRow]:
+    """The static checks of every kind on the soil: the bearing pressure row (given, as each kind
+    computes its pressure) and the settlement s = W / K_z [m] against ``[limits] settlement``,
+    each where the scene gives its limit."""
+    rows = [] if bearing is None else [bearing]
+    if limits.settlement is not None:
+        s, allowable = float(settlement(W, K_z)), limits.settlement
+        over = s > allowable
+        rows.append(OfficeRow(
+            "settlement", s, allowable, "m", Outcome.FAIL if over else Outcome.PASS, "scene [limits] settlement",
+            f"s = W/K_z = {W / 1e3:.4g} kN / {K_z:.4g} N/m = {s * 1e3:.4g} mm {'>' if over else '<='}"
+            f" {allowable * 1e3:.4g} mm",
+        ))
+    return rows
+
+
+def crank_office_rows(scene) -> tuple[OfficeRow, ...]:
+    """The office checks of a ``crank_foundation`` scene: its bearing pressure W/S
+    (:func:`crank_bearing_row`) and settlement W/K_z (K_z of its soil method at ω = 0), where
+    ``[limits]`` gives their allowables; W = M_tot g."""
+    from foundation_calc.solvers.constants import GRAVITY
+
+    limits = scene.limits
+    W = scene.total_mass * GRAVITY
+    bearing = None if limits.bearing_pressure is None else crank_bearing_row(W, scene.foundation.base_area,
+                                                                             limits.bearing_pressure)
+    K_z = None if limits.settlement is None else float(scene.soil_springs().K_z)
+    return tuple(static_rows(W, K_z, limits, bearing))
+
+
 def mass_ratio_row(foundation: float, machines: float, required: float) -> OfficeRow:
     """Foundation-to-machine mass ratio [-]; warns below ``required``."""
     ratio = foundation / machines
@@ -105,16 +149,20 @@ class OfficeReport:
 
 
 def office_rows(scene, model) -> tuple[OfficeRow, ...]:
-    """The office checks of a ``block_foundation`` scene (module docstring)."""
+    """The office checks of a ``block_foundation`` scene (module docstring); K_z the vertical spring
+    at O of ``model`` (a frequency-dependent soil's at ω = 0)."""
     from foundation_calc.solvers.constants import GRAVITY
 
     L, B = scene.base
     limits = scene.limits
+    W = model.mass * GRAVITY
     rows = eccentricity_rows(model.cog[:2], L, B, limits.eccentricity)
-    if limits.bearing_pressure is not None:
-        rows.append(bearing_row(model.mass * GRAVITY, model.cog[0], model.cog[1], L, B, limits.bearing_pressure))
+    bearing = None if limits.bearing_pressure is None else bearing_row(W, model.cog[0], model.cog[1], L, B,
+                                                                       limits.bearing_pressure)
+    rows += static_rows(W, float(model.springs[2]), limits, bearing)
     rows.append(mass_ratio_row(scene.block.mass_properties[0], sum(m.mass for m in scene.machines), limits.mass_ratio))
     return tuple(rows)
 
 
-__all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "crank_bearing_row", "eccentricity_rows", "mass_ratio_row", "office_rows"]
+__all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "crank_bearing_row", "crank_office_rows",
+           "eccentricity_rows", "mass_ratio_row", "office_rows", "settlement", "static_rows"]

@@ -228,7 +228,7 @@ def block_amplitudes(scene) -> Finding:
     if report.resonant:
         reason: Reason = ("an order is resonant with an undamped mode: no steady state",)
     elif not report.limit_rows and not report.zone_rows:
-        reason = ("no amplitude or velocity limit in [limits]",)
+        reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
         reason = ()
         if report.limit_rows:
@@ -254,16 +254,18 @@ def block_amplitudes(scene) -> Finding:
 
 
 def crank_office(scene) -> Finding | None:
-    """Static bearing pressure of a crank foundation against [limits] bearing_pressure; None (not
-    run) without that limit. (Its machine stands over the base's centroid: no eccentricity.)"""
-    if scene.limits.bearing_pressure is None:
-        return None
-    from foundation_calc.checks.office import OfficeReport, crank_bearing_row
-    from foundation_calc.solvers.constants import GRAVITY
+    """Static bearing pressure and settlement of a crank foundation against [limits]
+    bearing_pressure and settlement; None (not run) without either limit. (Its machine stands over
+    the base's centroid: no eccentricity.)"""
+    from foundation_calc.checks.office import OfficeReport, crank_office_rows
 
-    row = crank_bearing_row(scene.total_mass * GRAVITY, scene.foundation.base_area, scene.limits.bearing_pressure)
-    return Finding("office", row.outcome, (f"{row.name}: {row.text}",), {}, OfficeReport((row,)),
-                   (f"{row.outcome.value.upper()} {row.name}: {row.text} ({row.source})",))
+    rows = crank_office_rows(scene)
+    if not rows:
+        return None
+    report = OfficeReport(rows)
+    shown = [o for o in rows if o.outcome is report.office_outcome]
+    return Finding("office", report.office_outcome, ("; ".join(f"{o.name}: {o.text}" for o in shown),), {}, report,
+                   tuple(f"{o.outcome.value.upper()} {o.name}: {o.text} ({o.source})" for o in rows))
 
 
 def block_office(scene) -> Finding:

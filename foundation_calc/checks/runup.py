@@ -6,7 +6,11 @@ crank foundation: :mod:`~foundation_calc.solvers.crank.runup`; block foundation:
 (:func:`~foundation_calc.solvers.numerics.runup.runup`), and compares the largest displacement of
 every point during each run with the limit. A block's machine is run with its own loads; the
 other machines' steady peaks are added to every point's transient peak, as the block's steady
-peaks of several machines add (:mod:`~foundation_calc.solvers.block.response`). An undamped structure gets a warning: its passage
+peaks of several machines add (:mod:`~foundation_calc.solvers.block.response`). Several machines
+are also run together, each from rest to its own speed in the same time
+(:func:`~foundation_calc.solvers.block.runup.machines_structure`): passages of several machines
+may then coincide; that run's peak is at least the machines' steady peaks added (its hold at the
+final speeds samples their sum, which reaches that bound only over a long time). An undamped structure gets a warning: its passage
 peaks are Lewis' asymptote and the time integration's ringing never decays.
 """
 
@@ -79,10 +83,15 @@ class RunupReport:
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
 
 
+#: The machine part of the run key of a block's machines started or stopped together ("run_up:*").
+TOGETHER = "*"
+
+
 def run_title(key: str) -> str:
-    """The title of run ``key``: "start-up", or for a block's machine "start-up of compressor"."""
+    """The title of run ``key``: "start-up", for a block's machine "start-up of compressor", for
+    its machines together "start-up of every machine together"."""
     run, _, machine = key.partition(":")
-    return RUN_TITLES[run] + (f" of {machine}" if machine else "")
+    return RUN_TITLES[run] + (" of every machine together" if machine == TOGETHER else f" of {machine}" if machine else "")
 
 
 @dataclass(frozen=True)
@@ -103,17 +112,21 @@ DIRECTIONS = {"platform": ("x", "y", "z"), "crank_foundation": ("horizontal", "v
 
 
 def _block_structures(scene):
-    """One structure per machine of a block scene as (name, structure, speed [rad/s]), and the
-    names of the points (G first): the block with the scene's modes, the resonance check's
-    (:func:`~foundation_calc.checks.block.scene_modes`; a PhysicsError naming the soil when the
-    block is unstable)."""
+    """One structure per machine of a block scene as (name, structure, speed [rad/s]), and with
+    several machines one of them all started together (name :data:`TOGETHER`, the fastest
+    machine's speed); the names of the points (G first). Each is the block with the scene's modes,
+    the resonance check's (:func:`~foundation_calc.checks.block.scene_modes`; a PhysicsError
+    naming the soil when the block is unstable)."""
     from foundation_calc.checks.block import scene_modes
-    from foundation_calc.solvers.block.runup import machine_structure
+    from foundation_calc.solvers.block.runup import machine_structure, machines_structure
 
     model = scene.stable_model()  # a PhysicsError naming the likely culprit when the block tips over
     modes, impedance = scene_modes(scene, model)
     at = [p.at for p in scene.points]
-    built = [(e.name, machine_structure(model, e, at, modes, impedance), e.omega) for e in scene.excitations()]
+    excitations = scene.excitations()
+    built = [(e.name, machine_structure(model, e, at, modes, impedance), e.omega) for e in excitations]
+    if len(excitations) > 1:
+        built.append((TOGETHER, *machines_structure(model, excitations, at, modes, impedance)))
     return built, ("G", *(p.name for p in scene.points))
 
 
@@ -198,9 +211,11 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         machines = [("", built, omega)]
     # the time integration (scipy.linalg's Schur form) only for a scene that is run up: fcalc check
     # and the sheet ask judged() of every scene
+    import numpy as np
+
     from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
 
-    steadies = [steady_peaks(b, w) for _, b, w in machines]
+    steadies = [steady_peaks(b, w) for m, b, w in machines if m != TOGETHER]
     steady_points, steady_directions = sum(s[0] for s in steadies), sum(s[1] for s in steadies)
     runs: dict = {}
     for k, (machine, built, omega) in enumerate(machines):
@@ -212,7 +227,12 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
             except ValueError as exc:
                 field = "operation.run_up_time" if direction > 0 else "operation.run_down_time"
                 raise PhysicsError(str(exc), field=field, hint="shorten the ramp") from None
-            if machine:  # the others at their steady speeds: their peaks add (module docstring)
+            if machine == TOGETHER:  # never below the machines' steady peaks added (module docstring)
+                result = replace(
+                    result, transient_points=np.maximum(result.transient_points, steady_points),
+                    transient_directions=np.maximum(result.transient_directions, steady_directions),
+                )
+            elif machine:  # the others at their steady speeds: their peaks add (module docstring)
                 result = replace(
                     result, transient_points=result.transient_points + steady_points - steadies[k][0],
                     transient_directions=result.transient_directions + steady_directions - steadies[k][1],
@@ -261,9 +281,9 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         steady_points=steady_points, steady_directions=steady_directions, omega=float(max(w for _, _, w in machines)),
         rows=tuple(rows), warnings=tuple(warnings),
         outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
-        speeds=tuple((m, float(w)) for m, _, w in machines if m),
+        speeds=tuple((m, float(w)) for m, _, w in machines if m and m != TOGETHER),
         names=() if machines[0][1].modes is None else machines[0][1].modes.names,
     )
 
 
-__all__ = ["DIRECTIONS", "RUN_TITLES", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times", "run_title"]
+__all__ = ["DIRECTIONS", "RUN_TITLES", "TOGETHER", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times", "run_title"]

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
+from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import (
@@ -111,7 +112,9 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
                 "displacement_peak": dict(zip(DIRECTIONS, map(float, motion.peak[i]))),
                 "velocity_peak": dict(zip(DIRECTIONS, map(float, motion.velocity_peak[i]))),
                 "displacement_rms": dict(zip(DIRECTIONS, map(float, motion.displacement_rms[i]))),
-                "velocity_rms": dict(zip(DIRECTIONS, map(float, motion.velocity_rms[i])))}
+                "velocity_rms": dict(zip(DIRECTIONS, map(float, motion.velocity_rms[i]))),
+                "acceleration_peak": dict(zip(DIRECTIONS, map(float, motion.acceleration_peak[i]))),
+                "acceleration_rms": dict(zip(DIRECTIONS, map(float, motion.acceleration_rms[i])))}
             for i, (p, at) in enumerate(zip(motion.names, [report.cog] + [pt.at for pt in scene.points]))
         }
         doc["rotation_peak"] = dict(zip(("rx", "ry", "rz"), map(float, motion.rotation_peak)))
@@ -232,7 +235,7 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
     if report.limit_rows:
         lim = _table("Limits", ("point", "direction", "quantity", "value", "limit", "ratio", "verdict"), ("value", "limit", "ratio"))
         for r in report.limit_rows:
-            q = "amplitude" if r.quantity.startswith("displacement") else "velocity"
+            q = display_quantity(r.quantity)
             lim.add_row(escape(r.point), r.direction, r.quantity, units.show(q, r.value, 4), units.show(q, r.limit, 4),
                         f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
         out.print(lim)

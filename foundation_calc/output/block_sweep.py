@@ -12,7 +12,8 @@ from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
 
 #: The largest values over G and the points a row gives, by key: (JSON/CSV name, SI unit in the CSV).
 VALUES = {"peak": ("peak", "m"), "velocity_peak": ("velocity_peak", "m_s"), "displacement_rms": ("displacement_rms", "m"),
-          "velocity_rms": ("velocity_rms", "m_s")}
+          "velocity_rms": ("velocity_rms", "m_s"), "acceleration_peak": ("acceleration_peak", "m_s2"),
+          "acceleration_rms": ("acceleration_rms", "m_s2")}
 
 
 def _others(sweep) -> str:

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 from rich.markup import escape
 from rich.table import Table
 
-from foundation_calc.checks.runup import RunupReport, run_title
+from foundation_calc.checks.runup import TOGETHER, RunupReport, run_title
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
 from foundation_calc.units import speed_triplet
 
@@ -175,7 +175,7 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     out = stdout()
     out.print(f"[bold]{escape(scene.name or source)}[/]  ({escape(source)}, {scene.kind})")
     if report.speeds:
-        out.print("Machines, each run from rest to its speed with the others' steady peaks added: " + ", ".join(
+        out.print("Machines, each run from rest to its speed with the others' steady peaks added, then all together: " + ", ".join(
             f"{escape(name)} ω = {fmt(w, 6)} rad/s" for name, w in report.speeds))
     else:
         out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
@@ -283,11 +283,12 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
     fig.clf()
     axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]
     period = 2.0 * np.pi / report.omega
-    alone = " (the machine alone; the tables add the others' steady peaks)" if report.speeds else ""
+    alone = {run_title(key) for key in report.runs if key.partition(":")[2] not in ("", TOGETHER)}  # one machine's runs
     for ax, (name, t, values, speed, marks, steady) in zip(axes, records):
         et, ev = _envelope(t, values, period)
-        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)" + alone)
-        ax.axhline(steady * 1e3, color="tab:green", ls="--", lw=1, label="steady, operating speed" + alone)
+        own = " (the machine alone; the tables add the others' steady peaks)" if name in alone else ""
+        ax.plot(et, ev * 1e3, color="tab:blue", lw=1.2, label="largest displacement of any point (envelope)" + own)
+        ax.axhline(steady * 1e3, color="tab:green", ls="--", lw=1, label="steady, operating speed" + own)
         if limit is not None:
             ax.axhline(limit * 1e3, color="tab:red", ls=":", lw=1.2, label="transient limit")
         for k, (when, p) in enumerate(marks):

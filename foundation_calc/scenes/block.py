@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import field_validator
+from pydantic import field_validator, model_validator
 
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
 from foundation_calc.scenes.block_soil import BlockSoil
@@ -17,7 +17,7 @@ from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERS
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
 from foundation_calc.scenes.project import Project
-from foundation_calc.scenes.soil import OnSoil
+from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
 
 #: How far [m] a position may lie beyond the block's footprint or below its base and still count
 #: as on it: coordinates are typed to the millimetre (a point on an edge or a corner is on the block).
@@ -115,6 +115,21 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             raise ValueError(f"point names must be distinct and not 'G' (the centre of mass): {', '.join(sorted(repeated))}")
         return points
 
+    @model_validator(mode="after")
+    def _embedment_has_its_method(self):
+        if self.block.embedment and self.soil.method_used not in FREQUENCY_DEPENDENT_METHODS:
+            raise ValueError(
+                f"block.embedment = {self.block.embedment:g} m is taken by soil methods 'gazetas' and 'pais_kausel'"
+                f" only; method {self.soil.method_used!r} takes the base as a surface footing (remove the key, or"
+                " choose one of those methods)"
+            )
+        return self
+
+    @property
+    def embedment(self) -> float:
+        """D: the base's depth below the ground surface [m], 0 for a surface footing."""
+        return self.block.embedment or 0.0
+
     @property
     def base(self) -> tuple[float, float]:
         """(L, B): the base's length along x and width along y [m]."""
@@ -203,7 +218,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         def six(values):
             return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
 
-        springs, ratios = self.soil.six_springs(L, B, m[..., 0], np.moveaxis(m[..., 3:], -1, 0), omega)
+        springs, ratios = self.soil.six_springs(L, B, m[..., 0], np.moveaxis(m[..., 3:], -1, 0), omega, self.embedment)
         springs = six(springs)
         if ratios is None:
             return springs, six(self.soil.dashpot or [0.0] * 6)
@@ -226,7 +241,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         L, B = self.base if base is None else base
         bodies = self._bodies(block, machine_cogs)
         M = bodies_mass_matrix(*bodies)
-        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0))
+        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0),
+                                                D=self.embedment)
         stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
         return block_model(
             *bodies, stack, GRAVITY, (L * L + B * B) ** 0.5,

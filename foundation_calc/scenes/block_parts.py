@@ -39,6 +39,10 @@ class BlockBody(SceneModel):
         "J_b", "kg m²", "block's moments of inertia [Ixx, Iyy, Izz] about its centre of mass, axes along x, y, z"
         " (with mass)", None, examples=[[1.9e5, 3.8e5, 5.0e5]],
     )
+    embedment: float | None = quantity(
+        "D", "m", "depth of the base below the ground surface, sidewalls in contact (soil methods 'gazetas' and"
+        " 'pais_kausel', as a crank foundation's); default 0, a surface footing", None, ge=0, examples=[1.0],
+    )
 
     @model_validator(mode="after")
     def _one_description(self):
@@ -54,6 +58,9 @@ class BlockBody(SceneModel):
             raise ValueError(f"block needs {' and '.join(missing)} too")
         if self.inertia is not None and any(j < 0 for j in self.inertia):
             raise ValueError(f"block.inertia must be >= 0 kg m² each (got {list(self.inertia)})")
+        if self.embedment and self.height is not None and self.embedment > self.height:
+            raise ValueError(f"block.embedment = {self.embedment:g} m must not exceed block.height = {self.height:g} m"
+                             " (the sidewalls in contact are the block's)")
         return self
 
     @property

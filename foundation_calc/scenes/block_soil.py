@@ -51,9 +51,9 @@ class BlockSoil(Soil):
 
     method: Literal["springs", "coefficients", "lysmer", "gazetas", "pais_kausel", "sp26"] | None = quantity(
         "-", "-", 'how the six springs are found: "springs" (stiffness and dashpot at O given), "coefficients"'
-        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs), \"gazetas\" (Gazetas 1991,"
-        " surface) or \"pais_kausel\" (Pais & Kausel 1988, surface) from shear_modulus or shear_wave_velocity,"
-        " density, poisson, \"sp26\" (SP 26.13330 from deformation_modulus and soil_class); default"
+        " (Barkan's c_z, c_x, c_phi, c_psi), \"lysmer\" (Richart-Hall-Woods analogs), \"gazetas\" (Gazetas 1991)"
+        " or \"pais_kausel\" (Pais & Kausel 1988), both embedded by block.embedment, from shear_modulus or"
+        " shear_wave_velocity, density, poisson, \"sp26\" (SP 26.13330 from deformation_modulus and soil_class); default"
         " \"coefficients\" when c_z is given", None,
         examples=["springs"],
     )
@@ -121,14 +121,15 @@ class BlockSoil(Soil):
             raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
         return self
 
-    def six_springs(self, L: float, B: float, M: float, J_O, omega=0.0) -> tuple[list, list | None]:
+    def six_springs(self, L: float, B: float, M: float, J_O, omega=0.0, D=0.0) -> tuple[list, list | None]:
         """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
         [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
         L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
         about the axes through O [kg m²] (the half-space methods' mass ratios). L, B, M and each of
         J_O may be arrays over a batch of candidate blocks; the springs and ratios broadcast.
         ``omega``: the frequencies [rad/s] at which a frequency-dependent method (``"gazetas"``)
-        takes them (an array broadcasts as well); the other methods ignore it.
+        takes them (an array broadcasts as well); the other methods ignore it. ``D``: the base's
+        embedment [m] (sidewalls in contact), taken by ``"gazetas"`` and ``"pais_kausel"``.
 
         Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
         K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
@@ -138,7 +139,7 @@ class BlockSoil(Soil):
         if method == "springs":
             return list(self.stiffness), None
         if method in (*HALF_SPACE_METHODS, "sp26"):
-            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O, omega)
+            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O, omega, D)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
             return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
@@ -150,16 +151,20 @@ class BlockSoil(Soil):
         springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
         return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
 
-    def _planes(self, L: float, B: float, M: float, J_O, omega=0.0):
+    def _planes(self, L: float, B: float, M: float, J_O, omega=0.0, D=0.0):
         """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
         plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
         Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's static K_t with
         Pais & Kausel's modifier k_t(a0) and radiation C_t = ρ V_s J_t c̃_t(a0) (gazetas, pais_kausel;
-        surface footing; :func:`~foundation_calc.solvers.soil.impedance.footing_torsion`), ξ_ψ =
+        :func:`~foundation_calc.solvers.soil.impedance.footing_torsion`), ξ_ψ =
         C_t/(2 sqrt(K_t(ω) J_z)) plus the material damping, C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26,
         SNiP 2.02.05-87). Gazetas' or Pais & Kausel's springs and dashpots in both planes and in
-        torsion at the frequencies ``omega`` [rad/s]."""
-        method, D = self.method_used, self.material_damping or 0.0
+        torsion at the frequencies ``omega`` [rad/s], embedded ``D`` [m] as the crank foundation's
+        plane (each plane's embedment factors and sidewall dashpots; the other horizontal axis and
+        rocking axis are the plane of B's), and their static torsion spring times its embedment
+        factor (:mod:`~foundation_calc.solvers.soil.torsion_embedment`; no torsional sidewall
+        dashpot)."""
+        method, xi_m = self.method_used, self.material_damping or 0.0
         if method == "sp26":
             from foundation_calc.solvers.constants import GRAVITY
             from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
@@ -174,19 +179,21 @@ class BlockSoil(Soil):
             from foundation_calc.solvers.soil.lysmer import lysmer_springs
             from foundation_calc.solvers.soil.torsion import lysmer_torsion
 
-            return (lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], D),
-                    lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], D),
-                    lysmer_torsion(self.G, self.density, L, B, J_O[2], D))
+            return (lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], xi_m),
+                    lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], xi_m),
+                    lysmer_torsion(self.G, self.density, L, B, J_O[2], xi_m))
         if method == "pais_kausel":
             from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
             from foundation_calc.solvers.soil.pais_kausel import pais_kausel_torsion as torsion
+            from foundation_calc.solvers.soil.torsion_embedment import pais_kausel_torsion_embedment as embedded
         else:
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs
             from foundation_calc.solvers.soil.torsion import gazetas_torsion as torsion
+            from foundation_calc.solvers.soil.torsion_embedment import gazetas_torsion_embedment as embedded
 
         from foundation_calc.solvers.soil.impedance import footing_torsion
 
-        K_t, C_t = footing_torsion(torsion(self.G, L, B), self.G, self.density, L, B, omega)
-        return (springs(self.G, self.density, self.poisson, L, B, 0.0, M, J_O[1], D, omega),
-                springs(self.G, self.density, self.poisson, B, L, 0.0, M, J_O[0], D, omega),
-                (K_t, C_t / (2.0 * (K_t * J_O[2]) ** 0.5) + D))
+        K_t, C_t = footing_torsion(torsion(self.G, L, B) * embedded(L, B, D), self.G, self.density, L, B, omega)
+        return (springs(self.G, self.density, self.poisson, L, B, D, M, J_O[1], xi_m, omega),
+                springs(self.G, self.density, self.poisson, B, L, D, M, J_O[0], xi_m, omega),
+                (K_t, C_t / (2.0 * (K_t * J_O[2]) ** 0.5) + xi_m))

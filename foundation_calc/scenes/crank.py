@@ -132,6 +132,10 @@ class Limits(SceneModel):
     bearing_pressure: float | None = quantity(
         "q_a", "Pa", "allowable static bearing pressure of the soil under the base", None, gt=0, examples=[1.5e5]
     )
+    settlement: float | None = quantity(
+        "s_a", "m", "allowable static settlement W/K_z of the base on the soil method's vertical spring"
+        " (office check)", None, gt=0, examples=[0.01],
+    )
     transient_amplitude: float | None = quantity(
         "u_tr", "m", "largest allowed displacement of C and of every point during start-up and run-down"
         " (fcalc runup); default: none", None, gt=0, examples=[1.0e-3],

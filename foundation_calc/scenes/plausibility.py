@@ -179,6 +179,10 @@ RANGES: dict[str, PlausibleRange] = {
         "acceleration limits of machine foundations", "m/s²", 1e-3, 50.0, _JUDGEMENT, (Slip("mm/s²", 1e-3),),
         basis="from the velocity limits at 1-100 Hz",
     ),
+    "settlement_limit": PlausibleRange(
+        "allowable static settlements of machine foundations", "m", 5e-4, 0.15, _JUDGEMENT, (_MM,),
+        basis="allowable total settlements of foundations are some 10-50 mm; a machine's block often less",
+    ),
     "phase": PlausibleRange(
         "phases", "rad", 0.0, 2.0 * math.pi, "one turn is 2π rad", (Slip("degrees", math.pi / 180.0),),
         magnitude=True, slip_beyond=1.0, basis="a phase beyond one turn was probably typed in degrees",
@@ -358,6 +362,7 @@ KEYS: dict[str, str] = {
     **{f"limits.{k}": "velocity_limit" for k in ("velocity", "velocity_rms")},
     **{f"limits.{k}": "acceleration_limit" for k in ("acceleration", "acceleration_rms")},
     "limits.transient_amplitude": "transient_amplitude_limit",
+    "limits.settlement": "settlement_limit",
     # phases of loads and rotors
     "loads[].phase": "phase",
     "machines[].loads[].phase": "phase",

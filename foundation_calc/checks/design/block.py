@@ -136,14 +136,16 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
     from foundation_calc.checks.limits import exceeds, limited_quantities
-    from foundation_calc.solvers.block.response import largest_peak, point_motion, resonances, resonant, velocity
+    from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity
 
     limits = scene.limits
     n = len(model.M)
     stuck = np.zeros(n, dtype=bool)
     for exc in excitations:
         stuck |= resonant(modes, resonances(modes, exc))
-    quantities = {q: v for q, v in limited_quantities(limits).items() if q in LIMITED_VALUES}
+    quantities = limited_quantities(limits)
+    # the peak fields of PointMotion -> the series of a machine's displacement amplitudes U whose peak each holds
+    rates = {"peak": lambda U, exc: U, "velocity_peak": velocity, "acceleration_peak": acceleration}
     names = ["G"] + [p.name for p in scene.points]
     ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
     worst = np.zeros(n, dtype=np.int8)
@@ -152,9 +154,8 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
         rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
         for quantity, limit in quantities.items():
             field = LIMITED_VALUES[quantity]
-            if field in ("peak", "velocity_peak"):  # the largest peak of every point and direction, found exactly
-                parts = [(U if field == "peak" else velocity(U, exc), exc.orders)
-                         for U, exc in zip(motion.displacement, excitations)]
+            if field in rates:  # the largest peak of every point and direction, found exactly
+                parts = [(rates[field](U, exc), exc.orders) for U, exc in zip(motion.displacement, excitations)]
                 largest, row = largest_peak([(Z.reshape(n, -1, Z.shape[-1]), orders) for Z, orders in parts])
             else:
                 values = getattr(motion, field).reshape(n, -1)  # (N, P·3)
@@ -190,7 +191,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
 def _office(scene, model, L, B, m_b):
     """Outcome, utilisation, governing index and reasons of the ``office`` check
     (:func:`~foundation_calc.checks.office.office_rows`)."""
-    from foundation_calc.checks.office import bearing_pressure
+    from foundation_calc.checks.office import bearing_pressure, settlement
     from foundation_calc.solvers.constants import GRAVITY
 
     limits = scene.limits
@@ -203,6 +204,11 @@ def _office(scene, model, L, B, m_b):
         ratios.append(q / limits.bearing_pressure)
         outcomes.append(np.where(q > limits.bearing_pressure, FAIL, PASS))
         reasons.append("bearing pressure")
+    if limits.settlement is not None:
+        s = settlement(model.mass * GRAVITY, model.springs[..., 2])
+        ratios.append(s / limits.settlement)
+        outcomes.append(np.where(s > limits.settlement, FAIL, PASS))
+        reasons.append("settlement")
     mu = m_b / sum(m.mass for m in scene.machines)
     ratios.append(limits.mass_ratio / mu)
     outcomes.append(np.where(mu < limits.mass_ratio, WARN, PASS))

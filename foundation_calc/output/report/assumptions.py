@@ -38,10 +38,16 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no run time with [limits]"
                                  " transient_amplitude, and no [drive])."))
-    rows.append(("not checked", "Bearing pressure and settlement of the soil, strength of the block, anchors"
-                                " and machine, fatigue, out-of-plane vibration, transmission to neighbouring"
-                                " structures."))
+    text = "; ".join([*_static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
+                      " out-of-plane vibration, transmission to neighbouring structures."])
+    rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
+
+
+def _static_missing(limits) -> list[str]:
+    """The office checks on the soil a scene leaves out, for want of their allowables."""
+    return ([] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]) + (
+        [] if limits.settlement is not None else ["static settlement W/K_z (no [limits] settlement)"])
 
 
 def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
@@ -89,8 +95,11 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                   " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
         ("soil", BLOCK_SOIL_MODELS[soil.method_used]),
         ("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
-                 " contact, no uplift; no embedment, side soil, layering or coupling through the soil with"
-                 " neighbouring foundations."),
+                 " contact, no uplift; "
+                 + ("no embedment, side soil, " if not scene.embedment else
+                    f"embedded {scene.embedment:g} m, sidewalls in full contact (the method's embedment factors"
+                    " and sidewall dashpots; no torsional sidewall dashpot); no ")
+                 + "layering or coupling through the soil with neighbouring foundations."),
     ]
     if soil.method_used == "springs" and soil.dashpot is None or soil.method_used == "coefficients" and not soil.damping:
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
@@ -115,8 +124,7 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no [operation] run time with [limits]"
                                  " transient_amplitude)."))
-    missing = [] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]
-    text = "; ".join([*missing, "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
+    text = "; ".join([*_static_missing(limits), "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
                                 " grout and machines, transmission to neighbouring structures and people."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows

@@ -9,7 +9,8 @@ The sheet prints M, K, C with their numbers, finds the modes from them itself (K
 eigen-solve of M⁻¹K, ζ = vᵀ C v / (2 p vᵀ M v)), prints each machine's generalised loads Q_n
 about O, solves (K − Ω² M + i Ω C) Z = Q_n at Ω = nω, and carries Z to every point by
 u_P = T_P Z (T_P = [I, −[r_P]×]): the peak of each machine's series, added over the machines,
-and the r.m.s. velocity √(Σ |nω u_P,n|²/2) over every harmonic of every machine.
+and the r.m.s. velocity √(Σ |nω u_P,n|²/2) over every harmonic of every machine (and, where the
+scene limits them, the peak and r.m.s. acceleration of −(nω)² u_P,n).
 ``tests/test_report_block_methods.py`` compares the modes, Z and the points' values with the
 checks'.
 """
@@ -92,22 +93,33 @@ def point_values(solve: BlockSolve, points) -> tuple[np.ndarray, ...]:
     """(peak displacement, peak velocity, r.m.s. velocity, r.m.s. displacement), each (P, 3), of
     the body points ``points`` (P, 3) [m] from O: each machine's series' peak (trig_series.peak),
     added over the machines; an r.m.s. value the root-sum-square of every harmonic."""
+    (displacement, square_u), (velocity, square) = _rates(solve, points, 2)
+    return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
+
+
+def acceleration_values(solve: BlockSolve, points) -> tuple[np.ndarray, np.ndarray]:
+    """(peak acceleration, r.m.s. acceleration) [m/s²], each (P, 3), as :func:`point_values`:
+    a = (i nω)² u_P,n = −(nω)² u_P,n at each harmonic."""
+    top, square = _rates(solve, points, 3)[2]
+    return top, np.sqrt(square)
+
+
+def _rates(solve: BlockSolve, points, count: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(peak, mean square) (P, 3) of the displacement and its first ``count`` − 1 time derivatives."""
     from foundation_calc.solvers.numerics.trig_series import peak
     from foundation_calc.solvers.rigid_body.kinematics import point_maps
 
     T = point_maps(np.asarray(points, dtype=float))
-    shape = (len(points), 3)
-    displacement, velocity, square, square_u = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    found = [(np.zeros((len(points), 3)), np.zeros((len(points), 3))) for _ in range(count)]
     for omega, orders, Z in zip(solve.omegas, solve.orders, solve.responses):
-        U = np.einsum("pij,hj->pih", T, Z)
-        V = U * (1j * omega * orders)
-        for series, total in ((U, displacement), (V, velocity)):
+        series = np.einsum("pij,hj->pih", T, Z)
+        for top, square in found:
             a = np.zeros(series.shape[:-1] + (int(orders.max()) + 1,), complex)
             a[..., orders] = series
-            total += peak(a.real, -a.imag)
-        square += (np.abs(V) ** 2).sum(-1) / 2.0
-        square_u += (np.abs(U) ** 2).sum(-1) / 2.0
-    return displacement, velocity, np.sqrt(square), np.sqrt(square_u)
+            top += peak(a.real, -a.imag)
+            square += (np.abs(series) ** 2).sum(-1) / 2.0
+            series = series * (1j * omega * orders)
+    return found
 
 
 def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
@@ -176,14 +188,21 @@ def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
     return (found, *zone_tables(code), *support_blocks(code))
 
 
-def _points(solve: BlockSolve, names, points) -> Table:
+def _points(solve: BlockSolve, names, points, accelerations: bool) -> Table:
+    """The points' peaks and r.m.s. velocity; with ``accelerations`` (the scene limits them) also
+    the peak and r.m.s. acceleration, a_n = −(nω)² u_P,n."""
     displacement, velocity, rms, _ = point_values(solve, points)
     labels = [(name, d) for name in names for d in DIRECTIONS]
-    cols = [column(list(values.ravel() * scale), 3) for values, scale in ((displacement, 1e6), (velocity, 1e3), (rms, 1e3))]
+    values = [(displacement, 1e6), (velocity, 1e3), (rms, 1e3)]
+    head = ["point", "direction", "peak displacement [µm]", "peak velocity [mm/s]", "v_rms [mm/s]"]
+    title = "Points: u_P = T_P Z; peaks of each machine's series added; v_rms = √(Σ |nω u_P,n|²/2)"
+    if accelerations:
+        values += [(a, 1.0) for a in acceleration_values(solve, points)]
+        head += ["peak acceleration [m/s²]", "a_rms [m/s²]"]
+        title += "; a_rms = √(Σ |(nω)² u_P,n|²/2)"
+    cols = [column(list(v.ravel() * scale), 3) for v, scale in values]
     rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
-    return table("Points: u_P = T_P Z; peaks of each machine's series added; v_rms = √(Σ |nω u_P,n|²/2)",
-                 ("point", "direction", "peak displacement [µm]", "peak velocity [mm/s]", "v_rms [mm/s]"), rows,
-                 (False, False, True, True, True))
+    return table(title, tuple(head), rows, (False, False, *[True] * len(values)))
 
 
 def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
@@ -211,7 +230,8 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         blocks += _harmonics(solve)
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]
-        blocks.append(_points(solve, names, points))
+        limits = scene.limits
+        blocks.append(_points(solve, names, points, limits.acceleration is not None or limits.acceleration_rms is not None))
         if amplitudes.get("code"):
             blocks += _zones(amplitudes["code"], names, *point_values(solve, points)[2:])
     blocks.append(Definitions({
@@ -230,4 +250,5 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     return tuple(blocks)
 
 
-__all__ = ["BlockSolve", "block_sections_blocks", "block_solve", "matrix_table", "modes_of", "point_values"]
+__all__ = ["BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
+           "point_values"]

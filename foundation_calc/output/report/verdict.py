@@ -170,6 +170,8 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
     def shown(row, v, prefix):
         if row["unit"] == "Pa":
             return Measure(v / 1e3, 4, "kPa", prefix=prefix)
+        if row["unit"] == "m":
+            return Measure(v * 1e3, 3, "mm", prefix=prefix)
         return prefix + percent(v) if row["check"].startswith("eccentricity") else Measure(v, 3, prefix=prefix)
 
     for row in doc["office"]:

@@ -235,6 +235,9 @@ class PointMotion:
     velocity_rms : (P, 3) root-sum-square of every harmonic's RMS velocity [m/s]
     displacement_rms : (P, 3) [m]
     rotation_peak : (3,) [rad]
+    acceleration_peak : (P, 3) peak acceleration, machines' peaks added [m/s²]; order n of Z
+        accelerates by -(nω)² Z
+    acceleration_rms : (P, 3) root-sum-square of every harmonic's RMS acceleration [m/s²]
 
     A batch of blocks puts its axis (...) in front of every array; a peak not asked for is None.
     """
@@ -250,11 +253,18 @@ class PointMotion:
     velocity_rms: np.ndarray
     displacement_rms: np.ndarray
     rotation_peak: np.ndarray | None
+    acceleration_peak: np.ndarray | None
+    acceleration_rms: np.ndarray
 
 
 def velocity(U: np.ndarray, exc: Excitation) -> np.ndarray:
     """Complex velocity amplitudes i n ω U of displacement amplitudes U (..., H) of machine ``exc``'s orders."""
     return U * (1j * exc.omega * exc.orders)
+
+
+def acceleration(U: np.ndarray, exc: Excitation) -> np.ndarray:
+    """Complex acceleration amplitudes (i n ω)² U = -(n ω)² U of displacement amplitudes U (..., H)."""
+    return velocity(velocity(U, exc), exc)
 
 
 def _series_peak(Z: np.ndarray, orders: np.ndarray) -> np.ndarray:
@@ -314,7 +324,7 @@ def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
 
 
 #: The peaks over time :func:`point_motion` can search (the RMS values cost nothing and are always given).
-PEAKS = frozenset({"peak", "velocity_peak", "rotation_peak"})
+PEAKS = frozenset({"peak", "velocity_peak", "acceleration_peak", "rotation_peak"})
 
 
 def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, impedance=None) -> PointMotion:
@@ -330,24 +340,25 @@ def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, imp
                         axis=-2)
     T = point_maps(at)  # (..., P, 3, 6)
     disp, rot = [], []
-    vsq = usq = np.zeros(at.shape)
+    vsq = usq = asq = np.zeros(at.shape)
     found = {name: 0.0 for name in peaks}
     for exc in excitations:
         Z = complex_amplitudes(model, exc, impedance=impedance)  # (..., H, 6)
         U = np.einsum("...pij,...hj->...pih", T, Z)  # (..., P, 3, H)
-        V = velocity(U, exc)
+        V, A = velocity(U, exc), acceleration(U, exc)
         R = np.swapaxes(Z[..., 3:], -1, -2)  # (..., 3, H)
         disp.append(U)
         rot.append(R)
-        for name, series in (("peak", U), ("velocity_peak", V), ("rotation_peak", R)):
+        for name, series in (("peak", U), ("velocity_peak", V), ("acceleration_peak", A), ("rotation_peak", R)):
             if name in found:
                 found[name] = found[name] + _series_peak(series, exc.orders)
         vsq = vsq + (np.abs(V) ** 2).sum(-1) / 2.0
         usq = usq + (np.abs(U) ** 2).sum(-1) / 2.0
+        asq = asq + (np.abs(A) ** 2).sum(-1) / 2.0
     return PointMotion(
         tuple(["G", *names]), tuple(e.name for e in excitations), tuple(e.orders for e in excitations),
         tuple(e.omega for e in excitations), tuple(disp), tuple(rot), found.get("peak"), found.get("velocity_peak"),
-        np.sqrt(vsq), np.sqrt(usq), found.get("rotation_peak"),
+        np.sqrt(vsq), np.sqrt(usq), found.get("rotation_peak"), found.get("acceleration_peak"), np.sqrt(asq),
     )
 
 
@@ -357,6 +368,7 @@ __all__ = [
     "PEAKS",
     "PointMotion",
     "Resonances",
+    "acceleration",
     "batch_modes",
     "block_modes",
     "largest_peak",

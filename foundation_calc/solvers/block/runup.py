@@ -14,6 +14,8 @@ The modes are the block's as the resonance check found them (:class:`~foundation
 on a frequency-dependent soil each at its own frequency); on such a soil the structure carries its
 springs and dashpots at any frequency, Ω -> K(Ω), C(Ω) of Eq. (1), and each harmonic is integrated
 on those at its own frequency (:mod:`~foundation_calc.solvers.numerics.runup`).
+Several machines started together are one structure whose harmonics turn at their speeds'
+ratios to the fastest machine's (:func:`machines_structure`).
 """
 
 from __future__ import annotations
@@ -31,17 +33,35 @@ def machine_structure(model: BlockModel, machine: Excitation, points, modes: Blo
     """The block of ``model`` under the loads of ``machine`` alone, measured at G and at
     ``points`` (P, 3) [m] from O, with the block's ``modes``; ``impedance``: a frequency-dependent
     soil, Ω -> (springs, dashpots) at O (module docstring)."""
-    at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
-    inertial = np.asarray(machine.Q, dtype=complex) / machine.omega**2
-    load = RotatingLoad(machine.orders.astype(float), inertial, np.zeros_like(inertial))
+    return machines_structure(model, [machine], points, modes, impedance)[0]
 
-    def at_frequency(omega):
-        K, C = model.soil_matrices(*impedance(omega))
+
+def machines_structure(model: BlockModel, machines, points, modes: BlockModes, impedance=None) -> tuple[Structure, float]:
+    """The block under every one of ``machines`` at once, started and stopped together: each runs
+    from rest to its own speed ω_m in the same time, so its shaft turns at Ω_m = Ω ω_m/ω of one
+    reference shaft Ω, ω the fastest machine's speed. Its order n is then a harmonic of speed
+    ratio n ω_m/ω whose amplitude Q_n (Ω_m/ω_m)² = Q_n (Ω/ω)² (module docstring) is an inertial
+    load Q_n/ω² of the reference shaft; its tangential part follows from the ratio
+    (:class:`~foundation_calc.solvers.numerics.sweep_response.RotatingLoad`); each harmonic on the
+    soil at its own frequency, ratio × Ω, where the soil depends on frequency (``impedance``).
+    Returns the structure and ω [rad/s]; one machine is :func:`machine_structure`."""
+    omega = max(m.omega for m in machines)
+    at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
+    ratio = np.concatenate([m.orders * (m.omega / omega) for m in machines]).astype(float)
+    inertial = np.concatenate([np.asarray(m.Q, dtype=complex) for m in machines]) / omega**2
+    load = RotatingLoad(ratio, inertial, np.zeros_like(inertial))
+
+    def at_frequency(frequency):
+        K, C = model.soil_matrices(*impedance(frequency))
         return C, K
 
-    return Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at),
-                     modes=Modes(modes.frequencies, modes.shapes, modes.damping, modes.dominant),
-                     at_frequency=None if impedance is None else at_frequency)
+    structure = Structure(mass=model.M, damping=model.C, stiffness=model.K, load=load, points=point_maps(at),
+                          modes=Modes(modes.frequencies, modes.shapes, modes.damping, modes.dominant),
+                          at_frequency=None if impedance is None else at_frequency)
+    return structure, omega
 
 
-__all__ = ["machine_structure"]
+__all__ = ["machine_structure", "machines_structure"]
+
+
+__all__ = ["machine_structure", "machines_structure"]

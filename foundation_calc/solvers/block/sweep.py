@@ -30,6 +30,8 @@ class SpeedSweep:
     velocity_peak : (N, P, 3) peak velocity [m/s]
     displacement_rms : (N, P, 3) RMS displacement [m]
     velocity_rms : (N, P, 3) RMS velocity [m/s]
+    acceleration_peak : (N, P, 3) peak acceleration [m/s²]
+    acceleration_rms : (N, P, 3) RMS acceleration [m/s²]
     margin : (N, H, 6) |n ω - p_j| / p_j of the swept machine's orders against every mode [-]
     """
 
@@ -38,6 +40,8 @@ class SpeedSweep:
     velocity_peak: np.ndarray
     displacement_rms: np.ndarray
     velocity_rms: np.ndarray
+    acceleration_peak: np.ndarray
+    acceleration_rms: np.ndarray
     margin: np.ndarray
 
 
@@ -52,18 +56,22 @@ def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, o
     exc: Excitation = excitations[swept]
     others = [e for i, e in enumerate(excitations) if i != swept]
     at = np.vstack([model.cog[None, :], np.asarray(points, dtype=float).reshape(-1, 3)])
-    peak = velocity_peak = usq = vsq = np.zeros((len(at), 3))
+    peak = velocity_peak = acceleration_peak = usq = vsq = asq = np.zeros((len(at), 3))
     if others:
-        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:], frozenset({"peak", "velocity_peak"}),
-                             impedance=impedance)
-        peak, velocity_peak, usq, vsq = fixed.peak, fixed.velocity_peak, fixed.displacement_rms**2, fixed.velocity_rms**2
+        fixed = point_motion(model, others, [str(i) for i in range(len(at) - 1)], at[1:],
+                             frozenset({"peak", "velocity_peak", "acceleration_peak"}), impedance=impedance)
+        peak, velocity_peak, acceleration_peak = fixed.peak, fixed.velocity_peak, fixed.acceleration_peak
+        usq, vsq, asq = fixed.displacement_rms**2, fixed.velocity_rms**2, fixed.acceleration_rms**2
     Z = complex_amplitudes(model, exc, omega, impedance)  # (N, H, 6)
     U = np.einsum("pij,nhj->npih", point_maps(at), Z)  # (N, P, 3, H)
-    V = U * (1j * omega[:, None, None, None] * exc.orders)
+    rate = 1j * omega[:, None, None, None] * exc.orders
+    V, A = U * rate, U * rate**2
     p = modes.frequencies
     margin = np.abs(omega[:, None, None] * exc.orders[None, :, None] - p) / p
     return SpeedSweep(omega, peak + _series_peak(U, exc.orders), velocity_peak + _series_peak(V, exc.orders),
-                      np.sqrt(usq + (np.abs(U) ** 2).sum(-1) / 2.0), np.sqrt(vsq + (np.abs(V) ** 2).sum(-1) / 2.0), margin)
+                      np.sqrt(usq + (np.abs(U) ** 2).sum(-1) / 2.0), np.sqrt(vsq + (np.abs(V) ** 2).sum(-1) / 2.0),
+                      acceleration_peak + _series_peak(A, exc.orders), np.sqrt(asq + (np.abs(A) ** 2).sum(-1) / 2.0),
+                      margin)
 
 
 __all__ = ["SpeedSweep", "speed_sweep"]
