@@ -34,6 +34,11 @@ def sheet(runner, tmp_path, name: str) -> str:
     return out.read_text(encoding="utf-8")
 
 
+def plain(text: str) -> str:
+    """The sheet's text with Markdown's backslash escapes removed, as a reader sees it."""
+    return text.replace("\\", "")
+
+
 def table_rows(text: str, title_start: str) -> list[list[str]]:
     """The body rows of the first table whose bold title starts with ``title_start`` (cells unescaped)."""
     lines = text.splitlines()
@@ -44,7 +49,7 @@ def table_rows(text: str, title_start: str) -> list[list[str]]:
             if rows:
                 break
             continue
-        cells = [c.strip().replace("\\", "") for c in line.strip("|").split("|")]
+        cells = [c.strip().replace("\\", "") for c in re.split(r"(?<!\\)\|", line.strip().strip("|"))]
         if set(cells[0]) <= {"-", " "}:
             continue
         rows.append(cells)
@@ -80,3 +85,50 @@ def test_first_approximation_y_follows_from_the_printed_formula(runner, tmp_path
     assert "m1" in chain["l'"][1] and "ζ_z" in chain["y1"][1]
     equation = next(line for line in text.splitlines() if line.startswith("- `y_c ="))
     assert "ζ_z" in equation and "m1" in equation  # the equation printed is the one evaluated
+
+
+def _margin_tolerance(omega: float, critical: float) -> float:
+    """Half the printed 0.1 % of a margin plus what rounding ω and ω_c to 4 figures moves |ω/ω_c − 1|."""
+    return 5e-4 + (omega / critical) * 1e-3
+
+
+def _speed(text: str, label: str) -> float:
+    """The operating speed [rad/s] of the sheet's derived-quantity row ``label``."""
+    row = next(line for line in text.splitlines() if line.startswith(f"| {label} |"))
+    return numbers(row.split("|")[2])[0]
+
+
+@pytest.mark.parametrize("name", ["frame_saw_soft_soil_runup", "compressor_medium_sand_lysmer"])
+def test_crank_margins_follow_from_the_printed_speeds(runner, tmp_path, name):
+    """Every margin of the resonance table is |ω − ω_c|/ω_c to the nearer of its two printed
+    critical speeds; the Checks table prints that critical speed beside the margin (the frame saw's
+    ω = p2: 29.2 % from 20.27 rad/s, 29.4 % from the zero-order 20.23 rad/s); the sheet states the
+    definitions and the governing margin with its numbers."""
+    text = sheet(runner, tmp_path, name)
+    omega = _speed(text, "ω, speed")
+    for condition, _, critical, averaged, margin, *_ in table_rows(text, "Resonances: critical speeds"):
+        c0, c1 = numbers(critical)[0], numbers(averaged)[0]
+        (shown,) = numbers(margin)
+        nearer = min((c0, c1), key=lambda c: abs(omega - c) / c)
+        assert abs(abs(omega - nearer) / nearer - shown / 100) <= _margin_tolerance(omega, nearer), condition
+    for row in table_rows(text, "Every check"):
+        if row[0] == "resonance" and "critical" in row[1]:
+            critical = numbers(row[1].split("critical ")[1])[0]
+            (shown,) = numbers(row[2])
+            assert abs(abs(omega - critical) / critical - shown / 100) <= _margin_tolerance(omega, critical), row[1]
+    text = plain(text)
+    assert "|nω − p|/p" in text and "nearer of the two" in text and "Forcing share of harmonic n" in text
+    governing = re.search(r"Governing \(.*?\): (.*?), \|([\d.]+) − ([\d.]+)\|/([\d.]+) = ([\d.]+) %", text)
+    w, c, _, shown = (float(governing.group(i)) for i in (2, 3, 4, 5))
+    assert abs(abs(w - c) / c - shown / 100) <= _margin_tolerance(w, c)
+
+
+def test_platform_margins_and_rocking_are_defined(runner, tmp_path):
+    """The platform's margins are |ω − p|/p (read relative to ω its closest one, 11.1 %, would be
+    9.98 %), and the sheet says what the rocking of the corners is."""
+    text = sheet(runner, tmp_path, "platform_paper_example")
+    omega = _speed(text, "ω, speed")
+    for mode, frequency, margin in table_rows(text, "Natural frequencies (6-DOF"):
+        (p,), (shown,) = numbers(frequency), numbers(margin)
+        assert abs(abs(omega - p) / p - shown / 100) <= _margin_tolerance(omega, p), mode
+    assert "|nω − p|/p" in plain(text) and "Rocking of the corners: " in text
