@@ -205,3 +205,22 @@ def test_platform_markdown_sheet_writes_the_figure_the_readme_promises(runner, t
     assert runner.invoke(app, ["report", str(CONFIGS / "platform_paper_example.toml"), "-o", str(out)]).exit_code == 0
     svg = (tmp_path / "platform-figure1.svg").read_text(encoding="utf-8")
     assert svg.startswith("<svg") and "platform-figure1.svg" in out.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("path", [p for p in CRANK if load_scene(p).mechanism is not None], ids=lambda p: p.stem)
+def test_first_approximation_chain_ends_in_the_solvers_amplitudes(path):
+    """The sheet's hand calculation of |y1|, |y2| (slider lumped, base dashpot kept) against the
+    solver's complex first approximation (Smith's division of the damped (4.11)); on a
+    frequency-dependent soil harmonic n takes the design at n ω, as the amplitudes check does."""
+    from foundation_calc.output.report.first_approximation_methods import first_approximation_chain
+    from foundation_calc.solvers.crank.closed_form import design_first_approximation
+
+    scene = load_scene(path)
+    values = first_approximation_chain(scene).values
+    omega = scene.speed.omega_rad_s
+    dependent = scene.soil.frequency_dependent
+    for n, name in ((1, "y1"), (2, "y2")):
+        fa = design_first_approximation(scene.design(n * omega if dependent else 0.0))
+        if bool(fa.resonant):
+            continue
+        assert _close(values[name], abs(complex(getattr(fa, name)))), name

@@ -23,7 +23,7 @@ import numpy as np
 
 from foundation_calc.output.report.handcalc import Definitions
 from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure
+from foundation_calc.output.report.numbers import column, figure, phased
 
 COORDINATES = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
 DIRECTIONS = ("x", "y", "z")
@@ -152,22 +152,53 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
     for name, omega, orders, Q, Z in zip(solve.machines, solve.omegas, solve.orders, solve.loads, solve.responses):
         for h, n in enumerate(orders):
             labels.append((name, str(int(n)), n * omega))
-            loads.append(np.abs(Q[h]))
-            amplitudes.append(np.abs(Z[h]))
+            loads.append(Q[h])
+            amplitudes.append(Z[h])
     loads, amplitudes = np.array(loads), np.array(amplitudes)
     omega_col = column([w for *_, w in labels], 4)
-    q_cols = [column(list(loads[:, j]), 4, loads[:, j].max() or None) for j in range(6)]
-    z_cols = [column(list(amplitudes[:, j]), 3, amplitudes[:, j].max() or None) for j in range(6)]
+
+    def cells(values, digits):
+        """Each coordinate's column: magnitude in one notation, with its phase lag."""
+        size = np.abs(values)
+        shown = [column(list(size[:, j]), digits, size[:, j].max() or None) for j in range(6)]
+        return [[phased(shown[j][k], complex(values[k, j])) for k in range(len(values))] for j in range(6)]
+
+    q_cols, z_cols = cells(loads, 4), cells(amplitudes, 3)
     head = ("machine", "n", "Ω = nω [rad/s]")
-    forcing = table("Generalised loads about O: |Q_n| (F [N], M + r_F × F [N m])",
+    forcing = table("Generalised loads about O: Q_n (F [N], M + r_F × F [N m]) as magnitude ∠ phase lag φ,"
+                    " each entry |Q| cos(Ωt − φ)",
                     (*head, "F_x", "F_y", "F_z", "M_x", "M_y", "M_z"),
                     [(m, n, omega_col[k], *(c[k] for c in q_cols)) for k, (m, n, _) in enumerate(labels)],
                     (False, False, *(True,) * 7))
-    response = table("Z = (K − Ω² M + i Ω C)⁻¹ Q_n: |Z| ([m], [rad])",
+    response = table("Z = (K − Ω² M + i Ω C)⁻¹ Q_n ([m], [rad]) as magnitude ∠ phase lag φ",
                      (*head, *COORDINATES),
                      [(m, n, omega_col[k], *(c[k] for c in z_cols)) for k, (m, n, _) in enumerate(labels)],
                      (False, False, *(True,) * 7))
     return forcing, response
+
+
+def _unbalances(scene) -> list[Paragraph]:
+    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``load_rows``): its
+    force F = m_r G ω, the pair a, b normal to the axis and the sense in which it turns."""
+    out = []
+    for machine in scene.machines:
+        u = machine.unbalance
+        if u is None:
+            continue
+        a, b = (np.array(row[1]) for row in machine.load_rows() if row[5])
+        F = float(np.linalg.norm(a))
+        e = np.array(u.axis, dtype=float) / np.linalg.norm(u.axis)
+        out.append(Paragraph(
+            f"{machine.name}: unbalance F = m_r G ω = {figure(u.rotor_mass, 4)} kg × {figure(u.balance_grade_mm_s, 4)} mm/s"
+            f" × {figure(machine.omega_rad_s, 4)} rad/s = {figure(F, 4)} N, turning about its axis e = {vec_m(e)}"
+            f" in the positive sense (right-hand rule): F(t) = F (a cos ωt + b sin ωt), a = {vec_m(a / F)}, b = e × a = {vec_m(b / F)},"
+            f" acting at {vec_m(u.at or machine.cog)} m. In Q_n: F a at phase lag 0°, F b at 90°."))
+    return out
+
+
+def vec_m(v) -> str:
+    """A vector as printed: (x, y, z), 4 figures, no −0."""
+    return "(" + ", ".join(figure(float(c) + 0.0, 4) for c in v) + ")"
 
 
 def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
@@ -227,6 +258,7 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6
     blocks.append(_modes(solve, dominant))
     if amplitudes is not None and not amplitudes.get("resonant", False):
+        blocks += _unbalances(scene)
         blocks += _harmonics(solve)
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]

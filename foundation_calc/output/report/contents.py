@@ -14,6 +14,7 @@ from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
 from foundation_calc.output.report.numbers import column, echoed, figure, percent
+from foundation_calc.output.report.resonance_text import crank_rule_paragraph, margin_definition
 from foundation_calc.output.report.verdict import resonance_verdict
 
 DIGITS = 4
@@ -140,11 +141,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
         rows,
         (False, False, True, True, True, True, True, False),
     )
-    rule = Paragraph(
-        "Judged: the paper's conditions and every harmonic whose forcing share reaches 1 %; required: the"
-        " band of the condition's order. INFORMATION: inside its band, not judged (forcing share under"
-        " 1 %); NOT JUDGED: outside its band and not judged. The rule: README, \"The resonance rule\"."
-    )
+    rule = Paragraph(crank_rule_paragraph(res, lambda w: units.convert("speed", w), sp))
     return Section("Natural frequencies and resonances", (freqs, resonances, rule))
 
 
@@ -350,7 +347,15 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
         ((row[0], str(s["tolerance"]), *row[1:]) for row, s in zip(formatted, doc["sensitivity"])),
         (False, False, True, True, True, True),
     )
-    return Section("6-DOF verification", (verification, freqs, sens))
+    definitions = Paragraph(
+        "Rocking of the corners: the largest peak over time, over the eight corners of the product box"
+        f" [0, A] × [0, B] × [0, H] (H = {num(v['product_height'])} m), of a corner's displacement relative to the platform's centre of mass"
+        " (its motion from the rotations α, β, γ alone, (α, β, γ) × (corner − centre of mass)), in % of u."
+        " Static corner offset: the same from the static tilt. Spread of corner amplitudes: the largest"
+        " minus the smallest corner peak, in % of u. "
+        + margin_definition(f"{_speed(units, doc['speed']['omega'])} {sp}")
+    )
+    return Section("6-DOF verification", (verification, definitions, freqs, sens))
 
 
 def platform_sections(docs: dict, units: DisplayUnits, figures: tuple[Figure, ...] = ()) -> tuple[Section, ...]:

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure
+from foundation_calc.output.report.numbers import column, figure, phased
 
 #: Significant figures of the matrices, forcing and harmonics.
 DIGITS = 4
@@ -150,11 +150,6 @@ def _matrix_table(op: Operator, title: str) -> Table:
     return table(title, ("row", "x", "y", "θ", "units"), rows, (False, True, True, True, False))
 
 
-def _phase(z: complex) -> str:
-    """Phase lag φ [°] of Z = A e^{−iφ} (the harmonic is A cos(nωt − φ))."""
-    return f"{-np.degrees(np.angle(z)):.1f}"
-
-
 def _harmonics_table(solve: DampedSolve, shown: list[int]) -> Table:
     many = len(solve.by_harmonic[0]) > 1
     rows, raw = [], []
@@ -172,14 +167,13 @@ def _harmonics_table(solve: DampedSolve, shown: list[int]) -> Table:
     cols_Z = [column([abs(r[3][j]) for r in raw], DIGITS, scale_Z[j]) for j in range(3)]
     speeds = column([n * solve.omega for n, *_ in raw], DIGITS)
     for k, (n, source, F, Z) in enumerate(raw):
-        phases = ["-" if cols_Z[j][k] == "0" else _phase(Z[j]) for j in range(3)]
-        row = (str(n), speeds[k], *(cols_F[j][k] for j in range(3)),
-               *(f"{cols_Z[j][k]} ∠{phases[j]}°" if phases[j] != "-" else cols_Z[j][k] for j in range(3)))
+        row = (str(n), speeds[k], *(phased(cols_F[j][k], complex(F[j])) for j in range(3)),
+               *(phased(cols_Z[j][k], complex(Z[j])) for j in range(3)))
         rows.append(row if not many else (row[0], source, *row[1:]))
-    head = ("n", "nω [rad/s]", "|F_x| [N]", "|F_y| [N]", "|M_θ| [N m]", "x_n [m]", "y_n [m]", "θ_n [rad]")
+    head = ("n", "nω [rad/s]", "F_x [N]", "F_y [N]", "M_θ [N m]", "x_n [m]", "y_n [m]", "θ_n [rad]")
     if many:
         head = ("n", "source", *head[1:])
-    return table("Each harmonic: forcing F_n and Z_n = (K − n²ω² M + i nω C)⁻¹ F_n (magnitude ∠ phase lag, q = A cos(nωt − φ))",
+    return table("Each harmonic: forcing F_n and Z_n = (K − n²ω² M + i nω C)⁻¹ F_n (magnitude ∠ phase lag φ: each entry is A cos(nωt − φ))",
                  head, rows, (False,) * (2 if many else 1) + (True,) * 7)
 
 
@@ -237,8 +231,14 @@ def damped_response_blocks(scene, amplitudes: dict | None) -> tuple:
     sources = {op.source for group in solve.by_harmonic for op in group}
     how = []
     if "mechanism (averaged operator)" in sources:
+        from foundation_calc.solvers.crank.averaged import FORCING_SAMPLES
+
         how.append("the mechanism by its averaged operator (M̄, C̄, K̄ of the exact equations linearised about rest and"
-                   " averaged over one revolution, F_n the Fourier coefficients of its exact forcing)")
+                   " averaged over one revolution, F_n the Fourier coefficients of its exact forcing:"
+                   f" F_n = (2/N) Σ_k F(φ_k) e^{{−i n φ_k}}, φ_k = 2πk/N, N = {FORCING_SAMPLES} samples of a revolution, F(φ) the"
+                   " forces F_x, F_y and moment M_θ that rod and slider exert on the block at rest, the drive's reaction"
+                   " included when it acts on the foundation; to leading order in λ, F_y1, F_y2, F_x1 and M_θ1 of the"
+                   " first approximation above)")
     if "vendor loads (rigid block)" in sources:
         how.append("the vendor loads by the rigid block (K of [KM] (3.2)-(3.4) corrected, C the base dashpots,"
                    " F_n = Σ Q e^{iφ} about C)" + (", added to it" if how else ""))

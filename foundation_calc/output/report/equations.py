@@ -33,12 +33,16 @@ CRANK = (
         "[KM] §4; the bracketed conditions are resonances of the exact equations",
     ),
     Equation(
-        'y_c = mu [ (r omega^2)/(k_0^2 - omega^2) cos omega t'
-        " + (l')/l lambda (r omega^2)/(k_0^2 - 4 omega^2) cos 2 omega t ]",
-        "y_c = μ [ r ω²/(k0² − ω²) cos ωt + (l'/l) λ r ω²/(k0² − 4ω²) cos 2ωt ]  (y down)",
-        "[KM] Eqs. (4.11), (4.14)",
+        'y_c = "Re" mu [ (r omega^2)/(k_0^2 - omega^2 + i omega zeta_z) e^(i omega t)'
+        " + (l')/l lambda (r omega^2)/(k_0^2 - 4 omega^2 + 2 i omega zeta_z) e^(2 i omega t) ],"
+        ' quad zeta_z = C_z / M_"tot", quad m = m_"rod" + m_1, quad l\' = (m_"rod" l\'_"rod" + m_1 l)/m',
+        "y_c = Re μ [ r ω²/(k0² − ω² + i ω ζ_z) e^{iωt} + (l'/l) λ r ω²/(k0² − 4ω² + 2i ω ζ_z) e^{2iωt} ],"
+        "  ζ_z = C_z/M_tot;  m = m_rod + m1, l' = (m_rod l'_rod + m1 l)/m: the rod with the slider lumped in  (y down)",
+        "[KM] Eqs. (4.11), (4.14), last paragraph; the base dashpot C_z added",
         "(4.14): μ multiplies the solution of (4.11) once (read literally, the print counts it"
-        " twice and gives amplitudes about 70× too small).",
+        " twice and gives amplitudes about 70× too small). μ = m/M_tot, l' and κ = l'l'' − ρ² are"
+        " those of rod and slider together (ρ² = [m_rod (ρ_rod² + (l'_rod − l')²) + m1 (l − l')²]/m);"
+        " the hand calculation under Methods substitutes the numbers.",
     ),
     Equation(
         "x_c = mu [ b' sin omega t + b''' sin 3 omega t ], quad"
@@ -46,7 +50,10 @@ CRANK = (
         "x_c = μ [ b' sin ωt + b''' sin 3ωt ],  θ = μ [ c' sin ωt + c''' sin 3ωt ]",
         "[KM] Eqs. (4.11)–(4.14)",
         "(4.12): A′ lacks 1/l on the crank term and has the wrong sign on the rod-couple term;"
-        " (4.13): A‴ has the wrong sign; \"c_1\" in (4.14) is θ1.",
+        " (4.13): A‴ has the wrong sign; \"c_1\" in (4.14) is θ1. With base dashpots b′, c′ (b‴, c‴) are the"
+        " complex solutions of the damped (4.11): X = (D F_x + B F_θ)/Δ, Θ = (C F_x + A F_θ)/Δ with"
+        " A = a0 − W² + i W γ_x, B = b0 + i W h γ_x, C = a1 + i W h γ_θ, D = b1 − W² + i W (h² γ_θ + γ_φ),"
+        " Δ = A D − B C, W = nω, γ_x = C_x/M_tot, γ_θ = C_x/I_c, γ_φ = C_φ/I_c; m, l′, ρ of rod and slider together.",
     ),
 )
 

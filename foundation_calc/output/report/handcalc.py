@@ -37,6 +37,8 @@ SYMBOLS = {
     "K_zw": "K_z(ω)", "K_xw": "K_x(ω)", "K_phiw": "K_φ(ω)", "C_phiw": "C_φ(ω)", "xi_zw": "ξ_z(ω)", "xi_xw": "ξ_x(ω)",
     "xi_phiw": "ξ_φ(ω)", "k_phi": "k_φ", "c_rw": "c̃_r", "a_d": "a₀", "omega_s": "ω_s", "xi": "ξ", "c31_41": "(c31+c41)", "c11_21": "(c11+c21)", "c22_32": "(c22+c32)",
     "c12_42": "(c12+c42)", "omega_i": "ω_i", "rho_P": "ρ_P", "Omega_r": "Ω_r", "eta_s": "η_r",
+    "l1": "l'", "l1_rod": "l'_rod", "zeta_z": "ζ_z", "zeta_zw": "ζ_z(ω)", "zeta_z2w": "ζ_z(2ω)",
+    "l2": "l''", "rho_rod": "ρ_rod", "kappa": "κ", "g_s": "g*", "M_th1": "M_θ1", "k0w": "k0(ω)", "k02w": "k0(2ω)", "C_zw": "C_z(ω)", "K_z2w": "K_z(2ω)", "C_z2w": "C_z(2ω)",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")

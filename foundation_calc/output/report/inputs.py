@@ -116,6 +116,9 @@ def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
             for key in type(model).model_fields:
                 if _entries(getattr(model, key)):
                     blocks += _entries_table(f"{title} {key}", getattr(model, key))
+                elif title.startswith("[[") and isinstance(getattr(model, key), BaseModel):  # [machines.unbalance]
+                    nested = list(_rows(title.strip("[]").split("]")[0], getattr(model, key), units))
+                    blocks.append(table(f"{title} {key}", header, nested, (False, False, True, False, False)))
         if name == "soil" and hasattr(scene, "soil_springs"):
             blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))

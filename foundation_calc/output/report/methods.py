@@ -101,7 +101,8 @@ def _dashpots(scene, springs) -> Chain:
 
 def crank_chains(scene, amplitudes: dict | None = None) -> list:
     """The hand calculations of a crank foundation scene: springs by its soil method, natural
-    frequencies and, when the soil is damped, the dashpots; on Gazetas' soil also the springs
+    frequencies, when the soil is damped the dashpots, with a mechanism the first approximation's
+    vertical amplitudes; on Gazetas' soil also the springs
     at each harmonic n ω shown in ``amplitudes`` (the ``amplitudes`` document) and each mode at
     its own frequency."""
     springs = scene.soil_springs()
@@ -116,6 +117,10 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
         out += gazetas_frequency_columns(scene, out[0], amplitudes)
     if any(float(getattr(springs, k)) > 0 for k in ("xi_z", "xi_x", "xi_phi")):
         out.append(_dashpots(scene, springs))
+    if scene.mechanism is not None:
+        from foundation_calc.output.report.first_approximation_methods import first_approximation_chain
+
+        out.append(first_approximation_chain(scene))
     return out
 
 

@@ -135,6 +135,18 @@ def percent(fraction: float) -> str:
     return f"{fraction * 100:.1f} %"
 
 
+def phased(magnitude: str, z: complex) -> str:
+    """A complex amplitude ``z`` as its printed ``magnitude`` and phase lag φ [°] to 0.1°:
+    Re(z e^{iΩt}) = |z| cos(Ωt − φ); the magnitude alone where it prints as 0 (no phase).
+
+    >>> phased("2.000", 2j), phased("0", 1e-30)
+    ('2.000 ∠-90.0°', '0')
+    """
+    if magnitude == "0":
+        return magnitude
+    return f"{round(-math.degrees(math.atan2(z.imag, z.real)), 1) + 0.0:.1f}°".join((f"{magnitude} ∠", ""))
+
+
 def ratio(value: float | None) -> str:
     """A demand/limit ratio to two decimals (``-`` when there is none, ``inf`` for no margin)."""
     if value is None:

@@ -12,6 +12,7 @@ from collections.abc import Callable
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.model import Paragraph, Section, table
+from foundation_calc.output.report.resonance_text import measured_to
 from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio
 
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
@@ -32,8 +33,9 @@ def resonance_verdict(row: dict) -> str:
 
 
 def _resonance_rows(doc: dict, scene, units: DisplayUnits):
+    omega = doc.get("speed", {}).get("omega")  # a crank foundation's: its margins are to the nearer critical speed
     for r in doc["resonances"]:
-        critical = quantity(units, "speed", r["critical_speed"]["omega"])
+        critical = quantity(units, "speed", r["critical_speed"]["omega"] if omega is None else measured_to(r, omega))
         shown = resonance_verdict(r)
         decides = shown == r["verdict"]
         yield (
