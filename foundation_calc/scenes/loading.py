@@ -114,7 +114,17 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
         needs = " or ".join(f'"{k}"' for k in expected)
         raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
-    return validate(model_for_kind(kind), data, source)
+    from foundation_calc.scenes.unit_strings import unit_strings_converted
+
+    data, _, unit_problems = unit_strings_converted(kind, data)  # "6000 mm" -> 6.0; pint only if written so
+    if not unit_problems:
+        return validate(model_for_kind(kind), data, source)
+    try:  # the scene's other problems too, all in one message
+        validate(model_for_kind(kind), data, source)
+    except SceneError as exc:
+        named = {where for where, _ in unit_problems}
+        unit_problems += [(where, text) for where, text in exc.problems if where not in named]
+    raise SceneError(source, unit_problems)
 
 
 def validate(model: type, data: dict[str, Any], source: str, prefix: str = ""):
