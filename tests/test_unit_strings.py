@@ -275,3 +275,36 @@ def test_names_and_methods_are_left_as_text(kind):
     config = next(p for p in CONFIG_FILES if read_toml(p)["kind"] == kind)
     document = read_toml(config)
     assert parse_scene(twin_of(document)).name == document["name"]
+
+
+@pytest.mark.parametrize("config", CONFIG_FILES, ids=lambda p: p.name)
+def test_the_schema_takes_numbers_with_their_unit(runner, config):
+    """``fcalc schema``: the twin validates as the SI scene does; text that is no number with a
+    unit, or a unit at a key without one (a name), does not."""
+    jsonschema = pytest.importorskip("jsonschema")
+    document = read_toml(config)
+    result = runner.invoke(app, ["schema", document["kind"]])
+    validator = jsonschema.Draft202012Validator(json.loads(result.stdout))
+    assert not list(validator.iter_errors(twin_of(document)))
+    twin = twin_of(document)
+    table, key = next((t, k) for t, v in twin.items() if isinstance(v, dict) for k in v if isinstance(v[k], str)
+                      and isinstance(document[t][k], (int, float)))
+    for text in ("abc", "6000", "mm 6000"):
+        assert list(validator.iter_errors({**document, table: {**document[table], key: text}})), text
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_the_template_shows_the_written_form_and_it_loads(kind):
+    """``fcalc init``: the header shows numbers with their unit; its examples load as it says."""
+    from foundation_calc.scenes.template import scene_template
+
+    header = [line for line in scene_template(kind).splitlines() if line.startswith("#")][:8]
+    shown = " ".join(header)
+    assert 'length = "6000 mm"' in shown and 'speed_rpm = "10 Hz"' in shown
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    machine = {k: v for k, v in document["machines"][0].items() if k != "speed_rpm"}
+    load = {**machine["loads"][0], "force": ["6 kN", 0, "2 kN"], "phase": "90 deg"}
+    document["machines"][0] = {**machine, "speed_rpm": "10 Hz", "loads": [load]}
+    document["block"] = {**document["block"], "length": "6000 mm", "density": "2.4 t/m^3"}
+    scene = parse_scene(document)
+    assert (scene.block.length, scene.block.density, scene.machines[0].speed_rpm) == pytest.approx((6.0, 2400.0, 600.0))

@@ -46,9 +46,19 @@ DIMENSION_NAMES = (
     ("N*s/m", "a damping coefficient (force per velocity)"),
 )
 
+#: A decimal number as TOML or JSON write it (``6000``, ``-1.5``, ``2.5e3``).
+NUMBER = r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
+
 #: A number, then its unit (``6000 mm``, ``1.8 t/m^3``, ``-2.5e3 N*m``); the unit may be absent
 #: only to be named as missing.
-_WRITTEN = re.compile(r"^\s*(?P<number>[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(?P<unit>.*?)\s*$", re.S)
+_WRITTEN = re.compile(rf"^\s*(?P<number>{NUMBER})\s*(?P<unit>.*?)\s*$", re.S)
+
+#: The JSON Schema of a number written with its unit (``fcalc schema``): a number, then a unit.
+WRITTEN_SCHEMA = {
+    "type": "string",
+    "pattern": rf"^\s*{NUMBER}\s*[^\s0-9.+-].*$",
+    "description": 'a number with its unit, converted to the key\'s unit, e.g. "6000 mm", "72 MPa", "600 rpm"',
+}
 
 
 #: What a unit is written with: names (µm, t, kN), spaces, ``* / ^ **``, parentheses, powers.
