@@ -308,3 +308,32 @@ def test_the_template_shows_the_written_form_and_it_loads(kind):
     document["block"] = {**document["block"], "length": "6000 mm", "density": "2.4 t/m^3"}
     scene = parse_scene(document)
     assert (scene.block.length, scene.block.density, scene.machines[0].speed_rpm) == pytest.approx((6.0, 2400.0, 600.0))
+
+
+def _input_rows(sheet) -> list[tuple[str, ...]]:
+    section = next(s for s in sheet.sections if s.title.startswith("Inputs"))
+    return [row for block in section.blocks for row in getattr(block, "rows", ())]
+
+
+def test_the_sheet_shows_each_value_as_written_beside_its_value_in_the_keys_unit(tmp_path):
+    """``fcalc report``: ``length = "7000 mm"`` is the row ``length | L | 7 (written 7000 mm) | m``;
+    in a list, each element as written (a bare number as the sheet prints it); ``speed = "600 rpm"``
+    is the row of omega; a scene of bare numbers shows no "written"."""
+    from foundation_calc.output.display_units import DisplayUnits
+    from foundation_calc.output.report.documents import scene_sheet
+
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    machine = {k: v for k, v in document["machines"][0].items() if k != "speed_rpm"}
+    load = {**machine["loads"][0], "force": ["6 kN", 0.0, "2 kN"]}
+    document["machines"][0] = {**machine, "speed": "600 rpm", "mass": "12 t", "loads": [load, *machine["loads"][1:]]}
+    document["block"] = {**document["block"], "length": "7000 mm"}
+    path = tmp_path / "written.toml"
+    _write(path, document)
+    rows = _input_rows(scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)[0])
+    assert ("length", "L", "7 (written 7000 mm)", "m") in [row[:4] for row in rows]
+    assert ("mass", "m_m", "12000 (written 12 t)", "kg") in [row[:4] for row in rows]
+    assert ("omega", "ω", "62.8319 (written 600 rpm)", "rad/s") in [row[:4] for row in rows]
+    assert any("6000, 0, 2000 (written 6 kN, 0, 2 kN)" in row for row in rows), rows
+    _write(path, read_toml(CONFIGS / "block_two_machines.toml"))
+    rows = _input_rows(scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)[0])
+    assert rows and not any("written" in cell for row in rows for cell in row)

@@ -16,7 +16,7 @@ key (the dotted path of the other scene errors), what was written and both dimen
 >>> document = {"block": {"length": "6000 mm", "width": 4.0}, "machines": [{"speed": "600 rpm"}]}
 >>> converted, written = with_unit_strings_converted("block_foundation", document)
 >>> converted["block"], round(converted["machines"][0]["speed"], 6), written
-({'length': 6.0, 'width': 4.0}, 62.831853, {'block.length': '6000 mm', 'machines.0.speed': '600 rpm'})
+({'length': 6.0, 'width': 4.0}, 62.831853, {'block.length': '6000 mm', 'machines.0.omega': '600 rpm'})
 """
 
 from __future__ import annotations
@@ -81,7 +81,8 @@ def registry():
 
 def with_unit_strings_converted(kind: str, document: dict[str, Any], source: str = "<scene>") -> tuple[dict, dict]:
     """The scene ``document`` of ``kind`` with every value written with a unit converted to its
-    key's unit, and the values as written by dotted key; ``document`` itself is left as it is.
+    key's unit, and the values as written by the dotted path of their field (``speed`` is
+    ``omega``); ``document`` itself is left as it is.
     A value that cannot be converted is a :class:`SceneError` (see :func:`unit_strings_converted`).
     """
     converted, written, problems = unit_strings_converted(kind, document)
@@ -110,8 +111,11 @@ def _table(model: type, data: Any, path: str, written: dict, problems: list) -> 
     renamed = getattr(model, "renamed_keys", {})
     out = {}
     for key, value in data.items():
-        info = fields.get(renamed.get(key, key))
-        out[key] = value if info is None else _value(info, value, f"{path}{key}", written, problems)
+        name = renamed.get(key, key)
+        info = fields.get(name)
+        mine: dict[str, Any] = {}
+        out[key] = value if info is None else _value(info, value, f"{path}{key}", mine, problems)
+        written.update({f"{path}{name}{where[len(path) + len(key):]}": text for where, text in mine.items()})
     return out
 
 
