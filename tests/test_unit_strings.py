@@ -337,3 +337,16 @@ def test_the_sheet_shows_each_value_as_written_beside_its_value_in_the_keys_unit
     _write(path, read_toml(CONFIGS / "block_two_machines.toml"))
     rows = _input_rows(scene_sheet(path, "fcalc report", DisplayUnits(), figures=False)[0])
     assert rows and not any("written" in cell for row in rows for cell in row)
+
+
+def test_design_varies_and_writes_back_a_scene_written_with_units(runner, tmp_path):
+    """``fcalc design --write`` on a block written in mm: the varied length is written as a number
+    [m], the keys it leaves alone keep their text ("2.4 t/m^3")."""
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    document["block"] = {**document["block"], "length": "7000 mm", "density": "2.4 t/m^3"}
+    scene, best = tmp_path / "written.toml", tmp_path / "best.toml"
+    _write(scene, document)
+    result = runner.invoke(app, ["design", str(scene), "--vary", "block.length=6:7", "--step", "0.5", "--write", str(best)])
+    assert result.exit_code == 0, result.output
+    written = read_toml(best)["block"]
+    assert isinstance(written["length"], float) and written["density"] == "2.4 t/m^3"

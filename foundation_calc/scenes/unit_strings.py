@@ -103,6 +103,22 @@ def unit_strings_converted(kind: str, document: dict[str, Any]) -> tuple[dict, d
     return _table(model_for_kind(kind), document, "", written, problems), written, problems
 
 
+def kept_as_written(new: Any, converted: Any, raw: Any) -> Any:
+    """``new`` (a changed copy of the ``converted`` scene document) with every value it left
+    unchanged back as the user wrote it in ``raw`` (``"6000 mm"``), for a scene written back to
+    its file (``fcalc design --write``).
+
+    >>> kept_as_written({"a": 7.2, "b": 2.0, "c": [1.0, 5.0]}, {"a": 6.0, "b": 2.0, "c": [1.0, 2.0]},
+    ...                 {"a": "6000 mm", "b": "2 m", "c": ["1 m", "2 m"]})
+    {'a': 7.2, 'b': '2 m', 'c': ['1 m', 5.0]}
+    """
+    if isinstance(new, dict) and isinstance(converted, dict) and isinstance(raw, dict):
+        return {key: kept_as_written(value, converted.get(key), raw.get(key)) for key, value in new.items()}
+    if isinstance(new, list) and isinstance(converted, list) and isinstance(raw, list) and len(new) == len(raw) == len(converted):
+        return [kept_as_written(*values) for values in zip(new, converted, raw)]
+    return raw if isinstance(raw, str) and new == converted else new
+
+
 def _table(model: type, data: Any, path: str, written: dict, problems: list) -> Any:
     """``data`` (a table of ``model``) with its keys' unit strings converted."""
     if not isinstance(data, dict):
