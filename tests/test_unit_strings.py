@@ -5,14 +5,15 @@ wrong dimension or no quantity at all is exit 3 naming the key and both dimensio
 
 The factors of :data:`OTHER_UNITS` are transcribed here from the SI definitions (1 t = 1000 kg,
 1 rpm = 2π/60 rad/s, 1 Hz of a shaft = 2π rad/s, 1° = π/180 rad), not taken from the loader.
-Tolerance 1e-12 relative: a number rewritten ``x · factor`` and converted back differs from ``x``
-by a few ulps (1e-16), and the results are smooth in the inputs.
+Tolerance 1e-12 relative: a decimal factor converts back exactly, an angle or a speed to within
+a few ulps (1e-16), and the results are smooth in the inputs.
 """
 
 from __future__ import annotations
 
 import json
 import math
+from decimal import Decimal
 import re
 import subprocess
 import sys
@@ -24,14 +25,15 @@ from foundation_calc.scenes import KINDS, parse_scene, read_toml
 from foundation_calc.scenes.loading import model_for_kind
 from tests.conftest import CONFIGS
 
-#: A key's declared unit -> (another unit, how many of it make one of the key's unit).
+#: A key's declared unit -> (another unit, how many of it make one of the key's unit: exact
+#: decimals as text, "1e3"; the angle and speed factors as floats).
 OTHER_UNITS = {
-    "m": ("mm", 1e3), "m²": ("cm^2", 1e4), "m⁴": ("cm^4", 1e8), "kg": ("t", 1e-3), "kg m²": ("t*m^2", 1e-3),
-    "kg/m³": ("t/m^3", 1e-3), "N": ("kN", 1e-3), "N m": ("kN m", 1e-3), "N/m": ("kN/mm", 1e-6),
-    "N/m³": ("MN/m^3", 1e-6), "N m/rad": ("MN*m/rad", 1e-6), "N s/m": ("kN*s/m", 1e-3),
-    "N m s/rad": ("kN*m*s/rad", 1e-3), "Pa": ("MPa", 1e-6), "W": ("kW", 1e-3), "s": ("min", 1 / 60),
-    "m/s": ("mm/s", 1e3), "m/s²": ("mm/s^2", 1e3), "mm/s": ("m/s", 1e-3), "rad": ("deg", 180 / math.pi),
-    "rad/s": ("rpm", 60 / (2 * math.pi)), "Hz": ("rpm", 60.0), "rpm": ("Hz", 1 / 60),
+    "m": ("mm", "1e3"), "m²": ("cm^2", "1e4"), "m⁴": ("cm^4", "1e8"), "kg": ("t", "1e-3"), "kg m²": ("t*m^2", "1e-3"),
+    "kg/m³": ("t/m^3", "1e-3"), "N": ("kN", "1e-3"), "N m": ("kN m", "1e-3"), "N/m": ("kN/mm", "1e-6"),
+    "N/m³": ("MN/m^3", "1e-6"), "N m/rad": ("MN*m/rad", "1e-6"), "N s/m": ("kN*s/m", "1e-3"),
+    "N m s/rad": ("kN*m*s/rad", "1e-3"), "Pa": ("MPa", "1e-6"), "W": ("kW", "1e-3"), "s": ("ms", "1e3"),
+    "m/s": ("mm/s", "1e3"), "m/s²": ("mm/s^2", "1e3"), "mm/s": ("m/s", "1e-3"), "rad": ("deg", 180 / math.pi),
+    "rad/s": ("rpm", 60 / (2 * math.pi)), "Hz": ("rpm", "60"), "rpm": ("Hz", 1 / 60),
 }
 
 CONFIG_FILES = sorted(CONFIGS.glob("*.toml"))
@@ -47,6 +49,8 @@ def _written(value, unit: str):
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         return value
     other, factor = OTHER_UNITS[unit]
+    if isinstance(factor, str):  # the decimal the user would type: 0.11 m is "110.00 mm", not 110.00000000000001
+        return f"{Decimal(repr(float(value))) * Decimal(factor)} {other}"
     return f"{value * factor!r} {other}"
 
 
@@ -172,6 +176,8 @@ def test_commands_give_the_same_documents_for_the_twin(runner, tmp_path, config,
         ("frequency_hz", "600 rpm", 10.0),
         ("omega", "10 Hz", 20 * math.pi),
         ("speed_rpm", "62.83185307179586 rad/s", 600.0),
+        ("speed_rpm", "600 rev/min", 600.0),
+        ("omega", "3600 deg/s", 20 * math.pi),
     ],
 )
 def test_a_speed_goes_to_the_unit_of_its_key(key, written, expected):
@@ -215,6 +221,9 @@ WRONG = [
     ("platform_paper_example.toml", "platform.cog.2", ("platform", "cog", 2), "2 kg", ("a mass", "a length [m]")),
     ("platform_paper_example.toml", "operation.omega", ("operation", "omega"), "157 m",
      ("a length", "[rad/s]")),
+    # a count per minute without what is counted: revolutions (rpm) and radians are 2π apart
+    ("compressor_near_resonance.toml", "mechanism.speed_rpm", ("mechanism", "speed_rpm"), "600 1/min",
+     ("does not say what turns", "[rpm]")),
 ]
 
 

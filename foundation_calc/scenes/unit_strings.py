@@ -76,6 +76,7 @@ def registry():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         units.define("hertz = revolution / second = Hz")
+    units.define("@alias revolution = rev")  # "rev/min"
     return units
 
 
@@ -192,12 +193,59 @@ def _converted(text: str, unit: str, path: str, written: dict, problems: list) -
     if given.dimensionality != target.dimensionality:
         problems.append((path, f"{text} is {dimension_name(given.dimensionality)}; {this_key}"))
         return text
-    value = float(units.Quantity(float(match.group("number")), given).to(target).magnitude)
+    if _per_time_alone(given):
+        problems.append((path, f"{text} does not say what turns: write revolutions as rpm or Hz (\"600 rpm\","
+                               f" \"10 Hz\") or an angle per time (\"62.8 rad/s\"); {this_key}"))
+        return text
+    value = _in_unit(match.group("number"), given, target)
     if not math.isfinite(value):
         problems.append((path, f"{text} is beyond the numbers fcalc computes with (it overflows); {this_key}"))
         return text
     written[path] = text
     return value
+
+
+def _in_unit(number: str, given, target) -> float:
+    """The decimal ``number`` in ``given`` units, in ``target`` units. A factor that is a whole
+    number one way (1000 mm in a m, 1000 kg in a t) is applied in decimal arithmetic, so that
+    ``"110 mm"`` is the float nearest 0.11, the number typed in m (``110 × 0.001`` in floats is
+    0.11000000000000001); others (° -> rad, rpm -> rad/s) multiply as fcalc's own conversions do.
+
+    >>> units = registry()
+    >>> _in_unit("110", units.mm, units.m), _in_unit("5", units.um, units.m), _in_unit("218.7", units.t, units.kg)
+    (0.11, 5e-06, 218700.0)
+    """
+    from decimal import Decimal, InvalidOperation
+
+    factor = float(registry().Quantity(1.0, given).to(target).magnitude)
+    inverse = float(registry().Quantity(1.0, target).to(given).magnitude)
+    try:
+        if _whole(inverse) > 1:
+            return float(Decimal(number) / _whole(inverse))
+        if _whole(factor) >= 1:
+            return float(Decimal(number) * _whole(factor))
+    except (InvalidOperation, OverflowError):  # beyond the decimal context: inf, caught by the caller
+        return math.inf
+    return float(number) * factor
+
+
+def _whole(factor: float) -> int:
+    """``factor`` as a whole number when it is one to round-off (pint's 1e8 cm⁴ in a m⁴ is
+    99999999.99999999), else 0."""
+    if not math.isfinite(factor) or factor < 1:
+        return 0
+    whole = round(factor)
+    return whole if abs(factor - whole) <= 1e-12 * factor else 0
+
+
+def _per_time_alone(unit) -> bool:
+    """True for a speed written as a count per time without what is counted (``1/min``,
+    ``s^-1``): pint reads it as radians per time, an engineer often means revolutions (a factor 2π
+    apart), so fcalc asks for rpm, Hz or rad/s."""
+    time = registry().parse_units("s").dimensionality
+    return bool(unit.dimensionality == 1 / time) and all(
+        registry().parse_units(name).dimensionality == time for name in unit._units
+    )
 
 
 def _unit(text: str):
@@ -208,7 +256,7 @@ def _unit(text: str):
         return None
     try:
         unit = registry().parse_units(text)
-    except Exception:  # noqa: BLE001 - a parser of free text fails in many ways; each means "not a unit"
+    except Exception:  # a parser of free text fails in many ways; each means "not a unit"
         return None
     return unit if all(math.isfinite(power) for power in unit.dimensionality.values()) else None
 
