@@ -128,11 +128,11 @@ def _table(model: type, data: Any, path: str, written: dict, problems: list) -> 
     renamed = getattr(model, "renamed_keys", {})
     out = {}
     for key, value in data.items():
-        name = renamed.get(key, key)
+        name = renamed.get(key, key)  # named by the field's path, as the scene's other errors are
         info = fields.get(name)
-        mine: dict[str, Any] = {}
-        out[key] = value if info is None else _value(info, value, f"{path}{key}", mine, problems)
-        written.update({f"{path}{name}{where[len(path) + len(key):]}": text for where, text in mine.items()})
+        found: list[tuple[str, str]] = []
+        out[key] = value if info is None else _value(info, value, f"{path}{name}", written, found)
+        problems += [(where, text if name == key else f"{text} (written as {key})") for where, text in found]
     return out
 
 
