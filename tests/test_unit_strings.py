@@ -363,3 +363,31 @@ def test_design_varies_and_writes_back_a_scene_written_with_units(runner, tmp_pa
     assert result.exit_code == 0, result.output
     written = read_toml(best)["block"]
     assert isinstance(written["length"], float) and written["density"] == "2.4 t/m^3"
+
+
+def _fuzz_examples() -> int:
+    import os
+
+    return int(os.environ.get("FCALC_FUZZ_EXAMPLES", "20"))
+
+
+def test_any_text_at_a_key_with_a_unit_is_a_value_or_a_scene_error():
+    """Text of any shape (a number and unit-like characters, or anything) either converts or is a
+    SceneError naming the key; never another exception (pint's parser raises many kinds)."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from foundation_calc.errors import SceneError
+
+    document = read_toml(CONFIGS / "block_two_machines.toml")
+    unit_like = st.text(alphabet="0123456789.eE+-*/^()_ µ°%²³kmMgGtNPaWsHzrpdeg1", max_size=14)
+
+    @settings(max_examples=_fuzz_examples(), deadline=None, database=None)
+    @given(st.one_of(unit_like, st.text(max_size=20), st.tuples(st.floats(allow_nan=False), unit_like).map(lambda pair: f"{pair[0]!r} {pair[1]}")))
+    def check(text):
+        try:
+            parse_scene({**document, "block": {**document["block"], "length": text}})
+        except SceneError as exc:
+            assert any(where == "block.length" for where, _ in exc.problems), exc.problems
+
+    check()

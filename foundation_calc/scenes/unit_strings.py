@@ -68,14 +68,10 @@ _UNIT_TEXT = re.compile(r"^[\w\s*/^().·°%²³⁴⁻¹-]+$")
 @lru_cache(maxsize=1)
 def registry():
     """pint's unit registry with a hertz of one revolution per second (see the module text)."""
-    import warnings
-
     import pint
 
-    units = pint.UnitRegistry()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        units.define("hertz = revolution / second = Hz")
+    units = pint.UnitRegistry(on_redefinition="ignore")  # redefine hertz without logging a warning
+    units.define("hertz = revolution / second = Hz")
     units.define("@alias revolution = rev")  # "rev/min"
     return units
 
