@@ -296,7 +296,8 @@ def test_paths_that_are_not_scene_files(runner, tmp_path, make):
 MALFORMED = [
     ("negative_mass", ("foundation", "mass"), -1.0, ["foundation.mass", "must be > 0", "[kg]"]),
     ("zero_area", ("foundation", "base_area"), 0.0, ["foundation.base_area", "must be > 0", "[m²]"]),
-    ("mass_as_text", ("foundation", "mass"), "100 t", ["foundation.mass", "must be a number", "[kg]"]),
+    ("mass_as_text", ("foundation", "mass"), "heavy", ["foundation.mass", "must be a number", "[kg]"]),
+    ("mass_as_pressure", ("foundation", "mass"), "100 MPa", ["foundation.mass", "a pressure", "a mass [kg]"]),
     ("mass_as_bool", ("foundation", "mass"), True, ["foundation.mass", "must be a number"]),
     ("mass_as_list", ("foundation", "mass"), [1.0, 2.0], ["foundation.mass", "must be a number"]),
     ("nan_stiffness", ("soil", "c_z"), float("nan"), ["soil.c_z", "finite", "[N/m³]"]),

@@ -129,10 +129,11 @@ def design(
     from foundation_calc.checks.design.apply import VaryError, given_dimensions
     from foundation_calc.checks.design.grid import grid, parse_range
     from foundation_calc.scenes.loading import parse_scene, read_scene
+    from foundation_calc.scenes.unit_strings import with_unit_strings_converted
 
     _options(plot, write, step, points, margin)
     loaded = parse_scene(read_scene(scene), str(scene), expect=("block_foundation", "crank_foundation"))
-    document = read_scene(scene)
+    document = with_unit_strings_converted(loaded.kind, read_scene(scene), str(scene))[0]  # numbers to vary, not "6000 mm"
     try:
         given = given_dimensions(document)
         evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded, document, str(scene), given)
@@ -209,10 +210,14 @@ def _write(scene: Path, path: Path, sizing):
     from foundation_calc.output.files import write_atomically
     from foundation_calc.output.scene_edit import edited_scene
     from foundation_calc.scenes.loading import parse_toml, read_text
+    from foundation_calc.scenes.unit_strings import kept_as_written, with_unit_strings_converted
 
     best = sizing.designs.design(0)
     text = read_text(scene)
-    edited = edited_scene(text, applied_document(parse_toml(text, str(scene)), best), decimals=DECIMALS, note=LEFT_OUT)
+    raw = parse_toml(text, str(scene))
+    converted = with_unit_strings_converted(raw["kind"], raw, str(scene))[0]
+    new = kept_as_written(applied_document(converted, best), converted, raw)  # "6000 mm" stays where unchanged
+    edited = edited_scene(text, new, decimals=DECIMALS, note=LEFT_OUT)
     _same_verdicts(scene, edited.text, sizing.full)
     with writing(path, "--write"):
         write_atomically(path, edited.text)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from typing import Annotated
+from typing import Annotated, ClassVar
 
 from pydantic import Field, model_validator
 
@@ -131,14 +131,18 @@ class BlockMachine(SpeedFields):
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
 
+    #: Other names of keys: ``speed`` [rad/s] is ``omega`` (the issue's scene contract writes it so).
+    renamed_keys: ClassVar[dict[str, str]] = {"speed": "omega"}
+
     @model_validator(mode="before")
     @classmethod
     def _speed_is_omega(cls, data):
-        """``speed`` [rad/s] is another name of ``omega`` (the issue's scene contract writes it so)."""
-        if isinstance(data, dict) and "speed" in data:
-            if "omega" in data:
-                raise ValueError("give speed [rad/s] or omega [rad/s], not both (they are the same key)")
-            data = {("omega" if k == "speed" else k): v for k, v in data.items()}
+        """A renamed key (:attr:`renamed_keys`) read as its field; both given is an error."""
+        for other, key in cls.renamed_keys.items():
+            if isinstance(data, dict) and other in data:
+                if key in data:
+                    raise ValueError(f"give {other} [rad/s] or {key} [rad/s], not both (they are the same key)")
+                data = {(key if k == other else k): v for k, v in data.items()}
         return data
 
     @model_validator(mode="after")

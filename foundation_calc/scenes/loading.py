@@ -106,6 +106,12 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
     ``expect`` names the kind (or kinds) the caller takes; a scene of another kind is a
     :class:`SceneError`.
     """
+    return parse_scene_as_written(data, source, expect)[0]
+
+
+def parse_scene_as_written(data: dict[str, Any], source: str = "<scene>", expect: str | tuple[str, ...] | None = None):
+    """:func:`parse_scene`, and the values the scene wrote with their unit by dotted key
+    (``{"block.length": "6000 mm"}``; numbers written with a unit are converted first)."""
     kind = data.get("kind")
     if not isinstance(kind, str) or kind not in KINDS:
         raise SceneError(source, [_kind_problem(data, kind)])
@@ -114,7 +120,17 @@ def parse_scene(data: dict[str, Any], source: str = "<scene>", expect: str | tup
         commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
         needs = " or ".join(f'"{k}"' for k in expected)
         raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
-    return validate(model_for_kind(kind), data, source)
+    from foundation_calc.scenes.unit_strings import unit_strings_converted
+
+    data, written, unit_problems = unit_strings_converted(kind, data)  # "6000 mm" -> 6.0; pint only if written so
+    if not unit_problems:
+        return validate(model_for_kind(kind), data, source), written
+    try:  # the scene's other problems too, all in one message
+        validate(model_for_kind(kind), data, source)
+    except SceneError as exc:
+        named = {where for where, _ in unit_problems}
+        unit_problems += [(where, text) for where, text in exc.problems if where not in named]
+    raise SceneError(source, unit_problems)
 
 
 def validate(model: type, data: dict[str, Any], source: str, prefix: str = ""):
@@ -163,3 +179,9 @@ def read_scene(path: str | Path) -> dict[str, Any]:
 def load_scene(path: str | Path, expect: str | tuple[str, ...] | None = None):
     """Read, parse and validate the scene file at ``path`` (with its office defaults)."""
     return parse_scene(read_scene(path), source=str(path), expect=expect)
+
+
+def load_scene_as_written(path: str | Path):
+    """:func:`load_scene`, and the values the file wrote with their unit by dotted key (for the
+    sheet's inputs)."""
+    return parse_scene_as_written(read_scene(path), source=str(path))

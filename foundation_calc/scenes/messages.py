@@ -39,8 +39,7 @@ def _field_info(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | Non
 
 def _model_at(model: type[BaseModel], loc: tuple[Any, ...]) -> type[BaseModel] | None:
     """The model whose fields are the keys at ``loc`` (the table that holds the key)."""
-    current = _walk(model, loc)[1]
-    return current if isinstance(current, type) and issubclass(current, BaseModel) else None
+    return nested_model(_walk(model, loc)[1])
 
 
 def _nested(annotation: Any) -> Any:
@@ -54,6 +53,12 @@ def _nested(annotation: Any) -> Any:
     return annotation
 
 
+def nested_model(annotation: Any) -> type[BaseModel] | None:
+    """The model of a nested table (``Model``, ``Model | None``, ``list[Model]``), or None."""
+    found = _nested(annotation)
+    return found if isinstance(found, type) and issubclass(found, BaseModel) else None
+
+
 def _unknown_key(model: type[BaseModel], loc: tuple[Any, ...]) -> str:
     """The message for a key the scene kind does not have, with the nearest known key."""
     table = _model_at(model, loc[:-1])
@@ -65,8 +70,8 @@ def _unknown_key(model: type[BaseModel], loc: tuple[Any, ...]) -> str:
 
 def _missing_table(info: FieldInfo | None) -> str:
     """For a whole missing table: the keys it needs."""
-    nested = _nested(info.annotation) if info is not None else None
-    if not (isinstance(nested, type) and issubclass(nested, BaseModel)):
+    nested = nested_model(info.annotation) if info is not None else None
+    if nested is None:
         return ""
     required = [name for name, field in nested.model_fields.items() if field.is_required()]
     keys = getattr(nested, "required_keys_text", None) or ", ".join(required)

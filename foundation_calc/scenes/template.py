@@ -126,6 +126,10 @@ def scene_template(kind: str) -> str:
         "# Every key is listed with its symbol, unit [SI] and allowed range; commented-out keys",
         "# are optional or alternatives. Check it with `fcalc check FILE`; editor validation:",
         f"# `fcalc schema {kind} > {kind}.schema.json` (see README).",
+        "# A number may be written as text with its unit, converted to the key's unit [in brackets]",
+        "# (a bare number is in the key's unit), e.g.",
+        '#   length = "6000 mm"   density = "2.4 t/m^3"   speed_rpm = "10 Hz"   phase = "90 deg"',
+        '#   force = ["6 kN", 0, "2 kN"]   shear_modulus = "72 MPa"   inertia = ["10 t*m^2", 0, 0]',
     ]
     _section(model, values, "", lines)
     text = "\n".join(lines) + "\n"

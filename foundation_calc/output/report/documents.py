@@ -77,17 +77,17 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     ``figures=False`` leaves the plots out (matplotlib's part of the time)."""
     from foundation_calc.checks.batch import SceneRun, run_checks
     from foundation_calc.output.check_report import result_document
-    from foundation_calc.scenes import load_scene
+    from foundation_calc.scenes.loading import load_scene_as_written
 
     source = str(path)
-    loaded = load_scene(path)
+    loaded, written = load_scene_as_written(path)
     runs = run_checks(loaded)
     raise_unjudged(runs, source)
     warnings = tuple(loaded.plausibility_warnings())
     scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
     documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
     title = title_block(path, loaded, command)
-    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units),
+    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units, written),
                 assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
     methods = methods_section(loaded, documents)

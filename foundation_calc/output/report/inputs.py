@@ -2,7 +2,9 @@
 
 Every scene field's description starts with ``symbol [unit]:``, so the sheet, the JSON schema
 and the tables share one source. Limits on amplitudes, velocities and accelerations and the
-platform's amplitude are shown in the chosen display units; everything else as given (SI).
+platform's amplitude are shown in the chosen display units; everything else as given (SI). A
+number the scene wrote with its unit (``length = "6000 mm"``) is shown in the key's unit with
+what was written beside it: ``6 (written 6000 mm)``.
 """
 
 from __future__ import annotations
@@ -32,6 +34,17 @@ def _value(value) -> str:
     if isinstance(value, (list, tuple)):
         return ", ".join(map(_value, value)) if value else "none"
     return str(value)
+
+
+def _shown(value, path: str, written: dict[str, str]) -> str:
+    """The value of the key at ``path`` (dotted, from the scene's top), and, when the scene wrote
+    it (or an element of it) with a unit, what was written: ``6000, 0, 2000 (written 6 kN, 0, 2 kN)``."""
+    if isinstance(value, (list, tuple)):
+        texts = [written.get(f"{path}.{i}") for i in range(len(value))]
+        as_written = ", ".join(text or _value(item) for text, item in zip(texts, value)) if any(texts) else None
+    else:
+        as_written = written.get(path)
+    return _value(value) if as_written is None else f"{_value(value)} (written {as_written})"
 
 
 def _entries(value) -> bool:
@@ -67,19 +80,20 @@ def _get(model, path: str):
     return model
 
 
-def _entries_table(title: str, items) -> tuple:
+def _entries_table(title: str, items, path: str, written: dict[str, str]) -> tuple:
     """A row per entry and a column per key, headed ``key [unit]`` (loads, points), then what each
-    key means, as one line."""
+    key means, as one line; ``path`` is the entries' dotted path in the scene (``machines.0.loads``)."""
     columns = list(_columns(type(items[0])))
     header = tuple(path if _described(f)[1] in ("", "-") else f"{path} [{_described(f)[1]}]" for path, f in columns)
-    rows = [tuple("-" if _get(item, path) is None else _value(_get(item, path)) for path, _ in columns) for item in items]
+    rows = [tuple("-" if _get(item, key) is None else _shown(_get(item, key), f"{path}.{i}.{key}", written) for key, _ in columns)
+            for i, item in enumerate(items)]
     numeric = tuple(not isinstance(_get(items[0], path), str) for path, _ in columns)
     meanings = "; ".join(f"{path}{'' if _described(f)[0] in ('', '-') else ' (' + _described(f)[0] + ')'}: {_described(f)[2]}"
                          for path, f in columns)
     return table(title, header, rows, numeric), Paragraph(meanings + ".")
 
 
-def _rows(group: str, model: BaseModel, units: DisplayUnits):
+def _rows(group: str, model: BaseModel, units: DisplayUnits, path: str, written: dict[str, str]):
     for key, field in type(model).model_fields.items():
         value = getattr(model, key)
         if value is None or isinstance(value, BaseModel) or _entries(value):  # a nested table has its own block
@@ -88,36 +102,38 @@ def _rows(group: str, model: BaseModel, units: DisplayUnits):
         quantity = DISPLAYED.get((group.split("[")[0], key))
         if quantity is not None and isinstance(value, float):
             value, unit = units.convert(quantity, value), units.label(quantity)
-        yield (key, symbol, _value(value), unit, meaning)
+        yield (key, symbol, _shown(value, f"{path}{key}", written), unit, meaning)
 
 
-def inputs_section(scene: BaseModel, units: DisplayUnits) -> Section:
-    """One table per group of the scene (``[foundation]``, ``[[points]]``…), as the model holds it."""
+def inputs_section(scene: BaseModel, units: DisplayUnits, written: dict[str, str] | None = None) -> Section:
+    """One table per group of the scene (``[foundation]``, ``[[points]]``…), as the model holds it;
+    ``written``: the values the scene wrote with a unit, by dotted key (``block.length``)."""
+    written = written or {}
     header = ("key", "symbol", "value", "unit", "meaning")
     blocks = []
     for name in type(scene).model_fields:
         if name == "project":  # the title block shows it
             continue
         value = getattr(scene, name)
-        groups = [(f"[{name}]", value)] if isinstance(value, BaseModel) else []
+        groups = [(f"[{name}]", value, f"{name}.")] if isinstance(value, BaseModel) else []
         groups += [
-            (f"[{name}.{key}]", getattr(value, key))
+            (f"[{name}.{key}]", getattr(value, key), f"{name}.{key}.")
             for key in (type(value).model_fields if isinstance(value, BaseModel) else ())
             if isinstance(getattr(value, key), BaseModel)
         ]
         if _entries(value) and _flat(value):  # [[loads]], [[points]]: one table, a row per entry
-            blocks += _entries_table(f"[[{name}]]", value)
+            blocks += _entries_table(f"[[{name}]]", value, name, written)
             continue
         if isinstance(value, (list, tuple)):
-            groups = [(f"[[{name}]] {i + 1}", item) for i, item in enumerate(value) if isinstance(item, BaseModel)]
-        for title, model in groups:
-            rows = list(_rows(title.strip("[]").split("]")[0], model, units))
+            groups = [(f"[[{name}]] {i + 1}", item, f"{name}.{i}.") for i, item in enumerate(value) if isinstance(item, BaseModel)]
+        for title, model, path in groups:
+            rows = list(_rows(title.strip("[]").split("]")[0], model, units, path, written))
             blocks.append(table(title, header, rows, (False, False, True, False, False)))
             for key in type(model).model_fields:
                 if _entries(getattr(model, key)):
-                    blocks += _entries_table(f"{title} {key}", getattr(model, key))
+                    blocks += _entries_table(f"{title} {key}", getattr(model, key), f"{path}{key}", written)
                 elif title.startswith("[[") and isinstance(getattr(model, key), BaseModel):  # [machines.unbalance]
-                    nested = list(_rows(title.strip("[]").split("]")[0], getattr(model, key), units))
+                    nested = list(_rows(title.strip("[]").split("]")[0], getattr(model, key), units, f"{path}{key}.", written))
                     blocks.append(table(f"{title} {key}", header, nested, (False, False, True, False, False)))
         if name == "soil" and hasattr(scene, "soil_springs"):
             blocks.append(_springs_table(scene))
