@@ -119,7 +119,7 @@ def _gazetas_scene(tmp_path, method="gazetas"):
 
 
 def _springs_table(tables) -> dict[tuple[str, str], list[float]]:
-    return {(r[0], r[1]): [_value(c) for c in r[2:]] for r in _table(tables, "Springs at O each order is solved with")}
+    return {(r[0], r[1]): [_value(c) for c in r[2:]] for r in _table(tables, "Springs at O each order (and mode) is solved with")}
 
 
 def test_gazetas_block_springs_are_table_1_of_the_printed_inputs(tmp_path):
@@ -152,7 +152,7 @@ def test_one_orders_response_solves_from_the_printed_k_c_m_and_q(tmp_path):
     tables = _sheet(_gazetas_scene(tmp_path))
     M, K = _matrix(tables, "M"), _matrix(tables, "K")
     springs = _springs_table(tables)
-    dashpots = {(r[0], r[1]): [_value(c) for c in r[2:]] for r in _table(tables, "Dashpots at O each order is solved with")}
+    dashpots = {(r[0], r[1]): [_value(c) for c in r[2:]] for r in _table(tables, "Dashpots at O each order (and mode) is solved with")}
     loads = {(r[0], r[1]): r for r in _table(tables, "Generalised loads about O")}
     response = {(r[0], r[1]): r for r in _table(tables, "Z = (K − Ω² M")}
     order = ("compressor", "1")
@@ -190,8 +190,10 @@ def test_block_soil_chains_end_in_the_solvers_springs(tmp_path, method, embedmen
     path = tmp_path / "soil.toml"
     path.write_text(text)
     scene = load_scene(path)
-    blocks = block_soil_blocks(scene, scene.model())
-    chains = [b for b in blocks if isinstance(b, Chain)]
+    model = scene.model()
+    blocks = block_soil_blocks(scene, model)
+    *chains, tilt = [b for b in blocks if isinstance(b, Chain)]
+    np.testing.assert_allclose([tilt.values["K_44"], tilt.values["K_55"]], np.diagonal(model.K)[3:5], rtol=1e-9)
     if method in ("gazetas", "pais_kausel"):
         orders = orders_of(scene)
         springs, dashpots = scene.soil_impedance(np.array([w for *_, w in orders]))
@@ -221,3 +223,29 @@ def test_a_power_with_decimals_prints_whole():
     chain.given("r", 2.0, "-", "ratio")
     chain.step("K", "4.25*r**2.45 + r**2", "-", "[PK]", "a spring")
     assert chain.rows[-1][1] == "4.25·r^2.45 + r²"
+
+
+def test_each_mode_returns_its_own_frequency_from_the_printed_springs(tmp_path):
+    """Mode j at its printed ω*: the j-th p of the printed M and K(ω*) = K + diag(k(ω*) − k(0)) is
+    ω* (4-figure inputs move p = √(k/m) by at most about 5e-4; 2e-3 allowed)."""
+    tables = _sheet(_gazetas_scene(tmp_path))
+    M, K = _matrix(tables, "M"), _matrix(tables, "K")
+    springs = _springs_table(tables)
+    static = np.array(springs[("static", "-")][1:])
+    for j in range(6):
+        omega, *k = springs[(f"mode {j + 1}", "ω*")]
+        p = np.sort(np.sqrt(np.linalg.eigvals(np.linalg.solve(M, K + np.diag(np.array(k) - static))).real))
+        assert abs(p[j] - omega) <= 2e-3 * omega, (j, p[j], omega)
+
+
+def test_given_springs_are_the_printed_k_less_the_printed_tilt():
+    """block_two_machines gives its springs at O: K's diagonal is them, rocking less W z_G, with
+    z_G = M_{u_x θ_y}/M from the printed M (an independent reading of block_model's −P h)."""
+    tables = _sheet(CONFIGS / "block_two_machines.toml")
+    given = [_value(v) for v in next(r for r in _table(tables, "[soil]") if r[0] == "stiffness")[2].split(", ")]
+    M, K = _matrix(tables, "M"), _matrix(tables, "K")
+    tilt = M[0, 0] * 9.81 * M[0, 4] / M[0, 0]
+    expected = np.array(given) - np.array([0, 0, 0, tilt, tilt, 0])
+    np.testing.assert_allclose(np.diagonal(K), expected, rtol=ROUNDED)
+    printed = _results(_table(tables, "Rocking entries of K"))
+    assert _close(printed["z_G"], M[0, 4] / M[0, 0]) and _close(printed["K_44"], expected[3])

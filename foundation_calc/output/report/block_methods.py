@@ -250,7 +250,7 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
         " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
         " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
-    for chain in block_soil_blocks(scene, model):
+    for chain in block_soil_blocks(scene, model, own):
         blocks += chain.blocks() if hasattr(chain, "nomenclature") else [chain]
         if hasattr(chain, "nomenclature"):
             blocks.append(Definitions(chain.nomenclature))
@@ -267,7 +267,7 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         forcing, response = _harmonics(solve)
         blocks.append(forcing)
         if dependent:
-            blocks += order_springs_table(scene, model, orders_of(scene))
+            blocks += order_springs_table(scene, model, orders_of(scene, own))
         blocks.append(response)
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]

@@ -50,6 +50,16 @@ def _givens(chain: Chain, scene, model) -> None:
         chain.given(name, value, "kg m²", f"moment of inertia of the block and the machines about the axis {axis} through O (M's diagonal)")
 
 
+MEANINGS = ("sliding spring along x", "sliding spring along y", "vertical spring", "rocking spring about x",
+            "rocking spring about y", "torsional spring about z")
+
+
+def _springs(chain: Chain, formulas: tuple[str, ...], sources: tuple[str, ...]) -> None:
+    """The six springs at O, K_x ... K_rz, by the method's ``formulas``."""
+    for K, formula, unit, source, meaning in zip(SPRINGS, formulas, UNITS_K, sources, MEANINGS):
+        chain.step(K, formula, unit, source, meaning)
+
+
 def _dashpots(chain: Chain) -> None:
     """C_i = 2 ξ_i √(K_i m_i) of every motion, as the solver makes them."""
     for C, xi, K, m, unit in zip(DASHPOTS, RATIOS, SPRINGS, MASSES, UNITS_C):
@@ -78,12 +88,9 @@ def lysmer_chain(scene, model) -> Chain:
     chain.step("r0y", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about y")
     chain.step("r0x", "(L*B**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about x")
     chain.step("r0t", "(L*B*(L**2 + B**2)/(6*pi))**0.25", "m", RHW, "radius of the circle of the base's polar second moment")
-    chain.step("K_x", "32*(1 - nu)*G*r0/(7 - 8*nu)", "N/m", f"{RHW} (Hall)", "sliding spring along x")
-    chain.step("K_y", "K_x", "N/m", f"{RHW} (Hall)", "sliding spring along y")
-    chain.step("K_z", "4*G*r0/(1 - nu)", "N/m", f"{RHW} (Lysmer)", "vertical spring")
-    chain.step("K_rx", "8*G*r0x**3/(3*(1 - nu))", "N m/rad", f"{RHW} (Hall)", "rocking spring about x")
-    chain.step("K_ry", "8*G*r0y**3/(3*(1 - nu))", "N m/rad", f"{RHW} (Hall)", "rocking spring about y")
-    chain.step("K_rz", "16*G*r0t**3/3", "N m/rad", f"{RHW} (Reissner-Sagoci)", "torsional spring about z")
+    _springs(chain, ("32*(1 - nu)*G*r0/(7 - 8*nu)", "K_x", "4*G*r0/(1 - nu)", "8*G*r0x**3/(3*(1 - nu))",
+                     "8*G*r0y**3/(3*(1 - nu))", "16*G*r0t**3/3"),
+             tuple(f"{RHW} ({who})" for who in ("Hall", "Hall", "Lysmer", "Hall", "Hall", "Reissner-Sagoci")))
     chain.step("B_x", "(7 - 8*nu)*M/(32*(1 - nu)*rho*r0**3)", "-", RHW, "sliding mass ratio")
     chain.step("xi_x", "0.2875/sqrt(B_x) + xi_m", "-", RHW, "sliding damping ratio along x (radiation + material)")
     chain.step("xi_y", "xi_x", "-", RHW, "sliding damping ratio along y")
@@ -97,6 +104,13 @@ def lysmer_chain(scene, model) -> Chain:
     chain.step("xi_rz", "0.5/(1 + 2*B_t) + xi_m", "-", RHW, "torsional damping ratio (radiation + material)")
     _dashpots(chain)
     return chain
+
+
+def _base(chain: Chain, source: str) -> None:
+    """The base's area A and second moments I_x, I_y."""
+    chain.step("A", "L*B", "m²", source, "area of the base")
+    chain.step("I_x", "L*B**3/12", "m⁴", source, "second moment of the base about x")
+    chain.step("I_y", "B*L**3/12", "m⁴", source, "second moment of the base about y")
 
 
 def coefficients_chain(scene, model) -> Chain:
@@ -117,15 +131,8 @@ def coefficients_chain(scene, model) -> Chain:
         chain.step("c_psi", "k_psi*c_x", "N/m³", BA, "coefficient of non-uniform shear (torsion)")
     else:
         chain.given("c_psi", s.c_psi, "N/m³", "coefficient of non-uniform shear (torsion)")
-    chain.step("A", "L*B", "m²", BA, "area of the base")
-    chain.step("I_x", "L*B**3/12", "m⁴", BA, "second moment of the base about x")
-    chain.step("I_y", "B*L**3/12", "m⁴", BA, "second moment of the base about y")
-    chain.step("K_x", "c_x*A", "N/m", BA, "sliding spring along x")
-    chain.step("K_y", "c_x*A", "N/m", BA, "sliding spring along y")
-    chain.step("K_z", "c_z*A", "N/m", BA, "vertical spring")
-    chain.step("K_rx", "c_phi*I_x", "N m/rad", BA, "rocking spring about x")
-    chain.step("K_ry", "c_phi*I_y", "N m/rad", BA, "rocking spring about y")
-    chain.step("K_rz", "c_psi*(I_x + I_y)", "N m/rad", BA, "torsional spring about z")
+    _base(chain, BA)
+    _springs(chain, ("c_x*A", "c_x*A", "c_z*A", "c_phi*I_x", "c_phi*I_y", "c_psi*(I_x + I_y)"), (BA,) * 6)
     chain.step("xi_y", "xi_x", "-", BA, "sliding damping ratio along y")
     chain.step("xi_ry", "xi_rx", "-", BA, "rocking damping ratio about y")
     if len(xi) == 4:
@@ -138,29 +145,18 @@ def coefficients_chain(scene, model) -> Chain:
 
 def sp26_chain(scene, model) -> Chain:
     """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``_planes``)."""
+    from foundation_calc.output.report.soil_methods import sp26_givens
     from foundation_calc.scenes.block_soil import SP26_TORSION
-    from foundation_calc.solvers.constants import GRAVITY
-    from foundation_calc.solvers.soil.sp26 import A10, B0_BY_CLASS
 
-    s = scene.soil
     chain = Chain("Block soil springs and dashpots at O by SP 26.13330 (soil.method = \"sp26\")")
     _givens(chain, scene, model)
-    chain.given("E", s.deformation_modulus, "Pa", "static deformation modulus of the soil")
-    chain.given("b_sp", B0_BY_CLASS[s.soil_class], "1/m", f"coefficient of the soil class ({s.soil_class})")
-    chain.given("A10", A10, "m²", "reference area of the code's formula")
-    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+    sp26_givens(chain, scene.soil)
     chain.given("k_psi", SP26_TORSION[0], "-", "ratio C_ψ/C_z (SNiP 2.02.05-87)")
     chain.given("k_xi", SP26_TORSION[1], "-", "ratio ξ_ψ/ξ_z (SNiP 2.02.05-87)")
-    chain.step("A", "L*B", "m²", SP26, "area of the base")
-    chain.step("I_x", "L*B**3/12", "m⁴", SP26, "second moment of the base about x")
-    chain.step("I_y", "B*L**3/12", "m⁴", SP26, "second moment of the base about y")
+    _base(chain, SP26)
     chain.step("c_zsp", "b_sp*E*(1 + sqrt(A10/A))", "N/m³", SP26, "coefficient of elastic uniform compression")
-    chain.step("K_x", "0.7*c_zsp*A", "N/m", f"{SP26}, C_x = 0.7 C_z", "sliding spring along x")
-    chain.step("K_y", "0.7*c_zsp*A", "N/m", f"{SP26}, C_x = 0.7 C_z", "sliding spring along y")
-    chain.step("K_z", "c_zsp*A", "N/m", SP26, "vertical spring")
-    chain.step("K_rx", "2*c_zsp*I_x", "N m/rad", f"{SP26}, C_φ = 2 C_z", "rocking spring about x")
-    chain.step("K_ry", "2*c_zsp*I_y", "N m/rad", f"{SP26}, C_φ = 2 C_z", "rocking spring about y")
-    chain.step("K_rz", "k_psi*c_zsp*(I_x + I_y)", "N m/rad", "SNiP 2.02.05-87, C_ψ = C_z", "torsional spring about z")
+    _springs(chain, ("0.7*c_zsp*A", "0.7*c_zsp*A", "c_zsp*A", "2*c_zsp*I_x", "2*c_zsp*I_y", "k_psi*c_zsp*(I_x + I_y)"),
+             (f"{SP26}, C_x = 0.7 C_z",) * 2 + (SP26,) + (f"{SP26}, C_φ = 2 C_z",) * 2 + ("SNiP 2.02.05-87, C_ψ = C_z",))
     chain.step("p_m", "M*g/A/1000", "kPa", SP26, "mean static pressure under the base")
     chain.step("xi_z", "2/sqrt(p_m)", "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
     chain.step("xi_x", "0.6*xi_z", "-", SP26, "sliding damping ratio along x")
@@ -215,7 +211,7 @@ def _torsion_at(chain: Chain, static: Chain, omega: float) -> None:
     for name in ("J_z", "rho", "xi_m", "Bh", "r", "J_t", "K_rz", "V_s"):
         meaning, unit = static.nomenclature[SYMBOLS.get(name, name)]
         chain.given(name, static.values[name], unit, meaning)
-    chain.given("omega_s", omega, "rad/s", "circular frequency n ω of the order")
+    chain.given("omega_s", omega, "rad/s", "circular frequency n ω of the order, or a mode's own ω*")
     chain.step("a_d", "omega_s*Bh/V_s", "-", PK, "dimensionless frequency")
     chain.step("k_t", "1 - (0.33 - 0.03*sqrt(r - 1))*a_d**2/(0.8/(1 + 0.33*(r - 1)) + a_d**2)", "-", PK, "dynamic modifier of the torsional spring")
     chain.step("c_t", "a_d**2/(1.4/(1 + 3*(r - 1)**0.7) + a_d**2)", "-", PK, "torsional radiation coefficient")
@@ -225,14 +221,18 @@ def _torsion_at(chain: Chain, static: Chain, omega: float) -> None:
     chain.step("C_rzw", "2*xi_rzw*sqrt(K_rzw*J_z)", "N m s/rad", "[RHW] ch. 10, C = 2 ξ √(K m)", "torsional dashpot at O at n ω")
 
 
-def orders_of(scene) -> list[tuple[str, int, float]]:
-    """(machine, n, n ω [rad/s]) of every order of every machine, as the block's response solves them."""
-    return [(e.name, int(n), float(n * e.omega)) for e in scene.excitations() for n in e.orders]
+def orders_of(scene, own=None) -> list[tuple[str, str, str, float]]:
+    """(machine, n, column head, n ω [rad/s]) of every order of every machine, as the block's
+    response solves them, then ("mode j", "ω*", head, ω_j*) of each mode at its own frequency
+    (``own`` [rad/s], the resonance check's), as the sheet's modes take them."""
+    found = [(e.name, str(int(n)), f"{e.name}, n = {int(n)}", float(n * e.omega)) for e in scene.excitations() for n in e.orders]
+    return found + [(f"mode {j + 1}", "ω*", f"mode {j + 1} at ω*", float(w)) for j, w in enumerate(own or ())]
 
 
 def gazetas_blocks(scene, model, orders) -> list:
     """Static chains of torsion and in both planes, then the springs and dashpots at each order's
-    n ω (at most :data:`MOST_COLUMNS` orders side by side per table)."""
+    n ω and each mode's ω* (``orders``: :func:`orders_of`; at most :data:`MOST_COLUMNS` side by
+    side per table)."""
     from foundation_calc.output.report.soil_methods import gazetas_at, gazetas_springs_chain, pais_kausel_springs_chain
 
     build = pais_kausel_springs_chain if scene.soil.method_used == "pais_kausel" else gazetas_springs_chain
@@ -250,35 +250,36 @@ def gazetas_blocks(scene, model, orders) -> list:
                          " dashpots follow, C_i = 2 ξ_i √(K_i m_i) at O."))
     for start in range(0, len(orders), MOST_COLUMNS):
         shown = orders[start:start + MOST_COLUMNS]
-        heads = tuple(f"{name}, n = {n}" for name, n, _ in shown)
+        heads = tuple(head for *_, head, _ in shown)
         for across, static, (C_h, C_r) in zip((False, True), statics, (("C_xw", "C_ryw"), ("C_yw", "C_rxw"))):
             chains = []
-            for _, _, omega in shown:
+            for *_, omega in shown:
                 chain = Chain("")
-                gazetas_at(chain, _plane(scene, model, across), static, omega, "circular frequency n ω of the order", name="omega_s")
+                gazetas_at(chain, _plane(scene, model, across), static, omega, "circular frequency n ω of the order, or a mode's own ω*", name="omega_s")
                 if not across:
                     chain.step("C_zw", "2*xi_zw*sqrt(K_zw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "vertical dashpot at O at n ω")
                 chain.step(C_h, "2*xi_xw*sqrt(K_xw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "sliding dashpot at O at n ω")
                 chain.step(C_r, "2*xi_phiw*sqrt(K_phiw*I_0)", "N m s/rad", "[RHW] ch. 10, C = 2 ξ √(K m)", "rocking dashpot at O at n ω")
                 chains.append(chain)
             axis = "y" if across else "x"
-            out.append(Columns(f"Plane of {axis} at each order's n ω (the chain above's springs; [PK] modifiers, [Ga] dashpots)",
-                               heads, chains, (("omega_s", "n ω", "[PK]"),)))
+            out.append(Columns(f"Plane of {axis} at each order's n ω and each mode's ω* (the chain above's springs; [PK] modifiers, [Ga] dashpots)",
+                               heads, chains, (("omega_s", "n ω, or ω*", "[PK]"),)))
         chains = []
-        for _, _, omega in shown:
+        for *_, omega in shown:
             chain = Chain("")
             _torsion_at(chain, torsion, omega)
             chains.append(chain)
-        out.append(Columns("Torsion at each order's n ω", heads, chains, (("omega_s", "n ω", "[PK]"),)))
+        out.append(Columns("Torsion at each order's n ω and each mode's ω*", heads, chains, (("omega_s", "n ω, or ω*", "[PK]"),)))
     return out
 
 
 def order_springs_table(scene, model, orders) -> tuple[Table, Table]:
-    """The six springs and dashpots at O that each order's response was solved with (the
-    solver's ``soil_impedance`` at n ω), under those at ω = 0 that K and C above hold."""
+    """The six springs and dashpots at O that each order's response (and each mode) was solved
+    with (the solver's ``soil_impedance`` at n ω or ω*; ``orders``: :func:`orders_of`), under
+    those at ω = 0 that K and C above hold."""
     omegas = np.array([0.0] + [w for *_, w in orders])
     springs, dashpots = scene.soil_impedance(omegas)
-    labels = [("static", "-", "0")] + [(name, str(n), None) for name, n, _ in orders]
+    labels = [("static", "-", "0")] + [(name, n, None) for name, n, *_ in orders]
     omega_col = column(list(omegas), 4)
     labels = [(a, b, omega_col[k]) for k, (a, b, _) in enumerate(labels)]
 
@@ -287,20 +288,41 @@ def order_springs_table(scene, model, orders) -> tuple[Table, Table]:
         head = ("machine", "n", "Ω = nω [rad/s]", *(f"{s} [{u}]" for s, u in zip(names, units)))
         return table(title, head, [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)], (False, False, *(True,) * 7))
 
-    return (tab("Springs at O each order is solved with, k(nω); K(nω) = K + diag(k(nω) − k(0)) (K above, with −W z_G)",
+    return (tab("Springs at O each order (and mode) is solved with, k(nω); K(nω) = K + diag(k(nω) − k(0)) (K above, with −W z_G)",
                 springs, SPRINGS, UNITS_K),
-            tab("Dashpots at O each order is solved with, c(nω); C(nω) = diag(c(nω))", dashpots, DASHPOTS, UNITS_C))
+            tab("Dashpots at O each order (and mode) is solved with, c(nω); C(nω) = diag(c(nω))", dashpots, DASHPOTS, UNITS_C))
 
 
-def block_soil_blocks(scene, model) -> list:
+def tilt_chain(model, springs) -> Chain:
+    """K's rocking entries: the springs K_rx, K_ry at O less the weight's tilt W z_G ([KM] (3.4)'s
+    −P h; :func:`~foundation_calc.solvers.block.model.block_model`), z_G from M's first moment."""
+    from foundation_calc.solvers.constants import GRAVITY
+
+    chain = Chain("Rocking entries of K: the springs at O less the weight's tilt W z_G")
+    chain.given("M", model.M[0, 0], "kg", "total mass of the block and the machines")
+    chain.given("S_y", model.M[0, 4], "kg m", "first moment of the mass about the base, M z_G (M's entry u_x, θ_y)")
+    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+    chain.given("K_rx", springs[3], "N m/rad", "rocking spring at O about x")
+    chain.given("K_ry", springs[4], "N m/rad", "rocking spring at O about y")
+    chain.step("z_G", "S_y/M", "m", "[KM] (3.4)", "height of the centre of mass above the base")
+    chain.step("W", "M*g", "N", "[KM] (3.4)", "weight of the block and the machines")
+    chain.step("K_44", "K_rx - W*z_G", "N m/rad", "[KM] (3.4), −P h", "entry θ_x, θ_x of K")
+    chain.step("K_55", "K_ry - W*z_G", "N m/rad", "[KM] (3.4), −P h", "entry θ_y, θ_y of K")
+    return chain
+
+
+def block_soil_blocks(scene, model, own=None) -> list:
     """The soil's part of the block's sheet: the chain of its method (a frequency-dependent soil's
-    at every order's n ω as well; :func:`order_springs_table` gives the solver's at each order)."""
+    at every order's n ω and each mode's own ω* (``own`` [rad/s]) as well; :func:`order_springs_table`
+    gives the solver's at each)."""
     method = scene.soil.method_used
+    tilt = tilt_chain(model, model.springs)
     if method == "springs":
-        return [Paragraph("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (before −W z_G) and C above.")]
+        return [Paragraph("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
+                          " entries less W z_G) and C below."), tilt]
     if method in ("gazetas", "pais_kausel"):
-        return gazetas_blocks(scene, model, orders_of(scene))
-    return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[method](scene, model)]
+        return [*gazetas_blocks(scene, model, orders_of(scene, own)), tilt]
+    return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[method](scene, model), tilt]
 
 
-__all__ = ["block_soil_blocks", "coefficients_chain", "gazetas_blocks", "lysmer_chain", "order_springs_table", "orders_of", "sp26_chain"]
+__all__ = ["block_soil_blocks", "coefficients_chain", "tilt_chain", "gazetas_blocks", "lysmer_chain", "order_springs_table", "orders_of", "sp26_chain"]
