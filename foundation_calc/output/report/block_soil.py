@@ -36,7 +36,7 @@ UNITS_K = ("N/m", "N/m", "N/m", "N m/rad", "N m/rad", "N m/rad")
 UNITS_C = ("N s/m", "N s/m", "N s/m", "N m s/rad", "N m s/rad", "N m s/rad")
 MASSES = ("M", "M", "M", "J_x", "J_y", "J_z")
 #: At most this many orders side by side (the page's width).
-MOST_COLUMNS = 5
+MOST_COLUMNS = 4
 
 
 def _givens(chain: Chain, scene, model) -> None:
@@ -62,8 +62,8 @@ def _springs(chain: Chain, formulas: tuple[str, ...], sources: tuple[str, ...]) 
 
 def _dashpots(chain: Chain) -> None:
     """C_i = 2 ξ_i √(K_i m_i) of every motion, as the solver makes them."""
-    for C, xi, K, m, unit in zip(DASHPOTS, RATIOS, SPRINGS, MASSES, UNITS_C):
-        chain.step(C, f"2*{xi}*sqrt({K}*{m})", unit, "[RHW] ch. 10, C = 2 ξ √(K m)", f"dashpot of {K[2:]} at O")
+    for C, xi, K, m, unit, motion in zip(DASHPOTS, RATIOS, SPRINGS, MASSES, UNITS_C, MEANINGS):
+        chain.step(C, f"2*{xi}*sqrt({K}*{m})", unit, "[RHW] ch. 10, C = 2 ξ √(K m)", f"dashpot at O: {motion.replace(' spring', '')}")
 
 
 def _half_space(chain: Chain, scene) -> None:
