@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.output.report.block_soil import block_soil_blocks, order_springs_table, orders_of
 from foundation_calc.output.report.handcalc import Definitions
 from foundation_calc.output.report.model import Paragraph, Table, table
 from foundation_calc.output.report.numbers import column, figure, phased
@@ -249,6 +250,10 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
         " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
         " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
+    for chain in block_soil_blocks(scene, model, own):
+        blocks += chain.blocks() if hasattr(chain, "nomenclature") else [chain]
+        if hasattr(chain, "nomenclature"):
+            blocks.append(Definitions(chain.nomenclature))
     blocks.append(_matrices(model))
     if dependent:
         blocks.append(Paragraph(
@@ -259,7 +264,11 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     blocks.append(_modes(solve, dominant))
     if amplitudes is not None and not amplitudes.get("resonant", False):
         blocks += _unbalances(scene)
-        blocks += _harmonics(solve)
+        forcing, response = _harmonics(solve)
+        blocks.append(forcing)
+        if dependent:
+            blocks += order_springs_table(scene, model, orders_of(scene, own))
+        blocks.append(response)
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]
         limits = scene.limits

@@ -39,6 +39,9 @@ SYMBOLS = {
     "c12_42": "(c12+c42)", "omega_i": "ω_i", "rho_P": "ρ_P", "Omega_r": "Ω_r", "eta_s": "η_r",
     "l1": "l'", "l1_rod": "l'_rod", "zeta_z": "ζ_z", "zeta_zw": "ζ_z(ω)", "zeta_z2w": "ζ_z(2ω)",
     "l2": "l''", "rho_rod": "ρ_rod", "kappa": "κ", "g_s": "g*", "M_th1": "M_θ1", "k0w": "k0(ω)", "k02w": "k0(2ω)", "C_zw": "C_z(ω)", "K_z2w": "K_z(2ω)", "C_z2w": "C_z(2ω)",
+    "xi_y": "ξ_y", "xi_rx": "ξ_rx", "xi_ry": "ξ_ry", "xi_rz": "ξ_rz", "xi_rzw": "ξ_rz(ω)", "K_rzw": "K_rz(ω)", "C_rzw": "C_rz(ω)",
+    "C_xw": "C_x(ω)", "C_yw": "C_y(ω)", "C_rxw": "C_rx(ω)", "C_ryw": "C_ry(ω)", "eta_t": "η_t", "K_t0": "K_t,s", "r0t": "r0θ",
+    "r0x": "r0ψx", "r0y": "r0ψy", "k_psi": "k_ψ", "c_psi": "c_ψ", "k_xi": "k_ξ", "c_zsp": "c_z,SP",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
@@ -49,8 +52,8 @@ _POWERS = {"**2": "²", "**3": "³", "**4": "⁴", "**5": "⁵", "**0.5": "^½",
 def _pretty(expression: str, names, times: str = "·") -> str:
     """The expression as printed: symbols for names, ``times`` for *, superscripts, √."""
     text = expression
-    for power, shown in _POWERS.items():
-        text = text.replace(power, shown)
+    for power, shown in _POWERS.items():  # not **2 of **2.45
+        text = re.sub(re.escape(power) + r"(?![0-9.])", shown, text)
     text = re.sub(r"\*\*\(([0-9./]+)\)", r"^(\1)", text)
     text = re.sub(r"\*\*([0-9.]+)", r"^\1", text)
     text = text.replace("*", times).replace("/", " / ").replace("sqrt", "√")

@@ -182,19 +182,24 @@ def gazetas_dynamic_chain(scene, static: Chain) -> Chain:
     return gazetas_at(chain, scene, static, scene.speed.omega_rad_s, "operating speed (circular frequency of the first harmonic)")
 
 
-def sp26_springs_chain(scene) -> Chain:
-    """The springs and damping ratios of SP 26.13330 from the static deformation modulus."""
+def sp26_givens(chain: Chain, soil) -> None:
+    """SP 26.13330's inputs: the deformation modulus, the soil class's b₀, A₁₀ and g."""
     from foundation_calc.solvers.soil.sp26 import A10, B0_BY_CLASS
 
+    chain.given("E", soil.deformation_modulus, "Pa", "static deformation modulus of the soil")
+    chain.given("b_sp", B0_BY_CLASS[soil.soil_class], "1/m", f"coefficient of the soil class ({soil.soil_class})")
+    chain.given("A10", A10, "m²", "reference area of the code's formula")
+    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
+
+
+def sp26_springs_chain(scene) -> Chain:
+    """The springs and damping ratios of SP 26.13330 from the static deformation modulus."""
     f, s = scene.foundation, scene.soil
     chain = Chain("Soil springs and damping by SP 26.13330 (soil.method = \"sp26\")")
-    chain.given("E", s.deformation_modulus, "Pa", "static deformation modulus of the soil")
-    chain.given("b_sp", B0_BY_CLASS[s.soil_class], "1/m", f"coefficient of the soil class ({s.soil_class})")
+    sp26_givens(chain, s)
     chain.given("A", f.base_area, "m²", "area of the base")
     chain.given("I1", f.base_second_moment, "m⁴", "second moment of the base area about its axis normal to the plane")
-    chain.given("A10", A10, "m²", "reference area of the code's formula")
     chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass")
-    chain.given("g", GRAVITY, "m/s²", "acceleration of gravity")
     chain.step("C_z", "b_sp*E*(1 + sqrt(A10/A))", "N/m³", SP26, "coefficient of elastic uniform compression")
     chain.step("K_z", "C_z*A", "N/m", SP26, "vertical base spring")
     chain.step("K_x", "0.7*C_z*A", "N/m", f"{SP26}, C_x = 0.7 C_z", "horizontal base spring")
@@ -214,4 +219,4 @@ def gazetas_chains(scene) -> list[Chain]:
 
 
 __all__ = ["gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "pais_kausel_springs_chain",
-           "soil_givens", "sp26_springs_chain"]
+           "soil_givens", "sp26_givens", "sp26_springs_chain"]
