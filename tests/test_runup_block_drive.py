@@ -203,3 +203,13 @@ def test_drive_keys_of_a_machine_are_validated(runner, tmp_path):
     path.write_text(path.read_text(encoding="utf-8").replace("torque = 1.0", "torque = 1.0\npower = 5e3"), encoding="utf-8")
     result = runner.invoke(app, ["runup", str(path)])
     assert result.exit_code == 3 and "exactly one" in result.output and "machines" in result.output
+
+
+def test_a_motor_below_every_resonance_is_judged(tmp_path):
+    """A fan run at 30 rad/s, below the block's lowest mode (40 rad/s), passes no resonance: its
+    motor reaching the speed is a pass, not "not judged" (no limit, no Sommerfeld row)."""
+    path = scene_file(tmp_path, 5.0, 0.1)
+    path.write_text(path.read_text(encoding="utf-8").replace("speed = 60.0", "speed = 30.0"), encoding="utf-8")
+    report = check_runup(load_scene(path), None, None)
+    assert report.motors["fan"].reached and report.torques == ()
+    assert report.judged and report.outcome.value == "pass"

@@ -82,8 +82,9 @@ class RunupReport:
 
     @property
     def judged(self) -> bool:
-        """True when a limit or a motor's torque judged something."""
-        return bool(self.torques) or any(row.outcome is not None for row in self.rows)
+        """True when a limit or a motor judged something (a motor that passes no resonance too:
+        it reached its speed)."""
+        return bool(self.motors) or any(row.outcome is not None for row in self.rows)
 
 
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
