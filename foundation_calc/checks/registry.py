@@ -195,7 +195,7 @@ def runup(scene) -> Finding | None:
         worst_torque = max(stuck, key=lambda t: t.needed / t.available)
         of = f" of {worst_torque.machine}" if worst_torque.machine else ""
         parts += [("; " if parts else "") + f"the motor{of} {'sticks' if worst_torque.outcome is Outcome.FAIL else 'barely passes'}"
-                  f" at mode {worst_torque.mode}: it needs {worst_torque.needed:.4g} N m, has {worst_torque.available:.4g} N m"]
+                  f" at mode {worst_torque.mode + 1}: it needs {worst_torque.needed:.4g} N m, has {worst_torque.available:.4g} N m"]
     elif report.motors:
         parts += [("; " if parts else "") + ("the motor" if len(report.motors) == 1 else "every motor") + " passes every resonance"]
     details = tuple(
