@@ -82,9 +82,10 @@ class RunupReport:
 
     @property
     def judged(self) -> bool:
-        """True when a limit or a motor judged something (a motor that passes no resonance too:
-        it reached its speed)."""
-        return bool(self.motors) or any(row.outcome is not None for row in self.rows)
+        """True when a limit or a motor's torque judged something, or a motor that passes no
+        resonance reached its speed."""
+        reached = any(m.reached for m in self.motors.values())
+        return bool(self.torques) or reached or any(row.outcome is not None for row in self.rows)
 
 
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
