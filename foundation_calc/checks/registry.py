@@ -193,10 +193,11 @@ def runup(scene) -> Finding | None:
     stuck = [t for t in report.torques if t.outcome is not Outcome.PASS]
     if stuck:
         worst_torque = max(stuck, key=lambda t: t.needed / t.available)
-        parts += [("; " if parts else "") + f"the motor {'sticks' if worst_torque.outcome is Outcome.FAIL else 'barely passes'}"
-                  f" at mode {worst_torque.mode}: it needs {worst_torque.needed:.4g} N m, has {worst_torque.available:.4g} N m"]
-    elif report.motor is not None:
-        parts += [("; " if parts else "") + "the motor passes every resonance"]
+        of = f" of {worst_torque.machine}" if worst_torque.machine else ""
+        parts += [("; " if parts else "") + f"the motor{of} {'sticks' if worst_torque.outcome is Outcome.FAIL else 'barely passes'}"
+                  f" at mode {worst_torque.mode + 1}: it needs {worst_torque.needed:.4g} N m, has {worst_torque.available:.4g} N m"]
+    elif report.motors:
+        parts += [("; " if parts else "") + ("the motor" if len(report.motors) == 1 else "every motor") + " passes every resonance"]
     details = tuple(
         f"{'NOT JUDGED' if row.outcome is None else row.outcome.value.upper()} {row.point} {run_title(row.run)}:"
         f" |u| {row.value:.4g} m"

@@ -10,8 +10,12 @@ peaks of several machines add (:mod:`~foundation_calc.solvers.block.response`). 
 are also run together, each from rest to its own speed in the same time
 (:func:`~foundation_calc.solvers.block.runup.machines_structure`): passages of several machines
 may then coincide; that run's peak is at least the machines' steady peaks added (its hold at the
-final speeds samples their sum, which reaches that bound only over a long time). An undamped structure gets a warning: its passage
-peaks are Lewis' asymptote and the time integration's ringing never decays.
+final speeds samples their sum, which reaches that bound only over a long time). A scene's
+``[drive]``, or a block machine's ``[machines.drive]``, starts that structure by its motor
+(:func:`~foundation_calc.solvers.numerics.sommerfeld.motor_runup`): a block machine's motor
+turns the machine's own structure, its peaks with the other machines' steady peaks added as the
+ramp's. An undamped structure gets a warning: its passage peaks are Lewis' asymptote and the time
+integration's ringing never decays.
 """
 
 from __future__ import annotations
@@ -44,8 +48,10 @@ class RunupReport:
     runs : {"run_up" | "run_down": RunupResult}; a block's ``"run_up:MACHINE"`` ... per machine,
         whose ``transient_points`` and ``transient_directions`` include the other machines'
         steady peaks (``steady_points`` the machine's own)
-    motor : the start-up by the scene's [drive] (MotorRun), or None
-    torques : Sommerfeld rows, one per resonance passed, when there is a motor
+    motors : the start-ups by motor (MotorRun) by machine: "" the scene's [drive], a block
+        machine's name its [machines.drive] (its ``transient_points`` with the other machines'
+        steady peaks added); empty without a drive
+    torques : Sommerfeld rows, one per resonance each motor passes
     points : names of the measured points, in the order of the results' arrays
     directions : names of the directions of a point's displacement vector (the rows of its map)
     steady_points : peak displacement magnitude |u| of each point in the steady state at
@@ -61,7 +67,7 @@ class RunupReport:
     """
 
     runs: dict
-    motor: object
+    motors: dict
     torques: tuple
     points: tuple
     directions: tuple
@@ -76,8 +82,10 @@ class RunupReport:
 
     @property
     def judged(self) -> bool:
-        """True when a limit or a motor's torque judged something."""
-        return bool(self.torques) or any(row.outcome is not None for row in self.rows)
+        """True when a limit or a motor's torque judged something, or a motor that passes no
+        resonance reached its speed."""
+        reached = any(m.reached for m in self.motors.values())
+        return bool(self.torques) or reached or any(row.outcome is not None for row in self.rows)
 
 
 RUN_TITLES = {"run_up": "start-up", "run_down": "run-down", "motor": "motor start-up"}
@@ -96,7 +104,8 @@ def run_title(key: str) -> str:
 
 @dataclass(frozen=True)
 class TorqueRow:
-    """Sommerfeld check of one resonance: steady torque needed there against the motor's [N m]."""
+    """Sommerfeld check of one resonance: steady torque needed there against the motor's [N m];
+    ``machine`` the block's machine the motor starts ("" the scene's [drive])."""
 
     mode: int
     ratio: float
@@ -104,6 +113,7 @@ class TorqueRow:
     needed: float
     available: float
     outcome: Outcome
+    machine: str = ""
 
 
 #: Directions of a point's displacement vector per scene kind (the rows of the point maps of
@@ -181,11 +191,48 @@ def run_times(scene) -> tuple[float | None, float | None]:
     return getattr(operation, "run_up_time", None), getattr(operation, "run_down_time", None)
 
 
+def drives(scene) -> dict:
+    """The scene's motors by machine: ``{"": [drive]}`` for a crank or platform scene that gives
+    one, a block's ``{machine: [machines.drive]}`` for each machine that gives one."""
+    if scene.kind == "block_foundation":
+        return {m.name: m.drive for m in scene.machines if m.drive is not None}
+    drive = getattr(scene, "drive", None)  # None in a scene without the table
+    return {} if drive is None else {"": drive}
+
+
 def judged(scene) -> bool:
     """True when the scene gives something to judge a start-up by: a run time and
-    ``[limits] transient_amplitude``, or a ``[drive]`` (which may stick)."""
+    ``[limits] transient_amplitude``, or a drive (which may stick)."""
     up, down = run_times(scene)
-    return getattr(scene, "drive", None) is not None or (scene.limits.transient_amplitude is not None and (up, down) != (None, None))
+    return bool(drives(scene)) or (scene.limits.transient_amplitude is not None and (up, down) != (None, None))
+
+
+def _motor(scene, machine: str, drive, built, omega, carried: float):
+    """The start-up of ``built`` by ``drive`` (:func:`~foundation_calc.solvers.numerics.sommerfeld.motor_runup`)
+    and its Sommerfeld rows, one per resonance passed: FAIL where the steady need exceeds the
+    torque and the motor sticks, WARN where it exceeds it but the shaft passes on its kinetic
+    energy; a motor stuck although no need exceeds its torque fails at the passage nearest the
+    speed where it sticks. ``carried``: the inertia the shaft turns besides the drive's [kg m²]."""
+    from foundation_calc.solvers.numerics.runup import INSIGNIFICANT
+    from foundation_calc.solvers.numerics.sommerfeld import motor_runup
+
+    available = drive.available_torque
+    try:
+        motor = motor_runup(built, omega, available, drive.inertia + carried)
+    except ValueError as exc:
+        field = f"machines[{[m.name for m in scene.machines].index(machine)}].drive.inertia" if machine else "drive.inertia"
+        raise PhysicsError(str(exc), field=field) from None
+    largest = max((need.torque for need in motor.needs), default=0.0)
+    torques = []
+    for need in (n for n in motor.needs if n.torque >= INSIGNIFICANT * largest):
+        short = need.torque > available
+        outcome = Outcome.FAIL if short and not motor.reached else Outcome.WARN if short else Outcome.PASS
+        torques.append(TorqueRow(need.mode, need.ratio, need.speed, need.torque, available, outcome, machine))
+    if not motor.reached and torques and all(t.outcome is not Outcome.FAIL for t in torques):
+        # stuck although no steady need exceeds the torque: the passage nearest the stuck speed
+        k = min(range(len(torques)), key=lambda i: abs(torques[i].speed - motor.stuck_speed))
+        torques[k] = replace(torques[k], outcome=Outcome.FAIL)
+    return motor, torques
 
 
 def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
@@ -196,24 +243,25 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     PhysicsError
         when neither time is given, or a run is too long for the time integration.
     """
-    drive = getattr(scene, "drive", None)  # a block has none
-    if up is None and down is None and drive is None:
+    motors_of = drives(scene)
+    if up is None and down is None and not motors_of:
         raise PhysicsError(
-            "no run-up or run-down time: give [operation] run_up_time [s] (or run_down_time, or a [drive]) in"
-            " the scene, or --time / --down on the command line",
+            "no run-up or run-down time: give [operation] run_up_time [s] (or run_down_time, or a [drive];"
+            " a block's machine [machines.drive]) in the scene, or --time / --down on the command line",
             field="operation.run_up_time",
         )
     if scene.kind == "block_foundation":
         machines, names = _block_structures(scene)
-        carried = 0.0
+        carried = {m.name: m.unbalance_inertia for m in scene.machines}
     else:
-        built, names, omega, carried = _structure(scene)
+        built, names, omega, inertia = _structure(scene)
         machines = [("", built, omega)]
+        carried = {"": inertia}
     # the time integration (scipy.linalg's Schur form) only for a scene that is run up: fcalc check
     # and the sheet ask judged() of every scene
     import numpy as np
 
-    from foundation_calc.solvers.numerics.runup import INSIGNIFICANT, runup, steady_peaks
+    from foundation_calc.solvers.numerics.runup import runup, steady_peaks
 
     steadies = [steady_peaks(b, w) for m, b, w in machines if m != TOGETHER]
     steady_points, steady_directions = sum(s[0] for s in steadies), sum(s[1] for s in steadies)
@@ -238,30 +286,19 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
                     transient_directions=result.transient_directions + steady_directions - steadies[k][1],
                 )
             runs[f"{key}:{machine}" if machine else key] = result
-    motor, torques = None, []
-    if drive is not None:
-        built, omega = machines[0][1], machines[0][2]
-        from foundation_calc.solvers.numerics.sommerfeld import motor_runup
-
-        available = drive.available_torque
-        try:
-            motor = motor_runup(built, omega, available, drive.inertia + carried)
-        except ValueError as exc:
-            raise PhysicsError(str(exc), field="drive.inertia") from None
-        largest = max((need.torque for need in motor.needs), default=0.0)
-        for need in (n for n in motor.needs if n.torque >= INSIGNIFICANT * largest):
-            short = need.torque > available
-            outcome = Outcome.FAIL if short and not motor.reached else Outcome.WARN if short else Outcome.PASS
-            torques.append(TorqueRow(need.mode, need.ratio, need.speed, need.torque, available, outcome))
-        if not motor.reached and torques and all(t.outcome is not Outcome.FAIL for t in torques):
-            # stuck although no steady need exceeds the torque: the passage nearest the stuck speed
-            k = min(range(len(torques)), key=lambda i: abs(torques[i].speed - motor.stuck_speed))
-            torques[k] = replace(torques[k], outcome=Outcome.FAIL)
+    motors, torques = {}, []
+    for k, (machine, built, omega) in enumerate(machines):
+        if machine not in motors_of:
+            continue
+        motor, passed = _motor(scene, machine, motors_of[machine], built, omega, carried[machine])
+        if machine:  # a block's machine: the others at their steady speeds add, as in its ramp
+            motor = replace(motor, transient_points=motor.transient_points + steady_points - steadies[k][0])
+        motors[machine] = motor
+        torques += passed
     limit = scene.limits.transient_amplitude
     rows = []
     peaks = [(key, result.transient_points) for key, result in runs.items()]
-    if motor is not None:
-        peaks.append(("motor", motor.transient_points))
+    peaks += [(f"motor:{machine}" if machine else "motor", motor.transient_points) for machine, motor in motors.items()]
     for key, transient in peaks:
         for name, value in zip(names, transient):
             value = float(value)
@@ -277,7 +314,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
             .get(scene.kind, " (soil.damping)")
         )
     return RunupReport(
-        runs=runs, motor=motor, torques=tuple(torques), points=tuple(names), directions=DIRECTIONS[scene.kind],
+        runs=runs, motors=motors, torques=tuple(torques), points=tuple(names), directions=DIRECTIONS[scene.kind],
         steady_points=steady_points, steady_directions=steady_directions, omega=float(max(w for _, _, w in machines)),
         rows=tuple(rows), warnings=tuple(warnings),
         outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
@@ -286,4 +323,4 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     )
 
 
-__all__ = ["DIRECTIONS", "RUN_TITLES", "TOGETHER", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "judged", "run_times", "run_title"]
+__all__ = ["DIRECTIONS", "RUN_TITLES", "TOGETHER", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "drives", "judged", "run_times", "run_title"]

@@ -42,11 +42,13 @@ def _passage_document(p, result: RunupResult, points) -> dict:
     }
 
 
-def _motor_document(report: RunupReport) -> dict | None:
-    m = report.motor
+def _motor_document(report: RunupReport, machine: str) -> dict | None:
+    """The start-up by the motor of ``machine`` ("" the scene's [drive]), or None without it."""
+    m = report.motors.get(machine)
     if m is None:
         return None
     return {
+        "machine": machine or None,
         "torque": m.torque,
         "inertia": m.inertia,
         "reached": m.reached,
@@ -56,7 +58,7 @@ def _motor_document(report: RunupReport) -> dict | None:
         "sommerfeld": [
             {"mode": t.mode + 1, "mode_name": report.names[t.mode] if report.names else None, "harmonic": t.ratio, "speed": t.speed, "torque_needed": t.needed,
              "torque_available": t.available, "ratio": t.needed / t.available, "verdict": t.outcome.value}
-            for t in report.torques
+            for t in report.torques if t.machine == machine
         ],
     }
 
@@ -112,7 +114,8 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
             }
             for key, r in report.runs.items()
         },
-        "motor": _motor_document(report),
+        "motor": _motor_document(report, ""),
+        "motors": {machine: _motor_document(report, machine) for machine in report.motors if machine},
         "limits": [
             {"point": row.point, "run": row.run, "value": row.value, "limit": row.limit, "ratio": row.ratio,
              "verdict": NOT_JUDGED if row.outcome is None else row.outcome.value}
@@ -141,20 +144,20 @@ def _passages_table(key: str, r: RunupResult, points) -> Table:
     return table
 
 
-def _motor_table(report: RunupReport) -> Table:
-    m = report.motor
+def _motor_table(report: RunupReport, machine: str) -> Table:
+    m = report.motors[machine]
     outcome = (
         f"reaches the operating speed at t = {fmt(m.time, 4)} s" if m.reached
         else f"sticks at Ω ≈ {fmt(m.stuck_speed, 4)} rad/s (not at the operating speed after {fmt(m.time, 4)} s)"
     )
     title = (
-        f"Motor start-up (Sommerfeld): torque {fmt(m.torque, 5)} N m, shaft inertia {fmt(m.inertia, 5)} kg m²;"
+        f"{run_title(f'motor:{machine}' if machine else 'motor').capitalize()} (Sommerfeld): torque {fmt(m.torque, 5)} N m, shaft inertia {fmt(m.inertia, 5)} kg m²;"
         f" {outcome}"
     )
     table = Table(title=title, title_justify="left")
     for name in ("mode", "harmonic", "speed [rad/s]", "torque needed [N m]", "available [N m]", "ratio", "verdict"):
         table.add_column(escape(name), justify="right")
-    for t in report.torques:
+    for t in (t for t in report.torques if t.machine == machine):
         table.add_row(
             escape(mode_label(t.mode, report.names)), f"{t.ratio:g}ω", fmt(t.speed), fmt(t.needed, 4), fmt(t.available, 4),
             fmt(t.needed / t.available, 3), verdict_text(t.outcome.value),
@@ -175,7 +178,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     out = stdout()
     out.print(f"[bold]{escape(scene.name or source)}[/]  ({escape(source)}, {scene.kind})")
     if report.speeds:
-        out.print("Machines, each run from rest to its speed with the others' steady peaks added, then all together: " + ", ".join(
+        how = "each run from rest to its speed with the others' steady peaks added" + (", then all together" if report.runs else "")
+        out.print(f"Machines, {how}: " + ", ".join(
             f"{escape(name)} ω = {fmt(w, 6)} rad/s" for name, w in report.speeds))
     else:
         out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
@@ -191,8 +195,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     )
     if getattr(getattr(scene, "soil", None), "frequency_dependent", False):
         out.print(SOIL_NOTE)
-    if report.motor is not None:
-        out.print(_motor_table(report))
+    for machine in report.motors:
+        out.print(_motor_table(report, machine))
     table = Table(title="Largest displacement during the runs", title_justify="left")
     for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", "limit [m]", "ratio", "verdict"):
         table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
@@ -210,7 +214,7 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
     if report.judged:
         out.print(f"Verdict: {verdict_text(report.outcome.value)}")
     else:
-        missing = "no [limits] transient_amplitude" + ("" if scene.kind == "block_foundation" else ", no [drive]")
+        missing = "no [limits] transient_amplitude, no " + ("[machines.drive]" if scene.kind == "block_foundation" else "[drive]")
         out.print(f"Verdict: {NOT_JUDGED} ({escape(missing)})")
 
 
@@ -271,19 +275,19 @@ def plot_runup(report: RunupReport, path, title: str, limit: float | None) -> No
         speed = r.omega * (r.response.t / r.duration if r.direction > 0 else 1.0 - r.response.t / r.duration)
         records.append((run_title(key), r.response.t, r.response.magnitude, np.clip(speed, 0.0, r.omega),
                         [(p.time, p) for p in r.passages], r.steady))
-    if report.motor is not None:
-        m = report.motor
+    for machine, m in report.motors.items():
         marks = []
-        for t in report.torques:
+        for t in (t for t in report.torques if t.machine == machine):
             crossed = np.nonzero(m.speed >= t.speed)[0]
             if crossed.size:
                 marks.append((float(m.t[crossed[0]]), t))
-        records.append((run_title("motor"), m.t, m.magnitude, m.speed, marks, float(report.steady_points.max())))
+        records.append((run_title(f"motor:{machine}" if machine else "motor"), m.t, m.magnitude, m.speed, marks, float(report.steady_points.max())))
     fig, _ = new_figure(9.0, 1.0 + 3.0 * len(records))
     fig.clf()
     axes = fig.subplots(len(records), 1, squeeze=False)[:, 0]
     period = 2.0 * np.pi / report.omega
-    alone = {run_title(key) for key in report.runs if key.partition(":")[2] not in ("", TOGETHER)}  # one machine's runs
+    keys = [*report.runs, *(f"motor:{machine}" for machine in report.motors if machine)]
+    alone = {run_title(key) for key in keys if key.partition(":")[2] not in ("", TOGETHER)}  # one machine's runs
     for ax, (name, t, values, speed, marks, steady) in zip(axes, records):
         et, ev = _envelope(t, values, period)
         own = " (the machine alone; the tables add the others' steady peaks)" if name in alone else ""

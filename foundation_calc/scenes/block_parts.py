@@ -12,7 +12,7 @@ from typing import Annotated, ClassVar
 
 from pydantic import Field, model_validator
 
-from foundation_calc.scenes.common import SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import Drive, SceneModel, SpeedFields, quantity
 
 #: Three components along (or about) x, y, z.
 Vector = Annotated[list[float], Field(min_length=3, max_length=3)]
@@ -130,6 +130,10 @@ class BlockMachine(SpeedFields):
     )
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
+    drive: Drive | None = quantity(
+        "-", "-", "the motor that starts this machine (fcalc runup), as a crank scene's [drive]; without it the"
+        " machine is run up along [operation]'s ramp", None,
+    )
 
     #: Other names of keys: ``speed`` [rad/s] is ``omega`` (the issue's scene contract writes it so).
     renamed_keys: ClassVar[dict[str, str]] = {"speed": "omega"}
@@ -150,6 +154,13 @@ class BlockMachine(SpeedFields):
         if any(j < 0 for j in self.inertia):
             raise ValueError(f"inertia must be >= 0 kg m² each (got {list(self.inertia)})")
         return self
+
+    @property
+    def unbalance_inertia(self) -> float:
+        """m_r e², e = G/ω: the unbalance's point mass about the shaft, which the motor turns besides
+        its [drive] inertia (the platform's m l²) [kg m²]; 0 without an unbalance."""
+        u = self.unbalance
+        return 0.0 if u is None else u.rotor_mass * (u.balance_grade_mm_s * 1e-3 / self.omega_rad_s) ** 2
 
     def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
         """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial); an

@@ -74,7 +74,7 @@ def _runup(report) -> tuple[float, str]:
     from foundation_calc.checks.runup import run_title
 
     rows = [(row.ratio, f"{row.point}, {run_title(row.run)}") for row in report.rows if row.ratio is not None]
-    rows += [(_ratio(t.needed, t.available), f"motor torque at mode {t.mode}") for t in report.torques]
+    rows += [(_ratio(t.needed, t.available), f"motor torque{f' of {t.machine}' if t.machine else ''} at mode {t.mode + 1}") for t in report.torques]
     return max(rows, default=(math.nan, "nothing judged"))
 
 

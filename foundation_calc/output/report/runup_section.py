@@ -49,13 +49,20 @@ def _passages(key: str, run: dict, units: DisplayUnits):
     return table(title + shown_units, header, rows, (True,) * 12 + (False,))
 
 
+def motor_documents(doc: dict) -> list[dict]:
+    """The JSON documents of every motor of a ``fcalc runup`` document: the scene's [drive], then
+    each block machine's [machines.drive]."""
+    return [m for m in (doc.get("motor"), *(doc.get("motors") or {}).values()) if m]
+
+
 def _motor(motor: dict, units: DisplayUnits):
+    of = f" of {motor['machine']}" if motor.get("machine") else ""
     outcome = (
         f"reaches the operating speed at t = {figure(motor['time'], 3)} s" if motor["reached"]
         else f"sticks at Ω ≈ {quantity(units, 'speed', motor['stuck_speed'])}"
     )
     return table(
-        f"Motor start-up (Sommerfeld effect): torque {figure(motor['torque'], 4)} N m, shaft inertia"
+        f"Motor start-up{of} (Sommerfeld effect): torque {figure(motor['torque'], 4)} N m, shaft inertia"
         f" {figure(motor['inertia'], 4)} kg m²; {outcome}",
         ("mode", "harmonic", "at speed", "torque needed [N m]", "available [N m]", "ratio", "verdict"),
         (
@@ -91,8 +98,7 @@ def runup_section(doc: dict, report, scene, units: DisplayUnits, figures: bool =
     """Passages of every run, the motor's start-up and (with ``figures``) the envelope plot."""
     blocks: list = [_passages(key, run, units) for key, run in doc["runs"].items()]
     blocks.append(Paragraph(CLOSED_FORM_NOTE))
-    if doc.get("motor"):
-        blocks.append(_motor(doc["motor"], units))
+    blocks += [_motor(motor, units) for motor in motor_documents(doc)]
     blocks += [Paragraph(f"Warning: {w}") for w in doc["warnings"]]
     if figures:
         blocks.append(envelope_figure(report, scene.name or "run-up", scene.limits.transient_amplitude))

@@ -102,6 +102,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
 
 def _runup_rows(doc: dict, scene, units: DisplayUnits):
     from foundation_calc.checks.runup import run_title
+    from foundation_calc.output.report.runup_section import motor_documents
 
     for row in doc["limits"]:
         yield (
@@ -112,15 +113,17 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
             row["verdict"],
             f"{LIMIT_SOURCE} transient_amplitude" if row["limit"] is not None else "not limited",
         )
-    for t in (doc.get("motor") or {}).get("sommerfeld", ()):
-        yield (
-            f"motor torque at mode {t['mode']} ({t['harmonic']:g}ω, {quantity(units, 'speed', t['speed'])})",
-            Measure(t["torque_needed"], 4, "N m", suffix=" needed"),
-            Measure(t["torque_available"], 4, "N m", prefix="≤ "),
-            ratio(t["ratio"]),
-            t["verdict"],
-            "scene [drive]",
-        )
+    for motor in motor_documents(doc):
+        of = f" of {motor['machine']}" if motor.get("machine") else ""
+        for t in motor["sommerfeld"]:
+            yield (
+                f"motor torque{of} at mode {t['mode']} ({t['harmonic']:g}ω, {quantity(units, 'speed', t['speed'])})",
+                Measure(t["torque_needed"], 4, "N m", suffix=" needed"),
+                Measure(t["torque_available"], 4, "N m", prefix="≤ "),
+                ratio(t["ratio"]),
+                t["verdict"],
+                "scene [machines.drive]" if of else "scene [drive]",
+            )
 
 
 def _ratio(demand: float, limit: float) -> str:
