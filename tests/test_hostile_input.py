@@ -193,8 +193,16 @@ def test_singular_runup_scene_ends_in_exit_3_without_nan(runner, tmp_path, docum
     assert invalid and all(c["problems"] for c in invalid), invalid
 
 
+#: A draw that overflowed (RuntimeWarning, an error in the suite) in the series of θ - sin θ,
+#: evaluated where its value is not used: a rotation of 1e13 rpm on a block of no inertia.
+CRANK_HUGE_ROTATION = _mutate(
+    _mutate(SEEDS["vertical_compressor.toml"], ("foundation", "moment_of_inertia"), 1e-15), ("mechanism", "speed_rpm"), 1e13
+)
+
+
 @settings(max_examples=30, deadline=None)
 @given(rescaled_scenes())
+@example(CRANK_HUGE_ROTATION)
 @example(RUNUP_SINGULAR[0])
 @example(RUNUP_SINGULAR[1])
 @example(PLATFORM_VANISHING_ROTOR)

@@ -101,10 +101,11 @@ def theta_minus_sine(theta):
         if size < 2.0**-60:
             break
         terms += 1
+    small = np.minimum(t, _SERIES_ANGLE**2)  # the series serves |θ| <= _SERIES_ANGLE only: bounded, it cannot overflow
     taylor = 1.0
     for ratio in _TAYLOR_RATIOS[len(_TAYLOR_RATIOS) - terms :]:
-        taylor = 1.0 - t / ratio * taylor
-    return np.where(np.abs(theta) <= _SERIES_ANGLE, theta * t / 6.0 * taylor, theta - np.sin(theta))
+        taylor = 1.0 - small / ratio * taylor
+    return np.where(np.abs(theta) <= _SERIES_ANGLE, theta * small / 6.0 * taylor, theta - np.sin(theta))
 
 
 def rotation_series(motion: PeriodicMotion):
