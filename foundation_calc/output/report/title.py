@@ -58,8 +58,9 @@ def sheet_title(title: TitleBlock) -> str:
     return f"Calculation sheet: {p.title if p is not None and p.title else title.name}"
 
 
-def title_section(title: TitleBlock) -> Section:
-    """Project fields, the traceability rows, the sign boxes and the revision history."""
+def title_section(title: TitleBlock, note: str | None = None) -> Section:
+    """Project fields, the traceability rows, the sign boxes and the revision history; first, the
+    scene file's own ``note`` that its data are not real, when it says so."""
     p = title.project
     get = (lambda key: _text(getattr(p, key))) if p is not None else (lambda key: "")
     rows = (
@@ -76,7 +77,8 @@ def title_section(title: TitleBlock) -> Section:
         (False, False, False, False),
         wide=3,
     )
-    blocks = [table("", ("item", "value"), rows, (False, False)), signs]
+    blocks = [table("NOTE: the data are not real", ("the scene file's own comment",), ((note,),), (False,))] if note else []
+    blocks += [table("", ("item", "value"), rows, (False, False)), signs]
     if p is not None and p.revisions:
         blocks.append(table(
             "Revision history", ("rev.", "date", "description", "by"),

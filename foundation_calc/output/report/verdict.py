@@ -214,7 +214,7 @@ def verdict_line(runs) -> str:
     )
 
 
-def _reason(run, units: DisplayUnits) -> str:
+def check_reason(run, units: DisplayUnits) -> str:
     """A check's reason as ``fcalc check`` gives it; the plausibility warnings' count only, as the
     sheet lists every warning itself (the console's reason shows the first and points to stderr)."""
     if run.check == "inputs":
@@ -224,7 +224,7 @@ def _reason(run, units: DisplayUnits) -> str:
 
 def summary_section(runs, warnings, units: DisplayUnits) -> Section:
     """Page 1: the overall verdict and each check's verdict and reason, as ``fcalc check`` prints them."""
-    rows = ((run.check, run.verdict.upper(), _reason(run, units)) for run in runs)
+    rows = ((run.check, run.verdict.upper(), check_reason(run, units)) for run in runs)
     blocks = [Paragraph(verdict_line(runs)), table("", ("check", "verdict", "reason"), rows, (False, False, False))]
     if warnings:
         blocks.append(table("Input warnings (values probably typed in another unit: the check inputs warns)", ("warning",), ((w,) for w in warnings), (False,)))
@@ -238,7 +238,7 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         reader = ROWS.get(run.check)
         found = list(reader(documents[run.check], scene, units)) if reader is not None else []
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
-            found = [(_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
+            found = [(check_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
         rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
     if rows:  # value and limit: one notation per quantity in each column
         columns = list(zip(*rows))
