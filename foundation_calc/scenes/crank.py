@@ -25,7 +25,7 @@ from foundation_calc.scenes.common import (
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
-from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
@@ -257,6 +257,10 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     project: Project | None = quantity(
         "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
         " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    require: Requirements | None = quantity(
+        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
+        " for every scene under it", None
     )
     foundation: Foundation
     soil: Soil

@@ -2,7 +2,9 @@
 defaults file ``fcalc.toml`` that a folder of scenes shares.
 
 The calculation sheet prints it in its title block and in every page's header ("job · calc no. ·
-rev · page n of N"); no check reads it. ``fcalc.toml`` is looked for in the scene's folder and
+rev · page n of N"); no check reads it. The office file may also hold a ``[require]`` table
+(:class:`Requirements`): rules the office imposes on every scene under it, which the check
+``requirements`` judges; a scene may impose them on itself, never lift the office's. ``fcalc.toml`` is looked for in the scene's folder and
 then in each parent folder (as pyproject.toml is), the nearest one counting; its ``[project]``
 gives the values a scene's own ``[project]`` does not (a scene's value wins). A CI batch of many
 scenes thus shares the job, client and signatories. Unknown keys are errors in both files.
@@ -63,6 +65,17 @@ class Project(SceneModel):
     )
 
 
+class Requirements(SceneModel):
+    """Rules an office imposes on its calculations (``fcalc.toml`` ``[require]``), judged by the
+    check ``requirements``."""
+
+    soil_bracketing: bool = Field(
+        False, description="- [-]: a scene on soil must bracket the soil's stiffness with [soil] modulus_range"
+        " (ACI 351.3R-18 asks for the response over a range of soil properties); without it the scene fails",
+        examples=[True],
+    )
+
+
 def office_file(scene_path: str | Path) -> Path | None:
     """The ``fcalc.toml`` nearest to the scene: in its folder or the first parent that has one."""
     folder = Path(scene_path).resolve().parent
@@ -80,8 +93,11 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
     Raises
     ------
     SceneError
-        naming ``fcalc.toml`` when it cannot be read, has a table other than ``[project]``, or an
-        unknown or invalid key in it (the message names the key and suggests the nearest one).
+        naming ``fcalc.toml`` when it cannot be read, has a table other than ``[project]`` and
+        ``[require]``, or an unknown or invalid key in it (the message names the key and suggests
+        the nearest one).
+
+    The office's ``[require]`` rules join the scene's own: a rule either sets is in force.
     """
     path = office_file(scene_path)
     if path is None:
@@ -89,14 +105,20 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
     from foundation_calc.scenes.loading import read_toml, validate
 
     office = read_toml(path)
-    unknown = sorted(set(office) - {"project"})
+    unknown = sorted(set(office) - {"project", "require"})
     if unknown:
-        raise SceneError(str(path), [(key, f"{OFFICE_FILE} holds only a [project] table (office defaults)") for key in unknown])
-    defaults = office.get("project", {})
-    if not isinstance(defaults, dict):
-        raise SceneError(str(path), [("project", "must be a table of title-block fields")])
-    validate(Project, defaults, str(path), prefix="project.")
-    own = document.get("project", {})
-    if not isinstance(own, dict):  # the scene's own validation says what is wrong
-        return document
-    return {**document, "project": {**defaults, **own}}
+        raise SceneError(str(path), [(key, f"{OFFICE_FILE} holds only a [project] table (office defaults) and a [require] table (office rules)") for key in unknown])
+    merged = dict(document)
+    for table, model, what in (("project", Project, "title-block fields"), ("require", Requirements, "office rules")):
+        given = office.get(table, {})
+        if not isinstance(given, dict):
+            raise SceneError(str(path), [(table, f"must be a table of {what}")])
+        validate(model, given, str(path), prefix=f"{table}.")
+        own = document.get(table, {})
+        if not isinstance(own, dict):  # the scene's own validation says what is wrong
+            continue
+        if table == "project":  # a scene's value wins
+            merged[table] = {**given, **own}
+        elif given:  # a rule either file sets is in force
+            merged[table] = {**own, **{key: True for key, value in given.items() if value}}
+    return merged

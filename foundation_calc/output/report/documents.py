@@ -59,6 +59,12 @@ def raise_unjudged(runs, source: str) -> None:
             raise RuntimeError(f"check {run.check}: {run.problems[0][1]}")
 
 
+def unbracketed(loaded) -> bool:
+    """True for a scene on soil that does not bracket it (no ``[soil] modulus_range``)."""
+    soil = getattr(loaded, "soil", None)
+    return soil is not None and getattr(soil, "modulus_range", None) is None
+
+
 def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
     """What a scene kind shows besides its checks (nothing for a kind without its own sections)."""
     if loaded.kind == "platform" and "design" in documents:
@@ -90,7 +96,7 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     title = title_block(path, loaded, command)
     note = not_real_note(path.read_text(encoding="utf-8", errors="replace"))
     sections = [title_section(title, note), summary_section(runs, warnings, units),
-                conclusion_section(runs, documents, units, note), inputs_section(loaded, units),
+                conclusion_section(runs, documents, units, note, unbracketed(loaded)), inputs_section(loaded, units),
                 assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
     methods = methods_section(loaded, documents)

@@ -188,7 +188,13 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
         )
 
 
+def _requirement_rows(doc: dict, scene, units: DisplayUnits):
+    for row in doc["requirements"]:
+        yield (row["rule"], row["given"], "required by the office", "-", row["verdict"], f"{row['source']}; fcalc.toml or scene [require]")
+
+
 ROWS: dict[str, Callable] = {
+    "requirements": _requirement_rows,
     "office": _office_rows,
     "resonance": _resonance_rows,
     "amplitudes": _amplitude_rows,
