@@ -14,9 +14,9 @@ from __future__ import annotations
 
 import datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from foundation_calc.errors import SceneError
 from foundation_calc.scenes.common import SceneModel
@@ -51,6 +51,10 @@ class Project(SceneModel):
     job: str | None = _text("job or project number", "J-2041", 60)
     calculation: str | None = _text("calculation number", "CALC-017", 60)
     revision: str | None = _text("current revision mark", "B", 20)
+    purpose: Literal["for information", "for comment", "for approval", "for construction", "as built"] | None = Field(
+        None, description="- [-]: purpose of issue: for information, for comment, for approval, for construction or as built",
+        examples=["for approval"],
+    )
     title: str | None = _text("title of the calculation (default: the scene's name)", "Sawmill frame foundation, dynamic check", 200)
     client: str | None = _text("client", "Sawmill Ltd", 200)
     office: str | None = _text("office or company that issues the calculation", "Foundations Office", 200)
@@ -63,6 +67,15 @@ class Project(SceneModel):
     revisions: list[Revision] = Field(
         default_factory=list, description="- [-]: revision history, oldest first", max_length=100
     )
+
+    @model_validator(mode="after")
+    def _revision_in_history(self) -> "Project":
+        """A current ``revision`` must be a line of the revision history, when there is one."""
+        marks = [r.revision for r in self.revisions]
+        if self.revision is not None and marks and self.revision not in marks:
+            raise ValueError(f"revision = {self.revision!r} is not in the revision history (revisions: {', '.join(marks)});"
+                             " add its line to revisions or correct the mark")
+        return self
 
 
 class Requirements(SceneModel):
