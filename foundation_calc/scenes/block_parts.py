@@ -12,7 +12,7 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from foundation_calc.scenes.common import SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import SceneModel, SpeedFields, quantity, source
 
 #: Three components along (or about) x, y, z.
 Vector = Annotated[list[float], Field(min_length=3, max_length=3)]
@@ -130,6 +130,7 @@ class BlockMachine(SpeedFields):
     )
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
+    source: str | None = source("the machine's mass, loads and unbalance (the vendor's data sheet)")
 
     @model_validator(mode="before")
     @classmethod

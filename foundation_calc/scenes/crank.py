@@ -16,11 +16,13 @@ from foundation_calc.scenes.common import (
     LENGTH_SCALE_FACTOR,
     SCENE_SCHEMA_VERSION,
     Drive,
+    LimitSources,
     RunTimes,
     SceneModel,
     SpeedFields,
     detuning_bands,
     quantity,
+    source,
 )
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
@@ -83,7 +85,7 @@ class Mechanism(SpeedFields):
 CODE_NAMES = ("ISO 10816-3",)
 
 
-class Limits(SceneModel):
+class Limits(LimitSources):
     """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
@@ -195,6 +197,7 @@ class Load(SceneModel):
         "φ", "rad", "phase φ at t = 0 (crank angle 0 when there is a [mechanism])", 0.0, examples=[1.5708]
     )
     at: PointOfAction = quantity("-", "-", "point of action of the forces; default C", PointOfAction())
+    source: str | None = source("the load's values (the vendor's data sheet)")
 
     @model_validator(mode="after")
     def _something_acts(self):

@@ -16,7 +16,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, LimitSources, SceneModel, SpeedFields, quantity
 from foundation_calc.scenes.plausibility import Plausible, Remark
 from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.solvers.constants import GRAVITY
@@ -140,7 +140,7 @@ class ExtraExciter(SceneModel):
         return ratio
 
 
-class Limits(SceneModel):
+class Limits(LimitSources):
     """What the checks compare against."""
 
     detuning: float = quantity(

@@ -18,8 +18,15 @@ from foundation_calc.output.report.numbers import Measure, cells, measure, perce
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
 EXIT = {"pass": 0, "warn": 0, "fail": 1}
 
-#: Short names of the limits' sources, so the table's source column stays one or two lines.
-LIMIT_SOURCE = "scene [limits]"
+
+#: How an office row names a limit the scene gives (checks/office.py): the key follows.
+SCENE_LIMIT = "scene [limits] "
+
+
+def limit_source(scene, key: str) -> str:
+    """The source of the scene's limit ``key`` as the checks table prints it: the document the scene
+    names in ``[limits] sources``, or that it gives none."""
+    return f"[limits] {key}: {scene.limits.source_of(key)}"
 
 
 def resonance_verdict(row: dict) -> str:
@@ -45,7 +52,7 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             else Measure(r["forcing_share"], 2, scale=1.0, prefix="forcing share ", suffix=" < 1 %"),
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
-            f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
+            limit_source(scene, "detuning") if decides else "resonance rule",
         )
     yield from _range_rows(doc)
 
@@ -71,7 +78,7 @@ def quantity_name(quantity: str) -> str:
 
 
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
-    from foundation_calc.checks.limits import display_quantity
+    from foundation_calc.checks.limits import display_quantity, limit_key
 
     for row in doc["limits"]:
         kind = display_quantity(row["quantity"])
@@ -81,7 +88,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             measure(units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
-            row["source"],
+            limit_source(scene, limit_key(row["quantity"])),
         )
     code = doc.get("code")
     code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
@@ -110,7 +117,7 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
             "-" if row["limit"] is None else measure(units, "amplitude", row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
-            f"{LIMIT_SOURCE} transient_amplitude" if row["limit"] is not None else "not limited",
+            limit_source(scene, "transient_amplitude") if row["limit"] is not None else "not limited",
         )
     for t in (doc.get("motor") or {}).get("sommerfeld", ()):
         yield (
@@ -127,10 +134,11 @@ def _ratio(demand: float, limit: float) -> str:
     return ratio(demand / limit) if limit > 0 else "-"
 
 
-def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
+def _design_measures(doc: dict, scene) -> dict[str, tuple[str, str, str, str]]:
     """Value, limit, ratio (demand/limit; above 1 fails or warns) and the limit's source of each
     finding of the platform design check."""
     d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
+    limits = scene.limits
     detuning, height = limits.detuning, limits.exciter_height_ratio
     closest = min(f["margin"] for f in doc["natural_frequencies"])
     worst = max(
@@ -141,27 +149,27 @@ def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
     rocking = limits.rocking_percent
     return {
         "exciter height": (
-            (Measure(d["c"] / zeta, 3, prefix="c/ζ = "), Measure(height, 3, prefix="≤ "), _ratio(d["c"] / zeta, height), f"{LIMIT_SOURCE} exciter_height_ratio")
+            (Measure(d["c"] / zeta, 3, prefix="c/ζ = "), Measure(height, 3, prefix="≤ "), _ratio(d["c"] / zeta, height), limit_source(scene, "exciter_height_ratio"))
             if d["c"] >= 0 and zeta > 0
             else (Measure(d["c"], 4, "m", prefix="c = "), "c ≥ 0 (above the support plane)", "-", "design rule")
         ),
-        "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), f"{LIMIT_SOURCE} detuning"),
-        "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), f"{LIMIT_SOURCE} detuning"),
+        "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), limit_source(scene, "detuning")),
+        "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), limit_source(scene, "detuning")),
         "rocking": (
             Measure(v["rocking_percent"], 3, "% of u", 100), Measure(rocking, 3, "% of u", prefix="≤ "),
-            _ratio(v["rocking_percent"], rocking), f"{LIMIT_SOURCE} rocking_percent",
+            _ratio(v["rocking_percent"], rocking), limit_source(scene, "rocking_percent"),
         ),
         "tolerances": (
             ("resonant: " + ", ".join(resonant)) if resonant else Measure(worst, 3, "% of u", 100, prefix="worst "),
             Measure(rocking, 3, "% of u", prefix="no resonance, ≤ "),
             "-" if resonant else _ratio(worst, rocking),
-            f"{LIMIT_SOURCE} rocking_percent",
+            limit_source(scene, "rocking_percent"),
         ),
     }
 
 
 def _design_rows(doc: dict, scene, units: DisplayUnits):
-    measures = _design_measures(doc, scene.limits)
+    measures = _design_measures(doc, scene)
     for c in doc["checks"]:
         value, limit, shown_ratio, source = measures.get(c["name"], (c["message"], "-", "-", "design rule"))
         yield (c["name"], value, limit, shown_ratio, c["verdict"], source)
@@ -184,7 +192,8 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
             shown(row, row["limit"], "≥ " if above else "≤ "),
             ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
             row["verdict"],
-            row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
+            limit_source(scene, row["source"].removeprefix(SCENE_LIMIT)) if row["source"].startswith(SCENE_LIMIT)
+            else row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
         )
 
 
