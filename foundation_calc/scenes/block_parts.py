@@ -130,7 +130,7 @@ class BlockMachine(SpeedFields):
     )
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
-    source: str | None = source("the machine's mass, loads and unbalance (the vendor's data sheet)")
+    source: str | None = source("the machine's mass, loads and unbalance (the vendor's data sheet)", "vendor data sheet DS-7, rev. 2")
 
     @model_validator(mode="before")
     @classmethod

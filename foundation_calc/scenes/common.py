@@ -94,11 +94,11 @@ def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraint
     return Field(default, description=f"{symbol} [{unit}]: {text}", **constraints)
 
 
-def source(what: str) -> Any:
+def source(what: str, example: str) -> Any:
     """An optional ``source`` key: the document ``what`` comes from, printed beside it on the sheet."""
     return quantity(
         "-", "-", f"where {what} come from: a document (report, data sheet, clause), printed on the sheet",
-        None, max_length=200, examples=["soil report GR-12, table 3"],
+        None, max_length=200, examples=[example],
     )
 
 

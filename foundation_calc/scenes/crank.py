@@ -197,7 +197,7 @@ class Load(SceneModel):
         "φ", "rad", "phase φ at t = 0 (crank angle 0 when there is a [mechanism])", 0.0, examples=[1.5708]
     )
     at: PointOfAction = quantity("-", "-", "point of action of the forces; default C", PointOfAction())
-    source: str | None = source("the load's values (the vendor's data sheet)")
+    source: str | None = source("the load's values (the vendor's data sheet)", "vendor data sheet DS-3, table 2")
 
     @model_validator(mode="after")
     def _something_acts(self):

@@ -79,8 +79,9 @@ class Project(SceneModel):
 
 
 class Requirements(SceneModel):
-    """Rules an office imposes on its calculations (``fcalc.toml`` ``[require]``), judged by the
-    check ``requirements``."""
+    """Rules an office imposes on every calculation under its fcalc.toml, judged by the check requirements.
+
+    Set in ``fcalc.toml`` ``[require]`` (or a scene's own ``[require]``)."""
 
     soil_bracketing: bool = Field(
         False, description="- [-]: a scene on soil must bracket the soil's stiffness with [soil] modulus_range"

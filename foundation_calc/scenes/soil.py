@@ -62,7 +62,7 @@ class Soil(SceneModel):
         'c_z, c_x (Barkan\'s coefficients), or method = "lysmer", "gazetas", "pais_kausel" or "sp26" and its keys'
     )
 
-    source: str | None = source("the soil's values (the soil report)")
+    source: str | None = source("the soil's values (the soil report)", "soil report GR-12, table 3")
     method: SoilMethod | None = quantity(
         "-", "-", 'how the springs are found: "coefficients" (Barkan\'s c_z, c_x given), "lysmer"'
         ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "pais_kausel" (Pais & Kausel 1988),'
