@@ -13,6 +13,7 @@ names HEAD instead (read from ``.git`` directly, no subprocess: a few file reads
 
 from __future__ import annotations
 
+import re
 from functools import cache
 from pathlib import Path
 
@@ -102,4 +103,22 @@ def version() -> str:
     return with_commit(built_version(), head_commit(Path(__file__).resolve().parents[1]))
 
 
-__all__ = ["UNKNOWN", "built_version", "head_commit", "version", "with_commit"]
+#: A release as setuptools-scm writes it at a tag vX.Y.Z: X.Y.Z and nothing after it.
+RELEASE = re.compile(r"\d+\.\d+\.\d+")
+
+
+def build_kind(text: str) -> str:
+    """Whether the version ``text`` is a release (built at a tag vX.Y.Z), a development build
+    (``.devN``, a commit or uncommitted changes after it) or of unknown origin.
+
+    >>> build_kind("1.2.0"), build_kind("0.1.dev5+g1234567"), build_kind("1.2.0+g1234567.d20261126"), build_kind(UNKNOWN)
+    ('release', 'development build', 'development build', 'unknown build (no version metadata)')
+    """
+    if RELEASE.fullmatch(text):
+        return "release"
+    if text in (UNKNOWN, "0.0"):
+        return "unknown build (no version metadata)"
+    return "development build"
+
+
+__all__ = ["RELEASE", "UNKNOWN", "build_kind", "built_version", "head_commit", "version", "with_commit"]

@@ -110,7 +110,7 @@ def test_every_kind_reports_the_settlement_in_check_json_and_on_the_sheet(source
     sheet = tmp_path / "scene.md"
     runner.invoke(app, ["report", str(path), "-o", str(sheet)])
     text = sheet.read_text()
-    assert "s = W/K\\_z" in text and "scene \\[limits\\] settlement" in text  # Markdown escapes _ and [
+    assert "s = W/K\\_z" in text and "\\[limits\\] settlement: scene value, no source given" in text  # Markdown escapes _ and [
     assert "no \\[limits\\] settlement" not in text
 
 

@@ -280,11 +280,24 @@ def block_office(scene) -> Finding:
     return Finding("office", report.office_outcome, reason, {}, report, details)
 
 
+def requirements(scene) -> Finding | None:
+    """The office's rules (:mod:`~foundation_calc.checks.requirements`); None (not run) without any."""
+    from foundation_calc.checks.requirements import requirement_rows
+
+    rows = requirement_rows(scene)
+    if not rows:
+        return None
+    outcome = worst(r.outcome for r in rows)
+    reason = ("; ".join(f"{r.rule}: {r.given}" for r in rows if r.outcome is outcome),)
+    return Finding("requirements", outcome, reason, {}, tuple(rows),
+                   tuple(f"{r.outcome.value.upper()} {r.rule}: {r.given} ({r.source})" for r in rows))
+
+
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
     "crank_foundation": {"inputs": inputs, "resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup,
-                         "office": crank_office},
+                         "office": crank_office, "requirements": requirements},
     "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
     "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "runup": runup,
-                         "office": block_office},
+                         "office": block_office, "requirements": requirements},
 }

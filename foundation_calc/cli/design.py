@@ -134,6 +134,7 @@ def design(
     _options(plot, write, step, points, margin)
     loaded = parse_scene(read_scene(scene), str(scene), expect=("block_foundation", "crank_foundation"))
     document = with_unit_strings_converted(loaded.kind, read_scene(scene), str(scene))[0]  # numbers to vary, not "6000 mm"
+    _meets_requirements(loaded)
     try:
         given = given_dimensions(document)
         evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded, document, str(scene), given)
@@ -151,6 +152,22 @@ def design(
     if sizing.disagreements:
         raise typer.Exit(4)
     raise typer.Exit(0 if sizing.found.found else 1)
+
+
+def _meets_requirements(loaded) -> None:
+    """Exit 1 when the scene fails an office rule (fcalc.toml ``[require]``): no dimension changes
+    it, so every candidate would fail it."""
+    from foundation_calc.checks.outcomes import Outcome
+    from foundation_calc.checks.requirements import requirement_rows
+
+    failed = [r for r in requirement_rows(loaded) if r.outcome is Outcome.FAIL]
+    if failed:
+        from foundation_calc.output.console import stderr
+
+        for r in failed:
+            stderr().print(f"error: the scene fails the office rule {r.rule} ({r.given}); no dimension changes it:"
+                           " nothing searched", soft_wrap=True, markup=False)
+        raise typer.Exit(1)
 
 
 def _size(scene: Path, loaded, document, searched_grid, judge, given, rule: tuple[bool, float | None]):

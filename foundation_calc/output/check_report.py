@@ -127,7 +127,9 @@ def result_document(check: str, report, scene) -> dict:
     empty for a check that did not run (``report`` is ``None``)."""
     if report is None:
         return {}
-    if check == "runup":
+    if check == "requirements":  # the office's rules (checks/requirements.py)
+        document = {"requirements": [{"rule": r.rule, "given": r.given, "verdict": r.outcome.value, "source": r.source} for r in report]}
+    elif check == "runup":
         from foundation_calc.output.runup import runup_document
 
         document = runup_document(report, scene, "")

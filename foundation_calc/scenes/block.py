@@ -16,7 +16,7 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
-from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
 
 #: How far [m] a position may lie beyond the block's footprint or below its base and still count
@@ -83,6 +83,10 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     project: Project | None = quantity(
         "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
         " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    require: Requirements | None = quantity(
+        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
+        " for every scene under it", None
     )
     block: BlockBody
     machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)

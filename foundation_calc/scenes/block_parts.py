@@ -12,7 +12,7 @@ from typing import Annotated, ClassVar
 
 from pydantic import Field, model_validator
 
-from foundation_calc.scenes.common import Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import Drive, SceneModel, SpeedFields, quantity, source
 
 #: Three components along (or about) x, y, z.
 Vector = Annotated[list[float], Field(min_length=3, max_length=3)]
@@ -134,6 +134,7 @@ class BlockMachine(SpeedFields):
         "-", "-", "the motor that starts this machine (fcalc runup), as a crank scene's [drive]; without it the"
         " machine is run up along [operation]'s ramp", None,
     )
+    source: str | None = source("the machine's mass, loads and unbalance (the vendor's data sheet)", "vendor data sheet DS-7, rev. 2")
 
     #: Other names of keys: ``speed`` [rad/s] is ``omega`` (the issue's scene contract writes it so).
     renamed_keys: ClassVar[dict[str, str]] = {"speed": "omega"}

@@ -94,6 +94,42 @@ def quantity(symbol: str, unit: str, text: str, default: Any = ..., **constraint
     return Field(default, description=f"{symbol} [{unit}]: {text}", **constraints)
 
 
+def source(what: str, example: str) -> Any:
+    """An optional ``source`` key: the document ``what`` comes from, printed beside it on the sheet."""
+    return quantity(
+        "-", "-", f"where {what} come from: a document (report, data sheet, clause), printed on the sheet",
+        None, max_length=200, examples=[example],
+    )
+
+
+#: What the sheet prints beside a limit whose source the scene does not give.
+NO_SOURCE = "scene value, no source given"
+
+
+class LimitSources(SceneModel):
+    """The ``sources`` key of a ``[limits]`` table: where each limit comes from, by its key."""
+
+    sources: dict[str, str] = quantity(
+        "-", "-", "where each limit comes from, by its key (a code clause, the client's specification);"
+        " a limit without one is printed as a scene value with no source given", {},
+        examples=[{"amplitude": "client spec. S-123, 4.2"}],
+    )
+
+    @model_validator(mode="after")
+    def _sources_name_limits(self):
+        known = sorted(set(type(self).model_fields) - {"sources"})
+        unknown = sorted(set(self.sources) - set(known))
+        if unknown:
+            raise ValueError(f"sources names {', '.join(unknown)}, not a limit of this scene kind (one of {', '.join(known)})")
+        return self
+
+    def source_of(self, key: str) -> str:
+        """Where the limit ``key`` comes from, as the sheet prints it beside the limit."""
+        if key in self.sources:
+            return self.sources[key]
+        return NO_SOURCE if key in self.model_fields_set else "fcalc's default, no source given"
+
+
 class SpeedFields(SceneModel):
     """The operating speed, given as exactly one of ``omega``, ``frequency_hz``, ``speed_rpm``."""
 

@@ -16,16 +16,18 @@ from foundation_calc.scenes.common import (
     LENGTH_SCALE_FACTOR,
     SCENE_SCHEMA_VERSION,
     Drive,
+    LimitSources,
     RunTimes,
     SceneModel,
     SpeedFields,
     detuning_bands,
     quantity,
+    source,
 )
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
-from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
@@ -83,7 +85,7 @@ class Mechanism(SpeedFields):
 CODE_NAMES = ("ISO 10816-3",)
 
 
-class Limits(SceneModel):
+class Limits(LimitSources):
     """What the checks compare against: peak and RMS limits, a vibration code, the detuning."""
 
     amplitude: float | None = quantity(
@@ -195,6 +197,7 @@ class Load(SceneModel):
         "φ", "rad", "phase φ at t = 0 (crank angle 0 when there is a [mechanism])", 0.0, examples=[1.5708]
     )
     at: PointOfAction = quantity("-", "-", "point of action of the forces; default C", PointOfAction())
+    source: str | None = source("the load's values (the vendor's data sheet)", "vendor data sheet DS-3, table 2")
 
     @model_validator(mode="after")
     def _something_acts(self):
@@ -257,6 +260,10 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     project: Project | None = quantity(
         "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
         " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    require: Requirements | None = quantity(
+        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
+        " for every scene under it", None
     )
     foundation: Foundation
     soil: Soil

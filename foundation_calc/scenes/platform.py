@@ -16,9 +16,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, LimitSources, SceneModel, SpeedFields, quantity
 from foundation_calc.scenes.plausibility import Plausible, Remark
-from foundation_calc.scenes.project import Project
+from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -140,7 +140,7 @@ class ExtraExciter(SceneModel):
         return ratio
 
 
-class Limits(SceneModel):
+class Limits(LimitSources):
     """What the checks compare against."""
 
     detuning: float = quantity(
@@ -172,6 +172,10 @@ class PlatformScene(Plausible, SceneModel):
     project: Project | None = quantity(
         "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
         " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    require: Requirements | None = quantity(
+        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
+        " for every scene under it", None
     )
     platform: Platform
     exciter: Exciter

@@ -2,7 +2,9 @@
 defaults file ``fcalc.toml`` that a folder of scenes shares.
 
 The calculation sheet prints it in its title block and in every page's header ("job · calc no. ·
-rev · page n of N"); no check reads it. ``fcalc.toml`` is looked for in the scene's folder and
+rev · page n of N"); no check reads it. The office file may also hold a ``[require]`` table
+(:class:`Requirements`): rules the office imposes on every scene under it, which the check
+``requirements`` judges; a scene may impose them on itself, never lift the office's. ``fcalc.toml`` is looked for in the scene's folder and
 then in each parent folder (as pyproject.toml is), the nearest one counting; its ``[project]``
 gives the values a scene's own ``[project]`` does not (a scene's value wins). A CI batch of many
 scenes thus shares the job, client and signatories. Unknown keys are errors in both files.
@@ -12,9 +14,9 @@ from __future__ import annotations
 
 import datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from foundation_calc.errors import SceneError
 from foundation_calc.scenes.common import SceneModel
@@ -49,6 +51,10 @@ class Project(SceneModel):
     job: str | None = _text("job or project number", "J-2041", 60)
     calculation: str | None = _text("calculation number", "CALC-017", 60)
     revision: str | None = _text("current revision mark", "B", 20)
+    purpose: Literal["for information", "for comment", "for approval", "for construction", "as built"] | None = Field(
+        None, description="- [-]: purpose of issue: for information, for comment, for approval, for construction or as built",
+        examples=["for approval"],
+    )
     title: str | None = _text("title of the calculation (default: the scene's name)", "Sawmill frame foundation, dynamic check", 200)
     client: str | None = _text("client", "Sawmill Ltd", 200)
     office: str | None = _text("office or company that issues the calculation", "Foundations Office", 200)
@@ -60,6 +66,27 @@ class Project(SceneModel):
     approved_date: DateText | None = _date("date approved")
     revisions: list[Revision] = Field(
         default_factory=list, description="- [-]: revision history, oldest first", max_length=100
+    )
+
+    @model_validator(mode="after")
+    def _revision_in_history(self) -> "Project":
+        """A current ``revision`` must be a line of the revision history, when there is one."""
+        marks = [r.revision for r in self.revisions]
+        if self.revision is not None and marks and self.revision not in marks:
+            raise ValueError(f"revision = {self.revision!r} is not in the revision history (revisions: {', '.join(marks)});"
+                             " add its line to revisions or correct the mark")
+        return self
+
+
+class Requirements(SceneModel):
+    """Rules an office imposes on every calculation under its fcalc.toml, judged by the check requirements.
+
+    Set in ``fcalc.toml`` ``[require]`` (or a scene's own ``[require]``)."""
+
+    soil_bracketing: bool = Field(
+        False, description="- [-]: a scene on soil must bracket the soil's stiffness with [soil] modulus_range"
+        " (ACI 351.3R-18 asks for the response over a range of soil properties); without it the scene fails",
+        examples=[True],
     )
 
 
@@ -80,8 +107,11 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
     Raises
     ------
     SceneError
-        naming ``fcalc.toml`` when it cannot be read, has a table other than ``[project]``, or an
-        unknown or invalid key in it (the message names the key and suggests the nearest one).
+        naming ``fcalc.toml`` when it cannot be read, has a table other than ``[project]`` and
+        ``[require]``, or an unknown or invalid key in it (the message names the key and suggests
+        the nearest one).
+
+    The office's ``[require]`` rules join the scene's own: a rule either sets is in force.
     """
     path = office_file(scene_path)
     if path is None:
@@ -89,14 +119,20 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
     from foundation_calc.scenes.loading import read_toml, validate
 
     office = read_toml(path)
-    unknown = sorted(set(office) - {"project"})
+    unknown = sorted(set(office) - {"project", "require"})
     if unknown:
-        raise SceneError(str(path), [(key, f"{OFFICE_FILE} holds only a [project] table (office defaults)") for key in unknown])
-    defaults = office.get("project", {})
-    if not isinstance(defaults, dict):
-        raise SceneError(str(path), [("project", "must be a table of title-block fields")])
-    validate(Project, defaults, str(path), prefix="project.")
-    own = document.get("project", {})
-    if not isinstance(own, dict):  # the scene's own validation says what is wrong
-        return document
-    return {**document, "project": {**defaults, **own}}
+        raise SceneError(str(path), [(key, f"{OFFICE_FILE} holds only a [project] table (office defaults) and a [require] table (office rules)") for key in unknown])
+    merged = dict(document)
+    for table, model, what in (("project", Project, "title-block fields"), ("require", Requirements, "office rules")):
+        given = office.get(table, {})
+        if not isinstance(given, dict):
+            raise SceneError(str(path), [(table, f"must be a table of {what}")])
+        validate(model, given, str(path), prefix=f"{table}.")
+        own = document.get(table, {})
+        if not isinstance(own, dict):  # the scene's own validation says what is wrong
+            continue
+        if table == "project":  # a scene's value wins
+            merged[table] = {**given, **own}
+        elif given:  # a rule either file sets is in force
+            merged[table] = {**own, **{key: True for key, value in given.items() if value}}
+    return merged

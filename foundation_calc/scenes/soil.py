@@ -13,7 +13,7 @@ from typing import ClassVar, Literal
 
 from pydantic import field_validator, model_validator
 
-from foundation_calc.scenes.common import SceneModel, quantity
+from foundation_calc.scenes.common import SceneModel, quantity, source
 from foundation_calc.scenes.plausibility import judge
 from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS
 
@@ -62,6 +62,7 @@ class Soil(SceneModel):
         'c_z, c_x (Barkan\'s coefficients), or method = "lysmer", "gazetas", "pais_kausel" or "sp26" and its keys'
     )
 
+    source: str | None = source("the soil's values (the soil report)", "soil report GR-12, table 3")
     method: SoilMethod | None = quantity(
         "-", "-", 'how the springs are found: "coefficients" (Barkan\'s c_z, c_x given), "lysmer"'
         ' (Richart-Hall-Woods analogs), "gazetas" (Gazetas 1991), "pais_kausel" (Pais & Kausel 1988),'
@@ -131,7 +132,7 @@ class Soil(SceneModel):
             method = "coefficients"
         if not isinstance(method, str) or method not in cls.method_keys:
             return data  # the field's own validation names the allowed methods
-        allowed = set(cls.method_keys[method]) | {"method", *cls.range_keys}
+        allowed = set(cls.method_keys[method]) | {"method", "source", *cls.range_keys}
         keys = ", ".join((*cls.method_keys[method], *cls.range_keys))
         for key in data:
             if key in allowed:

@@ -62,7 +62,10 @@ def _comment(info: FieldInfo) -> str:
 
 
 def _value_line(key: str, value: Any) -> str:
-    """``key = value`` in TOML; a list of numbers stays on one line."""
+    """``key = value`` in TOML; a list of numbers stays on one line, a table of plain values inline."""
+    if isinstance(value, dict):
+        items = ", ".join(_value_line(k, v) for k, v in value.items())
+        return f"{tomli_w.dumps({key: 0}).partition(' = ')[0]} = {{ {items} }}"
     if isinstance(value, list) and not any(isinstance(item, (dict, list)) for item in value):
         items = ", ".join(_value_line("v", item).partition(" = ")[2] for item in value)
         return f"{tomli_w.dumps({key: 0}).partition(' = ')[0]} = [{items}]"
@@ -95,10 +98,10 @@ def _section(model: type[BaseModel], values: dict | None, header: str, lines: li
             continue
         value = values.get(key)
         lines.append(_comment(info))
-        if value is None or off:
+        if value is None or value == {} or off:
             default = None if info.is_required() else info.get_default(call_default_factory=True)
             shown = alternatives.get(key, value if value is not None else default)
-            if shown is None:
+            if shown is None or shown == {}:
                 shown = info.examples[0]  # every optional or nested field carries one
             lines.append(f"# {_value_line(key, shown)}")
         else:

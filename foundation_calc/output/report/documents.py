@@ -7,6 +7,7 @@ from pathlib import Path
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.contents import crank_sections, operating_speed, platform_sections, sweep_series
 from foundation_calc.output.report.assumptions import assumptions_section
+from foundation_calc.output.report.conclusion import conclusion_section, not_real_note
 from foundation_calc.output.report.inputs import inputs_section
 from foundation_calc.output.report.methods import methods_section
 from foundation_calc.output.report.model import Section, Sheet
@@ -58,6 +59,12 @@ def raise_unjudged(runs, source: str) -> None:
             raise RuntimeError(f"check {run.check}: {run.problems[0][1]}")
 
 
+def unbracketed(loaded) -> bool:
+    """True for a scene on soil that does not bracket it (no ``[soil] modulus_range``)."""
+    soil = getattr(loaded, "soil", None)
+    return soil is not None and getattr(soil, "modulus_range", None) is None
+
+
 def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
     """What a scene kind shows besides its checks (nothing for a kind without its own sections)."""
     if loaded.kind == "platform" and "design" in documents:
@@ -87,7 +94,9 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
     documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
     title = title_block(path, loaded, command)
-    sections = [title_section(title), summary_section(runs, warnings, units), inputs_section(loaded, units, written),
+    note = not_real_note(path.read_text(encoding="utf-8", errors="replace"))
+    sections = [title_section(title, note), summary_section(runs, warnings, units),
+                conclusion_section(runs, documents, units, note, unbracketed(loaded)), inputs_section(loaded, units, written),
                 assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
     methods = methods_section(loaded, documents)

@@ -14,6 +14,7 @@ import re
 from pydantic import BaseModel
 
 from foundation_calc.output.display_units import DisplayUnits
+from foundation_calc.scenes.common import LimitSources
 from foundation_calc.output.report.model import Paragraph, Section, table
 from foundation_calc.output.report.numbers import echoed
 
@@ -99,6 +100,10 @@ def _rows(group: str, model: BaseModel, units: DisplayUnits, path: str, written:
         if value is None or isinstance(value, BaseModel) or _entries(value):  # a nested table has its own block
             continue
         symbol, unit, meaning = _described(field)
+        if isinstance(model, LimitSources):  # each limit's source beside it, not as a table of its own
+            if key == "sources":
+                continue
+            meaning = f"{meaning}; source: {model.source_of(key)}"
         quantity = DISPLAYED.get((group.split("[")[0], key))
         if quantity is not None and isinstance(value, float):
             value, unit = units.convert(quantity, value), units.label(quantity)

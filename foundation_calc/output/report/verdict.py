@@ -18,8 +18,15 @@ from foundation_calc.output.report.numbers import Measure, cells, measure, perce
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
 EXIT = {"pass": 0, "warn": 0, "fail": 1}
 
-#: Short names of the limits' sources, so the table's source column stays one or two lines.
-LIMIT_SOURCE = "scene [limits]"
+
+#: How an office row names a limit the scene gives (checks/office.py): the key follows.
+SCENE_LIMIT = "scene [limits] "
+
+
+def limit_source(scene, key: str) -> str:
+    """The source of the scene's limit ``key`` as the checks table prints it: the document the scene
+    names in ``[limits] sources``, or that it gives none."""
+    return f"[limits] {key}: {scene.limits.source_of(key)}"
 
 
 def resonance_verdict(row: dict) -> str:
@@ -45,7 +52,7 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             else Measure(r["forcing_share"], 2, scale=1.0, prefix="forcing share ", suffix=" < 1 %"),
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
-            f"{LIMIT_SOURCE} detuning" if decides else "resonance rule",
+            limit_source(scene, "detuning") if decides else "resonance rule",
         )
     yield from _range_rows(doc)
 
@@ -71,7 +78,7 @@ def quantity_name(quantity: str) -> str:
 
 
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
-    from foundation_calc.checks.limits import display_quantity
+    from foundation_calc.checks.limits import display_quantity, limit_key
 
     for row in doc["limits"]:
         kind = display_quantity(row["quantity"])
@@ -81,7 +88,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             measure(units, kind, row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
-            row["source"],
+            limit_source(scene, limit_key(row["quantity"])),
         )
     code = doc.get("code")
     code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
@@ -111,7 +118,7 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
             "-" if row["limit"] is None else measure(units, "amplitude", row["limit"], prefix="≤ "),
             ratio(row["ratio"]),
             row["verdict"],
-            f"{LIMIT_SOURCE} transient_amplitude" if row["limit"] is not None else "not limited",
+            limit_source(scene, "transient_amplitude") if row["limit"] is not None else "not limited",
         )
     for motor in motor_documents(doc):
         of = f" of {motor['machine']}" if motor.get("machine") else ""
@@ -130,10 +137,11 @@ def _ratio(demand: float, limit: float) -> str:
     return ratio(demand / limit) if limit > 0 else "-"
 
 
-def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
+def _design_measures(doc: dict, scene) -> dict[str, tuple[str, str, str, str]]:
     """Value, limit, ratio (demand/limit; above 1 fails or warns) and the limit's source of each
     finding of the platform design check."""
     d, v, zeta = doc["design"], doc["verification"], doc["inputs"]["zeta"]
+    limits = scene.limits
     detuning, height = limits.detuning, limits.exciter_height_ratio
     closest = min(f["margin"] for f in doc["natural_frequencies"])
     worst = max(
@@ -144,27 +152,27 @@ def _design_measures(doc: dict, limits) -> dict[str, tuple[str, str, str, str]]:
     rocking = limits.rocking_percent
     return {
         "exciter height": (
-            (Measure(d["c"] / zeta, 3, prefix="c/ζ = "), Measure(height, 3, prefix="≤ "), _ratio(d["c"] / zeta, height), f"{LIMIT_SOURCE} exciter_height_ratio")
+            (Measure(d["c"] / zeta, 3, prefix="c/ζ = "), Measure(height, 3, prefix="≤ "), _ratio(d["c"] / zeta, height), limit_source(scene, "exciter_height_ratio"))
             if d["c"] >= 0 and zeta > 0
             else (Measure(d["c"], 4, "m", prefix="c = "), "c ≥ 0 (above the support plane)", "-", "design rule")
         ),
-        "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), f"{LIMIT_SOURCE} detuning"),
-        "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), f"{LIMIT_SOURCE} detuning"),
+        "regime margin": (percent(d["regime_margin"]), "≥ " + percent(detuning), _ratio(detuning, d["regime_margin"]), limit_source(scene, "detuning")),
+        "natural frequencies": ("closest " + percent(closest), "≥ " + percent(detuning), _ratio(detuning, closest), limit_source(scene, "detuning")),
         "rocking": (
             Measure(v["rocking_percent"], 3, "% of u", 100), Measure(rocking, 3, "% of u", prefix="≤ "),
-            _ratio(v["rocking_percent"], rocking), f"{LIMIT_SOURCE} rocking_percent",
+            _ratio(v["rocking_percent"], rocking), limit_source(scene, "rocking_percent"),
         ),
         "tolerances": (
             ("resonant: " + ", ".join(resonant)) if resonant else Measure(worst, 3, "% of u", 100, prefix="worst "),
             Measure(rocking, 3, "% of u", prefix="no resonance, ≤ "),
             "-" if resonant else _ratio(worst, rocking),
-            f"{LIMIT_SOURCE} rocking_percent",
+            limit_source(scene, "rocking_percent"),
         ),
     }
 
 
 def _design_rows(doc: dict, scene, units: DisplayUnits):
-    measures = _design_measures(doc, scene.limits)
+    measures = _design_measures(doc, scene)
     for c in doc["checks"]:
         value, limit, shown_ratio, source = measures.get(c["name"], (c["message"], "-", "-", "design rule"))
         yield (c["name"], value, limit, shown_ratio, c["verdict"], source)
@@ -187,11 +195,18 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
             shown(row, row["limit"], "≥ " if above else "≤ "),
             ratio(row["limit"] / row["value"] if above else row["value"] / row["limit"]),
             row["verdict"],
-            row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
+            limit_source(scene, row["source"].removeprefix(SCENE_LIMIT)) if row["source"].startswith(SCENE_LIMIT)
+            else row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
         )
 
 
+def _requirement_rows(doc: dict, scene, units: DisplayUnits):
+    for row in doc["requirements"]:
+        yield (row["rule"], row["given"], "required by the office", "-", row["verdict"], f"{row['source']}; fcalc.toml or scene [require]")
+
+
 ROWS: dict[str, Callable] = {
+    "requirements": _requirement_rows,
     "office": _office_rows,
     "resonance": _resonance_rows,
     "amplitudes": _amplitude_rows,
@@ -217,7 +232,7 @@ def verdict_line(runs) -> str:
     )
 
 
-def _reason(run, units: DisplayUnits) -> str:
+def check_reason(run, units: DisplayUnits) -> str:
     """A check's reason as ``fcalc check`` gives it; the plausibility warnings' count only, as the
     sheet lists every warning itself (the console's reason shows the first and points to stderr)."""
     if run.check == "inputs":
@@ -227,7 +242,7 @@ def _reason(run, units: DisplayUnits) -> str:
 
 def summary_section(runs, warnings, units: DisplayUnits) -> Section:
     """Page 1: the overall verdict and each check's verdict and reason, as ``fcalc check`` prints them."""
-    rows = ((run.check, run.verdict.upper(), _reason(run, units)) for run in runs)
+    rows = ((run.check, run.verdict.upper(), check_reason(run, units)) for run in runs)
     blocks = [Paragraph(verdict_line(runs)), table("", ("check", "verdict", "reason"), rows, (False, False, False))]
     if warnings:
         blocks.append(table("Input warnings (values probably typed in another unit: the check inputs warns)", ("warning",), ((w,) for w in warnings), (False,)))
@@ -241,7 +256,7 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         reader = ROWS.get(run.check)
         found = list(reader(documents[run.check], scene, units)) if reader is not None else []
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
-            found = [(_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
+            found = [(check_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
         rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
     if rows:  # value and limit: one notation per quantity in each column
         columns = list(zip(*rows))
