@@ -1,6 +1,6 @@
 """The package's dependencies run one way: cli → output/benchmarks → checks → scenes → solvers →
 units/errors. Every import of every module (function-level ones included) is parsed and an import
-from a higher layer fails the test, so the rule in the README's Architecture section stays true.
+from a higher layer fails the test, so the rule in docs/architecture.md stays true.
 Inside ``solvers`` the problems (crank, platform) do not import each other, and the shared
 ``numerics`` and ``soil`` packages import neither problem."""
 

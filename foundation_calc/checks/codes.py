@@ -255,7 +255,7 @@ def point_zone(tables, velocity, displacement, acceptable: str | None) -> tuple[
 
 
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
-    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    """The verdict of a code zone (docs/checks.md, "Code limits"): C and D fail; with no ``acceptable``
     zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
 
     >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]

@@ -123,7 +123,7 @@ def design(
     candidates that pass the others, cheapest first, until one passes (at most 20).
     The shown designs are checked again by fcalc check's own path; a disagreement on a check the
     search evaluated is reported as an internal error (exit 4). Machines and points on the block's top rise with it,
-    those on an end face follow the face (README, "Sizing"). Exit 0 when a design passes, 1 when
+    those on an end face follow the face (docs/design.md). Exit 0 when a design passes, 1 when
     none does, 2 for bad options, 3 for an invalid scene.
     """
     from foundation_calc.checks.design.apply import VaryError, given_dimensions

@@ -10,7 +10,7 @@ from foundation_calc.cli.guard import reports_errors
 
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document instead of the table.")]
 MarkdownOpt = Annotated[
-    bool, typer.Option("--markdown", help="Print the record as Markdown (the README's Validation section).")
+    bool, typer.Option("--markdown", help="Print the record as Markdown (docs/validation.md).")
 ]
 
 
