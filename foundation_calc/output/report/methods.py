@@ -126,7 +126,9 @@ def methods_section(scene, documents: dict):
     if "runup" in documents:
         from foundation_calc.output.report.runup_methods import runup_columns
 
-        runup = runup_columns(scene, documents["runup"])
+        from foundation_calc.output.report.runup_governing import governing_blocks
+
+        runup = [*runup_columns(scene, documents["runup"]), *governing_blocks(scene, documents["runup"])]
     blocks = [block for chain in chains for block in chain.blocks()]
     terms = [block for block in response if hasattr(block, "nomenclature")]
     blocks += [block for block in response if not hasattr(block, "nomenclature")]
