@@ -18,7 +18,7 @@ from pydantic import BaseModel
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
-from foundation_calc.scenes.loading import KINDS, model_for_kind
+from foundation_calc.scenes.kinds import KINDS, model_for_kind
 from foundation_calc.scenes.plausibility import INERTIA_KEYS, KEYS, Plausible
 from tests.conftest import CONFIGS
 

@@ -24,7 +24,8 @@ from rich.table import Table
 
 from foundation_calc.output import validation as out
 from foundation_calc.output.console import keep_words_whole
-from foundation_calc.validation.record import all_cases, evaluate, run_record
+from foundation_calc.validation.cases import all_cases, run_record
+from foundation_calc.validation.record import evaluate
 from foundation_calc.references import REFERENCES
 
 README = Path(__file__).resolve().parents[1] / "README.md"
@@ -78,10 +79,10 @@ def test_a_failing_case_exits_1(monkeypatch):
     from typer.testing import CliRunner
 
     from foundation_calc.cli.app import build_app
-    from foundation_calc.validation import record
+    from foundation_calc.validation import cases
 
     wrong = dataclasses.replace(all_cases()[0], reference=1.7)
-    monkeypatch.setattr(record, "all_cases", lambda: (wrong,))
+    monkeypatch.setattr(cases, "all_cases", lambda: (wrong,))
     result = CliRunner().invoke(build_app(("validate",)), ["validate"])
     assert result.exit_code == 1, result.output
     assert "FAIL" in result.output and "1 cases: 0 pass, 1 fail" in result.output

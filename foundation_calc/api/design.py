@@ -198,7 +198,7 @@ def _write(loaded, path: Path, sizing):
     from foundation_calc.checks.design.grid import DECIMALS
     from foundation_calc.output.files import write_atomically
     from foundation_calc.output.scene_edit import edited_scene
-    from foundation_calc.scenes.loading import parse_toml, read_text
+    from foundation_calc.scenes.files import parse_toml, read_text
     from foundation_calc.scenes.unit_strings import kept_as_written, with_unit_strings_converted
 
     best = sizing.designs.design(0)
@@ -222,7 +222,8 @@ def _same_verdicts(scene: Path, source: str, text: str, full) -> None:
     from foundation_calc.checks.batch import run_checks
     from foundation_calc.checks.design.recheck import OUTCOME_NAMES
     from foundation_calc.checks.design.reference import judged
-    from foundation_calc.scenes.loading import parse_scene, parse_toml
+    from foundation_calc.scenes.files import parse_toml
+    from foundation_calc.scenes.loading import parse_scene
     from foundation_calc.scenes.project import with_office_defaults
 
     written = parse_scene(with_office_defaults(parse_toml(text, source), scene), source)

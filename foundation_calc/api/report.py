@@ -90,7 +90,7 @@ def report(scene, *, output: str | os.PathLike | None = None, exact: bool = Fals
     sheet, checked = scene_sheet(loaded.path, command or f"foundation_calc.report({loaded.source!r})", shown, exact)
     if validation:
         from foundation_calc.output.report.validation import validation_section
-        from foundation_calc.validation.record import run_record
+        from foundation_calc.validation.cases import run_record
 
         sheet = replace(sheet, sections=(*sheet.sections, validation_section(run_record())))
     with writing(path, "-o"):

@@ -7,7 +7,7 @@ from typing import Annotated, Any
 
 import typer
 
-from foundation_calc.scenes.loading import KINDS
+from foundation_calc.scenes.kinds import KINDS
 
 
 def _known_kind(kind: str) -> str:

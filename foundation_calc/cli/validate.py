@@ -21,7 +21,7 @@ def validate(json: JsonOpt = False, markdown: MarkdownOpt = False) -> None:
     printed last digit, or the stated accuracy of the method). Exit 1 if any case fails.
     """
     from foundation_calc.output import validation as out
-    from foundation_calc.validation.record import run_record
+    from foundation_calc.validation.cases import run_record
 
     if json and markdown:
         raise typer.BadParameter("--json and --markdown exclude each other", param_hint="--markdown")

@@ -27,7 +27,8 @@ from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from foundation_calc.scenes.common import SpeedFields
-from foundation_calc.scenes.loading import model_for_kind, parse_scene
+from foundation_calc.scenes.kinds import model_for_kind
+from foundation_calc.scenes.loading import parse_scene
 from foundation_calc.scenes.messages import allowed_range
 from foundation_calc.units import speed_triplet
 
