@@ -93,7 +93,7 @@ def scene_of(scene, expect: str | tuple[str, ...] | None = None, source: str | N
         expect_kind(scene.kind, expect, scene.source)
         return scene
     document, source, path = read(scene, source)
-    model, written = parse_scene_as_written(copy.deepcopy(document), source, expect)
+    model, written = parse_scene_as_written(document, source, expect)  # it converts into a new document
     return Scene(model, source, document, path, written)
 
 
@@ -106,6 +106,12 @@ def read(scene, source: str | None = None) -> tuple[dict, str, Path | None]:
     if isinstance(scene, Scene):
         return copy.deepcopy(scene.document), scene.source if source is None else source, scene.path
     if isinstance(scene, Mapping):
-        return copy.deepcopy(dict(scene)), MAPPING_SOURCE if source is None else source, None
+        source = MAPPING_SOURCE if source is None else source
+        try:  # the caller's mapping stays the caller's
+            return copy.deepcopy(dict(scene)), source, None
+        except RecursionError:
+            from foundation_calc.errors import SceneError
+
+            raise SceneError(source, [("", "is nested too deeply")]) from None
     path = Path(scene)
     return read_scene(path), str(path) if source is None else source, path
