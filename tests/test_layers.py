@@ -1,4 +1,4 @@
-"""The package's dependencies run one way: cli → output/benchmarks → checks → scenes → solvers →
+"""The package's dependencies run one way: cli → api → output/benchmarks → checks → scenes → solvers →
 units/errors. Every import of every module (function-level ones included) is parsed and an import
 from a higher layer fails the test, so the rule in docs/architecture.md stays true.
 Inside ``solvers`` the problems (crank, platform) do not import each other, and the shared
@@ -26,8 +26,9 @@ LAYER_RANK = {
     "output": 4,
     "benchmarks": 4,
     "validation": 4,
-    "cli": 5,
-    "__main__": 6,
+    "api": 5,
+    "cli": 6,
+    "__main__": 7,
 }
 #: Solver packages that may be imported only by themselves and layers above ``solvers``.
 PROBLEMS = {"crank", "platform"}
@@ -76,7 +77,7 @@ MODULES = sorted(PACKAGE.rglob("*.py"))
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
 def test_no_upward_import(path: Path) -> None:
     here = _layer(_module_name(path))
-    if here is None:  # foundation_calc/__init__.py: metadata only (its version, on first use)
+    if here is None:  # foundation_calc/__init__.py: its version and the API's names, on first use
         imported = {name for _, name in _imports(path)}
         assert imported <= {"foundation_calc.version"}, "the package root must not import its layers"
         return

@@ -30,11 +30,7 @@ def parse_scene_as_written(data: dict[str, Any], source: str = "<scene>", expect
     kind = data.get("kind")
     if not isinstance(kind, str) or kind not in KINDS:
         raise SceneError(source, [_kind_problem(data, kind)])
-    expected = (expect,) if isinstance(expect, str) else expect
-    if expected is not None and kind not in expected:
-        commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
-        needs = " or ".join(f'"{k}"' for k in expected)
-        raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
+    expect_kind(kind, expect, source)
     from foundation_calc.scenes.unit_strings import unit_strings_converted
 
     data, written, unit_problems = unit_strings_converted(kind, data)  # "6000 mm" -> 6.0; pint only if written so
@@ -46,6 +42,16 @@ def parse_scene_as_written(data: dict[str, Any], source: str = "<scene>", expect
         named = {where for where, _ in unit_problems}
         unit_problems += [(where, text) for where, text in exc.problems if where not in named]
     raise SceneError(source, unit_problems)
+
+
+def expect_kind(kind: str, expect: str | tuple[str, ...] | None, source: str) -> None:
+    """Raise :class:`SceneError` unless a scene of ``kind`` is one that ``expect`` names (a kind,
+    several, or None for any): the problem names the commands that take the scene."""
+    expected = (expect,) if isinstance(expect, str) else expect
+    if expected is not None and kind not in expected:
+        commands = " or ".join(f"fcalc {c}" for c in KIND_COMMANDS[kind])
+        needs = " or ".join(f'"{k}"' for k in expected)
+        raise SceneError(source, [("kind", f'this command needs a {needs} scene (got "{kind}": use {commands})')])
 
 
 def _kind_problem(data: dict[str, Any], kind: Any) -> tuple[str, str]:
