@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from html import escape
 
+from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 STYLE = """
@@ -67,5 +68,8 @@ def render(sheet: Sheet) -> str:
     for number, section in enumerate(sheet.sections, 1):
         parts.append(f"<h2>{number}. {escape(section.title)}</h2>")
         parts += [_block(b) for b in section.blocks]
+    if sheet.chain:  # kept beside the sheet for a checker's tool; "</" cannot close the script
+        text = chain_document(sheet.chain).replace("</", "<\\/")
+        parts.append(f'<script type="application/json" id="fcalc-chain">{text}</script>')
     parts.append("</body></html>")
     return "\n".join(parts)

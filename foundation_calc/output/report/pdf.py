@@ -9,6 +9,7 @@ from __future__ import annotations
 import tempfile
 from pathlib import Path
 
+from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 PREAMBLE = """#set text(size: 9pt)
@@ -88,6 +89,8 @@ def source(sheet: Sheet) -> tuple[str, list[str]]:
     for section in sheet.sections:
         parts.append(f"#heading(level: 1, {string(section.title)})\n")
         parts += [_block(b, figures) for b in section.blocks]
+    if sheet.chain:  # kept in the source for a checker's tool: typst query sheet.typ "<fcalc-chain>"
+        parts.append(f"#metadata({string(chain_document(sheet.chain))}) <fcalc-chain>\n")
     return "".join(parts), figures
 
 
