@@ -242,7 +242,7 @@ def sheets():
     for name in SCENES:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            sheet, _ = scene_sheet(CONFIGS / f"{name}.toml", "fcalc report", units, figures=False)
+            sheet, _ = scene_sheet(CONFIGS / f"{name}.toml", "fcalc report", units, figures=False, fit_units=True)
         out[name] = {"md": read_markdown(markdown.render(sheet, [])), "html": read_html(html.render(sheet)),
                      "typ": read_typst(pdf.source(sheet)[0])}
     return out

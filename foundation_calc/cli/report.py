@@ -30,6 +30,13 @@ ValidationOpt = Annotated[
 ]
 
 
+def chosen_amplitude(tokens: list[str] | None) -> bool:
+    """True when ``--units`` names the displacement unit (else the sheet fits it to the scene)."""
+    from foundation_calc.output.display_units import named_quantities
+
+    return "amplitude" in named_quantities(tokens or [])
+
+
 def command_line() -> str:
     """The command that is running, as a user would type it."""
     return shlex.join(["fcalc", *sys.argv[1:]])
@@ -68,7 +75,7 @@ def report(
     check_output(path, "'-o'")
     writable_path(path, "-o")
     shown = display_units(units, SHEET_UNITS)
-    sheet, checked = scene_sheet(scene, command_line(), shown, exact)
+    sheet, checked = scene_sheet(scene, command_line(), shown, exact, fit_units=not chosen_amplitude(units))
     print_warnings(checked.warnings, str(scene))  # on the sheet too, in its summary
     if validation:
         from dataclasses import replace

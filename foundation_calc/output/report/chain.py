@@ -53,9 +53,11 @@ def _cell(cell: Cell) -> dict:
 def chain_document(links: tuple[Link, ...]) -> str:
     """The chain as JSON text: the formulas and a list of links, each ``formula``, ``result`` (a
     cell) and ``inputs`` (``[symbol, cell]``); a row ``["*"]`` is every row of the table, a column
-    ``"*"`` every column."""
-    return json.dumps(
+    ``"*"`` every column. ``<``, ``>`` and ``&`` are written as JSON escapes, so the text, user
+    text included, never reads as markup where a writer embeds it."""
+    text = json.dumps(
         {"formulas": FORMULAS, "links": [{"formula": link.formula, "result": _cell(link.result),
                                           "inputs": [[name, _cell(cell)] for name, cell in link.inputs]} for link in links]},
         ensure_ascii=False, separators=(",", ":"),
     )
+    return text.replace("&", "\\u0026").replace("<", "\\u003c").replace(">", "\\u003e")

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
-from foundation_calc.output.report.numbers import column, echoed, figure, percent
+from foundation_calc.output.report.numbers import column, echoed, figure, percent, share
 from foundation_calc.output.report.resonance_text import crank_rule_paragraph, margin_definition
 from foundation_calc.output.report.verdict import resonance_verdict
 
@@ -121,7 +121,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
         ((mode, _speed(units, zero[mode]), *((figure(zero[mode] / (2.0 * math.pi), 4),) if hz else ()), _speed(units, avg[mode]))
          for mode in zero),
     )
-    shares = column([r["forcing_share"] for r in res["resonances"]], 2, scale=1.0)  # the largest share is 1
+    shares = [share(r["forcing_share"]) for r in res["resonances"]]  # the largest share is 100 %
     rows = (
         (
             r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),

@@ -15,6 +15,21 @@ from foundation_calc.output.report.references import cited, references_section
 from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
 from foundation_calc.output.report.verdict import checks_section, summary_section
 
+#: A sheet whose displacement limits are all below this [m] shows displacements in µm, not mm, so
+#: its values and limits print as 1.35 µm ≤ 50.0 µm rather than 1.35·10⁻³ mm ≤ 0.0500 mm.
+MICROMETRES_BELOW = 1e-4
+
+
+def fitted_units(loaded, units: DisplayUnits) -> DisplayUnits:
+    """``units`` with displacements in µm when the scene limits them below :data:`MICROMETRES_BELOW`
+    (every displacement limit it gives) and the sheet's unit is mm."""
+    from dataclasses import replace
+
+    given = [v for v in (getattr(loaded.limits, k, None) for k in ("amplitude", "transient_amplitude")) if v is not None]
+    small = bool(given) and max(given) < MICROMETRES_BELOW
+    return replace(units, amplitude="µm") if small and units.amplitude == "mm" else units
+
+
 #: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
 SWEEP_RANGE = (0.05, 2.5)
 SWEEP_POINTS = 1001
@@ -78,16 +93,19 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
     return ()
 
 
-def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True):
+def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True,
+                fit_units: bool = False):
     """Load the scene at ``path``, run the checks ``fcalc check`` runs on it and return its sheet
     and the :class:`~foundation_calc.checks.batch.SceneRun` (whose exit code is ``fcalc check``'s);
-    ``figures=False`` leaves the plots out (matplotlib's part of the time)."""
+    ``figures=False`` leaves the plots out (matplotlib's part of the time); ``fit_units``: the
+    displacement unit was not chosen (:func:`fitted_units`)."""
     from foundation_calc.checks.batch import SceneRun, run_checks
     from foundation_calc.output.check_report import result_document
     from foundation_calc.scenes.loading import load_scene_as_written
 
     source = str(path)
     loaded, written = load_scene_as_written(path)
+    units = fitted_units(loaded, units) if fit_units else units
     runs = run_checks(loaded)
     raise_unjudged(runs, source)
     warnings = tuple(loaded.plausibility_warnings())

@@ -68,8 +68,7 @@ def render(sheet: Sheet) -> str:
     for number, section in enumerate(sheet.sections, 1):
         parts.append(f"<h2>{number}. {escape(section.title)}</h2>")
         parts += [_block(b) for b in section.blocks]
-    if sheet.chain:  # kept beside the sheet for a checker's tool; "</" cannot close the script
-        text = chain_document(sheet.chain).replace("</", "<\\/")
-        parts.append(f'<script type="application/json" id="fcalc-chain">{text}</script>')
+    if sheet.chain:  # kept beside the sheet for a checker's tool (no "<" in it: it cannot close the script)
+        parts.append(f'<script type="application/json" id="fcalc-chain">{chain_document(sheet.chain)}</script>')
     parts.append("</body></html>")
     return "\n".join(parts)

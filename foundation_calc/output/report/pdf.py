@@ -6,6 +6,7 @@ so no scene or point name is ever read as markup; only the equations are typst m
 
 from __future__ import annotations
 
+import math
 import tempfile
 from pathlib import Path
 
@@ -43,9 +44,12 @@ def _table(t: Table) -> str:
         columns = ", ".join("1fr" if j == t.wide else "auto" for j in range(len(t.header)))
     elif max((width[j] for j in range(len(t.header)) if not t.numeric[j]), default=0) > WRAP_CHARS:
         # long text wraps: every text column longer than SHORT_CHARS shares the free width in
-        # proportion to its longest cell (a hand calculation's formula and values both), so a long
-        # item column is not squeezed by a long source
-        shares = [min(width[j], WRAP_CHARS * 2) if not t.numeric[j] and width[j] > SHORT_CHARS else 0 for j in range(len(t.header))]
+        # proportion to the geometric mean of its mean and longest cells (a hand calculation's
+        # formula and values both), so a long item column is not squeezed by a source printed
+        # once and "as above" below it
+        mean = [sum(len(row[j]) for row in t.rows) / max(len(t.rows), 1) for j in range(len(t.header))]
+        shares = [min(math.ceil(math.sqrt(mean[j] * width[j])), WRAP_CHARS * 2) if not t.numeric[j] and width[j] > SHORT_CHARS else 0
+                  for j in range(len(t.header))]
         columns = ", ".join(f"{share}fr" if share else "auto" for share in shares)
     inset = "8pt" if t.wide is not None else "2.5pt"  # a sign box is tall enough to sign in
     body = (

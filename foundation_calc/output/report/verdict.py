@@ -14,7 +14,7 @@ from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.chain import CHECKS_TABLE, check_cell
 from foundation_calc.output.report.model import Cell, Link, Paragraph, Section, table
 from foundation_calc.output.report.resonance_text import measured_to
-from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio
+from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio, share
 
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
 EXIT = {"pass": 0, "warn": 0, "fail": 1}
@@ -66,11 +66,11 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
         critical = quantity(units, "speed", r["critical_speed"]["omega"] if omega is None else measured_to(r, omega))
         shown = resonance_verdict(r)
         decides = shown == r["verdict"]
-        yield (
-            f"{r['condition']} ({r['mode_name']}, critical {critical})",
+        yield (  # a block's condition names its mode's motion: "ω = mode 1 (y)"
+            f"{r['condition']}, critical {critical}" if r.get("dominant") else f"{r['condition']} ({r['mode_name']}, critical {critical})",
             "margin " + percent(r["margin"]),
             ("≥ " + percent(r["required"]) if r["required"] > 0 else "no band") if decides
-            else Measure(r["forcing_share"], 2, scale=1.0, prefix="forcing share ", suffix=" < 1 %"),
+            else f"share {share(r['forcing_share'])} < 1 %",
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
             limit_source(scene, "detuning") if decides else "resonance rule",
@@ -352,6 +352,7 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
     if rows:  # value and limit: one notation per quantity in each column
         columns = list(zip(*rows))
         columns[2], columns[3] = cells(columns[2]), cells(columns[3])
+        columns[6] = as_above(columns[6])
         rows = list(zip(*columns))
     checks = table(
         "Every check (ratio = demand/limit; above 1 fails)",
@@ -360,6 +361,16 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         (False, False, True, True, True, False, False),
     )
     return Section("Checks", (checks, Paragraph(verdict_line(runs))), tuple(links))
+
+
+def as_above(texts) -> list[str]:
+    """A column with each text that repeats the row above as "as above", so a long source is
+    printed once per run of rows and the table does not wrap every row.
+
+    >>> as_above(["[limits] amplitude: report", "[limits] amplitude: report", "rule", "rule"])
+    ['[limits] amplitude: report', 'as above', 'rule', 'as above']
+    """
+    return [text if k == 0 or text != texts[k - 1] else "as above" for k, text in enumerate(texts)]
 
 
 def _links(check: str, item: str, shown_ratio: str, derived) -> list[Link]:
