@@ -97,8 +97,13 @@ class _HTMLSheet(HTMLParser):
             self.row = []
         elif tag == "script" and ("id", "fcalc-chain") in attrs:
             self.in_chain = True
+        elif tag == "sup" and self.text is not None:
+            self.text.append("^{")  # fcalc's plain form of an exponent
 
     def handle_endtag(self, tag):
+        if tag == "sup" and self.text is not None:
+            self.text.append("}")
+            return
         text = "".join(self.text or ())
         if tag == "h2":
             self.sections.append(PrintedSection(text.split(". ", 1)[1]))
@@ -135,10 +140,20 @@ def read_html(text: str) -> Printed:
 # --------------------------------------------------------------------------- typst source
 
 _LITERAL = re.compile(r'"((?:[^"\\]|\\.)*)"')
+#: A piece of text: a string literal, or a code block of literals and superscripts.
+_TEXT = re.compile(r'\{ (?:[^{}"]|"(?:[^"\\]|\\.)*")* \}|"(?:[^"\\]|\\.)*"')
 
 
 def _typst_string(literal: str) -> str:
     return re.sub(r"\\(.)", lambda m: {"n": "\n", "r": "\r"}.get(m.group(1), m.group(1)), literal)
+
+
+def _typst_text(piece: str) -> str:
+    """A text piece as plain text, a superscript as ``^{…}`` (fcalc's plain form)."""
+    if not piece.startswith("{"):
+        return _typst_string(piece[1:-1])
+    parts = re.findall(r'(super\()?"((?:[^"\\]|\\.)*)"', piece)
+    return "".join("^{" + _typst_string(t) + "}" if sup else _typst_string(t) for sup, t in parts)
 
 
 def read_typst(text: str) -> Printed:
@@ -149,7 +164,7 @@ def read_typst(text: str) -> Printed:
             sections.append(PrintedSection(_typst_string(_LITERAL.search(line).group(1))))
         elif line.startswith("#block(") and "table(columns: (" in line:
             count = len(re.search(r"table\(columns: \((.*?),\)", line).group(1).split(", "))
-            literals = [_typst_string(s) for s in _LITERAL.findall(line)]
+            literals = [_typst_text(s) for s in _TEXT.findall(line)]
             title = literals.pop(0) if "strong(" in line.split("table(", 1)[0] else ""
             header, body = literals[:count], literals[count:]
             sections[-1].tables.append(PrintedTable(title, header, [body[k:k + count] for k in range(0, len(body), count)]))

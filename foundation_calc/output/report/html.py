@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from html import escape
+import re
+from html import escape as _escape
 
 from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
@@ -21,6 +22,20 @@ figure { margin: 0.5em 0; page-break-inside: avoid; } figure svg { width: 100%; 
 table.signs { width: 100%; } table.signs td { height: 2.2em; } table.signs td:last-child { width: 45%; }
 .header { font-size: 8pt; color: #555; border-bottom: 1px solid #ccc; }
 """
+
+
+#: An exponent in fcalc's plain text: ``e^{i nωt}``.
+_EXPONENT = re.compile(r"\^\{([^{}]*)\}")
+
+
+def escape(text: str) -> str:
+    """``text`` as HTML text, each exponent ``^{…}`` as a superscript (escaped like the rest).
+
+    >>> escape("Re(Z e^{i nωt}) <b>")
+    'Re(Z e<sup>i nωt</sup>) &lt;b&gt;'
+    """
+    parts = _EXPONENT.split(text)
+    return "".join(_escape(p) if k % 2 == 0 else f"<sup>{_escape(p)}</sup>" for k, p in enumerate(parts))
 
 
 #: A numeric cell longer than this may wrap; a table with a text cell longer than LONG_TEXT takes
@@ -61,7 +76,7 @@ def render(sheet: Sheet) -> str:
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
+        f"<title>{_escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
         f'<div class="header">{escape(sheet.header or sheet.title)}</div>',
         f"<h1>{escape(sheet.title)}</h1>",
     ]
