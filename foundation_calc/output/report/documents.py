@@ -30,13 +30,27 @@ def fitted_units(loaded, units: DisplayUnits) -> DisplayUnits:
     return replace(units, amplitude="µm") if small and units.amplitude == "mm" else units
 
 
-#: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
+#: Speed range of the sheet's sweep plot, as factors on the operating speed (at least: see
+#: :func:`sweep_factors`), and its points.
 SWEEP_RANGE = (0.05, 2.5)
 SWEEP_POINTS = 1001
 
 
-def sweep_figure_of(loaded, units: DisplayUnits, omega: float):
-    """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands)."""
+def sweep_factors(omega: float, resonances: list[dict]) -> tuple[float, float]:
+    """The sweep plot's speed range as factors on the operating speed ``omega``: :data:`SWEEP_RANGE`,
+    widened so that every judged resonance (its critical speed and detuning band) is on the plot.
+
+    >>> sweep_factors(10.0, [{"judged": True, "critical_speed": {"omega": 40.0}, "required": 0.2}])
+    (0.05, 5.28)
+    """
+    top = max((r["critical_speed"]["omega"] * (1 + r["required"]) * 1.1 / omega for r in resonances if r["judged"]),
+              default=0.0)
+    return SWEEP_RANGE[0], round(max(SWEEP_RANGE[1], top), 2)
+
+
+def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[dict]):
+    """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands), over a
+    range that shows every judged resonance of ``resonances`` (the resonance document's rows)."""
     import numpy as np
 
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
@@ -45,7 +59,7 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float):
     from foundation_calc.output.sweep_report import sweep_document
 
     design = None if loaded.mechanism is None else loaded.design()
-    omegas = loaded.speed.omega_rad_s * np.linspace(*SWEEP_RANGE, SWEEP_POINTS)
+    omegas = loaded.speed.omega_rad_s * np.linspace(*sweep_factors(omega, resonances), SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
     return sweep_figure(sweep_series(sweep_document(swept, "", loaded.name)), omega, units)
@@ -88,7 +102,8 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
         plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
         return platform_sections(documents, units, plots)
     if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
-        plots = (sweep_figure_of(loaded, units, operating_speed(documents["resonance"])),) if figures else ()
+        resonance = documents["resonance"]
+        plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()
         return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)
     return ()
 
