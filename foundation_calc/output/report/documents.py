@@ -101,6 +101,15 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
 
         plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
         return platform_sections(documents, units, plots)
+    if loaded.kind == "block_foundation" and "resonance" in documents:
+        from foundation_calc.output.report.block_accuracy import block_accuracy_section
+
+        plots = ()
+        if figures:
+            from foundation_calc.output.report.figures import block_sweep_figures
+
+            plots = (Section("Plots", block_sweep_figures(loaded, units, documents["resonance"])),)
+        return (*plots, block_accuracy_section(loaded))
     if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
         resonance = documents["resonance"]
         plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()

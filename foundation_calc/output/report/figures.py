@@ -67,3 +67,38 @@ def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Fi
         " detuning band of [limits] detuning shaded; black line: the operating speed."
     )
     return Figure(svg[svg.index("<svg"):], caption)
+
+
+#: Points of a block sheet's sweep of each machine's speed (the crank sheet's range, :func:`sweep_factors`).
+BLOCK_SWEEP_POINTS = 401
+
+
+def block_sweep_figures(loaded, units: DisplayUnits, resonance: dict) -> tuple[Figure, ...]:
+    """One speed sweep plot per machine of a block scene (``fcalc sweep``'s plot: the largest peaks
+    over G and the points, the amplitude limit, the machine's critical speeds with their bands),
+    the other machines at their own speeds, over a range that shows each judged resonance of the
+    machine (``resonance``: the resonance check's document)."""
+    import tempfile
+    from pathlib import Path
+
+    import numpy as np
+
+    from foundation_calc.checks.block_sweep import sweep_block
+    from foundation_calc.output.block_sweep import plot_sweep
+    from foundation_calc.output.report.documents import sweep_factors
+
+    figures = []
+    for k, (name, speed) in enumerate(resonance["machines"].items()):
+        own = [r for r in resonance["resonances"] if r["machine"] == name]
+        sweep = sweep_block(loaded, k, speed["omega"] * np.linspace(*sweep_factors(speed["omega"], own), BLOCK_SWEEP_POINTS))
+        with tempfile.TemporaryDirectory(prefix="fcalc-sweep-") as folder:
+            path = Path(folder) / "sweep.svg"
+            plot_sweep(sweep, path, units, loaded.name or "block")
+            svg = path.read_text(encoding="utf-8")
+        caption = (
+            f"Sweep of {name}'s speed, the other machines at their own: the largest peak displacement over G and"
+            " the points along x, y, z (steady state, as the amplitudes check), the amplitude limit, and the"
+            f" critical speed p_j/n of each of {name}'s conditions that can decide, with its detuning band."
+        )
+        figures.append(Figure(svg[svg.index("<svg"):], caption))
+    return tuple(figures)
