@@ -226,26 +226,9 @@ def _perturbed(values: dict):
 
 
 @pytest.fixture(scope="module")
-def sheets():
-    """Each shipped scene's sheet, rendered once in every format (its figures left out: no judged
-    number is read from a plot)."""
-    import warnings
-
-    from foundation_calc.cli.report import SHEET_UNITS
-    from foundation_calc.cli.units import display_units
-    from foundation_calc.output.report import html, markdown, pdf
-    from foundation_calc.output.report.documents import scene_sheet
-    from tests.sheet_reader import read_html, read_markdown, read_typst
-
-    units = display_units(None, SHEET_UNITS)
-    out = {}
-    for name in SCENES:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            sheet, _ = scene_sheet(CONFIGS / f"{name}.toml", "fcalc report", units, figures=False, fit_units=True)
-        out[name] = {"md": read_markdown(markdown.render(sheet, [])), "html": read_html(html.render(sheet)),
-                     "typ": read_typst(pdf.source(sheet)[0])}
-    return out
+def sheets(shipped_sheets):
+    """Each shipped scene's sheet in every format, read back as a checker reads it."""
+    return {name: {fmt: READERS[fmt](texts[fmt]) for fmt in FORMATS} for name, texts in shipped_sheets.items()}
 
 
 _RECOMPUTED: dict[str, tuple[float, float]] = {}
