@@ -45,7 +45,8 @@ LONG_TEXT = 40
 
 
 def _cell(text: str, numeric: bool) -> str:
-    kind = (' class="n w"' if len(text) > NOWRAP_CHARS else " class=n") if numeric else ""
+    wraps = len(text) > NOWRAP_CHARS or "∠" in text  # a magnitude ∠ phase may break before its phase
+    kind = (' class="n w"' if wraps else " class=n") if numeric else ""
     return f"<td{kind}>{escape(text)}</td>"
 
 
