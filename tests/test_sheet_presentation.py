@@ -93,7 +93,7 @@ def test_sweep_figure_spans_every_judged_resonance(runner, name):
     import json
 
     from foundation_calc.cli.app import app
-    from foundation_calc.output.report.documents import sweep_factors
+    from foundation_calc.output.report.figures import sweep_factors
 
     result = runner.invoke(app, ["check", str(CONFIGS / f"{name}.toml"), "--json"])
     doc = next(c["result"] for c in json.loads(result.stdout)["scenes"][0]["checks"] if c["check"] == "resonance")

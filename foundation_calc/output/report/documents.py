@@ -30,22 +30,8 @@ def fitted_units(loaded, units: DisplayUnits) -> DisplayUnits:
     return replace(units, amplitude="µm") if small and units.amplitude == "mm" else units
 
 
-#: Speed range of the sheet's sweep plot, as factors on the operating speed (at least: see
-#: :func:`sweep_factors`), and its points.
-SWEEP_RANGE = (0.05, 2.5)
+#: Points of the sheet's crank sweep plot (its range: :func:`~.figures.sweep_factors`).
 SWEEP_POINTS = 1001
-
-
-def sweep_factors(omega: float, resonances: list[dict]) -> tuple[float, float]:
-    """The sweep plot's speed range as factors on the operating speed ``omega``: :data:`SWEEP_RANGE`,
-    widened so that every judged resonance (its critical speed and detuning band) is on the plot.
-
-    >>> sweep_factors(10.0, [{"judged": True, "critical_speed": {"omega": 40.0}, "required": 0.2}])
-    (0.05, 5.28)
-    """
-    top = max((r["critical_speed"]["omega"] * (1 + r["required"]) * 1.1 / omega for r in resonances if r["judged"]),
-              default=0.0)
-    return SWEEP_RANGE[0], round(max(SWEEP_RANGE[1], top), 2)
 
 
 def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[dict]):
@@ -55,7 +41,7 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[
 
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
     from foundation_calc.checks.crank_sweep import sweep
-    from foundation_calc.output.report.figures import sweep_figure
+    from foundation_calc.output.report.figures import sweep_factors, sweep_figure
     from foundation_calc.output.sweep_report import sweep_document
 
     design = None if loaded.mechanism is None else loaded.design()

@@ -11,6 +11,23 @@ from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure
 
 
+#: Speed range of a sheet's sweep plot, as factors on the operating speed (at least: see
+#: :func:`sweep_factors`).
+SWEEP_RANGE = (0.05, 2.5)
+
+
+def sweep_factors(omega: float, resonances: list[dict]) -> tuple[float, float]:
+    """The sweep plot's speed range as factors on the operating speed ``omega``: :data:`SWEEP_RANGE`,
+    widened so that every judged resonance (its critical speed and detuning band) is on the plot.
+
+    >>> sweep_factors(10.0, [{"judged": True, "critical_speed": {"omega": 40.0}, "required": 0.2}])
+    (0.05, 5.28)
+    """
+    top = max((r["critical_speed"]["omega"] * (1 + r["required"]) * 1.1 / omega for r in resonances if r["judged"]),
+              default=0.0)
+    return SWEEP_RANGE[0], round(max(SWEEP_RANGE[1], top), 2)
+
+
 def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
     """Peaks of C against the crank speed [rad/s] with the operating speed and the detuning bands shaded."""
     fig, ax = new_figure(7.0, 3.6)
@@ -85,8 +102,6 @@ def block_sweep_figures(loaded, units: DisplayUnits, resonance: dict) -> tuple[F
 
     from foundation_calc.checks.block_sweep import sweep_block
     from foundation_calc.output.block_sweep import plot_sweep
-    from foundation_calc.output.report.documents import sweep_factors
-
     figures = []
     for k, (name, speed) in enumerate(resonance["machines"].items()):
         own = [r for r in resonance["resonances"] if r["machine"] == name]

@@ -44,7 +44,7 @@ def resonance_verdict(row: dict) -> str:
 ITEM = Cell(CHECKS_TABLE, (), "item")
 
 
-def _detuning_inputs(r: dict, doc: dict, scene, units: DisplayUnits) -> tuple:
+def _detuning_inputs(r: dict, doc: dict, units: DisplayUnits) -> tuple:
     """The printed inputs of a resonance row's margin |ω − ω_c|/ω_c: the condition (its order n), the
     speed and the natural frequencies it is measured to (a crank's zero-order and averaged ones)."""
     sp = units.label("speed")
@@ -74,7 +74,7 @@ def _resonance_rows(doc: dict, scene, units: DisplayUnits):
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
             limit_source(scene, "detuning") if decides else "resonance rule",
-            ("detuning", _detuning_inputs(r, doc, scene, units)),
+            ("detuning", _detuning_inputs(r, doc, units)),
         )
     yield from _range_rows(doc)
 
@@ -99,13 +99,13 @@ def quantity_name(quantity: str) -> str:
     return f"RMS {quantity.removesuffix('_rms')}" if quantity.endswith("_rms") else f"peak {quantity}"
 
 
-def _amplitude_inputs(doc: dict, point: str) -> tuple:
+def _amplitude_inputs(crank: bool, point: str) -> tuple:
     """The printed inputs of a point's peak or RMS value: the complex amplitudes of every order
-    (a block's Z table, a crank's Z_n table) and where the point is (a block's G: from M's first
-    moments)."""
+    (a block's Z table, a ``crank`` foundation's Z_n table) and where the point is (a block's G:
+    from M's first moments)."""
     from foundation_calc.output.report.block_methods import MATRICES_TITLE, RESPONSE_TITLE
 
-    if "speed" in doc or "checked_with" in doc:  # a crank foundation
+    if crank:
         where = () if point == "C" else (("horizontal", Cell("[[points]]", (point,), "horizontal [m]")),
                                          ("height", Cell("[[points]]", (point,), "height [m]")))
         return (("item", ITEM), ("Z", Cell("Each harmonic: forcing F_n", ("*",), "*")), *where)
@@ -132,7 +132,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             ratio(row["ratio"]),
             row["verdict"],
             limit_source(scene, limit_key(row["quantity"])),
-            (formula, _amplitude_inputs(doc, row["point"])),
+            (formula, _amplitude_inputs(crank, row["point"])),
         )
     code = doc.get("code")
     code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
@@ -145,7 +145,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             ratio(row["ratio"]),
             row["verdict"],
             f"[ISO] {code['tables'][row['foundation']]['clause']}, group {code['machine_group']}, {row['foundation']}",
-            ("crank rms" if crank else "block rms", _amplitude_inputs(doc, row["point"])),
+            ("crank rms" if crank else "block rms", _amplitude_inputs(crank, row["point"])),
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])
@@ -184,12 +184,18 @@ def _ratio(demand: float, limit: float) -> str:
     return ratio(demand / limit) if limit > 0 else "-"
 
 
+def sensitivity_label(row: dict) -> str:
+    """A row of the platform's sensitivity table as the sheet names it: the parameter, and the
+    resonance its tolerance reaches."""
+    return row["parameter"] + (f" (resonant: {row['resonance']})" if row["resonance"] else "")
+
+
 def _platform_cells(doc: dict, units: DisplayUnits) -> dict[str, tuple]:
     """The printed inputs of each platform design finding's value (see :data:`chain.FORMULAS`)."""
     omega = ("ω", Cell("", ("ω, speed",), "value", section="Inputs as the design uses them"))
     sp = units.label("speed")
     keys = ("rocking +", "rocking −", "static +", "static −")
-    rows = [s["parameter"] + (f" (resonant: {s['resonance']})" if s["resonance"] else "") for s in doc["sensitivity"]]
+    rows = [sensitivity_label(s) for s in doc["sensitivity"]]
     return {
         "exciter height": ("quotient", (("a", Cell("Design", ("c (3.11)",), "value")),
                                         ("b", Cell("", ("ξ, η, ζ, centre of mass",), "value", section="Inputs as the design uses them", index=2)))),
