@@ -49,3 +49,26 @@ def runner() -> CliRunner:
 def frame_saw() -> dict:
     """A fresh copy of configs/frame_saw_extra_resonance.toml as a dict, to modify in a test."""
     return copy.deepcopy(read_toml(CONFIGS / "frame_saw_extra_resonance.toml"))
+
+
+@pytest.fixture(scope="session")
+def shipped_sheets() -> dict:
+    """Each shipped scene's calculation sheet, made once for the session as ``fcalc report`` makes
+    it (its plots left out: no judged number is read from a plot) and written in every format:
+    ``{name: {"sheet": Sheet, "md": text, "html": text, "typ": the PDF's typst source}}``."""
+    import warnings
+
+    from foundation_calc.api.options import display_units
+    from foundation_calc.api.report import SHEET_UNITS
+    from foundation_calc.output.report import html, markdown, pdf
+    from foundation_calc.output.report.documents import scene_sheet
+
+    units = display_units(None, SHEET_UNITS)
+    out = {}
+    for path in sorted(CONFIGS.glob("*.toml")):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the plausibility warnings some shipped scenes carry
+            sheet, _ = scene_sheet(path, "fcalc report", units, figures=False, fit_units=True)
+        out[path.stem] = {"sheet": sheet, "md": markdown.render(sheet, []), "html": html.render(sheet),
+                          "typ": pdf.source(sheet)[0]}
+    return out

@@ -171,5 +171,5 @@ def test_long_tables_may_break_across_pages():
     from foundation_calc.output.report.pdf import _table
 
     short = table("", ("a", "b"), [("x", "1")] * 3)
-    wordy = table("", ("a", "b"), [("word " * 100, "1")] * 4)
+    wordy = table("", ("a", "b"), [("word " * 300, "1")] * 8)  # some 200 lines of text: taller than a page
     assert "breakable: false" in _table(short) and "breakable: true" in _table(wordy)

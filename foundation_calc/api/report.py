@@ -15,6 +15,13 @@ from foundation_calc.api.scene import Scene, scene_of
 SHEET_UNITS = ("mm", "mm/s")
 
 
+def chosen_amplitude(tokens: list[str] | None) -> bool:
+    """True when ``--units`` names the displacement unit (else the sheet fits it to the scene)."""
+    from foundation_calc.output.display_units import named_quantities
+
+    return "amplitude" in named_quantities(tokens or [])
+
+
 @dataclass(frozen=True, eq=False)
 class SheetResult(Result):
     """A :class:`~foundation_calc.api.result.Result` of ``report``: ``files`` are the files written
@@ -87,7 +94,8 @@ def report(scene, *, output: str | os.PathLike | None = None, exact: bool = Fals
     writable_path(path, "-o")
     shown = display_units(units, SHEET_UNITS)
     loaded = scene_of(scene)
-    sheet, checked = scene_sheet(loaded.path, command or f"foundation_calc.report({loaded.source!r})", shown, exact)
+    sheet, checked = scene_sheet(loaded.path, command or f"foundation_calc.report({loaded.source!r})", shown, exact,
+                                 fit_units=not chosen_amplitude(units))
     if validation:
         from foundation_calc.output.report.validation import validation_section
         from foundation_calc.validation.cases import run_record

@@ -61,7 +61,7 @@ def eccentricity_rows(cog_xy, L: float, B: float, allowed: float) -> list[Office
 
 def bearing_row(W: float, e_x: float, e_y: float, L: float, B: float, allowable: float) -> OfficeRow:
     """Largest static base pressure q_max [Pa] (module docstring) against the allowable [Pa]."""
-    return _bearing(float(bearing_pressure(W, e_x, e_y, L, B)), allowable)
+    return _bearing(float(bearing_pressure(W, e_x, e_y, L, B)), allowable, W)
 
 
 def bearing_pressure(W, e_x, e_y, L, B):
@@ -72,14 +72,15 @@ def bearing_pressure(W, e_x, e_y, L, B):
 def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
     """Static base pressure W / S [Pa] of a crank foundation (its machine stands over the base's
     centroid: no eccentricity) against the allowable [Pa]."""
-    return _bearing(W / S, allowable, "q = W/S")
+    return _bearing(W / S, allowable, W, f"q = W/S, S = {S:.4g} m²")
 
 
-def _bearing(q: float, allowable: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
+def _bearing(q: float, allowable: float, W: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
+    """The bearing pressure's row; its text names the weight W, so q follows from the sheet's numbers."""
     outcome = Outcome.FAIL if q > allowable else Outcome.PASS
     return OfficeRow(
         "bearing pressure", q, allowable, "Pa", outcome, "scene [limits] bearing_pressure",
-        f"{formula} = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
+        f"{formula}, W = {W / 1e3:.4g} kN: q = {q / 1e3:.4g} kPa {'>' if q > allowable else '<='}"
         f" {allowable / 1e3:.4g} kPa",
     )
 

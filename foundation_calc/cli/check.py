@@ -48,8 +48,9 @@ def _report_problems(scenes) -> None:
                 report_internal(f"{scene.source}, check {run.check}: {run.problems[0][1]}")
 
 
-def _write_sheets(scenes, folder: Path, shown) -> None:
-    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``.
+def _write_sheets(scenes, folder: Path, shown, fit_units: bool) -> None:
+    """One PDF sheet per scene that could be checked, named after its file: ``DIR/<stem>.pdf``
+    (``fit_units``: the displacement unit fitted to each scene, as ``fcalc report`` does).
 
     Scenes of the same name in different folders get ``<stem>-2.pdf``, ``<stem>-3.pdf``… in the
     order they were checked.
@@ -71,7 +72,7 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
         path = Path(scene.source)
         used[path.stem] = used.get(path.stem, 0) + 1
         suffix = "" if used[path.stem] == 1 else f"-{used[path.stem]}"
-        sheet, _ = scene_sheet(path, command_line(), shown)
+        sheet, _ = scene_sheet(path, command_line(), shown, fit_units=fit_units)
         target = folder / f"{path.stem}{suffix}.pdf"
         with writing(target, "--report-dir"):
             write_sheet(sheet, target)
@@ -173,9 +174,9 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
         with writing(junit, "--junit"):
             check_report.write_junit(junit, scenes, strict)
     if report_dir is not None:
-        from foundation_calc.api.report import SHEET_UNITS
+        from foundation_calc.api.report import SHEET_UNITS, chosen_amplitude
 
-        _write_sheets(scenes, report_dir, display_units(units, SHEET_UNITS))
+        _write_sheets(scenes, report_dir, display_units(units, SHEET_UNITS), not chosen_amplitude(units))
     if not json:
         check_report.print_check_table(scenes, shown, strict, verbose)
     raise typer.Exit(int(exit_code(scenes, strict)))

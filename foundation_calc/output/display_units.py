@@ -74,6 +74,15 @@ def parse_units(tokens: Iterable[str], defaults: Iterable[str] = ()) -> DisplayU
     return DisplayUnits(**(_named(defaults) | _named(tokens)))
 
 
+def named_quantities(tokens: Iterable[str]) -> set[str]:
+    """The quantities whose unit ``--units`` values name.
+
+    >>> sorted(named_quantities(["mm,rpm"]))
+    ['amplitude', 'speed']
+    """
+    return set(_named(tokens))
+
+
 def _named(tokens: Iterable[str]) -> dict[str, str]:
     """quantity -> unit named by ``tokens``."""
     chosen: dict[str, str] = {}

@@ -33,6 +33,25 @@ FORMATS = (".png", ".svg", ".pdf")
 LABEL_GAP = 0.04
 
 
+#: Height of a level of staggered labels, as a fraction of the axes; a white box under each label,
+#: so a curve or another line never runs through its text.
+LEVEL_STEP = 0.24
+LABEL_BOX = {"facecolor": "white", "alpha": 0.8, "edgecolor": "none", "pad": 0.6}
+
+
+def label_level(last: list[float], at: float, gap: float) -> int:
+    """The lowest level whose last label is at least ``gap`` left of ``at`` (a new level when none
+    is; labels are placed left to right), recorded in ``last``: no two labels overlap.
+
+    >>> last = []
+    >>> [label_level(last, x, 1.0) for x in (0.0, 0.5, 0.7, 1.2, 3.0)]
+    [0, 1, 2, 0, 0]
+    """
+    level = next((k for k, x in enumerate(last) if at - x >= gap), len(last))
+    last[level:level + 1] = [at]
+    return level
+
+
 def mark_resonances(ax, marks, operating: float | None, lo: float, hi: float, operating_label: str = "operating speed") -> None:
     """Shade the detuning band of each critical speed and label it; draw the operating speed.
 
@@ -40,16 +59,15 @@ def mark_resonances(ax, marks, operating: float | None, lo: float, hi: float, op
     condition that is not judged); the paper's conditions red, other judged ones orange, the rest
     a grey line; labels of close speeds staggered.
     """
-    previous, level = -float("inf"), 0
+    last: list[float] = []  # the speed of the last label on each level
     for centre, label, source, band in sorted(m for m in marks if lo <= m[0] <= hi):
         colour = "tab:red" if source == "paper" else "tab:orange" if band > 0 else "grey"
         if band > 0:
             ax.axvspan(centre * (1 - band), centre * (1 + band), color=colour, alpha=0.12, linewidth=0)
         ax.axvline(centre, color=colour, linewidth=0.6, alpha=0.6)
-        level = (level + 1) % 3 if centre - previous < LABEL_GAP * (hi - lo) else 0
-        previous = centre
-        ax.text(centre, 0.98 - 0.22 * level, label, rotation=90, va="top", ha="right", fontsize=7,
-                transform=ax.get_xaxis_transform())
+        level = label_level(last, centre, LABEL_GAP * (hi - lo))
+        ax.text(centre, 0.98 - LEVEL_STEP * level, label, rotation=90, va="top", ha="right", fontsize=7,
+                transform=ax.get_xaxis_transform(), bbox=LABEL_BOX)
     if operating is not None:
         ax.axvline(operating, color="black", linewidth=1.5, label=operating_label)
     if hi > lo:

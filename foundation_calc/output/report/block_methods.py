@@ -136,15 +136,21 @@ def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
     return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
 
 
+#: Titles of the tables a judged number's chain cites.
+MODES_TITLE = "Modes: K v = p² M v (eigen-solve of M⁻¹K), ζ = vᵀ C v / (2 p vᵀ M v)"
+RESPONSE_TITLE = "Z = (K − Ω² M + i Ω C)⁻¹ Q_n ([m], [rad]) as magnitude ∠ phase lag φ"
+MATRICES_TITLE = "Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)"
+
+
 def _matrices(model) -> Table:
-    return matrix_table("Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, θ_z)",
+    return matrix_table(MATRICES_TITLE,
                         (("M", model.M), ("K", model.K), ("C", model.C)), COORDINATES, ROW_UNITS)
 
 
 def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
     rows = [(str(j + 1), dominant[j], figure(p, 4), figure(p / (2 * np.pi), 4), figure(z, 3, 1.0))
             for j, (p, z) in enumerate(zip(solve.frequencies, solve.damping))]
-    return table("Modes: K v = p² M v (eigen-solve of M⁻¹K), ζ = vᵀ C v / (2 p vᵀ M v)",
+    return table(MODES_TITLE,
                  ("mode", "dominant motion", "p [rad/s]", "f [Hz]", "ζ"), rows, (False, False, True, True, True))
 
 
@@ -171,7 +177,7 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
                     (*head, "F_x", "F_y", "F_z", "M_x", "M_y", "M_z"),
                     [(m, n, omega_col[k], *(c[k] for c in q_cols)) for k, (m, n, _) in enumerate(labels)],
                     (False, False, *(True,) * 7))
-    response = table("Z = (K − Ω² M + i Ω C)⁻¹ Q_n ([m], [rad]) as magnitude ∠ phase lag φ",
+    response = table(RESPONSE_TITLE,
                      (*head, *COORDINATES),
                      [(m, n, omega_col[k], *(c[k] for c in z_cols)) for k, (m, n, _) in enumerate(labels)],
                      (False, False, *(True,) * 7))

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report import equations
 from foundation_calc.output.report.model import Figure, Paragraph, Section, table
-from foundation_calc.output.report.numbers import column, echoed, figure, percent
+from foundation_calc.output.report.numbers import column, echoed, figure, percent, share
 from foundation_calc.output.report.resonance_text import crank_rule_paragraph, margin_definition
-from foundation_calc.output.report.verdict import resonance_verdict
+from foundation_calc.output.report.verdict import resonance_verdict, sensitivity_label
 
 DIGITS = 4
 #: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
@@ -121,7 +121,7 @@ def _crank_frequencies(res: dict, units: DisplayUnits) -> Section:
         ((mode, _speed(units, zero[mode]), *((figure(zero[mode] / (2.0 * math.pi), 4),) if hz else ()), _speed(units, avg[mode]))
          for mode in zero),
     )
-    shares = column([r["forcing_share"] for r in res["resonances"]], 2, scale=1.0)  # the largest share is 1
+    shares = [share(r["forcing_share"]) for r in res["resonances"]]  # the largest share is 100 %
     rows = (
         (
             r["condition"] + {"extra": " (extra)", "loads": " (loads)"}.get(r["source"], ""),
@@ -338,8 +338,7 @@ def _platform_verification(doc: dict, units: DisplayUnits) -> Section:
     )
     damping = "with the isolators' damping" if doc["sensitivity_with_damping"] else "undamped"
     keys = ("rocking_percent_plus", "rocking_percent_minus", "static_offset_percent_plus", "static_offset_percent_minus")
-    raw = [(s["parameter"] + (f" (resonant: {s['resonance']})" if s["resonance"] else ""), *(s[k] for k in keys))
-           for s in doc["sensitivity"]]
+    raw = [(sensitivity_label(s), *(s[k] for k in keys)) for s in doc["sensitivity"]]
     formatted = _columns(raw, 3, [0] * len(raw))
     sens = table(
         f"Sensitivity to build tolerances ({damping}) [% of u]",

@@ -15,22 +15,37 @@ from foundation_calc.output.report.references import cited, references_section
 from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
 from foundation_calc.output.report.verdict import checks_section, summary_section
 
-#: Speed range of the sheet's sweep plot, as factors on the operating speed, and its points.
-SWEEP_RANGE = (0.05, 2.5)
+#: A sheet whose displacement limits are all below this [m] shows displacements in µm, not mm, so
+#: its values and limits print as 1.35 µm ≤ 50.0 µm rather than 1.35·10⁻³ mm ≤ 0.0500 mm.
+MICROMETRES_BELOW = 1e-4
+
+
+def fitted_units(loaded, units: DisplayUnits) -> DisplayUnits:
+    """``units`` with displacements in µm when the scene limits them below :data:`MICROMETRES_BELOW`
+    (every displacement limit it gives) and the sheet's unit is mm."""
+    from dataclasses import replace
+
+    given = [v for v in (getattr(loaded.limits, k, None) for k in ("amplitude", "transient_amplitude")) if v is not None]
+    small = bool(given) and max(given) < MICROMETRES_BELOW
+    return replace(units, amplitude="µm") if small and units.amplitude == "mm" else units
+
+
+#: Points of the sheet's crank sweep plot (its range: :func:`~.figures.sweep_factors`).
 SWEEP_POINTS = 1001
 
 
-def sweep_figure_of(loaded, units: DisplayUnits, omega: float):
-    """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands)."""
+def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[dict]):
+    """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands), over a
+    range that shows every judged resonance of ``resonances`` (the resonance document's rows)."""
     import numpy as np
 
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
     from foundation_calc.checks.crank_sweep import sweep
-    from foundation_calc.output.report.figures import sweep_figure
+    from foundation_calc.output.report.figures import sweep_factors, sweep_figure
     from foundation_calc.output.sweep_report import sweep_document
 
     design = None if loaded.mechanism is None else loaded.design()
-    omegas = loaded.speed.omega_rad_s * np.linspace(*SWEEP_RANGE, SWEEP_POINTS)
+    omegas = loaded.speed.omega_rad_s * np.linspace(*sweep_factors(omega, resonances), SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
     return sweep_figure(sweep_series(sweep_document(swept, "", loaded.name)), omega, units)
@@ -72,22 +87,35 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
 
         plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
         return platform_sections(documents, units, plots)
+    if loaded.kind == "block_foundation" and "resonance" in documents:
+        from foundation_calc.output.report.block_accuracy import block_accuracy_section
+
+        plots = ()
+        if figures:
+            from foundation_calc.output.report.figures import block_sweep_figures
+
+            plots = (Section("Plots", block_sweep_figures(loaded, units, documents["resonance"])),)
+        return (*plots, block_accuracy_section(loaded))
     if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
-        plots = (sweep_figure_of(loaded, units, operating_speed(documents["resonance"])),) if figures else ()
+        resonance = documents["resonance"]
+        plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()
         return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)
     return ()
 
 
-def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True):
+def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True,
+                fit_units: bool = False):
     """Load the scene at ``path``, run the checks ``fcalc check`` runs on it and return its sheet
     and the :class:`~foundation_calc.checks.batch.SceneRun` (whose exit code is ``fcalc check``'s);
-    ``figures=False`` leaves the plots out (matplotlib's part of the time)."""
+    ``figures=False`` leaves the plots out (matplotlib's part of the time); ``fit_units``: the
+    displacement unit was not chosen (:func:`fitted_units`)."""
     from foundation_calc.checks.batch import SceneRun, run_checks
     from foundation_calc.output.check_report import result_document
     from foundation_calc.scenes.loading import load_scene_as_written
 
     source = str(path)
     loaded, written = load_scene_as_written(path)
+    units = fitted_units(loaded, units) if fit_units else units
     runs = run_checks(loaded)
     raise_unjudged(runs, source)
     warnings = tuple(loaded.plausibility_warnings())

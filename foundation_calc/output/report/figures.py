@@ -11,6 +11,23 @@ from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure
 
 
+#: Speed range of a sheet's sweep plot, as factors on the operating speed (at least: see
+#: :func:`sweep_factors`).
+SWEEP_RANGE = (0.05, 2.5)
+
+
+def sweep_factors(omega: float, resonances: list[dict]) -> tuple[float, float]:
+    """The sweep plot's speed range as factors on the operating speed ``omega``: :data:`SWEEP_RANGE`,
+    widened so that every judged resonance (its critical speed and detuning band) is on the plot.
+
+    >>> sweep_factors(10.0, [{"judged": True, "critical_speed": {"omega": 40.0}, "required": 0.2}])
+    (0.05, 5.28)
+    """
+    top = max((r["critical_speed"]["omega"] * (1 + r["required"]) * 1.1 / omega for r in resonances if r["judged"]),
+              default=0.0)
+    return SWEEP_RANGE[0], round(max(SWEEP_RANGE[1], top), 2)
+
+
 def sweep_figure(series: SweepSeries, operating_omega: float, units: DisplayUnits) -> Figure:
     """Peaks of C against the crank speed [rad/s] with the operating speed and the detuning bands shaded."""
     fig, ax = new_figure(7.0, 3.6)
@@ -67,3 +84,36 @@ def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Fi
         " detuning band of [limits] detuning shaded; black line: the operating speed."
     )
     return Figure(svg[svg.index("<svg"):], caption)
+
+
+#: Points of a block sheet's sweep of each machine's speed (the crank sheet's range, :func:`sweep_factors`).
+BLOCK_SWEEP_POINTS = 401
+
+
+def block_sweep_figures(loaded, units: DisplayUnits, resonance: dict) -> tuple[Figure, ...]:
+    """One speed sweep plot per machine of a block scene (``fcalc sweep``'s plot: the largest peaks
+    over G and the points, the amplitude limit, the machine's critical speeds with their bands),
+    the other machines at their own speeds, over a range that shows each judged resonance of the
+    machine (``resonance``: the resonance check's document)."""
+    import tempfile
+    from pathlib import Path
+
+    import numpy as np
+
+    from foundation_calc.checks.block_sweep import sweep_block
+    from foundation_calc.output.block_sweep import plot_sweep
+    figures = []
+    for k, (name, speed) in enumerate(resonance["machines"].items()):
+        own = [r for r in resonance["resonances"] if r["machine"] == name]
+        sweep = sweep_block(loaded, k, speed["omega"] * np.linspace(*sweep_factors(speed["omega"], own), BLOCK_SWEEP_POINTS))
+        with tempfile.TemporaryDirectory(prefix="fcalc-sweep-") as folder:
+            path = Path(folder) / "sweep.svg"
+            plot_sweep(sweep, path, units, loaded.name or "block")
+            svg = path.read_text(encoding="utf-8")
+        caption = (
+            f"Sweep of {name}'s speed, the other machines at their own: the largest peak displacement over G and"
+            " the points along x, y, z (steady state, as the amplitudes check), the amplitude limit, and the"
+            f" critical speed p_j/n of each of {name}'s conditions that can decide, with its detuning band."
+        )
+        figures.append(Figure(svg[svg.index("<svg"):], caption))
+    return tuple(figures)

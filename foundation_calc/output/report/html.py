@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
-from html import escape
+import re
+from html import escape as _escape
 
+from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 STYLE = """
@@ -22,6 +24,20 @@ table.signs { width: 100%; } table.signs td { height: 2.2em; } table.signs td:la
 """
 
 
+#: An exponent in fcalc's plain text: ``e^{i nωt}``.
+_EXPONENT = re.compile(r"\^\{([^{}]*)\}")
+
+
+def escape(text: str) -> str:
+    """``text`` as HTML text, each exponent ``^{…}`` as a superscript (escaped like the rest).
+
+    >>> escape("Re(Z e^{i nωt}) <b>")
+    'Re(Z e<sup>i nωt</sup>) &lt;b&gt;'
+    """
+    parts = _EXPONENT.split(text)
+    return "".join(_escape(p) if k % 2 == 0 else f"<sup>{_escape(p)}</sup>" for k, p in enumerate(parts))
+
+
 #: A numeric cell longer than this may wrap; a table with a text cell longer than LONG_TEXT takes
 #: the page's width, so its text columns are not squeezed by the numbers (as in the PDF).
 NOWRAP_CHARS = 16
@@ -29,7 +45,8 @@ LONG_TEXT = 40
 
 
 def _cell(text: str, numeric: bool) -> str:
-    kind = (' class="n w"' if len(text) > NOWRAP_CHARS else " class=n") if numeric else ""
+    wraps = len(text) > NOWRAP_CHARS or "∠" in text  # a magnitude ∠ phase may break before its phase
+    kind = (' class="n w"' if wraps else " class=n") if numeric else ""
     return f"<td{kind}>{escape(text)}</td>"
 
 
@@ -60,12 +77,14 @@ def render(sheet: Sheet) -> str:
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
+        f"<title>{_escape(sheet.title)}</title><style>{STYLE}</style></head><body>",
         f'<div class="header">{escape(sheet.header or sheet.title)}</div>',
         f"<h1>{escape(sheet.title)}</h1>",
     ]
     for number, section in enumerate(sheet.sections, 1):
         parts.append(f"<h2>{number}. {escape(section.title)}</h2>")
         parts += [_block(b) for b in section.blocks]
+    if sheet.chain:  # kept beside the sheet for a checker's tool (no "<" in it: it cannot close the script)
+        parts.append(f'<script type="application/json" id="fcalc-chain">{chain_document(sheet.chain)}</script>')
     parts.append("</body></html>")
     return "\n".join(parts)

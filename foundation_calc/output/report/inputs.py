@@ -23,8 +23,12 @@ _DESCRIPTION = re.compile(r"^\s*(?P<symbol>.*?)\s*\[(?P<unit>[^\]]*)\]\s*:\s*(?P
 #: (group, key) -> display quantity of the fields shown in the chosen units.
 DISPLAYED = {
     ("limits", "amplitude"): "amplitude",
+    ("limits", "transient_amplitude"): "amplitude",
+    ("limits", "settlement"): "amplitude",
     ("limits", "velocity"): "velocity",
+    ("limits", "velocity_rms"): "velocity",
     ("limits", "acceleration"): "acceleration",
+    ("limits", "acceleration_rms"): "acceleration",
     ("operation", "amplitude"): "amplitude",
 }
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 #: Characters that can start markup anywhere in a line. Every block starts with fcalc's own text or
@@ -47,4 +48,7 @@ def render(sheet: Sheet, figure_names: list[str]) -> str:
             elif isinstance(block, Figure):
                 lines += [f"![{escape(block.caption)}]({next(figures)})", "", escape(block.caption), ""]
         lines.append("")
+    if sheet.chain:  # kept beside the sheet for a checker's tool: a comment, not shown
+        text = chain_document(sheet.chain).replace("--", "\\u002d-")  # "--" would end the comment
+        lines += [f"<!-- fcalc-chain {text} -->", ""]
     return "\n".join(lines)

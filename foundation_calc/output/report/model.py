@@ -50,11 +50,37 @@ Block = Paragraph | Table | Equation | Figure
 
 
 @dataclass(frozen=True)
+class Cell:
+    """Where a number is printed: the table whose title starts with ``table`` (the untitled table of
+    the section titled ``section`` when ``table`` is empty), the row whose first cells are ``row``,
+    the column headed ``column``; the ``index``-th number of the cell's text after ``after``."""
+
+    table: str
+    row: tuple[str, ...]
+    column: str
+    section: str = ""
+    after: str = ""
+    index: int = 0
+
+
+@dataclass(frozen=True)
+class Link:
+    """A judged number as data: the number printed at ``result`` is ``formula`` (a name of
+    :data:`foundation_calc.output.report.chain.FORMULAS`) of the numbers printed at ``inputs``
+    (symbol, cell), so a checker (and a test) recomputes it from the sheet alone."""
+
+    formula: str
+    result: Cell
+    inputs: tuple[tuple[str, Cell], ...]
+
+
+@dataclass(frozen=True)
 class Section:
-    """A numbered section of the sheet."""
+    """A numbered section of the sheet; ``links``: the chains of the judged numbers it prints."""
 
     title: str
     blocks: tuple[Block, ...]
+    links: tuple[Link, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -64,6 +90,11 @@ class Sheet:
     title: str
     sections: tuple[Section, ...] = field(default_factory=tuple)
     header: str = ""
+
+    @property
+    def chain(self) -> tuple[Link, ...]:
+        """Every judged number's link, in the order of the sections."""
+        return tuple(link for section in self.sections for link in section.links)
 
 
 def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None, wide: int | None = None) -> Table:

@@ -135,6 +135,20 @@ def percent(fraction: float) -> str:
     return f"{fraction * 100:.1f} %"
 
 
+def share(fraction: float) -> str:
+    """A forcing share (a fraction of the largest, 1) in percent to two figures, plain: below
+    0.01 % it only matters that it is under the rule's 1 %.
+
+    >>> share(1.0), share(0.31), share(1.6e-3), share(7.9e-7), share(0.0)
+    ('100 %', '31 %', '0.16 %', '< 0.01 %', '0 %')
+    """
+    if fraction == 0:
+        return "0 %"
+    if fraction < 1e-4:
+        return "< 0.01 %"
+    return f"{figure(fraction * 100, 2)} %"
+
+
 def phased(magnitude: str, z: complex) -> str:
     """A complex amplitude ``z`` as its printed ``magnitude`` and phase lag φ [°] to 0.1°:
     Re(z e^{iΩt}) = |z| cos(Ωt − φ); the magnitude alone where it prints as 0 (no phase).

@@ -6,9 +6,12 @@ so no scene or point name is ever read as markup; only the equations are typst m
 
 from __future__ import annotations
 
+import math
+import re
 import tempfile
 from pathlib import Path
 
+from foundation_calc.output.report.chain import chain_document
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 PREAMBLE = """#set text(size: 9pt)
@@ -22,9 +25,16 @@ WRAP_CHARS = 40
 SHORT_CHARS = 24
 
 #: Tables longer than this (rows, or characters of text) may break across pages, their header
-#: repeated; shorter ones stay whole. A table taller than a page must break or it runs off the page.
-UNBREAKABLE_ROWS = 12
-UNBREAKABLE_CHARS = 1500
+#: repeated; shorter ones (up to half a page of one-line rows) stay whole and move to the next page
+#: rather than leave a row or two behind. A table taller than a page must break or it runs off the page.
+UNBREAKABLE_ROWS = 24
+UNBREAKABLE_CHARS = 2500
+
+#: A table that may break starts on a new page when less than this is left of the page (its title,
+#: header and three rows), so no title or lone first row is left at the foot of a page: an empty
+#: unbreakable block this tall goes first (to the next page when it does not fit) and the space it
+#: took is given back.
+ORPHAN_SPACE = "3.2cm"
 
 
 def string(text: str) -> str:
@@ -33,33 +43,56 @@ def string(text: str) -> str:
     return f'"{escaped}"'
 
 
+#: An exponent in fcalc's plain text: ``e^{i nωt}``.
+_EXPONENT = re.compile(r"\^\{([^{}]*)\}")
+
+
+def text(plain: str) -> str:
+    """``plain`` as typst: a string literal, with each exponent ``^{…}`` set as a superscript
+    (``e^{i nωt}`` reads e with i nωt raised), still from string literals only.
+
+    >>> text("Re(Z e^{i nωt})")
+    '{ "Re(Z e"; super("i nωt"); ")" }'
+    """
+    parts = _EXPONENT.split(plain)
+    if len(parts) == 1:
+        return string(plain)
+    pieces = [string(p) if k % 2 == 0 else f"super({string(p)})" for k, p in enumerate(parts) if p or k % 2]
+    return "{ " + "; ".join(pieces) + " }"
+
+
 def _table(t: Table) -> str:
     align = ", ".join("right" if n else "left" for n in t.numeric)
-    cells = [string(h) for h in t.header] + [string(c) for row in t.rows for c in row]
+    cells = [text(h) for h in t.header] + [text(c) for row in t.rows for c in row]
     columns = ", ".join(["auto"] * len(t.header))
     width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
     if t.wide is not None:  # the sign boxes: the signature column takes the free width
         columns = ", ".join("1fr" if j == t.wide else "auto" for j in range(len(t.header)))
     elif max((width[j] for j in range(len(t.header)) if not t.numeric[j]), default=0) > WRAP_CHARS:
         # long text wraps: every text column longer than SHORT_CHARS shares the free width in
-        # proportion to its longest cell (a hand calculation's formula and values both), so a long
-        # item column is not squeezed by a long source
-        shares = [min(width[j], WRAP_CHARS * 2) if not t.numeric[j] and width[j] > SHORT_CHARS else 0 for j in range(len(t.header))]
+        # proportion to the geometric mean of its mean and longest cells (a hand calculation's
+        # formula and values both), so a long item column is not squeezed by a source printed
+        # once and "as above" below it
+        mean = [sum(len(row[j]) for row in t.rows) / max(len(t.rows), 1) for j in range(len(t.header))]
+        shares = [min(math.ceil(math.sqrt(mean[j] * width[j])), WRAP_CHARS * 2) if not t.numeric[j] and width[j] > SHORT_CHARS else 0
+                  for j in range(len(t.header))]
         columns = ", ".join(f"{share}fr" if share else "auto" for share in shares)
     inset = "8pt" if t.wide is not None else "2.5pt"  # a sign box is tall enough to sign in
     body = (
         f"table(columns: ({columns},), align: ({align},), inset: (x: 4pt, y: {inset}),"
         f" stroke: 0.4pt + gray, table.header({', '.join(cells[:len(t.header)])}), {', '.join(cells[len(t.header):])})"
     )
-    title = f"strong({string(t.title)}), " if t.title else ""
+    title = f"strong({text(t.title)}), " if t.title else ""
     long = len(t.rows) > UNBREAKABLE_ROWS or sum(map(len, (c for row in t.rows for c in row))) > UNBREAKABLE_CHARS
-    breakable = "true" if long else "false"
-    return f"#block(breakable: {breakable}, width: 100%, stack(spacing: 4pt, {title}{body}))\n"
+    if not long:
+        return f"#block(breakable: false, width: 100%, stack(spacing: 4pt, {title}{body}))\n"
+    guard = f"#block(breakable: false, height: {ORPHAN_SPACE}, width: 100%)\n#v(-{ORPHAN_SPACE}, weak: false)\n"
+    return f"{guard}#block(breakable: true, width: 100%, stack(spacing: 4pt, {title}{body}))\n"
 
 
 def _block(block, figures: list[str]) -> str:
     if isinstance(block, Paragraph):
-        return f"#par({string(block.text)})\n"
+        return f"#par({text(block.text)})\n"
     if isinstance(block, Table):
         return _table(block)
     if isinstance(block, Equation):
@@ -68,7 +101,7 @@ def _block(block, figures: list[str]) -> str:
     if isinstance(block, Figure):
         name = f"figure{len(figures) + 1}.svg"
         figures.append(block.svg)
-        return f"#figure(image({string(name)}, width: 100%), caption: {string(block.caption)})\n"
+        return f"#figure(image({string(name)}, width: 100%), caption: {text(block.caption)})\n"
     raise TypeError(type(block).__name__)
 
 
@@ -88,6 +121,8 @@ def source(sheet: Sheet) -> tuple[str, list[str]]:
     for section in sheet.sections:
         parts.append(f"#heading(level: 1, {string(section.title)})\n")
         parts += [_block(b, figures) for b in section.blocks]
+    if sheet.chain:  # kept in the source for a checker's tool: typst query sheet.typ "<fcalc-chain>"
+        parts.append(f"#metadata({string(chain_document(sheet.chain))}) <fcalc-chain>\n")
     return "".join(parts), figures
 
 

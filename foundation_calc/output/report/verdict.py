@@ -11,9 +11,10 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.report.model import Paragraph, Section, table
+from foundation_calc.output.report.chain import CHECKS_TABLE, check_cell
+from foundation_calc.output.report.model import Cell, Link, Paragraph, Section, table
 from foundation_calc.output.report.resonance_text import measured_to
-from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio
+from foundation_calc.output.report.numbers import Measure, cells, measure, percent, quantity, ratio, share
 
 #: Exit code of ``fcalc check`` for a scene whose worst check ends in this verdict.
 EXIT = {"pass": 0, "warn": 0, "fail": 1}
@@ -39,20 +40,41 @@ def resonance_verdict(row: dict) -> str:
     return "information" if row["status"] == "information" else "not judged"
 
 
+#: The check row's own item cell (its row filled in by :func:`checks_section`).
+ITEM = Cell(CHECKS_TABLE, (), "item")
+
+
+def _detuning_inputs(r: dict, doc: dict, units: DisplayUnits) -> tuple:
+    """The printed inputs of a resonance row's margin |ω − ω_c|/ω_c: the condition (its order n), the
+    speed and the natural frequencies it is measured to (a crank's zero-order and averaged ones)."""
+    sp = units.label("speed")
+    if "speed" in doc:  # a crank foundation: ω under Derived quantities, p1, p2, k0 in Natural frequencies
+        mode = r["condition"].split("= ", 1)[1]
+        return (("condition", ITEM), ("ω", Cell("", ("ω, speed",), "value", section="Derived quantities")),
+                ("p", Cell("Natural frequencies", (mode,), f"ω [{sp}]")),
+                ("p", Cell("Natural frequencies", (mode,), f"averaged inertia, ω [{sp}]")))
+    from foundation_calc.output.report.block_methods import MODES_TITLE
+
+    machine = list(doc["machines"]).index(r["machine"]) + 1
+    return (("condition", ITEM), ("n_rpm", Cell(f"[[machines]] {machine}", ("speed_rpm",), "value")),
+            ("p", Cell(MODES_TITLE, (str(r["mode"]),), "p [rad/s]")))
+
+
 def _resonance_rows(doc: dict, scene, units: DisplayUnits):
     omega = doc.get("speed", {}).get("omega")  # a crank foundation's: its margins are to the nearer critical speed
     for r in doc["resonances"]:
         critical = quantity(units, "speed", r["critical_speed"]["omega"] if omega is None else measured_to(r, omega))
         shown = resonance_verdict(r)
         decides = shown == r["verdict"]
-        yield (
-            f"{r['condition']} ({r['mode_name']}, critical {critical})",
+        yield (  # a block's condition names its mode's motion: "ω = mode 1 (y)"
+            f"{r['condition']}, critical {critical}" if r.get("dominant") else f"{r['condition']} ({r['mode_name']}, critical {critical})",
             "margin " + percent(r["margin"]),
             ("≥ " + percent(r["required"]) if r["required"] > 0 else "no band") if decides
-            else Measure(r["forcing_share"], 2, scale=1.0, prefix="forcing share ", suffix=" < 1 %"),
+            else f"share {share(r['forcing_share'])} < 1 %",
             (ratio(r["required"] / r["margin"]) if r["margin"] > 0 else "inf") if decides and r["required"] > 0 else "-",
             shown,
             limit_source(scene, "detuning") if decides else "resonance rule",
+            ("detuning", _detuning_inputs(r, doc, units)),
         )
     yield from _range_rows(doc)
 
@@ -77,11 +99,32 @@ def quantity_name(quantity: str) -> str:
     return f"RMS {quantity.removesuffix('_rms')}" if quantity.endswith("_rms") else f"peak {quantity}"
 
 
+def _amplitude_inputs(crank: bool, point: str) -> tuple:
+    """The printed inputs of a point's peak or RMS value: the complex amplitudes of every order
+    (a block's Z table, a ``crank`` foundation's Z_n table) and where the point is (a block's G:
+    from M's first moments)."""
+    from foundation_calc.output.report.block_methods import MATRICES_TITLE, RESPONSE_TITLE
+
+    if crank:
+        where = () if point == "C" else (("horizontal", Cell("[[points]]", (point,), "horizontal [m]")),
+                                         ("height", Cell("[[points]]", (point,), "height [m]")))
+        return (("item", ITEM), ("Z", Cell("Each harmonic: forcing F_n", ("*",), "*")), *where)
+    if point == "G":
+        def m(row, column):
+            return Cell(MATRICES_TITLE, (f"M, row {row}",), column)
+        where = (("M", m("u_x", "u_x")), ("M x_G", m("u_y", "θ_z")), ("−M y_G", m("u_x", "θ_z")), ("M z_G", m("u_x", "θ_y")))
+    else:
+        where = tuple((f"r_{axis}", Cell("[[points]]", (point,), "at [m]", index=j)) for j, axis in enumerate("xyz"))
+    return (("item", ITEM), ("Z", Cell(RESPONSE_TITLE, ("*",), "*")), *where)
+
+
 def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
     from foundation_calc.checks.limits import display_quantity, limit_key
 
+    crank = "machines" not in doc  # a block's document lists its machines
     for row in doc["limits"]:
         kind = display_quantity(row["quantity"])
+        formula = "crank peak" if crank else "block rms" if row["quantity"].endswith("_rms") else "block peak"
         yield (
             f"{row['point']}, {row['direction']}: {quantity_name(row['quantity'])}",
             measure(units, kind, row["value"], row["limit"]),
@@ -89,6 +132,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             ratio(row["ratio"]),
             row["verdict"],
             limit_source(scene, limit_key(row["quantity"])),
+            (formula, _amplitude_inputs(crank, row["point"])),
         )
     code = doc.get("code")
     code_units = DisplayUnits(velocity="mm/s", amplitude="µm")  # the codes' zones are in mm/s and µm
@@ -101,6 +145,7 @@ def _amplitude_rows(doc: dict, scene, units: DisplayUnits):
             ratio(row["ratio"]),
             row["verdict"],
             f"[ISO] {code['tables'][row['foundation']]['clause']}, group {code['machine_group']}, {row['foundation']}",
+            ("crank rms" if crank else "block rms", _amplitude_inputs(crank, row["point"])),
         )
     for warning in (code or {}).get("warnings", ()):
         yield ("vibration code", warning, "-", "-", "warn", code["code"])
@@ -119,6 +164,7 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
             ratio(row["ratio"]),
             row["verdict"],
             limit_source(scene, "transient_amplitude") if row["limit"] is not None else "not limited",
+            ("integration", (("peaks", Cell(f"{run_title(row['run']).capitalize()} in", ("*",), "all modes")),)),
         )
     for motor in motor_documents(doc):
         of = f" of {motor['machine']}" if motor.get("machine") else ""
@@ -130,11 +176,35 @@ def _runup_rows(doc: dict, scene, units: DisplayUnits):
                 ratio(t["ratio"]),
                 t["verdict"],
                 "scene [machines.drive]" if of else "scene [drive]",
+                ("integration", (("torque", Cell(f"Motor start-up{of} (Sommerfeld", ("*",), "torque needed [N m]")),)),
             )
 
 
 def _ratio(demand: float, limit: float) -> str:
     return ratio(demand / limit) if limit > 0 else "-"
+
+
+def sensitivity_label(row: dict) -> str:
+    """A row of the platform's sensitivity table as the sheet names it: the parameter, and the
+    resonance its tolerance reaches."""
+    return row["parameter"] + (f" (resonant: {row['resonance']})" if row["resonance"] else "")
+
+
+def _platform_cells(doc: dict, units: DisplayUnits) -> dict[str, tuple]:
+    """The printed inputs of each platform design finding's value (see :data:`chain.FORMULAS`)."""
+    omega = ("ω", Cell("", ("ω, speed",), "value", section="Inputs as the design uses them"))
+    sp = units.label("speed")
+    keys = ("rocking +", "rocking −", "static +", "static −")
+    rows = [sensitivity_label(s) for s in doc["sensitivity"]]
+    return {
+        "exciter height": ("quotient", (("a", Cell("Design", ("c (3.11)",), "value")),
+                                        ("b", Cell("", ("ξ, η, ζ, centre of mass",), "value", section="Inputs as the design uses them", index=2)))),
+        "regime margin": ("detuning", (omega, ("p", Cell("Design", ("translational resonance",), "value")))),
+        "natural frequencies": ("closest detuning", (omega, *(("p", Cell("Natural frequencies (6-DOF", (f["mode"],), f"[{sp}]"))
+                                                               for f in doc["natural_frequencies"]))),
+        "rocking": ("harmonic balance", (("rocking", Cell("6-DOF verification (", ("rocking of the corners",), "value")),)),
+        "tolerances": ("maximum", tuple(("x", Cell("Sensitivity to build tolerances", (row,), k)) for row in rows for k in keys)),
+    }
 
 
 def _design_measures(doc: dict, scene) -> dict[str, tuple[str, str, str, str]]:
@@ -172,10 +242,12 @@ def _design_measures(doc: dict, scene) -> dict[str, tuple[str, str, str, str]]:
 
 
 def _design_rows(doc: dict, scene, units: DisplayUnits):
-    measures = _design_measures(doc, scene)
+    measures, printed = _design_measures(doc, scene), _platform_cells(doc, units)
     for c in doc["checks"]:
         value, limit, shown_ratio, source = measures.get(c["name"], (c["message"], "-", "-", "design rule"))
-        yield (c["name"], value, limit, shown_ratio, c["verdict"], source)
+        if c["name"] == "exciter height" and isinstance(limit, str):  # c < 0: c itself is the value
+            printed["exciter height"] = ("quotient", printed["exciter height"][1][:1])
+        yield (c["name"], value, limit, shown_ratio, c["verdict"], source, printed.get(c["name"]))
 
 
 #: check name (as in the registry) -> rows (item, value, limit, ratio, verdict, source) of its document.
@@ -187,6 +259,7 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
             return Measure(v * 1e3, 3, "mm", prefix=prefix)
         return prefix + percent(v) if row["check"].startswith("eccentricity") else Measure(v, 3, prefix=prefix)
 
+    eccentricities = {r["check"][-1]: r["text"] for r in doc["office"] if r["check"].startswith("eccentricity")}
     for row in doc["office"]:
         above = row["check"] == "mass ratio"  # a ratio that must stay at or above its limit
         yield (
@@ -197,7 +270,29 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
             row["verdict"],
             limit_source(scene, row["source"].removeprefix(SCENE_LIMIT)) if row["source"].startswith(SCENE_LIMIT)
             else row["source"].replace("ACI 351.3R-18", "[ACI]"),  # the full entry under References
+            _office_inputs(row, eccentricities),
         )
+
+
+def _office_inputs(row: dict, eccentricities: dict[str, str]):
+    """The printed inputs of an office row's value, most in its own text (checks/office.py)."""
+    def said(after: str, item: str | None = None):
+        return Cell(CHECKS_TABLE, () if item is None else ("office", item), "item", after=after)
+
+    check = row["check"]
+    if check.startswith("eccentricity"):
+        return ("quotient", (("a", said(f"e_{check[-1]} = ")), ("b", said("the base's length " if check[-1] == "x" else "the base's width "))))
+    if check == "mass ratio":
+        return ("quotient", (("a", said("block ")), ("b", said("machines "))))
+    if check == "settlement":
+        return ("quotient", (("a", said("W/K_z = ")), ("b", said("kN / "))))
+    if check == "bearing pressure" and "S = " in row["text"]:
+        return ("quotient", (("a", said("W = ")), ("b", said("S = "))))
+    if check == "bearing pressure":
+        return ("bearing pressure", (("W", said("W = ")), ("L", Cell("[block]", ("length",), "value")),
+                                     ("B", Cell("[block]", ("width",), "value")),
+                                     ("e_x", said("e_x = ", eccentricities["x"])), ("e_y", said("e_y = ", eccentricities["y"]))))
+    return None
 
 
 def _requirement_rows(doc: dict, scene, units: DisplayUnits):
@@ -251,16 +346,19 @@ def summary_section(runs, warnings, units: DisplayUnits) -> Section:
 
 def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section:
     """Every row of every check: value, limit, ratio (demand/limit; above 1 fails), verdict, source."""
-    rows = []
+    rows, links = [], []
     for run in runs:
         reader = ROWS.get(run.check)
         found = list(reader(documents[run.check], scene, units)) if reader is not None else []
         if not found:  # a check with nothing tabulated (or unknown here): its own verdict and reason
             found = [(check_reason(run, units), "-", "-", "-", run.verdict, "fcalc check")]
-        rows += [(run.check, item, value, limit, r, verdict.upper(), source) for item, value, limit, r, verdict, source in found]
+        for item, value, limit, r, verdict, source, *derived in found:
+            rows.append((run.check, item, value, limit, r, verdict.upper(), source))
+            links += _links(run.check, item, r, derived[0] if derived else None)
     if rows:  # value and limit: one notation per quantity in each column
         columns = list(zip(*rows))
         columns[2], columns[3] = cells(columns[2]), cells(columns[3])
+        columns[6] = as_above(columns[6])
         rows = list(zip(*columns))
     checks = table(
         "Every check (ratio = demand/limit; above 1 fails)",
@@ -268,4 +366,30 @@ def checks_section(runs, documents: dict, scene, units: DisplayUnits) -> Section
         rows,
         (False, False, True, True, True, False, False),
     )
-    return Section("Checks", (checks, Paragraph(verdict_line(runs))))
+    return Section("Checks", (checks, Paragraph(verdict_line(runs))), tuple(links))
+
+
+def as_above(texts) -> list[str]:
+    """A column with each text that repeats the row above as "as above", so a long source is
+    printed once per run of rows and the table does not wrap every row.
+
+    >>> as_above(["[limits] amplitude: report", "[limits] amplitude: report", "rule", "rule"])
+    ['[limits] amplitude: report', 'as above', 'rule', 'as above']
+    """
+    return [text if k == 0 or text != texts[k - 1] else "as above" for k, text in enumerate(texts)]
+
+
+def _links(check: str, item: str, shown_ratio: str, derived) -> list[Link]:
+    """The chain of a check row: its value from its ``derived`` (formula, inputs) and its ratio from
+    its value and limit; a cell of this row (row ``()``) gets the row's keys."""
+    def here(cell: Cell) -> Cell:
+        return Cell(cell.table, (check, item), cell.column, cell.section, cell.after, cell.index) if cell.table == CHECKS_TABLE and not cell.row else cell
+
+    links = []
+    if derived is not None:
+        formula, inputs = derived
+        links.append(Link(formula, check_cell(check, item, "value"), tuple((name, here(cell)) for name, cell in inputs)))
+    if shown_ratio not in ("-", "inf"):
+        links.append(Link("ratio", check_cell(check, item, "ratio"),
+                          (("value", check_cell(check, item, "value")), ("limit", check_cell(check, item, "limit")))))
+    return links

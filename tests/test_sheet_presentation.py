@@ -1,0 +1,118 @@
+"""What a reviewer frowns at on a printed sheet, checked on every shipped scene: raw exponents in
+the PDF, one unit and one notation per quantity in the Checks table and the limits, a forcing share
+as a plain percentage, tables that do not leave a lone row at a page's foot, a sweep figure that
+shows every judged resonance, and a block sheet with a sweep figure and an accuracy statement."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from tests.conftest import CONFIGS
+from tests.sheet_numbers import NUMBER
+from tests.sheet_reader import read_markdown, read_typst
+
+SCENES = sorted(p.stem for p in CONFIGS.glob("*.toml"))
+
+#: A typst string literal of the source (text set as text, never as math or markup).
+LITERAL = re.compile(r'"((?:[^"\\]|\\.)*)"')
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_no_raw_exponent_in_the_pdf(shipped_sheets, name):
+    """e^{i nωt} is typeset (a superscript), never printed as the characters ^{…}."""
+    source = shipped_sheets[name]["typ"]
+    text_only = [s for line in source.splitlines() if not line.startswith(("#block(breakable: false)[$", "#metadata("))
+                 for s in LITERAL.findall(line)]  # equations are typst math and the chain data; the rest is text
+    assert not [s for s in text_only if "^{" in s]
+
+
+def _unit(cell: str) -> str:
+    """The unit printed after a cell's number (``1.35 µm`` → ``µm``)."""
+    match = NUMBER.search(cell.replace("−", "-"))
+    return cell[match.end():].strip()
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_checks_table_one_unit_and_notation_per_quantity(shipped_sheets, name):
+    """Value and limit of each row in one unit, plain decimals (no "1.35·10⁻³ mm ≤ 0.0500 mm"), one
+    unit per quantity in the whole table, and the [limits] inputs in that unit."""
+    sheet = read_markdown(shipped_sheets[name]["md"])
+    checks = next(t for t in sheet.tables() if t.title.startswith("Every check"))
+    by_quantity: dict[str, set[str]] = {}
+    for row in checks.rows:
+        value, limit = row[2], row[3]
+        if not NUMBER.search(value) or not limit.startswith(("≤", "≥")):
+            continue
+        assert "·10" not in value + limit, row
+        assert _unit(value) == _unit(limit), row
+        if row[0] not in ("amplitudes", "runup") or "torque" in row[1]:
+            continue  # office and design rows: one quantity each
+        zone = re.search(r"RMS (\w+) \(", row[1])
+        quantity = ("peak displacement" if row[0] == "runup" else f"RMS {zone.group(1)}" if zone
+                    else row[1].rsplit(": ", 1)[-1])
+        by_quantity.setdefault(quantity, set()).add(_unit(value))
+    assert all(len(units) == 1 for units in by_quantity.values()), by_quantity
+    limits = next((t for t in sheet.tables() if t.title == "[limits]"), None)
+    shown = {"peak displacement": ("amplitude", "transient_amplitude"), "RMS velocity": ("velocity_rms",),
+             "peak velocity": ("velocity",)}
+    for quantity, keys in shown.items():
+        for row in (limits.rows if limits and quantity in by_quantity else ()):
+            if row[0] in keys:
+                assert row[3] in by_quantity[quantity], (row, by_quantity[quantity])
+
+
+@pytest.mark.parametrize("name", [s for s in SCENES if not s.startswith(("block", "platform"))])
+def test_forcing_share_is_a_plain_percentage(shipped_sheets, name):
+    """The resonance table's forcing share: "100 %", "0.16 %", "< 0.01 %", never "1.0·10⁰"."""
+    sheet = read_markdown(shipped_sheets[name]["md"])
+    table = next(t for t in sheet.tables() if t.title.startswith("Resonances: critical speeds"))
+    shares = [row[table.header.index("forcing share")] for row in table.rows]
+    assert all(re.fullmatch(r"(< )?\d+(\.\d+)? %", s) for s in shares), shares
+
+
+def test_a_long_table_does_not_leave_a_row_at_the_foot_of_a_page(shipped_sheets):
+    """A table that may break is preceded by the unbreakable spacer that moves it to the next page
+    when its title, header and three rows would not fit; a shorter one does not break at all."""
+    from foundation_calc.output.report.pdf import ORPHAN_SPACE
+
+    source = shipped_sheets["platform_paper_example"]["typ"].splitlines()
+    for k, line in enumerate(source):
+        if line.startswith("#block(breakable: true"):
+            assert source[k - 2] == f"#block(breakable: false, height: {ORPHAN_SPACE}, width: 100%)", line[:80]
+    tables = {t.title: t for t in read_typst(shipped_sheets["platform_paper_example"]["typ"]).tables()}
+    matrices = next(line for line in source if "mean matrices about O1" in line)
+    assert matrices.startswith("#block(breakable: false") and len(next(t for n, t in tables.items() if "mean matrices" in n).rows) > 12
+
+
+@pytest.mark.parametrize("name", [s for s in SCENES if not s.startswith(("block", "platform"))])
+def test_sweep_figure_spans_every_judged_resonance(runner, name):
+    """The crank sheet's sweep runs past every judged critical speed and its band (the Lysmer
+    compressor's ω = p2 at 140.6 rad/s, 9 ω, was off the plot)."""
+    import json
+
+    from foundation_calc.cli.app import app
+    from foundation_calc.output.report.figures import sweep_factors
+
+    result = runner.invoke(app, ["check", str(CONFIGS / f"{name}.toml"), "--json"])
+    doc = next(c["result"] for c in json.loads(result.stdout)["scenes"][0]["checks"] if c["check"] == "resonance")
+    omega = doc["speed"]["omega"]
+    low, high = sweep_factors(omega, doc["resonances"])
+    for r in doc["resonances"]:
+        if r["judged"]:
+            assert low * omega <= r["critical_speed"]["omega"] * (1 - r["required"])
+            assert r["critical_speed"]["omega"] * (1 + r["required"]) <= high * omega
+
+
+def test_block_sheet_has_a_sweep_per_machine_and_an_accuracy_section(runner, tmp_path):
+    """Like a crank sheet: a speed sweep figure (one per machine) and an Accuracy section."""
+    from foundation_calc.cli.app import app
+
+    out = tmp_path / "block.md"
+    result = runner.invoke(app, ["report", str(CONFIGS / "block_two_machines.toml"), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    text = out.read_text(encoding="utf-8")
+    assert "## 6. Plots" in text and "## 7. Accuracy" in text
+    assert "Sweep of compressor's speed" in text and "Sweep of motor's speed" in text
+    assert sorted(p.name for p in tmp_path.glob("*.svg")) == ["block-figure1.svg", "block-figure2.svg"]
