@@ -41,7 +41,7 @@ BARKAN_TORSION_RATIO = 1.5
 
 
 class BlockSoil(Soil):
-    """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
+    """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping, stratum_depth)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
     no_method_text: ClassVar[str] = (

@@ -55,7 +55,7 @@ def _method_keys(method: str) -> str:
 
 
 class Soil(SceneModel):
-    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer, gazetas or pais_kausel (shear_modulus or shear_wave_velocity, density, poisson, material_damping), sp26 (deformation_modulus, soil_class)."""
+    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer, gazetas or pais_kausel (shear_modulus or shear_wave_velocity, density, poisson, material_damping, stratum_depth), sp26 (deformation_modulus, soil_class)."""
 
     #: What a missing ``[soil]`` table needs, for the message (no single key is required).
     required_keys_text: ClassVar[str] = (
