@@ -10,7 +10,7 @@ from foundation_calc.output.report.handcalc import Chain
 from foundation_calc.output.report.model import Paragraph, table
 from foundation_calc.output.report.numbers import figure
 
-KA = "[Ka] via [Ga83]"
+KA = "[Ka]"
 
 
 class Shown:
@@ -23,7 +23,7 @@ class Shown:
 
     def blocks(self) -> tuple:
         return (self.block,)
-CUT = "[Ga83]; [NIST] 2.2.3"
+CUT = "[Ka]; [NIST] 2.2.3"
 
 
 def stratum_chain(soil, L: float, B: float, block: bool) -> Chain:
