@@ -163,3 +163,30 @@ def test_a_stratum_above_the_base_or_of_zero_depth_is_refused(runner, tmp_path):
         result = runner.invoke(app, ["resonance", str(path)])
         assert result.exit_code == 3, result.output
         assert field in result.output and "m" in result.output
+
+
+@pytest.mark.parametrize("method", ["lysmer", "gazetas", "pais_kausel"])
+def test_a_crank_foundation_takes_the_stratum_in_its_plane(method):
+    """The crank scene's plane springs on a stratum: K_z × (1 + 1.28 R/H), K_x × (1 + R/2H),
+    K_φ × (1 + R_ψ/6H) (R_ψ of the base's second moment about the axis normal to the plane), and below
+    both cutoffs only the material damping (0.03); H = 1e12 m gives the half-space to 1e-9."""
+    from foundation_calc.scenes import load_scene
+
+    crank = load_scene("configs/compressor_medium_sand_lysmer.toml")
+    soil = crank.soil.model_dump(exclude_none=True) | {"method": method}
+
+    def on(extra):
+        return crank.model_copy(update={"soil": crank.soil.__class__(**soil, **extra)})
+
+    L, B = crank.foundation.dimensions
+    H = 6.0
+    R, R_psi = math.sqrt(L * B / math.pi), (B * L**3 / (3 * math.pi)) ** 0.25
+    omega = 2.0 * math.pi * 3.0  # below f_s = 170/24 = 7.1 Hz and f_c
+    half, layer, deep = on({}).soil_springs(omega=omega), on({"stratum_depth": H}).soil_springs(omega=omega), \
+        on({"stratum_depth": 1.0e12}).soil_springs(omega=omega)
+    assert float(layer.K_z) / float(half.K_z) == pytest.approx(1 + 1.28 * R / H, rel=1e-12)
+    assert float(layer.K_x) / float(half.K_x) == pytest.approx(1 + R / (2 * H), rel=1e-12)
+    assert float(layer.K_phi) / float(half.K_phi) == pytest.approx(1 + R_psi / (6 * H), rel=1e-12)
+    assert [float(layer.xi_z), float(layer.xi_x), float(layer.xi_phi)] == pytest.approx([0.03] * 3, abs=1e-15)
+    for key in ("K_z", "K_x", "K_phi", "xi_z", "xi_x", "xi_phi"):
+        assert float(getattr(deep, key)) == pytest.approx(float(getattr(half, key)), rel=1e-9), key
