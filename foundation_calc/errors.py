@@ -11,7 +11,7 @@ from enum import IntEnum
 
 
 class ExitCode(IntEnum):
-    """Exit codes of ``fcalc``, documented in README.md and ``fcalc --help``."""
+    """Exit codes of ``fcalc``, documented in docs/exit-codes.md and ``fcalc --help``."""
 
     OK = 0  #: every check passes
     CHECK_FAILED = 1  #: at least one check fails (resonance, amplitude, feasibility warning made strict)

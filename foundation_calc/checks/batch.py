@@ -130,11 +130,11 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
 
     With ``skip_non_scenes`` (a file found in a folder) a file that is not a regular file is
     skipped unopened, and a TOML document without a kind and without any scene table
-    (:func:`~foundation_calc.scenes.loading.is_scene`) is skipped, not invalid; ``skip_note``
+    (:func:`~foundation_calc.scenes.kinds.is_scene`) is skipped, not invalid; ``skip_note``
     says why.
     """
     from foundation_calc.scenes import parse_scene, read_toml
-    from foundation_calc.scenes.loading import is_scene
+    from foundation_calc.scenes.kinds import is_scene
     from foundation_calc.scenes.project import with_office_defaults
 
     source = str(path)

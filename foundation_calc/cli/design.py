@@ -123,7 +123,7 @@ def design(
     candidates that pass the others, cheapest first, until one passes (at most 20).
     The shown designs are checked again by fcalc check's own path; a disagreement on a check the
     search evaluated is reported as an internal error (exit 4). Machines and points on the block's top rise with it,
-    those on an end face follow the face (README, "Sizing"). Exit 0 when a design passes, 1 when
+    those on an end face follow the face (docs/design.md). Exit 0 when a design passes, 1 when
     none does, 2 for bad options, 3 for an invalid scene.
     """
     from foundation_calc.checks.design.apply import VaryError, given_dimensions
@@ -226,7 +226,7 @@ def _write(scene: Path, path: Path, sizing):
     from foundation_calc.cli.outputs import writing
     from foundation_calc.output.files import write_atomically
     from foundation_calc.output.scene_edit import edited_scene
-    from foundation_calc.scenes.loading import parse_toml, read_text
+    from foundation_calc.scenes.files import parse_toml, read_text
     from foundation_calc.scenes.unit_strings import kept_as_written, with_unit_strings_converted
 
     best = sizing.designs.design(0)
@@ -249,7 +249,8 @@ def _same_verdicts(scene: Path, text: str, full) -> None:
     from foundation_calc.checks.batch import run_checks
     from foundation_calc.checks.design.recheck import OUTCOME_NAMES
     from foundation_calc.checks.design.reference import judged
-    from foundation_calc.scenes.loading import parse_scene, parse_toml
+    from foundation_calc.scenes.files import parse_toml
+    from foundation_calc.scenes.loading import parse_scene
     from foundation_calc.scenes.project import with_office_defaults
 
     written = parse_scene(with_office_defaults(parse_toml(text, str(scene)), scene), str(scene))

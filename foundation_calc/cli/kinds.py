@@ -9,7 +9,7 @@ from typing import Annotated, Any
 
 import typer
 
-from foundation_calc.scenes.loading import KINDS
+from foundation_calc.scenes.kinds import KINDS
 
 #: scene kind -> the CLI module whose functions ``resonance``, ``amplitudes`` ... take its scenes
 #: (``(scene, source, json=, strict=, units=) -> exit code``).

@@ -74,7 +74,7 @@ def report(
         from dataclasses import replace
 
         from foundation_calc.output.report.validation import validation_section
-        from foundation_calc.validation.record import run_record
+        from foundation_calc.validation.cases import run_record
 
         sheet = replace(sheet, sections=(*sheet.sections, validation_section(run_record())))
     with writing(path, "-o"):

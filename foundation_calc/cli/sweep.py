@@ -106,7 +106,7 @@ def sweep(
 
     Every point is computed in vectorised chunks of the corrected first approximation; each row
     shows the peaks of x, y (of C), θ and of the scene's [[points]] and a status that says why:
-    the resonance condition that governs there (README, "The resonance rule") with its margin,
+    the resonance condition that governs there (docs/resonance-rule.md) with its margin,
     and every limit exceeded. Statuses: resonant (no periodic solution), fail (a judged condition
     inside its band, or a peak or RMS limit exceeded), warn, pass. A scene's [[loads]] add their
     linear steady state and their resonance conditions. A long sweep written with --csv is
