@@ -84,7 +84,7 @@ def test_the_radiation_starts_exactly_at_v_s_over_4h_and_v_la_over_4h(method):
 @pytest.mark.parametrize("method", ["lysmer", "gazetas", "pais_kausel"])
 @pytest.mark.parametrize("L, B", [(3.0, 3.0), (3.3, 3.0), (3.0, 3.3)])
 @pytest.mark.parametrize("h_over_r", [1.0, 2.0, 5.0])
-def test_near_square_bases_stiffen_as_kauselss_circle_on_the_equivalent_radius(method, L, B, h_over_r):
+def test_near_square_bases_stiffen_as_kausels_circle_on_the_equivalent_radius(method, L, B, h_over_r):
     """K(stratum)/K(half-space) of a near-square base against Kausel's disk (1974, via Gazetas 1983):
     1 + 1.28 R/H vertical, 1 + R/(2H) horizontal, 1 + R/(6H) rocking, with R the radius of the circle
     of the base's area (translations) or of its second moment about the rocking axis (rocking),
