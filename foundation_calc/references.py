@@ -32,6 +32,11 @@ REFERENCES: dict[str, str] = {
           " and Earthquake Engineering 7(4), 1988, pp. 213-227.",
     "NIST": "NEHRP Consultants Joint Venture, Soil-Structure Interaction for Building Structures, NIST GCR"
             " 12-917-21, National Institute of Standards and Technology, Gaithersburg, MD, 2012, Tables 2-2, 2-3.",
+    "Ka": "E. Kausel, Forced vibrations of circular foundations on layered media, Research Report R74-11,"
+          " Department of Civil Engineering, Massachusetts Institute of Technology, Cambridge, MA, 1974; its static"
+          " springs of a disk on a stratum over rigid rock and the stratum's cutoff frequencies as collected in"
+          " G. Gazetas, \"Analysis of machine foundation vibrations: state of the art\", Soil Dynamics and"
+          " Earthquake Engineering 2(1), 1983, pp. 2-42.",
     "ACI": "ACI Committee 351, Report on Foundations for Dynamic Equipment, ACI 351.3R-18, American Concrete"
            " Institute, Farmington Hills, MI, 2018.",
     "SP26": "SP 26.13330.2012, Foundations of machines with dynamic loads (updated edition of SNiP 2.02.05-87),"

@@ -64,8 +64,9 @@ def inputs(scene) -> Finding | None:
 def soil_notes(validity) -> tuple[Reason, tuple[str, ...]]:
     """The soil model's validity (:mod:`~foundation_calc.checks.soil_validity`) as a reason's
     tail and details, the same on every kind's resonance and amplitudes: said when an a0 lies
-    beyond the method's range, which does not change the verdict."""
-    if validity is None or not validity.beyond:
+    beyond the method's range or a judged frequency below a stratum's cutoff, neither of which
+    changes the verdict."""
+    if validity is None or not validity.warns:
         return (), ()
     return (f"; {validity.brief}",), validity.details()
 

@@ -158,7 +158,7 @@ def _method_result(scene, method: str) -> MethodResult:
     M_tot, h = scene.total_mass, f.cog_height
     I_0 = f.moment_of_inertia + M_tot * h**2
     s = scene.soil_springs(method)
-    dependent = method in FREQUENCY_DEPENDENT_METHODS  # (Soil.frequency_dependent)
+    dependent = method in FREQUENCY_DEPENDENT_METHODS or scene.soil.stratum_depth is not None  # (Soil.frequency_dependent)
     static = _static_frequencies(scene, s, M_tot, I_0)
     freqs = _mode_frequencies(scene, method, M_tot, I_0) if dependent else static
     ratios = {"xi_z": float(s.xi_z), "xi_x": float(s.xi_x), "xi_phi": float(s.xi_phi)}

@@ -108,16 +108,15 @@ def _designs_at(scene, speed: np.ndarray):
     if not scene.soil.frequency_dependent:
         return lambda soil_frequency, factor: varied(base, omega=omega, soil_factor=factor)
     from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
-    from foundation_calc.solvers.soil.gazetas import gazetas_springs
 
-    f, s = scene.foundation, scene.soil
+    f = scene.foundation
     L, B = f.dimensions
     h, I_c = f.cog_height, f.moment_of_inertia
     M_scene, M_rod = scene.total_mass, base.M_tot  # as scene.soil_springs and scene.design take them
 
-    def at(soil_frequency, factor):
-        k = gazetas_springs(s.G * factor, s.density, s.poisson, L, B, f.embedment or 0.0, M_scene,
-                            I_c + M_scene * h * h, s.material_damping or 0.0, soil_frequency)
+    def at(soil_frequency, factor):  # the scene's own method (and stratum), as scene.soil_springs
+        k = scene.base_springs(L, B, f.base_area, f.base_second_moment, M_scene, I_c, h,
+                               omega=soil_frequency, factor=factor)
         c = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, M_rod, I_c + M_rod * h * h)
         return replace(base, omega=omega, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
                        c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi)

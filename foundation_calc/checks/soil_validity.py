@@ -14,6 +14,13 @@ method declares its range in its own module:
 - ``"coefficients"``, ``"sp26"``, ``"springs"``: frequency-independent springs; no range of a0
   applies (:data:`NO_RANGE`).
 
+On a stratum over bedrock (``[soil] stratum_depth``, :mod:`~foundation_calc.solvers.soil.stratum`)
+the same judged frequencies are set against the layer's cutoffs, V_s/4H for the motions that shear
+it (x, y, rz; the plane model's horizontal) and V_La/4H for those that compress it (z, rx, ry; the
+plane model's vertical and rocking): below its cutoff a motion radiates nothing, its dashpot is the
+material damping alone, and a resonance there is far less damped than on the half-space. Each such
+frequency is a warning (:attr:`SoilValidity.below`), as an a0 beyond the range is.
+
 The frequencies judged (:func:`soil_validity`): every natural frequency the resonance check judges,
 with the motions whose springs hold at least :data:`MOTION_SHARE` of the mode's strain energy
 (:func:`spring_shares`: a spring the mode barely strains cannot make its frequency wrong), and
@@ -129,15 +136,78 @@ class A0Value:
     a0: float
 
 
+#: The motions that shear the stratum (cutoff V_s/4H); the others compress it (cutoff V_La/4H).
+SHEAR_MOTIONS = ("x", "y", "rz", "horizontal")
+
+
+@dataclass(frozen=True)
+class StratumCutoffs:
+    """A stratum's depth ``H`` [m] and cutoff circular frequencies ``omega_s`` (shear: sway and
+    torsion) and ``omega_c`` (compression: vertical and rocking) [rad/s]."""
+
+    H: float
+    omega_s: float
+    omega_c: float
+
+    def cutoff(self, motion: str) -> float:
+        """The cutoff [rad/s] of ``motion`` (:data:`SHEAR_MOTIONS` shear the layer)."""
+        return self.omega_s if motion in SHEAR_MOTIONS else self.omega_c
+
+    @property
+    def text(self) -> str:
+        """The cutoffs in Hz, as the messages give them."""
+        return (f"stratum H = {self.H:g} m over bedrock: f_s = V_s/4H = {self.omega_s / (2 * math.pi):.4g} Hz"
+                f" (x, y, rz), f_c = V_La/4H = {self.omega_c / (2 * math.pi):.4g} Hz (z, rx, ry)")
+
+
+def stratum_cutoffs(soil) -> StratumCutoffs | None:
+    """The :class:`StratumCutoffs` of a scene's ``soil`` (None without ``stratum_depth``)."""
+    if getattr(soil, "stratum_depth", None) is None:
+        return None
+    from foundation_calc.solvers.soil.stratum import cutoff_frequencies
+
+    omega_s, omega_c = cutoff_frequencies(soil.V_s, soil.poisson, soil.stratum_depth)
+    return StratumCutoffs(float(soil.stratum_depth), float(omega_s), float(omega_c))
+
+
 @dataclass(frozen=True)
 class SoilValidity:
-    """Every judged a0 of a scene and those beyond its method's fitted range.
+    """Every judged a0 of a scene and those beyond its method's fitted range; on a stratum, the
+    judged frequencies below its cutoffs.
 
     ``V_s`` [m/s] is None and ``values`` empty for a method without a range."""
 
     fitted: FittedRange
     V_s: float | None
     values: tuple[A0Value, ...]
+    stratum: StratumCutoffs | None = None
+
+    @property
+    def below(self) -> tuple[A0Value, ...]:
+        """The judged values whose frequency lies below their motion's cutoff on the stratum (no
+        radiation damping there), lowest frequency first; empty without a stratum."""
+        if self.stratum is None:
+            return ()
+        return tuple(sorted((v for v in self.values if v.omega < self.stratum.cutoff(v.motion)),
+                            key=lambda v: v.omega))
+
+    @property
+    def warns(self) -> bool:
+        """True when an a0 lies beyond the range or a judged frequency below a stratum's cutoff."""
+        return bool(self.beyond or self.below)
+
+    @property
+    def stratum_text(self) -> str:
+        """The stratum's part of :attr:`text` (empty without a stratum)."""
+        if self.stratum is None:
+            return ""
+        if not self.below:
+            return f"; {self.stratum.text}: every judged frequency at or above its cutoff (radiation damping applies)"
+        places = {}
+        for v in self.below:
+            places.setdefault(v.at, []).append(v.motion)
+        where = "; ".join(f"at {at}: {', '.join(motions)}" for at, motions in places.items())
+        return (f"; {self.stratum.text}: below the cutoff, no radiation damping (material damping only) {where}")
 
     @property
     def beyond(self) -> tuple[A0Value, ...]:
@@ -159,30 +229,43 @@ class SoilValidity:
         if not self.beyond:
             top = self.largest
             where = "" if top is None else f" (largest {top.a0:.3g}, {top.motion} at {top.at})"
-            return f"a0 within the range of soil method {f.method!r}, a0 <= {f.a0_max:g}, at every judged frequency{where}"
+            return (f"a0 within the range of soil method {f.method!r}, a0 <= {f.a0_max:g}, at every judged"
+                    f" frequency{where}{self.stratum_text}")
         places = {}
         for v in self.beyond:
             places.setdefault(v.at, []).append(f"{v.motion} {v.a0:.3g}")
         where = "; ".join(f"at {at}: {', '.join(values)}" for at, values in places.items())
         return (f"a0 beyond the range of soil method {f.method!r} (a0 <= {f.a0_max:g}, {f.source}): {where};"
-                " its springs and damping there are extrapolated")
+                f" its springs and damping there are extrapolated{self.stratum_text}")
 
     @property
     def brief(self) -> str:
-        """The largest a0 past the range in a phrase (empty when none is), for a check's reason."""
-        if not self.beyond:
-            return ""
-        top = self.beyond[0]
-        return (f"soil model: a0 of {top.motion} = {top.a0:.3g} at {top.at} is beyond the range of soil method"
-                f" {self.fitted.method!r} (a0 <= {self.fitted.a0_max:g})")
+        """The largest a0 past the range and the lowest frequency below a stratum's cutoff in a phrase
+        (empty when neither is), for a check's reason."""
+        phrases = []
+        if self.beyond:
+            top = self.beyond[0]
+            phrases.append(f"soil model: a0 of {top.motion} = {top.a0:.3g} at {top.at} is beyond the range of soil"
+                           f" method {self.fitted.method!r} (a0 <= {self.fitted.a0_max:g})")
+        if self.below:
+            low = self.below[0]
+            phrases.append(f"soil model: {low.at} ({low.omega / (2 * math.pi):.4g} Hz) lies below the stratum's cutoff"
+                           f" {self.stratum.cutoff(low.motion) / (2 * math.pi):.4g} Hz of {low.motion}: no radiation"
+                           " damping there, material damping only")
+        return "; ".join(phrases)
 
     def details(self) -> tuple[str, ...]:
         """A line per value past the range (``WARN ...``), for JUnit and the JSON documents."""
         f = self.fitted
-        return tuple(
+        beyond = tuple(
             f"WARN soil model: a0 = ω b/V_s = {v.a0:.4g} > {f.a0_max:g} at {v.at} ({v.omega:.6g} rad/s), {v.motion}"
             f" (b = {v.length:.4g} m, V_s = {self.V_s:.4g} m/s): beyond the range of method {f.method!r} ({f.source})"
             for v in self.beyond
+        )
+        return beyond + tuple(
+            f"WARN soil model: {v.at} ({v.omega:.6g} rad/s) lies below the cutoff {self.stratum.cutoff(v.motion):.6g}"
+            f" rad/s of {v.motion} on the stratum (H = {self.stratum.H:g} m): no radiation damping, material damping only"
+            for v in self.below
         )
 
     def document(self) -> dict:
@@ -196,12 +279,17 @@ class SoilValidity:
             "shear_wave_velocity": self.V_s,
             "values": [{"at": v.at, "omega": v.omega, "motion": v.motion, "length": v.length, "a0": v.a0} for v in self.values],
             "beyond": [{"at": v.at, "omega": v.omega, "motion": v.motion, "length": v.length, "a0": v.a0} for v in self.beyond],
+            "stratum": None if self.stratum is None else {
+                "depth": self.stratum.H, "cutoff_shear": self.stratum.omega_s, "cutoff_compression": self.stratum.omega_c,
+                "below": [{"at": v.at, "omega": v.omega, "motion": v.motion, "cutoff": self.stratum.cutoff(v.motion)}
+                          for v in self.below],
+            },
             "text": self.text,
         }
 
 
 def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
-                  frequencies: Iterable[JudgedFrequency]) -> SoilValidity:
+                  frequencies: Iterable[JudgedFrequency], stratum: StratumCutoffs | None = None) -> SoilValidity:
     """a0 = ω b/V_s of every motion of every judged frequency against ``method``'s fitted range.
 
     Parameters
@@ -210,6 +298,7 @@ def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
     V_s : shear wave velocity of the soil [m/s] (unused by a method without a range)
     lengths : motion -> b [m] (:func:`characteristic_lengths`)
     frequencies : the judged frequencies and the motions judged at each
+    stratum : the cutoffs of a stratum over bedrock (:func:`stratum_cutoffs`), None on a half-space
 
     >>> v = soil_validity("lysmer", 170.0, characteristic_lengths("lysmer", 6.0, 4.0),
     ...                   [JudgedFrequency("p2", 140.56, ("horizontal", "rocking"))])
@@ -224,7 +313,7 @@ def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
         for f in frequencies if not math.isnan(f.omega)
         for motion in f.motions
     )
-    return SoilValidity(fitted, float(V_s), values)
+    return SoilValidity(fitted, float(V_s), values, stratum)
 
 
 def spring_shares(springs: np.ndarray, motion: np.ndarray) -> np.ndarray:
@@ -248,10 +337,10 @@ def mode_frequencies(labels, frequencies, shares: np.ndarray, motions) -> list[J
 
 
 def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[str, float], block_at,
-                   speeds: Mapping[str, float]) -> SoilValidity:
+                   speeds: Mapping[str, float], stratum: StratumCutoffs | None = None) -> SoilValidity:
     """:func:`soil_validity` of the plane model: the modes ``frequencies`` (name -> p [rad/s]) of
     the block ``block_at(ω)`` with the motions they strain, and ``speeds`` (name -> ω [rad/s],
-    e.g. the judged orders n ω) with every motion."""
+    e.g. the judged orders n ω) with every motion; ``stratum`` as :func:`soil_validity` takes it."""
     from foundation_calc.checks.plane_modes import BASE_MOTIONS, plane_modes
 
     if not fitted_range(method).applies:
@@ -260,7 +349,7 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
     shares = spring_shares(modes.springs, modes.base_motion())
     judged = mode_frequencies(modes.labels, modes.frequencies, shares, BASE_MOTIONS)
     judged += [JudgedFrequency(at, w, BASE_MOTIONS) for at, w in speeds.items()]
-    return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged)
+    return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged, stratum)
 
 
 def judged_orders(rows) -> list[int]:
@@ -288,7 +377,7 @@ def crank_validity(scene, report) -> SoilValidity:
     modes = {m: float(getattr(zero, m)) for m in ("k0", "p1", "p2")}
     speeds = {_order_label(n): n * report.omega for n in judged_orders(report.rows)}
     L, B = f.dimensions
-    return plane_validity(method, V_s, L, B, modes, scene.block, speeds)
+    return plane_validity(method, V_s, L, B, modes, scene.block, speeds, stratum_cutoffs(soil))
 
 
 def block_validity(scene, report) -> SoilValidity:
@@ -318,9 +407,10 @@ def block_validity(scene, report) -> SoilValidity:
         names = ", ".join(f"{m}: {_order_label(n)}" if several else _order_label(n) for m, n in orders)
         judged.append(JudgedFrequency(names, omega, MOTIONS))
     L, B = scene.base
-    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B), judged)
+    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B), judged, stratum_cutoffs(soil))
 
 
-__all__ = ["DEFINITIONS", "MOTION_SHARE", "NO_RANGE", "A0Value", "FittedRange", "JudgedFrequency", "SoilValidity",
+__all__ = ["DEFINITIONS", "MOTION_SHARE", "NO_RANGE", "SHEAR_MOTIONS", "A0Value", "FittedRange", "JudgedFrequency",
+           "SoilValidity", "StratumCutoffs", "stratum_cutoffs",
            "block_validity", "characteristic_lengths", "crank_validity", "fitted_range", "judged_orders",
            "mode_frequencies", "plane_validity", "soil_validity", "spring_shares"]

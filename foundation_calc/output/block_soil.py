@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
+from foundation_calc.output.stratum import stratum_document, stratum_line
 from foundation_calc.solvers.rigid_body.modes import MOTIONS
 from foundation_calc.units import hz_from_omega
 
@@ -57,6 +58,7 @@ def soil_document(model, scene, source: str, columns=()) -> dict:
         "springs": _rows(model),
         "warnings": scene.plausibility_warnings(),
         "at_frequencies": [_at_document(c) for c in columns],
+        "stratum": stratum_document(scene.soil, *scene.base),
     }
 
 
@@ -85,6 +87,8 @@ def print_soil(model, scene, source: str, columns=()) -> None:
         table.add_row(row["motion"], fmt(row["K"], 4), UNITS["K"][i], fmt(row["C"], 4), UNITS["C"][i], fmt(row["xi"], 3),
                       fmt(row["omega_uncoupled"] / (2 * np.pi), 4))
     out.print(table)
+    if (stratum := stratum_document(scene.soil, *scene.base)) is not None:
+        out.print(escape(stratum_line(stratum)), soft_wrap=True)
     speeds = [c for c in columns if c.at != "mode"]
     modes = [c for c in columns if c.at == "mode"]
     if speeds:

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 
 def soil_validity_line(validity) -> str:
-    """One line on the soil model's validity, ``"warning: ..."`` when an a0 lies beyond the range."""
-    prefix = "warning: soil model" if validity.beyond else "soil model"
+    """One line on the soil model's validity, ``"warning: ..."`` when an a0 lies beyond the range or a
+    judged frequency below a stratum's cutoff."""
+    prefix = "warning: soil model" if validity.warns else "soil model"
     return f"{prefix}: {validity.text}"
 
 
@@ -20,7 +21,7 @@ def print_soil_validity(validity) -> None:
 
     from foundation_calc.output.console import stdout
 
-    stdout().print(Text(soil_validity_line(validity), style="yellow" if validity.beyond else ""))
+    stdout().print(Text(soil_validity_line(validity), style="yellow" if validity.warns else ""))
 
 
 def soil_validity_document(validity) -> dict | None:

@@ -6,6 +6,7 @@ import math
 
 from foundation_calc.checks.soil_methods import MethodResult, SoilComparison
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
+from foundation_calc.output.stratum import stratum_document, stratum_line
 from foundation_calc.units import hz_from_omega
 
 #: Rows of the table: (label, unit, attribute, scale from SI to the unit shown).
@@ -87,6 +88,7 @@ def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
             for r in comparison.results
         },
         "warnings": [*comparison.input_warnings, *comparison.findings],
+        "stratum": stratum_document(scene.soil, *scene.foundation.dimensions),
     }
 
 
@@ -169,6 +171,8 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
             " frequency; its damping ratios are taken at their mode's frequency. The other methods are"
             " frequency-independent.", soft_wrap=True,
         )
+    if (stratum := stratum_document(scene.soil, L, B)) is not None:
+        out.print(escape(stratum_line(stratum)), soft_wrap=True)
     for text in comparison.findings:
         out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
 

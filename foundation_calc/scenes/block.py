@@ -18,6 +18,7 @@ from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
 from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
+from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 
 #: How far [m] a position may lie beyond the block's footprint or below its base and still count
 #: as on it: coordinates are typed to the millimetre (a point on an edge or a corner is on the block).
@@ -127,6 +128,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                 f" only; method {self.soil.method_used!r} takes the base as a surface footing (remove the key, or"
                 " choose one of those methods)"
             )
+        if (error := stratum_error(self.soil, self.embedment, "block.embedment")) is not None:
+            raise ValueError(error)
         return self
 
     @property
@@ -161,7 +164,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         codes = placement(list(positions.values()), L, B).tolist() if positions else []
         sizes = {"far": LENGTH_SCALE_FACTOR, "size": (L * L + B * B) ** 0.5, "x": L / 2.0, "y": B / 2.0}
         return [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
-                for (key, value), code in zip(positions.items(), codes) if code]
+                for (key, value), code in zip(positions.items(), codes) if code] + stratum_remarks(self.soil, L, B)
 
     def stable_model(self):
         """:meth:`model` of the scene as it is, for the checks.

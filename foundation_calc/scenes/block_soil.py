@@ -41,7 +41,7 @@ BARKAN_TORSION_RATIO = 1.5
 
 
 class BlockSoil(Soil):
-    """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping)."""
+    """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping, stratum_depth)."""
 
     method_keys: ClassVar[dict[str, tuple[str, ...]]] = BLOCK_METHOD_KEYS
     no_method_text: ClassVar[str] = (
@@ -140,6 +140,11 @@ class BlockSoil(Soil):
             return list(self.stiffness), None
         if method in (*HALF_SPACE_METHODS, "sp26"):
             along, across, (k_t, xi_t) = self._planes(L, B, M, J_O, omega, D)
+            if self.stratum_depth is not None:  # solvers/soil/stratum.py: a layer over bedrock
+                from foundation_calc.solvers.soil.stratum import torsion_on_stratum
+
+                along, across = self.with_stratum(along, L, B, omega), self.with_stratum(across, B, L, omega)
+                xi_t = torsion_on_stratum(xi_t, self.stratum_depth, self.V_s, self.material_damping or 0.0, omega)
             springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
             return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
         A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0

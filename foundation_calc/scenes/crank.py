@@ -27,6 +27,7 @@ from foundation_calc.scenes.common import (
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
+from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 from foundation_calc.scenes.project import Project, Requirements
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
@@ -321,7 +322,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             for key, value in lengths.items()
             if abs(value) > LENGTH_SCALE_FACTOR * size
         ]
-        return far + self._mass_ratio_findings(found + far)
+        return far + self._mass_ratio_findings(found + far) + stratum_remarks(self.soil, *self.foundation.dimensions)
 
     def _mass_ratio_findings(self, found: list) -> list:
         """The block-to-machine mass ratio against the rule of thumb, for a scene that gives
@@ -348,6 +349,12 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             )
         if self.mechanism is None and (self.operation is None or not self.operation.gives_speed):
             raise ValueError("a machine given by its [[loads]] needs its speed: [operation] speed_rpm, omega or frequency_hz")
+        return self
+
+    @model_validator(mode="after")
+    def _stratum_below_base(self):
+        if (error := stratum_error(self.soil, self.foundation.embedment or 0.0, "foundation.embedment")) is not None:
+            raise ValueError(error)
         return self
 
     @property
@@ -406,14 +413,15 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             return sp26_springs(s.deformation_modulus * factor, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
         I_0 = I_c + M_tot * h**2
         if method == "lysmer":
-            return lysmer_springs(s.G * factor, s.density, s.poisson, L, B, M_tot, I_0, s.material_damping or 0.0)
+            return s.with_stratum(lysmer_springs(s.G * factor, s.density, s.poisson, L, B, M_tot, I_0,
+                                                 s.material_damping or 0.0), L, B, omega, factor)
         if method == "pais_kausel":
             from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
         else:
             from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs  # numpy: only when asked for
 
-        return springs(s.G * factor, s.density, s.poisson, L, B, self.foundation.embedment or 0.0, M_tot, I_0,
-                       s.material_damping or 0.0, omega)
+        return s.with_stratum(springs(s.G * factor, s.density, s.poisson, L, B, self.foundation.embedment or 0.0, M_tot,
+                                      I_0, s.material_damping or 0.0, omega), L, B, omega, factor)
 
     def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""

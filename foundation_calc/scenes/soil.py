@@ -26,7 +26,7 @@ HALF_SPACE_METHODS: tuple[str, ...] = ("lysmer", "gazetas", "pais_kausel")
 #: The methods whose springs and dashpots change with frequency (and that take the embedment).
 FREQUENCY_DEPENDENT_METHODS: tuple[str, ...] = ("gazetas", "pais_kausel")
 
-_HALF_SPACE_KEYS = ("shear_modulus", "shear_wave_velocity", "density", "poisson", "material_damping")
+_HALF_SPACE_KEYS = ("shear_modulus", "shear_wave_velocity", "density", "poisson", "material_damping", "stratum_depth")
 
 #: The keys each method takes (besides ``method``), in the order the messages list them.
 METHOD_KEYS: dict[str, tuple[str, ...]] = {
@@ -55,7 +55,7 @@ def _method_keys(method: str) -> str:
 
 
 class Soil(SceneModel):
-    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer, gazetas or pais_kausel (shear_modulus or shear_wave_velocity, density, poisson, material_damping), sp26 (deformation_modulus, soil_class)."""
+    """The soil under the base, by one method: coefficients (c_z, c_x, c_phi, damping), lysmer, gazetas or pais_kausel (shear_modulus or shear_wave_velocity, density, poisson, material_damping, stratum_depth), sp26 (deformation_modulus, soil_class)."""
 
     #: What a missing ``[soil]`` table needs, for the message (no single key is required).
     required_keys_text: ClassVar[str] = (
@@ -94,6 +94,12 @@ class Soil(SceneModel):
     material_damping: float | None = quantity(
         "D_m", "-", "material (hysteretic) damping ratio of the soil, added to each radiation damping"
         " ratio; typically 0.02-0.05; default 0", None, ge=0, le=0.3, examples=[0.03],
+    )
+    stratum_depth: float | None = quantity(
+        "H", "m", "depth of the soil layer from the ground surface to rigid bedrock (lysmer, gazetas, pais_kausel):"
+        " the springs stiffen (Kausel 1974) and the radiation dashpots vanish below the layer's cutoff frequencies"
+        " V_s/4H (sway, torsion) and V_La/4H (vertical, rocking); default: no bedrock (a half-space)",
+        None, gt=0, examples=[6.0],
     )
     deformation_modulus: float | None = quantity(
         "E", "Pa", "static deformation modulus of the soil from the site investigation (not 2G(1+ν) from V_s)",
@@ -205,8 +211,20 @@ class Soil(SceneModel):
     @property
     def frequency_dependent(self) -> bool:
         """True when the method's springs and dashpots change with frequency (``"gazetas"``,
-        ``"pais_kausel"``); Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
-        return self.method_used in FREQUENCY_DEPENDENT_METHODS
+        ``"pais_kausel"``, and any half-space method on a stratum, whose radiation stops below the layer's
+        cutoff frequencies); Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
+        return self.method_used in FREQUENCY_DEPENDENT_METHODS or self.stratum_depth is not None
+
+    def with_stratum(self, springs, L, B, omega, factor=1.0):
+        """A half-space method's plane ``springs`` (L [m] in the plane, B [m] normal to it) at ``omega``
+        [rad/s] on the scene's stratum (:func:`~foundation_calc.solvers.soil.stratum.on_stratum`), the
+        soil's stiffness data times ``factor`` [-]; the springs themselves without ``stratum_depth``."""
+        if self.stratum_depth is None:
+            return springs
+        from foundation_calc.solvers.soil.stratum import on_stratum
+
+        return on_stratum(springs, L, B, self.stratum_depth, self.V_s * factor**0.5, self.poisson,
+                          self.material_damping or 0.0, omega)
 
     @property
     def G(self) -> float:

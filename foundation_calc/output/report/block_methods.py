@@ -256,7 +256,9 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
         " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
         " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
-    for chain in block_soil_blocks(scene, model, own):
+    from foundation_calc.output.report.stratum import stratum_blocks
+
+    for chain in [*block_soil_blocks(scene, model, own), *stratum_blocks(scene, *scene.base, True, amplitudes)]:
         blocks += chain.blocks() if hasattr(chain, "nomenclature") else [chain]
         if hasattr(chain, "nomenclature"):
             blocks.append(Definitions(chain.nomenclature))

@@ -13,6 +13,8 @@ from foundation_calc.output.report.crank_frequencies import KM, frequency_givens
 from foundation_calc.output.report.handcalc import Chain
 from foundation_calc.output.report.platform_methods import platform_chain
 from foundation_calc.output.report.soil_methods import gazetas_chains, soil_givens, sp26_springs_chain
+from foundation_calc.output.report.stratum import stratum_blocks
+from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS
 
 RHW = "[RHW] ch. 10; [DR] ch. 5"
 
@@ -85,8 +87,9 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     springs = scene.soil_springs()
     method = scene.soil.method_used
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
-    dependent = scene.soil.frequency_dependent  # gazetas, pais_kausel: the same dynamic chains
+    dependent = method in FREQUENCY_DEPENDENT_METHODS  # gazetas, pais_kausel: the same dynamic chains
     out = gazetas_chains(scene) if dependent else [make(scene) for make in chains]
+    out += stratum_blocks(scene, *scene.foundation.dimensions, False, amplitudes)
     out.append(_frequencies(scene, springs))
     if dependent:
         from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns
