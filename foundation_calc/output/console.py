@@ -14,9 +14,21 @@ JSON_SCHEMA_VERSION = 1
 OUTCOME_STYLE = {"pass": "bold green", "warn": "bold yellow", "fail": "bold red"}
 
 
-#: Width of stdout when it is not a terminal (a file, a pipe, a CI log): wide enough that no
-#: table is ever squeezed, so a file holds every column at its natural width.
+#: Width of stdout when it is not a terminal (a file, a pipe, a CI log) and ``COLUMNS`` names
+#: none: wide enough that no table is ever squeezed, so a file holds every column at its natural
+#: width.
 UNLIMITED_WIDTH = 100_000
+
+
+def _stdout_width(is_terminal: bool, columns: str | None) -> int | None:
+    """The width of stdout's tables: the terminal's (None: rich asks it, or reads ``COLUMNS``), the
+    ``COLUMNS`` a user set for a file or a pipe (``COLUMNS=80 fcalc check … | head``), else
+    :data:`UNLIMITED_WIDTH`."""
+    if is_terminal:
+        return None
+    if columns is not None and columns.strip().isdigit() and int(columns) > 0:
+        return int(columns)
+    return UNLIMITED_WIDTH
 
 
 def keep_words_whole(table) -> None:
@@ -45,7 +57,9 @@ def keep_words_whole(table) -> None:
 
 @cache
 def stdout() -> Console:
-    """Console for results: full width when not a terminal, and no table cuts a word."""
+    """Console for results: full width when not a terminal (unless ``COLUMNS`` is set), and no
+    table cuts a word."""
+    import os
     import sys
 
     from rich.console import Console
@@ -63,7 +77,7 @@ def stdout() -> Console:
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
             super().print(*objects, **kwargs)
 
-    width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
+    width = _stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS"))
     return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
 
 
