@@ -82,6 +82,14 @@ K_X, C_X, K_Z, C_Z = 1.2, 6.0, 0.6, 1.2
 #: there; below it the dashpot is held (a finite dashpot at rest, radiation iω C → 0 with ω).
 A0_MIN = 0.05
 
+#: Largest a0 = ω d/V_s the pile's impedances are taken to hold to [-]: Makris & Gazetas ([4]) fitted
+#: their Winkler springs and dashpots, and Dobry & Gazetas checked their interaction factors, over
+#: the frequencies of their figures, which end about there (not checked against the print here).
+A0_FITTED = 1.0
+
+#: Where :data:`A0_FITTED` comes from.
+A0_SOURCE = "Makris & Gazetas (1992), Dobry & Gazetas (1988): figures to a0 = ω d/V_s of about 1"
+
 #: Poisson's ratio of the pile's material for its shear modulus G_p = E_p/(2 (1 + ν_p)) in torsion
 #: [-] (concrete, EN 1992-1-1, 3.1.3(4)); torsion of single piles is a small part of a group's.
 PILE_POISSON = 0.2
@@ -283,6 +291,6 @@ def pinned(head: PileHead) -> PileHead:
     return PileHead(head.K_v, head.K_HH - head.K_HM**2 / head.K_MM, 0.0 * head.K_MM, 0.0 * head.K_HM, head.K_T, head.l_a)
 
 
-__all__ = ["A0_MIN", "PILE_POISSON", "PROFILES", "PileHead", "TABLE_C1", "active_length", "lateral_shape",
+__all__ = ["A0_FITTED", "A0_MIN", "A0_SOURCE", "PILE_POISSON", "PROFILES", "PileHead", "TABLE_C1", "active_length", "lateral_shape",
            "lateral_static", "pinned", "profile_factor", "single_pile", "torsion_static", "vertical_shape",
            "vertical_static"]

@@ -236,7 +236,10 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     stays, so each eigenvalue by rank falls too (Weyl's monotonicity): p(ω) is continuous,
     non-increasing and bounded, and g(ω) = p(ω) - ω strictly decreasing. With p_s = p(0) the
     static frequency, g(p_s) = p(p_s) - p_s <= 0 and, at p_1 = p(p_s) <= p_s,
-    g(p_1) = p(p_1) - p_1 >= 0: exactly one root, in [p(p_s), p_s]. Beyond a0 = :data:`A0_FITTED`
+    g(p_1) = p(p_1) - p_1 >= 0: exactly one root, in [p(p_s), p_s]. Springs that stiffen with
+    frequency (a pile group's: the Winkler pile's dynamic stiffness and Dobry & Gazetas' group
+    rise with ω in places) give p(p_s) > p_s: where p rises more slowly than ω, g(p_s) >= 0 >=
+    g(p(p_s)) and the root lies in [p_s, p(p_s)], bracketed the same way. Beyond a0 = :data:`A0_FITTED`
     the fits are extrapolated but keep these properties: the root exists, as good as the
     extrapolated fits. A mode followed by its shape instead of its rank has no such property:
     where two modes trade places its frequency jumps between them, and a plain iteration
@@ -275,6 +278,9 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     lo = hi + g_hi  # p(p_s)
     g_lo = frequency_at(lo) - lo
     tol = rtol * np.abs(hi)
+    rising = lo > hi  # springs that stiffen with frequency (a pile group's): the root lies in [p_s, p(p_s)]
+    lo, hi, g_lo, g_hi = (np.where(rising, hi, lo), np.where(rising, lo, hi),
+                          np.where(rising, g_hi, g_lo), np.where(rising, g_lo, g_hi))
     lost = ((g_hi > 0.0) | (g_lo < 0.0)) & (np.abs(hi - lo) > tol)
     if np.any(lost):
         raise PhysicsError(
@@ -282,8 +288,7 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
             f" p(ω) - ω = {np.min(g_lo):.4g} rad/s at ω = p(p_s)): ω = p(K(ω)) has no bracketed root",
             field="soil", hint="the soil's springs must not stiffen with frequency",
         )
-    lo, hi = np.minimum(lo, hi), np.maximum(lo, hi)  # lo = hi for a frequency-independent mode
-    g_lo, g_hi = np.maximum(g_lo, 0.0), np.minimum(g_hi, 0.0)
+    g_lo, g_hi = np.maximum(g_lo, 0.0), np.minimum(g_hi, 0.0)  # lo = hi for a frequency-independent mode
     kept = np.zeros(hi.shape)  # +1: lo was moved last, -1: hi was
     widths = [2.0 * (hi - lo)] * 2  # the first two steps are secant steps
     for _ in range(3 * 64):
