@@ -34,12 +34,11 @@ REFERENCES: dict[str, str] = {
             " 12-917-21, National Institute of Standards and Technology, Gaithersburg, MD, 2012, Tables 2-2, 2-3.",
     "EC8": "EN 1998-5:2004, Eurocode 8: Design of structures for earthquake resistance — Part 5: Foundations,"
            " retaining structures and geotechnical aspects, CEN, Brussels, 2004, Annex C (informative), Table C.1.",
-    "GzH": "G. Gazetas, \"Foundation vibrations\", chapter 15 of Foundation Engineering Handbook, 2nd ed."
-           " (H.-Y. Fang, ed.), Van Nostrand Reinhold, New York, 1991 (pages not checked on a copy here).",
+    "Fa": "H.-Y. Fang (ed.), Foundation Engineering Handbook, 2nd ed., Van Nostrand Reinhold, New York, 1991,"
+          " chapter 15: G. Gazetas, \"Foundation vibrations\" (pages not checked on a copy here).",
     "RW": "M.F. Randolph, C.P. Wroth, \"Analysis of deformation of vertically loaded piles\", Journal of the"
-          " Geotechnical Engineering Division (ASCE) 104(GT12), 1978, pp. 1465-1488.",
-    "Ra": "M.F. Randolph, \"Piles subjected to torsion\", Journal of the Geotechnical Engineering Division (ASCE)"
-          " 107(GT8), 1981, pp. 1095-1111.",
+          " Geotechnical Engineering Division (ASCE) 104(GT12), 1978, pp. 1465-1488; and M.F. Randolph, \"Piles"
+          " subjected to torsion\", ibid. 107(GT8), 1981, pp. 1095-1111.",
     "MG": "N. Makris, G. Gazetas, \"Dynamic pile-soil-pile interaction. Part II: lateral and seismic response\","
           " Earthquake Engineering and Structural Dynamics 21(2), 1992, pp. 145-162; with G. Gazetas, N. Makris,"
           " \"Part I: analysis of axial vibration\", ibid. 20(2), 1991, pp. 115-132.",

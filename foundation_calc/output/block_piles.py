@@ -42,8 +42,8 @@ def print_piles(scene, rows) -> None:
              " (its spring over n single piles') and coupling at O")
     out = stdout()
     out.print(frequency_table(title, heads, table, 4))
-    out.print("Single pile: EN 1998-5 Table C.1 (K_HH, K_MM, K_HM), Randolph & Wroth 1978 (K_v), Randolph 1981 (K_T),"
-              " frequency shape of a Winkler pile (Makris & Gazetas 1992); group: Dobry & Gazetas 1988 interaction"
+    out.print("Single pile: EN 1998-5 Table C.1 [EC8] (K_HH, K_MM, K_HM), Randolph & Wroth 1978 (K_v), Randolph 1981 (K_T) [RW],"
+              " frequency shape of a Winkler pile (Makris & Gazetas 1992 [MG]); group: Dobry & Gazetas 1988 [DG] interaction"
               " factors under a rigid cap. a0 = ω d/V_s.", soft_wrap=True)
 
 

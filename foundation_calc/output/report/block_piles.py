@@ -36,7 +36,7 @@ def single_pile_chain(scene) -> Chain:
     chain.step("K_HM", f"d**2*E_s*({c:g})*(E_p/E_s)**{q:g}", "N/rad", "[EC8] Table C.1", "sway-rocking coupling of a fixed head")
     if p.head == "pinned":
         chain.step("K_HHp", "K_HH - K_HM**2/K_MM", "N/m", "[EC8] Table C.1, M = 0", "sway spring of a pinned head")
-    chain.step("l_a", f"2*d*(E_p/E_s)**{ACTIVE_LENGTH_EXPONENT[p.soil_profile]:g}", "m", "[GzH]", "active length")
+    chain.step("l_a", f"2*d*(E_p/E_s)**{ACTIVE_LENGTH_EXPONENT[p.soil_profile]:g}", "m", "[Fa] ch. 15", "active length")
     f = PROFILE[p.soil_profile]
     chain.step("G_L", "G*" + f.format(t="max(L_p, d)/d"), "Pa", "[EC8] Table C.1", "shear modulus of the soil at the tip")
     chain.step("rho_G", "(" + f.format(t="max(L_p/2, d)/d") + ")/(" + f.format(t="max(L_p, d)/d") + ")", "-", "[RW]",
@@ -56,10 +56,10 @@ def single_pile_chain(scene) -> Chain:
         chain.step("b_t", "4/(1 - nu)", "-", "[RW]", "base term 4η/((1 − ν) ξ), η = ξ = 1")
         chain.step("K_v", "G_L*r0*(b_t + 2*pi*rho_G/zeta*tanh(muL)/muL*L_p/r0)/(1 + b_t*t)", "N/m", "[RW] (17)",
                    "vertical spring, floating tip")
-    chain.step("G_m", "G*" + f.format(t="max(L_p/2, d)/d"), "Pa", "[Ra]", "shear modulus of the soil at mid-depth")
-    chain.step("k_t", "4*pi*G_m*r0**2", "N m/rad/m", "[Ra]", "torsional reaction of the shaft per unit length")
-    chain.step("GJ", f"E_p/(2*(1 + {PILE_POISSON:g}))*pi*d**4/32", "N m²", "[Ra]", "torsional rigidity of the pile")
-    chain.step("K_T", "sqrt(k_t*GJ)*tanh(sqrt(k_t/GJ)*L_p)", "N m/rad", "[Ra]", "torsional spring of the head")
+    chain.step("G_m", "G*" + f.format(t="max(L_p/2, d)/d"), "Pa", "[RW] 1981", "shear modulus of the soil at mid-depth")
+    chain.step("k_t", "4*pi*G_m*r0**2", "N m/rad/m", "[RW] 1981", "torsional reaction of the shaft per unit length")
+    chain.step("GJ", f"E_p/(2*(1 + {PILE_POISSON:g}))*pi*d**4/32", "N m²", "[RW] 1981", "torsional rigidity of the pile")
+    chain.step("K_T", "sqrt(k_t*GJ)*tanh(sqrt(k_t/GJ)*L_p)", "N m/rad", "[RW] 1981", "torsional spring of the head")
     return chain
 
 
