@@ -226,7 +226,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         K(ω), C(ω) (``soil.frequency_dependent``), the others' constants. Dashpots from damping
         ratios are C_i = 2 ξ_i sqrt(K_i m_i), as :func:`~foundation_calc.solvers.block.model.block_model`
         makes them. ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates):
-        ``omega``'s leading axis is then the batch's. A support with coupled springs (a pile group's
+        ``omega``'s leading axis is then the batch's (a pile group's dynamic spring may be negative at
+        high frequency; its dashpot is 2 ξ sqrt(|K| m)). A support with coupled springs (a pile group's
         sway-rocking) adds their off-diagonal K and C, each omega.shape + (6, 6)
         (:meth:`~foundation_calc.scenes.block_soil.BlockSoil.coupling`)."""
         import numpy as np
@@ -250,7 +251,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         if ratios is None:
             return springs, six(self.soil.dashpot or [0.0] * 6)
         coupled = self.soil.coupling(L, B, m[..., 0], J_O, omega, self.embedment)
-        return (springs, 2.0 * six(ratios) * np.sqrt(springs * m)) + (() if coupled is None else coupled)
+        return (springs, 2.0 * six(ratios) * np.sqrt(np.abs(springs) * m)) + (() if coupled is None else coupled)
 
     def model(self, base=None, block=None, machine_cogs=None):
         """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`),

@@ -109,6 +109,8 @@ class PiledSoil(BlockSoil):
 
     _piles: BlockPiles = PrivateAttr()
     _plan: tuple[float, float] = PrivateAttr()
+    _dims: tuple | None = PrivateAttr(default=None)
+    _last: tuple | None = PrivateAttr(default=None)  # (arguments, matrices) of the last call: six_springs, then coupling
 
     @classmethod
     def on(cls, soil: BlockSoil, piles: BlockPiles, plan: tuple[float, float]) -> PiledSoil:
@@ -120,6 +122,13 @@ class PiledSoil(BlockSoil):
         piled = cls.model_validate(soil.model_dump(exclude_unset=True))
         piled._piles, piled._plan = piles, tuple(plan)
         return piled
+
+    def with_dimensions(self, d, L) -> PiledSoil:
+        """This support with the piles' diameter ``d`` and length ``L`` [m] replaced (arrays over a batch of
+        candidate designs, ``fcalc design``; their axis the candidates' leading one)."""
+        copy = self.model_copy()
+        copy._piles, copy._plan, copy._dims = self._piles, self._plan, (np.asarray(d, dtype=float), np.asarray(L, dtype=float))
+        return copy
 
     @property
     def piles(self) -> BlockPiles:
@@ -151,7 +160,9 @@ class PiledSoil(BlockSoil):
         L0, B0 = self._plan
         x = xy[:, 0] * (np.asarray(L, dtype=float)[..., None] / L0)
         y = xy[:, 1] * (np.asarray(B, dtype=float)[..., None] / B0)
-        return pile_group(x, y, p.diameter, p.length, p.modulus, p.density, self.G, self.poisson, self.density,
+        d, length = (p.diameter, p.length) if self._dims is None else (
+            np.reshape(v, np.shape(v) + (1,) * (np.ndim(L) - np.ndim(v))) for v in self._dims)
+        return pile_group(x, y, d, length, p.modulus, p.density, self.G, self.poisson, self.density,
                           self.material_damping or 0.0, p.soil_profile, p.tip == "end_bearing", p.head == "pinned",
                           omega)
 
@@ -179,21 +190,28 @@ class PiledSoil(BlockSoil):
         """(K, C) at O, each omega.shape + (6, 6): the group's and the cap's footing (:meth:`_footing`)."""
         from foundation_calc.solvers.piles.cap import springs_and_dashpots
 
+        args = [np.asarray(a, dtype=float) for a in (L, B, M, *J_O, omega, D)]
+        if self._last is not None and len(self._last[0]) == len(args) and all(
+                a.shape == b.shape and np.array_equal(a, b) for a, b in zip(self._last[0], args)):
+            return self._last[1]
         K, C = springs_and_dashpots(self.group(L, B, omega), omega)
         K_f, C_f = self._footing(L, B, M, J_O, omega, D)
         eye = np.eye(6)
-        return K + np.asarray(K_f)[..., None] * eye, C + np.asarray(C_f)[..., None] * eye
+        found = K + np.asarray(K_f)[..., None] * eye, C + np.asarray(C_f)[..., None] * eye
+        self._last = (args, found)
+        return found
 
     def six_springs(self, L, B, M, J_O, omega=0.0, D=0.0):
-        """The diagonal of :meth:`matrices`: springs at O and the damping ratios ξ_i = C_ii/(2 sqrt(K_ii m_i))
+        """The diagonal of :meth:`matrices`: springs at O and the damping ratios ξ_i = C_ii/(2 sqrt(|K_ii| m_i))
         plus the soil's material damping, m_i the mass (translations) or the moment of inertia about
-        the axis through O (rotations), as :meth:`BlockSoil.six_springs` gives them."""
+        the axis through O (rotations), as :meth:`BlockSoil.six_springs` gives them (a group's dynamic
+        spring can be negative at high frequency, where the interaction of its piles makes it so)."""
         K, C = self.matrices(L, B, M, J_O, omega, D)
         k, c = np.diagonal(K, 0, -2, -1), np.diagonal(C, 0, -2, -1)
         m = [M, M, M, *J_O]
         xi_m = self.material_damping or 0.0
         springs = [k[..., i] for i in range(6)]
-        return springs, [c[..., i] / (2.0 * np.sqrt(k[..., i] * m[i])) + xi_m for i in range(6)]
+        return springs, [c[..., i] / (2.0 * np.sqrt(np.abs(k[..., i]) * m[i])) + xi_m for i in range(6)]
 
     def coupling(self, L, B, M, J_O, omega=0.0, D=0.0):
         """The off-diagonal parts of :meth:`matrices` (K, C), each omega.shape + (6, 6): the heads'

@@ -42,7 +42,7 @@ def cap_impedance(x, y, head, d, V_v, V_h, nu, beta, omega):
     x, y : the pile heads' coordinates from O, (..., n) [m]
     head : :class:`~foundation_calc.solvers.piles.single.PileHead` at ``omega`` (pinned heads:
         its K_MM = K_HM = 0)
-    d : pile diameter [m]
+    d : pile diameter [m] (an array broadcasts with ``omega``)
     V_v, V_h : the shear-wave velocities [m/s] the vertical and the horizontal interaction take
     nu : the soil's Poisson's ratio [-]
     beta : the soil's material damping ratio [-]
@@ -68,8 +68,8 @@ def cap_impedance(x, y, head, d, V_v, V_h, nu, beta, omega):
     def interaction(values):
         return np.where(same, 1.0, values)
 
-    A_v = interaction(vertical_factor(S, d, V_v[..., None, None] if np.ndim(V_v) else V_v, beta, w))
-    V_h = V_h[..., None, None] if np.ndim(V_h) else V_h
+    V_v, V_h, d = (v[..., None, None] if np.ndim(v) else v for v in (V_v, V_h, d))
+    A_v = interaction(vertical_factor(S, d, V_v, beta, w))
     A_x = interaction(horizontal_factor(S, (dx / S) ** 2, d, V_h, nu, beta, w))
     A_y = interaction(horizontal_factor(S, (dy / S) ** 2, d, V_h, nu, beta, w))
     zero, one = np.zeros_like(x), np.ones_like(x)
