@@ -117,3 +117,32 @@ def test_validity_remarks(runner):
     texts = scene.plausibility_warnings()
     assert any("piles.length = 2.5 m is shorter than the active length" in t for t in texts), texts
     assert any("outside 10-100" in t for t in texts), texts
+
+
+def test_factored_soil_moves_the_groups_springs():
+    """The soil's modulus range scales the soil under the piles (not a cached group): K_HH goes as
+    E_s^(1 - 0.35) on the linear profile, the vertical spring between E_s^0 and E_s^1."""
+    scene = _scene()
+    scene.model()
+    stiffer = scene.with_modulus_factor(2.0).model()
+    ratio = np.diagonal(stiffer.K) / np.diagonal(scene.model().K)
+    single = 2.0 ** (1.0 - 0.35)
+    assert ratio[0] == pytest.approx(single, rel=1e-9)  # sway: the group's efficiency does not move at rest
+    assert 1.0 < ratio[2] < 2.0
+
+
+def test_modulus_range_is_judged(runner, tmp_path):
+    import tomli_w
+
+    document = _document()
+    document["soil"]["modulus_range"] = [0.6, 1.4]
+    path = tmp_path / "range.toml"
+    path.write_bytes(tomli_w.dumps(document).encode())
+    result = runner.invoke(app, ["check", str(path), "--json"])
+    assert result.exit_code in (0, 1), result.stdout + result.stderr
+    assert json.loads(result.stdout)["scenes"][0]["checks"][0]["check"] == "resonance"
+
+
+def test_sample_is_refused(runner):
+    result = runner.invoke(app, ["soil", str(PILED), "--sample", "10"])
+    assert result.exit_code == 2 and "not sampled" in result.stderr

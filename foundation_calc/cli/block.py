@@ -97,6 +97,10 @@ def soil(loaded, source: str, json: bool, sample: int = 0, modulus_cov: float = 
         if speed_cov:
             raise typer.BadParameter("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                      param_hint="'--speed-cov'")
+        if loaded.piles is not None:
+            raise typer.BadParameter("a block on [piles] is not sampled: its springs do not scale with one factor on the"
+                                     " soil's modulus (EN 1998-5 Table C.1: K ∝ E_s^(1 - n)); give soil.modulus_range"
+                                     " and fcalc check judges the range", param_hint="'--sample'")
         drawn = sample_block(loaded, sample, modulus_cov, seed)
     model = loaded.model()
     columns = soil_at_frequencies(loaded, model)

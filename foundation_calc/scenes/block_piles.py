@@ -190,7 +190,8 @@ class PiledSoil(BlockSoil):
         """(K, C) at O, each omega.shape + (6, 6): the group's and the cap's footing (:meth:`_footing`)."""
         from foundation_calc.solvers.piles.cap import springs_and_dashpots
 
-        args = [np.asarray(a, dtype=float) for a in (L, B, M, *J_O, omega, D)]
+        own = (self.G, self.poisson, self.density, self.material_damping or 0.0, *(self._dims or ()))  # copies share _last
+        args = [np.asarray(a, dtype=float) for a in (L, B, M, *J_O, omega, D, *own)]
         if self._last is not None and len(self._last[0]) == len(args) and all(
                 a.shape == b.shape and np.array_equal(a, b) for a, b in zip(self._last[0], args)):
             return self._last[1]
