@@ -127,7 +127,7 @@ def test_factored_soil_moves_the_groups_springs():
     stiffer = scene.with_modulus_factor(2.0).model()
     ratio = np.diagonal(stiffer.K) / np.diagonal(scene.model().K)
     single = 2.0 ** (1.0 - 0.35)
-    assert ratio[0] == pytest.approx(single, rel=1e-9)  # sway: the group's efficiency does not move at rest
+    assert ratio[0] == pytest.approx(single, rel=1e-6)  # at rest = at 1e-3 rad/s (cap.OMEGA_REST): 1e-7 apart
     assert 1.0 < ratio[2] < 2.0
 
 
