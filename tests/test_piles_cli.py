@@ -131,18 +131,6 @@ def test_factored_soil_moves_the_groups_springs():
     assert 1.0 < ratio[2] < 2.0
 
 
-def test_modulus_range_is_judged(runner, tmp_path):
-    import tomli_w
-
-    document = _document()
-    document["soil"]["modulus_range"] = [0.6, 1.4]
-    path = tmp_path / "range.toml"
-    path.write_bytes(tomli_w.dumps(document).encode())
-    result = runner.invoke(app, ["check", str(path), "--json"])
-    assert result.exit_code in (0, 1), result.stdout + result.stderr
-    assert json.loads(result.stdout)["scenes"][0]["checks"][0]["check"] == "resonance"
-
-
 def test_sample_is_refused(runner):
     result = runner.invoke(app, ["soil", str(PILED), "--sample", "10"])
     assert result.exit_code == 2 and "not sampled" in result.stderr

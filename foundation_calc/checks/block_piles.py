@@ -44,16 +44,18 @@ def piles_at_frequencies(scene) -> tuple[PilesAt, ...]:
     L, B = scene.base
     entries = [("static", 0.0)] + [(f"ω, {m.name}", m.omega_rad_s) for m in scene.machines]
     omega = np.array([w for _, w in entries])
-    head = single_pile(p.diameter, p.length, p.modulus, p.density, soil.G, soil.poisson, soil.density,
-                       p.soil_profile, p.tip == "end_bearing", np.maximum(omega, OMEGA_REST))
-    if p.head == "pinned":
-        head = pinned(head)
-    K, C = springs_and_dashpots(soil.group(L, B, omega), omega)
+    def one(w):
+        head = single_pile(p.diameter, p.length, p.modulus, p.density, soil.G, soil.poisson, soil.density,
+                           p.soil_profile, p.tip == "end_bearing", w)
+        return pinned(head) if p.head == "pinned" else head
+
+    head, damped = one(omega), one(np.maximum(omega, OMEGA_REST))
+    K, C = springs_and_dashpots(lambda w: soil.group(L, B, w), omega)
     n = len(p.positions)
     rows = []
     for i, (label, w) in enumerate(entries):
         single = {name: (float(np.real(getattr(head, name)[i])),
-                         float(np.imag(getattr(head, name)[i]) / max(w, OMEGA_REST)))
+                         float(np.imag(getattr(damped, name)[i]) / max(w, OMEGA_REST)))
                   for name in ("K_v", "K_HH", "K_MM", "K_HM", "K_T")}
         efficiency = {"x": K[i, 0, 0] / (n * single["K_HH"][0]), "y": K[i, 1, 1] / (n * single["K_HH"][0]),
                       "z": K[i, 2, 2] / (n * single["K_v"][0])}

@@ -195,7 +195,7 @@ class PiledSoil(BlockSoil):
         if self._last is not None and len(self._last[0]) == len(args) and all(
                 a.shape == b.shape and np.array_equal(a, b) for a, b in zip(self._last[0], args)):
             return self._last[1]
-        K, C = springs_and_dashpots(self.group(L, B, omega), omega)
+        K, C = springs_and_dashpots(lambda w: self.group(L, B, w), omega)
         K_f, C_f = self._footing(L, B, M, J_O, omega, D)
         eye = np.eye(6)
         found = K + np.asarray(K_f)[..., None] * eye, C + np.asarray(C_f)[..., None] * eye

@@ -96,9 +96,10 @@ def cap_impedance(x, y, head, d, V_v, V_h, nu, beta, omega):
     return K
 
 
-#: The frequency [rad/s] at which a group is taken "at rest": its dashpots C = Im Z/ω have a finite
+#: The frequency [rad/s] at which a group's dashpots are taken "at rest": C = Im Z/ω has a finite
 #: limit as ω → 0 (the Winkler dashpots are held below a0 = :data:`~.single.A0_MIN`), which this
-#: frequency gives to 1e-6 while its springs differ from the static ones by less than 1e-9.
+#: frequency gives to about 1e-6 (the interaction's e^(-β ω S/V_s) is linear in ω). The springs at
+#: rest are taken at ω = 0 itself (Gazetas' vertical k_z grows as sqrt(a0): 1e-3 at this frequency).
 OMEGA_REST = 1e-3
 
 
@@ -116,11 +117,11 @@ def pile_group(x, y, d, L, E_p, rho_p, G_s, nu, rho, beta, profile, end_bearing,
         [kg/m³], material damping ratio [-]
     profile : "uniform", "linear" or "parabolic"
     end_bearing, pinned_head : the tip on rock; the heads free to rotate
-    omega : circular frequency [rad/s] (0 is taken at :data:`OMEGA_REST`)
+    omega : circular frequency [rad/s]
     """
     from foundation_calc.solvers.piles.single import pinned, profile_factor, single_pile
 
-    omega = np.maximum(np.asarray(omega, dtype=float), OMEGA_REST)
+    omega = np.asarray(omega, dtype=float)
     head = single_pile(d, L, E_p, rho_p, G_s, nu, rho, profile, end_bearing, omega)
     if pinned_head:
         head = pinned(head)
@@ -131,9 +132,9 @@ def pile_group(x, y, d, L, E_p, rho_p, G_s, nu, rho, beta, profile, end_bearing,
     return cap_impedance(x, y, head, d, V_at(L / 2.0), V_at(head.l_a / 2.0), nu, beta, omega)
 
 
-def springs_and_dashpots(Z, omega):
-    """(K, C) of the impedance ``Z`` = K + iω C at ``omega`` [rad/s] (0 taken at :data:`OMEGA_REST`),
-    C the nearest positive semi-definite matrix to Im Z/ω.
+def springs_and_dashpots(impedance, omega):
+    """(K, C) of the impedance K + iω C = ``impedance(ω)`` at ``omega`` [rad/s]: K at ω, C the nearest
+    positive semi-definite matrix to Im Z/ω, at :data:`OMEGA_REST` where ω is below it.
 
     The superposition with Dobry & Gazetas' factors can radiate less than nothing: in an
     antisymmetric pattern (the cap's torsion, its rocking) a neighbour's wave arrives nearly in
@@ -142,8 +143,11 @@ def springs_and_dashpots(Z, omega):
     at 4.0 × 2.4 m in torsion at rest: -2.4 MN m s). The rigorous group (Kaynia & Kausel) is passive:
     its damping matrix is positive semi-definite at every frequency. The negative eigenvalues of
     the symmetric part are therefore set to 0 (the nearest such matrix in the Frobenius norm)."""
+    omega = np.asarray(omega, dtype=float)
+    Z = impedance(omega)
+    damped = np.maximum(omega, OMEGA_REST)
     K = Z.real
-    C = Z.imag / np.maximum(np.asarray(omega, dtype=float), OMEGA_REST)[..., None, None]
+    C = (Z if np.all(omega >= OMEGA_REST) else impedance(damped)).imag / damped[..., None, None]
     values, vectors = np.linalg.eigh((C + np.swapaxes(C, -1, -2)) / 2.0)
     return K, np.einsum("...ik,...k,...jk->...ij", vectors, np.maximum(values, 0.0), vectors)
 
