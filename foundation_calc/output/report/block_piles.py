@@ -14,6 +14,13 @@ from foundation_calc.output.report.handcalc import Chain
 from foundation_calc.output.report.model import Paragraph, table
 from foundation_calc.output.report.numbers import column
 
+#: Randolph & Wroth's r_m by the tip: (formula, ξ).
+R_M = {"end_bearing": ("0.25*L_p", "ξ = 0"), "floating": ("(0.25 + (2.5*rho_G*(1 - nu) - 0.25))*L_p", "ξ = 1")}
+
+#: Randolph & Wroth's head stiffness by the tip: (formula, note on the source, meaning).
+K_V = {"end_bearing": ("G_L*r0/t", ", ξ → 0", "vertical spring, tip on rock"),
+       "floating": ("G_L*r0*(b_t + 2*pi*rho_G/zeta*tanh(muL)/muL*L_p/r0)/(1 + b_t*t)", "", "vertical spring, floating tip")}
+
 #: f(z/d) of the profile as an expression of ``t`` = z/d (EN 1998-5 Table C.1's three soil models).
 PROFILE = {"uniform": "1", "linear": "{t}", "parabolic": "sqrt({t})"}
 
@@ -43,19 +50,15 @@ def single_pile_chain(scene) -> Chain:
                "mid-depth modulus over the tip's")
     chain.step("r0", "d/2", "m", "[RW]", "pile radius")
     chain.step("lam", "E_p/G_L", "-", "[RW]", "pile-soil stiffness ratio")
-    if p.tip == "end_bearing":
-        chain.step("r_m", "0.25*L_p", "m", "[RW] ξ = 0", "radius of the soil's influence")
-    else:
-        chain.step("r_m", "(0.25 + (2.5*rho_G*(1 - nu) - 0.25))*L_p", "m", "[RW] ξ = 1", "radius of the soil's influence")
+    r_m, shown = R_M[p.tip]
+    chain.step("r_m", r_m, "m", f"[RW] {shown}", "radius of the soil's influence")
     chain.step("zeta", "log(r_m/r0)", "-", "[RW]", "shaft's load-transfer factor")
     chain.step("muL", "sqrt(2/(zeta*lam))*L_p/r0", "-", "[RW]", "pile compressibility μL")
     chain.step("t", "tanh(muL)/muL*L_p/r0/(pi*lam)", "-", "[RW]", "compressibility term")
-    if p.tip == "end_bearing":
-        chain.step("K_v", "G_L*r0/t", "N/m", "[RW] (17), ξ → 0", "vertical spring, tip on rock")
-    else:
+    if p.tip == "floating":
         chain.step("b_t", "4/(1 - nu)", "-", "[RW]", "base term 4η/((1 − ν) ξ), η = ξ = 1")
-        chain.step("K_v", "G_L*r0*(b_t + 2*pi*rho_G/zeta*tanh(muL)/muL*L_p/r0)/(1 + b_t*t)", "N/m", "[RW] (17)",
-                   "vertical spring, floating tip")
+    K_v, shown, meaning = K_V[p.tip]
+    chain.step("K_v", K_v, "N/m", f"[RW] (17){shown}", meaning)
     chain.step("G_m", "G*" + f.format(t="max(L_p/2, d)/d"), "Pa", "[RW] 1981", "shear modulus of the soil at mid-depth")
     chain.step("k_t", "4*pi*G_m*r0**2", "N m/rad/m", "[RW] 1981", "torsional reaction of the shaft per unit length")
     chain.step("GJ", f"E_p/(2*(1 + {PILE_POISSON:g}))*pi*d**4/32", "N m²", "[RW] 1981", "torsional rigidity of the pile")
