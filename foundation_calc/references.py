@@ -37,6 +37,18 @@ REFERENCES: dict[str, str] = {
           " springs of a disk on a stratum over rigid rock and the stratum's cutoff frequencies as collected in"
           " G. Gazetas, \"Analysis of machine foundation vibrations: state of the art\", Soil Dynamics and"
           " Earthquake Engineering 2(1), 1983, pp. 2-42.",
+    "EC8": "EN 1998-5:2004, Eurocode 8: Design of structures for earthquake resistance — Part 5: Foundations,"
+           " retaining structures and geotechnical aspects, CEN, Brussels, 2004, Annex C (informative), Table C.1.",
+    "Fa": "H.-Y. Fang (ed.), Foundation Engineering Handbook, 2nd ed., Van Nostrand Reinhold, New York, 1991,"
+          " chapter 15: G. Gazetas, \"Foundation vibrations\" (pages not checked on a copy here).",
+    "RW": "M.F. Randolph, C.P. Wroth, \"Analysis of deformation of vertically loaded piles\", Journal of the"
+          " Geotechnical Engineering Division (ASCE) 104(GT12), 1978, pp. 1465-1488; and M.F. Randolph, \"Piles"
+          " subjected to torsion\", ibid. 107(GT8), 1981, pp. 1095-1111.",
+    "MG": "N. Makris, G. Gazetas, \"Dynamic pile-soil-pile interaction. Part II: lateral and seismic response\","
+          " Earthquake Engineering and Structural Dynamics 21(2), 1992, pp. 145-162; with G. Gazetas, N. Makris,"
+          " \"Part I: analysis of axial vibration\", ibid. 20(2), 1991, pp. 115-132.",
+    "DG": "R. Dobry, G. Gazetas, \"Simple method for dynamic stiffness and damping of floating pile groups\","
+          " Géotechnique 38(4), 1988, pp. 557-574.",
     "ACI": "ACI Committee 351, Report on Foundations for Dynamic Equipment, ACI 351.3R-18, American Concrete"
            " Institute, Farmington Hills, MI, 2018.",
     "SP26": "SP 26.13330.2012, Foundations of machines with dynamic loads (updated edition of SNiP 2.02.05-87),"

@@ -132,11 +132,17 @@ def test_a_root_where_the_plain_iteration_cycles():
     assert len(calls) <= 41
 
 
-def test_a_frequency_that_rises_with_frequency_is_a_physics_error():
-    """Springs that stiffen with frequency break the bracket's premise: a PhysicsError (fcalc's exit
-    3, naming the soil), not a wrong root nor an endless loop."""
-    with pytest.raises(PhysicsError, match="rises with frequency"):
-        consistent_frequency(lambda w: 50.0 + 0.5 * w, 50.0)
+def test_a_frequency_that_rises_with_frequency():
+    """Springs that stiffen with frequency (a pile group's): where p rises more slowly than ω the root
+    ω = 50 + ω/2 = 100 is found; where it rises faster there is none, a PhysicsError (fcalc's exit
+    3, naming the soil), not a wrong root nor an endless loop; a p that rises then falls
+    (not monotonic) gives the crossing nearest the static frequency."""
+    assert consistent_frequency(lambda w: 50.0 + 0.5 * w, 50.0) == pytest.approx(100.0, rel=1e-9)
+    with pytest.raises(PhysicsError, match="crosses ω = p"):
+        consistent_frequency(lambda w: 50.0 + 1.5 * w, 50.0)
+    bump = lambda w: 100.0 + 60.0 * np.exp(-((w - 130.0) / 20.0) ** 2)  # noqa: E731 - p(100) = 106, p(106) = 115: no bracket
+    root = consistent_frequency(bump, bump(0.0))
+    assert root == pytest.approx(bump(root), rel=1e-9)
 
 
 @pytest.mark.parametrize(("L", "B"), [(4.0, 4.0), (6.0, 4.0), (3.0, 9.0)])

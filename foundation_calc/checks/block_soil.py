@@ -53,8 +53,8 @@ def soil_at_frequencies(scene, model) -> tuple[SoilAt, ...]:
     entries += [("speed", m.name, None, m.omega_rad_s) for m in scene.machines]
     entries += [("mode", d, j + 1, float(p)) for j, (p, d) in enumerate(zip(modes.frequencies, modes.dominant))]
     omega = np.array([w for *_, w in entries])
-    springs, dashpots = impedance(omega)
-    half = min(scene.base) / 2.0
+    springs, dashpots, *_ = impedance(omega)  # a coupled support adds its off-diagonal K, C
+    half = min(scene.base) / 2.0 if scene.piles is None else scene.piles.diameter  # a0 = ω d/V_s of piles
     return tuple(
         SoilAt(at, name, mode, float(w), float(w * half / scene.soil.V_s), springs[i], dashpots[i])
         for i, (at, name, mode, w) in enumerate(entries)

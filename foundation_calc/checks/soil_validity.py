@@ -11,6 +11,8 @@ method declares its range in its own module:
   a0 <= 1.5 (:data:`foundation_calc.solvers.soil.lysmer.A0_FITTED`, Richart, Hall & Woods 1970);
 - ``"gazetas"``, ``"pais_kausel"``: a0 = ω B'/V_s, B' the shorter half-side, a0 <= 2
   (:data:`foundation_calc.solvers.soil.impedance.A0_FITTED`, Pais & Kausel 1988, Gazetas 1991);
+- ``"piles"`` (a block on ``[piles]``): a0 = ω d/V_s, d the pile diameter, a0 <= 1
+  (:data:`foundation_calc.solvers.piles.single.A0_FITTED`);
 - ``"coefficients"``, ``"sp26"``, ``"springs"``: frequency-independent springs; no range of a0
   applies (:data:`NO_RANGE`).
 
@@ -55,6 +57,7 @@ DEFINITIONS = {
               " r0ψ = (BL³/(3π))^¼ rocking, r0θ = (LB(L² + B²)/(6π))^¼ torsion)",
     "gazetas": "a0 = ω B'/V_s, B' the shorter half-side of the base",
     "pais_kausel": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+    "piles": "a0 = ω d/V_s, d the pile diameter, V_s the soil's at depth d",
 }
 
 
@@ -86,15 +89,18 @@ def fitted_range(method: str) -> FittedRange:
         from foundation_calc.solvers.soil.lysmer import A0_FITTED, A0_SOURCE
     elif method in ("gazetas", "pais_kausel"):
         from foundation_calc.solvers.soil.impedance import A0_FITTED, A0_SOURCE
+    elif method == "piles":
+        from foundation_calc.solvers.piles.single import A0_FITTED, A0_SOURCE
     else:
         return FittedRange(method, None, "", NO_RANGE[method])
     return FittedRange(method, A0_FITTED, DEFINITIONS[method], A0_SOURCE)
 
 
-def characteristic_lengths(method: str, L: float, B: float) -> dict[str, float]:
+def characteristic_lengths(method: str, L: float, B: float, d: float | None = None) -> dict[str, float]:
     """The length b [m] of a0 = ω b/V_s of each motion by ``method`` on a base L (along x, the
     plane model's plane) × B [m]: the block's x, y, z, rx, ry, rz and the plane model's
-    horizontal (x), vertical (z) and rocking (about the axis normal to the plane, ry).
+    horizontal (x), vertical (z) and rocking (about the axis normal to the plane, ry); ``"piles"``:
+    the pile diameter ``d`` [m] for every motion.
 
     >>> b = characteristic_lengths("lysmer", 6.0, 4.0)
     >>> round(b["z"], 4), round(b["rocking"], 4), round(characteristic_lengths("gazetas", 6.0, 4.0)["rz"], 4)
@@ -107,6 +113,8 @@ def characteristic_lengths(method: str, L: float, B: float) -> dict[str, float]:
         r0, r_ry = equivalent_radii(L, B)
         r_rx = equivalent_radii(B, L)[1]
         lengths = {"x": r0, "y": r0, "z": r0, "rx": r_rx, "ry": r_ry, "rz": torsion_radius(L, B)}
+    elif method == "piles":
+        lengths = dict.fromkeys(("x", "y", "z", "rx", "ry", "rz"), d)
     else:
         half = min(L, B) / 2.0
         lengths = dict.fromkeys(("x", "y", "z", "rx", "ry", "rz"), half)
@@ -387,7 +395,7 @@ def block_validity(scene, report) -> SoilValidity:
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
 
     soil = scene.soil
-    method = soil.method_used
+    method = soil.support_method
     if not fitted_range(method).applies:
         return soil_validity(method, None, {}, ())
     modes = report.modes
@@ -407,7 +415,8 @@ def block_validity(scene, report) -> SoilValidity:
         names = ", ".join(f"{m}: {_order_label(n)}" if several else _order_label(n) for m, n in orders)
         judged.append(JudgedFrequency(names, omega, MOTIONS))
     L, B = scene.base
-    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B), judged, stratum_cutoffs(soil))
+    d = scene.piles.diameter if scene.piles is not None else None
+    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B, d), judged, stratum_cutoffs(soil))
 
 
 __all__ = ["DEFINITIONS", "MOTION_SHARE", "NO_RANGE", "SHEAR_MOTIONS", "A0Value", "FittedRange", "JudgedFrequency",

@@ -59,7 +59,21 @@ def soil_document(model, scene, source: str, columns=()) -> dict:
         "warnings": scene.plausibility_warnings(),
         "at_frequencies": [_at_document(c) for c in columns],
         "stratum": stratum_document(scene.soil, *scene.base),
-    }
+    } | _piles(scene, True)
+
+
+def _piles(scene, document: bool):
+    """A block on piles: the piles' JSON section (``document``) or their tables; nothing else."""
+    if scene.piles is None:
+        return {}
+    from foundation_calc.checks.block_piles import piles_at_frequencies
+    from foundation_calc.output.block_piles import piles_document, print_piles
+
+    rows = piles_at_frequencies(scene)
+    if document:
+        return {"piles": piles_document(rows)}
+    print_piles(scene, rows)
+    return {}
 
 
 def _frequency_rows(columns) -> list:
@@ -79,7 +93,8 @@ def print_soil(model, scene, source: str, columns=()) -> None:
 
     out = stdout()
     rest = ", static (ω = 0)" if scene.soil.frequency_dependent else ""
-    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {scene.soil.method_used!r}{rest}",
+    method = "piles" if scene.piles is not None else repr(scene.soil.method_used)
+    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {method}{rest}",
                   title_justify="left")
     for col in ("motion", "K", "unit", "C", "unit", "ξ", "uncoupled, Hz"):
         table.add_column(col, justify="left" if col in ("motion", "unit") else "right")
@@ -89,6 +104,7 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     out.print(table)
     if (stratum := stratum_document(scene.soil, *scene.base)) is not None:
         out.print(escape(stratum_line(stratum)), soft_wrap=True)
+    _piles(scene, False)
     speeds = [c for c in columns if c.at != "mode"]
     modes = [c for c in columns if c.at == "mode"]
     if speeds:
@@ -97,6 +113,7 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     if modes:
         out.print(frequency_table("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of"
                                   " fcalc resonance, its dominant motion)", [c.label for c in modes], _frequency_rows(modes), 4))
-        out.print("a0 = ω B'/V_s (B' the base's shorter half-side). The modes and the checks take the soil at these"
+        out.print(("a0 = ω d/V_s (d the piles' diameter)" if scene.piles is not None else
+                   "a0 = ω B'/V_s (B' the base's shorter half-side)") + ". The modes and the checks take the soil at these"
                   " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at rest"
                   " only.", soft_wrap=True)

@@ -12,6 +12,7 @@ from typing import Literal
 from pydantic import field_validator, model_validator
 
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
+from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil
 from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
@@ -92,6 +93,10 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     block: BlockBody
     machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)
     soil: BlockSoil
+    piles: BlockPiles | None = quantity(
+        "-", "-", "a pile group under the block, its base the rigid cap: the group's springs and dashpots replace"
+        " the footing's ([soil] gives the soil around the piles); optional", None
+    )
     points: list[BlockPoint] = quantity("-", "-", "points whose vibration is checked (besides the centre of mass)", [])
     limits: BlockLimits = BlockLimits()
     operation: BlockOperation | None = quantity(
@@ -130,6 +135,27 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             )
         if (error := stratum_error(self.soil, self.embedment, "block.embedment")) is not None:
             raise ValueError(error)
+        return self
+
+    @model_validator(mode="after")
+    def _piles_carry_the_block(self):
+        """The support: a pile group when ``[piles]`` is given (:class:`~foundation_calc.scenes.block_piles.PiledSoil`,
+        the one place a support other than the footing's soil is chosen), its heads under the base."""
+        if self.piles is None or isinstance(self.soil, PiledSoil):
+            return self
+        if getattr(self.soil, "stratum_depth", None) is not None:
+            raise ValueError(
+                f"soil.stratum_depth = {self.soil.stratum_depth:g} m with [piles]: a layer over rock under piles is not"
+                " modelled (the piles' springs and dashpots are those of a deep soil); remove the key, and for"
+                ' piles that reach the rock give piles.tip = "end_bearing"'
+            )
+        L, B = self.base
+        for i, (x, y) in enumerate(self.piles.positions):
+            if abs(x) > L / 2.0 + ON_BLOCK or abs(y) > B / 2.0 + ON_BLOCK:
+                raise ValueError(f"piles.positions[{i}] = [{x:g}, {y:g}] m is outside the block's base (|x| <= L/2 ="
+                                 f" {L / 2.0:g} m, |y| <= B/2 = {B / 2.0:g} m; O is the centre of the base): the base is"
+                                 " the piles' cap")
+        object.__setattr__(self, "soil", PiledSoil.on(self.soil, self.piles, self.base))
         return self
 
     @property
@@ -209,7 +235,10 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         K(ω), C(ω) (``soil.frequency_dependent``), the others' constants. Dashpots from damping
         ratios are C_i = 2 ξ_i sqrt(K_i m_i), as :func:`~foundation_calc.solvers.block.model.block_model`
         makes them. ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates):
-        ``omega``'s leading axis is then the batch's."""
+        ``omega``'s leading axis is then the batch's (a pile group's dynamic spring may be negative at
+        high frequency; its dashpot is 2 ξ sqrt(|K| m)). A support with coupled springs (a pile group's
+        sway-rocking) adds their off-diagonal K and C, each omega.shape + (6, 6)
+        (:meth:`~foundation_calc.scenes.block_soil.BlockSoil.coupling`)."""
         import numpy as np
 
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
@@ -225,11 +254,13 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         def six(values):
             return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
 
-        springs, ratios = self.soil.six_springs(L, B, m[..., 0], np.moveaxis(m[..., 3:], -1, 0), omega, self.embedment)
+        J_O = np.moveaxis(m[..., 3:], -1, 0)
+        springs, ratios = self.soil.six_springs(L, B, m[..., 0], J_O, omega, self.embedment)
         springs = six(springs)
         if ratios is None:
             return springs, six(self.soil.dashpot or [0.0] * 6)
-        return springs, 2.0 * six(ratios) * np.sqrt(springs * m)
+        coupled = self.soil.coupling(L, B, m[..., 0], J_O, omega, self.embedment)
+        return (springs, 2.0 * six(ratios) * np.sqrt(np.abs(springs) * m)) + (() if coupled is None else coupled)
 
     def model(self, base=None, block=None, machine_cogs=None):
         """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`),
@@ -248,13 +279,14 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         L, B = self.base if base is None else base
         bodies = self._bodies(block, machine_cogs)
         M = bodies_mass_matrix(*bodies)
-        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0),
-                                                D=self.embedment)
+        J_O = np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0)
+        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], J_O, D=self.embedment)
         stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
         return block_model(
             *bodies, stack, GRAVITY, (L * L + B * B) ** 0.5,
             dashpots=self.soil.dashpot if ratios is None else None,
             ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
+            coupling=self.soil.coupling(L, B, M[..., 0, 0], J_O, D=self.embedment),
         )
 
     def excitations(self):

@@ -156,6 +156,19 @@ class BlockSoil(Soil):
         springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
         return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
 
+    @property
+    def support_method(self) -> str:
+        """The method whose range of validity the soil check judges (:mod:`~foundation_calc.checks.soil_validity`):
+        the soil's, or ``"piles"`` for a pile group."""
+        return self.method_used
+
+    def coupling(self, L, B, M, J_O, omega=0.0, D=0.0):
+        """Off-diagonal springs and dashpots at O (K, C), each omega.shape + (6, 6), of a support that
+        couples its motions (a pile group, :class:`~foundation_calc.scenes.block_piles.PiledSoil`);
+        None for a footing on the soil, whose six springs are uncoupled at O. Arguments as
+        :meth:`six_springs`."""
+        return None
+
     def _planes(self, L: float, B: float, M: float, J_O, omega=0.0, D=0.0):
         """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
         plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).

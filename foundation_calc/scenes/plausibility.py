@@ -163,6 +163,19 @@ RANGES: dict[str, PlausibleRange] = {
         "base areas of block foundations", "m²", 0.09, 3600.0, _JUDGEMENT, (Slip("mm²", 1e-6),),
         basis="the squares of the plan dimensions",
     ),
+    "pile_length": PlausibleRange(
+        "lengths of foundation piles", "m", 2.0, 80.0, _JUDGEMENT, (_MM,),
+        basis="short bored piles of a few metres to long driven or bored piles; EN 1998-5 Table C.1 needs flexible piles",
+    ),
+    "pile_diameter": PlausibleRange(
+        "diameters of foundation piles", "m", 0.1, 3.0, _JUDGEMENT, (_MM,),
+        basis="micropiles of 0.1-0.3 m to large bored piles of 2-3 m",
+    ),
+    "pile_modulus": PlausibleRange(
+        "Young's moduli of pile materials", "Pa", 5e9, 2.2e11, "EN 1992-1-1, Table 3.1; EN 1993-1-1, 3.2.6",
+        (Slip("MPa", 1e6), Slip("GPa", 1e9)),
+        basis="timber about 10 GPa (from 5), concrete 27-44 GPa, steel 210 GPa",
+    ),
     "amplitude_limit": PlausibleRange(
         "peak displacement limits of block foundations", "m", 1e-6, 5e-3, _JUDGEMENT, (_MM, _MICRON),
         basis="limits of ACI 351.3R-18 and Barkan (0.1-0.2 mm for low-speed machines), with room either way",
@@ -356,6 +369,11 @@ KEYS: dict[str, str] = {
     "block.density": "block_density",
     "block.mass": "foundation_mass",
     "machines[].mass": "machine_mass",
+    # a block's [piles]
+    "piles.length": "pile_length",
+    "piles.diameter": "pile_diameter",
+    "piles.modulus": "pile_modulus",
+    "piles.density": "block_density",
     "machines[].unbalance.balance_grade_mm_s": "balance_grade",
     # limits (crank and block foundations; a platform's transient_amplitude)
     **{f"limits.{k}": "amplitude_limit" for k in ("amplitude", "amplitude_rms")},

@@ -63,11 +63,12 @@ def _comment(info: FieldInfo) -> str:
 
 
 def _value_line(key: str, value: Any) -> str:
-    """``key = value`` in TOML; a list of numbers stays on one line, a table of plain values inline."""
+    """``key = value`` in TOML; a list of numbers (or of lists of numbers) stays on one line, a table of
+    plain values inline."""
     if isinstance(value, dict):
         items = ", ".join(_value_line(k, v) for k, v in value.items())
         return f"{tomli_w.dumps({key: 0}).partition(' = ')[0]} = {{ {items} }}"
-    if isinstance(value, list) and not any(isinstance(item, (dict, list)) for item in value):
+    if isinstance(value, list) and not any(isinstance(item, dict) for item in value):  # numbers, or lists of them
         items = ", ".join(_value_line("v", item).partition(" = ")[2] for item in value)
         return f"{tomli_w.dumps({key: 0}).partition(' = ')[0]} = [{items}]"
     return tomli_w.dumps({key: value}).rstrip("\n")

@@ -145,6 +145,31 @@ def _rederived(key: str, quantity: str, digits: str, fcalc, method: str) -> Case
                 basis="half a unit of the last digit of the re-derivation")
 
 
+def _table_c1(profile: str, ratio: float) -> tuple[float, float, float]:
+    """K_HH/(d E_s), K_MM/(d³ E_s), K_HM/(d² E_s) of fcalc's single pile at E_p/E_s = ``ratio``
+    (d = 1 m, E_s = 1 Pa: the table's normalised quantities)."""
+    from foundation_calc.solvers.piles.single import lateral_static
+
+    return tuple(float(k) for k in lateral_static(1.0, ratio, 1.0, profile))
+
+
+def _table_c1_exponents(profile: str) -> tuple[float, float, float]:
+    """The exponents of E_p/E_s in fcalc's K_HH, K_MM, K_HM: log(K(10⁴)/K(1))/log(10⁴)."""
+    return tuple(math.log(a / b) / math.log(1.0e4) for a, b in zip(_table_c1(profile, 1.0e4), _table_c1(profile, 1.0)))
+
+
+def _pile_cases(profile: str, model: str, coefficients: str, exponents: str) -> tuple[Case, ...]:
+    example = f"Flexible pile, soil modulus {model} (EN 1998-5 Table C.1, row {profile})"
+    method = "solvers.piles.single.lateral_static"
+    return (
+        printed_case(f"ec8-c1-{profile}-coefficients", "K_HH/(d E_s), K_MM/(d³ E_s), K_HM/(d² E_s) at E_p/E_s = 1 [-]",
+                     example, "EC8", "Table C.1, coefficients", coefficients, lambda: _table_c1(profile, 1.0), method),
+        printed_case(f"ec8-c1-{profile}-exponents", "exponents of E_p/E_s in K_HH, K_MM, K_HM [-]", example, "EC8",
+                     "Table C.1, exponents", exponents, lambda: _table_c1_exponents(profile),
+                     f"{method} (log of K at E_p/E_s = 10⁴ over K at 1)"),
+    )
+
+
 def _das_K_z() -> float:
     return _lysmer()[1].K_z / 1e6
 
@@ -176,6 +201,9 @@ CASES: tuple[Case, ...] = (
         relative=True,
         basis="2 %: a square and the circle of its area differ by about 1 % in the rigorous solutions",
     ),
+    *_pile_cases("uniform", "E_s constant", "1.08 / 0.16 / -0.22", "0.21 / 0.75 / 0.50"),
+    *_pile_cases("linear", "E_s z/d", "0.60 / 0.14 / -0.17", "0.35 / 0.80 / 0.60"),
+    *_pile_cases("parabolic", "E_s sqrt(z/d)", "0.79 / 0.15 / -0.24", "0.28 / 0.77 / 0.53"),
     printed_case("lewis-passage", "peak × sqrt(η) / (F/k) [-]", "Undamped passage through resonance, η = Ω̇/ω_n² → 0",
                  "Le", "1.467 / sqrt(η)", "1.467", _lewis,
                  "solvers.numerics.passage.passage_peak (envelope, Faddeeva function; ζ = 0)"),

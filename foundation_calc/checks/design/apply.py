@@ -2,7 +2,8 @@
 
 The varied keys are the block's dimensions, per kind (:data:`VARIABLES`): a
 ``block_foundation``'s ``block.length``, ``block.width``, ``block.height`` (a block given by
-height and density), a ``crank_foundation``'s ``foundation.block.length``, ``width``, ``height``
+height and density) and, on ``[piles]``, ``piles.length`` and ``piles.diameter`` (the heads'
+positions scale with the base's plan, x with L and y with B), a ``crank_foundation``'s ``foundation.block.length``, ``width``, ``height``
 (``block.length`` … is accepted as their shorthand). Each has bounds: the plausible range of
 :data:`~foundation_calc.scenes.plausibility.RANGES` (what real blocks measure), so that a search
 never proposes a 5 km block.
@@ -72,9 +73,15 @@ def _variables(prefix: str) -> dict[str, Variable]:
     }
 
 
+#: The keys of a block's ``[piles]`` a search may vary (a scene with ``[piles]`` only).
+PILE_VARIABLES: dict[str, Variable] = {
+    "piles.length": _dimension("piles.length", "pile_length", "pile length"),
+    "piles.diameter": _dimension("piles.diameter", "pile_diameter", "pile diameter"),
+}
+
 #: scene kind -> {varied key: Variable}.
 VARIABLES: dict[str, dict[str, Variable]] = {
-    "block_foundation": _variables("block."),
+    "block_foundation": _variables("block.") | PILE_VARIABLES,
     "crank_foundation": _variables("foundation.block."),
 }
 
@@ -132,11 +139,16 @@ def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
         variable(str(kind), "")
     block = _block_table(document)
     table = "[foundation.block]" if kind == "crank_foundation" else "[block]"
-    needed = [key for key in known if not isinstance((block or {}).get(key.rsplit(".", 1)[1]), (int, float))]
+    sides = [key for key in known if key not in PILE_VARIABLES]
+    needed = [key for key in sides if not isinstance((block or {}).get(key.rsplit(".", 1)[1]), (int, float))]
     if needed:
         raise VaryError(f"the block's dimensions can vary only when the scene gives {table} length, width, height"
                         f" and density (missing: {', '.join(needed)})")
-    return {key: float(block[key.rsplit(".", 1)[1]]) for key in known}
+    piles = document.get("piles")
+    given = {key: float(block[key.rsplit(".", 1)[1]]) for key in sides}
+    if isinstance(piles, dict):
+        given |= {key: float(piles[key.rsplit(".", 1)[1]]) for key in PILE_VARIABLES}
+    return given
 
 
 def moved(position, old: tuple[float, float, float], new):
@@ -235,13 +247,18 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
     new_values = dict(old_values)
     for key, value in candidate.items():
         found = variable(kind, key)
+        if found.key in PILE_VARIABLES and found.key not in old_values:
+            raise VaryError(f"{found.key} varies only in a scene with [piles]")
         new_values[found.key] = float(value)
     result = copy.deepcopy(dict(document))
     block = _block_table(result)
     for key, value in new_values.items():
-        block[key.rsplit(".", 1)[1]] = value
-    old, new = tuple(old_values.values()), tuple(new_values.values())
+        (result["piles"] if key in PILE_VARIABLES else block)[key.rsplit(".", 1)[1]] = value
+    old = tuple(v for k, v in old_values.items() if k not in PILE_VARIABLES)
+    new = tuple(v for k, v in new_values.items() if k not in PILE_VARIABLES)
     (_crank_positions if kind == "crank_foundation" else _block_positions)(result, old, new)
+    if isinstance(result.get("piles"), dict):  # the heads keep their place in the plan, scaled with it
+        result["piles"]["positions"] = [[x * new[0] / old[0], y * new[1] / old[1]] for x, y in result["piles"]["positions"]]
     return result
 
 
@@ -253,6 +270,6 @@ def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: s
     return parse_scene(applied_document(document, candidate), source)
 
 
-__all__ = ["ALIASES", "CRANK_DERIVED", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
+__all__ = ["ALIASES", "CRANK_DERIVED", "PILE_VARIABLES", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
            "given_dimensions", "moved", "moved_from_c",
            "moved_machine_height", "variable"]

@@ -49,6 +49,9 @@ from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, Ca
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
 
+#: The keys of a scene's ``[piles]`` a candidate may vary [m] (:func:`_piles`).
+PILE_KEYS = ("piles.length", "piles.diameter")
+
 #: Candidates evaluated together: stacks of this many 6×6 matrices stay in the processor's cache
 #: (10⁵ candidates take about 40 % longer in one piece than in pieces of this size).
 PIECE = 16_384
@@ -72,14 +75,24 @@ _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 def _candidates(scene, batch: Batch):
     """(L, B, H) of every candidate, (N,) each [m]: the scene's values where not varied."""
+    n = len(next(iter(batch.values()))) if batch else 1
+    batch = {key: values for key, values in batch.items() if key not in PILE_KEYS}
     unknown = sorted(set(batch) - set(VARIABLE_KEYS))
     if unknown:
         raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can: {', '.join(VARIABLE_KEYS)}")
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    n = len(next(iter(batch.values()))) if batch else 1
     return [np.broadcast_to(np.asarray(batch.get(key, getattr(scene.block, key.split(".")[1])), dtype=float), (n,))
             for key in VARIABLE_KEYS]
+
+
+def _piles(scene, batch: Batch, n: int):
+    """(d, L) of every candidate's piles, (n,) each [m] (the scene's where not varied), or None for a
+    scene without ``[piles]``."""
+    if scene.piles is None:
+        return None
+    return tuple(np.broadcast_to(np.asarray(batch.get(key, getattr(scene.piles, key.split(".")[1])), dtype=float), (n,))
+                 for key in ("piles.diameter", "piles.length"))
 
 
 def _block_body(L, B, H, rho):
@@ -331,6 +344,9 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
 
     L, B, H = _candidates(scene, batch)
+    piles = _piles(scene, batch, len(L))
+    if piles is not None:  # every candidate on its own piles
+        scene = scene.model_copy(update={"soil": scene.soil.with_dimensions(*piles)})
     built = _built(scene, L, B, H)
     model, m_b = built.model, built.block_mass
     found = {"inputs": _inputs(scene, L, B, H, built.place)}
@@ -355,7 +371,9 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    volume = L * B * H
+    from foundation_calc.checks.design.reference import pile_volume
+
+    volume = L * B * H + (0.0 if piles is None else pile_volume(scene.piles, *piles))
     return CandidateVerdicts(
         volume=volume, mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},

@@ -278,7 +278,7 @@ def order_springs_table(scene, model, orders) -> tuple[Table, Table]:
     with (the solver's ``soil_impedance`` at n ω or ω*; ``orders``: :func:`orders_of`), under
     those at ω = 0 that K and C above hold."""
     omegas = np.array([0.0] + [w for *_, w in orders])
-    springs, dashpots = scene.soil_impedance(omegas)
+    springs, dashpots, *_ = scene.soil_impedance(omegas)  # a pile group's coupling: its own table
     labels = [("static", "-", "0")] + [(name, n, None) for name, n, *_ in orders]
     omega_col = column(list(omegas), 4)
     labels = [(a, b, omega_col[k]) for k, (a, b, _) in enumerate(labels)]
@@ -317,6 +317,10 @@ def block_soil_blocks(scene, model, own=None) -> list:
     gives the solver's at each)."""
     method = scene.soil.method_used
     tilt = tilt_chain(model, model.springs)
+    if scene.piles is not None:
+        from foundation_calc.output.report.block_piles import piles_blocks
+
+        return [*piles_blocks(scene, model), tilt]
     if method == "springs":
         return [Paragraph("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
                           " entries less W z_G) and C below."), tilt]

@@ -47,7 +47,7 @@ SYMBOLS = {
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
-_MATH = {"sqrt": math.sqrt, "pi": math.pi, "abs": abs, "max": max, "min": min}
+_MATH = {"sqrt": math.sqrt, "pi": math.pi, "abs": abs, "max": max, "min": min, "log": math.log, "tanh": math.tanh}
 _POWERS = {"**2": "²", "**3": "³", "**4": "⁴", "**5": "⁵", "**0.5": "^½", "**0.25": "^¼"}
 
 

@@ -8,6 +8,7 @@ of motion about the static equilibrium, linear::
 
     M = Σ_bodies M_body (parallel axes)                       block and every machine, Eq. (1) of inertia.py
     K = diag(K_x, K_y, K_z, K_rx, K_ry, K_rz) - W z_G (about x and y)    springs at O, weight tilt
+        (+ K_c, C_c: the off-diagonal springs and dashpots of a coupled support, a pile group's)
     C = diag(C_x, ..., C_rz)       given, or C_i = 2 ξ_i sqrt(K_i m_i) of each uncoupled motion with
                                    m_i = M_Σ for a translation and the moment of inertia about the
                                    axis through O for a rotation (ACI 351.3R-18, 4.5; Richart, Hall
@@ -40,6 +41,8 @@ class BlockModel:
     J_G : central inertia tensor [kg m²]
     size : the base's diagonal [m] (the scale of rotations in the eigen-solve)
     springs : the six springs at O [N/m, N m/rad]
+    coupling : the off-diagonal springs at O of a coupled support (a pile group's sway-rocking),
+        (..., 6, 6), zero on the diagonal; None for six uncoupled springs
 
     A batch of designs (``fcalc design``) holds stacks: M, K, C (..., 6, 6), mass and size (...),
     cog (..., 3), J_G (..., 3, 3), springs (..., 6).
@@ -53,23 +56,30 @@ class BlockModel:
     J_G: np.ndarray
     size: float | np.ndarray
     springs: np.ndarray
+    coupling: np.ndarray | None = None
 
     @property
     def damped(self) -> bool:
         """True when a dashpot acts."""
         return bool(np.any(self.C != 0.0))
 
-    def soil_matrices(self, springs, dashpots) -> tuple[np.ndarray, np.ndarray]:
+    def soil_matrices(self, springs, dashpots, coupled=None, coupled_dashpots=None) -> tuple[np.ndarray, np.ndarray]:
         """K and C of Eq. (1) with the springs and dashpots at O replaced by ``springs`` and
         ``dashpots`` [N/m, N m/rad; N s/m, N m s/rad] (a frequency-dependent soil's at each
         frequency), shaped batch + extra + (6,): the model's batch axes first (none for one
-        block), then any further axes (the frequencies of several orders); K, C batch + extra + (6, 6)."""
+        block), then any further axes (the frequencies of several orders); K, C batch + extra + (6, 6).
+        ``coupled``, ``coupled_dashpots``: a coupled support's off-diagonal springs and dashpots
+        there, batch + extra + (6, 6) (replacing :attr:`coupling`)."""
         springs = np.asarray(springs, dtype=float)
         extra = springs.ndim - np.ndim(self.springs)
         batch = np.ndim(self.springs) - 1
-        own = np.expand_dims(self.springs, tuple(range(batch, batch + extra)))
-        K = np.expand_dims(self.K, tuple(range(batch, batch + extra))) + diagonal_matrices(springs - own)
-        return K, diagonal_matrices(np.broadcast_to(dashpots, springs.shape))
+        axes = tuple(range(batch, batch + extra))
+        own = np.expand_dims(self.springs, axes)
+        K = np.expand_dims(self.K, axes) + diagonal_matrices(springs - own)
+        C = diagonal_matrices(np.broadcast_to(dashpots, springs.shape))
+        if coupled is None:
+            return K, C
+        return K + coupled - np.expand_dims(self.coupling, axes), C + coupled_dashpots
 
 
 @dataclass(frozen=True)
@@ -98,7 +108,7 @@ class Excitation:
         return self.Q + ratio[..., None, None] * self.Q_inertial
 
 
-def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None) -> BlockModel:
+def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None, coupling=None) -> BlockModel:
     """Assemble Eq. (1).
 
     Parameters
@@ -109,6 +119,8 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
     size : the base's diagonal [m]
     dashpots : (6,) dashpots at O [N s/m, N m s/rad], or None
     ratios : (6,) damping ratios of the uncoupled motions [-] (instead of ``dashpots``), or None
+    coupling : (K_c, C_c) off-diagonal springs and dashpots at O of a coupled support, (..., 6, 6)
+        each, added to K and C; or None
 
     A batch of designs: a body given as a stack (:func:`~foundation_calc.solvers.rigid_body.inertia.bodies_mass_matrix`),
     springs, ratios (..., 6) and size (...) give the stacks of :class:`BlockModel`.
@@ -123,9 +135,13 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
         C = diagonal_matrices(2.0 * np.asarray(ratios, dtype=float) * np.sqrt(springs * np.diagonal(M, 0, -2, -1)))
     else:
         C = np.zeros((6, 6))
+    K_c = None
+    if coupling is not None:
+        K_c, C_c = coupling
+        K, C = K + K_c, C + C_c
     C = np.broadcast_to(C, K.shape)
     size = float(size) if np.ndim(size) == 0 else np.asarray(size, dtype=float)
-    return BlockModel(M, K, C, mass, cog, J_G, size, springs)
+    return BlockModel(M, K, C, mass, cog, J_G, size, springs, K_c)
 
 
 def excitation(name, omega, rows) -> Excitation:

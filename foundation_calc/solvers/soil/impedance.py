@@ -63,6 +63,10 @@ import numpy as np
 #: Largest a0 = ω B'/V_s of the fits of [2] (Pais & Kausel fitted a0 <= 2; Gazetas' charts end at 2).
 A0_FITTED = 2.0
 
+#: Where :func:`consistent_frequency` looks for the root when p(ω) is not monotonic (a pile group's
+#: springs rise and fall with frequency): these multiples of the static frequency [-].
+SCAN = np.geomspace(0.2, 5.0, 49)
+
 #: Where :data:`A0_FITTED` comes from.
 A0_SOURCE = "Pais & Kausel (1988), fitted for a0 <= 2; Gazetas (1991), charts to a0 = 2"
 
@@ -236,7 +240,13 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     stays, so each eigenvalue by rank falls too (Weyl's monotonicity): p(ω) is continuous,
     non-increasing and bounded, and g(ω) = p(ω) - ω strictly decreasing. With p_s = p(0) the
     static frequency, g(p_s) = p(p_s) - p_s <= 0 and, at p_1 = p(p_s) <= p_s,
-    g(p_1) = p(p_1) - p_1 >= 0: exactly one root, in [p(p_s), p_s]. Beyond a0 = :data:`A0_FITTED`
+    g(p_1) = p(p_1) - p_1 >= 0: exactly one root, in [p(p_s), p_s]. Springs that stiffen with
+    frequency (a pile group's: the Winkler pile's dynamic stiffness and Dobry & Gazetas' group
+    rise with ω in places) give p(p_s) > p_s: where p rises more slowly than ω, g(p_s) >= 0 >=
+    g(p(p_s)) and the root lies in [p_s, p(p_s)], bracketed the same way. Where neither interval
+    brackets a root (p(ω) not monotonic: Dobry & Gazetas' group springs rise and fall with ω), g
+    is sampled at the multiples :data:`SCAN` of p_s and the crossing from g >= 0 to g <= 0 nearest
+    p_s is bracketed (one root of several is then chosen: the nearest). Beyond a0 = :data:`A0_FITTED`
     the fits are extrapolated but keep these properties: the root exists, as good as the
     extrapolated fits. A mode followed by its shape instead of its rank has no such property:
     where two modes trade places its frequency jumps between them, and a plain iteration
@@ -262,8 +272,8 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     Raises
     ------
     PhysicsError
-        when ``frequency_at`` rises with frequency so that [p(p_s), p_s] brackets no root (no
-        soil method of fcalc does: a new method must keep its springs falling with frequency).
+        when ω = p(ω) has no root between 0.2 and 5 × p_s (springs that stiffen with frequency
+        faster than the mode's frequency rises).
 
     >>> round(consistent_frequency(lambda w: 100.0 * (1.0 - 0.001 * w) ** 0.5, 100.0), 6)
     95.124922
@@ -275,15 +285,28 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     lo = hi + g_hi  # p(p_s)
     g_lo = frequency_at(lo) - lo
     tol = rtol * np.abs(hi)
+    rising = lo > hi  # springs that stiffen with frequency (a pile group's): the root in [p_s, p(p_s)]
+    lo, hi, g_lo, g_hi = (np.where(rising, hi, lo), np.where(rising, lo, hi),
+                          np.where(rising, g_hi, g_lo), np.where(rising, g_lo, g_hi))
     lost = ((g_hi > 0.0) | (g_lo < 0.0)) & (np.abs(hi - lo) > tol)
+    if np.any(lost):  # p(ω) not monotonic (a pile group's): the crossing of ω = p(ω) nearest p_s on a grid
+        grid = hi[..., None] * SCAN
+        g = np.stack([frequency_at(grid[..., k]) - grid[..., k] for k in range(len(SCAN))], axis=-1)
+        down = (g[..., :-1] >= 0.0) & (g[..., 1:] <= 0.0)
+        k = np.argmin(np.where(down, np.abs(np.log(SCAN[:-1])), np.inf), axis=-1)
+        found = np.take_along_axis(down, k[..., None], -1)[..., 0]
+        pick = lost & found
+        at = (lambda a: np.take_along_axis(a, k[..., None], -1)[..., 0])
+        lo, g_lo = np.where(pick, at(grid[..., :-1]), lo), np.where(pick, at(g[..., :-1]), g_lo)
+        hi, g_hi = np.where(pick, at(grid[..., 1:]), hi), np.where(pick, at(g[..., 1:]), g_hi)
+        lost &= ~found
     if np.any(lost):
         raise PhysicsError(
-            f"the natural frequency on the soil's springs rises with frequency (p(p_s) - p_s = {np.max(g_hi):.4g},"
-            f" p(ω) - ω = {np.min(g_lo):.4g} rad/s at ω = p(p_s)): ω = p(K(ω)) has no bracketed root",
-            field="soil", hint="the soil's springs must not stiffen with frequency",
+            f"the natural frequency on the soil's springs p(ω) crosses ω = p(ω) nowhere between {SCAN[0]:g} and"
+            f" {SCAN[-1]:g} × its static value {np.max(np.where(lost, hi, 0.0)):.4g} rad/s: ω = p(K(ω)) has no root",
+            field="soil", hint="the soil's springs must not stiffen with frequency faster than the mode's frequency rises",
         )
-    lo, hi = np.minimum(lo, hi), np.maximum(lo, hi)  # lo = hi for a frequency-independent mode
-    g_lo, g_hi = np.maximum(g_lo, 0.0), np.minimum(g_hi, 0.0)
+    g_lo, g_hi = np.maximum(g_lo, 0.0), np.minimum(g_hi, 0.0)  # lo = hi for a frequency-independent mode
     kept = np.zeros(hi.shape)  # +1: lo was moved last, -1: hi was
     widths = [2.0 * (hi - lo)] * 2  # the first two steps are secant steps
     for _ in range(3 * 64):
@@ -309,5 +332,5 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     raise ArithmeticError(f"ω = p(K(ω)): the bracket did not close in {3 * 64} steps (a bug: it halves every three)")
 
 
-__all__ = ["A0_FITTED", "A0_SOURCE", "Impedance", "consistent_frequency", "footing_impedance", "footing_torsion",
+__all__ = ["A0_FITTED", "A0_SOURCE", "Impedance", "SCAN", "consistent_frequency", "footing_impedance", "footing_torsion",
            "rocking_radiation_coefficient", "stiffness_modifiers", "torsion_modifier", "torsion_radiation_coefficient"]
