@@ -59,6 +59,19 @@ def test_piles_need_a_soil_with_a_modulus(runner, tmp_path):
     assert result.exit_code == 3 and "soil.method = 'springs'" in result.stdout + result.stderr
 
 
+def test_a_stratum_under_piles_is_refused_not_ignored(runner, tmp_path):
+    """The piles' impedances are a deep soil's: a stratum_depth beside [piles] would be silently
+    left out of them, so the scene is refused naming the key."""
+    import tomli_w
+
+    document = _document()
+    document["soil"]["stratum_depth"] = 8.0
+    path = tmp_path / "stratum.toml"
+    path.write_bytes(tomli_w.dumps(document).encode())
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 3 and "soil.stratum_depth = 8 m with [piles]" in result.stdout + result.stderr
+
+
 def test_model_carries_the_groups_coupled_springs():
     """K at O is the group's (diagonal and the heads' sway-rocking coupling) less the weight's
     tilt, and the static modes are eigh(K, M) of it."""
