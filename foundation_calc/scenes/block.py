@@ -105,8 +105,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         if repeated:
             raise ValueError(f"machine names must be distinct: {', '.join(repeated)}")
         for m in machines:
-            if not m.loads and m.unbalance is None:
-                raise ValueError(f"machine {m.name!r} needs [[machines.loads]] or [machines.unbalance]")
+            if not m.loads and m.unbalance is None and not m.cranks:
+                raise ValueError(f"machine {m.name!r} needs [[machines.loads]], [machines.unbalance] or [[machines.cranks]]")
         return machines
 
     @field_validator("points")
@@ -149,6 +149,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             found |= {f"machines[{i}].loads[{j}].at": ld.at for j, ld in enumerate(m.loads) if ld.at is not None}
             if m.unbalance is not None and m.unbalance.at is not None:
                 found[f"machines[{i}].unbalance.at"] = m.unbalance.at
+            found |= {f"machines[{i}].cranks[{j}].crank_centre": c.crank_centre for j, c in enumerate(m.cranks)}
         return found | {f"points[{k}].at": p.at for k, p in enumerate(self.points)}
 
     def related_findings(self, prefix: str, found: list) -> list:
@@ -194,11 +195,21 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         raise culprit_error(text, culprits, key, f"stiffen {key}, or lower the centre of mass (block.height, machines[].cog)")
 
     def _bodies(self, block=None, machine_cogs=None):
-        """(masses, cogs, central inertias) of the block and every machine (``block`` and
-        ``machine_cogs`` as :meth:`model` takes them)."""
+        """(masses, cogs, central inertias) of the block, every machine and every machine's cranks
+        (their time-averaged moving parts, moved with their machine; ``block`` and ``machine_cogs``
+        as :meth:`model` takes them)."""
+        import numpy as np
+
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
-        return ([m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines])
+        masses, centres, inertias = [m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines]
+        for machine, cog in zip(self.machines, cogs):
+            body = machine.crank_body()
+            if body is not None:
+                masses.append(body[0])
+                centres.append(body[1] + (np.asarray(cog, dtype=float) - np.asarray(machine.cog, dtype=float)))
+                inertias.append(body[2])
+        return masses, centres, inertias
 
     def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
         """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape

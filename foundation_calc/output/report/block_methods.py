@@ -179,14 +179,14 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
 
 
 def _unbalances(scene) -> list[Paragraph]:
-    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``load_rows``): its
+    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``unbalance_rows``): its
     force F = m_r G ω, the pair a, b normal to the axis and the sense in which it turns."""
     out = []
     for machine in scene.machines:
         u = machine.unbalance
         if u is None:
             continue
-        a, b = (np.array(row[1]) for row in machine.load_rows() if row[5])
+        a, b = (np.array(row[1]) for row in machine.unbalance_rows())
         F = float(np.linalg.norm(a))
         e = np.array(u.axis, dtype=float) / np.linalg.norm(u.axis)
         out.append(Paragraph(

@@ -62,7 +62,7 @@ from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matr
 SAMPLES = 256
 #: Size, relative to the largest harmonic of the same kind (force or moment), below which a
 #: forcing order is left out of a machine's orders.
-ORDER_TOLERANCE = 1e-9
+ORDER_TOLERANCE = 1e-6
 
 
 @dataclass(frozen=True)
