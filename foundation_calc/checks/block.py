@@ -251,17 +251,18 @@ def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     return tuple(rows)
 
 
-def check_block(scene) -> BlockReport:
+def check_block(scene, periodic: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
-    that range (module docstring)."""
+    that range (module docstring); with ``periodic`` the crank machines' exact periodic solution and
+    the first approximation's error (:mod:`~foundation_calc.checks.block_cranks`, ``cranks``)."""
     from dataclasses import replace
 
     from foundation_calc.checks.soil_validity import block_validity
 
     report = check_block_as_given(scene)
     report = replace(report, soil_validity=block_validity(scene, report))
-    if report.motion is not None:
+    if periodic and report.motion is not None:
         from foundation_calc.checks.block_cranks import crank_errors
 
         model = scene.stable_model()

@@ -28,7 +28,7 @@ def amplitudes(loaded, source: str, json: bool, strict: bool, units: DisplayUnit
     from foundation_calc.checks.block import check_block
     from foundation_calc.output import block as out
 
-    report = check_block(loaded)
+    report = check_block(loaded, periodic=True)
     if json:
         from foundation_calc.output.console import print_json
 
