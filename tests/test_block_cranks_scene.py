@@ -136,3 +136,12 @@ def test_the_mass_ratio_counts_the_cranks_moving_parts(runner):
     office = next(c for c in doc["scenes"][0]["checks"] if c["check"] == "office")
     reason = office["reason"] if isinstance(office["reason"], str) else " ".join(office["reason"])
     assert "machines 14.45 t" in reason
+
+
+def test_the_sheet_says_what_the_cranks_add_and_how_far_the_first_approximation_is(runner, tmp_path):
+    sheet = tmp_path / "two_throw.md"
+    result = runner.invoke(app, ["report", str(TWO_THROW), "-o", str(sheet)])
+    assert result.exit_code == 0, result.stdout + result.stderr
+    text = sheet.read_text()
+    assert "2 crank throw(s)" in text and "moving mass 450.0 kg" in text
+    assert "the first approximation judged here differs from it by at most" in text
