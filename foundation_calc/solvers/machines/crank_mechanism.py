@@ -150,6 +150,18 @@ class PointMasses:
     r2: np.ndarray
 
 
+def rod_angle_cosine(phi, lam):
+    """cos ψ and its first two derivatives with respect to φ, with sin ψ = λ sin φ (module
+    docstring), each shaped as ``phi`` [-, 1/rad, 1/rad²].
+
+    >>> [round(float(x), 12) for x in rod_angle_cosine(0.0, 0.25)]
+    [1.0, -0.0, -0.0625]
+    """
+    s, co = np.sin(phi), np.cos(phi)
+    c = np.sqrt(1.0 - lam * lam * s * s)
+    return c, -lam * lam * s * co / c, -lam * lam * (np.cos(2.0 * phi) + lam * lam * s**4) / c**3
+
+
 def _along(a, b, s, t):
     """a s + b t for arrays a, b (N,) and directions s, t (3,): (N, 3)."""
     return np.multiply.outer(a, s) + np.multiply.outer(b, t)
@@ -161,9 +173,7 @@ def throw_masses(throw: CrankThrow, phi) -> PointMasses:
     s, t, lam = throw.s, throw.t, throw.r / throw.l
     f = np.asarray(phi, dtype=float) + throw.alpha
     sn, co = np.sin(f), np.cos(f)
-    c = np.sqrt(1.0 - lam * lam * sn * sn)
-    dc = -lam * lam * sn * co / c
-    ddc = -lam * lam * (np.cos(2.0 * f) + lam * lam * sn**4) / c**3
+    c, dc, ddc = rod_angle_cosine(f, lam)
     pin = (_along(throw.r * co, throw.r * sn, s, t), _along(-throw.r * sn, throw.r * co, s, t),
            _along(-throw.r * co, -throw.r * sn, s, t))
     axis = (_along(c, -lam * sn, s, t), _along(dc, -lam * co, s, t), _along(ddc, lam * sn, s, t))
@@ -286,5 +296,6 @@ __all__ = [
     "mean_mass_properties",
     "mechanism_samples",
     "point_masses",
+    "rod_angle_cosine",
     "throw_masses",
 ]
