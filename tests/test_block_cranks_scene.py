@@ -145,3 +145,19 @@ def test_the_sheet_says_what_the_cranks_add_and_how_far_the_first_approximation_
     text = sheet.read_text()
     assert "2 crank throw(s)" in text and "moving mass 450.0 kg" in text
     assert "the first approximation judged here differs from it by at most" in text
+
+
+def test_a_rod_barely_longer_than_its_crank_warns_and_the_exact_solution_states_its_truncation(two_throw, monkeypatch):
+    """λ = 0.995 is no real rod (a plausibility warning names the key); with the harmonics' cap the
+    exact solution is given at the cap with its own error, and the amplitudes still come."""
+    crank = two_throw["machines"][0]["cranks"][0]
+    crank["rod_length"], crank["rod_cog_to_crank_pin"] = 0.1105, 0.05
+    scene = parse_scene(two_throw)
+    assert any("machines[0].cranks[0]: λ = crank_radius/rod_length = 0.995" in w for w in scene.plausibility_warnings())
+    from foundation_calc.checks.block import check_block
+    from foundation_calc.solvers.rigid_body import periodic
+
+    monkeypatch.setattr(periodic, "MAX_HARMONICS", 16)  # the cap, reached sooner: the same path, faster
+    (found,) = check_block(scene, periodic=True).cranks
+    assert found.harmonics == 16 and found.harmonic_change > periodic.HARMONIC_TOLERANCE
+    assert 0.0 < found.error < 0.05

@@ -6,7 +6,9 @@ scene does. For each machine with ``[[machines.cranks]]`` this module adds the e
 solution with the mechanisms' angle-dependent inertia (harmonic balance,
 :mod:`foundation_calc.solvers.block.cranks`) and the first approximation's error against it: the
 largest relative difference of the peaks of G's and every point's displacement and of the
-rotations. Computed once per scene (not over a soil's modulus range).
+rotations. Computed once per scene (not over a soil's modulus range). A rod barely longer than its
+crank may need more harmonics than the cap: the solution at the cap is given, with its change from
+half as many harmonics as its error estimate (``harmonic_change``).
 """
 
 from __future__ import annotations
@@ -23,12 +25,16 @@ def crank_errors(scene, model, impedance) -> tuple:
     from foundation_calc.solvers.block.response import complex_amplitudes
     from foundation_calc.solvers.constants import GRAVITY
     from foundation_calc.solvers.rigid_body.kinematics import point_maps
+    from foundation_calc.solvers.rigid_body.periodic import HarmonicCapReached
 
     T = point_maps(np.vstack([np.asarray(model.cog, dtype=float)[None, :]] + [np.array([p.at]) for p in scene.points]))
     found = []
     for machine, exc in zip(scene.machines, scene.excitations()):
         if machine.cranks:
-            exact = exact_response(model, exc, machine.crank_throws(), GRAVITY, impedance)
+            try:
+                exact = exact_response(model, exc, machine.crank_throws(), GRAVITY, impedance)
+            except HarmonicCapReached as capped:  # given with its truncation error (harmonic_change)
+                exact = capped.solution
             first = complex_amplitudes(model, exc, impedance=impedance)
             found.append(first_approximation_error(machine.name, first, exc, exact, T))
     return tuple(found)

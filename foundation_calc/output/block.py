@@ -157,7 +157,7 @@ def _crank_document(c, names) -> dict:
 
     rotations = ("rx", "ry", "rz")
     return {"machine": c.name, "method": PERIODIC_METHOD, "harmonics": c.harmonics,
-            "first_approximation_error": c.error,
+            "first_approximation_error": c.error, "harmonic_change": c.harmonic_change,
             "exact": {"displacement_peak": points(c.exact_peak), "rotation_peak": dict(zip(rotations, map(float, c.rotation_exact)))},
             "first_approximation": {"displacement_peak": points(c.first_peak),
                                     "rotation_peak": dict(zip(rotations, map(float, c.rotation_first)))}}
@@ -166,6 +166,8 @@ def _crank_document(c, names) -> dict:
 def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
     """Per crank machine: peaks of the exact periodic solution beside the first approximation's."""
     from rich.markup import escape
+
+    from foundation_calc.solvers.rigid_body.periodic import HARMONIC_TOLERANCE
 
     amp = units.label("amplitude")
     for c in report.cranks:
@@ -178,8 +180,10 @@ def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
         for col in t.columns[1:]:
             col.justify = "right"
         stdout().print(t)
+        capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
+                  f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
         stdout().print(f"{escape(c.name)}: first approximation's error {c.error:.2g} (largest relative difference of the"
-                       " peaks from the exact solution's); the limits judge the first approximation", soft_wrap=True)
+                       f" peaks from the exact solution's){capped}; the limits judge the first approximation", soft_wrap=True)
 
 
 def _table(title: str, columns, right=()):

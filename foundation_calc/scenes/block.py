@@ -23,6 +23,9 @@ from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
 #: as on it: coordinates are typed to the millimetre (a point on an edge or a corner is on the block).
 ON_BLOCK = 1e-3
 
+#: Largest crank radius over rod length λ = r/l of a plausible crank throw (real rods: λ 0.14-0.4).
+CRANK_RATIO = 0.5
+
 #: What each code of :func:`placement` says about a position, after its key and value.
 PLACEMENT_TEXTS = {
     1: "is more than {far:g} × the base's diagonal {size:.3g} m from O; was it typed in mm?",
@@ -161,8 +164,17 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         L, B = self.base
         codes = placement(list(positions.values()), L, B).tolist() if positions else []
         sizes = {"far": LENGTH_SCALE_FACTOR, "size": (L * L + B * B) ** 0.5, "x": L / 2.0, "y": B / 2.0}
-        return [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
-                for (key, value), code in zip(positions.items(), codes) if code]
+        found = [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
+                 for (key, value), code in zip(positions.items(), codes) if code]
+        for i, m in enumerate(self.machines):
+            for j, c in enumerate(m.cranks):
+                lam = c.crank_radius / c.rod_length
+                if lam > CRANK_RATIO:
+                    found.append(Remark(f"machines[{i}].cranks[{j}].rod_length", (
+                        f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
+                        " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
+                        " as the crank radius, or the rod measured between other points?")))
+        return found
 
     def stable_model(self):
         """:meth:`model` of the scene as it is, for the checks.

@@ -187,7 +187,7 @@ PERPENDICULAR = 1e-3
 
 
 class BlockMachine(SpeedFields):
-    """A machine on the block: its mass properties, its own speed and its loads or unbalance."""
+    """A machine on the block: its mass properties, its own speed and its loads, unbalance or crank throws."""
 
     name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
     mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])

@@ -39,7 +39,7 @@ def exact_response(model: BlockModel, exc: Excitation, throws, g, impedance=None
 
     Raises
     ------
-    ConvergenceError
+    ConvergenceError, HarmonicCapReached
         as :func:`~foundation_calc.solvers.rigid_body.periodic.periodic_solution`.
     """
 
@@ -64,6 +64,9 @@ class FirstApproximationError:
     first_peak : (P, 3) the same by the first approximation [m]
     rotation_exact, rotation_first : (3,) peak rotations [rad]
     error : largest |first - exact| / exact over the points, directions and rotations [-]
+    harmonic_change : the exact solution's change from half its harmonics [-] (its truncation
+        error; above :data:`~foundation_calc.solvers.rigid_body.periodic.HARMONIC_TOLERANCE` when
+        the harmonics' cap was reached)
     """
 
     name: str
@@ -73,6 +76,7 @@ class FirstApproximationError:
     rotation_exact: np.ndarray
     rotation_first: np.ndarray
     error: float
+    harmonic_change: float
 
 
 def series_peaks(Z: np.ndarray, orders: np.ndarray, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -95,7 +99,7 @@ def first_approximation_error(name, first: np.ndarray, exc: Excitation, exact: P
     scale = max(float(np.abs(b).max()), 1e-300)
     shown = b > 1e-9 * scale  # below this the direction is round-off of the others
     error = float((np.abs(a - b)[shown] / b[shown]).max()) if shown.any() else 0.0
-    return FirstApproximationError(str(name), len(exact.orders), ep, fp, er, fr, error)
+    return FirstApproximationError(str(name), len(exact.orders), ep, fp, er, fr, error, exact.harmonic_change)
 
 
 __all__ = ["FirstApproximationError", "dense_loads", "exact_response", "first_approximation_error", "series_peaks"]

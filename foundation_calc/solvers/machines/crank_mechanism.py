@@ -56,9 +56,9 @@ import numpy as np
 from foundation_calc.solvers.numerics.trig_series import phases
 from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matrix, parallel_axis, skews
 
-#: Phases per revolution at which the mechanism is sampled for its means and Fourier coefficients
-#: (harmonics up to 127 resolved; the kinematic harmonics fall as ((1 - sqrt(1 - λ²))/λ)^n, below
-#: round-off by n = 80 for λ <= 0.9).
+#: Fewest phases per revolution at which the mechanism is sampled for its means and Fourier
+#: coefficients (harmonics up to 127 resolved); :func:`samples_for` takes more for a rod barely
+#: longer than its crank.
 SAMPLES = 256
 #: Size, relative to the largest harmonic of the same kind (force or moment), below which a
 #: forcing order is left out of a machine's orders.
@@ -216,8 +216,20 @@ class MechanismSamples:
     f_weight: np.ndarray
 
 
-def mechanism_samples(throws, omega, g, N: int = SAMPLES) -> MechanismSamples:
-    """Eqs. (1)-(4) of the module docstring for the throws at speed ω [rad/s], gravity g [m/s²]."""
+def samples_for(throws) -> int:
+    """Phases per revolution that resolve the throws' kinematics to round-off: the harmonics of
+    cos ψ fall as q^n, q = (1 - sqrt(1 - λ²))/λ, below 1e-16 from n = log(1e-16)/log q (80 for
+    λ = 0.9, 370 for λ = 0.995); twice that, a power of two, at least :data:`SAMPLES`."""
+    lam = max(th.r / th.l for th in throws)
+    q = (1.0 - np.sqrt(1.0 - lam * lam)) / lam
+    n = np.log(1e-16) / np.log(q)
+    return max(SAMPLES, 1 << int(np.ceil(np.log2(2.0 * n + 2.0))))
+
+
+def mechanism_samples(throws, omega, g, N: int | None = None) -> MechanismSamples:
+    """Eqs. (1)-(4) of the module docstring for the throws at speed ω [rad/s], gravity g [m/s²],
+    at N phases (default :func:`samples_for`)."""
+    N = samples_for(throws) if N is None else N
     pm = point_masses(throws, phases(N))
     m = np.broadcast_to(pm.masses[:, None], pm.r.shape[:2])
     mm = m[..., None, None]
@@ -273,7 +285,7 @@ def forcing_harmonics(throws, omega, g) -> ForcingHarmonics:
     give if they did not balance each other."""
     sm = mechanism_samples(throws, omega, g)
     Qi, Qw = harmonics(sm.f_inertia)[1:], harmonics(sm.f_weight)[1:]
-    pm = point_masses(throws, phases(SAMPLES))
+    pm = point_masses(throws, phases(len(sm.M)))
     r, a = pm.r, omega * omega * pm.r2
     force = pm.masses[:, None] * np.hypot.reduce(a, axis=-1)
     moment = pm.masses[:, None] * (np.hypot.reduce(np.cross(r, a), axis=-1) + g * np.hypot.reduce(r, axis=-1))
@@ -297,5 +309,6 @@ __all__ = [
     "mechanism_samples",
     "point_masses",
     "rod_angle_cosine",
+    "samples_for",
     "throw_masses",
 ]

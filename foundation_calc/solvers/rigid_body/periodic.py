@@ -59,6 +59,16 @@ class PeriodicSolution:
     harmonic_change: float
 
 
+class HarmonicCapReached(ConvergenceError):
+    """:data:`MAX_HARMONICS` harmonics change the solution by more than :data:`HARMONIC_TOLERANCE`
+    from half as many (a rod barely longer than its crank: slowly falling harmonics); ``solution``
+    is the one at the cap, its ``harmonic_change`` the estimate of its truncation error [-]."""
+
+    def __init__(self, message: str, solution: PeriodicSolution):
+        super().__init__(message)
+        self.solution = solution
+
+
 def _sampling(H: int) -> int:
     """Phases on which the coefficients of Eq. (2) are exact: a power of two above 4H + 2."""
     return max(64, 1 << int(np.ceil(np.log2(4 * H + 4))))
@@ -107,12 +117,13 @@ def periodic_solution(omega, M, K, C, periodic, Q, soil=None) -> PeriodicSolutio
 
     Raises
     ------
-    ConvergenceError
+    HarmonicCapReached
         when :data:`MAX_HARMONICS` harmonics change the solution by more than
-        :data:`HARMONIC_TOLERANCE` from half as many, or the system is singular (a speed on a
-        resonance of the periodic system without damping).
+        :data:`HARMONIC_TOLERANCE` from half as many; it carries the solution at the cap.
+    ConvergenceError
+        when the system is singular (a speed on a resonance of the periodic system without damping).
     """
-    H = max(FIRST_HARMONICS, 1 << int(np.ceil(np.log2(max(len(Q), 1)))))
+    H = min(max(FIRST_HARMONICS, 1 << int(np.ceil(np.log2(max(len(Q), 1))))), MAX_HARMONICS // 2)
     try:
         X = harmonic_balance(omega, M, K, C, periodic, Q, H, soil)
         while True:
@@ -126,13 +137,13 @@ def periodic_solution(omega, M, K, C, periodic, Q, soil=None) -> PeriodicSolutio
             if change < HARMONIC_TOLERANCE:
                 return _solution(omega, X, change)
             if H >= MAX_HARMONICS:
-                raise ConvergenceError(
+                raise HarmonicCapReached(
                     f"harmonic balance: {H} harmonics change the periodic solution by {change:.2g} relative from"
-                    f" {H // 2} (wanted < {HARMONIC_TOLERANCE:g})")
+                    f" {H // 2} (wanted < {HARMONIC_TOLERANCE:g})", _solution(omega, X, change))
     except np.linalg.LinAlgError:
         raise ConvergenceError(
             f"harmonic balance at ω = {omega:.6g} rad/s: the periodic system is singular (the speed is on one of its"
             " resonances, without damping)") from None
 
 
-__all__ = ["HARMONIC_TOLERANCE", "MAX_HARMONICS", "PeriodicSolution", "harmonic_balance", "periodic_solution"]
+__all__ = ["HARMONIC_TOLERANCE", "HarmonicCapReached", "MAX_HARMONICS", "PeriodicSolution", "harmonic_balance", "periodic_solution"]
