@@ -153,6 +153,8 @@ class MachineCrank(SceneModel):
 
     @model_validator(mode="after")
     def _a_mechanism(self):
+        from foundation_calc.solvers.machines.crank_mechanism import PERPENDICULAR
+
         n, s = self.shaft_axis, self.slider_axis
         for key, v in (("shaft_axis", n), ("slider_axis", s)):
             if math.hypot(*v) == 0.0:
@@ -180,10 +182,6 @@ class MachineCrank(SceneModel):
         return crank_throw(self.crank_centre, self.shaft_axis, self.slider_axis, self.crank_angle, self.crank_radius,
                            self.rod_length, self.rod_mass, self.rod_cog_to_crank_pin, self.rod_radius_of_gyration,
                            self.slider_mass, self.rotating_mass, self.rotating_radius, self.rotating_angle)
-
-
-#: Largest |cos| of the angle between a throw's slider and shaft axes (0.06°: typed directions).
-PERPENDICULAR = 1e-3
 
 
 class BlockMachine(SpeedFields):

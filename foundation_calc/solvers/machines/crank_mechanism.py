@@ -60,6 +60,8 @@ from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matr
 #: coefficients (harmonics up to 127 resolved); :func:`samples_for` takes more for a rod barely
 #: longer than its crank.
 SAMPLES = 256
+#: Largest |cos| of the angle between a throw's slider and shaft axes (0.06°: directions as typed).
+PERPENDICULAR = 1e-3
 #: Size, relative to the largest harmonic of the same kind (force or moment), below which a
 #: forcing order is left out of a machine's orders.
 ORDER_TOLERANCE = 1e-6
@@ -103,28 +105,26 @@ class CrankThrow:
         """t = n × s: the direction of the pin a quarter turn after top dead centre."""
         return np.cross(self.n, self.s)
 
-    @property
-    def mass(self) -> float:
-        """Moving mass m + m1 + m_r [kg]."""
-        return self.m + self.m1 + self.m_rot
-
 
 def crank_throw(crank_centre, shaft_axis, slider_axis, crank_angle, r, l, m, l1, rho, m1,
                 m_rot=0.0, r_rot=0.0, beta=0.0) -> CrankThrow:
-    """A :class:`CrankThrow` with its axes made unit vectors.
+    """A :class:`CrankThrow` with its axes made unit vectors, the slider axis made exactly normal to
+    the shaft (typed directions are normal to :data:`PERPENDICULAR`).
 
     Raises
     ------
     ValueError
-        when an axis is zero, the slider axis is not normal to the shaft (|n·s| > 1e-6 after
-        normalising), l <= r, or a mass or length is negative.
+        when an axis is zero, the slider axis is not normal to the shaft (|cos| of their angle above
+        :data:`PERPENDICULAR`), l <= r, or a mass or length is negative.
     """
     n, s = (np.asarray(v, dtype=float) for v in (shaft_axis, slider_axis))
     if not np.hypot.reduce(n) > 0.0 or not np.hypot.reduce(s) > 0.0:
         raise ValueError("shaft_axis and slider_axis must not be [0, 0, 0]")
     n, s = n / np.hypot.reduce(n), s / np.hypot.reduce(s)
-    if abs(n @ s) > 1e-6:
+    if abs(n @ s) > PERPENDICULAR:
         raise ValueError(f"slider_axis must be normal to shaft_axis (cos of their angle {n @ s:.3g})")
+    s = s - (n @ s) * n
+    s = s / np.hypot.reduce(s)
     if not l > r > 0.0:
         raise ValueError(f"need rod_length l > crank_radius r > 0 (got l = {l:g} m, r = {r:g} m)")
     if min(m, l1, rho, m1, m_rot, r_rot) < 0.0:
@@ -300,6 +300,7 @@ __all__ = [
     "ForcingHarmonics",
     "MechanismSamples",
     "ORDER_TOLERANCE",
+    "PERPENDICULAR",
     "PointMasses",
     "SAMPLES",
     "crank_throw",
