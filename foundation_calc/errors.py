@@ -8,16 +8,48 @@ message and an exit code. Every exception also inherits a built-in (``ValueError
 from __future__ import annotations
 
 from enum import IntEnum
+from typing import NamedTuple
 
 
 class ExitCode(IntEnum):
-    """Exit codes of ``fcalc``, documented in README.md and ``fcalc --help``."""
+    """Exit codes of ``fcalc``, documented in docs/exit-codes.md and ``fcalc --help``."""
 
     OK = 0  #: every check passes
     CHECK_FAILED = 1  #: at least one check fails (resonance, amplitude, feasibility warning made strict)
     USAGE = 2  #: command-line usage error (typer/click)
     INVALID_SCENE = 3  #: unreadable file, bad TOML, failed validation, physically impossible design
     INTERNAL = 4  #: a bug in fcalc: please report it with the scene file
+
+
+class Problem(NamedTuple):
+    """One problem of a scene: ``field``, the dotted path of the key (``mechanism.rod_length``, or
+    ``""`` for the file as a whole), and ``message``, naming the value, its unit and the allowed
+    range.
+
+    It is the pair ``(field, message)`` and also equals the ``{"field": ..., "message": ...}``
+    object that the JSON documents carry for it:
+
+    >>> problem = Problem("kind", "missing")
+    >>> problem == ("kind", "missing"), problem == {"field": "kind", "message": "missing"}
+    (True, True)
+    """
+
+    field: str
+    message: str
+
+    def __eq__(self, other) -> bool:
+        if isinstance(other, dict):
+            return other == self.to_dict()
+        return tuple.__eq__(self, other)
+
+    def __ne__(self, other) -> bool:
+        return not self == other
+
+    __hash__ = tuple.__hash__
+
+    def to_dict(self) -> dict[str, str]:
+        """The problem as the JSON documents write it: ``{"field": ..., "message": ...}``."""
+        return {"field": self.field, "message": self.message}
 
 
 class FcalcError(Exception):
@@ -29,15 +61,16 @@ class FcalcError(Exception):
 class SceneError(FcalcError, ValueError):
     """A scene file cannot be used: unreadable, not TOML, or fails validation.
 
-    ``problems`` holds one ``(location, message)`` pair per problem, where ``location`` is the
-    dotted path of the field (``mechanism.rod_length``) or ``""`` for the file as a whole.
+    ``problems`` holds one :class:`Problem` (a ``(field, message)`` pair) per problem, where
+    ``field`` is the dotted path of the field (``mechanism.rod_length``) or ``""`` for the file as
+    a whole: the ``problems`` of the JSON documents (``fcalc check --json``).
     """
 
     exit_code = ExitCode.INVALID_SCENE
 
     def __init__(self, source: str, problems: list[tuple[str, str]]):
         self.source = source
-        self.problems = problems
+        self.problems = [Problem(*problem) for problem in problems]
         lines = [f"{loc}: {msg}" if loc else msg for loc, msg in problems]
         super().__init__(f"{source}: " + "; ".join(lines))
 
@@ -78,7 +111,8 @@ class PhysicsError(FcalcError, ValueError):
 
     Examples: a foundation that is unstable in rocking, an isolator stiffness that must be
     negative. ``field`` names the scene field (or derived quantity) that is responsible, and
-    ``hint`` says what range would make the design possible.
+    ``hint`` says what range would make the design possible; ``problems`` is the one
+    :class:`Problem` a JSON document reports for it.
     """
 
     exit_code = ExitCode.INVALID_SCENE
@@ -89,6 +123,7 @@ class PhysicsError(FcalcError, ValueError):
         self.hint = hint
         #: message and hint without the field: what a JSON document puts next to ``field``
         self.detail = f"{message} ({hint})" if hint else message
+        self.problems = [Problem(field, self.detail)]
         super().__init__(f"{field}: {self.detail}" if field else self.detail)
 
 
@@ -96,3 +131,16 @@ class ConvergenceError(FcalcError, ArithmeticError):
     """An iterative solver did not converge; the message says how far it got."""
 
     exit_code = ExitCode.INVALID_SCENE
+
+
+class UsageError(FcalcError, ValueError):
+    """An option has a value the command cannot take (a sweep range ``600:100``, ``--step`` and
+    ``--points`` together): exit 2, as a command-line usage error. ``option`` names the option as
+    the command line writes it (``'--speed'``); a keyword argument of the Python API has the
+    option's name with ``_`` for ``-`` (``modulus_cov`` for ``--modulus-cov``)."""
+
+    exit_code = ExitCode.USAGE
+
+    def __init__(self, message: str, option: str = ""):
+        self.option = option
+        super().__init__(message)

@@ -1,16 +1,16 @@
-"""The one list of sources fcalc cites: a calculation sheet, the validation record and the README.
+"""The one list of sources fcalc cites: a calculation sheet, the validation record and docs/theory.md.
 
 Each source has one key, printed in brackets (``[KM]``, ``[RHW]`` …) wherever it is cited: in an
 equation's source, a hand calculation's source column, a check's note or a validation case. The
 entry is the full reference (authors, title, journal or publisher, year, pages or part used); where
 the available copy of a paper does not show its journal, year or pages, the entry says so rather
-than guess. Data only, so every layer may import it. The README's References section lists the same
+than guess. Data only, so every layer may import it. docs/theory.md, References, lists the same
 entries in the same words (a test compares them).
 """
 
 from __future__ import annotations
 
-#: key -> full entry, in the order the README and a sheet's References section list them.
+#: key -> full entry, in the order docs/theory.md and a sheet's References section list them.
 REFERENCES: dict[str, str] = {
     "KM": "M.F. Krichever, S.M. Makarov, \"Application of the small-parameter method to the problem of"
           " forced vibrations of the foundation of a crank-slider mechanism\" (in Russian: «Применение"

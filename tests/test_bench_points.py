@@ -9,7 +9,7 @@ import pytest
 
 from foundation_calc.benchmarks.points import COMMANDS, POINT_COUNTS, points_scaling, scene_with_points
 from foundation_calc.scenes import load_scene, read_toml
-from foundation_calc.scenes.loading import MAX_SCENE_BYTES
+from foundation_calc.scenes.files import MAX_SCENE_BYTES
 from tests.conftest import CONFIGS
 
 SCENE = CONFIGS / "frame_saw.toml"

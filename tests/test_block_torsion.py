@@ -2,8 +2,8 @@
 
 The coefficients method (Barkan) gives K_rz = c_ψ J_z with J_z = I_x + I_y the polar second
 moment of the base and c_ψ = 1.5 c_x by default; SP 26 gives C_ψ = C_z on J_z and ξ_ψ = 0.3 ξ_z.
-Both rules are as usually quoted, not read from their printed texts (README, block foundation's
-soil); these tests pin what fcalc does with them, not that the rules are right. Lysmer's
+Both rules are as usually quoted, not read from their printed texts (docs/soil.md, "Block
+foundations"); these tests pin what fcalc does with them, not that the rules are right. Lysmer's
 torsion is pinned by Reissner-Sagoci's exact spring in tests/test_soil_independent.py.
 
 The base here: L = 4 m, B = 2 m, A = 8 m², I_x = L B³/12 = 8/3 m⁴, I_y = B L³/12 = 32/3 m⁴,

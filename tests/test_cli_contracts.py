@@ -100,7 +100,7 @@ def test_a_scene_that_lost_its_kind_line_is_invalid_even_in_a_folder(runner, tmp
 
 
 def test_the_scene_tables_are_every_table_of_every_kind():
-    from foundation_calc.scenes.loading import KINDS, SCENE_TABLES, model_for_kind
+    from foundation_calc.scenes.kinds import KINDS, SCENE_TABLES, model_for_kind
 
     for kind in KINDS:  # [project] and [require] are also what an office file (fcalc.toml) holds: no scene
         assert set(model_for_kind(kind).model_fields) - {"kind", "schema_version", "name", "project", "require"} <= SCENE_TABLES

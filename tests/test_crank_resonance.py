@@ -78,7 +78,7 @@ def test_critical_speeds_and_margins_against_reference(runner, tmp_path, config)
         margin = min(abs(omega - w0) / w0, abs(omega - w1) / w1)
         assert row["margin"] == pytest.approx(margin, rel=1e-9, abs=1e-12)
         inside = margin < row["required"]
-        # README "The resonance rule": a judged condition (the paper's, or a forcing share of at
+        # docs/resonance-rule.md: a judged condition (the paper's, or a forcing share of at
         # least 1 %) fails inside its band or within 5 %; any other condition of order 1 fails
         # within 5 % and warns inside the band; the rest never decide
         judged = row["source"] == "paper" or row["forcing_share"] >= 0.01

@@ -213,7 +213,7 @@ def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check():
     utilisations (of the data as given) to 1e-9. Some candidates fail their amplitudes only
     at a crossing (the steady state peaks there)."""
     document = DOCUMENTS["coefficients"] | {"soil": DOCUMENTS["coefficients"]["soil"] | {"modulus_range": [0.5, 1.5]}}
-    scene = parse_scene(document, "range")  # a block's soil takes a modulus range (README, soil.modulus_range)
+    scene = parse_scene(document, "range")  # a block's soil takes a modulus range (docs/soil.md, soil.modulus_range)
     batch = {key: values[:7] for key, values in _candidates(scene, 20, seed=3).items()}
     verdicts = evaluate(scene, batch)
     by_range = []

@@ -15,7 +15,7 @@ import pytest
 from typer.testing import CliRunner
 
 from foundation_calc.cli.app import app
-from foundation_calc.cli.design import LEFT_OUT
+from foundation_calc.api.design import LEFT_OUT
 from foundation_calc.output.scene_edit import edited_scene
 from foundation_calc.scenes import read_toml
 

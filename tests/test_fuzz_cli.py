@@ -27,7 +27,7 @@ from typer.testing import CliRunner
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
-from foundation_calc.scenes.loading import model_for_kind
+from foundation_calc.scenes.kinds import model_for_kind
 from tests.conftest import CONFIGS
 
 EXAMPLES = int(os.environ.get("FCALC_FUZZ_EXAMPLES", "20"))

@@ -23,7 +23,7 @@ from foundation_calc.cli.app import app
 from foundation_calc.errors import FcalcError, SceneError
 from foundation_calc.output.check_report import result_document
 from foundation_calc.scenes import load_scene, parse_scene, read_toml
-from foundation_calc.scenes.loading import MAX_SCENE_BYTES
+from foundation_calc.scenes.files import MAX_SCENE_BYTES
 from tests.conftest import CONFIGS
 
 SEEDS = {path.name: read_toml(path) for path in sorted(CONFIGS.glob("*.toml"))}

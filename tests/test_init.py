@@ -12,7 +12,7 @@ from pydantic import BaseModel
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import KINDS, load_scene, read_toml
-from foundation_calc.scenes.loading import model_for_kind
+from foundation_calc.scenes.kinds import model_for_kind
 from foundation_calc.scenes.template import example_path, scene_template
 from tests.conftest import CONFIGS
 

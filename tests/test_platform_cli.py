@@ -24,7 +24,7 @@ def _finite(node):
     return not isinstance(node, float) or math.isfinite(node)
 
 
-#: Shipped scenes that fail on purpose, one per failure mode (README, "Shipped examples").
+#: Shipped scenes that fail on purpose, one per failure mode (docs/examples.md).
 DELIBERATELY_FAILING = {"platform_thin_regime_margin.toml", "platform_translation_mode_near_speed.toml"}
 
 

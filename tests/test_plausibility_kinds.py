@@ -18,7 +18,7 @@ from pydantic import BaseModel
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
-from foundation_calc.scenes.loading import KINDS, model_for_kind
+from foundation_calc.scenes.kinds import KINDS, model_for_kind
 from foundation_calc.scenes.plausibility import INERTIA_KEYS, KEYS, Plausible
 from tests.conftest import CONFIGS
 
@@ -232,8 +232,8 @@ def test_a_slip_warns_naming_the_users_key_in_every_kind_that_has_it(runner, tmp
 
 @pytest.mark.parametrize("change", [_set("limits", "velocity_rms", 2.8), _each()], ids=["a slip", "as shipped"])
 def test_strict_fails_a_block_whose_only_finding_is_a_warning(runner, tmp_path, change):
-    """The two-machine block passes every check: a warning alone makes --strict exit 1 (README,
-    "Exit codes"), in `check` and in `resonance`; the scene as shipped has none and still passes."""
+    """The two-machine block passes every check: a warning alone makes --strict exit 1
+    (docs/exit-codes.md), in `check` and in `resonance`; the scene as shipped has none and still passes."""
     path = _write(tmp_path, TWO, change)
     warned = bool(_checked(runner, path)[1]["warnings"])
     for command in (["check", "-j", "1"], ["resonance"]):

@@ -66,7 +66,7 @@ def _inputs(tables, section: str) -> dict[str, float]:
 
 
 def _sheet(path) -> dict:
-    from foundation_calc.cli.report import SHEET_UNITS
+    from foundation_calc.api.report import SHEET_UNITS
     from foundation_calc.output.display_units import parse_units
     from foundation_calc.output.report import markdown
     from foundation_calc.output.report.documents import scene_sheet

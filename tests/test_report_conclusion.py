@@ -22,7 +22,7 @@ def _target(text: str) -> float:
 
 @pytest.mark.parametrize("critical, below", [(90.0, True), (110.0, False)])
 def test_resonance_change_moves_p_away_on_its_own_side_to_the_band(critical, below):
-    """ω = 100 rad/s, n = 1, band 20 %: the margin |ω − ω_c|/ω_c (README, "The resonance rule") at the
+    """ω = 100 rad/s, n = 1, band 20 %: the margin |ω − ω_c|/ω_c (docs/resonance-rule.md) at the
     advised critical speed is the band itself (4 figures printed: tolerance 1e-3), on the mode's side."""
     row = {"condition": "ω = p", "mode_name": "vertical", "critical_speed": {"omega": critical}, "margin": abs(100 - critical) / critical, "required": 0.2}
     text = resonance_change(row, 100.0, UNITS)

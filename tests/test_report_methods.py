@@ -159,13 +159,13 @@ def test_every_cited_source_has_a_full_reference(tmp_path):
             assert f"| [{key}] | {REFERENCES[key]}" in references, (path.name, key)
 
 
-def test_readme_lists_every_reference_in_full():
+def test_the_manual_lists_every_reference_in_full():
     from foundation_calc.references import REFERENCES
     from tests.conftest import ROOT
 
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    page = (ROOT / "docs" / "theory.md").read_text(encoding="utf-8")
     for key, entry in REFERENCES.items():
-        assert f"- **[{key}]** {entry}" in readme, key
+        assert f"- **[{key}]** {entry}" in page, key
 
 
 def test_one_key_per_source():
@@ -196,8 +196,8 @@ def test_no_column_mixes_notations(name):
             assert len({"·10" in c for c in cells}) <= 1, (t.title, cells)
 
 
-def test_platform_markdown_sheet_writes_the_figure_the_readme_promises(runner, tmp_path):
-    """README: `fcalc report configs/platform_paper_example.toml -o platform.md` (+ platform-figure1.svg)."""
+def test_platform_markdown_sheet_writes_the_figure_the_manual_promises(runner, tmp_path):
+    """docs/report.md: `fcalc report configs/platform_paper_example.toml -o platform.md` (+ platform-figure1.svg)."""
     pytest.importorskip("matplotlib")
     from foundation_calc.cli.app import app
 

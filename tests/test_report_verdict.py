@@ -118,7 +118,7 @@ def scenes(tmp_path_factory):
 
 
 def test_sheet_and_check_give_one_verdict(runner, scenes):
-    from foundation_calc.cli.report import SHEET_UNITS
+    from foundation_calc.api.report import SHEET_UNITS
     from foundation_calc.output.display_units import parse_units
     from foundation_calc.output.report import markdown
     from foundation_calc.output.report.documents import scene_sheet

@@ -1,4 +1,4 @@
-"""The resonance rule (README, "The resonance rule"): one rule, the same governing condition and
+"""The resonance rule (docs/resonance-rule.md): one rule, the same governing condition and
 margin in every command, a forcing share that decides which higher harmonics are judged, and a
 detuning band per order."""
 

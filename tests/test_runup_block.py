@@ -92,7 +92,7 @@ def solved(scene_path):
 
 def test_closed_form_and_integration_against_solve_ivp(solved):
     """Every passage's modal peak |φ_iᵀ M q| |T_P φ_i| from solve_ivp against fcalc's closed form
-    (the mode alone, high by 0 to 5 %: the README's bounds are 2.2 % at η ≤ 1e-2 and 8 % at η = 0.1;
+    (the mode alone, high by 0 to 5 %: docs/runup.md's bounds are 2.2 % at η ≤ 1e-2 and 8 % at η = 0.1;
     here η = 1.6e-3 ... 1.6e-2 with ζ = 0.011 ... 0.022, and the non-proportional dashpots couple
     the modes a little) and against fcalc's own integration (1e-3: its load is held
     linear over 1/256 of the shortest period, solve_ivp is sampled every 2e-4 s); the points'

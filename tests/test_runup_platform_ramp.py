@@ -6,7 +6,7 @@ Reference: tests/platform_linear_time.py's time-periodic 6-DOF equations M(t) d'
 (Coriolis) matrix G(t), the periodic stiffness — with the rotor driven along the ramp φ(t) =
 Ω_op t²/(2T): its acceleration φ'' = Ω_op/T adds the tangential force m l φ'' (sin φ, -cos φ) and
 its moment (the Ω' terms). Integrated by scipy's DOP853 (rtol 1e-6: its peaks move by < 1e-5 from rtol 1e-9's). The loss factor η enters
-as the README states (modal damping ζ_i = η/2 on every mode of the mean mass and stiffness),
+as docs/runup.md states (modal damping ζ_i = η/2 on every mode of the mean mass and stiffness),
 built here from the reference's own matrices. `fcalc runup`'s model leaves out G(t) and the
 periodic terms (order m/M = 1.25e-3 of the platform); its exponential integrator keeps the Ω'
 terms.

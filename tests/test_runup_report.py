@@ -56,11 +56,11 @@ def test_a_figure_says_which_displacement_it_is(runner, tmp_path):
     assert "|u|" in table and "vertical" in table
 
 
-def test_sweep_rate_definition_is_the_readmes(runner):
+def test_sweep_rate_definition_is_the_manuals(runner):
     from foundation_calc.cli.app import app
 
-    readme = (ROOT / "README.md").read_text()
-    row = next(line for line in readme.splitlines() if line.startswith("| `sweep_rate`"))
+    page = (ROOT / "docs" / "runup.md").read_text()
+    row = next(line for line in page.splitlines() if line.startswith("| `sweep_rate`"))
     definition = re.search(r"η = [^\[]+", row).group(0).strip()
     assert definition == "η = r Ω'/ω_i²"  # what solvers.numerics.runup computes
     shown = runner.invoke(app, ["runup", "--help"], env={"COLUMNS": "200"}).stdout

@@ -7,7 +7,7 @@ checks themselves (the run-up must agree with them); scipy's solve_ivp of the 6-
 constant speed, each order on its own K(nω), C(nω), run from rest into the steady state; and a
 one-degree-of-freedom oscillator whose spring and dashpot follow the forcing frequency
 continuously, integrated by solve_ivp with the speed ramp (and with a motor), against the
-tabulated soil of the run-up. The scene of most tests is the README's: the two-machine block on a
+tabulated soil of the run-up. The scene of most tests is docs/runup.md's: the two-machine block on a
 6 m × 3.5 m × 1.8 m base on medium-dense sand (V_s = 210 m/s), where the motor passes the rocking
 mode at 142.7 rad/s that the static springs put at 162.2 rad/s, above its 156 rad/s.
 """
@@ -27,7 +27,7 @@ from foundation_calc.cli.app import app
 from foundation_calc.scenes import load_scene, parse_scene, read_toml
 from tests.conftest import CONFIGS
 
-#: The README's soil under the two-machine block: medium-dense sand.
+#: docs/runup.md's soil under the two-machine block: medium-dense sand.
 SAND = {"shear_wave_velocity": 210.0, "density": 1900.0, "poisson": 0.3, "material_damping": 0.03}
 
 #: A sampled peak of a sinusoid with N samples per period is low by at most 1 - cos(π/N): the

@@ -142,7 +142,7 @@ def test_a_block_on_pais_kausel_has_six_springs_near_gazetas(runner, tmp_path):
 def test_the_torsion_rules_are_softer_than_the_half_space(ratio, nu):
     """Barkan's c_ψ = 1.5 c_x and SP 26's C_ψ = C_z against the same ratios of the half-space's
     springs (Pais & Kausel's and Gazetas', c_x the mean of both directions): 1.9-2.4 and 1.3-2.1
-    (README, block foundation's soil), so both rules make the torsion spring softer."""
+    (docs/soil.md, "Block foundations"), so both rules make the torsion spring softer."""
     from foundation_calc.scenes.block_soil import BARKAN_TORSION_RATIO, SP26_TORSION
 
     L, B = 2.0 * ratio, 2.0

@@ -58,3 +58,26 @@ def test_runup_without_a_run_time_fails_before_importing_scipy():
     code, modules = _modules("runup", str(CONFIGS / "platform_paper_example.toml"))
     assert code == 3
     assert not [m for m in modules if m.split(".")[0] == "scipy"]
+
+
+LIBRARY_PROBE = """
+import json, sys
+before = set(sys.modules)
+import foundation_calc as fc
+imported = set(sys.modules) - before
+names = {name: callable(getattr(fc, name)) for name in fc.__all__}
+sys.stdout.write(json.dumps([sorted(imported), sorted(set(sys.modules) - before), names]))
+"""
+
+
+def test_importing_the_library_is_as_cheap_as_it_was():
+    """``import foundation_calc`` loads the package alone (its API is found on first use, PEP 562);
+    resolving every public name then loads the API's modules, no solver, scipy, pydantic or rich."""
+    run = subprocess.run([sys.executable, "-c", LIBRARY_PROBE], capture_output=True, text=True, check=True)
+    imported, resolved, names = json.loads(run.stdout)
+    assert [m for m in imported if m.startswith("foundation_calc")] == ["foundation_calc"]
+    heavy = ("scipy", "numpy", "pydantic", "rich", "typer", "matplotlib", "pint")
+    assert not [m for m in imported if m.split(".")[0] in heavy]
+    assert all(names.values()) and {"load", "check", "resonance", "sweep", "design", "report", "SceneError"} <= set(names)
+    assert not [m for m in resolved if m.split(".")[0] in heavy]
+    assert not [m for m in resolved if m.startswith(("foundation_calc.solvers", "foundation_calc.checks", "foundation_calc.cli"))]

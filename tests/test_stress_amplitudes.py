@@ -50,7 +50,7 @@ def test_speeds_near_every_resonance(frame_saw, condition, critical):
     _check_sweep(report)
     if condition.source == "paper":  # judged: it governs this close (an extra one may be information)
         assert np.all(report.margin <= np.abs(OFFSETS) * (1 + 1e-6) + 1e-15)
-    # an extra condition decides only when its forcing share reaches 1 % (README, "The resonance rule")
+    # an extra condition decides only when its forcing share reaches 1 % (docs/resonance-rule.md)
     expected = {"paper": {"fail", "resonant"}, "extra": {"pass", "warn", "fail", "resonant"}}[condition.source]
     assert set(report.status) <= expected
     if condition.source == "paper" and critical == "zero_order":

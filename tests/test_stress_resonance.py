@@ -45,7 +45,7 @@ def test_speed_near_every_resonance(frame_saw, condition, offset):
     assert math.isfinite(row.margin)
     assert row.margin <= abs(offset) * (1 + 1e-6) + 1e-15
     # within 5 % a judged condition fails (the paper's, or an extra one whose forcing share reaches
-    # 1 %); an extra one without forcing is information (README, "The resonance rule")
+    # 1 %); an extra one without forcing is information (docs/resonance-rule.md)
     assert row.outcome.value == ("fail" if row.judged else "pass")
     assert row.judged or (row.condition.source == "extra" and row.information)
 

@@ -75,7 +75,7 @@ def test_bad_output_paths_are_usage_errors(runner, tmp_path, option, target, wor
 @pytest.mark.parametrize("config", ["frame_saw.toml", "compressor_vendor_loads.toml"])
 def test_the_sweep_names_the_governing_condition_as_every_command_does(runner, config):
     """At the scene's own speed the sweep's row names the governing condition in the words of
-    resonance, amplitudes and check (README, "The resonance rule"): a condition of the [[loads]]
+    resonance, amplitudes and check (docs/resonance-rule.md): a condition of the [[loads]]
     too, which the row once called "ω = p2 (loads)" where the others say "ω = p2"."""
     scene = str(CONFIGS / config)
     rpm = {"frame_saw.toml": "250", "compressor_vendor_loads.toml": "1500"}[config]

@@ -22,7 +22,7 @@ import pytest
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import KINDS, parse_scene, read_toml
-from foundation_calc.scenes.loading import model_for_kind
+from foundation_calc.scenes.kinds import model_for_kind
 from tests.conftest import CONFIGS
 
 #: A key's declared unit -> (another unit, how many of it make one of the key's unit: exact

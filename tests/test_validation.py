@@ -1,9 +1,9 @@
-"""fcalc validate: the record passes, each case can fail, and the README shows its output.
+"""fcalc validate: the record passes, each case can fail, and the manual shows its output.
 
 The cases' own evidence is their source (a printed value or an independent method); these tests
 check that the record is computed as documented: every case fails when fcalc's value moves by
 twice its tolerance, the printed references are the numbers compared, the command exits 1 on a
-failing case, the table fits 80 columns, and the README's Validation section is the output of
+failing case, the table fits 80 columns, and the manual's Validation page (docs/validation.md) is the output of
 ``fcalc validate --markdown`` (so it cannot drift).
 """
 
@@ -24,10 +24,11 @@ from rich.table import Table
 
 from foundation_calc.output import validation as out
 from foundation_calc.output.console import keep_words_whole
-from foundation_calc.validation.record import all_cases, evaluate, run_record
+from foundation_calc.validation.cases import all_cases, run_record
+from foundation_calc.validation.record import evaluate
 from foundation_calc.references import REFERENCES
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+VALIDATION_PAGE = Path(__file__).resolve().parents[1] / "docs" / "validation.md"
 FCALC = (sys.executable, "-m", "foundation_calc")
 BEGIN = "<!-- validation record: output of `fcalc validate --markdown` -->"
 END = "<!-- end of validation record -->"
@@ -78,10 +79,10 @@ def test_a_failing_case_exits_1(monkeypatch):
     from typer.testing import CliRunner
 
     from foundation_calc.cli.app import build_app
-    from foundation_calc.validation import record
+    from foundation_calc.validation import cases
 
     wrong = dataclasses.replace(all_cases()[0], reference=1.7)
-    monkeypatch.setattr(record, "all_cases", lambda: (wrong,))
+    monkeypatch.setattr(cases, "all_cases", lambda: (wrong,))
     result = CliRunner().invoke(build_app(("validate",)), ["validate"])
     assert result.exit_code == 1, result.output
     assert "FAIL" in result.output and "1 cases: 0 pass, 1 fail" in result.output
@@ -109,14 +110,14 @@ def test_the_table_fits_80_columns(results, monkeypatch):
     assert "…" not in text and "685.9425" in text and "[DR]" in text
 
 
-def test_the_readme_validation_section_is_the_command_output():
+def test_the_validation_page_is_the_command_output():
     """Also the command's exit code in CI: 0 when every case passes."""
     run = _fcalc("validate", "--markdown")
     assert run.returncode == 0, run.stdout + run.stderr
-    readme = README.read_text(encoding="utf-8")
-    found = re.search(re.escape(BEGIN) + r"\n(.*?)" + re.escape(END), readme, re.S)
-    assert found, f"README.md lacks the markers {BEGIN!r} ... {END!r}"
-    assert found.group(1) == run.stdout, "README out of date: paste the output of `fcalc validate --markdown`"
+    page = VALIDATION_PAGE.read_text(encoding="utf-8")
+    found = re.search(re.escape(BEGIN) + r"\n(.*?)" + re.escape(END), page, re.S)
+    assert found, f"docs/validation.md lacks the markers {BEGIN!r} ... {END!r}"
+    assert found.group(1) == run.stdout, "docs/validation.md out of date: paste the output of `fcalc validate --markdown`"
 
 
 def test_report_validation_appends_the_record_to_the_sheet(tmp_path, results):

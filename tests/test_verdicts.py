@@ -1,4 +1,4 @@
-"""The verdict rule shared by both scene kinds (README, "Verdicts") and advice that points the
+"""The verdict rule shared by both scene kinds (docs/checks.md, "Verdicts") and advice that points the
 right way: each piece of advice is followed in a test and the margin it names must grow."""
 
 from __future__ import annotations

@@ -46,7 +46,7 @@ def _extras(count: int) -> list[dict]:
 def rig(extra_count: int):
     """The validated scene of the paper's platform with ``extra_count`` further exciters (0, 2, 16)."""
     from foundation_calc.scenes import parse_scene
-    from foundation_calc.scenes.loading import read_toml
+    from foundation_calc.scenes.files import read_toml
     from foundation_calc.scenes.platform import DEFAULT_SCENE
 
     data = read_toml(DEFAULT_SCENE)

@@ -96,7 +96,7 @@ def _error_run(check: str, exc: BaseException) -> CheckRun:
     if isinstance(exc, SceneError):
         return CheckRun(check, "invalid", ("the scene cannot be used",), problems=tuple(exc.problems))
     if isinstance(exc, PhysicsError):
-        return CheckRun(check, "invalid", (str(exc),), problems=((exc.field, exc.detail),))
+        return CheckRun(check, "invalid", (str(exc),), problems=tuple(exc.problems))
     if isinstance(exc, FcalcError):
         return CheckRun(check, "invalid", (str(exc),), problems=(("", str(exc)),))
     text = f"{type(exc).__name__}: {exc}"
@@ -130,11 +130,11 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
 
     With ``skip_non_scenes`` (a file found in a folder) a file that is not a regular file is
     skipped unopened, and a TOML document without a kind and without any scene table
-    (:func:`~foundation_calc.scenes.loading.is_scene`) is skipped, not invalid; ``skip_note``
+    (:func:`~foundation_calc.scenes.kinds.is_scene`) is skipped, not invalid; ``skip_note``
     says why.
     """
     from foundation_calc.scenes import parse_scene, read_toml
-    from foundation_calc.scenes.loading import is_scene
+    from foundation_calc.scenes.kinds import is_scene
     from foundation_calc.scenes.project import with_office_defaults
 
     source = str(path)
@@ -150,6 +150,12 @@ def run_scene(path: str | Path, skip_non_scenes: bool = False) -> SceneRun:
         if os.environ.get("FCALC_DEBUG") and not isinstance(exc, FcalcError):
             raise
         return SceneRun(source, "", "", (replace(_error_run("load", exc), seconds=time.perf_counter() - start),))
+    return check_scene(scene, source)
+
+
+def check_scene(scene, source: str) -> SceneRun:
+    """Every check of the validated ``scene`` read from ``source`` (:func:`run_checks`), with its
+    plausibility warnings."""
     return SceneRun(source, scene.kind, scene.name, run_checks(scene), scene, warnings=tuple(scene.plausibility_warnings()))
 
 

@@ -35,6 +35,15 @@ from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome
 
+#: The caveat of applying a code's zones to a prediction: said beside every zone found, on the sheet
+#: and in ``fcalc check``'s notes.
+ZONE_CAVEAT = (
+    "ISO 10816-3's zones judge vibration measured on the machine's non-rotating parts (its bearing housings"
+    " or pedestals) in situ; fcalc applies them to the predicted motion of the foundation block at the"
+    " machine's points, a calculated rigid-body motion and not a measurement: the zone found is an"
+    " indication for design, not the acceptance the code describes"
+)
+
 #: Zone names in order of severity.
 ZONES = ("A", "B", "C", "D")
 
@@ -255,7 +264,7 @@ def point_zone(tables, velocity, displacement, acceptable: str | None) -> tuple[
 
 
 def zone_outcome(zone_name: str, acceptable: str | None) -> Outcome:
-    """The verdict of a code zone (README, "Code limits"): C and D fail; with no ``acceptable``
+    """The verdict of a code zone (docs/checks.md, "Code limits"): C and D fail; with no ``acceptable``
     zone A passes and B warns; otherwise the zones up to ``acceptable`` pass and the rest fail.
 
     >>> [zone_outcome(z, None).value for z in "ABCD"], [zone_outcome(z, "A").value for z in "AB"]
@@ -298,6 +307,6 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "TABLES", "ZONES", "CodeZone", "JudgedRow", "ZoneTable",
+__all__ = ["CODES", "TABLES", "ZONES", "ZONE_CAVEAT", "CodeZone", "JudgedRow", "ZoneTable",
            "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "point_zone", "zone", "zone_index",
            "zone_outcome", "zone_verdicts"]

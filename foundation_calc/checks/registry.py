@@ -78,6 +78,14 @@ def support_details(rows) -> tuple[str, ...]:
     return tuple(f"SUPPORT {line} ({CLAUSE})" for line in support_lines({r.point: r.support for r in rows if r.support}))
 
 
+def zone_notes(rows) -> tuple[str, ...]:
+    """``NOTE`` the caveat of a code's zones applied to predicted motions
+    (:data:`~foundation_calc.checks.codes.ZONE_CAVEAT`), when any zone ``rows`` were judged."""
+    from foundation_calc.checks.codes import ZONE_CAVEAT
+
+    return (f"NOTE {ZONE_CAVEAT}",) if rows else ()
+
+
 def _support(row) -> str:
     """`` (support ...)`` of a zone row's governing direction (:func:`~foundation_calc.checks.support.governing_support`)."""
     from foundation_calc.checks.support import governing_support
@@ -148,7 +156,7 @@ def crank_amplitudes(scene) -> Finding:
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.rows
     ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
-    details += support_details(report.code_rows)
+    details += support_details(report.code_rows) + zone_notes(report.code_rows)
     details += tuple(f"WARN {warning}" for warning in report.code_warnings)
     if report.modulus_range is not None:
         details += report.modulus_range.details()
@@ -247,7 +255,7 @@ def block_amplitudes(scene) -> Finding:
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
         for row in report.limit_rows
-    ) + support_details(report.zone_rows) + tuple(f"WARN {warning}" for warning in report.code_warnings)
+    ) + support_details(report.zone_rows) + zone_notes(report.zone_rows) + tuple(f"WARN {warning}" for warning in report.code_warnings)
     if report.amplitude_range is not None:
         details += report.amplitude_range.details()
     noted, notes = soil_notes(report.soil_validity)

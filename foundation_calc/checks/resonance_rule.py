@@ -1,4 +1,4 @@
-"""The resonance rule of every scene kind, stated once (README, "The resonance rule").
+"""The resonance rule of every scene kind, stated once (docs/resonance-rule.md).
 
 A machine running at ω excites a mode of natural frequency p through every harmonic n ω of its
 forcing; the condition n ω = p has the critical speed ω_c = p/n and the margin |ω - ω_c|/ω_c.

@@ -1,5 +1,5 @@
 """What decides a row of ``fcalc sweep``, for every scene kind: the governing resonance condition
-by the resonance rule (README, "The resonance rule"), its margin and the margin it needs, every
+by the resonance rule (docs/resonance-rule.md), its margin and the margin it needs, every
 limit the row exceeds, the row's status, and the words that say why.
 
 A kind's sweep gives the margins of its conditions at every row and the rule's

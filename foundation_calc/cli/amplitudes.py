@@ -1,4 +1,4 @@
-"""``fcalc amplitudes SCENE``: forced vibration amplitudes of a crank foundation against its limits."""
+"""``fcalc amplitudes SCENE``: forced vibration amplitudes against their limits (:func:`foundation_calc.api.amplitudes.amplitudes`)."""
 
 from __future__ import annotations
 
@@ -7,10 +7,9 @@ from typing import Annotated
 
 import typer
 
-from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import KIND_MODULES, run_kind
-from foundation_calc.cli.units import UnitsOpt, display_units
+from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.units import UnitsOpt
 
 SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
@@ -41,25 +40,29 @@ def amplitudes(
     block's office checks (bearing pressure, eccentricity, mass ratio) are listed for
     information, and fcalc check judges them.
     """
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
-    from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.output import crank_amplitudes as report_out
-    from foundation_calc.scenes import load_scene
+    from foundation_calc.api.amplitudes import amplitudes
+    from foundation_calc.api.options import display_units
+    from foundation_calc.api.resonance import KINDS
+    from foundation_calc.api.scene import scene_of
 
     shown = display_units(units)
-    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
-    warn_implausible(loaded)
-    if loaded.kind in KIND_MODULES:
-        run_kind("amplitudes", loaded, str(scene), json=json, strict=False, units=shown)
-    if exact and loaded.mechanism is None:
+    loaded = scene_of(scene, KINDS)
+    warn_implausible(loaded.model)
+    if exact and loaded.kind != "block_foundation" and loaded.model.mechanism is None:
         from foundation_calc.output.console import stderr
 
         stderr().print("note: --exact applies to a [mechanism]; the loads' steady state is already exact for the linear model")
-    report = check_scene_amplitudes(loaded, exact=exact)
+    result = amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report_out.amplitudes_document(report, loaded, str(scene)))
+        print_json(result.document)
+    elif loaded.kind == "block_foundation":
+        from foundation_calc.output.block import print_amplitudes
+
+        print_amplitudes(result.report, loaded.model, loaded.source, shown, False)
     else:
-        report_out.print_amplitudes_report(report, loaded, str(scene), shown, all_points)
-    raise typer.Exit(int(exit_code(report.outcome)))
+        from foundation_calc.output.crank_amplitudes import print_amplitudes_report
+
+        print_amplitudes_report(result.report, loaded.model, loaded.source, shown, all_points)
+    raise typer.Exit(result.exit_code)

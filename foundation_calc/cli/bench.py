@@ -123,7 +123,7 @@ def bench(
     a loop over fcalc check's path (200 candidates timed, scaled), on the first block scene and the
     first crank scene with [foundation.block].
     """
-    from foundation_calc.cli.outputs import plot_path, writing
+    from foundation_calc.api.options import plot_path, writing
 
     if plot is not None:
         plot_path(plot)

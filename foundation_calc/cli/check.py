@@ -9,7 +9,7 @@ import typer
 
 from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors
-from foundation_calc.cli.units import UnitsOpt, display_units
+from foundation_calc.cli.units import UnitsOpt
 
 PathsArg = Annotated[
     list[Path],
@@ -54,15 +54,16 @@ def _write_sheets(scenes, folder: Path, shown) -> None:
     Scenes of the same name in different folders get ``<stem>-2.pdf``, ``<stem>-3.pdf``… in the
     order they were checked.
     """
-    from foundation_calc.cli.outputs import writing
+    from foundation_calc.api.options import writing
     from foundation_calc.cli.report import command_line
+    from foundation_calc.errors import UsageError
     from foundation_calc.output.report import write_sheet
     from foundation_calc.output.report.documents import scene_sheet
 
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise typer.BadParameter(f"cannot create {folder}: {exc.strerror or exc}", param_hint="'--report-dir'") from None
+        raise UsageError(f"cannot create {folder}: {exc.strerror or exc}", "'--report-dir'") from None
     used: dict[str, int] = {}
     for scene in scenes:
         if scene.skipped or any(run.verdict in ("invalid", "internal") for run in scene.runs):
@@ -144,16 +145,17 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
     import functools
     import os
 
+    from foundation_calc.api.options import display_units
     from foundation_calc.checks.batch import SceneRun, exit_code, iter_scenes
     from foundation_calc.output import check_report
 
     shown = display_units(units)
     if junit is not None:
-        from foundation_calc.cli.outputs import writable_path
+        from foundation_calc.api.options import writable_path
 
         writable_path(junit, "--junit")
     if report_dir is not None:
-        from foundation_calc.cli.report import check_output
+        from foundation_calc.api.report import check_output
 
         check_output(report_dir / "sheet.pdf", "'--report-dir'")
     jobs = jobs or os.cpu_count() or 1
@@ -166,12 +168,12 @@ def _check(paths, json, junit, strict, units, verbose, jobs, report_dir, done: l
         raise typer.BadParameter("no scene files (*.toml) found", param_hint="PATHS")
     _report_problems(scenes)
     if junit is not None:
-        from foundation_calc.cli.outputs import writing
+        from foundation_calc.api.options import writing
 
         with writing(junit, "--junit"):
             check_report.write_junit(junit, scenes, strict)
     if report_dir is not None:
-        from foundation_calc.cli.report import SHEET_UNITS
+        from foundation_calc.api.report import SHEET_UNITS
 
         _write_sheets(scenes, report_dir, display_units(units, SHEET_UNITS))
     if not json:

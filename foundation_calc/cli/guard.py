@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 import typer
 
-from foundation_calc.errors import ExitCode, FcalcError, PhysicsError, SceneError
+from foundation_calc.errors import ExitCode, FcalcError, PhysicsError, SceneError, UsageError
 
 
 #: Exit code when stdout is closed by its reader, as for a process ended by SIGPIPE (128 + 13).
@@ -125,7 +125,7 @@ def error_document(command: str, scene: str, exc: BaseException) -> dict:
     if isinstance(exc, SceneError):
         scene, problems = exc.source, list(exc.problems)
     elif isinstance(exc, PhysicsError):
-        problems = [(exc.field, exc.detail)]
+        problems = exc.problems
     elif isinstance(exc, FcalcError):
         problems = [("", str(exc))]
     else:
@@ -170,6 +170,8 @@ def reports_errors(command: Callable) -> Callable:
                 return command(*args, **kwargs)
             except (typer.Exit, typer.Abort, typer.BadParameter, KeyboardInterrupt, BrokenPipeError):
                 raise  # typer prints a bad parameter as a usage error itself (exit 2)
+            except UsageError as exc:  # an option's value (foundation_calc.api): typer's usage error
+                raise typer.BadParameter(str(exc), param_hint=exc.option or None) from None
             except FcalcError as exc:
                 report_error(exc)
                 _print_error_document(command, args, kwargs, exc)

@@ -27,7 +27,7 @@ def init(kind: KindArg, path: PathArg = None, force: ForceOpt = False) -> None:
     temporary file in the same folder, then renamed), so an interrupted run leaves no half file;
     a FIFO or a device (--force) is written in place, never replaced.
     """
-    from foundation_calc.cli.outputs import writable_path, writing
+    from foundation_calc.api.options import writable_path, writing
     from foundation_calc.output.files import write_atomically
     from foundation_calc.scenes.template import scene_template
 

@@ -1,7 +1,5 @@
-"""The KIND argument shared by ``fcalc init`` and ``fcalc schema``, the scene-file argument of every
-command, and the commands that other scene kinds than the crank foundation bring: a command that
-meets a scene of a kind in :data:`KIND_MODULES` hands it to the function of the same name in that
-kind's CLI module."""
+"""The KIND argument shared by ``fcalc init`` and ``fcalc schema``, and the scene-file argument of
+every command."""
 
 from __future__ import annotations
 
@@ -9,19 +7,7 @@ from typing import Annotated, Any
 
 import typer
 
-from foundation_calc.scenes.loading import KINDS
-
-#: scene kind -> the CLI module whose functions ``resonance``, ``amplitudes`` ... take its scenes
-#: (``(scene, source, json=, strict=, units=) -> exit code``).
-KIND_MODULES: dict[str, str] = {"block_foundation": "foundation_calc.cli.block"}
-
-
-def run_kind(command: str, loaded, source: str, **options) -> None:
-    """Run ``command`` of a scene whose kind is in :data:`KIND_MODULES` and exit with its code."""
-    import importlib
-
-    module = importlib.import_module(KIND_MODULES[loaded.kind])
-    raise typer.Exit(int(getattr(module, command)(loaded, source, **options)))
+from foundation_calc.scenes.kinds import KINDS
 
 
 def _known_kind(kind: str) -> str:

@@ -1,4 +1,4 @@
-"""``fcalc resonance SCENE``: natural frequencies and resonance margins of a crank foundation."""
+"""``fcalc resonance SCENE``: natural frequencies and resonance margins (:func:`foundation_calc.api.resonance.resonance`)."""
 
 from __future__ import annotations
 
@@ -7,10 +7,9 @@ from typing import Annotated
 
 import typer
 
-from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import KIND_MODULES, run_kind
-from foundation_calc.cli.units import UnitsOpt, display_units
+from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.units import UnitsOpt
 
 SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
@@ -25,21 +24,24 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn); with
     [[loads]], n ω = k0, p1, p2 for every order n of the loads.
     """
-    from foundation_calc.checks.crank_resonance import check_scene_resonances
-    from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.output import crank_resonance as report_out
-    from foundation_calc.scenes import load_scene
+    from foundation_calc.api.options import display_units
+    from foundation_calc.api.resonance import KINDS, resonance
+    from foundation_calc.api.scene import scene_of
 
     shown = display_units(units)
-    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
-    warn_implausible(loaded)
-    if loaded.kind in KIND_MODULES:
-        run_kind("resonance", loaded, str(scene), json=json, strict=strict, units=shown)
-    report = check_scene_resonances(loaded)
+    loaded = scene_of(scene, KINDS)
+    warn_implausible(loaded.model)
+    result = resonance(loaded, strict=strict)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report_out.resonance_document(report, loaded, str(scene)))
+        print_json(result.document)
+    elif loaded.kind == "block_foundation":
+        from foundation_calc.output.block import print_resonance
+
+        print_resonance(result.report, loaded.model, loaded.source, shown, strict)
     else:
-        report_out.print_resonance_report(report, loaded, str(scene), shown, strict)
-    raise typer.Exit(int(exit_code(report.outcome, strict, bool(loaded.plausibility_warnings()))))
+        from foundation_calc.output.crank_resonance import print_resonance_report
+
+        print_resonance_report(result.report, loaded.model, loaded.source, shown, strict)
+    raise typer.Exit(result.exit_code)

@@ -1,4 +1,5 @@
-"""``fcalc runup SCENE``: start-up and run-down through the resonances, against a transient limit."""
+"""``fcalc runup SCENE``: start-up and run-down through the resonances, against a transient limit
+(:func:`foundation_calc.api.runup.runup`)."""
 
 from __future__ import annotations
 
@@ -7,17 +8,18 @@ from typing import Annotated, Optional
 
 import typer
 
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.api.runup import SHORTEST_TIME
 from foundation_calc.cli.guard import reports_errors, warn_implausible
+from foundation_calc.cli.kinds import scene_argument
 
 SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation, platform or block_foundation.")]
 TimeOpt = Annotated[
     Optional[float],
-    typer.Option("--time", min=1e-6, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),
+    typer.Option("--time", min=SHORTEST_TIME, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),
 ]
 DownOpt = Annotated[
     Optional[float],
-    typer.Option("--down", min=1e-6, help="Run-down time [s] from the operating speed to rest; overrides [operation] run_down_time.", show_default=False),
+    typer.Option("--down", min=SHORTEST_TIME, help="Run-down time [s] from the operating speed to rest; overrides [operation] run_down_time.", show_default=False),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 PlotOpt = Annotated[
@@ -40,28 +42,25 @@ def runup(scene: SceneArg, time: TimeOpt = None, down: DownOpt = None, json: Jso
     (exit 1) when a point moves more than [limits] transient_amplitude [m], or when the motor sticks;
     without that limit or a [drive] the rows are not judged (exit 0).
     """
-    from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.checks.runup import check_runup, run_times
+    from foundation_calc.api.options import plot_path, writing
+    from foundation_calc.api.runup import runup
+    from foundation_calc.api.scene import scene_of
     from foundation_calc.output import runup as report_out
-    from foundation_calc.cli.outputs import plot_path, writing
-    from foundation_calc.scenes import load_scene
 
     if plot is not None:
         plot_path(plot)
-    loaded = load_scene(scene, expect=("crank_foundation", "platform", "block_foundation"))
-    warn_implausible(loaded)
-    scene_up, scene_down = run_times(loaded)
-    up = time if time is not None else scene_up
-    down_time = down if down is not None else scene_down
-    report = check_runup(loaded, up, down_time)
+    loaded = scene_of(scene, ("crank_foundation", "platform", "block_foundation"))
+    warn_implausible(loaded.model)
+    result = runup(loaded, time=time, down=down)
+    report = result.report
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(report_out.runup_document(report, loaded, str(scene)))
+        print_json(result.document)
     else:
-        report_out.print_runup_report(report, loaded, str(scene))
+        report_out.print_runup_report(report, loaded.model, loaded.source)
     report_out.print_warnings(report)
     if plot is not None:
         with writing(plot, "--plot"):
-            report_out.plot_runup(report, plot, loaded.name or str(scene), loaded.limits.transient_amplitude)
-    raise typer.Exit(int(exit_code(report.outcome)))
+            report_out.plot_runup(report, plot, loaded.name or loaded.source, loaded.model.limits.transient_amplitude)
+    raise typer.Exit(result.exit_code)

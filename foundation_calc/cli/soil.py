@@ -1,4 +1,5 @@
-"""``fcalc soil SCENE``: springs, damping and frequencies of every soil method the scene allows."""
+"""``fcalc soil SCENE``: springs, damping and frequencies of every soil method the scene allows
+(:func:`foundation_calc.api.soil.soil`)."""
 
 from __future__ import annotations
 
@@ -7,21 +8,23 @@ from typing import Annotated
 
 import typer
 
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.api.soil import RANGES
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import KIND_MODULES, run_kind
+from foundation_calc.cli.kinds import scene_argument
 
 SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 SampleOpt = Annotated[int, typer.Option(
-    "--sample", min=0, max=10_000_000, metavar="N",
+    "--sample", min=RANGES["sample"][0], max=RANGES["sample"][1], metavar="N",
     help="Also sample the uncertain soil N times (lognormal stiffness factor, median 1) and report percentiles"
     " and the probability that each check fails (0: no sample).")]
 ModulusCovOpt = Annotated[float, typer.Option(
-    "--modulus-cov", min=0.0, max=2.0, help="Coefficient of variation of the soil's stiffness in the sample [-].")]
+    "--modulus-cov", min=RANGES["modulus_cov"][0], max=RANGES["modulus_cov"][1],
+    help="Coefficient of variation of the soil's stiffness in the sample [-].")]
 SpeedCovOpt = Annotated[float, typer.Option(
-    "--speed-cov", min=0.0, max=0.5, help="Coefficient of variation of the speed in the sample (normal, mean as given) [-].")]
-SeedOpt = Annotated[int, typer.Option("--seed", min=0, help="Seed of the sample's random numbers.")]
+    "--speed-cov", min=RANGES["speed_cov"][0], max=RANGES["speed_cov"][1],
+    help="Coefficient of variation of the speed in the sample (normal, mean as given) [-].")]
+SeedOpt = Annotated[int, typer.Option("--seed", min=RANGES["seed"][0], help="Seed of the sample's random numbers.")]
 
 
 @reports_errors
@@ -38,30 +41,26 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
     displacements of C are reported with the probability that each check fails. It judges
     nothing: exit 0 for any valid scene.
     """
-    from foundation_calc.checks.soil_methods import compare_soil_methods
+    from foundation_calc.api.resonance import KINDS
+    from foundation_calc.api.scene import scene_of
+    from foundation_calc.api.soil import soil
     from foundation_calc.output import soil as soil_out
-    from foundation_calc.scenes import load_scene
 
-    loaded = load_scene(scene, expect=("crank_foundation", *KIND_MODULES))
-    warn_implausible(loaded)
-    if loaded.kind in KIND_MODULES:
-        run_kind("soil", loaded, str(scene), json=json, sample=sample, modulus_cov=modulus_cov, speed_cov=speed_cov, seed=seed)
-    comparison = compare_soil_methods(loaded)
-    drawn = None
-    if sample and loaded.mechanism is None:
-        raise typer.BadParameter(
-            "samples the crank mechanism's closed forms; this scene gives the machine by its [[loads]] only",
-            param_hint="'--sample'",
-        )
-    if sample:
-        from foundation_calc.checks.soil_sample import sample_scene
-
-        drawn = sample_scene(loaded, sample, modulus_cov, speed_cov, seed)
+    loaded = scene_of(scene, KINDS)
+    warn_implausible(loaded.model)
+    result = soil(loaded, sample=sample, modulus_cov=modulus_cov, speed_cov=speed_cov, seed=seed)
     if json:
         from foundation_calc.output.console import print_json
 
-        print_json(soil_out.soil_document(comparison, loaded, str(scene)) | {"sample": soil_out.sample_document(drawn)})
+        print_json(result.document)
+        raise typer.Exit(result.exit_code)
+    report, drawn = result.report
+    if loaded.kind == "block_foundation":
+        from foundation_calc.output.block_soil import print_soil
+
+        print_soil(report[0], loaded.model, loaded.source, report[1])
     else:
-        soil_out.print_soil_report(comparison, loaded, str(scene))
-        if drawn is not None:
-            soil_out.print_sample(drawn)
+        soil_out.print_soil_report(report, loaded.model, loaded.source)
+    if drawn is not None:
+        soil_out.print_sample(drawn)
+    raise typer.Exit(result.exit_code)

@@ -1,4 +1,5 @@
-"""The ``--units`` option shared by every command that prints tables."""
+"""The ``--units`` option shared by every command that prints tables (read by
+:func:`foundation_calc.api.options.display_units`)."""
 
 from __future__ import annotations
 
@@ -17,14 +18,3 @@ UnitsOpt = Annotated[
         show_default=False,
     ),
 ]
-
-
-def display_units(tokens: list[str] | None, defaults: tuple[str, ...] = ()):
-    """The :class:`~foundation_calc.output.display_units.DisplayUnits` chosen by ``--units``;
-    ``defaults`` (unit names) hold for the quantities it does not name."""
-    from foundation_calc.output.display_units import parse_units
-
-    try:
-        return parse_units(tokens or [], defaults)
-    except ValueError as exc:
-        raise typer.BadParameter(str(exc), param_hint="'--units'") from None

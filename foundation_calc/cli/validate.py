@@ -10,7 +10,7 @@ from foundation_calc.cli.guard import reports_errors
 
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document instead of the table.")]
 MarkdownOpt = Annotated[
-    bool, typer.Option("--markdown", help="Print the record as Markdown (the README's Validation section).")
+    bool, typer.Option("--markdown", help="Print the record as Markdown (docs/validation.md).")
 ]
 
 
@@ -21,7 +21,7 @@ def validate(json: JsonOpt = False, markdown: MarkdownOpt = False) -> None:
     printed last digit, or the stated accuracy of the method). Exit 1 if any case fails.
     """
     from foundation_calc.output import validation as out
-    from foundation_calc.validation.record import run_record
+    from foundation_calc.validation.cases import run_record
 
     if json and markdown:
         raise typer.BadParameter("--json and --markdown exclude each other", param_hint="--markdown")

@@ -177,7 +177,7 @@ def print_resonance_report(
     out.print(
         f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
         f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
-        " The rule: README, \"The resonance rule\".", soft_wrap=True,
+        " The rule: docs/resonance-rule.md.", soft_wrap=True,
     )
     print_soil_validity(report.soil_validity)
     out.print(summary_line(report, strict, units), soft_wrap=True)

@@ -66,7 +66,7 @@ def _motor_document(report: RunupReport, machine: str) -> dict | None:
 #: What a run-up figure of a point is (tables, JSON ``displacement``).
 DISPLACEMENT = "|u|: magnitude of the point's displacement vector ({}), largest over time"
 
-#: What a run on a frequency-dependent soil is (tables; the README's "Start-up on a frequency-dependent soil").
+#: What a run on a frequency-dependent soil is (tables; docs/runup.md, "On a frequency-dependent soil").
 SOIL_NOTE = (
     "frequency-dependent soil: the modes are fcalc resonance's, each on the springs and dashpots at its own"
     " frequency; each harmonic r ω is integrated on the springs and dashpots at its own frequency r Ω as the"

@@ -237,7 +237,7 @@ def _print_footer(report, units) -> None:
     limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
     out.print(
         f"limits (x, y of C and of every point): {limits}; \\[limits] detuning = {bands_text(report.detuning)}"
-        " (README, \"The resonance rule\")", soft_wrap=True
+        " (docs/resonance-rule.md)", soft_wrap=True
     )
 
 

@@ -1,4 +1,4 @@
-"""The validation record for people (rich table, Markdown for the README) and scripts (JSON).
+"""The validation record for people (rich table, Markdown for docs/validation.md) and scripts (JSON).
 
 Numbers: a printed reference as the source prints it; computed values to 7 significant figures;
 differences and tolerances to 2, in the case's unit, or in % for a relative case; a difference
@@ -105,7 +105,7 @@ def _cell(text: str) -> str:
 
 
 def record_markdown(results: Sequence[CaseResult]) -> str:
-    """The record as a Markdown table and its references (the README's Validation section)."""
+    """The record as a Markdown table and its references (docs/validation.md)."""
     lines = [
         "| # | case | source | reference | fcalc | difference | tolerance | why this tolerance | verdict |",
         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |",

@@ -4,6 +4,8 @@
 the model module of a kind is imported only when a file of that kind is read.
 """
 
-from foundation_calc.scenes.loading import KINDS, load_scene, parse_scene, read_toml
+from foundation_calc.scenes.files import read_toml
+from foundation_calc.scenes.kinds import KINDS
+from foundation_calc.scenes.loading import load_scene, parse_scene
 
 __all__ = ["KINDS", "load_scene", "parse_scene", "read_toml"]

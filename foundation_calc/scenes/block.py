@@ -1,7 +1,7 @@
 """Scene model of kind ``block_foundation``: a rigid block in six degrees of freedom carrying
 several machines, each at its own speed, on springs and dashpots at its base.
 
-Axes (README, "Block foundation"): origin O at the centre of the block's base, at base level;
+Axes (docs/block-foundation.md): origin O at the centre of the block's base, at base level;
 x along the block's length, y along its width, z up; rotations right-handed about x, y, z.
 """
 
@@ -183,7 +183,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         ------
         PhysicsError
             when the block tips over: a rocking spring at O no stiffer than the weight's
-            overturning moment W z_G (README "Block foundation"), naming the likely culprit, an
+            overturning moment W z_G (docs/block-foundation.md), naming the likely culprit, an
             implausible input the springs or the weight depend on (a modulus typed in MPa, a block
             in mm), or else the key that sets the rocking springs.
         """

@@ -1,6 +1,6 @@
 """Parts of a ``block_foundation`` scene: the block, its machines and their loads, its points.
 
-Axes (README, "Block foundation"): origin O at the centre of the block's base, at base level;
+Axes (docs/block-foundation.md): origin O at the centre of the block's base, at base level;
 x along the block's length, y along its width, z up. Rotations are right-handed about x, y, z.
 """
 

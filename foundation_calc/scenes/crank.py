@@ -1,6 +1,6 @@
 """Scene model of kind ``crank_foundation``: a block foundation carrying a crank-slider machine.
 
-Keys and units follow the scene contract of Krichever & Makarov's problem (see README). All
+Keys and units follow the scene contract of Krichever & Makarov's problem (see docs/crank-foundation.md). All
 values are SI. Rules that involve two fields (l' < l, r < l, mu <= 0.5) are checked here so the
 message names the field to change.
 """
@@ -431,7 +431,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
 
     def require_stable_rocking(self, springs: SoilSprings) -> None:
         """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 does not exceed
-        the weight's overturning moment P h (paper (3.4); README "The model").
+        the weight's overturning moment P h (paper (3.4); docs/crank-foundation.md, "The model").
 
         The message names the likely culprit, an implausible soil or foundation value
         (:meth:`plausibility_findings`: a modulus in MPa for Pa, a block height in mm), or else

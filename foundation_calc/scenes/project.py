@@ -116,7 +116,8 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
     path = office_file(scene_path)
     if path is None:
         return document
-    from foundation_calc.scenes.loading import read_toml, validate
+    from foundation_calc.scenes.files import read_toml
+    from foundation_calc.scenes.validation import validate
 
     office = read_toml(path)
     unknown = sorted(set(office) - {"project", "require"})

@@ -12,7 +12,7 @@ mass while the scene is typed; every property carries the field's ``"symbol [uni
 from __future__ import annotations
 
 from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION
-from foundation_calc.scenes.loading import model_for_kind
+from foundation_calc.scenes.kinds import model_for_kind
 from foundation_calc.scenes.unit_strings import WRITTEN_SCHEMA, key_units
 
 JSON_SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"

@@ -27,7 +27,8 @@ from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from foundation_calc.scenes.common import SpeedFields
-from foundation_calc.scenes.loading import model_for_kind, parse_scene
+from foundation_calc.scenes.kinds import model_for_kind
+from foundation_calc.scenes.loading import parse_scene
 from foundation_calc.scenes.messages import allowed_range
 from foundation_calc.units import speed_triplet
 
@@ -128,7 +129,7 @@ def scene_template(kind: str) -> str:
         f"# Scene of kind {kind!r} for foundation_calc (fcalc), started from the shipped example.",
         "# Every key is listed with its symbol, unit [SI] and allowed range; commented-out keys",
         "# are optional or alternatives. Check it with `fcalc check FILE`; editor validation:",
-        f"# `fcalc schema {kind} > {kind}.schema.json` (see README).",
+        f"# `fcalc schema {kind} > {kind}.schema.json` (see docs/commands.md).",
         "# A number may be written as text with its unit, converted to the key's unit [in brackets]",
         "# (a bare number is in the key's unit), e.g.",
         '#   length = "6000 mm"   density = "2.4 t/m^3"   speed_rpm = "10 Hz"   phase = "90 deg"',

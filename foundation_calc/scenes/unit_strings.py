@@ -93,7 +93,7 @@ def unit_strings_converted(kind: str, document: dict[str, Any]) -> tuple[dict, d
     dotted key, and ``(dotted key, message)`` of each value that does not convert (left as
     written). A document of bare numbers comes back unchanged and pint is not imported.
     """
-    from foundation_calc.scenes.loading import model_for_kind
+    from foundation_calc.scenes.kinds import model_for_kind
 
     written: dict[str, Any] = {}
     problems: list[tuple[str, str]] = []

@@ -4,11 +4,11 @@
   block's mass and stiffness matrices;
 - the corrected first approximation, Eqs. (4.11)-(4.14), against the exact T-periodic solution
   of the full nonlinear equations (harmonic balance converged below 1e-10), with the accuracy
-  the README states for it as the tolerance;
+  the manual states for it as the tolerance;
 - the platform design, Eqs. (3.8)-(3.21), against the 6-DOF linear model solved by harmonic
   balance: the design promises a pure translation on a circle of radius u.
 
-The crank foundation is the frame saw of the README (block 100 t on c_z = 7e7 N/m³, 250 rpm,
+The crank foundation is the frame saw of configs/frame_saw.toml (block 100 t on c_z = 7e7 N/m³, 250 rpm,
 μ = 0.0148), given here in full so that the record does not move with the shipped examples.
 """
 

@@ -125,17 +125,4 @@ def evaluate(case: Case) -> CaseResult:
     return CaseResult(case, reference, value, difference(reference, value, case.relative))
 
 
-def all_cases() -> tuple[Case, ...]:
-    """Every case of the record: published values first, then independent methods."""
-    from foundation_calc.validation import independent, published
-
-    return (*published.CASES, *independent.CASES)
-
-
-def run_record(cases: Sequence[Case] | None = None) -> list[CaseResult]:
-    """Evaluate ``cases`` (all of them by default), in order."""
-    return [evaluate(case) for case in (all_cases() if cases is None else cases)]
-
-
-__all__ = ["HALF_DIGIT", "Case", "CaseResult", "Value", "all_cases", "difference", "evaluate", "half_digit",
-           "printed_case", "run_record"]
+__all__ = ["HALF_DIGIT", "Case", "CaseResult", "Value", "difference", "evaluate", "half_digit", "printed_case"]

@@ -35,16 +35,16 @@ OVER_RANGE = " (over the soil's modulus range)"
 
 
 def _judged(scene, L, B, H, factor, mech, harmonics, resonance: bool, amplitudes: bool, chunk: int):
-    """``_physics`` of elements (block, factor), ``chunk`` at a time: the _Verdicts' arrays and,
+    """``judge_physics`` of elements (block, factor), ``chunk`` at a time: the Verdicts' arrays and,
     with ``resonance``, each element's zero-order frequencies, judgement and conditions."""
-    from foundation_calc.checks.design.crank import _physics, _Verdicts
+    from foundation_calc.checks.design.crank_physics import Verdicts, judge_physics
 
     outs, zero, judged, status = [], [], [], []
     conditions = ()
     for i in range(0, len(L), chunk):
         part = slice(i, i + chunk)
-        out = _Verdicts()
-        _, found = _physics(out, scene, L[part], B[part], H[part], mech, harmonics, factor[part], resonance, amplitudes)
+        out = Verdicts()
+        _, found = judge_physics(out, scene, L[part], B[part], H[part], mech, harmonics, factor[part], resonance, amplitudes)
         outs.append(out)
         if found is not None:
             frequencies, _, verdict, conditions = found
@@ -74,7 +74,7 @@ def _worst(owner, outcome, utilisation, governing, n):
 def _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, omega):
     """(candidate index, factor) of every crossing of a listed condition between two grid
     factors (module docstring), found by bisection in log(factor)."""
-    from foundation_calc.checks.design.crank import CandidateDesigns, _frequencies
+    from foundation_calc.checks.design.crank_physics import CandidateDesigns, candidate_frequencies
     from foundation_calc.checks.resonance_rule import INFORMATION
 
     n, f = len(L), len(grid)
@@ -93,7 +93,7 @@ def _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, o
     for _ in range(CROSSING_STEPS if len(who) else 0):
         mid = 0.5 * (low + high)
         designs = CandidateDesigns(scene, L[who], B[who], H[who], np.exp(mid))
-        frequencies = _frequencies(designs)[0]
+        frequencies = candidate_frequencies(designs)[0]
         value = np.stack([getattr(frequencies, m) * np.ones(len(who)) for m in ("k0", "p1", "p2")], -1)
         same = np.sign(value[np.arange(len(who)), mode[c]] / order[c] - omega) == sign
         low, high = np.where(same, mid, low), np.where(same, high, mid)

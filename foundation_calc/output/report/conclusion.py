@@ -3,7 +3,7 @@
 Read from the check results (the JSON documents of ``fcalc check --json``), never from the
 sheet's text:
 
-- a resonance condition n ω = p that fails or warns (README, "The resonance rule": margin
+- a resonance condition n ω = p that fails or warns (docs/resonance-rule.md: margin
   |ω − ω_c|/ω_c with ω_c = p/n, needed d = its band, at least
   :data:`~foundation_calc.checks.outcomes.RESONANCE_FAIL_MARGIN`): with the mode below the forcing
   (ω_c < ω) p must fall to n ω/(1 + d), a softer support or a heavier block; with the mode above,

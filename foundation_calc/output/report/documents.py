@@ -106,6 +106,10 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
 
         report = next(run.report for run in runs if run.check == "runup")
         sections.append(runup_section(documents["runup"], report, loaded, units, figures))
+    from foundation_calc.output.report.validity_section import validity_section
+
+    validity = validity_section(loaded, documents)
+    sections += [validity] if validity is not None else []
     sections.append(checks_section(runs, documents, loaded, units))
     if cited(sections):  # a sheet that cites nothing has no empty References table
         sections.append(references_section(sections))

@@ -1,7 +1,7 @@
 """The equations a calculation sheet quotes, with their sources and fcalc's corrections of the print.
 
 Sources: [KM] Krichever & Makarov, foundation of a crank mechanism; [BC] Bolotnik, Gusev, Nguyen,
-Kholmin, Chernousko, vibrating platform. The corrections are those listed in the README section
+Kholmin, Chernousko, vibrating platform. The corrections are those listed in docs/theory.md, section
 "Corrections to the sources".
 """
 

@@ -14,7 +14,7 @@ modes), so the number behind every judged harmonic and critical speed is on the 
 from __future__ import annotations
 
 from foundation_calc.output.report.handcalc import Chain, Columns
-from foundation_calc.output.report.methods import frequency_givens, frequency_steps
+from foundation_calc.output.report.crank_frequencies import frequency_givens, frequency_steps
 from foundation_calc.output.report.soil_methods import gazetas_at
 
 #: At most this many harmonics are shown side by side (the page's width).

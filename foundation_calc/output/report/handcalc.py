@@ -42,6 +42,7 @@ SYMBOLS = {
     "xi_y": "ξ_y", "xi_rx": "ξ_rx", "xi_ry": "ξ_ry", "xi_rz": "ξ_rz", "xi_rzw": "ξ_rz(ω)", "K_rzw": "K_rz(ω)", "C_rzw": "C_rz(ω)",
     "C_xw": "C_x(ω)", "C_yw": "C_y(ω)", "C_rxw": "C_rx(ω)", "C_ryw": "C_ry(ω)", "eta_t": "η_t", "K_t0": "K_t,s", "r0t": "r0θ",
     "r0x": "r0ψx", "r0y": "r0ψy", "k_psi": "k_ψ", "c_psi": "c_ψ", "k_xi": "k_ξ", "c_zsp": "c_z,SP",
+    "Omega_dot": "Ω̇", "Omega_dot_r": "Ω̇_r", "Delta": "Δ", "beta": "β",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")

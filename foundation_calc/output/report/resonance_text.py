@@ -1,6 +1,6 @@
 """The resonance rule as a sheet states it: the definitions that make its margins reproducible.
 
-Source: README, "The resonance rule" (:mod:`~foundation_calc.checks.resonance_rule`,
+Source: docs/resonance-rule.md (:mod:`~foundation_calc.checks.resonance_rule`,
 :func:`~foundation_calc.solvers.crank.resonance.condition_margin`). A condition n ω = p has the
 critical speed ω_c = p/n and the margin |ω − ω_c|/ω_c = |nω − p|/p (relative to the natural
 frequency, not to the speed); a crank foundation has two estimates of p (the paper's zero-order
@@ -67,7 +67,7 @@ def crank_rule_paragraph(res: dict, convert, unit: str) -> str:
             f" {figure(convert(c), 4)}|/{figure(convert(c), 4)} = {percent(governing['margin'])}"
             f" (needs {percent(needed)})."
         )
-    text.append("README, \"The resonance rule\".")
+    text.append("docs/resonance-rule.md.")
     return " ".join(text)
 
 

@@ -22,7 +22,7 @@ from foundation_calc.output.report.handcalc import Chain, Columns
 LE = "[Le]"
 
 
-def _structures(scene) -> dict:
+def runup_structures(scene) -> dict:
     """Run key prefix ("" or ":MACHINE") -> (structure, point names, operating speed)."""
     from foundation_calc.checks.runup import _block_structures, _structure
 
@@ -91,7 +91,7 @@ def runup_columns(scene, runup: dict) -> list[Columns]:
     from foundation_calc.checks.runup import run_title
     from foundation_calc.output.runup import mode_label
 
-    structures = _structures(scene)
+    structures = runup_structures(scene)
     out = []
     for key, run in runup["runs"].items():
         if not run["passages"]:
@@ -111,4 +111,4 @@ def runup_columns(scene, runup: dict) -> list[Columns]:
     return out
 
 
-__all__ = ["passage_chain", "runup_columns", "sheet_modes"]
+__all__ = ["passage_chain", "runup_columns", "runup_structures", "sheet_modes"]

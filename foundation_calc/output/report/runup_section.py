@@ -96,7 +96,12 @@ def envelope_figure(report, name: str, limit: float | None) -> Figure:
 
 def runup_section(doc: dict, report, scene, units: DisplayUnits, figures: bool = True) -> Section:
     """Passages of every run, the motor's start-up and (with ``figures``) the envelope plot."""
-    blocks: list = [_passages(key, run, units) for key, run in doc["runs"].items()]
+    from foundation_calc.output.report.runup_governing import governing_lines
+
+    lines = governing_lines(scene, doc, units)
+    blocks: list = []
+    for key, run in doc["runs"].items():
+        blocks += [_passages(key, run, units), *([lines[key]] if key in lines else [])]
     blocks.append(Paragraph(CLOSED_FORM_NOTE))
     blocks += [_motor(motor, units) for motor in motor_documents(doc)]
     blocks += [Paragraph(f"Warning: {w}") for w in doc["warnings"]]

@@ -30,7 +30,7 @@ def limit_source(scene, key: str) -> str:
 
 
 def resonance_verdict(row: dict) -> str:
-    """What decides a resonance row (README, "The resonance rule"): its verdict when the condition is
+    """What decides a resonance row (docs/resonance-rule.md): its verdict when the condition is
     judged or sets a warning or failure; else "information" (inside its band, but its harmonic's
     forcing share is under 1 %) or "not judged". A row of neither kind is never a PASS beside a
     margin smaller than its band."""

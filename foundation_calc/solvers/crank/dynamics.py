@@ -1,7 +1,7 @@
 """Exact equations of motion of a block foundation carrying a crank-slider mechanism.
 
 Source: Krichever & Makarov [1]_, Eqs. (3.1)-(3.7), re-derived by Lagrange's equations (the
-derivation is checked against sympy in the tests). Conventions (README, "Model"): x horizontal,
+derivation is checked against sympy in the tests). Conventions (docs/crank-foundation.md, "The model"): x horizontal,
 y vertical positive downward, origin at the static equilibrium of C; θ turns +x toward +y,
 R(θ) = [[cos θ, -sin θ], [sin θ, cos θ]], J = [[0, -1], [1, 0]]. Body axes (u, v) through C.
 The rod's centre of mass C1 sits at body position p(φ), φ = ωt::

@@ -1,7 +1,7 @@
 """Corrected first approximation of the forced vibration of a crank-mechanism foundation, damped.
 
 Source: Krichever & Makarov [1]_, Eqs. (4.11)-(4.14), with the corrections of the project note
-(README, "Corrections to the paper"):
+(docs/theory.md, "Corrections to the sources"):
 
 - (1.6): the series of the rod's angular acceleration has the wrong sign; the rod couple enters
   with ``+κ ε_rod``, ε_rod = +λω²(1-λ²)[(1 + 9λ²/8) sin φ - (3/8)λ² sin 3φ] + O(λ⁵).

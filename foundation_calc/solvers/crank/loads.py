@@ -3,7 +3,7 @@
 Most vendors give a machine's unbalanced forces and moments per order of the speed, not the
 geometry of its mechanism. Each load of order n acts on the block at a point (u, H) from its
 centre of mass C (u in +x, H above C) and varies as ``F cos(nωt + φ)``. Its generalised forces
-about C, by virtual work on the point's displacement (x + H θ, y + u θ) (README, "Model"), are
+about C, by virtual work on the point's displacement (x + H θ, y + u θ) (docs/crank-foundation.md, "The model"), are
 
     Q_x = F_x,   Q_y = F_y,   Q_θ = H F_x + u F_y + M                                    (1)
 

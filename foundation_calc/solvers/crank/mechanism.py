@@ -1,6 +1,6 @@
 """Crank-slider mechanism of Krichever & Makarov [1]_: rod lumping and time averages.
 
-Conventions (README, "Model"): body axes u (horizontal) and v (vertical, positive downward)
+Conventions (docs/crank-foundation.md, "The model"): body axes u (horizontal) and v (vertical, positive downward)
 through the block's centre of mass C; the crank axis A is at (0, -a); the crank angle φ = ωt is
 measured from the downward vertical; crank pin M' = A + r(-sin φ, cos φ); slider pin
 M'' = A + (0, s) with s = r cos φ + l cos ψ and sin ψ = λ sin φ, λ = r/l.

@@ -14,7 +14,7 @@ The mechanism's exact forcing -r0(φ) is expanded in harmonics n = 0 ... N of th
 φ(t) = ∫Ω dt. Each harmonic splits into a part ∝ Ω² (the mechanism's inertia) and a
 constant part (the weight of rod and slider), found from the forcing at ω and 2ω; the split is
 checked at 3ω. Points: the centre of mass C and the scene's points, displaced (x + H θ, y + u θ)
-to first order (README, "Model").
+to first order (docs/crank-foundation.md, "The model").
 
 A machine given by its vendor's loads (``[[loads]]``, :mod:`~foundation_calc.solvers.crank.loads`)
 adds each load F cos(nφ + φ_F) as an unbalanced force: its amplitude grows as (Ω/ω)², the vendor's

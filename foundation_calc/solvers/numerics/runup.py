@@ -37,7 +37,7 @@ moves away from p_j at the sweep rate; with the radiation damping of these soils
 0.6) the ringing is gone within a few periods, while the frequency has moved by ζ p_j at most.
 The alternative, modal superposition with each mode on its own K(p_j), C(p_j) (the approximate
 modal analysis of structures on springs and dashpots, Roesset, Whitman & Dobry, J. Struct. Div.
-ASCE 99(3), 1973), gets the ringing right but not the steady state: on the README's two-machine
+ASCE 99(3), 1973), gets the ringing right but not the steady state: on docs/runup.md's two-machine
 block on Gazetas' soil its steady peaks at the operating speeds differ from the frequency-domain
 solution by 1-8 % and, along one direction, by up to 23 % (its modes, each from a different K,
 are not orthogonal).

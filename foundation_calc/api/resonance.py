@@ -1,0 +1,50 @@
+"""``fc.resonance``: natural frequencies and resonance margins (``fcalc resonance``)."""
+
+from __future__ import annotations
+
+from foundation_calc.api.result import Result, command_result
+from foundation_calc.api.scene import scene_of
+
+#: The kinds ``resonance`` and ``amplitudes`` take.
+KINDS = ("crank_foundation", "block_foundation")
+
+
+def resonance(scene, *, strict: bool = False) -> Result:
+    """Natural frequencies of the foundation and the margin of every forcing order from them.
+
+    Parameters
+    ----------
+    scene : Scene, path or mapping
+        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`).
+    strict : bool
+        ``--strict``: a warning (an extra resonance, a plausibility warning) fails (exit code 1).
+
+    Returns
+    -------
+    Result
+        ``to_dict()`` is the document of ``fcalc resonance --json``; ``report`` the checks'
+        resonance report.
+
+    Raises
+    ------
+    SceneError
+        An invalid scene, or a scene of another kind.
+    """
+    from foundation_calc.checks.outcomes import exit_code
+
+    loaded = scene_of(scene, KINDS)
+    model = loaded.model
+    if loaded.kind == "block_foundation":
+        from foundation_calc.checks.block import check_block
+        from foundation_calc.output.block import resonance_document
+
+        report = check_block(model)
+        outcome = report.resonance_outcome
+    else:
+        from foundation_calc.checks.crank_resonance import check_scene_resonances
+        from foundation_calc.output.crank_resonance import resonance_document
+
+        report = check_scene_resonances(model)
+        outcome = report.outcome
+    code = exit_code(outcome, strict, bool(model.plausibility_warnings()))
+    return command_result("resonance", resonance_document(report, model, loaded.source), code, loaded, report)
