@@ -40,8 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.machines.crank_mechanism import rod_angle_cosine
+from foundation_calc.solvers.crank.mechanism import CrankDesign, rod_angle_cosine
 
 
 @dataclass(frozen=True)

@@ -11,10 +11,9 @@ top dead centre (pin towards the slider) is φ_c = ωt + α (α the throw's ``cr
     rod axis   e   = (M'' - M')/l = cos ψ s - λ sin φ_c t
     rod's centre of mass C1 = M' + l' e
 
-d(cos ψ)/dφ = -λ² sin φ cos φ / cos ψ and d²(cos ψ)/dφ² = -λ² (cos 2φ + λ² sin⁴ φ)/cos³ ψ, as
-:func:`foundation_calc.solvers.crank.dynamics.mechanism_motion`. The rod (mass m, radius of
-gyration ρ about every axis through C1 normal to it, none about its length) is dynamically the
-two point masses m/2 at C1 ± ρ e (same mass, centre of mass and inertia tensor m ρ² (I - e eᵀ));
+cos ψ and its derivatives by :func:`foundation_calc.solvers.crank.mechanism.rod_angle_cosine` (the
+crank foundation's). The rod (mass m, radius of gyration ρ about every axis through C1 normal to
+it, none about its length) is dynamically the two point masses m/2 at C1 ± ρ e (same mass, centre of mass and inertia tensor m ρ² (I - e eᵀ));
 the slider is a point mass m1 at M''; an optional rotating unbalance is a point mass m_r at
 A + r_r (cos(φ_c + β) s + sin(φ_c + β) t). So the mechanism is point masses m_k at body
 positions r_k(φ), φ = ωt, moving at r_k' = ω dr_k/dφ, r_k'' = ω² d²r_k/dφ².
@@ -53,6 +52,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.solvers.crank.mechanism import rod_angle_cosine
 from foundation_calc.solvers.numerics.trig_series import phases
 from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matrix, parallel_axis, skews
 
@@ -148,18 +148,6 @@ class PointMasses:
     r: np.ndarray
     r1: np.ndarray
     r2: np.ndarray
-
-
-def rod_angle_cosine(phi, lam):
-    """cos ψ and its first two derivatives with respect to φ, with sin ψ = λ sin φ (module
-    docstring), each shaped as ``phi`` [-, 1/rad, 1/rad²].
-
-    >>> [round(float(x), 12) for x in rod_angle_cosine(0.0, 0.25)]
-    [1.0, -0.0, -0.0625]
-    """
-    s, co = np.sin(phi), np.cos(phi)
-    c = np.sqrt(1.0 - lam * lam * s * s)
-    return c, -lam * lam * s * co / c, -lam * lam * (np.cos(2.0 * phi) + lam * lam * s**4) / c**3
 
 
 def _along(a, b, s, t):
@@ -309,7 +297,6 @@ __all__ = [
     "mean_mass_properties",
     "mechanism_samples",
     "point_masses",
-    "rod_angle_cosine",
     "samples_for",
     "throw_masses",
 ]
