@@ -15,8 +15,9 @@ cos ψ and its derivatives by :func:`foundation_calc.solvers.crank.mechanism.rod
 crank foundation's). The rod (mass m, radius of gyration ρ about every axis through C1 normal to
 it, none about its length) is dynamically the two point masses m/2 at C1 ± ρ e (same mass, centre
 of mass and inertia tensor m ρ² (I - e eᵀ)); the slider is a point mass m1 at M''; an optional
-rotating unbalance is a point mass m_r at A + r_r (cos(φ_c + β) s + sin(φ_c + β) t). So the mechanism is point masses m_k at body
-positions r_k(φ), φ = ωt, moving at r_k' = ω dr_k/dφ, r_k'' = ω² d²r_k/dφ².
+rotating unbalance is a point mass m_r at A + r_r (cos(φ_c + β) s + sin(φ_c + β) t). So the
+mechanism is point masses m_k at body positions r_k(φ), φ = ωt, moving at r_k' = ω dr_k/dφ,
+r_k'' = ω² d²r_k/dφ².
 
 Equations of the body with the mechanism, linearised in its small motion q = (u, θ) about O
 (Lagrange's equations, the attitude R = exp([θ]×); virtual work of the point masses with
