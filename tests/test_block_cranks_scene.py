@@ -114,6 +114,20 @@ def test_the_amplitudes_table_shows_the_exact_solution(runner):
     assert "exact periodic solution" in text and "first approximation's error" in text
 
 
+def test_the_steady_state_table_names_its_unit_and_prints_round_off_as_zero(runner):
+    """The vertical two-throw machine is symmetric about x = 0: its x motion at 2ω is round-off
+    (1e-22 m beside 3.5e-5 m at ω) and prints 0 without a phase; the title says the unit [m]
+    (once read as markup and dropped). The JSON keeps the computed numbers."""
+    text = runner.invoke(app, ["amplitudes", str(TWO_THROW)], env={"COLUMNS": "200"}).stdout
+    assert "amplitude [m] and phase [°]" in text
+    table = text[text.index("amplitude [m] and phase"):]
+    table = table[: table.index("└")]
+    rows = [[c.strip() for c in line.split("│")[1:-1]] for line in table.splitlines() if line.startswith("│")]
+    order_2_at_g = next(r for r in rows if r[:3] == ["compressor", "2", "G"])
+    assert order_2_at_g[3] == "0" and "∠" in order_2_at_g[4]
+    assert not any("e-2" in cell for row in rows for cell in row), "a value of 1e-20 m is the solver's noise"
+
+
 def test_a_frequency_dependent_soil_solves_each_harmonic_on_its_own_springs(two_throw, tmp_path):
     """On Gazetas' impedance the exact solution takes K(|n|ω), C(|n|ω) per harmonic: the command
     runs and the first approximation (solved order by order on the same impedance) stays within 1e-3."""

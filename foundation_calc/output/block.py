@@ -7,7 +7,7 @@ import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import (
     point_support_document,
@@ -186,10 +186,19 @@ def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
                        f" peaks from the exact solution's){capped}; the limits judge the first approximation", soft_wrap=True)
 
 
+def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
+    """An amplitude and its phase, ``"3.543e-05 ∠28°"``; ``"0"`` for the solver's round-off (:func:`fmt_scaled`)."""
+    shown = fmt_scaled(units.convert("amplitude", abs(value)), units.convert("amplitude", scale), 4)
+    return shown if shown == "0" else f"{shown} ∠{np.degrees(np.angle(value)):.0f}°"
+
+
 def _table(title: str, columns, right=()):
+    """A table whose ``title`` may name units in brackets (``[mm]``): kept as text, not read as markup."""
+    import re
+
     from rich.table import Table
 
-    table = Table(title=title, title_justify="left")
+    table = Table(title=re.sub(r"(?<!\\)\[([^\]\s]*)\]", r"\\[\1]", title), title_justify="left")
     for col in columns:
         table.add_column(col, justify="right" if col in right else "left")
     return table
@@ -258,10 +267,10 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
     h = _table(f"Steady state per machine and order: amplitude [{amp}] and phase [°], u = A cos(nωt + phase)",
                ("machine", "order", "point", "x", "y", "z"), ("x", "y", "z"))
     for name, orders, U in zip(motion.machines, motion.orders, motion.displacement):
+        scale = float(np.max(np.abs(U), initial=0.0))  # the machine's largest amplitude: below ROUNDOFF of it is noise
         for k, n in enumerate(orders):
             for i, p in enumerate(motion.names):
-                cells = [f"{fmt(units.convert('amplitude', abs(U[i, d, k])), 4)} ∠{np.degrees(np.angle(U[i, d, k])):.0f}°"
-                         for d in range(3)]
+                cells = [_phasor(U[i, d, k], scale, units) for d in range(3)]
                 h.add_row(escape(name), str(n), escape(p), *cells)
     out.print(h)
     vel = units.label("velocity")
