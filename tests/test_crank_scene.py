@@ -28,7 +28,15 @@ def _set(doc, dotted, value):
     return doc
 
 
-_DELETE = object()
+class _Deleted:
+    """A value that removes its key. Its repr is the test id's, the same in every process (pytest-xdist
+    requires each worker to collect the same ids; an object()'s repr holds its address)."""
+
+    def __repr__(self) -> str:
+        return "<deleted>"
+
+
+_DELETE = _Deleted()
 
 BROKEN = [
     # (dotted key, value, fragments the message must contain)
