@@ -248,10 +248,24 @@ def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     return tuple(rows)
 
 
+#: The last scene :func:`check_block` judged and its report: ``fcalc check`` asks for the same
+#: scene's report three times (resonance, amplitudes, office findings), and a scene is frozen.
+_LAST: list = []
+
+
 def check_block(scene) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
-    that range (module docstring)."""
+    that range (module docstring). The same scene object asked again gets the same report."""
+    if _LAST and _LAST[0][0] is scene:
+        return _LAST[0][1]
+    report = _check_block(scene)
+    _LAST[:] = [(scene, report)]
+    return report
+
+
+def _check_block(scene) -> BlockReport:
+    """:func:`check_block`, evaluated."""
     from dataclasses import replace
 
     from foundation_calc.checks.soil_validity import block_validity
@@ -262,8 +276,17 @@ def check_block(scene) -> BlockReport:
         return report
     from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
 
-    resonance = resonances_over_range(scene, check_block_as_given, resonance_point, resonance_offsets)
-    amplitude = amplitudes_over_range(scene, check_block_as_given, resonance.crossings, amplitude_point)
+    # the resonance and amplitude grids share factors (the ends, 1, the crossings): each soil once
+    reports: dict = {}
+
+    def at_factor(factored):
+        key = factored.soil.model_dump_json()
+        if key not in reports:
+            reports[key] = check_block_as_given(factored)
+        return reports[key]
+
+    resonance = resonances_over_range(scene, at_factor, resonance_point, resonance_offsets)
+    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings, amplitude_point)
     return replace(report, resonance_range=resonance, amplitude_range=amplitude)
 
 
