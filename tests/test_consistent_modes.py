@@ -54,8 +54,12 @@ def test_modes_sought_together_equal_modes_sought_one_by_one(piled, monkeypatch)
 
 
 def test_a_scene_asked_again_gets_its_report_again(piled):
-    """The resonance, amplitude and office findings of one scene share one evaluation."""
-    assert block_checks.check_block(piled) is block_checks.check_block(piled)
+    """The resonance, amplitude and office findings of one scene share one evaluation (the
+    amplitudes' adds the crank machines' periodic solution to it)."""
+    report = block_checks.check_block(piled)
+    assert block_checks.check_block(piled) is report
+    assert block_checks.check_block(piled, periodic=True).modes is report.modes
+    assert block_checks.check_block(piled) is report
 
 
 def test_a_factor_of_the_modulus_range_is_evaluated_once(monkeypatch):
