@@ -101,7 +101,7 @@ def block_modes(model: BlockModel) -> BlockModes:
     return BlockModes(batch.frequencies, batch.shapes, dominant, batch.damping)
 
 
-def widened(model: BlockModel, n: int) -> BlockModel:
+def _widened(model: BlockModel, n: int) -> BlockModel:
     """``model`` with ``n`` axes of length 1 after its batch's (before each array's own axes), so
     that it broadcasts against arrays with ``n`` more axes (several frequencies per block)."""
     def wide(a, own):
@@ -138,7 +138,7 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
             """Mode js[i]'s frequency on the springs at ω_i: ``omega`` (..., len(js)), or (..., len(js), k)
             with k trial frequencies each."""
             more = omega.ndim - static.frequencies.ndim + 1  # the axes past the batch's: 1 or 2
-            wide = widened(model, more)
+            wide = _widened(model, more)
             K, C = wide.soil_matrices(*impedance(omega))
             p = batch_modes(replace(wide, K=K, C=C)).frequencies[..., js]  # (..., ω_i, [k,] js)
             return np.moveaxis(np.diagonal(p, 0, -1 - more, -1), -1, -more)

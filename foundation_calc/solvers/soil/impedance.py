@@ -68,8 +68,9 @@ A0_FITTED = 2.0
 SCAN = np.geomspace(0.2, 5.0, 49)
 
 #: Most frequencies [-] one evaluation of the springs takes in :func:`consistent_frequency`'s scan
-#: (``trials``) and in :func:`~foundation_calc.solvers.block.response.consistent_batch`: larger
-#: batches are evaluated in slices, so that the soil's arrays stay about a batch's size.
+#: (``trials``) and in :func:`~foundation_calc.solvers.block.response.consistent_batch`: a larger
+#: batch takes its trial frequencies, and its modes, one at a time (the soil's arrays stay about
+#: the batch's size).
 AT_ONCE = 16_384
 
 #: Where :data:`A0_FITTED` comes from.
