@@ -251,28 +251,61 @@ def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     return tuple(rows)
 
 
+#: [scene, its report, the report with the crank machines' periodic solution (None until asked)]
+#: of the last scene :func:`check_block` judged: ``fcalc check`` asks for the same scene's report
+#: three times (resonance, amplitudes, office findings), and a scene is frozen.
+_LAST: list = []
+
+
 def check_block(scene, periodic: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
     that range (module docstring); with ``periodic`` the crank machines' exact periodic solution and
-    the first approximation's error (:mod:`~foundation_calc.checks.block_cranks`, ``cranks``)."""
+    the first approximation's error (:mod:`~foundation_calc.checks.block_cranks`, ``cranks``). The
+    same scene object asked again gets the same report."""
+    if not _LAST or _LAST[0] is not scene:
+        _LAST[:] = [scene, _check_block(scene), None]
+    if not periodic:
+        return _LAST[1]
+    if _LAST[2] is None:
+        _LAST[2] = _with_cranks(scene, _LAST[1])
+    return _LAST[2]
+
+
+def _with_cranks(scene, report: BlockReport) -> BlockReport:
+    """``report`` with its crank machines' exact periodic solution (:func:`check_block`'s ``periodic``)."""
+    from dataclasses import replace
+
+    if report.motion is None:
+        return report
+    from foundation_calc.checks.block_cranks import crank_errors
+
+    return replace(report, cranks=crank_errors(scene, scene.stable_model(), scene_impedance(scene)))
+
+
+def _check_block(scene) -> BlockReport:
+    """:func:`check_block` without the periodic solution, evaluated."""
     from dataclasses import replace
 
     from foundation_calc.checks.soil_validity import block_validity
 
     report = check_block_as_given(scene)
     report = replace(report, soil_validity=block_validity(scene, report))
-    if periodic and report.motion is not None:
-        from foundation_calc.checks.block_cranks import crank_errors
-
-        model = scene.stable_model()
-        report = replace(report, cranks=crank_errors(scene, model, scene_modes(scene, model)[1]))
     if scene.soil.modulus_range is None:
         return report
     from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
 
-    resonance = resonances_over_range(scene, check_block_as_given, resonance_point, resonance_offsets)
-    amplitude = amplitudes_over_range(scene, check_block_as_given, resonance.crossings, amplitude_point)
+    # the resonance and amplitude grids share factors (the ends, 1, the crossings): each soil once
+    reports: dict = {}
+
+    def at_factor(factored):
+        key = factored.soil.model_dump_json()
+        if key not in reports:
+            reports[key] = check_block_as_given(factored)
+        return reports[key]
+
+    resonance = resonances_over_range(scene, at_factor, resonance_point, resonance_offsets)
+    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings, amplitude_point)
     return replace(report, resonance_range=resonance, amplitude_range=amplitude)
 
 
@@ -281,8 +314,14 @@ def scene_modes(scene, model) -> tuple[BlockModes, object]:
     frequency-independent soil): on a frequency-dependent soil each mode at its own frequency
     (:func:`~foundation_calc.solvers.block.response.consistent_modes`). Every command takes the
     scene's modes from here (resonance, amplitudes, sweep, run-up), so they are one set."""
-    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None
+    impedance = scene_impedance(scene)
     return (block_modes(model) if impedance is None else consistent_modes(model, impedance)), impedance
+
+
+def scene_impedance(scene):
+    """A block scene's soil impedance ω -> springs and dashpots at O (:meth:`soil_impedance` of the
+    scene), None on a frequency-independent soil."""
+    return scene.soil_impedance if scene.soil.frequency_dependent else None
 
 
 def check_block_as_given(scene) -> BlockReport:
@@ -324,4 +363,4 @@ def check_block_as_given(scene) -> BlockReport:
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
            "check_block_as_given", "condition_label", "limit_rows", "resonance_offsets", "resonance_point", "resonance_rows",
-           "resonance_text", "scene_modes", "zone_rows"]
+           "resonance_text", "scene_impedance", "scene_modes", "zone_rows"]

@@ -101,6 +101,18 @@ def block_modes(model: BlockModel) -> BlockModes:
     return BlockModes(batch.frequencies, batch.shapes, dominant, batch.damping)
 
 
+def _widened(model: BlockModel, n: int) -> BlockModel:
+    """``model`` with ``n`` axes of length 1 after its batch's (before each array's own axes), so
+    that it broadcasts against arrays with ``n`` more axes (several frequencies per block)."""
+    def wide(a, own):
+        a = np.asarray(a)
+        return np.expand_dims(a, tuple(range(a.ndim - own, a.ndim - own + n)))
+
+    return replace(model, M=wide(model.M, 2), K=wide(model.K, 2), C=wide(model.C, 2), mass=wide(model.mass, 0),
+                   cog=wide(model.cog, 1), J_G=wide(model.J_G, 2), size=wide(model.size, 0), springs=wide(model.springs, 1),
+                   coupling=None if model.coupling is None else wide(model.coupling, 2))
+
+
 def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     """The six modes of Eq. (1) of :mod:`.model` on the soil ``impedance`` (module docstring), each
     at its own frequency, of one block or of a batch: the j-th lowest frequency p_j solves
@@ -111,28 +123,42 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     at its own frequency, where it is found. Its shape, dominant motion and damping ratio are those
     of the springs and dashpots at p_j; ``static_frequencies`` gives each mode's frequency on the
     static springs, of the static mode of the nearest shape (:func:`nearest_shapes`).
-    ``impedance(ω)`` takes ω shaped as the batch (...)."""
-    from foundation_calc.solvers.soil.impedance import consistent_frequency
+    ``impedance(ω)`` takes ω shaped as the batch with one or two more axes (..., m[, k]): the six
+    modes' roots are sought together (m = 6; k trial frequencies each in the scan of
+    :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`), element by element, each
+    as if alone; a batch of more than :data:`~foundation_calc.solvers.soil.impedance.AT_ONCE` / 6
+    blocks one mode at a time (m = 1), so that the soil's arrays stay the batch's size."""
+    from foundation_calc.solvers.soil.impedance import AT_ONCE, consistent_frequency
 
     static = batch_modes(model)  # a block that tips over keeps p = 0, its fixed point
+    together = np.size(model.mass) * 6 <= AT_ONCE
+    roots = np.zeros_like(static.frequencies)
+    for js in ([list(range(6))] if together else [[j] for j in range(6)]):
+        def frequencies(omega, js=js):
+            """Mode js[i]'s frequency on the springs at ω_i: ``omega`` (..., len(js)), or (..., len(js), k)
+            with k trial frequencies each."""
+            more = omega.ndim - static.frequencies.ndim + 1  # the axes past the batch's: 1 or 2
+            wide = _widened(model, more)
+            K, C = wide.soil_matrices(*impedance(omega))
+            p = batch_modes(replace(wide, K=K, C=C)).frequencies[..., js]  # (..., ω_i, [k,] js)
+            return np.moveaxis(np.diagonal(p, 0, -1 - more, -1), -1, -more)
 
-    def at(omega):
+        roots[..., js] = consistent_frequency(frequencies, static.frequencies[..., js], trials=True)
+
+    def alone(omega):
         K, C = model.soil_matrices(*impedance(omega))
         return batch_modes(replace(model, K=K, C=C))
 
-    columns = []
-    for j in range(6):
-        modes = at(consistent_frequency(lambda w, j=j: at(w).frequencies[..., j], static.frequencies[..., j]))
-        columns.append((modes.frequencies[..., j], modes.shapes[..., :, j], modes.dominant[..., j], modes.damping[..., j],
-                        modes.squared[..., j], modes.stable))
-    p = np.stack([c[0] for c in columns], -1)
+    found = [alone(roots[..., j]) for j in range(6)]
+    p, dominant, damping, squared = (np.stack([getattr(m, a)[..., j] for j, m in enumerate(found)], -1)
+                                     for a in ("frequencies", "dominant", "damping", "squared"))
+    shapes = np.stack([m.shapes[..., :, j] for j, m in enumerate(found)], -1)
     order = np.argsort(p, axis=-1)  # ascending by the proof; round-off may swap equal roots
     sort = lambda a: np.take_along_axis(a, order, -1)  # noqa: E731
-    shapes = np.take_along_axis(np.stack([c[1] for c in columns], -1), order[..., None, :], -1)
-    stable = np.logical_and.reduce([c[5] for c in columns])
+    shapes = np.take_along_axis(shapes, order[..., None, :], -1)
+    stable = np.logical_and.reduce([m.stable for m in found])
     pairs = nearest_shapes(static.shapes, shapes, model.M)
-    return ModeBatch(sort(p), shapes, sort(np.stack([c[2] for c in columns], -1)), sort(np.stack([c[3] for c in columns], -1)),
-                     sort(np.stack([c[4] for c in columns], -1)), stable & static.stable,
+    return ModeBatch(sort(p), shapes, sort(dominant), sort(damping), sort(squared), stable & static.stable,
                      np.take_along_axis(static.frequencies, pairs, -1))
 
 

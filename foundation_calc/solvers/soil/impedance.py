@@ -67,6 +67,12 @@ A0_FITTED = 2.0
 #: springs rise and fall with frequency): these multiples of the static frequency [-].
 SCAN = np.geomspace(0.2, 5.0, 49)
 
+#: Most frequencies [-] one evaluation of the springs takes in :func:`consistent_frequency`'s scan
+#: (``trials``) and in :func:`~foundation_calc.solvers.block.response.consistent_batch`: a larger
+#: batch takes its trial frequencies, and its modes, one at a time (the soil's arrays stay about
+#: the batch's size).
+AT_ONCE = 16_384
+
 #: Where :data:`A0_FITTED` comes from.
 A0_SOURCE = "Pais & Kausel (1988), fitted for a0 <= 2; Gazetas (1991), charts to a0 = 2"
 
@@ -225,7 +231,7 @@ def footing_impedance(K_z, K_x, K_phi, G, rho, nu, L, B, D, omega) -> Impedance:
     )
 
 
-def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
+def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False):
     """The root of ω = p(K(ω)): the natural frequency of a mode whose springs depend on frequency.
 
     ``frequency_at(omega)`` returns the mode's frequency p(ω) [rad/s] on the springs taken at
@@ -263,6 +269,9 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     omega_static : the mode's frequency on the static springs, p(0) [rad/s]; 0 (a block that
         tips over) is its own root
     rtol : relative width of the final bracket [-]
+    trials : True when ``frequency_at`` also takes a last axis of trial frequencies per element,
+        (...) + (k,) -> (...) + (k,): the scan of :data:`SCAN` is then one call, not one per
+        multiple (when it holds at most :data:`AT_ONCE` frequencies)
 
     Returns
     -------
@@ -291,7 +300,8 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     lost = ((g_hi > 0.0) | (g_lo < 0.0)) & (np.abs(hi - lo) > tol)
     if np.any(lost):  # p(ω) not monotonic (a pile group's): the crossing of ω = p(ω) nearest p_s on a grid
         grid = hi[..., None] * SCAN
-        g = np.stack([frequency_at(grid[..., k]) - grid[..., k] for k in range(len(SCAN))], axis=-1)
+        at_once = trials and grid.size <= AT_ONCE
+        g = (frequency_at(grid) if at_once else np.stack([frequency_at(grid[..., k]) for k in range(len(SCAN))], axis=-1)) - grid
         down = (g[..., :-1] >= 0.0) & (g[..., 1:] <= 0.0)
         k = np.argmin(np.where(down, np.abs(np.log(SCAN[:-1])), np.inf), axis=-1)
         found = np.take_along_axis(down, k[..., None], -1)[..., 0]
@@ -332,5 +342,5 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10):
     raise ArithmeticError(f"ω = p(K(ω)): the bracket did not close in {3 * 64} steps (a bug: it halves every three)")
 
 
-__all__ = ["A0_FITTED", "A0_SOURCE", "Impedance", "SCAN", "consistent_frequency", "footing_impedance", "footing_torsion",
+__all__ = ["A0_FITTED", "A0_SOURCE", "AT_ONCE", "Impedance", "SCAN", "consistent_frequency", "footing_impedance", "footing_torsion",
            "rocking_radiation_coefficient", "stiffness_modifiers", "torsion_modifier", "torsion_radiation_coefficient"]
