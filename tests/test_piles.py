@@ -43,6 +43,17 @@ def test_lateral_static_is_table_c1(profile, ratio):
         assert float(value) / (d**power * E_s) == pytest.approx(c * ratio**n, rel=PRINTED)
 
 
+@pytest.mark.parametrize("nu", [0.25, 0.45])
+def test_a_pile_at_rest_takes_table_c1_with_its_soil_model_modulus(nu):
+    """Annex C defines the table's E_s as the soil model's Young's modulus "equal to 3G" (not the
+    soil's own 2 G (1 + ν)): the static sway spring of a pile on a soil of shear modulus G is the
+    table's at E_s = 3 G, whatever ν (ν = 0.25 would differ by 10 %)."""
+    d, G, E_p = 0.6, 4.0e7, 3.0e10
+    head = single_pile(d, 20.0, E_p, 2500.0, G, nu, 1900.0, "uniform", False, 0.0)
+    (c, n), E_s = TABLE_C1["uniform"][0], 3.0 * G
+    assert float(head.K_HH.real) == pytest.approx(d * E_s * c * (E_p / E_s) ** n, rel=PRINTED)
+
+
 def _beam_on_winkler(EI, k_of_z, L, n=240, m=0.0, omega=0.0):
     """Head stiffness matrix [[H/u, H/θ], [M/u, M/θ]] of a free-tip beam on springs k(z) (complex
     allowed) minus m ω², cubic Hermite elements, z down, θ = du/dz."""

@@ -53,7 +53,7 @@ class BlockPiles(SceneModel):
     )
     soil_profile: Literal["uniform", "linear", "parabolic"] = quantity(
         "-", "-", "the soil's modulus with depth z below the base: \"uniform\" E_s, \"linear\" E_s z/d,"
-        " \"parabolic\" E_s sqrt(z/d) (EN 1998-5 Table C.1), E_s = 2 G (1 + ν) from [soil] at z = d",
+        " \"parabolic\" E_s sqrt(z/d) (EN 1998-5 Table C.1), E_s = 3 G (the table's soil model) from [soil] at z = d",
         examples=["uniform"],
     )
     tip: Literal["floating", "end_bearing"] = quantity(
@@ -228,11 +228,11 @@ class PiledSoil(BlockSoil):
         from foundation_calc.solvers.piles.single import active_length
 
         p, remarks = self._piles, list(super().related_findings(prefix, found))
-        E_s = 2.0 * self.G * (1.0 + self.poisson)
+        E_s = 3.0 * self.G  # EN 1998-5 Annex C: the soil model's Young's modulus, 3 G
         low, high = VALIDITY["stiffness_ratio"]
         ratio = p.modulus / E_s
         if not low <= ratio <= high:
-            remarks.append(Remark("piles.modulus", f"E_p/E_s = {ratio:.4g} (E_s = 2 G (1 + ν) = {E_s:.4g} Pa) is outside"
+            remarks.append(Remark("piles.modulus", f"E_p/E_s = {ratio:.4g} (E_s = 3 G = {E_s:.4g} Pa) is outside"
                                   f" {low:g}-{high:g}, the range of EN 1998-5 Table C.1's fits"))
         l_a = float(active_length(E_s, p.modulus, p.diameter, p.soil_profile))
         if p.length < l_a:

@@ -36,7 +36,7 @@ def single_pile_chain(scene) -> Chain:
     chain.given("E_p", p.modulus, "Pa", "Young's modulus of the pile")
     chain.given("G", soil.G, "Pa", "shear modulus of the soil at depth d")
     chain.given("nu", soil.poisson, "-", "Poisson's ratio of the soil")
-    chain.step("E_s", "2*G*(1 + nu)", "Pa", "[EC8] Table C.1", "Young's modulus of the soil at depth d")
+    chain.step("E_s", "3*G", "Pa", "[EC8] Annex C", "Young's modulus of the table's soil model at depth d (3 G)")
     (a, m), (b, n), (c, q) = TABLE_C1[p.soil_profile]
     chain.step("K_HH", f"d*E_s*{a:g}*(E_p/E_s)**{m:g}", "N/m", "[EC8] Table C.1", "sway spring of a fixed head")
     chain.step("K_MM", f"d**3*E_s*{b:g}*(E_p/E_s)**{n:g}", "N m/rad", "[EC8] Table C.1", "rocking spring of a fixed head")

@@ -4,7 +4,8 @@ frequency dependence and radiation from the pile on a dynamic Winkler foundation
 Sources
 -------
 .. [1] EN 1998-5:2004, Annex C (informative), Table C.1: static head stiffnesses of flexible
-   piles (after Gazetas 1991), E_s the soil's Young's modulus at depth z = d::
+   piles (after Gazetas 1991), E_s the Young's modulus of the table's soil model at depth z = d,
+   which Annex C sets to 3 G (an incompressible soil's; not 2 G (1 + ν))::
 
        profile            K_HH/(d E_s)          K_MM/(d³ E_s)         K_HM/(d² E_s)
        E = E_s            1.08 (E_p/E_s)^0.21   0.16 (E_p/E_s)^0.75   -0.22 (E_p/E_s)^0.50
@@ -248,7 +249,7 @@ def single_pile(d, L, E_p, rho_p, G_s, nu, rho, profile, end_bearing, omega) -> 
     ----------
     d, L : pile diameter and length [m]
     E_p, rho_p : the pile's Young's modulus [Pa] and density [kg/m³]
-    G_s : the soil's shear modulus at depth z = d [Pa] (E_s = 2 G_s (1 + ν))
+    G_s : the soil's shear modulus at depth z = d [Pa] (Table C.1's E_s = 3 G_s)
     nu, rho : the soil's Poisson's ratio [-] and density [kg/m³]
     profile : "uniform", "linear" or "parabolic": G(z) = G_s f(z/d) (:func:`profile_factor`)
     end_bearing : tip on rock (True) or floating (False)
@@ -256,10 +257,10 @@ def single_pile(d, L, E_p, rho_p, G_s, nu, rho, profile, end_bearing, omega) -> 
 
     >>> p = single_pile(0.6, 15.0, 3.0e10, 2500.0, 7.2e7, 0.33, 1800.0, "uniform", False, 0.0)
     >>> round(float(p.K_HH.real) / 1e6, 1), round(float(p.K_v.real) / 1e6, 1)
-    (358.7, 880.0)
+    (394.4, 880.0)
     """
     omega = np.asarray(omega, dtype=float)
-    E_s = 2.0 * G_s * (1.0 + nu)
+    E_s = 3.0 * G_s  # [1] Annex C: "E_s is a Young's modulus of the soil model, equal to 3G"
     m_p = rho_p * np.pi * d**2 / 4.0
     K_HH, K_MM, K_HM = lateral_static(E_s, E_p, d, profile)
     l_a = active_length(E_s, E_p, d, profile)
