@@ -31,24 +31,6 @@ from foundation_calc.scenes.block_soil import BLOCK_METHOD_KEYS
 
 CODES = {"pass": 0, "warn": 1, "fail": 2}
 
-
-@pytest.fixture
-def one_report_per_candidate(monkeypatch):
-    """The scalar path's report computed once per candidate: the test reads it, and the registry's
-    resonance, amplitudes and office checks each call :func:`check_block` on the same scene object,
-    which would solve the same candidate three times more (a candidate on a frequency-dependent soil
-    or a modulus range costs a second or more). ``check_block`` is a function of the scene alone, so
-    every caller still gets the report that ``fcalc check`` computes for the candidate; a failure
-    (PhysicsError) is not kept and is raised again at each call."""
-    reports: dict[int, tuple] = {}
-    computed = scalar.check_block
-
-    def check_block(scene):
-        if id(scene) not in reports:
-            reports[id(scene)] = (scene, computed(scene))  # the scene is kept so that its id stays its own
-        return reports[id(scene)][1]
-
-    monkeypatch.setattr(scalar, "check_block", check_block)
 TWO = "configs/block_two_machines.toml"
 FAN = "configs/block_fan_torsion_near_speed.toml"
 
@@ -121,7 +103,7 @@ COUNTS = {"pais_kausel": 12}
 
 
 @pytest.mark.parametrize("name", sorted(DOCUMENTS))
-def test_batch_verdicts_equal_the_scalar_checks(name, one_report_per_candidate):
+def test_batch_verdicts_equal_the_scalar_checks(name):
     document = DOCUMENTS[name]
     scene = parse_scene(document, name)
     count = COUNTS.get(name, 60)
@@ -227,7 +209,7 @@ def test_keys_that_cannot_vary_are_refused():
         evaluate(parse_scene(_document(TWO), "two"), {"soil.c_z": np.array([1.0e8])})
 
 
-def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check(one_report_per_candidate):
+def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check():
     """The range moves critical speeds through the machines' speeds: the scalar path finds the
     crossings by Brent's method, the batch in closed form; the outcomes must agree, and the
     utilisations (of the data as given) to 1e-9. Some candidates fail their amplitudes only

@@ -67,18 +67,32 @@ def stdout() -> Console:
     from rich.table import Table
 
     class ResultConsole(Console):
+        #: A width a caller set on the console itself (``console.width = 120``): it then stays.
+        fixed_width: int | None = None
+
+        @property
+        def width(self) -> int:
+            return Console.width.fget(self)
+
+        @width.setter
+        def width(self, value: int) -> None:
+            self.fixed_width = value
+            Console.width.fset(self, value)
+
         def on_broken_pipe(self) -> None:
             """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
             raise BrokenPipeError
 
         def print(self, *objects, **kwargs):
-            """Print as :func:`stdout` says; the width is read at each call (``COLUMNS`` and the
-            stream may change between the calls of one process, e.g. under a test runner)."""
+            """Print as :func:`stdout` says; unless a caller fixed the width, it is read at each call
+            (``COLUMNS`` and the stream may change between the calls of one process, e.g. under a
+            test runner or from the Python API)."""
             try:
                 terminal = self.file.isatty()
             except (AttributeError, ValueError):  # a closed or bare stream
                 terminal = False
-            self.width = _stdout_width(terminal, os.environ.get("COLUMNS"))
+            if self.fixed_width is None:
+                self._width = _stdout_width(terminal, os.environ.get("COLUMNS"))
             tables = [item for item in objects if isinstance(item, Table)]
             for item in tables:
                 keep_words_whole(item)
@@ -87,7 +101,9 @@ def stdout() -> Console:
                 kwargs.setdefault("soft_wrap", True)  # a message stays one line in a file, for grep
             super().print(*objects, **kwargs)
 
-    return ResultConsole(highlight=False, width=_stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS")), emoji=False)  # ":name:" in user text stays text
+    console = ResultConsole(highlight=False, emoji=False)  # ":name:" in user text stays text
+    console._width = _stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS"))
+    return console
 
 
 @cache
