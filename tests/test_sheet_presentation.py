@@ -10,7 +10,7 @@ import re
 import pytest
 
 from tests.conftest import CONFIGS
-from tests.sheet_numbers import NUMBER
+from tests.sheet_numbers import NUMBER, numbers
 from tests.sheet_reader import read_markdown, read_typst
 
 SCENES = sorted(p.stem for p in CONFIGS.glob("*.toml"))
@@ -116,3 +116,36 @@ def test_block_sheet_has_a_sweep_per_machine_and_an_accuracy_section(runner, tmp
     assert "## 6. Plots" in text and "## 7. Accuracy" in text
     assert "Sweep of compressor's speed" in text and "Sweep of motor's speed" in text
     assert sorted(p.name for p in tmp_path.glob("*.svg")) == ["block-figure1.svg", "block-figure2.svg"]
+
+
+def test_block_points_table_takes_the_sheets_fitted_unit(shipped_sheets, tmp_path):
+    """The two-machine block limited to 0.2 mm (≥ 0.1 mm) prints its points in mm, as its Checks
+    table does; its limit of 50 µm prints µm. The same corner's peak, µm / 1000 = mm (3 figures
+    printed: tolerance 0.5 % of each)."""
+    import warnings
+
+    from foundation_calc.api.options import display_units
+    from foundation_calc.api.report import SHEET_UNITS
+    from foundation_calc.output.report import markdown
+    from foundation_calc.output.report.documents import scene_sheet
+
+    def points(md: str):
+        found = next(t for t in read_markdown(md).tables() if t.title.startswith("Points: u_P"))
+        return found.header, {(r[0], r[1]): numbers(r[2])[0] for r in found.rows}
+
+    name = "block_two_machines"
+    micro_header, micro = points(shipped_sheets[name]["md"])
+    assert micro_header[2] == "peak displacement [µm]"
+    text = (CONFIGS / f"{name}.toml").read_text(encoding="utf-8")
+    path = tmp_path / f"{name}.toml"
+    path.write_text(text.replace("amplitude = 5.0e-5", "amplitude = 2.0e-4"), encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sheet, _ = scene_sheet(path, "fcalc report", display_units(None, SHEET_UNITS), figures=False, fit_units=True)
+    md = markdown.render(sheet, [])
+    header, milli = points(md)
+    assert tuple(header[2:5]) == ("peak displacement [mm]", "peak velocity [mm/s]", "v_rms [mm/s]")
+    checks = next(t for t in read_markdown(md).tables() if t.title.startswith("Every check"))
+    assert {_unit(r[2]) for r in checks.rows if r[1].endswith("peak displacement")} == {"mm"}
+    for key, value in micro.items():
+        assert milli[key] == pytest.approx(value / 1e3, rel=5e-3), key

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.block_soil import block_soil_blocks, order_springs_table, orders_of
 from foundation_calc.output.report.handcalc import Definitions
 from foundation_calc.output.report.model import Paragraph, Table, table
@@ -226,26 +227,34 @@ def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
     return (found, *zone_tables(code), *support_blocks(code))
 
 
-def _points(solve: BlockSolve, names, points, accelerations: bool) -> Table:
-    """The points' peaks and r.m.s. velocity; with ``accelerations`` (the scene limits them) also
-    the peak and r.m.s. acceleration, a_n = −(nω)² u_P,n."""
+def _points(solve: BlockSolve, names, points, accelerations: bool, units: DisplayUnits) -> Table:
+    """The points' peaks and r.m.s. velocity in the sheet's ``units`` (those of its Checks table);
+    with ``accelerations`` (the scene limits them) also the peak and r.m.s. acceleration,
+    a_n = −(nω)² u_P,n."""
     displacement, velocity, rms, _ = point_values(solve, points)
     labels = [(name, d) for name in names for d in DIRECTIONS]
-    values = [(displacement, 1e6), (velocity, 1e3), (rms, 1e3)]
-    head = ["point", "direction", "peak displacement [µm]", "peak velocity [mm/s]", "v_rms [mm/s]"]
+    values = [(displacement, "amplitude"), (velocity, "velocity"), (rms, "velocity")]
+    head = ["point", "direction", f"peak displacement [{units.amplitude}]", f"peak velocity [{units.velocity}]",
+            f"v_rms [{units.velocity}]"]
     title = "Points: u_P = T_P Z; peaks of each machine's series added; v_rms = √(Σ |nω u_P,n|²/2)"
     if accelerations:
-        values += [(a, 1.0) for a in acceleration_values(solve, points)]
-        head += ["peak acceleration [m/s²]", "a_rms [m/s²]"]
+        values += [(a, "acceleration") for a in acceleration_values(solve, points)]
+        head += [f"peak acceleration [{units.acceleration}]", f"a_rms [{units.acceleration}]"]
         title += "; a_rms = √(Σ |(nω)² u_P,n|²/2)"
-    cols = [column(list(v.ravel() * scale), 3) for v, scale in values]
+    cols = [column([units.convert(quantity, float(x)) for x in v.ravel()], 3) for v, quantity in values]
     rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
     return table(title, tuple(head), rows, (False, False, *[True] * len(values)))
 
 
-def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
+#: Units of the Points table when the caller names none: those the sheet showed before it took its
+#: own (displacements in µm, velocities in mm/s).
+POINT_UNITS = DisplayUnits(amplitude="µm", velocity="mm/s")
+
+
+def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -> tuple:
     """The 6-DOF calculation of a block scene as sheet blocks (the ``amplitudes`` document gives
-    the modes' names and whether a steady state exists)."""
+    the modes' names and whether a steady state exists; ``units``, the sheet's, those of the points'
+    peaks)."""
     model = scene.model()
     excitations = scene.excitations()
     dependent = scene.soil.frequency_dependent and amplitudes is not None
@@ -280,7 +289,8 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]
         limits = scene.limits
-        blocks.append(_points(solve, names, points, limits.acceleration is not None or limits.acceleration_rms is not None))
+        blocks.append(_points(solve, names, points, limits.acceleration is not None or limits.acceleration_rms is not None,
+                              units))
         if amplitudes.get("code"):
             blocks += _zones(amplitudes["code"], names, *point_values(solve, points)[2:])
     blocks.append(Definitions({
@@ -299,5 +309,5 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     return tuple(blocks)
 
 
-__all__ = ["BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
+__all__ = ["POINT_UNITS", "BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
            "point_values"]

@@ -134,7 +134,7 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
                 conclusion_section(runs, documents, units, note, unbracketed(loaded), sizing), inputs_section(loaded, units, written),
                 assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
-    methods = methods_section(loaded, documents)
+    methods = methods_section(loaded, documents, units)
     sections += [methods] if methods is not None else []
     if "runup" in documents:
         from foundation_calc.output.report.runup_section import runup_section
