@@ -149,3 +149,15 @@ def test_block_points_table_takes_the_sheets_fitted_unit(shipped_sheets, tmp_pat
     assert {_unit(r[2]) for r in checks.rows if r[1].endswith("peak displacement")} == {"mm"}
     for key, value in micro.items():
         assert milli[key] == pytest.approx(value / 1e3, rel=5e-3), key
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_each_column_of_a_matrix_table_is_in_one_notation(shipped_sheets, name):
+    """A matrix table (M, K, C stacked) prints each of its columns plain or all a.bc·10ⁿ, not
+    165840 above 8.400·10⁹ (zeros aside)."""
+    for found in read_markdown(shipped_sheets[name]["md"]).tables():
+        if "matrices" not in found.title.lower():
+            continue
+        for j in range(1, len(found.header)):
+            cells = [row[j] for row in found.rows if NUMBER.fullmatch(row[j].replace("−", "-")) and row[j] != "0"]
+            assert len({"·10" in c for c in cells}) <= 1, (found.title, found.header[j], cells)

@@ -25,7 +25,7 @@ from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.block_soil import block_soil_blocks, order_springs_table, orders_of
 from foundation_calc.output.report.handcalc import Definitions
 from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure, phased
+from foundation_calc.output.report.numbers import column, figure, one_notation, phased
 
 COORDINATES = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
 DIRECTIONS = ("x", "y", "z")
@@ -127,13 +127,14 @@ def _rates(solve: BlockSolve, points, count: int) -> list[tuple[np.ndarray, np.n
 def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
     """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
     entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0,
-    and each matrix's column is in one notation (:func:`~.numbers.column`)."""
-    rows = []
-    for key, matrix in matrices:
-        scale = np.abs(matrix).max() or None
-        shown = [column([float(v) for v in matrix[:, j]], 4, scale) for j in range(len(coordinates))]
-        for i, coordinate in enumerate(coordinates):
-            rows.append((f"{key}, row {coordinate}", *(entries[i] for entries in shown), units[key][i]))
+    and each column of the table, every matrix's rows in it, is in one notation
+    (:func:`~.numbers.one_notation`)."""
+    scales = [np.abs(matrix).max() or None for _, matrix in matrices]
+    shown = [one_notation([float(v) for _, matrix in matrices for v in matrix[:, j]], 4,
+                          [scale for scale, (_, matrix) in zip(scales, matrices) for _ in matrix[:, j]])
+             for j in range(len(coordinates))]
+    rows = [(f"{key}, row {coordinate}", *(entries[m * len(coordinates) + i] for entries in shown), units[key][i])
+            for m, (key, _) in enumerate(matrices) for i, coordinate in enumerate(coordinates)]
     return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
 
 
