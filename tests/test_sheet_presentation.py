@@ -161,3 +161,15 @@ def test_each_column_of_a_matrix_table_is_in_one_notation(shipped_sheets, name):
         for j in range(1, len(found.header)):
             cells = [row[j] for row in found.rows if NUMBER.fullmatch(row[j].replace("−", "-")) and row[j] != "0"]
             assert len({"·10" in c for c in cells}) <= 1, (found.title, found.header[j], cells)
+
+
+def test_subscripts_are_typeset_in_pdf_and_html_and_plain_in_markdown(shipped_sheets):
+    """Z_n, K_z, u_P,n are set as subscripts in the PDF (typst sub) and the HTML (<sub>); the
+    Markdown keeps Z_n; a scene key keeps its _ everywhere: c_z in the inputs' key column, speed_rpm."""
+    crank = shipped_sheets["compressor_near_resonance"]
+    assert 'sub("z")' in crank["typ"] and "K<sub>z</sub>" in crank["html"] and "K\\_z" in crank["md"]
+    key_cells = re.findall(r'table\.header\("key".*', crank["typ"])
+    assert any('"c_z"' in line for line in key_cells) and '<td>c_z</td>' in crank["html"]
+    block = shipped_sheets["block_two_machines"]
+    assert 'sub("P,n")' in block["typ"] and "u<sub>P,n</sub>" in block["html"]
+    assert '"speed_rpm"' in block["typ"] and "speed_rpm" in block["html"]
