@@ -1,6 +1,7 @@
 """The marks of fcalc's plain sheet text that the PDF and HTML typeset: exponents and subscripts.
 
-The sheet's text is plain (Markdown prints it as it is). An exponent is written ``e^{i nωt}``; a
+The sheet's text is plain (Markdown prints it as it is). An exponent is written ``e^{i nωt}`` (or
+``^½``, ``^¼`` for a root); a
 subscript is a symbol of one letter, ``_`` and its index of letters and digits, commas joining
 indices: ``Z_n``, ``K_z``, ``a_0``, ``u_P,n``, ``v_rms``, ``M_Σ``. A scene key is not a symbol
 and keeps its ``_``: a word before it (``speed_rpm``, ``xi_z``), a dotted path (``soil.c_phi``), a
@@ -19,8 +20,8 @@ import re
 _LETTER = "A-Za-zα-ωΑ-Ω"
 
 _MARK = re.compile(
-    r"\^\{(?P<super>[^{}]*)\}"
-    rf"|(?<![{_LETTER}0-9_.\\/])(?P<symbol>[{_LETTER}])_(?P<sub>[{_LETTER}0-9]+(?:,[{_LETTER}0-9]+)*)(?![_{_LETTER}0-9])"
+    r"\^(?:\{(?P<super>[^{}]*)\}|(?P<fraction>[½¼¾]))"
+    rf"|(?<![{_LETTER}0-9_.\\])(?P<symbol>[{_LETTER}])_(?P<sub>[{_LETTER}0-9]+(?:,[{_LETTER}0-9]+)*)(?![_{_LETTER}0-9])"
 )
 
 #: Greek letters spelled out: ``c_phi`` is a scene key, ``c_φ`` the symbol.
@@ -43,9 +44,9 @@ def pieces(plain: str, subscripts: bool = True) -> list[tuple[str, str]]:
             out.append((kind, text))
 
     for match in _MARK.finditer(plain):
-        if match.group("super") is not None:
+        if match.group("super") is not None or match.group("fraction") is not None:
             add("text", plain[at:match.start()])
-            add("super", match.group("super"))
+            add("super", match.group("super") or match.group("fraction"))
         elif subscripts and match.group("sub").lower() not in SPELLED_GREEK:
             add("text", plain[at:match.start()] + match.group("symbol"))
             add("sub", match.group("sub"))

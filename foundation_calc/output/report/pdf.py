@@ -111,7 +111,7 @@ def _page(header: str) -> str:
     """A4 pages headed "``header`` · page n of N"."""
     return (
         '#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), header: context {'
-        f" set text(size: 8pt, fill: luma(80)); {string(header + ' · page ')} + str(counter(page).get().first())"
+        f" set text(size: 8pt, fill: luma(80)); {text(header + ' · page ')} + str(counter(page).get().first())"
         ' + " of " + str(counter(page).final().first()) })\n'
     )
 
@@ -119,7 +119,7 @@ def _page(header: str) -> str:
 def source(sheet: Sheet) -> tuple[str, list[str]]:
     """The typst source of the sheet and the SVG texts of its figures (``figureN.svg``)."""
     figures: list[str] = []
-    parts = [_page(sheet.header or sheet.title), PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {string(sheet.title)}))\n"]
+    parts = [_page(sheet.header or sheet.title), PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {text(sheet.title)}))\n"]
     for section in sheet.sections:
         parts.append(f"#heading(level: 1, {string(section.title)})\n")
         parts += [_block(b, figures) for b in section.blocks]
