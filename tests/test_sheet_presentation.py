@@ -174,3 +174,15 @@ def test_subscripts_are_typeset_in_pdf_and_html_and_plain_in_markdown(shipped_sh
     block = shipped_sheets["block_two_machines"]
     assert 'sub("P,n")' in block["typ"] and "u<sub>P,n</sub>" in block["html"]
     assert '"speed_rpm"' in block["typ"] and "speed_rpm" in block["html"]
+
+
+@pytest.mark.parametrize("name", [s for s in SCENES if s.startswith("block_")])
+def test_block_points_columns_of_one_unit_share_one_notation(shipped_sheets, name):
+    """The Points table's peak velocity and v_rms (both mm/s) print in one notation, not 0.00138
+    beside 9.72·10⁻⁴."""
+    found = next(t for t in read_markdown(shipped_sheets[name]["md"]).tables() if t.title.startswith("Points: u_P"))
+    by_unit: dict[str, set[bool]] = {}
+    for j, head in enumerate(found.header[2:], 2):
+        unit = head.rsplit("[", 1)[-1]
+        by_unit.setdefault(unit, set()).update("·10" in row[j] for row in found.rows if row[j] != "0")
+    assert all(len(kinds) == 1 for kinds in by_unit.values()), by_unit

@@ -242,9 +242,22 @@ def _points(solve: BlockSolve, names, points, accelerations: bool, units: Displa
         values += [(a, "acceleration") for a in acceleration_values(solve, points)]
         head += [f"peak acceleration [{units.acceleration}]", f"a_rms [{units.acceleration}]"]
         title += "; a_rms = √(Σ |(nω)² u_P,n|²/2)"
-    cols = [column([units.convert(quantity, float(x)) for x in v.ravel()], 3) for v, quantity in values]
+    cols = _one_notation_per_quantity([([units.convert(quantity, float(x)) for x in v.ravel()], quantity) for v, quantity in values])
     rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
     return table(title, tuple(head), rows, (False, False, *[True] * len(values)))
+
+
+def _one_notation_per_quantity(columns: list[tuple[list[float], str]]) -> list[list[str]]:
+    """Each column's values at 3 figures, the columns of one quantity (a peak and an r.m.s.
+    velocity) in one notation together (:func:`~.numbers.column`)."""
+    shown: dict[str, list[str]] = {}
+    for quantity in dict.fromkeys(q for _, q in columns):
+        shown[quantity] = column([x for values, q in columns if q == quantity for x in values], 3)
+    out, used = [], dict.fromkeys(shown, 0)
+    for values, quantity in columns:
+        out.append(shown[quantity][used[quantity]:used[quantity] + len(values)])
+        used[quantity] += len(values)
+    return out
 
 
 #: Units of the Points table when the caller names none: those the sheet showed before it took its
