@@ -186,3 +186,11 @@ def test_block_points_columns_of_one_unit_share_one_notation(shipped_sheets, nam
         unit = head.rsplit("[", 1)[-1]
         by_unit.setdefault(unit, set()).update("·10" in row[j] for row in found.rows if row[j] != "0")
     assert all(len(kinds) == 1 for kinds in by_unit.values()), by_unit
+
+
+def test_crank_harmonics_are_named_as_the_paper_writes_them(shipped_sheets):
+    """The amplitude and phase tables name the rotation's harmonics θ1, θ3 (the paper's symbol, as
+    the hand calculations write M_θ1), never the JSON key theta1."""
+    tables = read_markdown(shipped_sheets["frame_saw_soft_soil_runup"]["md"]).tables()
+    rows = [r[0] for t in tables if "per harmonic" in t.title for r in t.rows]
+    assert "θ1 [rad]" in rows and "θ1" in rows and not [r for r in rows if "theta" in r]
