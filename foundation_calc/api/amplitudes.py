@@ -37,7 +37,7 @@ def amplitudes(scene, *, exact: bool = False) -> Result:
         from foundation_calc.checks.block import check_block
         from foundation_calc.output.block import amplitudes_document
 
-        report = check_block(model)
+        report = check_block(model, periodic=True)
         outcome = report.amplitude_outcome
     else:
         from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes

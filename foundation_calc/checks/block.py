@@ -112,6 +112,9 @@ class BlockReport:
     #: a0 of the judged modes and orders against the soil method's fitted range
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
     soil_validity: object = None
+    #: per machine with cranks, the exact periodic solution's peaks and the first approximation's
+    #: error (:class:`~foundation_calc.solvers.block.cranks.FirstApproximationError`)
+    cranks: tuple = ()
 
     @property
     def resonance_outcome(self) -> Outcome:
@@ -248,16 +251,22 @@ def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     return tuple(rows)
 
 
-def check_block(scene) -> BlockReport:
+def check_block(scene, periodic: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
-    that range (module docstring)."""
+    that range (module docstring); with ``periodic`` the crank machines' exact periodic solution and
+    the first approximation's error (:mod:`~foundation_calc.checks.block_cranks`, ``cranks``)."""
     from dataclasses import replace
 
     from foundation_calc.checks.soil_validity import block_validity
 
     report = check_block_as_given(scene)
     report = replace(report, soil_validity=block_validity(scene, report))
+    if periodic and report.motion is not None:
+        from foundation_calc.checks.block_cranks import crank_errors
+
+        model = scene.stable_model()
+        report = replace(report, cranks=crank_errors(scene, model, scene_modes(scene, model)[1]))
     if scene.soil.modulus_range is None:
         return report
     from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range

@@ -161,7 +161,7 @@ def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     bearing = None if limits.bearing_pressure is None else bearing_row(W, model.cog[0], model.cog[1], L, B,
                                                                        limits.bearing_pressure)
     rows += static_rows(W, float(model.springs[2]), limits, bearing)
-    rows.append(mass_ratio_row(scene.block.mass_properties[0], sum(m.mass for m in scene.machines), limits.mass_ratio))
+    rows.append(mass_ratio_row(scene.block.mass_properties[0], sum(m.total_mass for m in scene.machines), limits.mass_ratio))
     return tuple(rows)
 
 

@@ -233,7 +233,7 @@ def block_amplitudes(scene) -> Finding:
     from foundation_calc.checks.block import check_block
     from foundation_calc.checks.limits import display_quantity
 
-    report = check_block(scene)
+    report = check_block(scene, periodic=True)
     values: dict = {}
     if report.resonant:
         reason: Reason = ("an order is resonant with an undamped mode: no steady state",)

@@ -7,7 +7,7 @@ import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import (
     point_support_document,
@@ -140,14 +140,65 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
     }
     doc["office"] = _office(report)
     doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
+    doc["periodic_inertia"] = [_crank_document(c, motion.names) for c in report.cranks]
     doc["verdict"] = report.amplitude_outcome.value
     return doc
 
 
+#: How the block's crank machines are solved, in the JSON and under the table.
+PERIODIC_METHOD = ("exact periodic solution with the cranks' angle-dependent inertia (harmonic balance); the limits"
+                   " judge the first approximation (averaged operator)")
+
+
+def _crank_document(c, names) -> dict:
+    """One crank machine's exact peaks, first-approximation peaks and error (JSON)."""
+    def points(peaks):
+        return {p: dict(zip(DIRECTIONS, map(float, peaks[i]))) for i, p in enumerate(names)}
+
+    rotations = ("rx", "ry", "rz")
+    return {"machine": c.name, "method": PERIODIC_METHOD, "harmonics": c.harmonics,
+            "first_approximation_error": c.error, "harmonic_change": c.harmonic_change,
+            "exact": {"displacement_peak": points(c.exact_peak), "rotation_peak": dict(zip(rotations, map(float, c.rotation_exact)))},
+            "first_approximation": {"displacement_peak": points(c.first_peak),
+                                    "rotation_peak": dict(zip(rotations, map(float, c.rotation_first)))}}
+
+
+def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
+    """Per crank machine: peaks of the exact periodic solution beside the first approximation's."""
+    from rich.markup import escape
+
+    from foundation_calc.solvers.rigid_body.periodic import HARMONIC_TOLERANCE
+
+    amp = units.label("amplitude")
+    for c in report.cranks:
+        t = _table(f"{escape(c.name)}: exact periodic solution (harmonic balance, {c.harmonics} harmonics) and first"
+                   f" approximation, peak displacement [{amp}]",
+                   ("point", "exact x", "exact y", "exact z", "first x", "first y", "first z"), ())
+        for i, p in enumerate(report.motion.names):
+            t.add_row(escape(p), *(fmt(units.convert("amplitude", v), 5) for v in c.exact_peak[i]),
+                      *(fmt(units.convert("amplitude", v), 5) for v in c.first_peak[i]))
+        for col in t.columns[1:]:
+            col.justify = "right"
+        stdout().print(t)
+        capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
+                  f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
+        stdout().print(f"{escape(c.name)}: first approximation's error {c.error:.2g} (largest relative difference of the"
+                       f" peaks from the exact solution's){capped}; the limits judge the first approximation", soft_wrap=True)
+
+
+def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
+    """An amplitude and its phase, ``"3.543e-05 ∠28°"``; ``"0"`` for the solver's round-off (:func:`fmt_scaled`)."""
+    shown = fmt_scaled(units.convert("amplitude", abs(value)), units.convert("amplitude", scale), 4)
+    return shown if shown == "0" else f"{shown} ∠{np.degrees(np.angle(value)):.0f}°"
+
+
 def _table(title: str, columns, right=()):
+    """A table whose ``title`` may name units in brackets (``[mm]``): kept as text, not read as markup."""
+    import re
+
     from rich.table import Table
 
-    table = Table(title=title, title_justify="left")
+    table = Table(title=re.sub(r"(?<!\\)\[([^\]\s]*)\]", r"\\[\1]", title), title_justify="left")
     for col in columns:
         table.add_column(col, justify="right" if col in right else "left")
     return table
@@ -216,10 +267,10 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
     h = _table(f"Steady state per machine and order: amplitude [{amp}] and phase [°], u = A cos(nωt + phase)",
                ("machine", "order", "point", "x", "y", "z"), ("x", "y", "z"))
     for name, orders, U in zip(motion.machines, motion.orders, motion.displacement):
+        scale = float(np.max(np.abs(U), initial=0.0))  # the machine's largest amplitude: below ROUNDOFF of it is noise
         for k, n in enumerate(orders):
             for i, p in enumerate(motion.names):
-                cells = [f"{fmt(units.convert('amplitude', abs(U[i, d, k])), 4)} ∠{np.degrees(np.angle(U[i, d, k])):.0f}°"
-                         for d in range(3)]
+                cells = [_phasor(U[i, d, k], scale, units) for d in range(3)]
                 h.add_row(escape(name), str(n), escape(p), *cells)
     out.print(h)
     vel = units.label("velocity")
@@ -245,6 +296,7 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
             z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
         out.print(z)
         print_supports(report.zone_rows)
+    print_periodic_inertia(report, units)
     for w in report.code_warnings:
         out.print(f"note: {escape(w)}", soft_wrap=True)
     if report.amplitude_range is not None:

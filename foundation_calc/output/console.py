@@ -57,8 +57,9 @@ def keep_words_whole(table) -> None:
 
 @cache
 def stdout() -> Console:
-    """Console for results: full width when not a terminal (unless ``COLUMNS`` is set), and no
-    table cuts a word."""
+    """Console for results: tables at the terminal's width, or in a file or a pipe at the width
+    ``COLUMNS`` sets (else their natural width); a message in a file stays on one line; no table
+    cuts a word."""
     import os
     import sys
 
@@ -71,14 +72,22 @@ def stdout() -> Console:
             raise BrokenPipeError
 
         def print(self, *objects, **kwargs):
-            for item in objects:
-                if isinstance(item, Table):
-                    keep_words_whole(item)
+            """Print as :func:`stdout` says; the width is read at each call (``COLUMNS`` and the
+            stream may change between the calls of one process, e.g. under a test runner)."""
+            try:
+                terminal = self.file.isatty()
+            except (AttributeError, ValueError):  # a closed or bare stream
+                terminal = False
+            self.width = _stdout_width(terminal, os.environ.get("COLUMNS"))
+            tables = [item for item in objects if isinstance(item, Table)]
+            for item in tables:
+                keep_words_whole(item)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
+            if not terminal and not tables:
+                kwargs.setdefault("soft_wrap", True)  # a message stays one line in a file, for grep
             super().print(*objects, **kwargs)
 
-    width = _stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS"))
-    return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
+    return ResultConsole(highlight=False, width=_stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS")), emoji=False)  # ":name:" in user text stays text
 
 
 @cache

@@ -25,6 +25,9 @@ from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 #: as on it: coordinates are typed to the millimetre (a point on an edge or a corner is on the block).
 ON_BLOCK = 1e-3
 
+#: Largest crank radius over rod length λ = r/l of a plausible crank throw (real rods: λ 0.14-0.4).
+CRANK_RATIO = 0.5
+
 #: What each code of :func:`placement` says about a position, after its key and value.
 PLACEMENT_TEXTS = {
     1: "is more than {far:g} × the base's diagonal {size:.3g} m from O; was it typed in mm?",
@@ -115,8 +118,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         if repeated:
             raise ValueError(f"machine names must be distinct: {', '.join(repeated)}")
         for m in machines:
-            if not m.loads and m.unbalance is None:
-                raise ValueError(f"machine {m.name!r} needs [[machines.loads]] or [machines.unbalance]")
+            if not m.loads and m.unbalance is None and not m.cranks:
+                raise ValueError(f"machine {m.name!r} needs [[machines.loads]], [machines.unbalance] or [[machines.cranks]]")
         return machines
 
     @field_validator("points")
@@ -182,6 +185,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             found |= {f"machines[{i}].loads[{j}].at": ld.at for j, ld in enumerate(m.loads) if ld.at is not None}
             if m.unbalance is not None and m.unbalance.at is not None:
                 found[f"machines[{i}].unbalance.at"] = m.unbalance.at
+            found |= {f"machines[{i}].cranks[{j}].crank_centre": c.crank_centre for j, c in enumerate(m.cranks)}
         return found | {f"points[{k}].at": p.at for k, p in enumerate(self.points)}
 
     def related_findings(self, prefix: str, found: list) -> list:
@@ -193,8 +197,17 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         L, B = self.base
         codes = placement(list(positions.values()), L, B).tolist() if positions else []
         sizes = {"far": LENGTH_SCALE_FACTOR, "size": (L * L + B * B) ** 0.5, "x": L / 2.0, "y": B / 2.0}
-        return [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
-                for (key, value), code in zip(positions.items(), codes) if code] + stratum_remarks(self.soil, L, B)
+        found = [Remark(key, f"{key} = {list(value)} m " + PLACEMENT_TEXTS[code].format(**sizes))
+                 for (key, value), code in zip(positions.items(), codes) if code]
+        for i, m in enumerate(self.machines):
+            for j, c in enumerate(m.cranks):
+                lam = c.crank_radius / c.rod_length
+                if lam > CRANK_RATIO:
+                    found.append(Remark(f"machines[{i}].cranks[{j}].rod_length", (
+                        f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
+                        " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
+                        " as the crank radius, or the rod measured between other points?")))
+        return found + stratum_remarks(self.soil, L, B)
 
     def stable_model(self):
         """:meth:`model` of the scene as it is, for the checks.
@@ -227,11 +240,21 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         raise culprit_error(text, culprits, key, f"stiffen {key}, or lower the centre of mass (block.height, machines[].cog)")
 
     def _bodies(self, block=None, machine_cogs=None):
-        """(masses, cogs, central inertias) of the block and every machine (``block`` and
-        ``machine_cogs`` as :meth:`model` takes them)."""
+        """(masses, cogs, central inertias) of the block, every machine and every machine's cranks
+        (their time-averaged moving parts, moved with their machine; ``block`` and ``machine_cogs``
+        as :meth:`model` takes them)."""
+        import numpy as np
+
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
-        return ([m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines])
+        masses, centres, inertias = [m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines]
+        for machine, cog in zip(self.machines, cogs):
+            body = machine.crank_body()
+            if body is not None:
+                masses.append(body[0])
+                centres.append(body[1] + (np.asarray(cog, dtype=float) - np.asarray(machine.cog, dtype=float)))
+                inertias.append(body[2])
+        return masses, centres, inertias
 
     def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
         """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape

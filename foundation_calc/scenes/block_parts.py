@@ -118,8 +118,74 @@ class Unbalance(SceneModel):
         return self
 
 
+class MachineCrank(SceneModel):
+    """One throw (cylinder) of a crank machine: Krichever & Makarov's crank-slider mechanism placed
+    anywhere on the block (solvers.machines.crank_mechanism). The crank turns at the machine's
+    speed by the right-hand rule about ``shaft_axis``; the parts that do not move (frame, motor,
+    cylinders) are the machine's mass, cog and inertia."""
+
+    crank_centre: Vector = quantity("A", "m", "a point on the crankshaft axis [x, y, z] from O, in the throw's plane",
+                                    examples=[[0.0, -0.4, 3.0]])
+    shaft_axis: Vector = quantity("n", "-", "crankshaft direction (need not be a unit vector); the crank turns by the"
+                                  " right-hand rule about it", examples=[[0.0, 1.0, 0.0]])
+    slider_axis: Vector = quantity("s", "-", "direction from the crank centre along the slider's line towards the"
+                                   " slider, normal to shaft_axis (need not be a unit vector)", examples=[[0.0, 0.0, 1.0]])
+    crank_angle: float = quantity("α", "rad", "the throw's crank angle at t = 0 from its own top dead centre (pin towards"
+                                  " its own slider), positive about shaft_axis", 0.0, examples=[0.0])
+    crank_radius: float = quantity("r", "m", "crank radius (half the stroke)", gt=0, examples=[0.11])
+    rod_length: float = quantity("l", "m", "connecting rod length, crank pin to slider pin (> crank_radius)", gt=0,
+                                 examples=[0.5])
+    rod_mass: float = quantity("m", "kg", "connecting rod mass", ge=0, examples=[65.0])
+    rod_cog_to_crank_pin: float = quantity("l'", "m", "distance from the rod's centre of mass to the crank pin"
+                                           " (0 ... rod_length)", ge=0, examples=[0.15])
+    rod_radius_of_gyration: float = quantity(
+        "ρ", "m", "rod's radius of gyration about every axis through its centre of mass normal to it (slender: none"
+        " about its length)", ge=0, examples=[0.17],
+    )
+    slider_mass: float = quantity("m1", "kg", "mass moving with the slider (piston, piston rod, crosshead)", 0.0, ge=0,
+                                  examples=[140.0])
+    rotating_mass: float = quantity("m_r", "kg", "the crank's and counterweight's net unbalance (with rotating_radius)",
+                                    0.0, ge=0, examples=[0.0])
+    rotating_radius: float = quantity("r_r", "m", "radius of the net unbalance from the shaft axis", 0.0, ge=0,
+                                      examples=[0.0])
+    rotating_angle: float = quantity("β", "rad", "angle of the net unbalance from the crank pin, positive about"
+                                     " shaft_axis (a counterweight opposite the pin: π)", 0.0, examples=[0.0])
+
+    @model_validator(mode="after")
+    def _a_mechanism(self):
+        from foundation_calc.solvers.machines.crank_mechanism import PERPENDICULAR
+
+        n, s = self.shaft_axis, self.slider_axis
+        for key, v in (("shaft_axis", n), ("slider_axis", s)):
+            if math.hypot(*v) == 0.0:
+                raise ValueError(f"{key} must not be [0, 0, 0]: give a direction, e.g. [0, 1, 0]")
+        cos = sum(a * b for a, b in zip(n, s)) / (math.hypot(*n) * math.hypot(*s))
+        if abs(cos) > PERPENDICULAR:
+            raise ValueError(f"slider_axis {list(s)} must be normal to shaft_axis {list(n)} (their angle is"
+                             f" {math.degrees(math.acos(max(-1.0, min(1.0, cos)))):.4g}°, wanted 90°)")
+        if not self.rod_length > self.crank_radius:
+            raise ValueError(f"rod_length l = {self.rod_length:g} m must exceed crank_radius r = {self.crank_radius:g} m"
+                             " (the rod could not follow the crank)")
+        if self.rod_cog_to_crank_pin > self.rod_length:
+            raise ValueError(f"rod_cog_to_crank_pin l' = {self.rod_cog_to_crank_pin:g} m must lie on the rod"
+                             f" (0 ... rod_length = {self.rod_length:g} m)")
+        if (self.rotating_mass > 0.0) != (self.rotating_radius > 0.0):
+            raise ValueError("give rotating_mass [kg] and rotating_radius [m] together (or neither)")
+        if self.rod_mass + self.slider_mass + self.rotating_mass == 0.0:
+            raise ValueError("the throw has no moving mass: give rod_mass, slider_mass or rotating_mass [kg]")
+        return self
+
+    def throw(self):
+        """The solver's :class:`~foundation_calc.solvers.machines.crank_mechanism.CrankThrow`."""
+        from foundation_calc.solvers.machines.crank_mechanism import crank_throw
+
+        return crank_throw(self.crank_centre, self.shaft_axis, self.slider_axis, self.crank_angle, self.crank_radius,
+                           self.rod_length, self.rod_mass, self.rod_cog_to_crank_pin, self.rod_radius_of_gyration,
+                           self.slider_mass, self.rotating_mass, self.rotating_radius, self.rotating_angle)
+
+
 class BlockMachine(SpeedFields):
-    """A machine on the block: its mass properties, its own speed and its loads or unbalance."""
+    """A machine on the block: its mass properties, its own speed and its loads, unbalance or crank throws."""
 
     name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
     mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])
@@ -130,6 +196,10 @@ class BlockMachine(SpeedFields):
     )
     loads: list[MachineLoad] = quantity("-", "-", "the vendor's dynamic loads, one entry per order and phase", [])
     unbalance: Unbalance | None = quantity("-", "-", "a rotating unbalance by its balance quality grade", None)
+    cranks: list[MachineCrank] = quantity(
+        "-", "-", "crank mechanisms driven at the machine's speed, one per throw (cylinder): their moving parts'"
+        " mean mass is added to the machine's, their inertia forces are its loads", [],
+    )
     drive: Drive | None = quantity(
         "-", "-", "the motor that starts this machine (fcalc runup), as a crank scene's [drive]; without it the"
         " machine is run up along [operation]'s ramp", None,
@@ -164,23 +234,69 @@ class BlockMachine(SpeedFields):
         return 0.0 if u is None else u.rotor_mass * (u.balance_grade_mm_s * 1e-3 / self.omega_rad_s) ** 2
 
     def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
-        """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial); an
-        unbalance as two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt),
-        F = m_r G ω, with a, b a right-handed pair normal to the axis. ``inertial``: the load grows
-        as ω² when the speed changes (an unbalance: its eccentricity e = G/ω is the rotor's);
-        vendor loads keep the amplitudes the vendor gives."""
+        """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial): the
+        vendor's, the unbalance's (:meth:`unbalance_rows`) and the cranks' (:meth:`crank_rows`).
+        ``inertial``: the load grows as ω² when the speed changes (an unbalance: its eccentricity
+        e = G/ω is the rotor's; a crank's inertia forces); vendor loads keep the amplitudes the
+        vendor gives."""
         rows = [(ld.order, ld.force, ld.moment, ld.phase, ld.at or self.cog, False) for ld in self.loads]
-        if self.unbalance is not None:
-            u = self.unbalance
-            e = [c / math.hypot(*u.axis) for c in u.axis]
-            trial = (1.0, 0.0, 0.0) if abs(e[0]) < 0.9 else (0.0, 1.0, 0.0)
-            a = _unit(_cross(_cross(e, trial), e))
-            b = _cross(e, a)
-            F = u.rotor_mass * u.balance_grade_mm_s * 1e-3 * self.omega_rad_s
-            where = u.at or self.cog
-            rows += [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where, True),
-                     (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where, True)]
+        return rows + self.unbalance_rows() + self.crank_rows()
+
+    def unbalance_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
+        """The unbalance as two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt),
+        F = m_r G ω, with a, b a right-handed pair normal to the axis (none without an unbalance)."""
+        if self.unbalance is None:
+            return []
+        u = self.unbalance
+        e = [c / math.hypot(*u.axis) for c in u.axis]
+        trial = (1.0, 0.0, 0.0) if abs(e[0]) < 0.9 else (0.0, 1.0, 0.0)
+        a = _unit(_cross(_cross(e, trial), e))
+        b = _cross(e, a)
+        F = u.rotor_mass * u.balance_grade_mm_s * 1e-3 * self.omega_rad_s
+        where = u.at or self.cog
+        return [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where, True),
+                (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where, True)]
+
+    def crank_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
+        """The cranks' forcing harmonics Q_n (solvers.machines.crank_mechanism, Eq. (4)) as loads at
+        the machine's centre of mass (so that they move with it): per order, the real part of Q_n at
+        phase 0 and its imaginary part at phase π/2; the inertia forces ``inertial``, the moving
+        weight's moment not (none without cranks)."""
+        if not self.cranks:
+            return []
+        import numpy as np
+
+        from foundation_calc.solvers.constants import GRAVITY
+        from foundation_calc.solvers.machines.crank_mechanism import forcing_harmonics
+
+        fh = forcing_harmonics(self.crank_throws(), self.omega_rad_s, GRAVITY)
+        c = np.asarray(self.cog, dtype=float)
+        rows = []
+        for Q, inertial in ((fh.inertial, True), (fh.weight, False)):
+            for n, q in zip(fh.orders, Q):
+                for part, phase in ((q.real, 0.0), (q.imag, math.pi / 2.0)):
+                    if np.any(part != 0.0):
+                        F, M = part[:3], part[3:] - np.cross(c, part[:3])  # the moment about the cog
+                        rows.append((int(n), F.tolist(), M.tolist(), phase, self.cog, inertial))
         return rows
+
+    @property
+    def total_mass(self) -> float:
+        """The machine's mass with its cranks' moving parts (rods, sliders, rotating masses) [kg]."""
+        return self.mass + sum(c.rod_mass + c.slider_mass + c.rotating_mass for c in self.cranks)
+
+    def crank_throws(self) -> list:
+        """The cranks as the solver's throws (:meth:`MachineCrank.throw`)."""
+        return [crank.throw() for crank in self.cranks]
+
+    def crank_body(self):
+        """The cranks' moving parts as one body of their time-averaged mass properties: (mass [kg],
+        mean centre of mass [m] (3,), central inertia tensor [kg m²] (3, 3)), or None without cranks."""
+        if not self.cranks:
+            return None
+        from foundation_calc.solvers.machines.crank_mechanism import mean_mass_properties
+
+        return mean_mass_properties(self.crank_throws())
 
 
 def _cross(a, b) -> tuple[float, float, float]:

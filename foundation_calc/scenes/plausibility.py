@@ -384,6 +384,8 @@ KEYS: dict[str, str] = {
     # phases of loads and rotors
     "loads[].phase": "phase",
     "machines[].loads[].phase": "phase",
+    "machines[].cranks[].crank_angle": "phase",
+    "machines[].cranks[].rotating_angle": "phase",
     "extra_exciters[].phase": "phase",
     # speeds: a crank mechanism's, a machine's given by its loads (crank [operation], [[machines]]), a platform's exciter
     **_speeds("mechanism.", "crank_speed"),

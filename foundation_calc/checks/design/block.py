@@ -222,7 +222,7 @@ def _office(scene, model, L, B, m_b):
         ratios.append(s / limits.settlement)
         outcomes.append(np.where(s > limits.settlement, FAIL, PASS))
         reasons.append("settlement")
-    mu = m_b / sum(m.mass for m in scene.machines)
+    mu = m_b / sum(m.total_mass for m in scene.machines)
     ratios.append(limits.mass_ratio / mu)
     outcomes.append(np.where(mu < limits.mass_ratio, WARN, PASS))
     reasons.append("mass ratio")

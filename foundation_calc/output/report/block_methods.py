@@ -187,14 +187,14 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
 
 
 def _unbalances(scene) -> list[Paragraph]:
-    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``load_rows``): its
+    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``unbalance_rows``): its
     force F = m_r G ω, the pair a, b normal to the axis and the sense in which it turns."""
     out = []
     for machine in scene.machines:
         u = machine.unbalance
         if u is None:
             continue
-        a, b = (np.array(row[1]) for row in machine.load_rows() if row[5])
+        a, b = (np.array(row[1]) for row in machine.unbalance_rows())
         F = float(np.linalg.norm(a))
         e = np.array(u.axis, dtype=float) / np.linalg.norm(u.axis)
         out.append(Paragraph(
@@ -202,6 +202,31 @@ def _unbalances(scene) -> list[Paragraph]:
             f" × {figure(machine.omega_rad_s, 4)} rad/s = {figure(F, 4)} N, turning about its axis e = {vec_m(e)}"
             f" in the positive sense (right-hand rule): F(t) = F (a cos ωt + b sin ωt), a = {vec_m(a / F)}, b = e × a = {vec_m(b / F)},"
             f" acting at {vec_m(u.at or machine.cog)} m. In Q_n: F a at phase lag 0°, F b at 90°."))
+    return out
+
+
+def _cranks(scene, periodic) -> list[Paragraph]:
+    """Each machine's crank throws: what they add to M and Q_n (scenes.block_parts, ``crank_body``,
+    ``crank_rows``) and the exact periodic solution's check of the first approximation (the
+    ``periodic_inertia`` entries of the amplitudes document)."""
+    errors = {c["machine"]: c for c in periodic or ()}
+    out = []
+    for machine in scene.machines:
+        if not machine.cranks:
+            continue
+        m, cog, _ = machine.crank_body()
+        cog = np.where(np.abs(cog) < 1e-9 * np.abs(cog).max(), 0.0, cog)  # round-off of a symmetric arrangement
+        text = (f"{machine.name}: {len(machine.cranks)} crank throw(s) ([KM]'s crank-slider mechanism, each rod as m/2 at"
+                f" C1 ± ρ e, the slider and any rotating mass as points): moving mass {figure(m, 4)} kg, mean centre of mass"
+                f" {vec_m(cog)} m, added to M as a body of the time-averaged inertia; Q_n = the inertia forces"
+                " -(Σ m r'', Σ m r × r'') of the throws turning at ω on a fixed block and the moving weight's moment,"
+                " Fourier harmonics of one revolution.")
+        found = errors.get(machine.name)
+        if found is not None:
+            text += (f" Exact periodic solution with the angle-dependent mass matrix M(ωt) (harmonic balance, {found['harmonics']}"
+                     f" harmonics): the first approximation judged here differs from it by at most"
+                     f" {figure(100.0 * found['first_approximation_error'], 2)} % of a peak.")
+        out.append(Paragraph(text))
     return out
 
 
@@ -294,7 +319,7 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6
     blocks.append(_modes(solve, dominant))
     if amplitudes is not None and not amplitudes.get("resonant", False):
-        blocks += _unbalances(scene)
+        blocks += _unbalances(scene) + _cranks(scene, amplitudes.get("periodic_inertia"))
         forcing, response = _harmonics(solve)
         blocks.append(forcing)
         if dependent:

@@ -267,7 +267,7 @@ def acceleration(U: np.ndarray, exc: Excitation) -> np.ndarray:
     return velocity(velocity(U, exc), exc)
 
 
-def _series_peak(Z: np.ndarray, orders: np.ndarray) -> np.ndarray:
+def series_peak(Z: np.ndarray, orders: np.ndarray) -> np.ndarray:
     """Peak over one period of Σ_n Re(Z_n e^{inφ}) for each row of Z (..., H); |Z_n| for one order."""
     from foundation_calc.solvers.numerics.trig_series import peak
 
@@ -293,7 +293,7 @@ def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
     phases of spacing Δφ: the largest sample s is a lower bound of the peak, and the peak is at
     most s + Σ n²|Z_n| Δφ²/8 (within Δφ/2 of a sample |q| falls by at most max|q''| Δφ²/8) and at
     most Σ|Z_n|. Only the rows whose upper bound reaches the largest lower bound of their block
-    can hold the largest peak; their peaks are searched exactly (:func:`_series_peak`, as the
+    can hold the largest peak; their peaks are searched exactly (:func:`series_peak`, as the
     single block's), so the result is the single block's to round-off.
 
     Returns (N,) the largest peak and (N,) its row index.
@@ -315,7 +315,7 @@ def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
         lower, upper = lower + sampled, upper + np.minimum(size.sum(-1), sampled + bend)
     # rows in block order; every block keeps at least the row of its largest lower bound
     block, row = np.nonzero(upper >= lower.max(axis=-1, keepdims=True))
-    exact = sum(_series_peak(Z[block, row], orders) for Z, orders in parts)
+    exact = sum(series_peak(Z[block, row], orders) for Z, orders in parts)
     starts = np.flatnonzero(np.diff(block, prepend=-1))
     largest = np.maximum.reduceat(exact, starts)
     top = np.flatnonzero(exact == np.repeat(largest, np.diff(starts, append=len(block))))
@@ -351,7 +351,7 @@ def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, imp
         rot.append(R)
         for name, series in (("peak", U), ("velocity_peak", V), ("acceleration_peak", A), ("rotation_peak", R)):
             if name in found:
-                found[name] = found[name] + _series_peak(series, exc.orders)
+                found[name] = found[name] + series_peak(series, exc.orders)
         vsq = vsq + (np.abs(V) ** 2).sum(-1) / 2.0
         usq = usq + (np.abs(U) ** 2).sum(-1) / 2.0
         asq = asq + (np.abs(A) ** 2).sum(-1) / 2.0
@@ -379,5 +379,6 @@ __all__ = [
     "point_motion",
     "resonances",
     "resonant",
+    "series_peak",
     "velocity",
 ]

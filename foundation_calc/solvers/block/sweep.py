@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.solvers.block.model import BlockModel, Excitation
-from foundation_calc.solvers.block.response import BlockModes, _series_peak, complex_amplitudes, point_motion
+from foundation_calc.solvers.block.response import BlockModes, series_peak, complex_amplitudes, point_motion
 from foundation_calc.solvers.rigid_body.kinematics import point_maps
 
 
@@ -68,9 +68,9 @@ def speed_sweep(model: BlockModel, modes: BlockModes, excitations, swept: int, o
     V, A = U * rate, U * rate**2
     p = modes.frequencies
     margin = np.abs(omega[:, None, None] * exc.orders[None, :, None] - p) / p
-    return SpeedSweep(omega, peak + _series_peak(U, exc.orders), velocity_peak + _series_peak(V, exc.orders),
+    return SpeedSweep(omega, peak + series_peak(U, exc.orders), velocity_peak + series_peak(V, exc.orders),
                       np.sqrt(usq + (np.abs(U) ** 2).sum(-1) / 2.0), np.sqrt(vsq + (np.abs(V) ** 2).sum(-1) / 2.0),
-                      acceleration_peak + _series_peak(A, exc.orders), np.sqrt(asq + (np.abs(A) ** 2).sum(-1) / 2.0),
+                      acceleration_peak + series_peak(A, exc.orders), np.sqrt(asq + (np.abs(A) ** 2).sum(-1) / 2.0),
                       margin)
 
 

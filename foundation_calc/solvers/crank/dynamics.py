@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.mechanism import CrankDesign, rod_angle_cosine
 
 
 @dataclass(frozen=True)
@@ -75,9 +75,7 @@ def mechanism_motion(phi, omega, r, l, l1) -> MechanismMotion:
     lam = r / l
     l2 = l - l1
     s, co = np.sin(phi), np.cos(phi)
-    c = np.sqrt(1.0 - lam * lam * s * s)
-    dc = -lam * lam * s * co / c
-    ddc = -lam * lam * (np.cos(2.0 * phi) + lam * lam * s**4) / c**3
+    c, dc, ddc = rod_angle_cosine(phi, lam)
     w, w2 = omega, omega * omega
     p = np.array([-(l2 / l) * r * s, r * co + l1 * c])  # v without the constant -a
     dp = w * np.array([-(l2 / l) * r * co, -r * s + l1 * dc])
