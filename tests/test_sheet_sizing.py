@@ -78,3 +78,16 @@ def test_a_misspelt_range_is_an_invalid_scene_even_when_the_scene_passes(tmp_pat
     assert raised.value.problems[0].field == "report.design" and "block.lenght" in str(raised.value)
     path.write_text(passing.read_text(encoding="utf-8") + '\n[report]\ndesign = ["block.length=4:8"]\n', encoding="utf-8")
     assert "Sizing" not in _text(_conclusion(_sheet(path)))  # a passing scene is not sized
+
+
+@pytest.mark.parametrize("name, ranges, says", [
+    ("frame_saw", '["block.length=3:8"]', "[foundation.block]"),
+    ("block_two_machines", '["piles.length=10:20"]', "[piles]"),
+])
+def test_a_range_the_scene_cannot_take_is_an_invalid_scene_even_when_it_passes(tmp_path, name, ranges, says):
+    """A passing crank scene without [foundation.block], a block without [piles]: fcalc design's own message."""
+    path = tmp_path / f"{name}.toml"
+    path.write_text((CONFIGS / f"{name}.toml").read_text(encoding="utf-8") + f"\n[report]\ndesign = {ranges}\n", encoding="utf-8")
+    with pytest.raises(SceneError) as raised:
+        _sheet(path)
+    assert raised.value.problems[0].field == "report.design" and says in str(raised.value)

@@ -27,18 +27,21 @@ def design_request(loaded, source: str) -> tuple[list[str], float | None] | None
     Raises
     ------
     SceneError
-        ``report.design`` names a key that cannot vary, a range that is not KEY=LO:HI, a bound
-        outside the key's plausible range, or a grid too large (the message of ``fcalc design``).
+        ``report.design`` names a key that cannot vary (or not in this scene: a crank scene without
+        ``[foundation.block]``, ``piles.*`` without ``[piles]``), a range that is not KEY=LO:HI, a
+        bound outside the key's plausible range, or a grid too large (the message of ``fcalc design``).
     """
     options = getattr(loaded, "report", None)
     if options is None or not options.design:
         return None
-    from foundation_calc.checks.design.apply import VaryError
+    from foundation_calc.checks.design.apply import VaryError, applied_document
     from foundation_calc.checks.design.grid import grid, parse_range
     from foundation_calc.errors import SceneError
 
     try:
-        grid(loaded.kind, [parse_range(text) for text in options.design], options.design_step)
+        ranges = [parse_range(text) for text in options.design]
+        grid(loaded.kind, ranges, options.design_step)
+        applied_document(loaded.model_dump(exclude_none=True), {r.key: r.low for r in ranges})  # keys the scene has
     except VaryError as exc:
         raise SceneError(source, [(FIELD, str(exc))]) from None
     return list(options.design), options.design_step
