@@ -59,7 +59,7 @@ def shipped_sheets() -> dict:
     import warnings
 
     from foundation_calc.api.options import display_units
-    from foundation_calc.api.report import SHEET_UNITS
+    from foundation_calc.api.report import SHEET_UNITS, sheet_sizing
     from foundation_calc.output.report import html, markdown, pdf
     from foundation_calc.output.report.documents import scene_sheet
 
@@ -68,7 +68,7 @@ def shipped_sheets() -> dict:
     for path in sorted(CONFIGS.glob("*.toml")):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # the plausibility warnings some shipped scenes carry
-            sheet, _ = scene_sheet(path, "fcalc report", units, figures=False, fit_units=True)
+            sheet, _ = scene_sheet(path, "fcalc report", units, figures=False, fit_units=True, size=sheet_sizing)
         out[path.stem] = {"sheet": sheet, "md": markdown.render(sheet, []), "html": html.render(sheet),
                           "typ": pdf.source(sheet)[0]}
     return out

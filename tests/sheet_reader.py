@@ -99,10 +99,12 @@ class _HTMLSheet(HTMLParser):
             self.in_chain = True
         elif tag == "sup" and self.text is not None:
             self.text.append("^{")  # fcalc's plain form of an exponent
+        elif tag == "sub" and self.text is not None:
+            self.text.append("_")  # and of a subscript
 
     def handle_endtag(self, tag):
-        if tag == "sup" and self.text is not None:
-            self.text.append("}")
+        if tag in ("sup", "sub") and self.text is not None:
+            self.text.append("}" if tag == "sup" else "")
             return
         text = "".join(self.text or ())
         if tag == "h2":
@@ -140,7 +142,7 @@ def read_html(text: str) -> Printed:
 # --------------------------------------------------------------------------- typst source
 
 _LITERAL = re.compile(r'"((?:[^"\\]|\\.)*)"')
-#: A piece of text: a string literal, or a code block of literals and superscripts.
+#: A piece of text: a string literal, or a code block of literals, superscripts and subscripts.
 _TEXT = re.compile(r'\{ (?:[^{}"]|"(?:[^"\\]|\\.)*")* \}|"(?:[^"\\]|\\.)*"')
 
 
@@ -149,11 +151,12 @@ def _typst_string(literal: str) -> str:
 
 
 def _typst_text(piece: str) -> str:
-    """A text piece as plain text, a superscript as ``^{…}`` (fcalc's plain form)."""
+    """A text piece as plain text, a superscript as ``^{…}`` and a subscript as ``_…`` (fcalc's plain form)."""
     if not piece.startswith("{"):
         return _typst_string(piece[1:-1])
-    parts = re.findall(r'(super\()?"((?:[^"\\]|\\.)*)"', piece)
-    return "".join("^{" + _typst_string(t) + "}" if sup else _typst_string(t) for sup, t in parts)
+    parts = re.findall(r'(super\(|sub\()?"((?:[^"\\]|\\.)*)"', piece)
+    marks = {"super(": "^{{{}}}", "sub(": "_{}", "": "{}"}
+    return "".join(marks[mark].format(_typst_string(t)) for mark, t in parts)
 
 
 def read_typst(text: str) -> Printed:

@@ -67,11 +67,11 @@ def test_block_sheet_has_its_methods_and_every_symbol_defined():
 
 
 def test_block_code_zones_are_the_checks():
-    from foundation_calc.output.report.block_methods import block_sections_blocks
+    from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
 
     scene = load_scene(CONFIGS / "block_fan_torsion_near_speed.toml")
     doc = _amplitudes(scene)
-    blocks = block_sections_blocks(scene, doc)
+    blocks = block_sections_blocks(scene, doc, POINT_UNITS)
     found = next(b for b in blocks if getattr(b, "title", "").startswith("Code zone"))
     assert [(r[0], r[1], r[3], r[5], r[6], r[7].lower()) for r in found.rows] == [
         (p["point"], p["governing"], p["velocity_zone"], p["displacement_zone"], p["zone"], p["verdict"])

@@ -216,13 +216,14 @@ def test_block_soil_chains_end_in_the_solvers_springs(tmp_path, method, embedmen
 
 
 def test_a_power_with_decimals_prints_whole():
-    """r**2.45 prints r^2.45, not r²·.45 (Pais & Kausel's K_ry and K_t have such powers)."""
+    """r**2.45 prints r^{2.45} (fcalc's plain exponent, typeset in the PDF), not r²·.45 (Pais & Kausel's
+    K_ry and K_t have such powers)."""
     from foundation_calc.output.report.handcalc import Chain
 
     chain = Chain("")
     chain.given("r", 2.0, "-", "ratio")
     chain.step("K", "4.25*r**2.45 + r**2", "-", "[PK]", "a spring")
-    assert chain.rows[-1][1] == "4.25·r^2.45 + r²"
+    assert chain.rows[-1][1] == "4.25·r^{2.45} + r²"
 
 
 def test_each_mode_returns_its_own_frequency_from_the_printed_springs(tmp_path):

@@ -126,7 +126,7 @@ def assert_every_symbol_defined(section) -> None:
                 continue
             for compound in sorted((d for d in defined if any(c in d for c in "()+,")), key=len, reverse=True):
                 formula = formula.replace(compound, " ")  # symbols such as (c31+c41), K_z,s
-            names = set(formula.replace("·", " ").replace("√", " ").replace(", ", " ").translate(str.maketrans("()/+-²³⁴⁵^¼½", "            ")).split())
+            names = set(formula.replace("·", " ").replace("√", " ").replace(", ", " ").translate(str.maketrans("()/+-²³⁴⁵^¼½{}", "              ")).split())
             functions = {"π", "max", "min", "abs"}
             assert {n for n in names if not n.replace(".", "").isdigit() and n not in functions} <= defined, (chain.title, formula)
 

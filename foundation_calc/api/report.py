@@ -42,6 +42,21 @@ def check_output(path: Path, hint: str) -> None:
         raise UsageError(f"{', '.join(missing)} not installed: {INSTALL_HINT}", hint)
 
 
+def sheet_sizing(path: Path, vary: list[str], step: float | None) -> tuple[dict, int]:
+    """What a sheet prints of ``fcalc design`` (:mod:`foundation_calc.output.report.sizing`): the
+    ``--json`` document and exit code of sizing the scene at ``path`` over ``vary`` by ``step`` [m];
+    a range design cannot search is the scene's ``report.design`` error (exit 3)."""
+    from foundation_calc.api.design import design
+    from foundation_calc.errors import SceneError, UsageError
+    from foundation_calc.output.report.sizing import FIELD
+
+    try:
+        found = design(path, vary=vary, step=step)
+    except UsageError as exc:
+        raise SceneError(str(path), [(FIELD, str(exc))]) from None
+    return found.to_dict(), int(found.exit_code)
+
+
 def report(scene, *, output: str | os.PathLike | None = None, exact: bool = False, units: list[str] | None = None,
            validation: bool = False, command: str | None = None) -> SheetResult:
     """Write the calculation sheet of a scene: the verdict of every check ``fc.check`` runs on it,
@@ -95,7 +110,7 @@ def report(scene, *, output: str | os.PathLike | None = None, exact: bool = Fals
     shown = display_units(units, SHEET_UNITS)
     loaded = scene_of(scene)
     sheet, checked = scene_sheet(loaded.path, command or f"foundation_calc.report({loaded.source!r})", shown, exact,
-                                 fit_units=not chosen_amplitude(units))
+                                 fit_units=not chosen_amplitude(units), size=sheet_sizing)
     if validation:
         from foundation_calc.output.report.validation import validation_section
         from foundation_calc.validation.cases import run_record

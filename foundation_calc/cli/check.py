@@ -56,6 +56,7 @@ def _write_sheets(scenes, folder: Path, shown, fit_units: bool) -> None:
     order they were checked.
     """
     from foundation_calc.api.options import writing
+    from foundation_calc.api.report import sheet_sizing
     from foundation_calc.cli.report import command_line
     from foundation_calc.errors import UsageError
     from foundation_calc.output.report import write_sheet
@@ -72,7 +73,7 @@ def _write_sheets(scenes, folder: Path, shown, fit_units: bool) -> None:
         path = Path(scene.source)
         used[path.stem] = used.get(path.stem, 0) + 1
         suffix = "" if used[path.stem] == 1 else f"-{used[path.stem]}"
-        sheet, _ = scene_sheet(path, command_line(), shown, fit_units=fit_units)
+        sheet, _ = scene_sheet(path, command_line(), shown, fit_units=fit_units, size=sheet_sizing)
         target = folder / f"{path.stem}{suffix}.pdf"
         with writing(target, "--report-dir"):
             write_sheet(sheet, target)

@@ -128,7 +128,7 @@ def plot_sweep(sweep, path, units, name: str) -> None:
     ax.set_xlabel(f"speed of {sweep.machine} [{units.label('speed')}]")
     ax.set_ylabel(f"largest peak displacement over G and the points [{units.label('amplitude')}]")
     title(ax, f"{name}: sweep of {sweep.machine}'s speed ({_others(sweep)})\nshaded: the detuning band of each judged"
-          f" critical speed p_j / n ([limits] detuning = {bands_text(sweep.detuning)}); grey: order 1, not judged")
+          f" critical speed $p_j/n$ ([limits] detuning = {bands_text(sweep.detuning)}); grey: order 1, not judged")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
     save(fig, path)

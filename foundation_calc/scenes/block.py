@@ -17,7 +17,7 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
-from foundation_calc.scenes.project import Project, Requirements
+from foundation_calc.scenes.project import Project, Requirements, SheetOptions
 from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
 from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 
@@ -104,6 +104,10 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     limits: BlockLimits = BlockLimits()
     operation: BlockOperation | None = quantity(
         "-", "-", "run-up and run-down times of the machines (fcalc runup); optional", None
+    )
+    report: SheetOptions | None = quantity(
+        "-", "-", "what the calculation sheet adds: design, the ranges over which the sheet of a failing scene"
+        " sizes the block (fcalc design); optional", None
     )
 
     @field_validator("machines")

@@ -28,7 +28,7 @@ from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
 from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
-from foundation_calc.scenes.project import Project, Requirements
+from foundation_calc.scenes.project import Project, Requirements, SheetOptions
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 from foundation_calc.solvers.soil.lysmer import lysmer_springs
@@ -282,6 +282,10 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     drive: Drive | None = None
     points: list[Point] = quantity(
         "-", "-", "points whose displacement, velocity and acceleration amplitudes are checked", []
+    )
+    report: SheetOptions | None = quantity(
+        "-", "-", "what the calculation sheet adds: design, the ranges over which the sheet of a failing scene"
+        " sizes the block (fcalc design); optional", None
     )
 
     @field_validator("points")

@@ -90,6 +90,22 @@ class Requirements(SceneModel):
     )
 
 
+class SheetOptions(SceneModel):
+    """The ``[report]`` table of a scene that ``fcalc design`` sizes: what its calculation sheet adds."""
+
+    design: list[str] = Field(
+        default_factory=list, max_length=5,
+        description="- [-]: ranges KEY=LO:HI [m] of fcalc design --vary (block.length, block.width, block.height,"
+        " piles.length, piles.diameter); the sheet of a scene that fails prints the cheapest design over them"
+        " that passes every check (its values and worst margin), or says that none does",
+        examples=[["block.length=4:8", "block.width=3:7"]],
+    )
+    design_step: float | None = Field(
+        None, gt=0, description="s [m]: grid step of every range of design (fcalc design --step; default 0.1 m)",
+        examples=[0.25],
+    )
+
+
 def office_file(scene_path: str | Path) -> Path | None:
     """The ``fcalc.toml`` nearest to the scene: in its folder or the first parent that has one."""
     folder = Path(scene_path).resolve().parent

@@ -21,10 +21,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.block_soil import block_soil_blocks, order_springs_table, orders_of
 from foundation_calc.output.report.handcalc import Definitions
 from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure, phased
+from foundation_calc.output.report.numbers import column, figure, one_notation, phased
 
 COORDINATES = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
 DIRECTIONS = ("x", "y", "z")
@@ -126,13 +127,14 @@ def _rates(solve: BlockSolve, points, count: int) -> list[tuple[np.ndarray, np.n
 def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
     """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
     entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0,
-    and each matrix's column is in one notation (:func:`~.numbers.column`)."""
-    rows = []
-    for key, matrix in matrices:
-        scale = np.abs(matrix).max() or None
-        shown = [column([float(v) for v in matrix[:, j]], 4, scale) for j in range(len(coordinates))]
-        for i, coordinate in enumerate(coordinates):
-            rows.append((f"{key}, row {coordinate}", *(entries[i] for entries in shown), units[key][i]))
+    and each column of the table, every matrix's rows in it, is in one notation
+    (:func:`~.numbers.one_notation`)."""
+    scales = [np.abs(matrix).max() or None for _, matrix in matrices]
+    shown = [one_notation([float(v) for _, matrix in matrices for v in matrix[:, j]], 4,
+                          [scale for scale, (_, matrix) in zip(scales, matrices) for _ in matrix[:, j]])
+             for j in range(len(coordinates))]
+    rows = [(f"{key}, row {coordinate}", *(entries[m * len(coordinates) + i] for entries in shown), units[key][i])
+            for m, (key, _) in enumerate(matrices) for i, coordinate in enumerate(coordinates)]
     return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
 
 
@@ -251,26 +253,47 @@ def _zones(code: dict, names, rms: np.ndarray, rms_u: np.ndarray) -> tuple:
     return (found, *zone_tables(code), *support_blocks(code))
 
 
-def _points(solve: BlockSolve, names, points, accelerations: bool) -> Table:
-    """The points' peaks and r.m.s. velocity; with ``accelerations`` (the scene limits them) also
-    the peak and r.m.s. acceleration, a_n = −(nω)² u_P,n."""
+def _points(solve: BlockSolve, names, points, accelerations: bool, units: DisplayUnits) -> Table:
+    """The points' peaks and r.m.s. velocity in the sheet's ``units`` (those of its Checks table);
+    with ``accelerations`` (the scene limits them) also the peak and r.m.s. acceleration,
+    a_n = −(nω)² u_P,n."""
     displacement, velocity, rms, _ = point_values(solve, points)
     labels = [(name, d) for name in names for d in DIRECTIONS]
-    values = [(displacement, 1e6), (velocity, 1e3), (rms, 1e3)]
-    head = ["point", "direction", "peak displacement [µm]", "peak velocity [mm/s]", "v_rms [mm/s]"]
+    values = [(displacement, "amplitude"), (velocity, "velocity"), (rms, "velocity")]
+    head = ["point", "direction", f"peak displacement [{units.amplitude}]", f"peak velocity [{units.velocity}]",
+            f"v_rms [{units.velocity}]"]
     title = "Points: u_P = T_P Z; peaks of each machine's series added; v_rms = √(Σ |nω u_P,n|²/2)"
     if accelerations:
-        values += [(a, 1.0) for a in acceleration_values(solve, points)]
-        head += ["peak acceleration [m/s²]", "a_rms [m/s²]"]
+        values += [(a, "acceleration") for a in acceleration_values(solve, points)]
+        head += [f"peak acceleration [{units.acceleration}]", f"a_rms [{units.acceleration}]"]
         title += "; a_rms = √(Σ |(nω)² u_P,n|²/2)"
-    cols = [column(list(v.ravel() * scale), 3) for v, scale in values]
+    cols = _one_notation_per_quantity([([units.convert(quantity, float(x)) for x in v.ravel()], quantity) for v, quantity in values])
     rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
     return table(title, tuple(head), rows, (False, False, *[True] * len(values)))
 
 
-def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
+def _one_notation_per_quantity(columns: list[tuple[list[float], str]]) -> list[list[str]]:
+    """Each column's values at 3 figures, the columns of one quantity (a peak and an r.m.s.
+    velocity) in one notation together (:func:`~.numbers.column`)."""
+    shown: dict[str, list[str]] = {}
+    for quantity in dict.fromkeys(q for _, q in columns):
+        shown[quantity] = column([x for values, q in columns if q == quantity for x in values], 3)
+    out, used = [], dict.fromkeys(shown, 0)
+    for values, quantity in columns:
+        out.append(shown[quantity][used[quantity]:used[quantity] + len(values)])
+        used[quantity] += len(values)
+    return out
+
+
+#: Units of the Points table when the caller names none: those the sheet showed before it took its
+#: own (displacements in µm, velocities in mm/s).
+POINT_UNITS = DisplayUnits(amplitude="µm", velocity="mm/s")
+
+
+def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -> tuple:
     """The 6-DOF calculation of a block scene as sheet blocks (the ``amplitudes`` document gives
-    the modes' names and whether a steady state exists)."""
+    the modes' names and whether a steady state exists; ``units``, the sheet's, those of the points'
+    peaks)."""
     model = scene.model()
     excitations = scene.excitations()
     dependent = scene.soil.frequency_dependent and amplitudes is not None
@@ -305,7 +328,8 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
         names = ["G", *(p.name for p in scene.points)]
         points = [model.cog, *(p.at for p in scene.points)]
         limits = scene.limits
-        blocks.append(_points(solve, names, points, limits.acceleration is not None or limits.acceleration_rms is not None))
+        blocks.append(_points(solve, names, points, limits.acceleration is not None or limits.acceleration_rms is not None,
+                              units))
         if amplitudes.get("code"):
             blocks += _zones(amplitudes["code"], names, *point_values(solve, points)[2:])
     blocks.append(Definitions({
@@ -324,5 +348,5 @@ def block_sections_blocks(scene, amplitudes: dict | None) -> tuple:
     return tuple(blocks)
 
 
-__all__ = ["BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
+__all__ = ["POINT_UNITS", "BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
            "point_values"]

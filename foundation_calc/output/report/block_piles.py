@@ -82,7 +82,7 @@ def group_blocks(scene, model) -> list:
             " interaction factors of [DG] (α_v = √(r0/S) e^{−(β+i)ωS/V_s}; horizontal α(0°) cos²θ + α(90°) sin²θ,"
             " α(0°) at V_La = 3.4 V_s/(π(1 − ν))), A_ij = α(S_ij), the head forces are P = K_1 A⁻¹ u in each direction"
             " and the cap's springs K = Σ Dᵀ K_1 A⁻¹ D (a linear solve, not a hand calculation), plus each pile's own"
-            " K_MM, K_HM and K_T. At frequency ω each single-pile spring is the static one times its Winkler shape χ^p"
+            " K_MM, K_HM and K_T. At frequency ω each single-pile spring is the static one times its Winkler shape χ^{p}"
             " ([MG]); the dashpots C = Im K(ω)/ω, their symmetric part kept positive semi-definite. Efficiency at rest:"
             f" η_x = {rows[0].efficiency['x']:.3g}, η_z = {rows[0].efficiency['z']:.3g} (group over n single piles).")
     out = [Paragraph(text),

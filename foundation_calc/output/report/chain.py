@@ -26,9 +26,9 @@ FORMULAS = {
     "integration": "the time integration stated under Start-up and run-down (its passages' peaks, the motor's torques)",
     "harmonic balance": "the 6-DOF verification's harmonic balance stated under its table (the printed value)",
     "block peak": "Σ over machines of max over one revolution of |Σ_n Re(u_P,n e^{i n ω t})|, u_P,n = Z_u,n + Z_θ,n × r_P",
-    "block rms": "√(Σ over machines and orders of |Ω^k u_P,n|²/2), k = 1 for a velocity, 2 for an acceleration",
-    "crank peak": "max over one revolution of |Σ_n Re((nω)^k Z_n e^{i nωt})| of the point's x + height·θ or y + horizontal·θ",
-    "crank rms": "√(Σ_n |(nω)^k u_P,n|²/2) of the point's x + height·θ or y + horizontal·θ",
+    "block rms": "√(Σ over machines and orders of |Ω^{k} u_P,n|²/2), k = 1 for a velocity, 2 for an acceleration",
+    "crank peak": "max over one revolution of |Σ_n Re((nω)^{k} Z_n e^{i nωt})| of the point's x + height·θ or y + horizontal·θ",
+    "crank rms": "√(Σ_n |(nω)^{k} u_P,n|²/2) of the point's x + height·θ or y + horizontal·θ",
 }
 
 #: The cell of a check row of the Checks table.

@@ -95,8 +95,11 @@ def _limit_advice(doc: dict, units) -> list[str]:
     ]
 
 
-def conclusion_section(runs, documents: dict, units, note: str | None = None, unbracketed: bool = False) -> Section:
-    """The verdict in words, what to change on a failure, and the scene's own note on its data."""
+def conclusion_section(runs, documents: dict, units, note: str | None = None, unbracketed: bool = False,
+                       sizing: tuple = ()) -> Section:
+    """The verdict in words, what to change on a failure (with ``sizing``, the blocks of the sizing
+    the scene asks for, :func:`~foundation_calc.output.report.sizing.sizing_blocks`), and the
+    scene's own note on its data."""
     verdict = scene_verdict(runs)
     failing = [run for run in runs if run.verdict == "fail"]
     warning = [run for run in runs if run.verdict == "warn"]
@@ -125,6 +128,7 @@ def conclusion_section(runs, documents: dict, units, note: str | None = None, un
         if not advice:
             advice = [check_reason(run, units)]
         blocks += [Paragraph(f"{run.check} ({run.verdict.upper()}): {a}") for a in advice]
+    blocks += sizing
     if note:
         blocks.append(Paragraph(f"The scene file says of its data: \"{note}\""))
     return Section("Conclusion", tuple(blocks))

@@ -173,11 +173,12 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
             continue
         unit = "rad" if dof == "theta" else au
         scale = (lambda v: v) if unit == "rad" else (lambda v: units.convert("amplitude", v))
-        rows.append((f"{name} [{unit}]", *(scale(x) for x in h)))
+        shown_name = name.replace("theta", "θ")  # the paper's θ1, as the rest of the sheet writes it
+        rows.append((f"{shown_name} [{unit}]", *(scale(x) for x in h)))
         units_of_rows.append(unit)
         if not name.endswith("0"):  # the mean has a sign, not a phase
             phase_rows.append(
-                (name, *(f"{math.degrees(a['harmonics'][name]['phase']):.1f}" if x else "-" for (_, a), x in zip(shown, h)))
+                (shown_name, *(f"{math.degrees(a['harmonics'][name]['phase']):.1f}" if x else "-" for (_, a), x in zip(shown, h)))
             )
     methods = tuple(k.replace("_", " ") for k, _ in shown)
     blocks.append(table("Amplitude per harmonic (magnitude)", ("harmonic", *methods), _columns(rows, 3, units_of_rows)))

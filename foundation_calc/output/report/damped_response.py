@@ -142,12 +142,13 @@ def damped_solve(scene) -> DampedSolve:
 
 
 def _matrix_table(op: Operator, title: str) -> Table:
-    rows = []
+    """M, C, K of one operator (a bar over a mechanism's averaged ones), each column of the table in
+    one notation (:func:`~foundation_calc.output.report.block_methods.matrix_table`)."""
+    from foundation_calc.output.report.block_methods import matrix_table
+
     bar = "\u0304" if op.source.startswith("mechanism") else ""
-    for key, matrix in (("M", op.mass), ("C", op.damping), ("K", op.stiffness)):
-        for i, units in enumerate(UNITS[key]):
-            rows.append((f"{key}{bar}, row {DOF[i]}", *(figure(float(v), DIGITS, np.abs(matrix).max() or None) for v in matrix[i]), units))
-    return table(title, ("row", "x", "y", "θ", "units"), rows, (False, True, True, True, False))
+    named = [(f"{key}{bar}", matrix) for key, matrix in (("M", op.mass), ("C", op.damping), ("K", op.stiffness))]
+    return matrix_table(title, named, DOF, {f"{key}{bar}": units for key, units in UNITS.items()})
 
 
 def _harmonics_table(solve: DampedSolve, shown: list[int]) -> Table:

@@ -12,8 +12,9 @@ from foundation_calc.output.report.inputs import inputs_section
 from foundation_calc.output.report.methods import methods_section
 from foundation_calc.output.report.model import Section, Sheet
 from foundation_calc.output.report.references import cited, references_section
+from foundation_calc.output.report.sizing import Size, design_request, sizing_blocks
 from foundation_calc.output.report.title import page_header, sheet_title, title_block, title_section
-from foundation_calc.output.report.verdict import checks_section, summary_section
+from foundation_calc.output.report.verdict import checks_section, scene_verdict, summary_section
 
 #: A sheet whose displacement limits are all below this [m] shows displacements in µm, not mm, so
 #: its values and limits print as 1.35 µm ≤ 50.0 µm rather than 1.35·10⁻³ mm ≤ 0.0500 mm.
@@ -104,11 +105,13 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
 
 
 def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True,
-                fit_units: bool = False):
+                fit_units: bool = False, size: Size | None = None):
     """Load the scene at ``path``, run the checks ``fcalc check`` runs on it and return its sheet
     and the :class:`~foundation_calc.checks.batch.SceneRun` (whose exit code is ``fcalc check``'s);
     ``figures=False`` leaves the plots out (matplotlib's part of the time); ``fit_units``: the
-    displacement unit was not chosen (:func:`fitted_units`)."""
+    displacement unit was not chosen (:func:`fitted_units`); ``size`` sizes a failing scene that
+    asks for it in ``[report] design`` (:mod:`~foundation_calc.output.report.sizing`; without it
+    the sheet prints no sizing)."""
     from foundation_calc.checks.batch import SceneRun, run_checks
     from foundation_calc.output.check_report import result_document
     from foundation_calc.scenes.loading import load_scene_as_written
@@ -118,16 +121,20 @@ def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = Fal
     units = fitted_units(loaded, units) if fit_units else units
     runs = run_checks(loaded)
     raise_unjudged(runs, source)
+    request = design_request(loaded, source)
+    sizing = ()
+    if request is not None and size is not None and scene_verdict(runs) == "fail":
+        sizing = tuple(sizing_blocks(*size(path, *request)))
     warnings = tuple(loaded.plausibility_warnings())
     scene_run = SceneRun(source, loaded.kind, loaded.name, runs, loaded, warnings=warnings)
     documents = {run.check: result_document(run.check, run.report, loaded) for run in runs}
     title = title_block(path, loaded, command)
     note = not_real_note(path.read_text(encoding="utf-8", errors="replace"))
     sections = [title_section(title, note), summary_section(runs, warnings, units),
-                conclusion_section(runs, documents, units, note, unbracketed(loaded)), inputs_section(loaded, units, written),
+                conclusion_section(runs, documents, units, note, unbracketed(loaded), sizing), inputs_section(loaded, units, written),
                 assumptions_section(loaded, runs)]
     sections += _kind_sections(loaded, documents, units, exact, figures)
-    methods = methods_section(loaded, documents)
+    methods = methods_section(loaded, documents, units)
     sections += [methods] if methods is not None else []
     if "runup" in documents:
         from foundation_calc.output.report.runup_section import runup_section

@@ -6,7 +6,7 @@ import io
 
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.checks.resonance_rule import bands_text
-from foundation_calc.output.plots import mark_resonances, new_figure
+from foundation_calc.output.plots import LABEL_BOX, mark_resonances, new_figure
 from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure
 
@@ -68,7 +68,7 @@ def platform_modes_figure(doc: dict, detuning: float, units: DisplayUnits) -> Fi
         ax.axvspan(centre * (1 - detuning), centre * (1 + detuning), color="tab:red", alpha=0.12, linewidth=0)
         ax.axvline(centre, color="tab:red", linewidth=1.0)
         ax.text(centre, 0.97 - 0.16 * (level % 4), f" {label}", va="top", ha="left", fontsize=7,
-                transform=ax.get_xaxis_transform())
+                transform=ax.get_xaxis_transform(), bbox=LABEL_BOX)  # legible over the next modes' lines
     ax.axvline(units.convert("speed", omega), color="black", linewidth=1.5, label="operating speed")
     top = max(max(c for c, _ in modes), units.convert("speed", omega)) * 1.25
     ax.set_xlim(0.0, top)

@@ -43,7 +43,7 @@ SYMBOLS = {
     "C_xw": "C_x(ω)", "C_yw": "C_y(ω)", "C_rxw": "C_rx(ω)", "C_ryw": "C_ry(ω)", "eta_t": "η_t", "K_t0": "K_t,s", "r0t": "r0θ",
     "r0x": "r0ψx", "r0y": "r0ψy", "k_psi": "k_ψ", "c_psi": "c_ψ", "k_xi": "k_ξ", "c_zsp": "c_z,SP",
     "H_r": "H", "R_a": "R", "R_ry": "R_ry", "R_rx": "R_rx", "eta_ry": "η_ry", "eta_rx": "η_rx",
-    "Omega_dot": "Ω̇", "Omega_dot_r": "Ω̇_r", "Delta": "Δ", "beta": "β",
+    "Omega_dot": "Ω̇", "Omega_dot_r": "Ω̇_r", "Delta": "Δ", "beta": "β", "rho_G": "ρ_G", "muL": "μL",
 }
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
@@ -56,8 +56,8 @@ def _pretty(expression: str, names, times: str = "·") -> str:
     text = expression
     for power, shown in _POWERS.items():  # not **2 of **2.45
         text = re.sub(re.escape(power) + r"(?![0-9.])", shown, text)
-    text = re.sub(r"\*\*\(([0-9./]+)\)", r"^(\1)", text)
-    text = re.sub(r"\*\*([0-9.]+)", r"^\1", text)
+    text = re.sub(r"\*\*\(([0-9./]+)\)", r"^{\1}", text)  # an exponent in fcalc's plain form, typeset as one
+    text = re.sub(r"\*\*([0-9.]+)", r"^{\1}", text)
     text = text.replace("*", times).replace("/", " / ").replace("sqrt", "√")
     return _NAME.sub(lambda m: names(m.group()), text)
 

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import re
 from html import escape as _escape
 
 from foundation_calc.output.report.chain import chain_document
+from foundation_calc.output.report.markup import pieces
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 STYLE = """
@@ -24,18 +24,18 @@ table.signs { width: 100%; } table.signs td { height: 2.2em; } table.signs td:la
 """
 
 
-#: An exponent in fcalc's plain text: ``e^{i nωt}``.
-_EXPONENT = re.compile(r"\^\{([^{}]*)\}")
+#: The HTML of each piece of :func:`~foundation_calc.output.report.markup.pieces`.
+_TAGS = {"super": "<sup>{}</sup>", "sub": "<sub>{}</sub>", "text": "{}"}
 
 
-def escape(text: str) -> str:
-    """``text`` as HTML text, each exponent ``^{…}`` as a superscript (escaped like the rest).
+def escape(text: str, subscripts: bool = True) -> str:
+    """``text`` as HTML text, each exponent ``^{…}`` as a superscript and each subscript (``Z_n``;
+    not with ``subscripts=False``, a column of scene keys) as a subscript, escaped like the rest.
 
-    >>> escape("Re(Z e^{i nωt}) <b>")
-    'Re(Z e<sup>i nωt</sup>) &lt;b&gt;'
+    >>> escape("Re(Z_n e^{i nωt}) <b>")
+    'Re(Z<sub>n</sub> e<sup>i nωt</sup>) &lt;b&gt;'
     """
-    parts = _EXPONENT.split(text)
-    return "".join(_escape(p) if k % 2 == 0 else f"<sup>{_escape(p)}</sup>" for k, p in enumerate(parts))
+    return "".join(_TAGS[kind].format(_escape(p)) for kind, p in pieces(text, subscripts))
 
 
 #: A numeric cell longer than this may wrap; a table with a text cell longer than LONG_TEXT takes
@@ -44,15 +44,16 @@ NOWRAP_CHARS = 16
 LONG_TEXT = 40
 
 
-def _cell(text: str, numeric: bool) -> str:
+def _cell(text: str, numeric: bool, literal: bool = False) -> str:
     wraps = len(text) > NOWRAP_CHARS or "∠" in text  # a magnitude ∠ phase may break before its phase
     kind = (' class="n w"' if wraps else " class=n") if numeric else ""
-    return f"<td{kind}>{escape(text)}</td>"
+    return f"<td{kind}>{escape(text, not literal)}</td>"
 
 
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
-    body = "".join("<tr>" + "".join(_cell(c, n) for c, n in zip(row, t.numeric)) + "</tr>" for row in t.rows)
+    body = "".join("<tr>" + "".join(_cell(c, n, j in t.literal) for j, (c, n) in enumerate(zip(row, t.numeric))) + "</tr>"
+                   for row in t.rows)
     caption = f"<caption>{escape(t.title)}</caption>" if t.title else ""
     long = any(len(c) > LONG_TEXT for row in t.rows for c, n in zip(row, t.numeric) if not n)
     wide = ' class="signs"' if t.wide is not None else ' class="long"' if long else ""

@@ -137,13 +137,13 @@ def inputs_section(scene: BaseModel, units: DisplayUnits, written: dict[str, str
             groups = [(f"[[{name}]] {i + 1}", item, f"{name}.{i}.") for i, item in enumerate(value) if isinstance(item, BaseModel)]
         for title, model, path in groups:
             rows = list(_rows(title.strip("[]").split("]")[0], model, units, path, written))
-            blocks.append(table(title, header, rows, (False, False, True, False, False)))
+            blocks.append(table(title, header, rows, (False, False, True, False, False), literal=(0,)))
             for key in type(model).model_fields:
                 if _entries(getattr(model, key)):
                     blocks += _entries_table(f"{title} {key}", getattr(model, key), f"{path}{key}", written)
                 elif title.startswith("[[") and isinstance(getattr(model, key), BaseModel):  # [machines.unbalance]
                     nested = list(_rows(title.strip("[]").split("]")[0], getattr(model, key), units, f"{path}{key}.", written))
-                    blocks.append(table(f"{title} {key}", header, nested, (False, False, True, False, False)))
+                    blocks.append(table(f"{title} {key}", header, nested, (False, False, True, False, False), literal=(0,)))
         if name == "soil" and hasattr(scene, "soil_springs"):
             blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))
@@ -161,5 +161,5 @@ def _springs_table(scene) -> object:
         f"[soil] springs by method {scene.soil.method_used!r}",
         ("quantity", "value", "unit", "meaning"),
         [(key, _value(float(getattr(springs, key))), unit, meaning) for key, meaning, unit in rows],
-        (False, True, False, False),
+        (False, True, False, False), literal=(0,),
     )

@@ -104,8 +104,10 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     return out
 
 
-def methods_section(scene, documents: dict):
-    """The hand calculations and nomenclature of the scene (None for a kind without chains here)."""
+def methods_section(scene, documents: dict, units=None):
+    """The hand calculations and nomenclature of the scene (None for a kind without chains here);
+    ``units``: the sheet's (:class:`~foundation_calc.output.display_units.DisplayUnits`), in which a
+    block's points are shown (by default µm and mm/s)."""
     from foundation_calc.output.report.handcalc import nomenclature_table
     from foundation_calc.output.report.model import Section
 
@@ -120,9 +122,9 @@ def methods_section(scene, documents: dict):
 
         chains, response = [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
     elif scene.kind == "block_foundation":
-        from foundation_calc.output.report.block_methods import block_sections_blocks
+        from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
 
-        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"))
+        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"), units or POINT_UNITS)
     else:
         return None
     runup = []

@@ -19,13 +19,15 @@ class Paragraph:
 @dataclass(frozen=True)
 class Table:
     """A table of plain-text cells; ``numeric`` marks the right-aligned columns; ``wide`` names a
-    column that takes the page's free width (a signature box)."""
+    column that takes the page's free width (a signature box); ``literal`` the columns of scene keys,
+    printed as typed (``c_z``, no subscript: :mod:`~foundation_calc.output.report.markup`)."""
 
     title: str
     header: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
     numeric: tuple[bool, ...]
     wide: int | None = None
+    literal: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -97,9 +99,10 @@ class Sheet:
         return tuple(link for section in self.sections for link in section.links)
 
 
-def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None, wide: int | None = None) -> Table:
+def table(title: str, header: tuple[str, ...], rows, numeric: tuple[bool, ...] | None = None, wide: int | None = None,
+          literal: tuple[int, ...] = ()) -> Table:
     """A :class:`Table`; by default every column but the first is numeric."""
     rows = tuple(tuple(row) for row in rows)
     if numeric is None:
         numeric = (False,) + (True,) * (len(header) - 1)
-    return Table(title, tuple(header), rows, tuple(numeric), wide)
+    return Table(title, tuple(header), rows, tuple(numeric), wide, tuple(literal))

@@ -65,6 +65,16 @@ def column(values, digits: int, scale: float | None = None) -> list[str]:
     return _one_notation(values, [digits] * len(values), [scale] * len(values))
 
 
+def one_notation(values, digits: int, scales) -> list[str]:
+    """:func:`column` with a round-off scale per value (a table column of several matrices, each
+    with its own scale).
+
+    >>> one_notation([165840.0, 8.4e9, 1e-3], 4, [1e6, 1e11, 1e11])
+    ['1.658·10⁵', '8.400·10⁹', '0']
+    """
+    return _one_notation(values, [digits] * len(values), scales)
+
+
 def _one_notation(values, digits, scales) -> list[str]:
     """Each value at its own figures and round-off scale, all plain or all ``a.bc·10^n``."""
     shown = [figure(v, d, s) for v, d, s in zip(values, digits, scales)]

@@ -7,11 +7,11 @@ so no scene or point name is ever read as markup; only the equations are typst m
 from __future__ import annotations
 
 import math
-import re
 import tempfile
 from pathlib import Path
 
 from foundation_calc.output.report.chain import chain_document
+from foundation_calc.output.report.markup import pieces
 from foundation_calc.output.report.model import Equation, Figure, Paragraph, Sheet, Table
 
 PREAMBLE = """#set text(size: 9pt)
@@ -43,27 +43,29 @@ def string(text: str) -> str:
     return f'"{escaped}"'
 
 
-#: An exponent in fcalc's plain text: ``e^{i nωt}``.
-_EXPONENT = re.compile(r"\^\{([^{}]*)\}")
+#: How each piece of :func:`~foundation_calc.output.report.markup.pieces` is set.
+_SET = {"super": "super({})", "sub": "sub({})", "text": "{}"}
 
 
-def text(plain: str) -> str:
-    """``plain`` as typst: a string literal, with each exponent ``^{…}`` set as a superscript
-    (``e^{i nωt}`` reads e with i nωt raised), still from string literals only.
+def text(plain: str, subscripts: bool = True) -> str:
+    """``plain`` as typst: a string literal, with each exponent ``^{…}`` set as a superscript and
+    each subscript (``Z_n``; not with ``subscripts=False``, a column of scene keys) as a subscript,
+    still from string literals only (:mod:`~foundation_calc.output.report.markup`).
 
-    >>> text("Re(Z e^{i nωt})")
-    '{ "Re(Z e"; super("i nωt"); ")" }'
+    >>> text("Re(Z_n e^{i nωt})")
+    '{ "Re(Z"; sub("n"); " e"; super("i nωt"); ")" }'
+    >>> text("c_z", subscripts=False)
+    '"c_z"'
     """
-    parts = _EXPONENT.split(plain)
-    if len(parts) == 1:
+    parts = pieces(plain, subscripts)
+    if len(parts) <= 1 and (not parts or parts[0][0] == "text"):
         return string(plain)
-    pieces = [string(p) if k % 2 == 0 else f"super({string(p)})" for k, p in enumerate(parts) if p or k % 2]
-    return "{ " + "; ".join(pieces) + " }"
+    return "{ " + "; ".join(_SET[kind].format(string(p)) for kind, p in parts) + " }"
 
 
 def _table(t: Table) -> str:
     align = ", ".join("right" if n else "left" for n in t.numeric)
-    cells = [text(h) for h in t.header] + [text(c) for row in t.rows for c in row]
+    cells = [text(h) for h in t.header] + [text(c, j not in t.literal) for row in t.rows for j, c in enumerate(row)]
     columns = ", ".join(["auto"] * len(t.header))
     width = [max((len(row[j]) for row in t.rows), default=0) for j in range(len(t.header))]
     if t.wide is not None:  # the sign boxes: the signature column takes the free width
@@ -109,7 +111,7 @@ def _page(header: str) -> str:
     """A4 pages headed "``header`` · page n of N"."""
     return (
         '#set page(paper: "a4", margin: (x: 1.6cm, y: 1.8cm), header: context {'
-        f" set text(size: 8pt, fill: luma(80)); {string(header + ' · page ')} + str(counter(page).get().first())"
+        f" set text(size: 8pt, fill: luma(80)); {text(header + ' · page ')} + str(counter(page).get().first())"
         ' + " of " + str(counter(page).final().first()) })\n'
     )
 
@@ -117,7 +119,7 @@ def _page(header: str) -> str:
 def source(sheet: Sheet) -> tuple[str, list[str]]:
     """The typst source of the sheet and the SVG texts of its figures (``figureN.svg``)."""
     figures: list[str] = []
-    parts = [_page(sheet.header or sheet.title), PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {string(sheet.title)}))\n"]
+    parts = [_page(sheet.header or sheet.title), PREAMBLE, f"#align(center, text(size: 14pt, weight: \"bold\", {text(sheet.title)}))\n"]
     for section in sheet.sections:
         parts.append(f"#heading(level: 1, {string(section.title)})\n")
         parts += [_block(b, figures) for b in section.blocks]
