@@ -11,6 +11,7 @@ import tomli_w
 
 from foundation_calc.checks import registry
 from foundation_calc.cli.app import app
+from foundation_calc.output.console import stdout
 from foundation_calc.scenes import parse_scene, read_toml
 from tests.conftest import CONFIGS, configs_of_kind, only_input_warnings
 
@@ -113,7 +114,7 @@ def test_folder_with_good_and_broken_scenes(runner, mixed_folder, tmp_path):
 
 
 def test_table_lists_every_scene(runner, quick_checks, mixed_folder, monkeypatch):
-    monkeypatch.setenv("COLUMNS", "250")  # one line per row: names are not folded
+    monkeypatch.setattr(stdout(), "width", 250)  # one line per row: names are not folded
     result = _invoke(runner, mixed_folder)
     assert result.exit_code == 3
     text = result.stdout.replace("\n", "")
@@ -170,7 +171,7 @@ def test_no_scene_files_is_a_usage_error(runner, tmp_path):
 
 
 def test_units_in_table_and_json_stays_si(runner, quick_checks, monkeypatch):
-    monkeypatch.setenv("COLUMNS", "250")
+    monkeypatch.setattr(stdout(), "width", 250)
     scene = CONFIGS / "frame_saw_extra_resonance.toml"  # 300 rpm = 31.416 rad/s = 5 Hz
     assert "300 rpm" in _invoke(runner, scene, "--units", "rpm").stdout
     assert "5 Hz" in _invoke(runner, scene, "--units", "mm,Hz").stdout
@@ -200,7 +201,7 @@ def test_unwritable_junit_path_is_not_a_crash(runner, quick_checks, tmp_path):
 
 def test_resonance_tables_follow_units(runner, monkeypatch):
     """`fcalc resonance --units`: critical speeds in the chosen unit; JSON unchanged (SI)."""
-    monkeypatch.setenv("COLUMNS", "250")
+    monkeypatch.setattr(stdout(), "width", 250)
     scene = str(CONFIGS / "frame_saw_extra_resonance.toml")
     si = runner.invoke(app, ["resonance", scene])
     hz = runner.invoke(app, ["resonance", scene, "--units", "Hz"])

@@ -39,24 +39,6 @@ def test_check_of_every_config_cuts_nothing_in_a_file():
     assert "…" not in result.stdout
 
 
-def test_columns_set_for_a_pipe_is_the_tables_width(tmp_path):
-    """``COLUMNS=80 fcalc check … | head`` prints tables 80 columns wide (their borders), words whole
-    (a short file name: a word longer than its column widens the table instead of being cut)."""
-    scene = tmp_path / "fan.toml"
-    scene.write_text((CONFIGS / "block_fan_torsion_near_speed.toml").read_text())
-    result = _run("check", str(scene), columns=80)
-    borders = [line for line in result.stdout.splitlines() if line[:1] in "┏┡└"]
-    assert borders and all(len(line) <= 80 for line in borders), borders
-    assert "…" not in result.stdout
-
-
-def test_a_file_without_columns_keeps_natural_widths():
-    env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
-    result = subprocess.run((*FCALC, "check", str(CONFIGS / "block_fan_torsion_near_speed.toml")), capture_output=True,
-                            text=True, env=env, check=False)
-    assert max(len(line) for line in result.stdout.splitlines()) > 200  # the reasons on one line each
-
-
 @pytest.mark.parametrize("width", [20, 40, 80])
 def test_a_narrow_terminal_wraps_words_and_never_cuts_them(width):
     table = Table("quantity", "value")

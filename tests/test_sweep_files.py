@@ -86,7 +86,7 @@ def test_the_sweep_names_the_governing_condition_as_every_command_does(runner, c
     checked = runner.invoke(app, ["check", scene, "--json", "--jobs", "1"]).stdout
     reason = next(c["reason"] for c in json.loads(checked)["scenes"][0]["checks"] if c["check"] == "resonance")
     phrase = reason.split("governing resonance ")[1]  # e.g. "ω = p2 at 50.5% (needs 20%)"
-    table = runner.invoke(app, ["sweep", scene, "--speed", rpm]).stdout  # natural width: the row on one line
+    table = runner.invoke(app, ["sweep", scene, "--speed", rpm], env={"COLUMNS": "400"}).stdout
     assert f"governing {phrase}" in table, table
 
 

@@ -14,21 +14,9 @@ JSON_SCHEMA_VERSION = 1
 OUTCOME_STYLE = {"pass": "bold green", "warn": "bold yellow", "fail": "bold red"}
 
 
-#: Width of stdout when it is not a terminal (a file, a pipe, a CI log) and ``COLUMNS`` names
-#: none: wide enough that no table is ever squeezed, so a file holds every column at its natural
-#: width.
+#: Width of stdout when it is not a terminal (a file, a pipe, a CI log): wide enough that no
+#: table is ever squeezed, so a file holds every column at its natural width.
 UNLIMITED_WIDTH = 100_000
-
-
-def _stdout_width(is_terminal: bool, columns: str | None) -> int | None:
-    """The width of stdout's tables: the terminal's (None: rich asks it, or reads ``COLUMNS``), the
-    ``COLUMNS`` a user set for a file or a pipe (``COLUMNS=80 fcalc check … | head``), else
-    :data:`UNLIMITED_WIDTH`."""
-    if is_terminal:
-        return None
-    if columns is not None and columns.strip().isdigit() and int(columns) > 0:
-        return int(columns)
-    return UNLIMITED_WIDTH
 
 
 def keep_words_whole(table) -> None:
@@ -57,53 +45,26 @@ def keep_words_whole(table) -> None:
 
 @cache
 def stdout() -> Console:
-    """Console for results: tables at the terminal's width, or in a file or a pipe at the width
-    ``COLUMNS`` sets (else their natural width); a message in a file stays on one line; no table
-    cuts a word."""
-    import os
+    """Console for results: full width when not a terminal, and no table cuts a word."""
     import sys
 
     from rich.console import Console
     from rich.table import Table
 
     class ResultConsole(Console):
-        #: A width a caller set on the console itself (``console.width = 120``): it then stays.
-        fixed_width: int | None = None
-
-        @property
-        def width(self) -> int:
-            return Console.width.fget(self)
-
-        @width.setter
-        def width(self, value: int) -> None:
-            self.fixed_width = value
-            Console.width.fset(self, value)
-
         def on_broken_pipe(self) -> None:
             """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
             raise BrokenPipeError
 
         def print(self, *objects, **kwargs):
-            """Print as :func:`stdout` says; unless a caller fixed the width, it is read at each call
-            (``COLUMNS`` and the stream may change between the calls of one process, e.g. under a
-            test runner or from the Python API)."""
-            try:
-                terminal = self.file.isatty()
-            except (AttributeError, ValueError):  # a closed or bare stream
-                terminal = False
-            if self.fixed_width is None:
-                self._width = _stdout_width(terminal, os.environ.get("COLUMNS"))
-            tables = [item for item in objects if isinstance(item, Table)]
-            for item in tables:
-                keep_words_whole(item)
+            for item in objects:
+                if isinstance(item, Table):
+                    keep_words_whole(item)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
-            if not terminal and not tables:
-                kwargs.setdefault("soft_wrap", True)  # a message stays one line in a file, for grep
             super().print(*objects, **kwargs)
 
-    console = ResultConsole(highlight=False, emoji=False)  # ":name:" in user text stays text
-    console._width = _stdout_width(sys.stdout.isatty(), os.environ.get("COLUMNS"))
-    return console
+    width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
+    return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
 
 
 @cache
