@@ -72,6 +72,21 @@ def test_a_stratum_under_piles_is_refused_not_ignored(runner, tmp_path):
     assert result.exit_code == 3 and "soil.stratum_depth = 8 m with [piles]" in result.stdout + result.stderr
 
 
+def test_design_leaves_a_piled_block_over_a_modulus_range_to_the_check_path():
+    """The design batch scales the soil's springs by one factor per modulus factor, which a pile
+    group's are not (the batch's arrays did not even broadcast: an internal error): the vectorised
+    evaluator declines the scene, so fcalc design judges each candidate by fcalc check's path."""
+    import numpy as np
+
+    from foundation_calc.checks.design.block import PILES_OVER_RANGE, evaluate
+
+    document = _document()
+    document["soil"]["modulus_range"] = [0.5, 2.0]
+    with pytest.raises(NotImplementedError, match="piles"):
+        evaluate(parse_scene(document, "piles.toml"), {"piles.length": np.array([12.0, 18.0])})
+    assert "modulus_range" in PILES_OVER_RANGE
+
+
 def test_model_carries_the_groups_coupled_springs():
     """K at O is the group's (diagonal and the heads' sway-rocking coupling) less the weight's
     tilt, and the static modes are eigh(K, M) of it."""

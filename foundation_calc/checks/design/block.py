@@ -264,8 +264,12 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     ValueError
         for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
     NotImplementedError
-        for a code whose support class the modes of each candidate decide (no ``[limits] foundation``).
+        for a code whose support class the modes of each candidate decide (no ``[limits] foundation``),
+        and for a block on piles over the soil's modulus range (the batch scales the soil's springs
+        by one factor, which a pile group's are not: EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
+    if getattr(scene, "piles", None) is not None and scene.soil.modulus_range is not None:
+        raise NotImplementedError(PILES_OVER_RANGE)
     if scene.limits.code is not None and scene.limits.foundation is None:
         from foundation_calc.checks.support import PER_CANDIDATE
 
@@ -278,6 +282,10 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
         return _evaluate_piece(scene, batch)
+
+
+#: Why the batch leaves a piled block over the soil's modulus range to fcalc check's path.
+PILES_OVER_RANGE = "a block on [piles] over soil.modulus_range: the group's springs do not scale with one factor"
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
