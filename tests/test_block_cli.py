@@ -133,6 +133,9 @@ def test_office_checks_judge_as_their_sources_say(tmp_path, runner):
 
     rows = eccentricity_rows([0.42, -0.1], 7.0, 4.0, 0.05)
     assert [r.outcome.value for r in rows] == ["warn", "pass"] and rows[0].value == pytest.approx(0.06)
+    # machines placed symmetrically: the centre of mass's round-off (4e-21 m on the shipped
+    # opposed compressor) is no eccentricity; 1 µm on a 5 m base is one
+    assert [r.text.split(" is ")[0] for r in eccentricity_rows([3.9e-21, 1e-6], 5.0, 5.0, 0.05)] == ["e_x = 0 m", "e_y = 1e-06 m"]
     # W = 1 MN on 4 m x 2 m with e_x = 0.2 m: q_max = 125 kPa (1 + 0.3) = 162.5 kPa
     row = bearing_row(1.0e6, 0.2, 0.0, 4.0, 2.0, 1.6e5)
     assert row.value == pytest.approx(162.5e3, rel=1e-14) and row.outcome.value == "fail"

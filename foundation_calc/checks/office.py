@@ -44,16 +44,23 @@ class OfficeRow:
     text: str
 
 
+#: An eccentricity below this fraction of the base's side is the round-off of the sum of the
+#: bodies' moments m r (of order 1e-16 of the largest of them), not a position: it is shown as 0.
+ROUND_OFF = 1e-12
+
+
 def eccentricity_rows(cog_xy, L: float, B: float, allowed: float) -> list[OfficeRow]:
     """Eccentricity of the combined centre of mass from the base centroid along x and y, as a
-    fraction of L and B [-]; warns above ``allowed``."""
+    fraction of L and B [-]; warns above ``allowed``. A round-off eccentricity (:data:`ROUND_OFF`)
+    of machines placed symmetrically is 0."""
     rows = []
     for axis, e, size in (("x", cog_xy[0], L), ("y", cog_xy[1], B)):
-        ratio = abs(float(e)) / size
+        e = 0.0 if abs(float(e)) <= ROUND_OFF * size else float(e)
+        ratio = abs(e) / size
         outcome = Outcome.WARN if ratio > allowed else Outcome.PASS
         rows.append(OfficeRow(
             f"eccentricity {axis}", ratio, allowed, "-", outcome, SOURCE_RULES,
-            f"e_{axis} = {float(e):.4g} m is {ratio:.2%} of the base's {'length' if axis == 'x' else 'width'} {size:g} m"
+            f"e_{axis} = {e:.4g} m is {ratio:.2%} of the base's {'length' if axis == 'x' else 'width'} {size:g} m"
             f" ({'over' if ratio > allowed else 'within'} {allowed:.0%})",
         ))
     return rows
