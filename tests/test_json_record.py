@@ -80,7 +80,7 @@ def cases() -> list[tuple[str, str]]:
 
 def document(config: str, command: str) -> dict:
     """The command's JSON document of the scene, as ``fcalc COMMAND --json`` prints it, or the
-    error it refuses the scene with (its class and message)."""
+    error it refuses the scene with (its class and message); paths relative to the checkout."""
     import foundation_calc as fc
     from foundation_calc.errors import FcalcError
 
@@ -90,9 +90,10 @@ def document(config: str, command: str) -> dict:
         kwargs = {k: v.replace("{machine}", data["machines"][0]["name"]) if isinstance(v, str) else v
                   for k, v in kwargs.items()}
     try:
-        return fc.__getattr__(name)(ROOT / "configs" / config, **kwargs).to_dict()
+        found = fc.__getattr__(name)(ROOT / "configs" / config, **kwargs).to_dict()
     except FcalcError as error:
-        return {"error": type(error).__name__, "message": str(error)}
+        found = {"error": type(error).__name__, "message": str(error)}
+    return json.loads(json.dumps(found).replace(f"{ROOT}/", ""))  # paths as from the checkout's root
 
 
 def differences(old, new, path="") -> list[str]:
