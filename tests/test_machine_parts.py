@@ -33,9 +33,9 @@ FORCE_ARM, COUPLE_ARM, COUPLE_PHASE = 0.02, 0.01, 0.3  # F = a ω², C = b ω² 
 
 @dataclass(frozen=True)
 class ToyCouple(MachinePart):
-    """A point mass m at ``at`` with a force a (2ω)²/4 ... : of order 2, F = a ω² along x at ``at``
-    and a couple C = b ω² about z at phase 0.3, both growing as ω²; a periodic inertia of 5 % of
-    the point mass's at twice the speed."""
+    """A toy part: a point mass m at ``at``; loads of order 2, a force F = a ω² along x at ``at`` and
+    a couple C = b ω² about z at phase 0.3, both growing as ω²; a periodic inertia, the point
+    mass's mass matrix × (1 + 0.05 cos 2φ)."""
 
     m: float
     at: tuple
