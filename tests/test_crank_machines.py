@@ -1,5 +1,5 @@
 """Crank mechanisms as machines on the 6-DOF block (solvers.machines.crank_mechanism,
-solvers.rigid_body.periodic, solvers.block.cranks) against independent methods:
+solvers.rigid_body.periodic, solvers.block.periodic_inertia) against independent methods:
 
 * the mean mass matrix by brute-force averaging of the test's own kinematics (slider from the
   rod's length by Pythagoras, derivatives spectrally from 1024 samples) and the natural
@@ -20,11 +20,11 @@ import pytest
 import scipy.linalg
 from scipy.integrate import solve_ivp
 
-from foundation_calc.solvers.block.cranks import exact_response, first_approximation_error
+from foundation_calc.solvers.block.periodic_inertia import exact_response, first_approximation_error
 from foundation_calc.solvers.block.model import block_model, excitation
 from foundation_calc.solvers.block.response import block_modes, complex_amplitudes
 from foundation_calc.solvers.machines.crank_mechanism import (
-    crank_throw, forcing_harmonics, mean_mass_properties, mechanism_samples,
+    CrankMechanism, crank_throw, forcing_harmonics, mean_mass_properties, mechanism_samples,
 )
 from foundation_calc.solvers.rigid_body.kinematics import point_maps
 
@@ -189,7 +189,7 @@ def case(request):
     model = _model(throws, ratio=0.02)
     exc = _excitation(throws, omega)
     return dict(name=request.param, data=data, throws=throws, omega=omega, model=model, exc=exc,
-                kin=Kinematics(data, omega), exact=exact_response(model, exc, throws, G))
+                kin=Kinematics(data, omega), exact=exact_response(model, exc, [CrankMechanism(tuple(throws), (0.0, 0.0, 0.0))], G))
 
 
 def test_mean_mass_matrix_and_natural_frequencies_by_brute_force(case):

@@ -112,9 +112,9 @@ class BlockReport:
     #: a0 of the judged modes and orders against the soil method's fitted range
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
     soil_validity: object = None
-    #: per machine with cranks, the exact periodic solution's peaks and the first approximation's
-    #: error (:class:`~foundation_calc.solvers.block.cranks.FirstApproximationError`)
-    cranks: tuple = ()
+    #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
+    #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
+    periodic: tuple = ()
 
     @property
     def resonance_outcome(self) -> Outcome:
@@ -251,7 +251,7 @@ def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
     return tuple(rows)
 
 
-#: [scene, its report, the report with the crank machines' periodic solution (None until asked)]
+#: [scene, its report, the report with the machines' periodic solution (None until asked)]
 #: of the last scene :func:`check_block` judged: ``fcalc check`` asks for the same scene's report
 #: three times (resonance, amplitudes, office findings), and a scene is frozen.
 _LAST: list = []
@@ -260,27 +260,27 @@ _LAST: list = []
 def check_block(scene, periodic: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
-    that range (module docstring); with ``periodic`` the crank machines' exact periodic solution and
-    the first approximation's error (:mod:`~foundation_calc.checks.block_cranks`, ``cranks``). The
+    that range (module docstring); with ``periodic`` the exact periodic solution of the machines with
+    periodic inertia and the first approximation's error (:mod:`~foundation_calc.checks.block_periodic`). The
     same scene object asked again gets the same report."""
     if not _LAST or _LAST[0] is not scene:
         _LAST[:] = [scene, _check_block(scene), None]
     if not periodic:
         return _LAST[1]
     if _LAST[2] is None:
-        _LAST[2] = _with_cranks(scene, _LAST[1])
+        _LAST[2] = _with_periodic(scene, _LAST[1])
     return _LAST[2]
 
 
-def _with_cranks(scene, report: BlockReport) -> BlockReport:
-    """``report`` with its crank machines' exact periodic solution (:func:`check_block`'s ``periodic``)."""
+def _with_periodic(scene, report: BlockReport) -> BlockReport:
+    """``report`` with its machines' exact periodic solution (:func:`check_block`'s ``periodic``)."""
     from dataclasses import replace
 
     if report.motion is None:
         return report
-    from foundation_calc.checks.block_cranks import crank_errors
+    from foundation_calc.checks.block_periodic import periodic_errors
 
-    return replace(report, cranks=crank_errors(scene, scene.stable_model(), scene_impedance(scene)))
+    return replace(report, periodic=periodic_errors(scene, scene.stable_model(), scene_impedance(scene)))
 
 
 def _check_block(scene) -> BlockReport:

@@ -252,7 +252,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         )
     if scene.kind == "block_foundation":
         machines, names = _block_structures(scene)
-        carried = {m.name: m.unbalance_inertia for m in scene.machines}
+        carried = {m.name: m.carried_inertia for m in scene.machines}
     else:
         built, names, omega, inertia = _structure(scene)
         machines = [("", built, omega)]

@@ -140,18 +140,18 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
     }
     doc["office"] = _office(report)
     doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
-    doc["periodic_inertia"] = [_crank_document(c, motion.names) for c in report.cranks]
+    doc["periodic_inertia"] = [_periodic_document(c, motion.names) for c in report.periodic]
     doc["verdict"] = report.amplitude_outcome.value
     return doc
 
 
-#: How the block's crank machines are solved, in the JSON and under the table.
+#: How the block's machines with periodic inertia are solved, in the JSON and under the table.
 PERIODIC_METHOD = ("exact periodic solution with the cranks' angle-dependent inertia (harmonic balance); the limits"
                    " judge the first approximation (averaged operator)")
 
 
-def _crank_document(c, names) -> dict:
-    """One crank machine's exact peaks, first-approximation peaks and error (JSON)."""
+def _periodic_document(c, names) -> dict:
+    """One machine's exact peaks, first-approximation peaks and error (JSON)."""
     def points(peaks):
         return {p: dict(zip(DIRECTIONS, map(float, peaks[i]))) for i, p in enumerate(names)}
 
@@ -164,13 +164,13 @@ def _crank_document(c, names) -> dict:
 
 
 def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
-    """Per crank machine: peaks of the exact periodic solution beside the first approximation's."""
+    """Per machine with periodic inertia: peaks of the exact periodic solution beside the first approximation's."""
     from rich.markup import escape
 
     from foundation_calc.solvers.rigid_body.periodic import HARMONIC_TOLERANCE
 
     amp = units.label("amplitude")
-    for c in report.cranks:
+    for c in report.periodic:
         t = _table(f"{escape(c.name)}: exact periodic solution (harmonic balance, {c.harmonics} harmonics) and first"
                    f" approximation, peak displacement [{amp}]",
                    ("point", "exact x", "exact y", "exact z", "first x", "first y", "first z"), ())

@@ -118,7 +118,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         if repeated:
             raise ValueError(f"machine names must be distinct: {', '.join(repeated)}")
         for m in machines:
-            if not m.loads and m.unbalance is None and not m.cranks:
+            if not m.parts:
                 raise ValueError(f"machine {m.name!r} needs [[machines.loads]], [machines.unbalance] or [[machines.cranks]]")
         return machines
 
@@ -240,20 +240,19 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         raise culprit_error(text, culprits, key, f"stiffen {key}, or lower the centre of mass (block.height, machines[].cog)")
 
     def _bodies(self, block=None, machine_cogs=None):
-        """(masses, cogs, central inertias) of the block, every machine and every machine's cranks
-        (their time-averaged moving parts, moved with their machine; ``block`` and ``machine_cogs``
-        as :meth:`model` takes them)."""
+        """(masses, cogs, central inertias) of the block, every machine and every machine's parts
+        with mass (their time-averaged mass properties, moved with their machine; ``block`` and
+        ``machine_cogs`` as :meth:`model` takes them)."""
         import numpy as np
 
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
         masses, centres, inertias = [m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines]
         for machine, cog in zip(self.machines, cogs):
-            body = machine.crank_body()
-            if body is not None:
-                masses.append(body[0])
-                centres.append(body[1] + (np.asarray(cog, dtype=float) - np.asarray(machine.cog, dtype=float)))
-                inertias.append(body[2])
+            for mass, centre, inertia in machine.bodies():
+                masses.append(mass)
+                centres.append(centre + (np.asarray(cog, dtype=float) - np.asarray(machine.cog, dtype=float)))
+                inertias.append(inertia)
         return masses, centres, inertias
 
     def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):

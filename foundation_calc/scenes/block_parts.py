@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+from functools import cached_property
 from typing import Annotated, ClassVar
 
 from pydantic import Field, model_validator
@@ -226,86 +227,83 @@ class BlockMachine(SpeedFields):
             raise ValueError(f"inertia must be >= 0 kg m² each (got {list(self.inertia)})")
         return self
 
+    @cached_property
+    def parts_by_kind(self) -> tuple[tuple, ...]:
+        """The machine's parts (:class:`~foundation_calc.solvers.machines.part.MachinePart`), one
+        tuple per builder of :data:`MACHINE_PARTS`, in its order (built once: a scene is frozen)."""
+        return tuple(tuple(build(self)) for build in MACHINE_PARTS)
+
     @property
-    def unbalance_inertia(self) -> float:
-        """m_r e², e = G/ω: the unbalance's point mass about the shaft, which the motor turns besides
-        its [drive] inertia (the platform's m l²) [kg m²]; 0 without an unbalance."""
-        u = self.unbalance
-        return 0.0 if u is None else u.rotor_mass * (u.balance_grade_mm_s * 1e-3 / self.omega_rad_s) ** 2
+    def parts(self) -> tuple:
+        """Every part of the machine (:attr:`parts_by_kind`, flat)."""
+        return tuple(part for kind in self.parts_by_kind for part in kind)
 
-    def load_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
-        """Every load as (order, force [N], moment [N m], phase [rad], point [m], inertial): the
-        vendor's, the unbalance's (:meth:`unbalance_rows`) and the cranks' (:meth:`crank_rows`).
-        ``inertial``: the load grows as ω² when the speed changes (an unbalance: its eccentricity
-        e = G/ω is the rotor's; a crank's inertia forces); vendor loads keep the amplitudes the
-        vendor gives."""
-        rows = [(ld.order, ld.force, ld.moment, ld.phase, ld.at or self.cog, False) for ld in self.loads]
-        return rows + self.unbalance_rows() + self.crank_rows()
+    @property
+    def periodic_parts(self) -> tuple:
+        """The parts with an angle-dependent inertia (crank mechanisms)."""
+        return tuple(part for part in self.parts if part.periodic)
 
-    def unbalance_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
-        """The unbalance as two loads of order 1 a quarter period apart: F (a cos ωt + b sin ωt),
-        F = m_r G ω, with a, b a right-handed pair normal to the axis (none without an unbalance)."""
-        if self.unbalance is None:
-            return []
-        u = self.unbalance
-        e = [c / math.hypot(*u.axis) for c in u.axis]
-        trial = (1.0, 0.0, 0.0) if abs(e[0]) < 0.9 else (0.0, 1.0, 0.0)
-        a = _unit(_cross(_cross(e, trial), e))
-        b = _cross(e, a)
-        F = u.rotor_mass * u.balance_grade_mm_s * 1e-3 * self.omega_rad_s
-        where = u.at or self.cog
-        return [(1, tuple(F * c for c in a), [0.0, 0.0, 0.0], 0.0, where, True),
-                (1, tuple(F * c for c in b), [0.0, 0.0, 0.0], -math.pi / 2.0, where, True)]
+    @property
+    def carried_inertia(self) -> float:
+        """What the motor turns besides its [drive] inertia (the platform's m l²): its parts' (an
+        unbalance's m_r e², e = G/ω) [kg m²]; 0 for none."""
+        return sum(part.carried_inertia(self.omega_rad_s) for part in self.parts)
 
-    def crank_rows(self) -> list[tuple[int, Vector, Vector, float, Vector, bool]]:
-        """The cranks' forcing harmonics Q_n (solvers.machines.crank_mechanism, Eq. (4)) as loads at
-        the machine's centre of mass (so that they move with it): per order, the real part of Q_n at
-        phase 0 and its imaginary part at phase π/2; the inertia forces ``inertial``, the moving
-        weight's moment not (none without cranks)."""
-        if not self.cranks:
-            return []
-        import numpy as np
-
+    def load_rows(self) -> list:
+        """Every part's loads at the machine's speed (:class:`~foundation_calc.solvers.machines.part.LoadRow`:
+        order, force [N], moment [N m], phase [rad], point [m], inertial)."""
         from foundation_calc.solvers.constants import GRAVITY
-        from foundation_calc.solvers.machines.crank_mechanism import forcing_harmonics
 
-        fh = forcing_harmonics(self.crank_throws(), self.omega_rad_s, GRAVITY)
-        c = np.asarray(self.cog, dtype=float)
-        rows = []
-        for Q, inertial in ((fh.inertial, True), (fh.weight, False)):
-            for n, q in zip(fh.orders, Q):
-                for part, phase in ((q.real, 0.0), (q.imag, math.pi / 2.0)):
-                    if np.any(part != 0.0):
-                        F, M = part[:3], part[3:] - np.cross(c, part[:3])  # the moment about the cog
-                        rows.append((int(n), F.tolist(), M.tolist(), phase, self.cog, inertial))
-        return rows
+        return [row for part in self.parts for row in part.load_rows(self.omega_rad_s, GRAVITY)]
 
     @property
     def total_mass(self) -> float:
-        """The machine's mass with its cranks' moving parts (rods, sliders, rotating masses) [kg]."""
-        return self.mass + sum(c.rod_mass + c.slider_mass + c.rotating_mass for c in self.cranks)
+        """The machine's mass with its parts' (a crank's rods, sliders, rotating masses) [kg]."""
+        return self.mass + sum(body[0] for body in self.bodies())
+
+    def bodies(self) -> list:
+        """Its parts' time-averaged mass properties, (mass [kg], centre of mass [m] (3,), central
+        inertia tensor [kg m²] (3, 3)) each, of the parts that have mass."""
+        return [body for part in self.parts if (body := part.mass_properties()) is not None]
 
     def crank_throws(self) -> list:
         """The cranks as the solver's throws (:meth:`MachineCrank.throw`)."""
         return [crank.throw() for crank in self.cranks]
 
-    def crank_body(self):
-        """The cranks' moving parts as one body of their time-averaged mass properties: (mass [kg],
-        mean centre of mass [m] (3,), central inertia tensor [kg m²] (3, 3)), or None without cranks."""
-        if not self.cranks:
-            return None
-        from foundation_calc.solvers.machines.crank_mechanism import mean_mass_properties
 
-        return mean_mass_properties(self.crank_throws())
+def _given_loads(machine: BlockMachine) -> list:
+    """``[[machines.loads]]`` as :class:`~foundation_calc.solvers.machines.loads.GivenLoads` (at the
+    machine's centre of mass where ``at`` is not given)."""
+    if not machine.loads:
+        return []
+    from foundation_calc.solvers.machines.loads import GivenLoads
 
-
-def _cross(a, b) -> tuple[float, float, float]:
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    return [GivenLoads(tuple((ld.order, ld.force, ld.moment, ld.phase, ld.at or machine.cog) for ld in machine.loads))]
 
 
-def _unit(v) -> tuple[float, float, float]:
-    n = math.hypot(*v)
-    return tuple(c / n for c in v)
+def _unbalance(machine: BlockMachine) -> list:
+    """``[machines.unbalance]`` as :class:`~foundation_calc.solvers.machines.unbalance.RotatingUnbalance`."""
+    u = machine.unbalance
+    if u is None:
+        return []
+    from foundation_calc.solvers.machines.unbalance import RotatingUnbalance
+
+    return [RotatingUnbalance(u.rotor_mass, u.balance_grade_mm_s, tuple(u.axis), u.at or machine.cog)]
+
+
+def _cranks(machine: BlockMachine) -> list:
+    """``[[machines.cranks]]`` as one :class:`~foundation_calc.solvers.machines.crank_mechanism.CrankMechanism`,
+    its harmonics given at the machine's centre of mass (so that they move with it)."""
+    if not machine.cranks:
+        return []
+    from foundation_calc.solvers.machines.crank_mechanism import CrankMechanism
+
+    return [CrankMechanism(tuple(machine.crank_throws()), machine.cog)]
+
+
+#: Builders of a machine's parts from its keys, each machine -> list of parts: a new kind of part
+#: is its solver module and one builder here. The sheet describes the parts kind by kind, in this order.
+MACHINE_PARTS: list = [_given_loads, _unbalance, _cranks]
 
 
 class BlockPoint(SceneModel):

@@ -186,47 +186,33 @@ def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
     return forcing, response
 
 
-def _unbalances(scene) -> list[Paragraph]:
-    """Each machine's unbalance as the loads it becomes (scenes.block_parts, ``unbalance_rows``): its
-    force F = m_r G ω, the pair a, b normal to the axis and the sense in which it turns."""
-    out = []
-    for machine in scene.machines:
-        u = machine.unbalance
-        if u is None:
-            continue
-        a, b = (np.array(row[1]) for row in machine.unbalance_rows())
-        F = float(np.linalg.norm(a))
-        e = np.array(u.axis, dtype=float) / np.linalg.norm(u.axis)
-        out.append(Paragraph(
-            f"{machine.name}: unbalance F = m_r G ω = {figure(u.rotor_mass, 4)} kg × {figure(u.balance_grade_mm_s, 4)} mm/s"
-            f" × {figure(machine.omega_rad_s, 4)} rad/s = {figure(F, 4)} N, turning about its axis e = {vec_m(e)}"
-            f" in the positive sense (right-hand rule): F(t) = F (a cos ωt + b sin ωt), a = {vec_m(a / F)}, b = e × a = {vec_m(b / F)},"
-            f" acting at {vec_m(u.at or machine.cog)} m. In Q_n: F a at phase lag 0°, F b at 90°."))
-    return out
+def _machine_parts(scene, periodic) -> list[Paragraph]:
+    """Each machine part's derivation (:meth:`~foundation_calc.solvers.machines.part.MachinePart.sheet_text`),
+    kind by kind: an unbalance as the loads it becomes, a crank mechanism's mean mass and Q_n; for a
+    part with periodic inertia also the exact periodic solution's check of the first approximation
+    (the ``periodic_inertia`` entries of the amplitudes document)."""
+    from foundation_calc.solvers.machines.part import Number, Triple
 
+    def shown(item) -> str:
+        if isinstance(item, Number):
+            return figure(item.value, item.digits)
+        return vec_m(item.values) if isinstance(item, Triple) else item
 
-def _cranks(scene, periodic) -> list[Paragraph]:
-    """Each machine's crank throws: what they add to M and Q_n (scenes.block_parts, ``crank_body``,
-    ``crank_rows``) and the exact periodic solution's check of the first approximation (the
-    ``periodic_inertia`` entries of the amplitudes document)."""
     errors = {c["machine"]: c for c in periodic or ()}
     out = []
-    for machine in scene.machines:
-        if not machine.cranks:
-            continue
-        m, cog, _ = machine.crank_body()
-        cog = np.where(np.abs(cog) < 1e-9 * np.abs(cog).max(), 0.0, cog)  # round-off of a symmetric arrangement
-        text = (f"{machine.name}: {len(machine.cranks)} crank throw(s) ([KM]'s crank-slider mechanism, each rod as m/2 at"
-                f" C1 ± ρ e, the slider and any rotating mass as points): moving mass {figure(m, 4)} kg, mean centre of mass"
-                f" {vec_m(cog)} m, added to M as a body of the time-averaged inertia; Q_n = the inertia forces"
-                " -(Σ m r'', Σ m r × r'') of the throws turning at ω on a fixed block and the moving weight's moment,"
-                " Fourier harmonics of one revolution.")
-        found = errors.get(machine.name)
-        if found is not None:
-            text += (f" Exact periodic solution with the angle-dependent mass matrix M(ωt) (harmonic balance, {found['harmonics']}"
-                     f" harmonics): the first approximation judged here differs from it by at most"
-                     f" {figure(100.0 * found['first_approximation_error'], 2)} % of a peak.")
-        out.append(Paragraph(text))
+    for kind in zip(*(machine.parts_by_kind for machine in scene.machines)):
+        for machine, parts in zip(scene.machines, kind):
+            for part in parts:
+                items = part.sheet_text(machine.omega_rad_s)
+                if items is None:
+                    continue
+                text = f"{machine.name}: " + "".join(map(shown, items))
+                found = errors.get(machine.name) if part.periodic else None
+                if found is not None:
+                    text += (f" Exact periodic solution with the angle-dependent mass matrix M(ωt) (harmonic balance,"
+                             f" {found['harmonics']} harmonics): the first approximation judged here differs from it by"
+                             f" at most {figure(100.0 * found['first_approximation_error'], 2)} % of a peak.")
+                out.append(Paragraph(text))
     return out
 
 
@@ -319,7 +305,7 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6
     blocks.append(_modes(solve, dominant))
     if amplitudes is not None and not amplitudes.get("resonant", False):
-        blocks += _unbalances(scene) + _cranks(scene, amplitudes.get("periodic_inertia"))
+        blocks += _machine_parts(scene, amplitudes.get("periodic_inertia"))
         forcing, response = _harmonics(solve)
         blocks.append(forcing)
         if dependent:

@@ -54,6 +54,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.solvers.crank.mechanism import rod_angle_cosine
+from foundation_calc.solvers.machines.part import LoadRow, MachinePart, Number, Triple
 from foundation_calc.solvers.numerics.trig_series import phases
 from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matrix, parallel_axis, skews
 
@@ -284,7 +285,59 @@ def forcing_harmonics(throws, omega, g) -> ForcingHarmonics:
     return ForcingHarmonics(np.arange(1, H + 1), Qi[:H], Qw[:H])
 
 
+@dataclass(frozen=True)
+class CrankMechanism(MachinePart):
+    """A machine's crank throws as one part of it (:class:`~foundation_calc.solvers.machines.part.MachinePart`).
+
+    Attributes
+    ----------
+    throws : the :class:`CrankThrow` s, turning together at the machine's speed
+    at : the machine's centre of mass from O (3,) [m]: the forcing harmonics are given as loads
+        there, so that they move with the machine
+    """
+
+    throws: tuple
+    at: tuple
+
+    periodic = True
+
+    def mass_properties(self) -> tuple[float, np.ndarray, np.ndarray]:
+        """The moving parts' time-averaged mass properties (:func:`mean_mass_properties`)."""
+        return mean_mass_properties(self.throws)
+
+    def periodic_inertia(self, omega: float, g: float, N: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Eqs. (1)-(3) at N phases (:func:`mechanism_samples`)."""
+        s = mechanism_samples(self.throws, omega, g, N)
+        return s.M, s.D, s.S
+
+    def load_rows(self, omega: float, g: float) -> list[LoadRow]:
+        """The forcing harmonics Q_n (Eq. (4), :func:`forcing_harmonics`) as loads at :attr:`at`:
+        per order, the real part of Q_n at phase 0 and its imaginary part at phase π/2; the
+        inertia forces ``inertial``, the moving weight's moment not."""
+        fh = forcing_harmonics(self.throws, omega, g)
+        c = np.asarray(self.at, dtype=float)
+        rows = []
+        for Q, inertial in ((fh.inertial, True), (fh.weight, False)):
+            for n, q in zip(fh.orders, Q):
+                for part, phase in ((q.real, 0.0), (q.imag, np.pi / 2.0)):
+                    if np.any(part != 0.0):
+                        F, M = part[:3], part[3:] - np.cross(c, part[:3])  # the moment about the point
+                        rows.append(LoadRow(int(n), F.tolist(), M.tolist(), phase, self.at, inertial))
+        return rows
+
+    def sheet_text(self, omega: float) -> tuple:
+        """The throws' moving mass and mean centre of mass, and how Q_n is taken."""
+        m, cog, _ = self.mass_properties()
+        cog = np.where(np.abs(cog) < 1e-9 * np.abs(cog).max(), 0.0, cog)  # round-off of a symmetric arrangement
+        return (f"{len(self.throws)} crank throw(s) ([KM]'s crank-slider mechanism, each rod as m/2 at C1 ± ρ e, the"
+                " slider and any rotating mass as points): moving mass ", Number(m), " kg, mean centre of mass ",
+                Triple(cog), " m, added to M as a body of the time-averaged inertia; Q_n = the inertia forces"
+                " -(Σ m r'', Σ m r × r'') of the throws turning at ω on a fixed block and the moving weight's moment,"
+                " Fourier harmonics of one revolution.")
+
+
 __all__ = [
+    "CrankMechanism",
     "CrankThrow",
     "ForcingHarmonics",
     "MechanismSamples",

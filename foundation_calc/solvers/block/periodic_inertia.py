@@ -1,11 +1,12 @@
-"""A block's crank machines: the exact periodic steady state with their angle-dependent inertia,
-and the error of the first approximation.
+"""A block's machines with periodic inertia (crank mechanisms): the exact periodic steady state
+with their angle-dependent inertia, and the error of the first approximation.
 
 Source: Eq. (1) of :mod:`foundation_calc.solvers.rigid_body.periodic` with the block's matrices
-(:mod:`.model`: the mechanisms' mean mass and weight are in M and K already, as bodies) and one
-machine's periodic terms (Eqs. (1)-(3) of :mod:`foundation_calc.solvers.machines.crank_mechanism`
-less their means); its loads Q_n are the machine's whole excitation (crank harmonics, vendor loads,
-unbalance: all at its speed). Machines at other speeds keep their mean inertia only (their
+(:mod:`.model`: the parts' mean mass and weight are in M and K already, as bodies) and one
+machine's periodic terms (the sum over its parts with periodic inertia of their M(φ), D(φ), S(φ),
+:meth:`~foundation_calc.solvers.machines.part.MachinePart.periodic_inertia`, e.g. Eqs. (1)-(3) of
+:mod:`foundation_calc.solvers.machines.crank_mechanism`, less the means of M and S); its loads Q_n
+are the machine's whole excitation (every part's harmonics, all at its speed). Machines at other speeds keep their mean inertia only (their
 periodic terms would make the system quasi-periodic), and act on the first approximation alone.
 
 The first approximation is :func:`~foundation_calc.solvers.block.response.complex_amplitudes`
@@ -21,7 +22,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from foundation_calc.solvers.block.model import BlockModel, Excitation
-from foundation_calc.solvers.machines.crank_mechanism import mechanism_samples
 from foundation_calc.solvers.rigid_body.periodic import PeriodicSolution, periodic_solution
 
 
@@ -32,9 +32,10 @@ def dense_loads(exc: Excitation) -> np.ndarray:
     return Q
 
 
-def exact_response(model: BlockModel, exc: Excitation, throws, g, impedance=None) -> PeriodicSolution:
-    """T-periodic steady state of the block under machine ``exc`` whose crank ``throws``
-    (:class:`~foundation_calc.solvers.machines.crank_mechanism.CrankThrow`) turn at its speed
+def exact_response(model: BlockModel, exc: Excitation, parts, g, impedance=None) -> PeriodicSolution:
+    """T-periodic steady state of the block under machine ``exc`` whose ``parts`` with periodic
+    inertia (:class:`~foundation_calc.solvers.machines.part.MachinePart`, e.g. a
+    :class:`~foundation_calc.solvers.machines.crank_mechanism.CrankMechanism`) turn at its speed
     (module docstring); g [m/s²]; on the soil ``impedance`` (Ω -> springs, dashpots at O) if given.
 
     Raises
@@ -44,8 +45,8 @@ def exact_response(model: BlockModel, exc: Excitation, throws, g, impedance=None
     """
 
     def periodic(N):
-        s = mechanism_samples(throws, exc.omega, g, N)
-        return s.M - s.M.mean(axis=0), s.D, s.S - s.S.mean(axis=0)
+        M, D, S = (sum(terms) for terms in zip(*(part.periodic_inertia(exc.omega, g, N) for part in parts)))
+        return M - M.mean(axis=0), D, S - S.mean(axis=0)
 
     soil = None if impedance is None else (lambda W: model.soil_matrices(*impedance(W)))
     return periodic_solution(exc.omega, model.M, model.K, model.C, periodic, dense_loads(exc), soil)
@@ -53,7 +54,7 @@ def exact_response(model: BlockModel, exc: Excitation, throws, g, impedance=None
 
 @dataclass(frozen=True)
 class FirstApproximationError:
-    """Peaks of one crank machine's motion by the exact periodic solution and the first
+    """Peaks of one machine's motion by the exact periodic solution and the first
     approximation's error.
 
     Attributes
