@@ -2,7 +2,7 @@
 units/errors. Every import of every module (function-level ones included) is parsed and an import
 from a higher layer fails the test, so the rule in docs/architecture.md stays true.
 Inside ``solvers`` the problems (crank, platform) do not import each other, and the shared
-``numerics`` and ``soil`` packages import neither problem."""
+``numerics``, ``soil`` and ``supports`` packages import neither problem."""
 
 from __future__ import annotations
 
@@ -32,7 +32,7 @@ LAYER_RANK = {
 }
 #: Solver packages that may be imported only by themselves and layers above ``solvers``.
 PROBLEMS = {"crank", "platform"}
-SHARED_SOLVERS = {"numerics", "soil", "constants"}
+SHARED_SOLVERS = {"numerics", "soil", "supports", "constants"}
 
 
 def _module_name(path: Path) -> str:

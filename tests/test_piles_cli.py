@@ -114,11 +114,12 @@ def test_model_carries_the_groups_coupled_springs():
 @pytest.mark.parametrize("head,tip,profile", [("fixed", "floating", "linear"), ("pinned", "end_bearing", "uniform"),
                                               ("fixed", "end_bearing", "parabolic")])
 def test_sheet_chain_is_the_solvers_pile(head, tip, profile):
-    from foundation_calc.output.report.block_piles import single_pile_chain
+    from foundation_calc.output.report.block_soil import rendered
     from foundation_calc.solvers.piles.single import pinned, single_pile
+    from foundation_calc.solvers.supports.piles import single_pile_chain
 
     scene = _scene(head=head, tip=tip, soil_profile=profile)
-    chain = single_pile_chain(scene)
+    (chain,) = rendered(single_pile_chain(scene.soil, scene.piles), scene, None, ())
     p, s = scene.piles, scene.soil
     one = single_pile(p.diameter, p.length, p.modulus, p.density, s.G, s.poisson, s.density, profile,
                       tip == "end_bearing", 0.0)

@@ -41,8 +41,8 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
     SceneError
         An invalid scene, or a scene of another kind.
     UsageError
-        A sample of a crank scene without a [mechanism], ``speed_cov`` for a block, or a sample of a
-        block on piles.
+        A sample of a crank scene without a [mechanism], ``speed_cov`` for a block, or a sample of a block
+        on a support whose springs do not scale with the soil's modulus (piles).
     """
     from foundation_calc.api.options import within
     from foundation_calc.errors import UsageError
@@ -62,10 +62,9 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
             if speed_cov:
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
-            if model.piles is not None:
-                raise UsageError("a block on [piles] is not sampled: its springs do not scale with one factor on the"
-                                 " soil's modulus (EN 1998-5 Table C.1: K ∝ E_s^(1 - n)); give soil.modulus_range"
-                                 " and fcalc check judges the range", "'--sample'")
+            if (unscaled := model.support().unscaled) is not None:
+                raise UsageError(f"a block on {unscaled}; give soil.modulus_range and fcalc check judges the range",
+                                 "'--sample'")
             drawn = sample_block(model, sample, modulus_cov, seed)
         springs = model.model()
         columns = soil_at_frequencies(model, springs)

@@ -319,9 +319,9 @@ def scene_modes(scene, model) -> tuple[BlockModes, object]:
 
 
 def scene_impedance(scene):
-    """A block scene's soil impedance ω -> springs and dashpots at O (:meth:`soil_impedance` of the
-    scene), None on a frequency-independent soil."""
-    return scene.soil_impedance if scene.soil.frequency_dependent else None
+    """A block scene's support's impedance ω -> springs and dashpots at O (:meth:`soil_impedance` of
+    the scene), None when its springs do not depend on frequency."""
+    return scene.soil_impedance if scene.support().frequency_dependent else None
 
 
 def check_block_as_given(scene) -> BlockReport:

@@ -38,7 +38,7 @@ def _piece(scene, factor) -> dict[str, np.ndarray]:
     from foundation_calc.solvers.block.response import batch_modes, consistent_batch
 
     model = on_factors(scene.model(), factor)
-    impedance = scaled_impedance(scene.soil_impedance, factor) if scene.soil.frequency_dependent else None
+    impedance = scaled_impedance(scene.soil_impedance, factor) if scene.support().frequency_dependent else None
     points = np.array([p.at for p in scene.points], dtype=float).reshape(-1, 3)
     built = Built(model, scene.excitations(), points, impedance, None, None)
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged by dynamics

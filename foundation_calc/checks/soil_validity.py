@@ -3,18 +3,12 @@ harmonic against the range its soil method was fitted over.
 
 A half-space method replaces the soil by springs and dashpots fitted to rigorous solutions over a
 range of the dimensionless frequency a0 = ω b/V_s, b the length the method scales the footing by
-(V_s the soil's shear wave velocity). Beyond it the springs and dashpots are extrapolated. Each
-method declares its range in its own module:
-
-- ``"lysmer"``: a0 = ω r/V_s with the equivalent radius r of each motion (r0 = √(BL/π) vertical and
-  sliding, r0ψ = (BL³/(3π))^¼ rocking in the plane of L, r0θ = (LB(L² + B²)/(6π))^¼ torsion),
-  a0 <= 1.5 (:data:`foundation_calc.solvers.soil.lysmer.A0_FITTED`, Richart, Hall & Woods 1970);
-- ``"gazetas"``, ``"pais_kausel"``: a0 = ω B'/V_s, B' the shorter half-side, a0 <= 2
-  (:data:`foundation_calc.solvers.soil.impedance.A0_FITTED`, Pais & Kausel 1988, Gazetas 1991);
-- ``"piles"`` (a block on ``[piles]``): a0 = ω d/V_s, d the pile diameter, a0 <= 1
-  (:data:`foundation_calc.solvers.piles.single.A0_FITTED`);
-- ``"coefficients"``, ``"sp26"``, ``"springs"``: frequency-independent springs; no range of a0
-  applies (:data:`NO_RANGE`).
+(V_s the soil's shear wave velocity). Beyond it the springs and dashpots are extrapolated. Each support declares its
+range (:meth:`~foundation_calc.solvers.supports.base.Support.validity`; the footing's by soil
+method, :func:`~foundation_calc.solvers.supports.footing.footing_range`, the piles' in
+:mod:`~foundation_calc.solvers.supports.piles`), e.g. ``"gazetas"``: a0 = ω B'/V_s, B' the shorter
+half-side, a0 <= 2; ``"piles"``: a0 = ω d/V_s, d the pile diameter, a0 <= 1; frequency-independent
+springs (``"coefficients"``, ``"sp26"``, ``"springs"``): no range of a0 applies.
 
 On a stratum over bedrock (``[soil] stratum_depth``, :mod:`~foundation_calc.solvers.soil.stratum`)
 the same judged frequencies are set against the layer's cutoffs, V_s/4H for the motions that shear
@@ -44,23 +38,6 @@ import numpy as np
 #: for a 100 % error (dp/p = ½ Σ e_i dK_i/K_i), a tenth of the 5 % that fails any resonance.
 MOTION_SHARE = 0.01
 
-#: What a frequency-independent method's validity is, by method.
-NO_RANGE = {
-    "coefficients": "Barkan's coefficients give frequency-independent springs: no range of a0 applies",
-    "sp26": "SP 26.13330's springs and damping ratios do not depend on frequency: no range of a0 applies",
-    "springs": "the springs and dashpots given at O are taken at every frequency: no range of a0 applies",
-}
-
-#: How each half-space method defines a0.
-DEFINITIONS = {
-    "lysmer": "a0 = ω r/V_s, r the equivalent radius of the motion (r0 = √(BL/π) vertical and sliding,"
-              " r0ψ = (BL³/(3π))^¼ rocking, r0θ = (LB(L² + B²)/(6π))^¼ torsion)",
-    "gazetas": "a0 = ω B'/V_s, B' the shorter half-side of the base",
-    "pais_kausel": "a0 = ω B'/V_s, B' the shorter half-side of the base",
-    "piles": "a0 = ω d/V_s, d the pile diameter, V_s the soil's at depth d",
-}
-
-
 @dataclass(frozen=True)
 class FittedRange:
     """The range of a0 a soil method holds over.
@@ -84,41 +61,25 @@ class FittedRange:
 
 
 def fitted_range(method: str) -> FittedRange:
-    """The declared range of ``method`` (module docstring)."""
-    if method == "lysmer":
-        from foundation_calc.solvers.soil.lysmer import A0_FITTED, A0_SOURCE
-    elif method in ("gazetas", "pais_kausel"):
-        from foundation_calc.solvers.soil.impedance import A0_FITTED, A0_SOURCE
-    elif method == "piles":
-        from foundation_calc.solvers.piles.single import A0_FITTED, A0_SOURCE
-    else:
-        return FittedRange(method, None, "", NO_RANGE[method])
-    return FittedRange(method, A0_FITTED, DEFINITIONS[method], A0_SOURCE)
+    """The declared range of a footing's soil ``method`` (:func:`~foundation_calc.solvers.supports.footing.footing_range`)."""
+    from foundation_calc.solvers.supports.footing import footing_range
+
+    return FittedRange(method, *footing_range(method))
 
 
-def characteristic_lengths(method: str, L: float, B: float, d: float | None = None) -> dict[str, float]:
-    """The length b [m] of a0 = ω b/V_s of each motion by ``method`` on a base L (along x, the
-    plane model's plane) × B [m]: the block's x, y, z, rx, ry, rz and the plane model's
-    horizontal (x), vertical (z) and rocking (about the axis normal to the plane, ry); ``"piles"``:
-    the pile diameter ``d`` [m] for every motion.
+def characteristic_lengths(method: str, L: float, B: float) -> dict[str, float]:
+    """The length b [m] of a0 = ω b/V_s of each motion by a footing's ``method`` on a base L (along
+    x, the plane model's plane) × B [m]: the block's x, y, z, rx, ry, rz
+    (:func:`~foundation_calc.solvers.supports.footing.footing_lengths`) and the plane model's
+    horizontal (x), vertical (z) and rocking (about the axis normal to the plane, ry).
 
     >>> b = characteristic_lengths("lysmer", 6.0, 4.0)
     >>> round(b["z"], 4), round(b["rocking"], 4), round(characteristic_lengths("gazetas", 6.0, 4.0)["rz"], 4)
     (2.764, 3.0943, 2.0)
     """
-    if method == "lysmer":
-        from foundation_calc.solvers.soil.lysmer import equivalent_radii
-        from foundation_calc.solvers.soil.torsion import torsion_radius
+    from foundation_calc.solvers.supports.footing import footing_lengths
 
-        r0, r_ry = equivalent_radii(L, B)
-        r_rx = equivalent_radii(B, L)[1]
-        lengths = {"x": r0, "y": r0, "z": r0, "rx": r_rx, "ry": r_ry, "rz": torsion_radius(L, B)}
-    elif method == "piles":
-        lengths = dict.fromkeys(("x", "y", "z", "rx", "ry", "rz"), d)
-    else:
-        half = min(L, B) / 2.0
-        lengths = dict.fromkeys(("x", "y", "z", "rx", "ry", "rz"), half)
-    lengths = {k: float(v) for k, v in lengths.items()}
+    lengths = footing_lengths(method, L, B)
     return lengths | {"horizontal": lengths["x"], "vertical": lengths["z"], "rocking": lengths["ry"]}
 
 
@@ -169,13 +130,12 @@ class StratumCutoffs:
 
 
 def stratum_cutoffs(soil) -> StratumCutoffs | None:
-    """The :class:`StratumCutoffs` of a scene's ``soil`` (None without ``stratum_depth``)."""
-    if getattr(soil, "stratum_depth", None) is None:
-        return None
-    from foundation_calc.solvers.soil.stratum import cutoff_frequencies
+    """The :class:`StratumCutoffs` of a scene's ``soil`` (None without ``stratum_depth``;
+    :func:`~foundation_calc.solvers.supports.stratum.stratum_cutoffs`)."""
+    from foundation_calc.solvers.supports.stratum import stratum_cutoffs as cutoffs
 
-    omega_s, omega_c = cutoff_frequencies(soil.V_s, soil.poisson, soil.stratum_depth)
-    return StratumCutoffs(float(soil.stratum_depth), float(omega_s), float(omega_c))
+    found = cutoffs(soil)
+    return None if found is None else StratumCutoffs(*found)
 
 
 @dataclass(frozen=True)
@@ -313,7 +273,12 @@ def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
     >>> [(x.motion, round(x.a0, 3)) for x in v.beyond]
     [('rocking', 2.558), ('horizontal', 2.285)]
     """
-    fitted = fitted_range(method)
+    return judge_a0(fitted_range(method), V_s, lengths, frequencies, stratum)
+
+
+def judge_a0(fitted: FittedRange, V_s: float | None, lengths: Mapping[str, float],
+             frequencies: Iterable[JudgedFrequency], stratum: StratumCutoffs | None = None) -> SoilValidity:
+    """:func:`soil_validity` against the range ``fitted``."""
     if not fitted.applies:
         return SoilValidity(fitted, None, ())
     values = tuple(
@@ -391,19 +356,18 @@ def crank_validity(scene, report) -> SoilValidity:
 def block_validity(scene, report) -> SoilValidity:
     """The soil model's validity of a ``block_foundation`` scene at its six modes (with the
     motions each strains) and every machine's orders the rule judges (``report``: a
-    :class:`~foundation_calc.checks.block.BlockReport`)."""
+    :class:`~foundation_calc.checks.block.BlockReport`), against the range its support declares
+    (:meth:`~foundation_calc.solvers.supports.base.Support.validity`)."""
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
 
-    soil = scene.soil
-    method = soil.support_method
-    if not fitted_range(method).applies:
-        return soil_validity(method, None, {}, ())
+    support = scene.support()
+    declared = support.validity()
+    fitted = FittedRange(declared.method, declared.a0_max, declared.definition, declared.source)
+    if not fitted.applies:
+        return SoilValidity(fitted, None, ())
     modes = report.modes
-    if soil.frequency_dependent:
-        springs = np.asarray(scene.soil_impedance(modes.frequencies)[0])  # (6 modes, 6 springs)
-    else:
-        springs = np.broadcast_to(scene.model().springs, (len(modes.frequencies), 6))
-    shares = spring_shares(springs, modes.shapes)
+    springs = np.asarray(support.impedance(modes.frequencies if support.frequency_dependent else 0.0).springs)
+    shares = spring_shares(np.broadcast_to(springs, (len(modes.frequencies), 6)), modes.shapes)  # (6 modes, 6 springs)
     labels = [f"mode {j + 1} ({motion})" for j, motion in enumerate(modes.dominant)]
     judged = mode_frequencies(labels, modes.frequencies, shares, MOTIONS)
     harmonics: dict[float, list[str]] = {}  # machines at one speed share their orders' frequencies
@@ -414,12 +378,11 @@ def block_validity(scene, report) -> SoilValidity:
     for omega, orders in harmonics.items():
         names = ", ".join(f"{m}: {_order_label(n)}" if several else _order_label(n) for m, n in orders)
         judged.append(JudgedFrequency(names, omega, MOTIONS))
-    L, B = scene.base
-    d = scene.piles.diameter if scene.piles is not None else None
-    return soil_validity(method, soil.V_s, characteristic_lengths(method, L, B, d), judged, stratum_cutoffs(soil))
+    cutoffs = None if declared.cutoffs is None else StratumCutoffs(*declared.cutoffs)
+    return judge_a0(fitted, declared.V_s, declared.lengths, judged, cutoffs)
 
 
-__all__ = ["DEFINITIONS", "MOTION_SHARE", "NO_RANGE", "SHEAR_MOTIONS", "A0Value", "FittedRange", "JudgedFrequency",
+__all__ = ["MOTION_SHARE", "SHEAR_MOTIONS", "A0Value", "FittedRange", "JudgedFrequency",
            "SoilValidity", "StratumCutoffs", "stratum_cutoffs",
-           "block_validity", "characteristic_lengths", "crank_validity", "fitted_range", "judged_orders",
+           "block_validity", "characteristic_lengths", "crank_validity", "fitted_range", "judge_a0", "judged_orders",
            "mode_frequencies", "plane_validity", "soil_validity", "spring_shares"]

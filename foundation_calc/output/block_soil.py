@@ -1,14 +1,14 @@
-"""``fcalc soil`` of a block scene: the six springs and dashpots at O of the scene's soil method;
-on a frequency-dependent soil also at each machine's speed and at each mode's own frequency
-(:mod:`foundation_calc.checks.block_soil`), in the crank foundation's layout
-(:func:`~foundation_calc.output.soil.frequency_table`)."""
+"""``fcalc soil`` of a block scene: the six springs and dashpots at O of the scene's support, and
+its own part (:meth:`~foundation_calc.solvers.supports.base.Support.soil_section`: a stratum's
+factors, a pile group's single pile and efficiency); on a frequency-dependent support also at each
+machine's speed and at each mode's own frequency (:mod:`foundation_calc.checks.block_soil`), in
+the crank foundation's layout (:func:`~foundation_calc.output.soil.frequency_table`)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
-from foundation_calc.output.stratum import stratum_document, stratum_line
 from foundation_calc.solvers.rigid_body.modes import MOTIONS
 from foundation_calc.units import hz_from_omega
 
@@ -46,39 +46,32 @@ def _at_document(column) -> dict:
 
 def soil_document(model, scene, source: str, columns=()) -> dict:
     """JSON (SI) of ``fcalc soil`` for a block scene; ``columns``: the springs and dashpots at each
-    frequency of a frequency-dependent soil (:func:`~foundation_calc.checks.block_soil.soil_at_frequencies`)."""
+    frequency of a frequency-dependent support (:func:`~foundation_calc.checks.block_soil.soil_at_frequencies`)."""
+    support = scene.support()
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "soil",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "method": scene.soil.method_used,
-        "frequency_dependent": scene.soil.frequency_dependent,
+        "method": support.method,
+        "frequency_dependent": support.frequency_dependent,
         "total_mass": model.mass,
         "base": {"length": scene.block.length, "width": scene.block.width},
         "springs": _rows(model),
         "warnings": scene.plausibility_warnings(),
         "at_frequencies": [_at_document(c) for c in columns],
-        "stratum": stratum_document(scene.soil, *scene.base),
-    } | _piles(scene, True)
+    } | support.soil_section(_speeds(scene)).document
 
 
-def _piles(scene, document: bool):
-    """A block on piles: the piles' JSON section (``document``) or their tables; nothing else."""
-    if scene.piles is None:
-        return {}
-    from foundation_calc.checks.block_piles import piles_at_frequencies
-    from foundation_calc.output.block_piles import piles_document, print_piles
-
-    rows = piles_at_frequencies(scene)
-    if document:
-        return {"piles": piles_document(rows)}
-    print_piles(scene, rows)
-    return {}
+def _speeds(scene) -> dict[str, float]:
+    """Every machine's speed [rad/s] by its name."""
+    return {m.name: m.omega_rad_s for m in scene.machines}
 
 
 def _frequency_rows(columns) -> list:
-    """The rows of a table at the frequencies of ``columns``: f [Hz], a0, then every spring and dashpot."""
-    rows = [("f", "Hz", [hz_from_omega(c.omega) for c in columns]), ("a0", "-", [c.a0 for c in columns])]
+    """The rows of a table at the frequencies of ``columns``: f [Hz], a0 (where the support has one),
+    then every spring and dashpot."""
+    rows = [("f", "Hz", [hz_from_omega(c.omega) for c in columns])]
+    rows += [("a0", "-", [c.a0 for c in columns])] if all(c.a0 is not None for c in columns) else []
     rows += [(label, unit, [c.springs[i] * scale for c in columns]) for i, (label, unit, scale) in enumerate(SPRINGS_AT)]
     return rows + [(label, unit, [c.dashpots[i] * scale for c in columns]) for i, (label, unit, scale) in enumerate(DASHPOTS_AT)]
 
@@ -92,9 +85,9 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     from foundation_calc.output.soil import frequency_table
 
     out = stdout()
-    rest = ", static (ω = 0)" if scene.soil.frequency_dependent else ""
-    method = "piles" if scene.piles is not None else repr(scene.soil.method_used)
-    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {method}{rest}",
+    support = scene.support()
+    rest = ", static (ω = 0)" if support.frequency_dependent else ""
+    table = Table(title=f"{escape(scene.name or source)}: springs and dashpots at O, method {support.label}{rest}",
                   title_justify="left")
     for col in ("motion", "K", "unit", "C", "unit", "ξ", "uncoupled, Hz"):
         table.add_column(col, justify="left" if col in ("motion", "unit") else "right")
@@ -102,9 +95,11 @@ def print_soil(model, scene, source: str, columns=()) -> None:
         table.add_row(row["motion"], fmt(row["K"], 4), UNITS["K"][i], fmt(row["C"], 4), UNITS["C"][i], fmt(row["xi"], 3),
                       fmt(row["omega_uncoupled"] / (2 * np.pi), 4))
     out.print(table)
-    if (stratum := stratum_document(scene.soil, *scene.base)) is not None:
-        out.print(escape(stratum_line(stratum)), soft_wrap=True)
-    _piles(scene, False)
+    for part in support.soil_section(_speeds(scene)).printed:
+        if isinstance(part, str):
+            out.print(escape(part), soft_wrap=True)
+        else:
+            out.print(frequency_table(part.title, part.heads, part.rows, part.digits))
     speeds = [c for c in columns if c.at != "mode"]
     modes = [c for c in columns if c.at == "mode"]
     if speeds:
@@ -113,7 +108,6 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     if modes:
         out.print(frequency_table("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of"
                                   " fcalc resonance, its dominant motion)", [c.label for c in modes], _frequency_rows(modes), 4))
-        out.print(("a0 = ω d/V_s (d the piles' diameter)" if scene.piles is not None else
-                   "a0 = ω B'/V_s (B' the base's shorter half-side)") + ". The modes and the checks take the soil at these"
+        out.print(support.a0(0.0)[1] + ". The modes and the checks take the soil at these"
                   " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at rest"
                   " only.", soft_wrap=True)

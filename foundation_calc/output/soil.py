@@ -6,7 +6,7 @@ import math
 
 from foundation_calc.checks.soil_methods import MethodResult, SoilComparison
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
-from foundation_calc.output.stratum import stratum_document, stratum_line
+from foundation_calc.solvers.supports.stratum import stratum_document, stratum_line
 from foundation_calc.units import hz_from_omega
 
 #: Rows of the table: (label, unit, attribute, scale from SI to the unit shown).

@@ -255,65 +255,45 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                 inertias.append(inertia)
         return masses, centres, inertias
 
-    def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
-        """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape
-        omega.shape + (6,), at the frequencies ``omega`` [rad/s]: a frequency-dependent soil's
-        K(ω), C(ω) (``soil.frequency_dependent``), the others' constants. Dashpots from damping
-        ratios are C_i = 2 ξ_i sqrt(K_i m_i), as :func:`~foundation_calc.solvers.block.model.block_model`
-        makes them. ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates):
-        ``omega``'s leading axis is then the batch's (a pile group's dynamic spring may be negative at
-        high frequency; its dashpot is 2 ξ sqrt(|K| m)). A support with coupled springs (a pile group's
-        sway-rocking) adds their off-diagonal K and C, each omega.shape + (6, 6)
-        (:meth:`~foundation_calc.scenes.block_soil.BlockSoil.coupling`)."""
+    def support(self, base=None, block=None, machine_cogs=None):
+        """What carries the block (:func:`~foundation_calc.solvers.supports.support_of`: a pile group
+        on ``[piles]``, else the footing on ``[soil]``), under the body of :meth:`model`'s masses;
+        ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of candidates)."""
         import numpy as np
 
         from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
+        from foundation_calc.solvers.supports import support_of
 
-        omega = np.asarray(omega, dtype=float)
         L, B = self.base if base is None else base
         M = bodies_mass_matrix(*self._bodies(block, machine_cogs))
-        m = np.diagonal(M, 0, -2, -1)  # batch + (6,)
-        extra = tuple(range(m.ndim - 1, omega.ndim))  # axes of omega past the batch's
-        m = np.expand_dims(m, extra)
-        L, B = np.expand_dims(L, extra), np.expand_dims(B, extra)
+        return support_of(self, L, B, np.diagonal(M, 0, -2, -1))
 
-        def six(values):
-            return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
-
-        J_O = np.moveaxis(m[..., 3:], -1, 0)
-        springs, ratios = self.soil.six_springs(L, B, m[..., 0], J_O, omega, self.embedment)
-        springs = six(springs)
-        if ratios is None:
-            return springs, six(self.soil.dashpot or [0.0] * 6)
-        coupled = self.soil.coupling(L, B, m[..., 0], J_O, omega, self.embedment)
-        return (springs, 2.0 * six(ratios) * np.sqrt(np.abs(springs) * m)) + (() if coupled is None else coupled)
+    def soil_impedance(self, omega, base=None, block=None, machine_cogs=None):
+        """The six springs [N/m, N m/rad] and dashpots [N s/m, N m s/rad] at O, each of shape
+        omega.shape + (6,), at the frequencies ``omega`` [rad/s] (:meth:`support`'s impedance:
+        a frequency-dependent support's K(ω), C(ω), the others' constants); ``base``, ``block``
+        and ``machine_cogs`` as :meth:`model` takes them (a batch of N candidates): ``omega``'s
+        leading axis is then the batch's. A support with coupled springs (a pile group's
+        sway-rocking) adds their off-diagonal K and C, each omega.shape + (6, 6)."""
+        at = self.support(base, block, machine_cogs).impedance(omega)
+        return (at.springs, at.dashpots) + (() if at.coupling is None else at.coupling)
 
     def model(self, base=None, block=None, machine_cogs=None):
-        """The block with every machine on its springs and dashpots (:func:`~foundation_calc.solvers.block.model.block_model`),
-        a frequency-dependent soil's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency).
+        """The block with every machine on its support's springs and dashpots at O
+        (:func:`~foundation_calc.solvers.block.model.block_model`), a frequency-dependent
+        support's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
         blocks (``fcalc design``): the model's matrices are then stacks; ``machine_cogs`` (one
         (..., 3) [m] per machine) the machines' centres of mass, moved with each candidate's block."""
-        import numpy as np
-
         from foundation_calc.solvers.block.model import block_model
         from foundation_calc.solvers.constants import GRAVITY
-        from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix
 
         L, B = self.base if base is None else base
-        bodies = self._bodies(block, machine_cogs)
-        M = bodies_mass_matrix(*bodies)
-        J_O = np.moveaxis(np.diagonal(M, 0, -2, -1)[..., 3:], -1, 0)
-        springs, ratios = self.soil.six_springs(L, B, M[..., 0, 0], J_O, D=self.embedment)
-        stack = np.stack(np.broadcast_arrays(*springs), axis=-1)
-        return block_model(
-            *bodies, stack, GRAVITY, (L * L + B * B) ** 0.5,
-            dashpots=self.soil.dashpot if ratios is None else None,
-            ratios=None if ratios is None else np.stack(np.broadcast_arrays(*ratios), axis=-1),
-            coupling=self.soil.coupling(L, B, M[..., 0, 0], J_O, D=self.embedment),
-        )
+        at = self.support(base, block, machine_cogs).impedance(0.0)
+        return block_model(*self._bodies(block, machine_cogs), at.springs, GRAVITY, (L * L + B * B) ** 0.5,
+                           dashpots=at.dashpots, coupling=at.coupling)
 
     def excitations(self):
         """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`)."""

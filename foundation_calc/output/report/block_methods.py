@@ -282,7 +282,8 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     peaks)."""
     model = scene.model()
     excitations = scene.excitations()
-    dependent = scene.soil.frequency_dependent and amplitudes is not None
+    support = scene.support()
+    dependent = support.frequency_dependent and amplitudes is not None
     own = [m["frequency"]["omega"] for m in amplitudes["modes"]] if dependent else None
     solve = block_solve(model, excitations, scene.soil_impedance if dependent else None, own)
     blocks: list = [Paragraph(
@@ -299,7 +300,7 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     blocks.append(_matrices(model))
     if dependent:
         blocks.append(Paragraph(
-            "The soil's springs and dashpots depend on frequency (soil.method = \"" + scene.soil.method_used + "\"): the matrices"
+            "The soil's springs and dashpots depend on frequency (soil.method = \"" + support.method + "\"): the matrices"
             " above hold the static springs; each order n is solved with K(nω), C(nω) at O, and each mode j is the j-th"
             " of K(ω_j*) v = p² M v at its own frequency ω_j* = p_j(K(ω_j*)), as the resonance check takes it."))
     dominant = [m["dominant_name"] for m in amplitudes["modes"]] if amplitudes else ["-"] * 6

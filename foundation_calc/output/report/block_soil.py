@@ -312,21 +312,39 @@ def tilt_chain(model, springs) -> Chain:
 
 
 def block_soil_blocks(scene, model, own=None) -> list:
-    """The soil's part of the block's sheet: the chain of its method (a frequency-dependent soil's
-    at every order's n ω and each mode's own ω* (``own`` [rad/s]) as well; :func:`order_springs_table`
-    gives the solver's at each)."""
-    method = scene.soil.method_used
-    tilt = tilt_chain(model, model.springs)
-    if scene.piles is not None:
-        from foundation_calc.output.report.block_piles import piles_blocks
-
-        return [*piles_blocks(scene, model), tilt]
-    if method == "springs":
-        return [Paragraph("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
-                          " entries less W z_G) and C below."), tilt]
-    if method in ("gazetas", "pais_kausel"):
-        return [*gazetas_blocks(scene, model, orders_of(scene, own)), tilt]
-    return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[method](scene, model), tilt]
+    """The support's part of the block's sheet (:meth:`~foundation_calc.solvers.supports.base.Support.sheet`,
+    rendered by :func:`rendered`: a soil method's chains at every order's n ω and each mode's own ω*
+    (``own`` [rad/s]) as well, on a frequency-dependent soil; :func:`order_springs_table` gives the
+    solver's at each), then K's rocking entries."""
+    orders = orders_of(scene, own)
+    out = [block for item in scene.support().sheet(model, orders) for block in rendered(item, scene, model, orders)]
+    return [*out, tilt_chain(model, model.springs)]
 
 
-__all__ = ["block_soil_blocks", "coefficients_chain", "tilt_chain", "gazetas_blocks", "lysmer_chain", "order_springs_table", "orders_of", "sp26_chain"]
+def rendered(item, scene, model, orders) -> list:
+    """A support's sheet item (:mod:`~foundation_calc.solvers.supports.sheet`) as the sheet's blocks."""
+    from foundation_calc.solvers.supports.sheet import Given, Grid, HandCalc, SoilMethod, Text
+
+    if isinstance(item, HandCalc):
+        chain = Chain(item.title)
+        for row in item.rows:
+            if isinstance(row, Given):
+                chain.given(row.symbol, row.value, row.unit, row.meaning)
+            else:
+                chain.step(row.symbol, row.formula, row.unit, row.source, row.meaning)
+        return [chain]
+    if isinstance(item, Text):
+        return [Paragraph(item.text)]
+    if isinstance(item, Grid):
+        values = np.asarray(item.values, dtype=float)
+        cols = [column(list(values[:, j]), item.digits) for j in range(values.shape[1])]
+        return [table(item.title, item.head, [(name, *(c[i] for c in cols)) for i, name in enumerate(item.names)],
+                      (False, *(True,) * values.shape[1]))]
+    if isinstance(item, SoilMethod):
+        if item.method in ("gazetas", "pais_kausel"):
+            return gazetas_blocks(scene, model, orders)
+        return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[item.method](scene, model)]
+    raise TypeError(f"not a sheet item: {item!r}")
+
+
+__all__ = ["block_soil_blocks", "coefficients_chain", "rendered", "tilt_chain", "gazetas_blocks", "lysmer_chain", "order_springs_table", "orders_of", "sp26_chain"]

@@ -1,11 +1,24 @@
-"""The stratum over rigid bedrock in ``fcalc soil`` (``[soil] stratum_depth``): its static factors
-on the half-space springs and its cutoff frequencies, as one line and as the JSON part ``stratum``
-(SI; :mod:`~foundation_calc.solvers.soil.stratum`). Motions: the block's x, y, z, rx, ry, rz (L
+"""A footing on a stratum over rigid bedrock (``[soil] stratum_depth``) in ``fcalc soil``: its static
+factors on the half-space springs and its cutoff frequencies, as one line and as the JSON part
+``stratum`` (SI; :mod:`~foundation_calc.solvers.soil.stratum`), for the block's support
+(:mod:`.footing`) and the crank foundation's table alike. Motions: the block's x, y, z, rx, ry, rz (L
 along x, in the plane of the crank foundation's motion)."""
 
 from __future__ import annotations
 
 import math
+
+
+def stratum_cutoffs(soil) -> tuple[float, float, float] | None:
+    """(H [m], ω_s, ω_c [rad/s]): the depth of the ``soil``'s stratum and the cutoffs below which
+    its shear (sway, torsion) and compression (vertical, rocking) motions radiate nothing
+    (:func:`~foundation_calc.solvers.soil.stratum.cutoff_frequencies`); None without ``stratum_depth``."""
+    if getattr(soil, "stratum_depth", None) is None:
+        return None
+    from foundation_calc.solvers.soil.stratum import cutoff_frequencies
+
+    omega_s, omega_c = cutoff_frequencies(soil.V_s, soil.poisson, soil.stratum_depth)
+    return float(soil.stratum_depth), float(omega_s), float(omega_c)
 
 
 def stratum_document(soil, L: float, B: float) -> dict | None:
@@ -40,4 +53,4 @@ def stratum_line(document: dict) -> str:
             f" alone below [{document['source']}]")
 
 
-__all__ = ["stratum_document", "stratum_line"]
+__all__ = ["stratum_cutoffs", "stratum_document", "stratum_line"]

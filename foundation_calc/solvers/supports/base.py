@@ -1,0 +1,137 @@
+"""The interface every support gives (:class:`Support`) and the plain data it answers with.
+
+Axes and coordinates as :mod:`foundation_calc.solvers.rigid_body`: q = (u_x, u_y, u_z, θ_x, θ_y,
+θ_z) of O, the centre of the base at base level. A support gives, at any frequency ω [rad/s], the
+springs K(ω) and dashpots C(ω) it puts between the ground and O (:class:`AtO`: six on the
+diagonal, and the off-diagonal terms of a support that couples its motions, a pile group's
+sway-rocking), whether they depend on ω, the range its model holds over (:class:`Validity`), and
+what the documents show of it: its part of ``fcalc soil`` (:class:`SoilSection`) and of the
+sheet's soil section (:mod:`.sheet`). Everything here is plain data: the output layer renders it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol
+
+import numpy as np
+
+#: The six motions at O, in the order of q.
+MOTIONS = ("x", "y", "z", "rx", "ry", "rz")
+
+
+@dataclass(frozen=True)
+class AtO:
+    """Springs and dashpots at O at one or more frequencies.
+
+    Attributes
+    ----------
+    springs : the six springs on the diagonal, shape (...) + (6,) [N/m, N m/rad]
+    dashpots : the six dashpots on the diagonal, shape (...) + (6,) [N s/m, N m s/rad]
+    coupling : (K_c, C_c), the off-diagonal springs and dashpots, (...) + (6, 6) each, zero on
+        the diagonal [N/m, N, N m/rad; ...]; None for a support whose motions are uncoupled at O
+    """
+
+    springs: np.ndarray
+    dashpots: np.ndarray
+    coupling: tuple | None = None
+
+    @property
+    def K(self) -> np.ndarray:
+        """The full 6 × 6 springs at O, (...) + (6, 6)."""
+        return _full(self.springs, None if self.coupling is None else self.coupling[0])
+
+    @property
+    def C(self) -> np.ndarray:
+        """The full 6 × 6 dashpots at O, (...) + (6, 6)."""
+        return _full(self.dashpots, None if self.coupling is None else self.coupling[1])
+
+
+def _full(diagonal, off):
+    full = np.asarray(diagonal, dtype=float)[..., None] * np.eye(6)
+    return full if off is None else full + off
+
+
+@dataclass(frozen=True)
+class Validity:
+    """The range of the dimensionless frequency a0 = ω b/V_s a support's model holds over.
+
+    Attributes
+    ----------
+    method : the name the soil model's check reports it by (``[soil] method``, or ``"piles"``)
+    a0_max : largest a0 of the fit [-]; None when no range applies (frequency-independent springs)
+    definition : how a0 is formed ("" when none applies)
+    source : where the range comes from, or why none applies
+    V_s : the soil's shear wave velocity [m/s] (None when no range applies)
+    lengths : motion -> b [m] of a0 (x, y, z, rx, ry, rz)
+    cutoffs : (H [m], ω_s, ω_c [rad/s]) of a stratum over bedrock, the frequencies below which
+        the shear and the compression motions radiate nothing; None without one
+    """
+
+    method: str
+    a0_max: float | None
+    definition: str
+    source: str
+    V_s: float | None = None
+    lengths: dict = field(default_factory=dict)
+    cutoffs: tuple | None = None
+
+
+@dataclass(frozen=True)
+class FrequencyTable:
+    """A table at several frequencies: one column per frequency (``heads``), rows (label, unit,
+    values in that unit), ``digits`` significant figures."""
+
+    title: str
+    heads: tuple
+    rows: tuple
+    digits: int = 4
+
+
+@dataclass(frozen=True)
+class SoilSection:
+    """A support's own part of ``fcalc soil``: the keys it adds to the JSON (SI), and what is
+    printed after the springs' table (lines of text and :class:`FrequencyTable`, in order)."""
+
+    document: dict
+    printed: tuple = ()
+
+
+class Support(Protocol):
+    """What carries the body (module docstring)."""
+
+    #: the support as the ``fcalc soil`` title names it (``"'gazetas'"``, ``"piles"``)
+    label: str
+    #: the soil method in force (``fcalc soil``'s JSON ``method``; the sheet's ``soil.method``)
+    method: str
+
+    @property
+    def frequency_dependent(self) -> bool:
+        """True when K and C change with frequency."""
+
+    #: why its springs do not scale with one factor on the soil's modulus, so that a sample of the
+    #: soil's stiffness (one factor per draw) does not apply ("[piles] is not sampled: ..."); None
+    #: when they do
+    unscaled: str | None
+
+    def impedance(self, omega) -> AtO:
+        """Springs and dashpots at O at the frequencies ``omega`` [rad/s] (:class:`AtO`, shape
+        omega.shape + (6,) for one body; a batch's leading axes first)."""
+
+    def validity(self) -> Validity:
+        """The range its model holds over."""
+
+    def a0(self, omega) -> tuple:
+        """(a0 at the frequencies ``omega`` [rad/s], or None when none applies; what a0 is) for the
+        columns of ``fcalc soil``."""
+
+    def soil_section(self, speeds) -> SoilSection:
+        """Its own part of ``fcalc soil``; ``speeds``: machine -> its speed ω [rad/s]."""
+
+    def sheet(self, model, orders) -> list:
+        """Its part of the sheet's soil section (:mod:`.sheet`'s items): how its springs and
+        dashpots at O are found; ``model``, the body's (its static M, K, C); ``orders``: (name, n,
+        column head, ω [rad/s]) of every frequency the response and the modes took it at."""
+
+
+__all__ = ["MOTIONS", "AtO", "FrequencyTable", "SoilSection", "Support", "Validity"]

@@ -1,0 +1,150 @@
+"""A footing on the soil: the block's base on a soil method's springs and dashpots at O, surface or
+embedded (``block.embedment``), on a half-space or on a stratum over bedrock (``soil.stratum_depth``).
+
+The six springs and damping ratios are the scene's soil method's
+(:meth:`~foundation_calc.scenes.block_soil.BlockSoil.six_springs`: Barkan's coefficients, SP 26,
+Lysmer's analogs, Gazetas' or Pais & Kausel's impedances, each in both vertical planes, and
+torsion; or the springs and dashpots given at O). A damping ratio ξ_i becomes the dashpot
+C_i = 2 ξ_i √(|K_i| m_i), m_i the total mass (translations) or the moment of inertia about the
+axis through O (rotations; ACI 351.3R-18, 4.5; Richart, Hall & Woods 1970, ch. 10).
+
+Range of validity, by method (:func:`footing_range`): a0 = ω r/V_s with the equivalent radius r of
+each motion, a0 <= 1.5 (``"lysmer"``, :data:`~foundation_calc.solvers.soil.lysmer.A0_FITTED`);
+a0 = ω B'/V_s, B' the shorter half-side, a0 <= 2 (``"gazetas"``, ``"pais_kausel"``,
+:data:`~foundation_calc.solvers.soil.impedance.A0_FITTED`); none for frequency-independent
+springs (``"coefficients"``, ``"sp26"``, ``"springs"``). On a stratum, the cutoffs V_s/4H and
+V_La/4H (:func:`~foundation_calc.solvers.soil.stratum.cutoff_frequencies`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from foundation_calc.solvers.supports.base import MOTIONS, AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.sheet import SoilMethod, Text
+
+#: Why a frequency-independent method has no range of a0, by method.
+NO_RANGE = {
+    "coefficients": "Barkan's coefficients give frequency-independent springs: no range of a0 applies",
+    "sp26": "SP 26.13330's springs and damping ratios do not depend on frequency: no range of a0 applies",
+    "springs": "the springs and dashpots given at O are taken at every frequency: no range of a0 applies",
+}
+
+#: How each half-space method defines a0.
+DEFINITIONS = {
+    "lysmer": "a0 = ω r/V_s, r the equivalent radius of the motion (r0 = √(BL/π) vertical and sliding,"
+              " r0ψ = (BL³/(3π))^¼ rocking, r0θ = (LB(L² + B²)/(6π))^¼ torsion)",
+    "gazetas": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+    "pais_kausel": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+}
+
+
+def footing_range(method: str) -> tuple[float | None, str, str]:
+    """(a0_max [-] or None, how a0 is formed, source or why no range applies) of a soil ``method``.
+
+    >>> footing_range("gazetas")[0], footing_range("sp26")[0]
+    (2.0, None)
+    """
+    if method == "lysmer":
+        from foundation_calc.solvers.soil.lysmer import A0_FITTED, A0_SOURCE
+    elif method in ("gazetas", "pais_kausel"):
+        from foundation_calc.solvers.soil.impedance import A0_FITTED, A0_SOURCE
+    else:
+        return None, "", NO_RANGE[method]
+    return A0_FITTED, DEFINITIONS[method], A0_SOURCE
+
+
+def footing_lengths(method: str, L: float, B: float) -> dict[str, float]:
+    """The length b [m] of a0 = ω b/V_s of each motion x, y, z, rx, ry, rz by ``method`` on a base
+    L (along x) × B [m]: Lysmer's equivalent radii, else B' = min(L, B)/2.
+
+    >>> b = footing_lengths("lysmer", 6.0, 4.0)
+    >>> round(b["z"], 4), round(b["ry"], 4), round(footing_lengths("gazetas", 6.0, 4.0)["rz"], 4)
+    (2.764, 3.0943, 2.0)
+    """
+    if method != "lysmer":
+        return dict.fromkeys(MOTIONS, float(min(L, B) / 2.0))
+    from foundation_calc.solvers.soil.lysmer import equivalent_radii
+    from foundation_calc.solvers.soil.torsion import torsion_radius
+
+    r0, r_ry = equivalent_radii(L, B)
+    lengths = (r0, r0, r0, equivalent_radii(B, L)[1], r_ry, torsion_radius(L, B))
+    return {m: float(v) for m, v in zip(MOTIONS, lengths)}
+
+
+class Footing:
+    """The base on the soil ``soil`` (a block's ``[soil]``: ``six_springs``, ``coupling``,
+    ``dashpot``, ``method_used``, ``frequency_dependent``, ``V_s``, ``stratum_depth``), L × B [m],
+    embedded D [m], under a body whose diagonal of M about O is ``masses`` (..., 6) [kg, kg m²]
+    (L, B and the masses: arrays over a batch of candidate blocks, or floats)."""
+
+    def __init__(self, soil, L, B, masses, D):
+        self.soil, self.L, self.B, self.masses, self.D = soil, L, B, np.asarray(masses, dtype=float), D
+        self.method = soil.method_used
+        self.label = repr(self.method)
+        self.unscaled = None  # every method's springs scale with one factor on the soil's stiffness data
+
+    @property
+    def frequency_dependent(self) -> bool:
+        """The soil method's (:attr:`~foundation_calc.scenes.soil.Soil.frequency_dependent`)."""
+        return self.soil.frequency_dependent
+
+    def impedance(self, omega) -> AtO:
+        """The six springs and dashpots at O at ``omega`` [rad/s] (module docstring), shape batch +
+        omega's axes past the batch's + (6,): ``omega``'s leading axes are the batch's; the
+        off-diagonal terms of a soil that couples its motions (``soil.coupling``)."""
+        omega = np.asarray(omega, dtype=float)
+        m = self.masses
+        extra = tuple(range(m.ndim - 1, omega.ndim))  # axes of omega past the batch's
+        m = np.expand_dims(m, extra)
+        L, B = np.expand_dims(self.L, extra), np.expand_dims(self.B, extra)
+
+        def six(values):
+            return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
+
+        J_O = np.moveaxis(m[..., 3:], -1, 0)
+        springs, ratios = self.soil.six_springs(L, B, m[..., 0], J_O, omega, self.D)
+        springs = six(springs)
+        if ratios is None:
+            return AtO(springs, six(self.soil.dashpot or [0.0] * 6))
+        coupled = self.soil.coupling(L, B, m[..., 0], J_O, omega, self.D)
+        return AtO(springs, 2.0 * six(ratios) * np.sqrt(np.abs(springs) * m), coupled)
+
+    def validity(self) -> Validity:
+        """The method's range of a0 (:func:`footing_range`), each motion's b, and a stratum's cutoffs."""
+        a0_max, definition, source = footing_range(self.method)
+        if a0_max is None:
+            return Validity(self.method, None, definition, source)
+        from foundation_calc.solvers.supports.stratum import stratum_cutoffs
+
+        return Validity(self.method, a0_max, definition, source, float(self.soil.V_s),
+                        footing_lengths(self.method, self.L, self.B), stratum_cutoffs(self.soil))
+
+    def a0(self, omega):
+        """a0 = ω B'/V_s at ``omega`` [rad/s] (None for a frequency-independent soil) and its meaning."""
+        values = None
+        if self.frequency_dependent:
+            values = np.asarray(omega, dtype=float) * (min(self.L, self.B) / 2.0) / self.soil.V_s
+        return values, "a0 = ω B'/V_s (B' the base's shorter half-side)"
+
+    def soil_section(self, speeds) -> SoilSection:
+        """The stratum's factors and cutoffs (:mod:`.stratum`), when there is one."""
+        from foundation_calc.solvers.supports.stratum import stratum_document, stratum_line
+
+        stratum = stratum_document(self.soil, self.L, self.B)
+        return SoilSection({"stratum": stratum}, () if stratum is None else (stratum_line(stratum),))
+
+    def sheet(self, model, orders) -> list:
+        """The soil method's hand calculations; the springs given at O need none."""
+        if self.method == "springs":
+            return [Text("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
+                         " entries less W z_G) and C below.")]
+        return [SoilMethod(self.method)]
+
+
+def build(scene, L, B, masses):
+    """Every block scene stands on its ``[soil]`` unless another support takes it."""
+    return Footing(scene.soil, L, B, masses, scene.embedment)
+
+
+__all__ = ["DEFINITIONS", "NO_RANGE", "Footing", "build", "footing_lengths", "footing_range"]

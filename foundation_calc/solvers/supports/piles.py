@@ -1,0 +1,220 @@
+"""A pile group under the block, its base the rigid cap (``[piles]``): the group's springs and
+dashpots at O, frequency-dependent and coupled (sway-rocking), with the cap's own footing in
+parallel where it bears on the soil or is embedded
+(:meth:`~foundation_calc.scenes.block_piles.PiledSoil.matrices`:
+:func:`~foundation_calc.solvers.piles.cap.pile_group` of the single piles of
+:func:`~foundation_calc.solvers.piles.single.single_pile`).
+
+Range of validity: a0 = ω d/V_s, d the pile diameter, a0 <= 1
+(:data:`~foundation_calc.solvers.piles.single.A0_FITTED`). In ``fcalc soil`` the single pile's head
+springs and dashpots and the group's efficiency (its spring over n single piles') at rest and at
+each machine's speed; on the sheet the single pile's static springs as a hand calculation and the
+group's at rest (its interaction needs a linear solve: the method and the result, not a chain).
+``tests/test_piles_cli.py`` compares the chain's printed springs with the solver's.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.solvers.supports.base import MOTIONS, FrequencyTable, SoilSection, Validity
+from foundation_calc.solvers.supports.footing import Footing
+from foundation_calc.solvers.supports.sheet import Grid, HandCalc, Rows, Text
+from foundation_calc.units import hz_from_omega
+
+#: Rows of the single pile's table in ``fcalc soil``: (key, label, unit, scale from SI).
+SINGLE_ROWS = (
+    ("K_v", "K_v", "MN/m", 1e-6), ("K_HH", "K_HH", "MN/m", 1e-6), ("K_MM", "K_MM", "MN m/rad", 1e-6),
+    ("K_HM", "K_HM", "MN/rad", 1e-6), ("K_T", "K_T", "MN m/rad", 1e-6),
+)
+
+#: Randolph & Wroth's r_m by the tip: (formula, ξ).
+R_M = {"end_bearing": ("0.25*L_p", "ξ = 0"), "floating": ("(0.25 + (2.5*rho_G*(1 - nu) - 0.25))*L_p", "ξ = 1")}
+
+#: Randolph & Wroth's head stiffness by the tip: (formula, note on the source, meaning).
+K_V = {"end_bearing": ("G_L*r0/t", ", ξ → 0", "vertical spring, tip on rock"),
+       "floating": ("G_L*r0*(b_t + 2*pi*rho_G/zeta*tanh(muL)/muL*L_p/r0)/(1 + b_t*t)", "", "vertical spring, floating tip")}
+
+#: f(z/d) of the profile as an expression of ``t`` = z/d (EN 1998-5 Table C.1's three soil models).
+PROFILE = {"uniform": "1", "linear": "{t}", "parabolic": "sqrt({t})"}
+
+
+
+@dataclass(frozen=True)
+class PilesAt:
+    """One pile's and the group's springs and dashpots at one frequency ``omega`` [rad/s].
+
+    Attributes
+    ----------
+    label : ``"static"`` or ``"ω, <machine>"``
+    a0 : ω d/V_s [-] (V_s the soil's at depth d)
+    single : name -> (K, C) of one pile: K_v, K_HH, K_MM, K_HM, K_T [N/m, N m/rad, N/rad; N s/m ...]
+        (K_MM, K_HM zero for a pinned head, K_HH then the free head's)
+    group : the group at O, (K, C) each (6, 6)
+    efficiency : motion -> the group's spring over n single piles' (x, y: K_HH; z: K_v) [-]
+    """
+
+    label: str
+    omega: float
+    a0: float
+    single: dict
+    group: tuple
+    efficiency: dict
+
+
+class Piles(Footing):
+    """The pile group under the base: the :class:`~.footing.Footing`'s arguments, ``soil`` the
+    scene's soil with the piles standing in it (:class:`~foundation_calc.scenes.block_piles.PiledSoil`:
+    its ``six_springs`` and ``coupling`` are the group's and the cap's)."""
+
+    label = "piles"
+    unscaled = ("[piles] is not sampled: its springs do not scale with one factor on the soil's modulus"
+                " (EN 1998-5 Table C.1: K ∝ E_s^(1 - n))")
+
+    def __init__(self, soil, L, B, masses, D):
+        super().__init__(soil, L, B, masses, D)
+        self.piles = soil.piles
+        self.label, self.unscaled = Piles.label, Piles.unscaled
+
+    def validity(self) -> Validity:
+        """a0 = ω d/V_s of every motion against the single pile's fitted range."""
+        from foundation_calc.solvers.piles.single import A0_FITTED, A0_SOURCE
+
+        return Validity("piles", A0_FITTED, "a0 = ω d/V_s, d the pile diameter, V_s the soil's at depth d", A0_SOURCE,
+                        float(self.soil.V_s), dict.fromkeys(MOTIONS, float(self.piles.diameter)))
+
+    def a0(self, omega):
+        """a0 = ω d/V_s at ``omega`` [rad/s] and its meaning."""
+        return np.asarray(omega, dtype=float) * self.piles.diameter / self.soil.V_s, "a0 = ω d/V_s (d the piles' diameter)"
+
+    def at_frequencies(self, speeds) -> tuple[PilesAt, ...]:
+        """The single pile and the group at rest and at every machine's speed (``speeds``: name -> ω [rad/s])."""
+        from foundation_calc.solvers.piles.cap import OMEGA_REST, springs_and_dashpots
+        from foundation_calc.solvers.piles.single import pinned, single_pile
+
+        soil, p = self.soil, self.piles
+        entries = [("static", 0.0)] + [(f"ω, {name}", w) for name, w in speeds.items()]
+        omega = np.array([w for _, w in entries])
+
+        def one(w):
+            head = single_pile(p.diameter, p.length, p.modulus, p.density, soil.G, soil.poisson, soil.density,
+                               p.soil_profile, p.tip == "end_bearing", w)
+            return pinned(head) if p.head == "pinned" else head
+
+        head, damped = one(omega), one(np.maximum(omega, OMEGA_REST))
+        K, C = springs_and_dashpots(lambda w: soil.group(self.L, self.B, w), omega)
+        n = len(p.positions)
+        rows = []
+        for i, (label, w) in enumerate(entries):
+            single = {name: (float(np.real(getattr(head, name)[i])),
+                             float(np.imag(getattr(damped, name)[i]) / max(w, OMEGA_REST)))
+                      for name in ("K_v", "K_HH", "K_MM", "K_HM", "K_T")}
+            efficiency = {"x": K[i, 0, 0] / (n * single["K_HH"][0]), "y": K[i, 1, 1] / (n * single["K_HH"][0]),
+                          "z": K[i, 2, 2] / (n * single["K_v"][0])}
+            rows.append(PilesAt(label, float(w), float(w * p.diameter / soil.V_s), single, (K[i], C[i]),
+                                {k: float(v) for k, v in efficiency.items()}))
+        return tuple(rows)
+
+    def soil_section(self, speeds) -> SoilSection:
+        """The single pile's springs and dashpots, the group's efficiency and its sway-rocking
+        coupling at rest and at each machine's speed (JSON ``piles``; no stratum under piles)."""
+        p, rows = self.piles, self.at_frequencies(speeds)
+        document = [{
+            "at": r.label, "omega": r.omega, "a0": r.a0,
+            "single": {k: {"K": K, "C": C} for k, (K, C) in r.single.items()},
+            "group": {"K": r.group[0].tolist(), "C": r.group[1].tolist()},
+            "efficiency": r.efficiency,
+        } for r in rows]
+        table = [("f", "Hz", [hz_from_omega(r.omega) for r in rows]), ("a0", "-", [r.a0 for r in rows])]
+        table += [(label, unit, [r.single[key][0] * scale for r in rows]) for key, label, unit, scale in SINGLE_ROWS]
+        table += [(f"C{label[1:]}", unit.replace("MN", "MN s"), [r.single[key][1] * scale for r in rows])
+                  for key, label, unit, scale in SINGLE_ROWS]
+        table += [(f"η_{m}", "-", [r.efficiency[m] for r in rows]) for m in ("x", "y", "z")]
+        table += [("K_x,ry", "MN/rad", [r.group[0][0, 4] * 1e-6 for r in rows]),
+                  ("K_y,rx", "MN/rad", [r.group[0][1, 3] * 1e-6 for r in rows])]
+        title = (f"Piles: {len(p.positions)} × d = {p.diameter:g} m, L = {p.length:g} m, {p.head} heads, {p.tip.replace('_', '-')},"
+                 f" soil {p.soil_profile}: one pile's head springs and dashpots, the group's efficiency η"
+                 " (its spring over n single piles') and coupling at O")
+        note = ("Single pile: EN 1998-5 Table C.1 [EC8] (K_HH, K_MM, K_HM), Randolph & Wroth 1978 (K_v), Randolph 1981 (K_T) [RW],"
+                " frequency shape of a Winkler pile (Makris & Gazetas 1992 [MG]); group: Dobry & Gazetas 1988 [DG] interaction"
+                " factors under a rigid cap. a0 = ω d/V_s.")
+        return SoilSection({"stratum": None, "piles": document},
+                           (FrequencyTable(title, tuple(r.label for r in rows), tuple(table), 4), note))
+
+    def sheet(self, model, orders) -> list:
+        """The single pile's static springs as a hand calculation, then the group's method and its
+        springs and dashpots at O at rest."""
+        rest = self.at_frequencies({})[0]
+        K, C = (np.where(np.abs(X) > 1e-12 * np.abs(X).max(), X, 0.0) for X in rest.group)  # round-off of the sums
+        head = ("", *MOTIONS)
+        p = self.piles
+        text = (f"{len(p.positions)} piles under the rigid cap (the block's base, O its centre). Under the cap's motion q the"
+                " heads move w_i = u_z + y_i θ_x − x_i θ_y, u_x,i = u_x − y_i θ_z, u_y,i = u_y + x_i θ_z. With the"
+                " interaction factors of [DG] (α_v = √(r0/S) e^{−(β+i)ωS/V_s}; horizontal α(0°) cos²θ + α(90°) sin²θ,"
+                " α(0°) at V_La = 3.4 V_s/(π(1 − ν))), A_ij = α(S_ij), the head forces are P = K_1 A⁻¹ u in each direction"
+                " and the cap's springs K = Σ Dᵀ K_1 A⁻¹ D (a linear solve, not a hand calculation), plus each pile's own"
+                " K_MM, K_HM and K_T. At frequency ω each single-pile spring is the static one times its Winkler shape χ^{p}"
+                " ([MG]); the dashpots C = Im K(ω)/ω, their symmetric part kept positive semi-definite. Efficiency at rest:"
+                f" η_x = {rest.efficiency['x']:.3g}, η_z = {rest.efficiency['z']:.3g} (group over n single piles).")
+        out = [single_pile_chain(self.soil, p), Text(text),
+               Grid("The group's springs at O at rest, K [N/m, N/rad, N m/rad] (the coupling off the diagonal)", head,
+                    MOTIONS, K),
+               Grid("The group's dashpots at O at rest, C [N s/m, N s/rad, N m s/rad]", head, MOTIONS, C)]
+        if p.cap_contact or self.D:
+            out.append(Text("The cap's own contact with the soil (piles.cap_contact, or the sidewalls of block.embedment)"
+                            " adds the footing's springs and dashpots of soil.method in parallel (not in the tables above)."))
+        return out
+
+
+def single_pile_chain(soil, p) -> HandCalc:
+    """The static head springs of one of the piles ``p`` (the ``[piles]`` table) in ``soil`` (:func:`~foundation_calc.solvers.piles.single.single_pile` at ω = 0)."""
+    from foundation_calc.solvers.piles.single import ACTIVE_LENGTH_EXPONENT, PILE_POISSON, TABLE_C1
+
+    chain = Rows()
+    chain.given("d", p.diameter, "m", "pile diameter")
+    chain.given("L_p", p.length, "m", "pile length")
+    chain.given("E_p", p.modulus, "Pa", "Young's modulus of the pile")
+    chain.given("G", soil.G, "Pa", "shear modulus of the soil at depth d")
+    chain.given("nu", soil.poisson, "-", "Poisson's ratio of the soil")
+    chain.step("E_s", "3*G", "Pa", "[EC8] Annex C", "Young's modulus of the table's soil model at depth d (3 G)")
+    (a, m), (b, n), (c, q) = TABLE_C1[p.soil_profile]
+    chain.step("K_HH", f"d*E_s*{a:g}*(E_p/E_s)**{m:g}", "N/m", "[EC8] Table C.1", "sway spring of a fixed head")
+    chain.step("K_MM", f"d**3*E_s*{b:g}*(E_p/E_s)**{n:g}", "N m/rad", "[EC8] Table C.1", "rocking spring of a fixed head")
+    chain.step("K_HM", f"d**2*E_s*({c:g})*(E_p/E_s)**{q:g}", "N/rad", "[EC8] Table C.1", "sway-rocking coupling of a fixed head")
+    if p.head == "pinned":
+        chain.step("K_HHp", "K_HH - K_HM**2/K_MM", "N/m", "[EC8] Table C.1, M = 0", "sway spring of a pinned head")
+    chain.step("l_a", f"2*d*(E_p/E_s)**{ACTIVE_LENGTH_EXPONENT[p.soil_profile]:g}", "m", "[Fa] ch. 15", "active length")
+    f = PROFILE[p.soil_profile]
+    chain.step("G_L", "G*" + f.format(t="max(L_p, d)/d"), "Pa", "[EC8] Table C.1", "shear modulus of the soil at the tip")
+    chain.step("rho_G", "(" + f.format(t="max(L_p/2, d)/d") + ")/(" + f.format(t="max(L_p, d)/d") + ")", "-", "[RW]",
+               "mid-depth modulus over the tip's")
+    chain.step("r0", "d/2", "m", "[RW]", "pile radius")
+    chain.step("lam", "E_p/G_L", "-", "[RW]", "pile-soil stiffness ratio")
+    r_m, shown = R_M[p.tip]
+    chain.step("r_m", r_m, "m", f"[RW] {shown}", "radius of the soil's influence")
+    chain.step("zeta", "log(r_m/r0)", "-", "[RW]", "shaft's load-transfer factor")
+    chain.step("muL", "sqrt(2/(zeta*lam))*L_p/r0", "-", "[RW]", "pile compressibility μL")
+    chain.step("t", "tanh(muL)/muL*L_p/r0/(pi*lam)", "-", "[RW]", "compressibility term")
+    if p.tip == "floating":
+        chain.step("b_t", "4/(1 - nu)", "-", "[RW]", "base term 4η/((1 − ν) ξ), η = ξ = 1")
+    K_v, shown, meaning = K_V[p.tip]
+    chain.step("K_v", K_v, "N/m", f"[RW] (17){shown}", meaning)
+    chain.step("G_m", "G*" + f.format(t="max(L_p/2, d)/d"), "Pa", "[RW] 1981", "shear modulus of the soil at mid-depth")
+    chain.step("k_t", "4*pi*G_m*r0**2", "N m/rad/m", "[RW] 1981", "torsional reaction of the shaft per unit length")
+    chain.step("GJ", f"E_p/(2*(1 + {PILE_POISSON:g}))*pi*d**4/32", "N m²", "[RW] 1981", "torsional rigidity of the pile")
+    chain.step("K_T", "sqrt(k_t*GJ)*tanh(sqrt(k_t/GJ)*L_p)", "N m/rad", "[RW] 1981", "torsional spring of the head")
+    return HandCalc(f"One pile's static head springs ({p.head} head, {p.tip.replace('_', '-')}, soil {p.soil_profile})",
+                    tuple(chain))
+
+
+
+def build(scene, L, B, masses):
+    """A block scene with ``[piles]`` stands on them."""
+    if getattr(scene, "piles", None) is None:
+        return None
+    return Piles(scene.soil, L, B, masses, scene.embedment)
+
+
+__all__ = ["SINGLE_ROWS", "Piles", "PilesAt", "build", "single_pile_chain"]
