@@ -235,23 +235,28 @@ def _inputs(scene, L, B, H, place):
     """Outcome and governing index of the ``inputs`` check (plausibility warnings), as ``fcalc
     check`` finds them on each candidate's scene: a position not on the candidate's block
     (:func:`~foundation_calc.scenes.block.placement`: mm typed as m, below the base, beyond the
-    footprint), a dimension outside its plausible range, or any finding of the scene that does not
-    depend on the block (the soil, the machines, the limits)."""
+    footprint), a dimension outside its plausible range, a stratum shallower than twice the
+    candidate base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`), or any
+    finding of the scene that does not depend on the block (the soil, the machines, the limits)."""
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
+    from foundation_calc.scenes.stratum import shallow, stratum_remarks
 
     positions = scene.positions()
-    fixed = any(f.key not in positions and f.key not in VARIABLE_KEYS for f in scene.plausibility_findings())
+    on_base = {str(r) for r in stratum_remarks(scene.soil, *scene.base)}  # the scene's own base's, judged per candidate below
+    fixed = any(f.key not in positions and f.key not in VARIABLE_KEYS and str(f) not in on_base
+                for f in scene.plausibility_findings())
     sizes = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         sizes |= RANGES[KEYS[key]].outside(values)
     placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
     for position in positions.values():
         placed = np.where(placed == 0, placement(place(position), L, B), placed)
-    governing = np.where(placed > 0, placed, np.where(sizes, 4, 5 if fixed else 0))
+    governing = np.where(placed > 0, placed, np.where(sizes, 4, np.where(shallow(scene.soil, L, B), 6, 5 if fixed else 0)))
     reasons = ("no input outside its plausible range", "a position from O more than 10 × the base's diagonal (mm typed as m?)",
                "a position below the block's base", "a position beyond the block's footprint",
-               "a block dimension outside its plausible range", "an input value outside its plausible range")
+               "a block dimension outside its plausible range", "an input value outside its plausible range",
+               "soil.stratum_depth less than twice the base's equivalent radius")
     return np.where(governing > 0, WARN, PASS).astype(np.int8), governing, reasons
 
 

@@ -289,12 +289,16 @@ def judge_office(out: Verdicts, scene, designs):
 def judge_inputs(out: Verdicts, scene, designs):
     """The plausibility warnings (the ``inputs`` check) of every candidate: the scene's own that
     do not depend on the block, and the block's dimensions, the lengths against the size
-    sqrt(S) of its base and the block-to-machine mass ratio, as the scene model judges them."""
+    sqrt(S) of its base, the block-to-machine mass ratio and a stratum shallower than twice the
+    base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`), as the scene
+    model judges them."""
     from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR
     from foundation_calc.scenes.plausibility import RANGES
+    from foundation_calc.scenes.stratum import shallow, stratum_remarks
 
     f, mech = scene.foundation, scene.mechanism
-    fixed = [x for x in scene.plausibility_findings() if not _block_dependent(x.key)]
+    on_base = {str(x) for x in stratum_remarks(scene.soil, *f.dimensions)}  # the scene's own base's
+    fixed = [x for x in scene.plausibility_findings() if not _block_dependent(x.key) and str(x) not in on_base]
 
     def outside(values, name):
         return RANGES[name].outside(values)
@@ -308,7 +312,7 @@ def judge_inputs(out: Verdicts, scene, designs):
     lengths = [np.abs(designs.a), np.abs(designs.points_u).max(axis=0, initial=0.0), np.abs(designs.points_H).max(axis=0, initial=0.0)]
     too_long = too_long_foundation | (np.maximum.reduce(lengths) > size)
     too_long |= max(abs(mech.crank_radius), abs(mech.rod_length)) > size
-    warn = block | too_long | bool(fixed)
+    warn = block | too_long | bool(fixed) | shallow(scene.soil, designs.L, designs.B)
     if f.machine is not None:
         machine = f.machine.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
         name = "mass_ratio_rotating" if mech is None else "mass_ratio_reciprocating"
