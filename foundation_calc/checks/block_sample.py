@@ -40,7 +40,7 @@ def _piece(scene, factor) -> dict[str, np.ndarray]:
     model = on_factors(scene.model(), factor)
     impedance = scaled_impedance(scene.soil_impedance, factor) if scene.support().frequency_dependent else None
     points = np.array([p.at for p in scene.points], dtype=float).reshape(-1, 3)
-    built = Built(model, scene.excitations(), points, impedance, None, None)
+    built = Built(model, scene.excitations(), points, impedance, None)
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged by dynamics
         modes = batch_modes(model) if impedance is None else consistent_batch(model, impedance)
         found = dynamics(scene, built, modes=modes)

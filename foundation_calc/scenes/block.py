@@ -188,6 +188,16 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             found |= {f"machines[{i}].cranks[{j}].crank_centre": c.crank_centre for j, c in enumerate(m.cranks)}
         return found | {f"points[{k}].at": p.at for k, p in enumerate(self.points)}
 
+    def carried_positions(self) -> dict[str, str]:
+        """Key of each of :meth:`positions` that a machine carries rigidly -> the key of that
+        machine's centre of mass: a crank mechanism's centres, whose mean mass and harmonics the
+        model gives at, and moves with, the machine's centre of mass
+        (:data:`~foundation_calc.scenes.block_parts.MACHINE_PARTS`). A resized block
+        (``fcalc design``) moves them by their machine's displacement; every other position by its
+        own place on the block."""
+        return {f"machines[{i}].cranks[{j}].crank_centre": f"machines[{i}].cog"
+                for i, m in enumerate(self.machines) for j in range(len(m.cranks))}
+
     def related_findings(self, prefix: str, found: list) -> list:
         """The positions that are not on the block (:func:`placement`): more than
         :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal from O (mm

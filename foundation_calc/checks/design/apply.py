@@ -16,6 +16,10 @@ the scene gives):
   with the top, by H_new - H; positions below the top keep their height;
 - a position on or beyond an end face (|x| >= L/2, or |y| >= B/2) keeps its distance from that
   face (a point on the block's corner stays on the corner); one inside keeps its coordinates;
+- a position a machine carries rigidly (a crank's centre: the model gives the mechanism at the
+  machine's centre of mass) moves with that machine's centre of mass (:func:`moved_positions`:
+  a block scene's positions are the scene's one list,
+  :meth:`~foundation_calc.scenes.block.BlockScene.positions`);
 - a crank foundation's mass, moment of inertia, centre-of-mass height, base area, second moment
   and base length and width, when the scene gives them beside ``[foundation.block]``, are left out
   of the candidate's document and computed from the block (:data:`CRANK_DERIVED`: given, they
@@ -23,8 +27,8 @@ the scene gives):
   centre of mass C (``mechanism.crank_axis_to_cog``, ``loads[].at.height``, ``points[].height``)
   are moved by the rule above in base coordinates and measured again from the new C.
 
-A vectorised evaluator applies the same rule on arrays with :func:`moved` (and, for a crank
-scene, :func:`moved_machine_height` and :func:`moved_from_c`), so that its verdicts and those of
+A vectorised evaluator applies the same rule on arrays with :func:`moved` and
+:func:`moved_positions` (and, for a crank scene, :func:`moved_machine_height` and :func:`moved_from_c`), so that its verdicts and those of
 :func:`apply` followed by ``fcalc check``'s path are the same.
 """
 
@@ -167,21 +171,38 @@ def moved(position, old: tuple[float, float, float], new):
     return np.stack(np.broadcast_arrays(*out), axis=-1)
 
 
-def _move(point: list, old, new) -> list[float]:
-    return [float(v) for v in moved(point, old, new)]
+def moved_positions(scene, old: tuple[float, float, float], new) -> dict[str, np.ndarray]:
+    """Key -> (…, 3) [m] of every position a ``block_foundation`` scene gives
+    (:meth:`~foundation_calc.scenes.block.BlockScene.positions`) on its block resized from ``old``
+    to ``new`` (L, B, H; arrays over candidates broadcast, as :func:`moved`): each by :func:`moved`,
+    but one a machine carries (:meth:`~foundation_calc.scenes.block.BlockScene.carried_positions`,
+    a crank's centre) by its machine's displacement, as the model moves the machine's parts."""
+    positions = scene.positions()
+    carriers = scene.carried_positions()
+    found = {key: moved(p, old, new) for key, p in positions.items() if key not in carriers}
+    for key, carrier in carriers.items():
+        found[key] = np.asarray(positions[key], dtype=float) + (found[carrier] - np.asarray(positions[carrier], dtype=float))
+    return {key: found[key] for key in positions}
 
 
-def _block_positions(document: dict, old, new) -> None:
-    for machine in document.get("machines", []):
-        machine["cog"] = _move(machine["cog"], old, new)
-        for load in machine.get("loads", []):
-            if load.get("at") is not None:
-                load["at"] = _move(load["at"], old, new)
-        unbalance = machine.get("unbalance")
-        if isinstance(unbalance, dict) and unbalance.get("at") is not None:
-            unbalance["at"] = _move(unbalance["at"], old, new)
-    for point in document.get("points", []):
-        point["at"] = _move(point["at"], old, new)
+def _put(document: dict, key: str, value) -> None:
+    """Set ``key`` (as :meth:`~foundation_calc.scenes.block.BlockScene.positions` writes it:
+    ``machines[0].cranks[1].crank_centre``) of ``document`` to ``value``."""
+    *path, last = [(name, int(index[:-1]) if index else None) for name, _, index in
+                   (part.partition("[") for part in key.split("."))]
+    table = document
+    for name, index in path:
+        table = table[name] if index is None else table[name][index]
+    table[last[0]] = value
+
+
+def _block_positions(document: dict, given: Mapping[str, Any], old, new) -> None:
+    """Every position of the scene ``given`` (the document before the candidate's values), moved
+    onto the candidate's block in ``document`` (:func:`moved_positions`)."""
+    from foundation_calc.scenes import parse_scene
+
+    for key, position in moved_positions(parse_scene(given, "<design>"), old, new).items():
+        _put(document, key, [float(v) for v in position])
 
 
 def _crank_c_height(foundation: dict, dimensions) -> float:
@@ -256,7 +277,10 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
         (result["piles"] if key in PILE_VARIABLES else block)[key.rsplit(".", 1)[1]] = value
     old = tuple(v for k, v in old_values.items() if k not in PILE_VARIABLES)
     new = tuple(v for k, v in new_values.items() if k not in PILE_VARIABLES)
-    (_crank_positions if kind == "crank_foundation" else _block_positions)(result, old, new)
+    if kind == "crank_foundation":
+        _crank_positions(result, old, new)
+    else:
+        _block_positions(result, document, old, new)
     if isinstance(result.get("piles"), dict):  # the heads keep their place in the plan, scaled with it
         result["piles"]["positions"] = [[x * new[0] / old[0], y * new[1] / old[1]] for x, y in result["piles"]["positions"]]
     return result
@@ -271,5 +295,5 @@ def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: s
 
 
 __all__ = ["ALIASES", "CRANK_DERIVED", "PILE_VARIABLES", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
-           "given_dimensions", "moved", "moved_from_c",
+           "given_dimensions", "moved", "moved_from_c", "moved_positions",
            "moved_machine_height", "variable"]

@@ -231,13 +231,14 @@ def _office(scene, model, L, B, m_b):
     return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
 
 
-def _inputs(scene, L, B, H, place):
+def _inputs(scene, L, B, H):
     """Outcome and governing index of the ``inputs`` check (plausibility warnings), as ``fcalc
     check`` finds them on each candidate's scene: a position not on the candidate's block
     (:func:`~foundation_calc.scenes.block.placement`: mm typed as m, below the base, beyond the
     footprint), a dimension outside its plausible range, a stratum shallower than twice the
     candidate base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`), or any
     finding of the scene that does not depend on the block (the soil, the machines, the limits)."""
+    from foundation_calc.checks.design.apply import moved_positions
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
@@ -250,8 +251,9 @@ def _inputs(scene, L, B, H, place):
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         sizes |= RANGES[KEYS[key]].outside(values)
     placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
-    for position in positions.values():
-        placed = np.where(placed == 0, placement(place(position), L, B), placed)
+    block = (scene.block.length, scene.block.width, scene.block.height)
+    for position in moved_positions(scene, block, (L, B, H)).values():
+        placed = np.where(placed == 0, placement(position, L, B), placed)
     governing = np.where(placed > 0, placed, np.where(sizes, 4, np.where(shallow(scene.soil, L, B), 6, 5 if fixed else 0)))
     reasons = ("no input outside its plausible range", "a position from O more than 10 × the base's diagonal (mm typed as m?)",
                "a position below the block's base", "a position beyond the block's footprint",
@@ -321,15 +323,14 @@ def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
 class Built:
     """Candidate blocks on a scene's soil: their model (stacks), every machine's loads, the points
     (N, P, 3) [m] (or (P, 3), the same on every block), the soil's impedance ω -> (springs,
-    dashpots) of a frequency-dependent soil (else None), ``place`` (position [m] -> (N, 3) on each
-    block) and the blocks' masses [kg]; :func:`dynamics` reads the first four (a sample of one
-    block's soil, :mod:`~foundation_calc.checks.block_sample`, gives no others)."""
+    dashpots) of a frequency-dependent soil (else None) and the blocks' masses [kg]; :func:`dynamics`
+    reads the first four (a sample of one block's soil, :mod:`~foundation_calc.checks.block_sample`,
+    gives no other)."""
 
     model: object
     excitations: list
     points: np.ndarray
     impedance: object
-    place: object
     block_mass: np.ndarray
 
 
@@ -350,7 +351,7 @@ def _built(scene, L, B, H) -> Built:
         def impedance(omega):
             return scene.soil_impedance(omega, base=(L, B), block=block, machine_cogs=cogs)
 
-    return Built(model, excitations, points, impedance, place, block[0])
+    return Built(model, excitations, points, impedance, block[0])
 
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
@@ -362,7 +363,7 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
         scene = scene.model_copy(update={"soil": scene.soil.with_dimensions(*piles)})
     built = _built(scene, L, B, H)
     model, m_b = built.model, built.block_mass
-    found = {"inputs": _inputs(scene, L, B, H, built.place)}
+    found = {"inputs": _inputs(scene, L, B, H)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     moving = dynamics(scene, built)
     if getattr(scene.soil, "modulus_range", None) is not None:
