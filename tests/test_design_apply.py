@@ -128,3 +128,23 @@ def test_crank_helpers_on_arrays_match_the_document_rule():
     h_new = np.array([s.foundation.cog_height for s in after])
     _, a = moved_from_c(0.0, before.mechanism.crank_axis_to_cog, before.foundation.cog_height, h_new, old, new)
     assert a.tolist() == pytest.approx([s.mechanism.crank_axis_to_cog for s in after], rel=1e-12)
+
+
+def test_a_crank_centre_moves_with_its_machine_where_its_own_place_would_not():
+    """A crank centre on the block's end face (x = L/2) of a machine whose centre of mass lies
+    inside: a longer block moves the face, not the machine. The centre goes with its machine (the
+    model gives the mechanism at the machine's centre of mass), in the written scene and in the
+    search's batch alike: the two evaluators agree (a centre moved by its own place, with the face,
+    would put the mechanism 0.5 m from where the batch judged it)."""
+    from foundation_calc.checks.design.block import evaluate as batch_evaluate
+    from foundation_calc.checks.design.recheck import disagreements
+
+    document = read_toml(CONFIGS / "block_two_throw_compressor.toml")
+    document["machines"][0]["cranks"][0]["crank_centre"] = [3.0, -0.4, 3.0]  # on the end face, L/2 = 3 m
+    batch = {"block.length": np.array([6.0, 7.0]), "block.height": np.array([2.0, 2.5])}
+    written = applied_document(document, {"block.length": 7.0, "block.height": 2.5})
+    assert written["machines"][0]["cog"] == pytest.approx([0.0, 0.0, 3.4])
+    assert written["machines"][0]["cranks"][0]["crank_centre"] == pytest.approx([3.0, -0.4, 3.5])
+    assert written["points"][1]["at"] == pytest.approx([3.5, 2.0, 2.5])  # a point on the corner follows the faces
+    searched = batch_evaluate(parse_scene(document, "face"), batch)
+    assert [d.text for d in disagreements(batch, searched, evaluate(document, batch))] == []
