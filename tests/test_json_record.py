@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 RECORD = ROOT / "tests" / "data" / "json_record.json.gz"
 
 #: Keys whose values differ from run to run or from machine to machine.
-VOLATILE = frozenset({"fcalc_version", "source", "seconds", "elapsed", "elapsed_seconds", "wall_seconds"})
+VOLATILE = frozenset({"fcalc_version", "scene", "source", "seconds", "elapsed", "elapsed_seconds", "wall_seconds"})
 
 #: The commands run on each scene of a kind: name -> (API function, keyword arguments); a
 #: ``{machine}`` in a value is the scene's first machine.
