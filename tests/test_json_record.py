@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import gzip
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -96,14 +97,60 @@ def document(config: str, command: str) -> dict:
     return json.loads(json.dumps(found).replace(f"{ROOT}/", ""))  # paths as from the checkout's root
 
 
+def same_phase(old: dict, new: dict) -> bool:
+    """Whether the phases of two harmonics (``magnitude`` and ``phase`` [rad]) agree as angles (mod
+    2π) to what their values resolve: 1e-9 rad, or the angle 1e-12 (the absolute floor of a
+    number in SI units) subtends at the magnitude. The phase of a harmonic the physics makes zero
+    is the angle of its round-off, any value; and -π and π are one angle."""
+    turn = (new["phase"] - old["phase"] + math.pi) % (2.0 * math.pi) - math.pi
+    return abs(turn) <= max(1e-9, 1e-12 / max(min(old["magnitude"], new["magnitude"]), 1e-300))
+
+
+def error_differences(old: dict, new: dict, exact: dict, path: str) -> list[str]:
+    """Where the errors of the approximations' harmonics (``errors.<method>.harmonics``,
+    e = |approximation - exact|/|exact| [-]) differ beyond what their values resolve: 1e-9
+    relative, or what the absolute floor 1e-12 of the two harmonics (in SI units) makes of e,
+    1e-12 (1 + e)/|exact|. A harmonic the physics makes zero is, in the exact solution, the
+    round-off of its Newton iteration: its error is a ratio of round-off, any value."""
+    found = [f"{path}: keys {sorted(set(old) ^ set(new))}"] if set(old) != set(new) else []
+    for key in old.keys() & new.keys():
+        a, b = old[key], new[key]
+        if not (isinstance(a, float) and isinstance(b, float)):
+            found += differences(a, b, f"{path}.{key}")
+            continue
+        floor = 1e-12 * (1.0 + max(abs(a), abs(b))) / max(exact[key]["magnitude"], 1e-300)
+        if abs(a - b) > max(1e-9 * max(abs(a), abs(b)), floor):
+            found.append(f"{path}.{key}: {a!r}, now {b!r}")
+    return found
+
+
 def differences(old, new, path="") -> list[str]:
-    """Where ``new`` differs from ``old``: numbers beyond 1e-9 relative (1e-12 absolute), any
-    other value or key; volatile keys skipped."""
+    """Where ``new`` differs from ``old``: numbers beyond 1e-9 relative (1e-12 absolute), a
+    harmonic's phase as :func:`same_phase` judges it, any other value or key; volatile keys
+    skipped."""
     if isinstance(old, dict) and isinstance(new, dict):
         found = [f"{path}: keys {sorted(set(old) ^ set(new))}"] if set(old) != set(new) else []
+        phased = all(isinstance(d.get(k), float) for d in (old, new) for k in ("phase", "magnitude"))
+        exact = new.get("approximations", {}).get("exact", {}).get("harmonics") if "errors" in new else None
         for key in old.keys() & new.keys():
-            if key not in VOLATILE:
-                found += differences(old[key], new[key], f"{path}.{key}")
+            if key in VOLATILE or (phased and key == "phase"):
+                continue
+            if key == "errors" and exact is not None and isinstance(old[key], dict) and isinstance(new[key], dict):
+                for method in sorted(old[key].keys() | new[key].keys()):
+                    a, b = old[key].get(method), new[key].get(method)
+                    where = f"{path}.errors.{method}"
+                    if not (isinstance(a, dict) and isinstance(b, dict)):
+                        found += differences(a, b, where)
+                        continue
+                    for part in sorted(a.keys() | b.keys()):
+                        if part == "harmonics":
+                            found += error_differences(a[part], b[part], exact, f"{where}.harmonics")
+                        else:
+                            found += differences(a.get(part), b.get(part), f"{where}.{part}")
+                continue
+            found += differences(old[key], new[key], f"{path}.{key}")
+        if phased and not same_phase(old, new):
+            found.append(f"{path}.phase: {old['phase']!r}, now {new['phase']!r}")
         return found
     if isinstance(old, list) and isinstance(new, list):
         if len(old) != len(new):

@@ -37,6 +37,7 @@ from foundation_calc.solvers.soil.springs import SoilSprings
 
 if TYPE_CHECKING:
     from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock
+    from foundation_calc.solvers.crank.plane import PlaneFoundation
 
 #: Largest ratio of the mechanism's moving mass to the total mass for which the small-parameter
 #: method of the paper is claimed to hold.
@@ -549,3 +550,11 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             drive_on_foundation=mech.drive_on_foundation,
             g=GRAVITY,
         )
+
+    def plane_model(self, soil_frequency: float = 0.0) -> PlaneFoundation:
+        """The scene as the one rigid-body model (:mod:`foundation_calc.solvers.crank.plane`): the
+        block (M, I_c at C) on the base's springs and dashpots at O, carrying the mechanism as one
+        crank throw in the x-z plane; the soil at ``soil_frequency`` [rad/s] as :meth:`design`."""
+        from foundation_calc.solvers.crank.plane import plane_foundation
+
+        return plane_foundation(self.design(soil_frequency))

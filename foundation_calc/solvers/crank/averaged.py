@@ -35,10 +35,11 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from foundation_calc.errors import PhysicsError
-from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
+from foundation_calc.solvers.crank.dynamics import drive_reaction, mechanism_motion, residual
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.mechanism import CrankDesign
+from foundation_calc.solvers.crank.plane import in_plane, plane_foundation, plane_samples, plane_throw
 from foundation_calc.solvers.crank.response import PeriodicMotion
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
 
@@ -63,18 +64,20 @@ class LinearOperator:
     forcing: np.ndarray
 
 
-def linearise(design: CrankDesign, phi) -> LinearOperator:
-    """Linearise the exact equations about the static position at phases ``phi`` (complex step)."""
+def linearise(design: CrankDesign, phi, equations=residual) -> LinearOperator:
+    """Linearise the exact equations (or a part of them, ``equations``: a function like
+    :func:`~foundation_calc.solvers.crank.dynamics.residual`) about the static position at phases
+    ``phi`` (complex step)."""
     motion = mechanism_motion(phi, design.omega, design.r, design.l, design.rod.l1)
     zero = np.zeros((3, np.size(phi)))
-    r0 = residual(design, motion, zero, zero, zero)
+    r0 = equations(design, motion, zero, zero, zero)
     blocks = []
     for order in range(3):
         columns = []
         for j in range(3):
             state = [zero.astype(complex) for _ in range(3)]
             state[order][j] = 1j * _STEP
-            columns.append(residual(design, motion, *state).imag / _STEP)
+            columns.append(equations(design, motion, *state).imag / _STEP)
         blocks.append(np.stack(columns, axis=1))
     return LinearOperator(mass=blocks[2], damping=blocks[1], stiffness=blocks[0], forcing=-r0.real)
 
@@ -177,9 +180,10 @@ def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
 
 
 def block_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """M, C, K (..., 3, 3) of the block on its soil, the mechanism left out: the terms of the
-    exact equations (:mod:`~foundation_calc.solvers.crank.dynamics`) in M_tot, I_c and the base's
-    springs and dashpots, which are linear in q already (fields may be arrays: a batch of blocks)."""
+    """M, C, K (..., 3, 3) of the block on its soil with the moving mass m lumped at C (the
+    paper's zero-order operator): the block model of one body M_tot, I_c at C on the base's springs
+    and dashpots, in the crank's coordinates (:mod:`~foundation_calc.solvers.crank.plane`; fields
+    may be arrays: a batch of blocks)."""
     from foundation_calc.solvers.crank.loads import RigidBlock, matrices
 
     d = design
@@ -188,26 +192,51 @@ def block_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray, np.ndar
     return M, C, K
 
 
+def _forcing(samples) -> tuple[np.ndarray, np.ndarray]:
+    """Cosine and sine coefficients (3, :data:`FORCING_HARMONICS` + 1) of the mechanism's forcing,
+    Eq. (4) of crank_mechanism, from its samples in the crank's coordinates."""
+    return analyse((samples.f_inertia + samples.f_weight).T, FORCING_HARMONICS)
+
+
+def _drive_reaction(design: CrankDesign) -> tuple[np.ndarray, ...]:
+    """M̄, C̄, K̄, fc, fs of the drive's reaction with the motor off the foundation
+    (:func:`~foundation_calc.solvers.crank.dynamics.drive_reaction`, linearised and averaged), all 0
+    with the motor on it."""
+    if design.drive_on_foundation:
+        return (np.zeros((3, 3)),) * 3 + (np.zeros((3, FORCING_HARMONICS + 1)),) * 2
+    lin = linearise(design, phases(FORCING_SAMPLES), drive_reaction)
+    return (*(block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness)),
+            *analyse(lin.forcing, FORCING_HARMONICS))
+
+
 def mechanism_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
-    """The mechanism's part of :func:`averaged_operator`: M̄, C̄, K̄ (3, 3) of the exact equations
-    with no block (M_tot = 0, I_c = 0, no soil) and the forcing's coefficients. The forcing -r0
-    (q = 0) holds no block term, so these depend on the mechanism and the speed alone: one call
-    serves every block that carries the same machine."""
-    bare = replace(design, M=-design.rod.m, I_c=0.0, c=0.0, c1=0.0, c_phi=0.0, C_x=0.0, C_z=0.0, C_phi=0.0)
-    lin = linearise(bare, phases(FORCING_SAMPLES))
-    M, C, K = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
-    fc, fs = analyse(lin.forcing, FORCING_HARMONICS)
-    return M, C, K, fc, fs
+    """The mechanism's part of :func:`averaged_operator`: M̄, C̄, K̄ (3, 3), the means of Eqs.
+    (1)-(3) of :mod:`~foundation_calc.solvers.machines.crank_mechanism` about C less the moving
+    mass m at C that :func:`block_matrices` holds, and the forcing's coefficients (Eq. (4), and
+    the drive's reaction with the motor off the foundation). They depend on the mechanism and the
+    speed alone: one call serves every block that carries the same machine."""
+    s = plane_samples(plane_throw(replace(design, h=0.0)), 0.0, design.omega, design.g, FORCING_SAMPLES)
+    M, C, K = (A.mean(axis=0) for A in (s.M, s.D, s.S))
+    M = M - np.diag([design.rod.m, design.rod.m, 0.0])
+    fc, fs = _forcing(s)
+    drive = _drive_reaction(design)
+    return M + drive[0], C + drive[1], K + drive[2], fc + drive[3], fs + drive[4]
 
 
 def averaged_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
     """M̄, C̄, K̄ (3, 3) of the exact equations linearised about rest and averaged over a
     revolution, and the cosine and sine coefficients (3, :data:`FORCING_HARMONICS` + 1) of the
-    exact forcing -r0 (module docstring); order x, y, θ: the mechanism's part
-    (:func:`mechanism_operator`) plus the block's (:func:`block_matrices`)."""
-    M, C, K, fc, fs = mechanism_operator(design)
-    M_b, C_b, K_b = block_matrices(design)
-    return M + M_b, C + C_b, K + K_b, fc, fs
+    exact forcing -r0 (module docstring); order x, y, θ. The one rigid-body model
+    (:func:`~foundation_calc.solvers.crank.plane.plane_foundation`: the block, the mechanism's mean
+    mass and weight, the base's springs and dashpots) in the crank's coordinates, with the
+    mechanism's mean Coriolis terms and its forcing (and the drive's reaction with the motor off
+    the foundation)."""
+    found = plane_foundation(design)
+    s = plane_samples(found.throw, design.h, design.omega, design.g, FORCING_SAMPLES)
+    M, C, K = (in_plane(A, design.h) for A in (found.model.M, found.model.C, found.model.K))
+    fc, fs = _forcing(s)
+    drive = _drive_reaction(design)
+    return (M + drive[0], C + s.D.mean(axis=0) + drive[1], K + drive[2], fc + drive[3], fs + drive[4])
 
 
 def averaged_response(design: CrankDesign) -> AveragedResponse:

@@ -95,6 +95,23 @@ def _cross(a, b):
     return a[0] * b[1] - a[1] * b[0]
 
 
+def _kinematics(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
+    """C1 from C (p), C1's acceleration relative to C (rel) and X'' - g e_y (ext), in body axes."""
+    th, dth, ddth = q[2], dq[2], ddq[2]
+    ct, st = np.cos(th), np.sin(th)
+    p = motion.p + np.array([[0.0], [-design.a]])
+    rel = np.array(
+        [
+            -ddth * p[1] - dth * dth * p[0] - 2.0 * dth * motion.dp[1] + motion.ddp[0],
+            ddth * p[0] - dth * dth * p[1] + 2.0 * dth * motion.dp[0] + motion.ddp[1],
+        ]
+    )
+    # X'' - g e_y in body axes: R^T (x'', y'' - g)
+    ax, ay = ddq[0], ddq[1] - design.g
+    ext = np.array([ct * ax + st * ay, -st * ax + ct * ay])
+    return p, rel, ext
+
+
 def residual(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
     """Residual of the exact equations of motion (module docstring) at each phase [N, N, N m].
 
@@ -106,17 +123,7 @@ def residual(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
     x, y, th = q
     dth, ddth = dq[2], ddq[2]
     ct, st = np.cos(th), np.sin(th)
-    p = motion.p + np.array([[0.0], [-d.a]])
-    # C1's acceleration relative to C, in body axes
-    rel = np.array(
-        [
-            -ddth * p[1] - dth * dth * p[0] - 2.0 * dth * motion.dp[1] + motion.ddp[0],
-            ddth * p[0] - dth * dth * p[1] + 2.0 * dth * motion.dp[0] + motion.ddp[1],
-        ]
-    )
-    # X'' - g e_y in body axes: R^T (x'', y'' - g)
-    ax, ay = ddq[0], ddq[1] - d.g
-    ext = np.array([ct * ax + st * ay, -st * ax + ct * ay])
+    p, rel, ext = _kinematics(d, motion, q, dq, ddq)
     P = d.M_tot * d.g
     dx, dy = dq[0], dq[1]
     soil_x = -d.c1 * d.S * (x - d.h * th) - d.C_x * (dx - d.h * dth)
@@ -132,9 +139,16 @@ def residual(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
         + m * _cross(p, ext)
         - soil_th
     )
-    if not d.drive_on_foundation:
-        res_th = res_th - drive_torque(d, motion, p, rel + ext, ddth)
-    return np.array([res_x, res_y, res_th])
+    res = np.array([res_x, res_y, res_th])
+    return res if d.drive_on_foundation else res + drive_reaction(d, motion, q, dq, ddq)
+
+
+def drive_reaction(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
+    """What the motor off the foundation adds to the residual [N, N, N m], (3, N): -τ in the θ
+    row (:func:`drive_torque`), 0 in x and y (module docstring)."""
+    p, rel, ext = _kinematics(design, motion, q, dq, ddq)
+    tau = drive_torque(design, motion, p, rel + ext, ddq[2])
+    return np.array([0.0 * tau, 0.0 * tau, -tau])
 
 
 def drive_torque(design: CrankDesign, motion: MechanismMotion, p, a_minus_g, ddth):
@@ -152,4 +166,4 @@ def drive_torque(design: CrankDesign, motion: MechanismMotion, p, a_minus_g, ddt
     return _cross(motion.crank_pin, F_r)
 
 
-__all__ = ["MechanismMotion", "drive_torque", "mechanism_motion", "residual"]
+__all__ = ["MechanismMotion", "drive_reaction", "drive_torque", "mechanism_motion", "residual"]

@@ -29,6 +29,7 @@ import numpy as np
 
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, zero_order_frequencies
+from foundation_calc.solvers.crank.plane import block_on_base, in_plane, rigid_block
 from foundation_calc.solvers.crank.response import PeriodicMotion
 
 #: Modes of the block in the order of :attr:`NaturalFrequencies`.
@@ -108,15 +109,6 @@ class LoadsResponse:
     nearest: np.ndarray
 
 
-def _symmetric(xx, yy, tt, xt) -> np.ndarray:
-    """The (..., 3, 3) matrix [[xx, 0, xt], [0, yy, 0], [xt, 0, tt]] of broadcast arrays."""
-    xx, yy, tt, xt = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xx, yy, tt, xt)))
-    out = np.zeros(xx.shape + (3, 3))
-    out[..., 0, 0], out[..., 1, 1], out[..., 2, 2] = xx, yy, tt
-    out[..., 0, 2] = out[..., 2, 0] = xt
-    return out
-
-
 def matrices(block: RigidBlock) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """M, K, C of Eq. (2) [kg, kg m²; N/m, N, N m/rad; N s/m, N s, N m s/rad], order x, y, θ,
     shape (..., 3, 3) with the block's batch shape in front.
@@ -126,10 +118,9 @@ def matrices(block: RigidBlock) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     [[4.0, 0.0, -2.0], [0.0, 3.0, 0.0], [-2.0, 0.0, 6.0]]
     """
     b = block
-    M = _symmetric(b.M_tot, b.M_tot, b.I_c, 0.0)
-    K = _symmetric(b.K_x, b.K_z, b.K_phi + b.h**2 * b.K_x - b.M_tot * b.g * b.h, -b.h * b.K_x)
-    C = _symmetric(b.C_x, b.C_z, b.C_phi + b.h**2 * b.C_x, -b.h * b.C_x)
-    return tuple(np.broadcast_arrays(M, K, C))
+    bodies = rigid_block(b.M_tot, b.I_c, b.h)
+    model = block_on_base(bodies, b.K_x, b.K_z, b.K_phi, b.C_x, b.C_z, b.C_phi, b.g)
+    return tuple(np.broadcast_arrays(*(in_plane(A, b.h) for A in (model.M, model.K, model.C))))
 
 
 def block_frequencies(block: RigidBlock) -> NaturalFrequencies:

@@ -1,7 +1,7 @@
 """The crank foundation as a linear structure for start-up and run-down.
 
 The exact equations linearised about rest with their coefficients averaged over a revolution
-(M̄, C̄ of :func:`~foundation_calc.solvers.crank.averaged.linearise`; C̄ holds the base dashpots),
+(M̄, C̄ of :func:`~foundation_calc.solvers.crank.averaged.averaged_operator`; C̄ holds the base dashpots),
 the stiffness of the block on its soil with the weight's -P h (Krichever & Makarov (3.2)-(3.4),
 :func:`~foundation_calc.solvers.crank.averaged.block_matrices`): the operator whose natural
 frequencies the resonance check reports as the averaged-inertia k0, p1, p2, so that the start-up
@@ -34,7 +34,7 @@ from dataclasses import replace
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError, PhysicsError
-from foundation_calc.solvers.crank.averaged import block_matrices, linearise, mode_order
+from foundation_calc.solvers.crank.averaged import averaged_operator, block_matrices, mechanism_operator, mode_order
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
@@ -54,10 +54,10 @@ SPLIT_TOLERANCE = 1e-9
 
 
 def _forcing(design: CrankDesign, scale: float) -> np.ndarray:
-    """Complex harmonics c_n of -r0 = Σ Re(c_n e^{inφ}) at ``scale`` × ω, shape (N + 1, 3)."""
-    lin = linearise(replace(design, omega=design.omega * scale), phases(SAMPLES))
-    fc, fs = analyse(lin.forcing, HARMONICS)
-    return (fc - 1j * fs).T
+    """Complex harmonics c_n of -r0 = Σ Re(c_n e^{inφ}) at ``scale`` × ω, shape (N + 1, 3)
+    (:func:`~foundation_calc.solvers.crank.averaged.mechanism_operator`'s forcing)."""
+    *_, fc, fs = mechanism_operator(replace(design, omega=design.omega * scale))
+    return (fc[:, : HARMONICS + 1] - 1j * fs[:, : HARMONICS + 1]).T
 
 
 def structure(design: CrankDesign, horizontal, height) -> Structure:
@@ -71,8 +71,7 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
         (:func:`require_stable_rest`).
     """
     require_stable_rocking(design.c_phi, design.I1, design.M_tot * design.g, design.h)
-    lin = linearise(design, phases(SAMPLES))
-    M, C, exact = (block.mean(axis=-1) for block in (lin.mass, lin.damping, lin.stiffness))
+    M, C, exact, *_ = averaged_operator(design)
     require_stable_rest(exact, design.a)
     K = block_matrices(design)[2]
     if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0:
