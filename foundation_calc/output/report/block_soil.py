@@ -1,6 +1,6 @@
 """The block's six soil springs and dashpots at O as hand calculations, and those each order used.
 
-The block takes the soil's springs of :meth:`~foundation_calc.scenes.block_soil.BlockSoil.six_springs`:
+The block takes the soil's springs of :func:`~foundation_calc.solvers.supports.footing_springs.six_springs`:
 a plane method twice (the plane of x: sliding x, rocking about y, L in the plane; the plane of y:
 sliding y, rocking about x, B in the plane) and torsion about z, then each dashpot
 C_i = 2 ξ_i √(K_i m_i) (m_i the total mass, or the moment of inertia J_x, J_y, J_z about the axis
@@ -115,7 +115,7 @@ def _base(chain: Chain, source: str) -> None:
 
 def coefficients_chain(scene, model) -> Chain:
     """Barkan's coefficients times the base's area and second moments (``six_springs``)."""
-    from foundation_calc.scenes.block_soil import BARKAN_TORSION_RATIO
+    from foundation_calc.solvers.supports.footing_springs import BARKAN_TORSION_RATIO
 
     s = scene.soil
     chain = Chain("Block soil springs and dashpots at O from Barkan's coefficients (soil.method = \"coefficients\")")
@@ -144,9 +144,9 @@ def coefficients_chain(scene, model) -> Chain:
 
 
 def sp26_chain(scene, model) -> Chain:
-    """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``_planes``)."""
+    """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``planes``)."""
     from foundation_calc.output.report.soil_methods import sp26_givens
-    from foundation_calc.scenes.block_soil import SP26_TORSION
+    from foundation_calc.solvers.supports.footing_springs import SP26_TORSION
 
     chain = Chain("Block soil springs and dashpots at O by SP 26.13330 (soil.method = \"sp26\")")
     _givens(chain, scene, model)
