@@ -147,7 +147,7 @@ class Footing:
         if self.method == "springs":
             return [Text("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
                          " entries less W z_G) and C below.")]
-        return [SoilMethod(self.method)]
+        return [SoilMethod(self.method, self.soil, (self.L, self.B), self.D)]
 
 
 def build(scene, L, B, masses):
