@@ -126,7 +126,9 @@ def _newton_euler(scene, loaded=True):
         J += np.diag(Jb) + mb * (d @ d * np.eye(3) - np.outer(d, d))
     L, B = scene.base
     J_O = J + m * (G @ G * np.eye(3) - np.outer(G, G))
-    k, xi = scene.soil.six_springs(L, B, m, np.diag(J_O))
+    from foundation_calc.solvers.supports.footing_springs import six_springs
+
+    k, xi = six_springs(scene.soil, L, B, m, np.diag(J_O))
     k = np.asarray(k)
     if xi is None:
         c = np.asarray(scene.soil.dashpot or [0.0] * 6)

@@ -22,6 +22,7 @@ import pytest
 
 from foundation_calc.scenes import parse_scene
 from foundation_calc.scenes.block_soil import BlockSoil
+from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.block.response import block_modes
 
 L, B = 4.0, 2.0
@@ -35,7 +36,7 @@ def _coefficients(**keys) -> BlockSoil:
 def test_coefficients_give_the_six_springs_by_hand():
     """c_z = 5e7, c_x = 3e7 N/m³, c_φ = c_z: K_x = K_y = 3e7 · 8 = 2.4e8 N/m, K_z = 5e7 · 8 = 4e8 N/m,
     K_rx = 5e7 · 8/3 = 1.333333e8, K_ry = 5e7 · 32/3 = 5.333333e8, K_rz = 1.5 · 3e7 · 40/3 = 6e8 N m/rad."""
-    springs, ratios = _coefficients(damping=[0.1, 0.08, 0.05]).six_springs(L, B, 34800.0, (1.0, 1.0, 1.0))
+    springs, ratios = six_springs(_coefficients(damping=[0.1, 0.08, 0.05]), L, B, 34800.0, (1.0, 1.0, 1.0))
     expected = [2.4e8, 2.4e8, 4.0e8, 1.333333e8, 5.333333e8, 6.0e8]
     assert springs == pytest.approx(expected, rel=3e-7)  # 1.333333 typed to 7 digits
     assert ratios == [0.08, 0.08, 0.1, 0.05, 0.05, 0.05]
@@ -43,7 +44,7 @@ def test_coefficients_give_the_six_springs_by_hand():
 
 def test_a_given_torsion_coefficient_acts_on_the_polar_moment():
     """c_ψ = 4.2e7 N/m³: K_rz = 4.2e7 · 40/3 = 5.6e8 N m/rad; ξ_ψ given as the fourth ratio."""
-    springs, ratios = _coefficients(c_psi=4.2e7, damping=[0.1, 0.08, 0.05, 0.03]).six_springs(L, B, 1.0, (1.0,) * 3)
+    springs, ratios = six_springs(_coefficients(c_psi=4.2e7, damping=[0.1, 0.08, 0.05, 0.03]), L, B, 1.0, (1.0,) * 3)
     assert springs[5] == pytest.approx(5.6e8, rel=1e-12)
     assert ratios[5] == 0.03
 
@@ -56,7 +57,7 @@ def test_sp26_torsion_by_hand():
 
     soil = BlockSoil.model_validate({"method": "sp26", "deformation_modulus": 3.0e7, "soil_class": "sand"})
     M = 1.0e5 * 8.0 / GRAVITY
-    springs, ratios = soil.six_springs(L, B, M, (1.0e5, 1.0e5, 1.0e5))
+    springs, ratios = six_springs(soil, L, B, M, (1.0e5, 1.0e5, 1.0e5))
     assert springs[5] == pytest.approx(8.472136e8, rel=1e-7)
     assert ratios[5] == pytest.approx(0.06, rel=1e-12)
 

@@ -191,3 +191,18 @@ def test_no_import_circles() -> None:
 def test_an_import_circle_is_caught() -> None:
     graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": {"e"}}
     assert _circles(graph) == [["a", "b", "c"]]
+
+
+#: The scene modules of a block's supports: they read, validate and carry the keys of ``[soil]`` and
+#: ``[piles]``; the springs and dashpots are computed in ``solvers/supports``.
+SUPPORT_SCENES = ("scenes/block_soil.py", "scenes/block_piles.py")
+#: What computes a support's springs and dashpots (the soil methods, the pile group under its cap).
+SUPPORT_PHYSICS = ("foundation_calc.solvers.soil", "foundation_calc.solvers.piles.cap", "foundation_calc.solvers.piles.group")
+
+
+@pytest.mark.parametrize("name", SUPPORT_SCENES)
+def test_a_supports_scene_computes_no_springs(name: str) -> None:
+    """A new support is one solver module plus its scene keys: the scene's tables call no soil
+    method and no pile group (the physics lives in ``solvers/supports``)."""
+    found = [(line, module) for line, module in _imports(PACKAGE / name) if module.startswith(SUPPORT_PHYSICS)]
+    assert not found, f"{name} computes a support's springs: {found}"

@@ -143,7 +143,7 @@ def test_the_torsion_rules_are_softer_than_the_half_space(ratio, nu):
     """Barkan's c_ψ = 1.5 c_x and SP 26's C_ψ = C_z against the same ratios of the half-space's
     springs (Pais & Kausel's and Gazetas', c_x the mean of both directions): 1.9-2.4 and 1.3-2.1
     (docs/soil.md, "Block foundations"), so both rules make the torsion spring softer."""
-    from foundation_calc.scenes.block_soil import BARKAN_TORSION_RATIO, SP26_TORSION
+    from foundation_calc.solvers.supports.footing_springs import BARKAN_TORSION_RATIO, SP26_TORSION
 
     L, B = 2.0 * ratio, 2.0
     A, J = L * B, L * B * (L * L + B * B) / 12.0

@@ -146,4 +146,5 @@ def test_sheet_shows_the_toys_hand_calculation(toy, tmp_path):
     fc.report(toy, output=out)
     text = out.read_text(encoding="utf-8")
     assert "The toy's vertical spring" in text and "The toy support's springs are constant." in text
+    assert "The support toy: the springs and dashpots at O its own model gives" in text  # the assumptions' soil row
     assert "| K\\_z | 2·k\\_1 | 2 × 1.500·10⁹ | 3.000·10⁹ | N/m | \\[toy\\] |" in text  # the chain, evaluated

@@ -64,6 +64,8 @@ class RunupReport:
     speeds : a block's machines as (name, speed [rad/s]); empty for one machine
     names : what the resonance check calls each mode, ascending frequency (a block's dominant
         motion, a crank foundation's k0, p1, p2; empty for a platform)
+    frequency_dependent : True when the runs were integrated on springs and dashpots that depend
+        on frequency (a structure's ``at_frequency``: the support's, or the crank foundation's soil)
     """
 
     runs: dict
@@ -79,6 +81,7 @@ class RunupReport:
     outcome: Outcome
     speeds: tuple = ()
     names: tuple = ()
+    frequency_dependent: bool = False
 
     @property
     def judged(self) -> bool:
@@ -320,6 +323,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
         outcome=worst([*(r.outcome for r in rows if r.outcome is not None), *(t.outcome for t in torques)]),
         speeds=tuple((m, float(w)) for m, _, w in machines if m and m != TOGETHER),
         names=() if machines[0][1].modes is None else machines[0][1].modes.names,
+        frequency_dependent=any(b.at_frequency is not None for _, b, _ in machines),
     )
 
 

@@ -193,7 +193,7 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         " integration: the same mode's motion in the time integration of the whole linear model;"
         " all modes: largest displacement of any point in the passage's window"
     )
-    if getattr(getattr(scene, "soil", None), "frequency_dependent", False):
+    if report.frequency_dependent:
         out.print(SOIL_NOTE)
     for machine in report.motors:
         out.print(_motor_table(report, machine))

@@ -1,11 +1,13 @@
 """The ``[piles]`` table of a block foundation: a pile group under the block, the block's base its
-rigid cap, and the support that replaces the footing's springs by the group's.
+rigid cap, and the data of the support that replaces the footing's springs by the group's (its
+springs and dashpots: :mod:`foundation_calc.solvers.supports.piles`).
 
 The soil around and under the piles is the scene's ``[soil]`` table (a half-space method's keys:
 shear_modulus or shear_wave_velocity, density, poisson, material_damping), its modulus taken at
 the depth of one pile diameter (EN 1998-5 Annex C's E_s) and varying with depth as
 ``soil_profile`` says. The group's springs and dashpots at O
-(:func:`~foundation_calc.solvers.piles.cap.pile_group`) are frequency-dependent, with the
+(:func:`~foundation_calc.solvers.piles.cap.pile_group`, assembled by
+:class:`~foundation_calc.solvers.supports.piles.Piles`) are frequency-dependent, with the
 sway-rocking coupling of the piles' heads; the cap's own contact with the soil (``cap_contact``),
 or the sidewalls of an embedded cap (``block.embedment``), add the footing's springs of the soil
 method in parallel.
@@ -103,14 +105,13 @@ class BlockPiles(SceneModel):
 
 
 class PiledSoil(BlockSoil):
-    """The scene's soil with the pile group standing in it: the support of a block on piles. Its
-    springs and dashpots at O are the group's (:meth:`impedance`), with the footing's where the cap
-    bears on the soil or is embedded; the soil's own keys are the user's ``[soil]``."""
+    """The scene's soil with the pile group standing in it: the data of a block's support on piles
+    (:class:`~foundation_calc.solvers.supports.piles.Piles` computes its springs and dashpots at O);
+    the soil's own keys are the user's ``[soil]``."""
 
     _piles: BlockPiles = PrivateAttr()
     _plan: tuple[float, float] = PrivateAttr()
     _dims: tuple | None = PrivateAttr(default=None)
-    _last: tuple | None = PrivateAttr(default=None)  # (arguments, matrices) of the last call: six_springs, then coupling
 
     @classmethod
     def on(cls, soil: BlockSoil, piles: BlockPiles, plan: tuple[float, float]) -> PiledSoil:
@@ -136,90 +137,24 @@ class PiledSoil(BlockSoil):
         return self._piles
 
     @property
+    def plan(self) -> tuple[float, float]:
+        """(L, B) [m]: the base the positions are given under (they scale with a candidate base)."""
+        return self._plan
+
+    @property
+    def dimensions(self) -> tuple | None:
+        """(d, L) [m] of :meth:`with_dimensions` (arrays over a batch of candidates), or None: the table's."""
+        return self._dims
+
+    @property
     def frequency_dependent(self) -> bool:
         """A pile group's springs and dashpots always depend on frequency."""
         return True
 
     @property
-    def support_method(self) -> str:
-        """``"piles"``: the range of validity judged is the piles' (:data:`~foundation_calc.solvers.piles.single.A0_FITTED`)."""
-        return "piles"
-
-    @property
     def rocking_key(self) -> str:
         """The key that sets the rocking springs: the piles' positions (their arms)."""
         return "piles.positions"
-
-    def group(self, L, B, omega):
-        """The group's impedance K + iω C at O, complex omega.shape + (6, 6), the positions scaled
-        with the base L × B [m] (arrays over a batch of candidate blocks)."""
-        from foundation_calc.solvers.piles.cap import pile_group
-
-        p = self._piles
-        xy = np.array(p.positions, dtype=float)
-        L0, B0 = self._plan
-        x = xy[:, 0] * (np.asarray(L, dtype=float)[..., None] / L0)
-        y = xy[:, 1] * (np.asarray(B, dtype=float)[..., None] / B0)
-        d, length = (p.diameter, p.length) if self._dims is None else (
-            np.reshape(v, np.shape(v) + (1,) * (np.ndim(L) - np.ndim(v))) for v in self._dims)
-        return pile_group(x, y, d, length, p.modulus, p.density, self.G, self.poisson, self.density,
-                          self.material_damping or 0.0, p.soil_profile, p.tip == "end_bearing", p.head == "pinned",
-                          omega)
-
-    def _footing(self, L, B, M, J_O, omega, D):
-        """The cap's own springs and radiation dashpots (diagonal, six each) where it touches the soil:
-        the whole footing with ``cap_contact``, else the embedded sidewalls only (embedded less
-        surface), else none."""
-        m = [M, M, M, *J_O]
-        if not self._piles.cap_contact and not np.any(np.asarray(D) > 0):
-            return 0.0, 0.0
-        xi_m = self.material_damping or 0.0
-
-        def parts(depth):
-            springs, ratios = BlockSoil.six_springs(self, L, B, M, J_O, omega, depth)
-            return np.stack(np.broadcast_arrays(*springs), -1), np.stack(np.broadcast_arrays(
-                *[2.0 * (r - xi_m) * np.sqrt(k * mi) for r, k, mi in zip(ratios, springs, m)]), -1)
-
-        K, C = parts(D)
-        if self._piles.cap_contact:
-            return K, C
-        K0, C0 = parts(0.0)
-        return K - K0, C - C0
-
-    def matrices(self, L, B, M, J_O, omega=0.0, D=0.0):
-        """(K, C) at O, each omega.shape + (6, 6): the group's and the cap's footing (:meth:`_footing`)."""
-        from foundation_calc.solvers.piles.cap import springs_and_dashpots
-
-        own = (self.G, self.poisson, self.density, self.material_damping or 0.0, *(self._dims or ()))  # copies share _last
-        args = [np.asarray(a, dtype=float) for a in (L, B, M, *J_O, omega, D, *own)]
-        if self._last is not None and len(self._last[0]) == len(args) and all(
-                a.shape == b.shape and np.array_equal(a, b) for a, b in zip(self._last[0], args)):
-            return self._last[1]
-        K, C = springs_and_dashpots(lambda w: self.group(L, B, w), omega)
-        K_f, C_f = self._footing(L, B, M, J_O, omega, D)
-        eye = np.eye(6)
-        found = K + np.asarray(K_f)[..., None] * eye, C + np.asarray(C_f)[..., None] * eye
-        self._last = (args, found)
-        return found
-
-    def six_springs(self, L, B, M, J_O, omega=0.0, D=0.0):
-        """The diagonal of :meth:`matrices`: springs at O and the damping ratios ξ_i = C_ii/(2 sqrt(|K_ii| m_i))
-        plus the soil's material damping, m_i the mass (translations) or the moment of inertia about
-        the axis through O (rotations), as :meth:`BlockSoil.six_springs` gives them (a group's dynamic
-        spring can be negative at high frequency, where the interaction of its piles makes it so)."""
-        K, C = self.matrices(L, B, M, J_O, omega, D)
-        k, c = np.diagonal(K, 0, -2, -1), np.diagonal(C, 0, -2, -1)
-        m = [M, M, M, *J_O]
-        xi_m = self.material_damping or 0.0
-        springs = [k[..., i] for i in range(6)]
-        return springs, [c[..., i] / (2.0 * np.sqrt(np.abs(k[..., i]) * m[i])) + xi_m for i in range(6)]
-
-    def coupling(self, L, B, M, J_O, omega=0.0, D=0.0):
-        """The off-diagonal parts of :meth:`matrices` (K, C), each omega.shape + (6, 6): the heads'
-        sway-rocking coupling and the group's."""
-        K, C = self.matrices(L, B, M, J_O, omega, D)
-        off = 1.0 - np.eye(6)
-        return K * off, C * off
 
     def related_findings(self, prefix: str, found: list) -> list:
         """The soil's own (:meth:`Soil.related_findings`) and where the piles leave the ranges of

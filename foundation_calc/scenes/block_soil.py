@@ -4,7 +4,8 @@ all six springs of the base.
 ``method = "springs"`` takes ``stiffness`` and ``dashpot`` as 6-vectors at O (x, y, z, about x,
 about y, about z). ``"coefficients"`` takes Barkan's c_z, c_x, c_phi as for a crank foundation and
 a torsion coefficient c_psi; the half-space and code methods keep the keys of
-:class:`~foundation_calc.scenes.soil.Soil`.
+:class:`~foundation_calc.scenes.soil.Soil`. The scene reads and validates the keys; the springs
+and damping ratios are :func:`~foundation_calc.solvers.supports.footing_springs.six_springs`.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from pydantic import Field, model_validator
 
 from foundation_calc.scenes.common import quantity
 from foundation_calc.scenes.soil import HALF_SPACE_METHODS, METHOD_KEYS, METHOD_REQUIRED, Soil
+from foundation_calc.solvers.supports.footing_springs import BARKAN_TORSION_RATIO
 
 #: Six components: along x, y, z and about x, y, z.
 Six = Annotated[list[float], Field(min_length=6, max_length=6)]
@@ -28,17 +30,6 @@ BLOCK_METHOD_KEYS: dict[str, tuple[str, ...]] = {
     "pais_kausel": METHOD_KEYS["pais_kausel"],
     "sp26": METHOD_KEYS["sp26"],
 }
-
-#: SP 26.13330 (SNiP 2.02.05-87): the torsion coefficient C_ψ = C_z and damping ξ_ψ = 0.3 ξ_z [-],
-#: as the code is usually quoted (its printed clause has not been checked here). The elastic
-#: half-space gives C_ψ/C_z ≈ 1.3-2.1 (tests/test_soil_closed_forms.py): a softer torsion spring.
-SP26_TORSION = (1.0, 0.3)
-
-#: c_ψ / c_x of Barkan (1948), ch. 4: the coefficient of elastic non-uniform shear (torsion) is
-#: about 1.5 times that of uniform shear [-], as usually quoted (the printed text has not been
-#: checked here); the elastic half-space gives 1.9-2.4 (tests/test_soil_closed_forms.py).
-BARKAN_TORSION_RATIO = 1.5
-
 
 class BlockSoil(Soil):
     """The soil under the block, by one method: springs (stiffness, dashpot at O), coefficients (c_z, c_x, c_phi, c_psi, damping), lysmer (shear_modulus or shear_wave_velocity, density, poisson, material_damping, stratum_depth)."""
@@ -120,98 +111,3 @@ class BlockSoil(Soil):
         if self.stiffness is not None and not all(self.stiffness):
             raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
         return self
-
-    def six_springs(self, L: float, B: float, M: float, J_O, omega=0.0, D=0.0) -> tuple[list, list | None]:
-        """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
-        [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for explicit dashpots);
-        L, B: the base's length (x) and width (y) [m]; M: total mass [kg]; J_O: moments of inertia
-        about the axes through O [kg m²] (the half-space methods' mass ratios). L, B, M and each of
-        J_O may be arrays over a batch of candidate blocks; the springs and ratios broadcast.
-        ``omega``: the frequencies [rad/s] at which a frequency-dependent method (``"gazetas"``)
-        takes them (an array broadcasts as well); the other methods ignore it. ``D``: the base's
-        embedment [m] (sidewalls in contact), taken by ``"gazetas"`` and ``"pais_kausel"``.
-
-        Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
-        K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer,
-        Gazetas, SP 26: the crank foundation's method in each vertical plane (:meth:`_planes`).
-        """
-        method = self.method_used
-        if method == "springs":
-            return list(self.stiffness), None
-        if method in (*HALF_SPACE_METHODS, "sp26"):
-            along, across, (k_t, xi_t) = self._planes(L, B, M, J_O, omega, D)
-            if self.stratum_depth is not None:  # solvers/soil/stratum.py: a layer over bedrock
-                from foundation_calc.solvers.soil.stratum import torsion_on_stratum
-
-                along, across = self.with_stratum(along, L, B, omega), self.with_stratum(across, B, L, omega)
-                xi_t = torsion_on_stratum(xi_t, self.stratum_depth, self.V_s, self.material_damping or 0.0, omega)
-            springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
-            return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
-        A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
-        c_phi = self.c_z if self.c_phi is None else self.c_phi
-        c_psi = BARKAN_TORSION_RATIO * self.c_x if self.c_psi is None else self.c_psi
-        xi = list(self.damping or (0.0, 0.0, 0.0))
-        xi_z, xi_x, xi_phi = xi[:3]
-        xi_psi = xi[3] if len(xi) == 4 else xi_phi
-        springs = [self.c_x * A, self.c_x * A, self.c_z * A, c_phi * I_x, c_phi * I_y, c_psi * (I_x + I_y)]
-        return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
-
-    @property
-    def support_method(self) -> str:
-        """The method whose range of validity the soil check judges (:mod:`~foundation_calc.checks.soil_validity`):
-        the soil's, or ``"piles"`` for a pile group."""
-        return self.method_used
-
-    def coupling(self, L, B, M, J_O, omega=0.0, D=0.0):
-        """Off-diagonal springs and dashpots at O (K, C), each omega.shape + (6, 6), of a support that
-        couples its motions (a pile group, :class:`~foundation_calc.scenes.block_piles.PiledSoil`);
-        None for a footing on the soil, whose six springs are uncoupled at O. Arguments as
-        :meth:`six_springs`."""
-        return None
-
-    def _planes(self, L: float, B: float, M: float, J_O, omega=0.0, D=0.0):
-        """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the
-        plane) and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)).
-        Torsion: Reissner-Sagoci's analog (lysmer), Gazetas' or Pais & Kausel's static K_t with
-        Pais & Kausel's modifier k_t(a0) and radiation C_t = ρ V_s J_t c̃_t(a0) (gazetas, pais_kausel;
-        :func:`~foundation_calc.solvers.soil.impedance.footing_torsion`), ξ_ψ =
-        C_t/(2 sqrt(K_t(ω) J_z)) plus the material damping, C_ψ = C_z and ξ_ψ = 0.3 ξ_z (sp26,
-        SNiP 2.02.05-87). Gazetas' or Pais & Kausel's springs and dashpots in both planes and in
-        torsion at the frequencies ``omega`` [rad/s], embedded ``D`` [m] as the crank foundation's
-        plane (each plane's embedment factors and sidewall dashpots; the other horizontal axis and
-        rocking axis are the plane of B's), and their static torsion spring times its embedment
-        factor (:mod:`~foundation_calc.solvers.soil.torsion_embedment`; no torsional sidewall
-        dashpot)."""
-        method, xi_m = self.method_used, self.material_damping or 0.0
-        if method == "sp26":
-            from foundation_calc.solvers.constants import GRAVITY
-            from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
-
-            A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
-            b0, p_m = B0_BY_CLASS[self.soil_class], M * GRAVITY / A
-            along = sp26_springs(self.deformation_modulus, b0, A, I_y, p_m)
-            across = sp26_springs(self.deformation_modulus, b0, A, I_x, p_m)
-            ratio, damping = SP26_TORSION
-            return along, across, (ratio * along.K_z / A * (I_x + I_y), damping * along.xi_z)
-        if method == "lysmer":
-            from foundation_calc.solvers.soil.lysmer import lysmer_springs
-            from foundation_calc.solvers.soil.torsion import lysmer_torsion
-
-            return (lysmer_springs(self.G, self.density, self.poisson, L, B, M, J_O[1], xi_m),
-                    lysmer_springs(self.G, self.density, self.poisson, B, L, M, J_O[0], xi_m),
-                    lysmer_torsion(self.G, self.density, L, B, J_O[2], xi_m))
-        if method == "pais_kausel":
-            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
-            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_torsion as torsion
-            from foundation_calc.solvers.soil.torsion_embedment import pais_kausel_torsion_embedment as embedded
-        else:
-            from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs
-            from foundation_calc.solvers.soil.torsion import gazetas_torsion as torsion
-            from foundation_calc.solvers.soil.torsion_embedment import gazetas_torsion_embedment as embedded
-
-        from foundation_calc.solvers.soil.impedance import footing_torsion
-
-        K_t, C_t = footing_torsion(torsion(self.G, L, B) * embedded(L, B, D), self.G, self.density, L, B, omega)
-        return (springs(self.G, self.density, self.poisson, L, B, D, M, J_O[1], xi_m, omega),
-                springs(self.G, self.density, self.poisson, B, L, D, M, J_O[0], xi_m, omega),
-                (K_t, C_t / (2.0 * (K_t * J_O[2]) ** 0.5) + xi_m))

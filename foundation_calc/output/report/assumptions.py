@@ -89,11 +89,14 @@ BLOCK_SOIL_MODELS = {
 
 
 def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
-    soil, limits = scene.soil, scene.limits
+    support, limits = scene.support(), scene.limits
     rows = [
         ("model", "Rigid block with every machine rigidly attached: six degrees of freedom about O, the"
                   " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
-        ("soil", BLOCK_SOIL_MODELS[soil.method_used]),
+        ("soil", BLOCK_SOIL_MODELS.get(support.method, f"The support {support.label}: the springs and dashpots at O"
+                                       " its own model gives (the soil section shows how)."
+                                       + (" Frequency-dependent." if support.frequency_dependent else
+                                          " Frequency-independent."))),
         ("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
                  " contact, no uplift; "
                  + ("no embedment, side soil, " if not scene.embedment else
@@ -101,7 +104,9 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                     " and sidewall dashpots; no torsional sidewall dashpot); no ")
                  + "layering or coupling through the soil with neighbouring foundations."),
     ]
-    if soil.method_used == "springs" and soil.dashpot is None or soil.method_used == "coefficients" and not soil.damping:
+    import numpy as np
+
+    if not support.frequency_dependent and not np.any(support.impedance(0.0).dashpots):  # none at any frequency
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
                                 " keeps the speeds away from them."))
     rows.append(("loads", "Each machine's loads as given, harmonic orders n at nω (amplitude, phase, point);"

@@ -293,7 +293,8 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
         " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
     from foundation_calc.output.report.stratum import stratum_blocks
 
-    for chain in [*block_soil_blocks(scene, model, own), *stratum_blocks(scene, *scene.base, True, amplitudes)]:
+    stratum = stratum_blocks(getattr(support, "soil", None), *scene.base, True, amplitudes)  # a footing's stratum
+    for chain in [*block_soil_blocks(scene, model, own), *stratum]:
         blocks += chain.blocks() if hasattr(chain, "nomenclature") else [chain]
         if hasattr(chain, "nomenclature"):
             blocks.append(Definitions(chain.nomenclature))

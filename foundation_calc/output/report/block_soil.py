@@ -1,6 +1,6 @@
 """The block's six soil springs and dashpots at O as hand calculations, and those each order used.
 
-The block takes the soil's springs of :meth:`~foundation_calc.scenes.block_soil.BlockSoil.six_springs`:
+The block takes the soil's springs of :func:`~foundation_calc.solvers.supports.footing_springs.six_springs`:
 a plane method twice (the plane of x: sliding x, rocking about y, L in the plane; the plane of y:
 sliding y, rocking about x, B in the plane) and torsion about z, then each dashpot
 C_i = 2 ξ_i √(K_i m_i) (m_i the total mass, or the moment of inertia J_x, J_y, J_z about the axis
@@ -39,9 +39,9 @@ MASSES = ("M", "M", "M", "J_x", "J_y", "J_z")
 MOST_COLUMNS = 4
 
 
-def _givens(chain: Chain, scene, model) -> None:
+def _givens(chain: Chain, footing, model) -> None:
     """The block's base and masses about O (every method's chain starts from them)."""
-    L, B = scene.base
+    L, B = footing.base
     m = np.diagonal(model.M)
     chain.given("L", L, "m", "base length along x")
     chain.given("B", B, "m", "base width along y")
@@ -66,8 +66,8 @@ def _dashpots(chain: Chain) -> None:
         chain.step(C, f"2*{xi}*sqrt({K}*{m})", unit, "[RHW] ch. 10, C = 2 ξ √(K m)", f"dashpot at O: {motion.replace(' spring', '')}")
 
 
-def _half_space(chain: Chain, scene) -> None:
-    s = scene.soil
+def _half_space(chain: Chain, footing) -> None:
+    s = footing.soil
     chain.given("rho", s.density, "kg/m³", "mass density of the soil")
     if s.shear_modulus is None:
         chain.given("V_s", s.shear_wave_velocity, "m/s", "shear wave velocity of the soil")
@@ -78,12 +78,12 @@ def _half_space(chain: Chain, scene) -> None:
     chain.given("xi_m", s.material_damping or 0.0, "-", "material damping ratio of the soil")
 
 
-def lysmer_chain(scene, model) -> Chain:
+def lysmer_chain(footing, model) -> Chain:
     """Lysmer's and Hall's analogs in both vertical planes and Reissner-Sagoci's torsion
     (:func:`~foundation_calc.solvers.soil.lysmer.lysmer_springs`, :func:`~foundation_calc.solvers.soil.torsion.lysmer_torsion`)."""
     chain = Chain("Block soil springs and dashpots at O: Lysmer's, Hall's and Reissner-Sagoci's analogs (soil.method = \"lysmer\")")
-    _givens(chain, scene, model)
-    _half_space(chain, scene)
+    _givens(chain, footing, model)
+    _half_space(chain, footing)
     chain.step("r0", "sqrt(B*L/pi)", "m", RHW, "radius of the circle of the base's area")
     chain.step("r0y", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about y")
     chain.step("r0x", "(L*B**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about x")
@@ -113,13 +113,13 @@ def _base(chain: Chain, source: str) -> None:
     chain.step("I_y", "B*L**3/12", "m⁴", source, "second moment of the base about y")
 
 
-def coefficients_chain(scene, model) -> Chain:
+def coefficients_chain(footing, model) -> Chain:
     """Barkan's coefficients times the base's area and second moments (``six_springs``)."""
-    from foundation_calc.scenes.block_soil import BARKAN_TORSION_RATIO
+    from foundation_calc.solvers.supports.footing_springs import BARKAN_TORSION_RATIO
 
-    s = scene.soil
+    s = footing.soil
     chain = Chain("Block soil springs and dashpots at O from Barkan's coefficients (soil.method = \"coefficients\")")
-    _givens(chain, scene, model)
+    _givens(chain, footing, model)
     chain.given("c_z", s.c_z, "N/m³", "coefficient of elastic uniform compression")
     chain.given("c_x", s.c_x, "N/m³", "coefficient of elastic uniform shear")
     chain.given("c_phi", s.c_z if s.c_phi is None else s.c_phi, "N/m³", "coefficient of non-uniform compression (c_z unless soil.c_phi is given)")
@@ -143,14 +143,14 @@ def coefficients_chain(scene, model) -> Chain:
     return chain
 
 
-def sp26_chain(scene, model) -> Chain:
-    """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``_planes``)."""
+def sp26_chain(footing, model) -> Chain:
+    """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``planes``)."""
     from foundation_calc.output.report.soil_methods import sp26_givens
-    from foundation_calc.scenes.block_soil import SP26_TORSION
+    from foundation_calc.solvers.supports.footing_springs import SP26_TORSION
 
     chain = Chain("Block soil springs and dashpots at O by SP 26.13330 (soil.method = \"sp26\")")
-    _givens(chain, scene, model)
-    sp26_givens(chain, scene.soil)
+    _givens(chain, footing, model)
+    sp26_givens(chain, footing.soil)
     chain.given("k_psi", SP26_TORSION[0], "-", "ratio C_ψ/C_z (SNiP 2.02.05-87)")
     chain.given("k_xi", SP26_TORSION[1], "-", "ratio ξ_ψ/ξ_z (SNiP 2.02.05-87)")
     _base(chain, SP26)
@@ -168,27 +168,27 @@ def sp26_chain(scene, model) -> Chain:
     return chain
 
 
-def _plane(scene, model, across: bool) -> SimpleNamespace:
+def _plane(footing, model, across: bool) -> SimpleNamespace:
     """The block seen as the crank's plane footing (:func:`~.soil_methods.gazetas_springs_chain`
     reads ``foundation``, ``soil``, ``total_mass``): L in the plane of x (rocking about y, J_y) or,
     ``across``, B in the plane of y (rocking about x, J_x); I_0 the moment of inertia about O's axis."""
-    L, B = scene.base
+    L, B = footing.base
     m = np.diagonal(model.M)
-    foundation = SimpleNamespace(dimensions=(B, L) if across else (L, B), embedment=scene.embedment,
+    foundation = SimpleNamespace(dimensions=(B, L) if across else (L, B), embedment=footing.embedment,
                                  moment_of_inertia=m[3] if across else m[4], cog_height=0.0)
-    return SimpleNamespace(foundation=foundation, soil=scene.soil, total_mass=m[0])
+    return SimpleNamespace(foundation=foundation, soil=footing.soil, total_mass=m[0])
 
 
-def _torsion_static(scene, model) -> Chain:
+def _torsion_static(footing, model) -> Chain:
     """Gazetas' or Pais & Kausel's static torsional spring with its embedment factor
     (:mod:`~foundation_calc.solvers.soil.torsion`, :mod:`~foundation_calc.solvers.soil.pais_kausel`,
     :mod:`~foundation_calc.solvers.soil.torsion_embedment`)."""
-    pk = scene.soil.method_used == "pais_kausel"
+    pk = footing.soil.method_used == "pais_kausel"
     source = "[PK]; [NIST] Table 2-2a" if pk else "[Ga] Table 1"
-    chain = Chain(f"Block torsional spring about z: {'Pais & Kausel' if pk else 'Gazetas'} (soil.method = \"{scene.soil.method_used}\")")
-    _givens(chain, scene, model)
-    _half_space(chain, scene)
-    chain.given("D", scene.embedment, "m", "embedment depth (sidewall in contact over all of it)")
+    chain = Chain(f"Block torsional spring about z: {'Pais & Kausel' if pk else 'Gazetas'} (soil.method = \"{footing.soil.method_used}\")")
+    _givens(chain, footing, model)
+    _half_space(chain, footing)
+    chain.given("D", footing.embedment, "m", "embedment depth (sidewall in contact over all of it)")
     chain.step("Lh", "max(L, B)/2", "m", source, "longer half-side of the base")
     chain.step("Bh", "min(L, B)/2", "m", source, "shorter half-side of the base")
     chain.step("r", "Lh/Bh", "-", source, "aspect ratio L'/B' of the base")
@@ -229,19 +229,19 @@ def orders_of(scene, own=None) -> list[tuple[str, str, str, float]]:
     return found + [(f"mode {j + 1}", "ω*", f"mode {j + 1} at ω*", float(w)) for j, w in enumerate(own or ())]
 
 
-def gazetas_blocks(scene, model, orders) -> list:
+def gazetas_blocks(footing, model, orders) -> list:
     """Static chains of torsion and in both planes, then the springs and dashpots at each order's
     n ω and each mode's ω* (``orders``: :func:`orders_of`; at most :data:`MOST_COLUMNS` side by
     side per table)."""
     from foundation_calc.output.report.soil_methods import gazetas_at, gazetas_springs_chain, pais_kausel_springs_chain
 
-    build = pais_kausel_springs_chain if scene.soil.method_used == "pais_kausel" else gazetas_springs_chain
-    torsion = _torsion_static(scene, model)
+    build = pais_kausel_springs_chain if footing.soil.method_used == "pais_kausel" else gazetas_springs_chain
+    torsion = _torsion_static(footing, model)
     out: list = [torsion]
     statics = []
     for across, plane in ((False, "x: sliding x (K_x), vertical (K_z), rocking about y (K_ry); L in the plane, I_0 = J_y"),
                           (True, "y: sliding y (K_y), rocking about x (K_rx); B in the plane, I_0 = J_x")):
-        chain = build(_plane(scene, model, across))
+        chain = build(_plane(footing, model, across))
         chain.title += f", in the plane of {plane}"
         statics.append(chain)
         out.append(chain)
@@ -255,7 +255,7 @@ def gazetas_blocks(scene, model, orders) -> list:
             chains = []
             for *_, omega in shown:
                 chain = Chain("")
-                gazetas_at(chain, _plane(scene, model, across), static, omega, "circular frequency n ω of the order, or a mode's own ω*", name="omega_s")
+                gazetas_at(chain, _plane(footing, model, across), static, omega, "circular frequency n ω of the order, or a mode's own ω*", name="omega_s")
                 if not across:
                     chain.step("C_zw", "2*xi_zw*sqrt(K_zw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "vertical dashpot at O at n ω")
                 chain.step(C_h, "2*xi_xw*sqrt(K_xw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "sliding dashpot at O at n ω")
@@ -340,10 +340,10 @@ def rendered(item, scene, model, orders) -> list:
         cols = [column(list(values[:, j]), item.digits) for j in range(values.shape[1])]
         return [table(item.title, item.head, [(name, *(c[i] for c in cols)) for i, name in enumerate(item.names)],
                       (False, *(True,) * values.shape[1]))]
-    if isinstance(item, SoilMethod):
+    if isinstance(item, SoilMethod):  # the footing's soil, base and embedment the item carries
         if item.method in ("gazetas", "pais_kausel"):
-            return gazetas_blocks(scene, model, orders)
-        return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[item.method](scene, model)]
+            return gazetas_blocks(item, model, orders)
+        return [{"lysmer": lysmer_chain, "coefficients": coefficients_chain, "sp26": sp26_chain}[item.method](item, model)]
     raise TypeError(f"not a sheet item: {item!r}")
 
 

@@ -89,7 +89,7 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
     dependent = method in FREQUENCY_DEPENDENT_METHODS  # gazetas, pais_kausel: the same dynamic chains
     out = gazetas_chains(scene) if dependent else [make(scene) for make in chains]
-    out += stratum_blocks(scene, *scene.foundation.dimensions, False, amplitudes)
+    out += stratum_blocks(scene.soil, *scene.foundation.dimensions, False, amplitudes)
     out.append(_frequencies(scene, springs))
     if dependent:
         from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns

@@ -69,11 +69,11 @@ def radiation_table(validity: dict | None):
                  ("at", "f [Hz]", *motions), body, (False, True, *(False,) * len(motions)))
 
 
-def stratum_blocks(scene, L: float, B: float, block: bool, document: dict | None) -> list:
+def stratum_blocks(soil, L: float, B: float, block: bool, document: dict | None) -> list:
     """The stratum's chain, how it changes the springs and dashpots, and the radiation table of the
-    ``document`` (the ``amplitudes`` or ``resonance`` JSON); nothing without ``stratum_depth``."""
-    soil = scene.soil
-    if soil.stratum_depth is None:
+    ``document`` (the ``amplitudes`` or ``resonance`` JSON) of the footing on ``soil`` (its ``[soil]``
+    data; None: a support that is no footing); nothing without ``stratum_depth``."""
+    if getattr(soil, "stratum_depth", None) is None:
         return []
     out: list = [stratum_chain(soil, L, B, block), Shown(Paragraph(
         "On the stratum every half-space spring above is multiplied by its factor (K_z by η_z, K_x and K_y by η_h,"

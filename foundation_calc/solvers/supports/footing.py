@@ -2,9 +2,9 @@
 embedded (``block.embedment``), on a half-space or on a stratum over bedrock (``soil.stratum_depth``).
 
 The six springs and damping ratios are the scene's soil method's
-(:meth:`~foundation_calc.scenes.block_soil.BlockSoil.six_springs`: Barkan's coefficients, SP 26,
-Lysmer's analogs, Gazetas' or Pais & Kausel's impedances, each in both vertical planes, and
-torsion; or the springs and dashpots given at O). A damping ratio ξ_i becomes the dashpot
+(:func:`~.footing_springs.six_springs`: Barkan's coefficients, SP 26, Lysmer's analogs, Gazetas'
+or Pais & Kausel's impedances, each in both vertical planes, and torsion; or the springs and
+dashpots given at O). A damping ratio ξ_i becomes the dashpot
 C_i = 2 ξ_i √(|K_i| m_i), m_i the total mass (translations) or the moment of inertia about the
 axis through O (rotations; ACI 351.3R-18, 4.5; Richart, Hall & Woods 1970, ch. 10).
 
@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.solvers.supports.base import MOTIONS, AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.supports.sheet import SoilMethod, Text
 
 #: Why a frequency-independent method has no range of a0, by method.
@@ -72,9 +73,14 @@ def footing_lengths(method: str, L: float, B: float) -> dict[str, float]:
     return {m: float(v) for m, v in zip(MOTIONS, lengths)}
 
 
+def six(values, shape) -> np.ndarray:
+    """Six values (floats or arrays) stacked on a last axis, broadcast with ``shape`` first."""
+    return np.stack(np.broadcast_arrays(*values, np.zeros(shape))[:-1], axis=-1)
+
+
 class Footing:
-    """The base on the soil ``soil`` (a block's ``[soil]``: ``six_springs``, ``coupling``,
-    ``dashpot``, ``method_used``, ``frequency_dependent``, ``V_s``, ``stratum_depth``), L × B [m],
+    """The base on the soil ``soil`` (a block's ``[soil]``: its keys as attributes, as
+    :func:`~.footing_springs.six_springs` reads them, and ``frequency_dependent``), L × B [m],
     embedded D [m], under a body whose diagonal of M about O is ``masses`` (..., 6) [kg, kg m²]
     (L, B and the masses: arrays over a batch of candidate blocks, or floats)."""
 
@@ -89,26 +95,28 @@ class Footing:
         """The soil method's (:attr:`~foundation_calc.scenes.soil.Soil.frequency_dependent`)."""
         return self.soil.frequency_dependent
 
+    def _at(self, omega):
+        """(ω, masses, L, B) broadcast for the frequencies ``omega`` [rad/s]: ``omega``'s leading
+        axes are the batch's, and the masses, L and B gain its axes past the batch's."""
+        omega = np.asarray(omega, dtype=float)
+        extra = tuple(range(self.masses.ndim - 1, omega.ndim))  # axes of omega past the batch's
+        return omega, *(np.expand_dims(v, extra) for v in (self.masses, self.L, self.B))
+
     def impedance(self, omega) -> AtO:
         """The six springs and dashpots at O at ``omega`` [rad/s] (module docstring), shape batch +
-        omega's axes past the batch's + (6,): ``omega``'s leading axes are the batch's; the
-        off-diagonal terms of a soil that couples its motions (``soil.coupling``)."""
-        omega = np.asarray(omega, dtype=float)
-        m = self.masses
-        extra = tuple(range(m.ndim - 1, omega.ndim))  # axes of omega past the batch's
-        m = np.expand_dims(m, extra)
-        L, B = np.expand_dims(self.L, extra), np.expand_dims(self.B, extra)
-
-        def six(values):
-            return np.stack(np.broadcast_arrays(*values, np.zeros(omega.shape))[:-1], axis=-1)
-
-        J_O = np.moveaxis(m[..., 3:], -1, 0)
-        springs, ratios = self.soil.six_springs(L, B, m[..., 0], J_O, omega, self.D)
-        springs = six(springs)
+        omega's axes past the batch's + (6,): ``omega``'s leading axes are the batch's."""
+        omega, m, L, B = self._at(omega)
+        springs, ratios, coupling = self.springs(L, B, m, omega)
+        springs = six(springs, omega.shape)
         if ratios is None:
-            return AtO(springs, six(self.soil.dashpot or [0.0] * 6))
-        coupled = self.soil.coupling(L, B, m[..., 0], J_O, omega, self.D)
-        return AtO(springs, 2.0 * six(ratios) * np.sqrt(np.abs(springs) * m), coupled)
+            return AtO(springs, six(self.soil.dashpot or [0.0] * 6, omega.shape))
+        return AtO(springs, 2.0 * six(ratios, omega.shape) * np.sqrt(np.abs(springs) * m), coupling)
+
+    def springs(self, L, B, m, omega) -> tuple:
+        """(the six springs, the six damping ratios or None for dashpots given at O, the off-diagonal
+        (K, C) or None) at ``omega`` [rad/s] of a base L × B [m] under masses ``m`` (..., 6), all
+        broadcast (:meth:`_at`): the soil method's (:func:`~.footing_springs.six_springs`), uncoupled."""
+        return *six_springs(self.soil, L, B, m[..., 0], np.moveaxis(m[..., 3:], -1, 0), omega, self.D), None
 
     def validity(self) -> Validity:
         """The method's range of a0 (:func:`footing_range`), each motion's b, and a stratum's cutoffs."""
@@ -139,7 +147,7 @@ class Footing:
         if self.method == "springs":
             return [Text("Springs and dashpots at O given (soil.stiffness, soil.dashpot): the diagonals of K (the rocking"
                          " entries less W z_G) and C below.")]
-        return [SoilMethod(self.method)]
+        return [SoilMethod(self.method, self.soil, (self.L, self.B), self.D)]
 
 
 def build(scene, L, B, masses):
@@ -147,4 +155,4 @@ def build(scene, L, B, masses):
     return Footing(scene.soil, L, B, masses, scene.embedment)
 
 
-__all__ = ["DEFINITIONS", "NO_RANGE", "Footing", "build", "footing_lengths", "footing_range"]
+__all__ = ["DEFINITIONS", "NO_RANGE", "Footing", "build", "footing_lengths", "footing_range", "six"]

@@ -1,9 +1,12 @@
 """A pile group under the block, its base the rigid cap (``[piles]``): the group's springs and
 dashpots at O, frequency-dependent and coupled (sway-rocking), with the cap's own footing in
-parallel where it bears on the soil or is embedded
-(:meth:`~foundation_calc.scenes.block_piles.PiledSoil.matrices`:
+parallel where it bears on the soil or is embedded (:meth:`Piles.matrices`:
 :func:`~foundation_calc.solvers.piles.cap.pile_group` of the single piles of
-:func:`~foundation_calc.solvers.piles.single.single_pile`).
+:func:`~foundation_calc.solvers.piles.single.single_pile`, and the footing's
+:func:`~.footing_springs.six_springs`). The material damping ξ_m of the soil adds 2 ξ_m √(|K_ii| m_i)
+to each dashpot of the diagonal, m_i the mass (translations) or the moment of inertia about the
+axis through O (rotations): the dashpots of the diagonal are found from the damping ratios
+ξ_i = C_ii/(2 √(|K_ii| m_i)) + ξ_m as the footing's are.
 
 Range of validity: a0 = ω d/V_s, d the pile diameter, a0 <= 1
 (:data:`~foundation_calc.solvers.piles.single.A0_FITTED`). In ``fcalc soil`` the single pile's head
@@ -21,6 +24,7 @@ import numpy as np
 
 from foundation_calc.solvers.supports.base import MOTIONS, FrequencyTable, SoilSection, Validity
 from foundation_calc.solvers.supports.footing import Footing
+from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.supports.sheet import Grid, HandCalc, Rows, Text
 from foundation_calc.units import hz_from_omega
 
@@ -67,7 +71,8 @@ class PilesAt:
 class Piles(Footing):
     """The pile group under the base: the :class:`~.footing.Footing`'s arguments, ``soil`` the
     scene's soil with the piles standing in it (:class:`~foundation_calc.scenes.block_piles.PiledSoil`:
-    its ``six_springs`` and ``coupling`` are the group's and the cap's)."""
+    the soil's keys and ``piles``, the ``[piles]`` table; ``plan``, the base (L, B) [m] the
+    positions are given under; ``dimensions``, the piles' (d, L) [m] of a batch of candidates or None)."""
 
     label = "piles"
     unscaled = ("[piles] is not sampled: its springs do not scale with one factor on the soil's modulus"
@@ -77,6 +82,68 @@ class Piles(Footing):
         super().__init__(soil, L, B, masses, D)
         self.piles = soil.piles
         self.label, self.unscaled = Piles.label, Piles.unscaled
+
+    def springs(self, L, B, m, omega) -> tuple:
+        """The diagonal of :meth:`matrices` as springs and damping ratios ξ_i = C_ii/(2 √(|K_ii| m_i))
+        plus the soil's material damping (module docstring; a group's dynamic spring can be negative
+        at high frequency, where the interaction of its piles makes it so), and its off-diagonal
+        terms (the sway-rocking coupling) as :meth:`Footing.springs` gives them."""
+        K, C = self.matrices(L, B, m, omega)
+        k, c = np.diagonal(K, 0, -2, -1), np.diagonal(C, 0, -2, -1)
+        M, J_O = m[..., 0], np.moveaxis(m[..., 3:], -1, 0)
+        masses = [M, M, M, *J_O]
+        xi_m = self.soil.material_damping or 0.0
+        off = 1.0 - np.eye(6)
+        return ([k[..., i] for i in range(6)],
+                [c[..., i] / (2.0 * np.sqrt(np.abs(k[..., i]) * masses[i])) + xi_m for i in range(6)], (K * off, C * off))
+
+    def group(self, L, B, omega):
+        """The group's impedance K + iω C at O, complex omega.shape + (6, 6), the positions scaled
+        with the base L × B [m] (arrays over a batch of candidate blocks)."""
+        from foundation_calc.solvers.piles.cap import pile_group
+
+        soil, p = self.soil, self.piles
+        xy = np.array(p.positions, dtype=float)
+        L0, B0 = soil.plan
+        x = xy[:, 0] * (np.asarray(L, dtype=float)[..., None] / L0)
+        y = xy[:, 1] * (np.asarray(B, dtype=float)[..., None] / B0)
+        d, length = (p.diameter, p.length) if soil.dimensions is None else (
+            np.reshape(v, np.shape(v) + (1,) * (np.ndim(L) - np.ndim(v))) for v in soil.dimensions)
+        return pile_group(x, y, d, length, p.modulus, p.density, soil.G, soil.poisson, soil.density,
+                          soil.material_damping or 0.0, p.soil_profile, p.tip == "end_bearing", p.head == "pinned",
+                          omega)
+
+    def cap(self, L, B, m, omega):
+        """The cap's own springs and radiation dashpots (diagonal, six each) where it touches the soil:
+        the whole footing with ``cap_contact``, else the embedded sidewalls only (embedded less
+        surface), else none; ``m`` the body's diagonal of M about O (..., 6) [kg, kg m²]."""
+        if not self.piles.cap_contact and not np.any(np.asarray(self.D) > 0):
+            return 0.0, 0.0
+        xi_m = self.soil.material_damping or 0.0
+        M, J_O = m[..., 0], np.moveaxis(m[..., 3:], -1, 0)
+        masses = [M, M, M, *J_O]
+
+        def parts(depth):
+            springs, ratios = six_springs(self.soil, L, B, M, J_O, omega, depth)
+            return np.stack(np.broadcast_arrays(*springs), -1), np.stack(np.broadcast_arrays(
+                *[2.0 * (r - xi_m) * np.sqrt(k * mi) for r, k, mi in zip(ratios, springs, masses)]), -1)
+
+        K, C = parts(self.D)
+        if self.piles.cap_contact:
+            return K, C
+        K0, C0 = parts(0.0)
+        return K - K0, C - C0
+
+    def matrices(self, L, B, m, omega):
+        """(K, C) at O, each omega.shape + (6, 6): the group's (:meth:`group`, its dashpots Im K/ω by
+        :func:`~foundation_calc.solvers.piles.cap.springs_and_dashpots`) and the cap's footing
+        (:meth:`cap`); arguments as :meth:`cap`."""
+        from foundation_calc.solvers.piles.cap import springs_and_dashpots
+
+        K, C = springs_and_dashpots(lambda w: self.group(L, B, w), omega)
+        K_f, C_f = self.cap(L, B, m, omega)
+        eye = np.eye(6)
+        return K + np.asarray(K_f)[..., None] * eye, C + np.asarray(C_f)[..., None] * eye
 
     def validity(self) -> Validity:
         """a0 = ω d/V_s of every motion against the single pile's fitted range."""
@@ -104,7 +171,7 @@ class Piles(Footing):
             return pinned(head) if p.head == "pinned" else head
 
         head, damped = one(omega), one(np.maximum(omega, OMEGA_REST))
-        K, C = springs_and_dashpots(lambda w: soil.group(self.L, self.B, w), omega)
+        K, C = springs_and_dashpots(lambda w: self.group(self.L, self.B, w), omega)
         n = len(p.positions)
         rows = []
         for i, (label, w) in enumerate(entries):

@@ -69,9 +69,13 @@ class Grid:
 
 @dataclass(frozen=True)
 class SoilMethod:
-    """The hand calculations of the soil method ``method`` for a footing."""
+    """The hand calculations of the soil method ``method`` for a footing: its ``soil`` (the data of
+    :func:`~.footing_springs.six_springs`), ``base`` (L, B) [m] and ``embedment`` D [m]."""
 
     method: str
+    soil: object
+    base: tuple
+    embedment: float
 
 
 __all__ = ["Given", "Grid", "HandCalc", "Rows", "SoilMethod", "Step", "Text"]
