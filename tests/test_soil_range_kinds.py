@@ -63,12 +63,12 @@ def _crank_fails(scene):
 
 
 def _block_fails(scene):
-    from foundation_calc.checks.block import resonance_report
+    from foundation_calc.checks.resonance import modes_resonances
     from foundation_calc.solvers.block.response import block_modes
 
     def fails(f):
         factored = scene.with_modulus_factor(f)
-        rows = resonance_report(block_modes(factored.model()), factored.excitations(), factored.limits.detuning).rows
+        rows = modes_resonances(block_modes(factored.model()), factored.excitations(), factored.limits.detuning).rows
         return any(r.outcome.value == "fail" for r in rows)
 
     return fails

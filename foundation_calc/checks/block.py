@@ -25,7 +25,6 @@ values add as root-sum-square). A code zone judges each point's largest RMS velo
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from types import SimpleNamespace
 
 import numpy as np
 
@@ -33,8 +32,7 @@ from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable,
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, judged_rows
-from foundation_calc.checks.resonance_rule import judge, required_detuning
+from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
@@ -112,11 +110,6 @@ class BlockReport:
         return self.resonance.governing
 
 
-def condition_label(r) -> str:
-    """E.g. ``"motor: ω = mode 1 (y)"`` (``r``: a machine, an order, a mode and its motion)."""
-    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
-
-
 def amplitude_point(factor: float, report: BlockReport):
     """The amplitude check of ``report`` (the soil as given at ``factor``) as a
     :class:`~foundation_calc.checks.soil_range.RangePoint`."""
@@ -125,33 +118,6 @@ def amplitude_point(factor: float, report: BlockReport):
     if report.resonant:
         return RangePoint(factor, Outcome.FAIL, "an order is resonant with an undamped mode: no steady state", float("inf"))
     return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
-
-
-def resonance_report(modes: BlockModes, excitations, detuning) -> ResonanceReport:
-    """Every order of every machine against every mode (module docstring), judged in one call;
-    ``detuning``: the scene's band, one value or one per order."""
-    from foundation_calc.solvers.crank.resonance import ResonanceCondition
-
-    conditions, machines, motions, critical, margin, share = [], [], [], [], [], []
-    for exc in excitations:
-        res = resonances(modes, exc)
-        for h, j in np.ndindex(res.margin.shape):
-            n, motion = int(exc.orders[h]), modes.dominant[j]
-            label = condition_label(SimpleNamespace(machine=exc.name, order=n, mode=j + 1, motion=motion))
-            conditions.append(ResonanceCondition(label, n, j + 1, "harmonic", f"order {n} of {exc.name}"))
-            machines.append(exc.name)
-            motions.append(motion)
-            critical.append(float(res.critical[h, j]))
-            margin.append(float(res.margin[h, j]))
-            share.append(float(res.share[h, j]))
-    orders = np.array([c.harmonic for c in conditions], dtype=int)
-    required = required_detuning(detuning, orders)
-    verdict = judge(np.array(margin), orders, np.array(share), required, np.zeros(orders.shape, dtype=bool))
-    rows, governing = judged_rows(conditions, critical, critical, margin, share, required, verdict, machines, motions)
-    return ResonanceReport(
-        rows=rows, governing=governing, speeds={exc.name: exc.omega for exc in excitations}, detuning=detuning,
-        conditions_checked=len(rows), modes=modes,
-    )
 
 
 #: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
@@ -275,7 +241,7 @@ def check_block_as_given(scene) -> BlockReport:
     model = scene.stable_model()
     excitations = scene.excitations()
     modes, impedance = scene_modes(scene, model)
-    resonance = replace(resonance_report(modes, excitations, scene.limits.detuning), total_mass=model.mass, cog=model.cog)
+    resonance = replace(modes_resonances(modes, excitations, scene.limits.detuning), total_mass=model.mass, cog=model.cog)
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
                                              impedance=impedance)
@@ -308,5 +274,5 @@ def check_block_as_given(scene) -> BlockReport:
 
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
-           "check_block_as_given", "condition_label", "limit_rows", "resonance_report", "scene_impedance",
+           "check_block_as_given", "condition_label", "limit_rows", "scene_impedance",
            "scene_modes", "zone_rows"]

@@ -18,6 +18,9 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from types import SimpleNamespace
+
+import numpy as np
 
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
 from foundation_calc.checks.resonance_rule import (
@@ -26,6 +29,8 @@ from foundation_calc.checks.resonance_rule import (
     STATUS_NAMES,
     WARN,
     condition_phrase,
+    judge,
+    required_detuning,
 )
 from foundation_calc.checks.resonance_rule import outcome as rule_outcome
 
@@ -206,4 +211,41 @@ def judged_rows(conditions, critical, critical_averaged, margin, share, required
     return rows, (rows[g] if g >= 0 else None)
 
 
-__all__ = ["ResonanceReport", "ResonanceRow", "judged_rows"]
+def condition_label(r) -> str:
+    """How a block's condition is named, e.g. ``"motor: ω = mode 1 (y)"`` (``r``: a ``machine``,
+    an ``order``, a ``mode`` and its ``motion``)."""
+    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
+
+
+def modes_resonances(modes, excitations, detuning) -> ResonanceReport:
+    """Every order of every machine (``excitations``,
+    :class:`~foundation_calc.solvers.block.model.Excitation`) against every mode of ``modes``
+    (:class:`~foundation_calc.solvers.block.response.BlockModes`), the forcing share of each order
+    on each mode |φ_jᵀ Q_n| / p_j over its largest value for the machine, judged in one call;
+    ``detuning``: the scene's band, one value or one per order. No condition is a source's own."""
+    from foundation_calc.solvers.block.response import resonances
+    from foundation_calc.solvers.crank.resonance import ResonanceCondition
+
+    conditions, machines, motions, critical, margin, share = [], [], [], [], [], []
+    for exc in excitations:
+        res = resonances(modes, exc)
+        for h, j in np.ndindex(res.margin.shape):
+            n, motion = int(exc.orders[h]), modes.dominant[j]
+            label = condition_label(SimpleNamespace(machine=exc.name, order=n, mode=j + 1, motion=motion))
+            conditions.append(ResonanceCondition(label, n, j + 1, "harmonic", f"order {n} of {exc.name}"))
+            machines.append(exc.name)
+            motions.append(motion)
+            critical.append(float(res.critical[h, j]))
+            margin.append(float(res.margin[h, j]))
+            share.append(float(res.share[h, j]))
+    orders = np.array([c.harmonic for c in conditions], dtype=int)
+    required = required_detuning(detuning, orders)
+    verdict = judge(np.array(margin), orders, np.array(share), required, np.zeros(orders.shape, dtype=bool))
+    rows, governing = judged_rows(conditions, critical, critical, margin, share, required, verdict, machines, motions)
+    return ResonanceReport(
+        rows=rows, governing=governing, speeds={exc.name: exc.omega for exc in excitations}, detuning=detuning,
+        conditions_checked=len(rows), modes=modes,
+    )
+
+
+__all__ = ["ResonanceReport", "ResonanceRow", "condition_label", "judged_rows", "modes_resonances"]
