@@ -6,6 +6,8 @@ the mechanism's time-averaged inertia. The margin is measured to the nearer of t
 verdict holds whichever estimate is used. Which conditions are judged and how is the rule shared
 by every scene kind (:mod:`~foundation_calc.checks.resonance_rule`): the paper's six, and every
 other harmonic n ω = k0, p1, p2 of the machine's forcing whose forcing share reaches 1 %.
+This module gives the plane model's conditions, frequencies and forcing shares; the rows, the
+report and its words are every kind's (:mod:`~foundation_calc.checks.resonance`).
 """
 
 from __future__ import annotations
@@ -185,14 +187,6 @@ def check_block_resonances(block, omega: float, loads, detuning, frequencies=Non
     stability = rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h)
     conditions, share = machine_conditions(None, loads, block)
     return replace(_report(None, freqs, freqs, stability, omega, conditions, share, detuning), static=static)
-
-
-def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
-    """:func:`machine_conditions` of a ``crank_foundation`` scene (at its own speed and soil)."""
-    loads = scene.harmonic_loads()
-    if scene.mechanism is None:
-        return machine_conditions(None, loads, scene.block())
-    return machine_conditions(scene.design(), loads)
 
 
 def check_scene_resonances(scene) -> ResonanceReport:
