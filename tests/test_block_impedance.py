@@ -83,7 +83,7 @@ def test_a_sweep_on_gazetas_soil_is_the_single_speed_steady_state_at_each_speed(
         single = check_block(parse_scene(document))
         np.testing.assert_allclose(sweep.peak[i], single.motion.peak, rtol=1e-9)
         np.testing.assert_allclose(sweep.velocity_rms[i], single.motion.velocity_rms, rtol=1e-9)
-        np.testing.assert_allclose(sweep.margin[i, 0], [r.margin for r in single.resonance_rows if r.machine == "compressor" and r.order == 1],
+        np.testing.assert_allclose(sweep.margin[i, 0], [r.margin for r in single.resonance.rows if r.machine == "compressor" and r.order == 1],
                                    rtol=1e-9)
 
 

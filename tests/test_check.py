@@ -26,7 +26,7 @@ def _invoke(runner, *args):
 def quick_checks(monkeypatch):
     """Crank scenes run only the resonance check (the amplitude check takes ~1 s a scene), for
     tests of the report itself rather than of the checks."""
-    monkeypatch.setitem(registry.CHECKS, "crank_foundation", {"resonance": registry.crank_resonance})
+    monkeypatch.setitem(registry.CHECKS, "crank_foundation", {"resonance": registry.resonance})
 
 
 @pytest.fixture
@@ -258,7 +258,7 @@ def test_junit_carries_each_checks_own_time(runner, monkeypatch, tmp_path):
 
     def slow_resonance(scene):
         time.sleep(0.05)
-        return registry.crank_resonance(scene)
+        return registry.resonance(scene)
 
     monkeypatch.setitem(registry.CHECKS, "crank_foundation", {"resonance": slow_resonance})
     report = tmp_path / "junit.xml"

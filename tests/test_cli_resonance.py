@@ -82,7 +82,7 @@ def test_internal_error_exits_4_without_traceback(runner, monkeypatch):
 
 
 def test_closed_pipe_ends_quietly_with_141(runner, monkeypatch):
-    import foundation_calc.output.crank_resonance as out
+    import foundation_calc.output.resonance as out
 
     def closed(*args, **kwargs):
         raise BrokenPipeError(32, "Broken pipe")

@@ -76,5 +76,5 @@ def test_a_factor_of_the_modulus_range_is_evaluated_once(monkeypatch):
 
     monkeypatch.setattr(block_checks, "check_block_as_given", counted)
     report = block_checks.check_block(scene)
-    assert report.amplitude_range is not None and len(report.resonance_range.points) > 1
+    assert report.amplitude_range is not None and len(report.resonance.modulus_range.points) > 1
     assert len(seen) == len(set(seen))

@@ -34,7 +34,7 @@ def test_crank_chains_end_in_the_solvers_numbers(path):
     if "Soil" in chains:
         for key in ("K_z", "K_x", "K_phi") + (("xi_z", "xi_x", "xi_phi") if scene.soil.method_used != "coefficients" else ()):
             assert _close(chains["Soil"][key], float(getattr(springs, key))), key
-    from foundation_calc.output.crank_resonance import resonance_document
+    from foundation_calc.output.resonance import resonance_document
 
     natural = resonance_document(check_scene_resonances(scene), scene, "")["natural_frequencies"]
     for key in ("k0", "p1", "p2"):

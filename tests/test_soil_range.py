@@ -174,8 +174,8 @@ def test_a_block_that_passes_as_given_fails_where_a_mode_crosses_the_speed_insid
     scene = parse_scene(_block_on_springs([0.7, 1.4], crossing_factor=0.8))
     omega = scene.machines[0].omega_rad_s
     report = check_block(scene)
-    assert check_block_as_given(scene).resonance_outcome.value == "pass"
-    ranged = report.resonance_range
+    assert check_block_as_given(scene).resonance.outcome.value == "pass"
+    ranged = report.resonance.modulus_range
     crossings = {label: f for f, label in ranged.crossings}
     expected = bisect(lambda f: _block_frequencies(scene, f)[4] - omega, 0.7, 1.4, xtol=1e-13)
     assert crossings["motor: ω = mode 5 (ry)"] == pytest.approx(expected, rel=1e-7)
@@ -184,7 +184,7 @@ def test_a_block_that_passes_as_given_fails_where_a_mode_crosses_the_speed_insid
     scan = np.geomspace(0.7, 1.4, 2001)
     margins = np.array([np.abs(omega - p) / p for p in (_block_frequencies(scene, f) for f in scan)])
     assert (ranged.outcome.value == "fail") == bool(margins.min() < 0.05)
-    assert report.resonance_outcome.value == "fail" and "governing factor 0.8" in report.resonance_range.text
+    assert report.resonance.outcome.value == "fail" and "governing factor 0.8" in report.resonance.modulus_range.text
 
     amplitude = report.amplitude_range
     assert crossings["motor: ω = mode 5 (ry)"] in [p.factor for p in amplitude.points]

@@ -63,12 +63,12 @@ def _crank_fails(scene):
 
 
 def _block_fails(scene):
-    from foundation_calc.checks.block import resonance_rows
+    from foundation_calc.checks.resonance import modes_resonances
     from foundation_calc.solvers.block.response import block_modes
 
     def fails(f):
         factored = scene.with_modulus_factor(f)
-        rows = resonance_rows(block_modes(factored.model()), factored.excitations(), factored.limits.detuning)
+        rows = modes_resonances(block_modes(factored.model()), factored.excitations(), factored.limits.detuning).rows
         return any(r.outcome.value == "fail" for r in rows)
 
     return fails
@@ -133,7 +133,7 @@ def test_a_block_sample_without_scatter_is_the_checks_own_numbers(config, soil, 
     assert drawn.percentiles["resonance_utilisation"][1] == pytest.approx(max(g.required, RESONANCE_FAIL_MARGIN) / g.margin, rel=rel)
     ratios = [r.ratio for r in (*report.limit_rows, *report.zone_rows)]
     assert drawn.percentiles["amplitude_utilisation"][1] == pytest.approx(max(ratios), rel=rel)
-    expected = {"resonance": report.resonance_outcome.value == "fail", "amplitudes": report.amplitude_outcome.value == "fail"}
+    expected = {"resonance": report.resonance.outcome.value == "fail", "amplitudes": report.amplitude_outcome.value == "fail"}
     assert {k: drawn.failure_probability[k] == 1.0 for k in expected} == expected
 
 

@@ -23,7 +23,7 @@ def resonance(scene, *, strict: bool = False) -> Result:
     -------
     Result
         ``to_dict()`` is the document of ``fcalc resonance --json``; ``report`` the checks'
-        resonance report.
+        resonance report (:class:`~foundation_calc.checks.resonance.ResonanceReport`).
 
     Raises
     ------
@@ -31,20 +31,11 @@ def resonance(scene, *, strict: bool = False) -> Result:
         An invalid scene, or a scene of another kind.
     """
     from foundation_calc.checks.outcomes import exit_code
+    from foundation_calc.checks.registry import scene_resonances
+    from foundation_calc.output.resonance import resonance_document
 
     loaded = scene_of(scene, KINDS)
     model = loaded.model
-    if loaded.kind == "block_foundation":
-        from foundation_calc.checks.block import check_block
-        from foundation_calc.output.block import resonance_document
-
-        report = check_block(model)
-        outcome = report.resonance_outcome
-    else:
-        from foundation_calc.checks.crank_resonance import check_scene_resonances
-        from foundation_calc.output.crank_resonance import resonance_document
-
-        report = check_scene_resonances(model)
-        outcome = report.outcome
-    code = exit_code(outcome, strict, bool(model.plausibility_warnings()))
+    report = scene_resonances(model)
+    code = exit_code(report.outcome, strict, bool(model.plausibility_warnings()))
     return command_result("resonance", resonance_document(report, model, loaded.source), code, loaded, report)

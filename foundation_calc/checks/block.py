@@ -24,16 +24,15 @@ values add as root-sum-square). A code zone judges each point's largest RMS velo
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, point_zone, zone_outcome
 from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
 from foundation_calc.checks.office import OfficeRow, office_rows
-from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
-from foundation_calc.checks.resonance_rule import STATUS_NAMES, judge, required_detuning
-from foundation_calc.checks.resonance_rule import outcome as rule_outcome
+from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
@@ -46,29 +45,6 @@ from foundation_calc.solvers.block.response import (
 from foundation_calc.units import rpm_from_omega
 
 DIRECTIONS = ("x", "y", "z")
-
-
-@dataclass(frozen=True)
-class ResonanceRow:
-    """One order of one machine against one mode; speeds in rad/s."""
-
-    machine: str
-    order: int
-    mode: int
-    motion: str
-    natural: float
-    critical: float
-    margin: float
-    share: float
-    judged: bool
-    required: float
-    status: str
-    outcome: Outcome
-
-    @property
-    def driven(self) -> bool:
-        """Whether the condition can decide the verdict (judged by the rule)."""
-        return self.judged
 
 
 @dataclass(frozen=True)
@@ -96,7 +72,9 @@ class BlockReport:
 
     modes: BlockModes
     speeds: dict
-    resonance_rows: tuple[ResonanceRow, ...]
+    #: every order of every machine against every mode, judged by the rule (with the check over
+    #: the soil's ``modulus_range`` and the soil model's validity, once they are known)
+    resonance: ResonanceReport
     resonant: bool
     motion: PointMotion | None
     limit_rows: tuple[LimitRow, ...]
@@ -105,9 +83,8 @@ class BlockReport:
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
-    #: the resonance and amplitude checks over the soil's ``modulus_range``
+    #: the amplitude check over the soil's ``modulus_range``
     #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
-    resonance_range: object = None
     amplitude_range: object = None
     #: a0 of the judged modes and orders against the soil method's fitted range
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
@@ -115,11 +92,6 @@ class BlockReport:
     #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
     #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
     periodic: tuple = ()
-
-    @property
-    def resonance_outcome(self) -> Outcome:
-        ranged = () if self.resonance_range is None else (self.resonance_range.outcome,)
-        return worst([*(r.outcome for r in self.resonance_rows), *ranged])
 
     @property
     def amplitude_outcome(self) -> Outcome:
@@ -134,51 +106,8 @@ class BlockReport:
 
     @property
     def nearest(self) -> ResonanceRow:
-        """The governing row: the worst status and, among those, the smallest margin over the margin
-        it needs (the rule's governing condition); the smallest margin when none can decide."""
-        deciding = [r for r in self.resonance_rows if r.judged or r.order == 1]
-        if not deciding:
-            return min(self.resonance_rows, key=lambda r: r.margin)
-        rank = {"fail": 2, "warn": 1, "pass": 0}
-        return min(deciding, key=lambda r: (-rank[r.outcome.value], r.margin / max(r.required, RESONANCE_FAIL_MARGIN)))
-
-
-def condition_label(r: ResonanceRow) -> str:
-    """E.g. ``"motor: ω = mode 1 (y)"``."""
-    return f"{r.machine}: {r.order if r.order > 1 else ''}ω = mode {r.mode} ({r.motion})"
-
-
-def resonance_text(report: BlockReport) -> str:
-    """The resonance verdict's reason, naming the governing condition (as every command words it)."""
-    from foundation_calc.checks.resonance_rule import condition_phrase
-
-    def phrase(r):
-        return condition_phrase(condition_label(r), r.margin, max(r.required, RESONANCE_FAIL_MARGIN))
-
-    governing = phrase(report.nearest)
-    outcome = worst(r.outcome for r in report.resonance_rows)
-    ranged = "" if report.resonance_range is None else f" with the soil data as given; {report.resonance_range.text}"
-    if outcome is Outcome.PASS:
-        return f"no machine's order is inside a resonance band (governing: {governing})" + ranged
-    return "; ".join(phrase(r) for r in report.resonance_rows if r.outcome is outcome) + f" (governing: {governing})" + ranged
-
-
-def resonance_point(factor: float, report: BlockReport):
-    """The resonance check of ``report`` (the soil as given at ``factor``) as a
-    :class:`~foundation_calc.checks.soil_range.RangePoint`: its governing condition, severity
-    required/margin."""
-    from foundation_calc.checks.resonance_rule import condition_phrase
-    from foundation_calc.checks.soil_range import RangePoint
-
-    r = report.nearest
-    needed = max(r.required, RESONANCE_FAIL_MARGIN)
-    severity = float("inf") if r.margin <= 0.0 else needed / r.margin
-    return RangePoint(factor, report.resonance_outcome, condition_phrase(condition_label(r), r.margin, needed), severity)
-
-
-def resonance_offsets(report: BlockReport) -> dict[str, tuple[float, bool]]:
-    """Condition -> (critical speed p_j / n less its machine's speed [rad/s], judged by the rule)."""
-    return {condition_label(r): (r.critical - report.speeds[r.machine], r.judged) for r in report.resonance_rows}
+        """The governing resonance row (the rule's governing condition)."""
+        return self.resonance.governing
 
 
 def amplitude_point(factor: float, report: BlockReport):
@@ -189,25 +118,6 @@ def amplitude_point(factor: float, report: BlockReport):
     if report.resonant:
         return RangePoint(factor, Outcome.FAIL, "an order is resonant with an undamped mode: no steady state", float("inf"))
     return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
-
-
-def resonance_rows(modes: BlockModes, excitations, detuning) -> tuple[ResonanceRow, ...]:
-    """Every order of every machine against every mode (module docstring); ``detuning``: the
-    scene's band, one value or one per order."""
-    rows = []
-    for exc in excitations:
-        res = resonances(modes, exc)
-        orders = np.repeat(exc.orders, len(modes.frequencies))
-        required = required_detuning(detuning, orders)
-        verdict = judge(res.margin.ravel(), orders, res.share.ravel(), required, np.zeros(orders.shape, dtype=bool))
-        for c, (h, j) in enumerate(np.ndindex(res.margin.shape)):
-            status = int(verdict.status[c])
-            rows.append(ResonanceRow(
-                exc.name, int(exc.orders[h]), j + 1, modes.dominant[j], float(modes.frequencies[j]), float(res.critical[h, j]),
-                float(res.margin[h, j]), float(res.share[h, j]), bool(verdict.judged[c]), float(required[c]),
-                STATUS_NAMES[status], rule_outcome(status),
-            ))
-    return tuple(rows)
 
 
 #: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
@@ -290,10 +200,11 @@ def _check_block(scene) -> BlockReport:
     from foundation_calc.checks.soil_validity import block_validity
 
     report = check_block_as_given(scene)
-    report = replace(report, soil_validity=block_validity(scene, report))
+    validity = block_validity(scene, report)
+    report = replace(report, soil_validity=validity, resonance=replace(report.resonance, soil_validity=validity))
     if scene.soil.modulus_range is None:
         return report
-    from foundation_calc.checks.soil_range import amplitudes_over_range, resonances_over_range
+    from foundation_calc.checks.soil_range import amplitudes_over_range, resonance_point, resonances_over_range
 
     # the resonance and amplitude grids share factors (the ends, 1, the crossings): each soil once
     reports: dict = {}
@@ -304,9 +215,10 @@ def _check_block(scene) -> BlockReport:
             reports[key] = check_block_as_given(factored)
         return reports[key]
 
-    resonance = resonances_over_range(scene, at_factor, resonance_point, resonance_offsets)
+    resonance = resonances_over_range(scene, at_factor, lambda f, r: resonance_point(f, r.resonance),
+                                      lambda r: r.resonance.offsets())
     amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings, amplitude_point)
-    return replace(report, resonance_range=resonance, amplitude_range=amplitude)
+    return replace(report, resonance=replace(report.resonance, modulus_range=resonance), amplitude_range=amplitude)
 
 
 def scene_modes(scene, model) -> tuple[BlockModes, object]:
@@ -329,7 +241,7 @@ def check_block_as_given(scene) -> BlockReport:
     model = scene.stable_model()
     excitations = scene.excitations()
     modes, impedance = scene_modes(scene, model)
-    rows = resonance_rows(modes, excitations, scene.limits.detuning)
+    resonance = replace(modes_resonances(modes, excitations, scene.limits.detuning), total_mass=model.mass, cog=model.cog)
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
                                              impedance=impedance)
@@ -349,7 +261,7 @@ def check_block_as_given(scene) -> BlockReport:
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
-        resonance_rows=rows,
+        resonance=resonance,
         resonant=stuck,
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
@@ -362,5 +274,5 @@ def check_block_as_given(scene) -> BlockReport:
 
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
-           "check_block_as_given", "condition_label", "limit_rows", "resonance_offsets", "resonance_point", "resonance_rows",
-           "resonance_text", "scene_impedance", "scene_modes", "zone_rows"]
+           "check_block_as_given", "condition_label", "limit_rows", "scene_impedance",
+           "scene_modes", "zone_rows"]

@@ -5,7 +5,7 @@ others run at their own speeds, or are left out (``alone``: they stand still, th
 on the block). At every speed:
 
 - the resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`) over every order of
-  every running machine against every mode, as :func:`~foundation_calc.checks.block.resonance_rows`
+  every running machine against every mode, as :func:`~foundation_calc.checks.resonance.modes_resonances`
   judges them: the swept machine's margins move with the speed, the others' stay; each
   condition's forcing share is the scene's (at its own speeds), so which conditions are judged
   does not change along the sweep, and the row at the scene's speed is ``fcalc check``'s;

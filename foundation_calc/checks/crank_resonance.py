@@ -6,25 +6,18 @@ the mechanism's time-averaged inertia. The margin is measured to the nearer of t
 verdict holds whichever estimate is used. Which conditions are judged and how is the rule shared
 by every scene kind (:mod:`~foundation_calc.checks.resonance_rule`): the paper's six, and every
 other harmonic n ω = k0, p1, p2 of the machine's forcing whose forcing share reaches 1 %.
+This module gives the plane model's conditions, frequencies and forcing shares; the rows, the
+report and its words are every kind's (:mod:`~foundation_calc.checks.resonance`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
-from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
-from foundation_calc.checks.resonance_rule import (
-    FORCING_SHARE,
-    INFORMATION,
-    WARN,
-    condition_phrase,
-    judge,
-    required_detuning,
-)
-from foundation_calc.checks.resonance_rule import outcome as rule_outcome
+from foundation_calc.checks.resonance import ResonanceReport, judged_rows
+from foundation_calc.checks.resonance_rule import INFORMATION, judge, required_detuning
 from foundation_calc.solvers.crank.frequencies import (
     NaturalFrequencies,
     averaged_inertia_frequencies,
@@ -38,101 +31,6 @@ from foundation_calc.solvers.crank.resonance import (
     condition_margin,
     critical_speed,
 )
-
-
-@dataclass(frozen=True)
-class ResonanceRow:
-    """One resonance condition checked at the operating speed (speeds in rad/s).
-
-    ``share``: the forcing share of the condition's harmonic on its mode [-]; ``judged``: it can
-    fail the design; ``status``: code of :mod:`~foundation_calc.checks.resonance_rule`;
-    ``required``: the detuning band of its order [-] (0: the order has none).
-    """
-
-    condition: ResonanceCondition
-    critical_zero_order: float
-    critical_averaged: float
-    margin: float
-    required: float
-    share: float
-    judged: bool
-    status: int
-
-    @property
-    def outcome(self) -> Outcome:
-        return rule_outcome(self.status)
-
-    @property
-    def information(self) -> bool:
-        """Not judged, inside its band: listed, never the verdict."""
-        return self.status == INFORMATION
-
-    @property
-    def needed(self) -> float:
-        """The margin this condition needs [-]: its band, at least the 5 % every judged one needs."""
-        return max(self.required, RESONANCE_FAIL_MARGIN)
-
-    @property
-    def phrase(self) -> str:
-        """``"3ω = p1 at 30.9% (needs 20%)"``; information rows add their forcing share."""
-        if self.information:
-            return f"{self.condition.label} at {self.margin:.1%} (forcing share {self.share:.2g} < {FORCING_SHARE:.0%}: not judged)"
-        return condition_phrase(self.condition.label, self.margin, self.needed)
-
-
-@dataclass(frozen=True)
-class ResonanceReport:
-    """Natural frequencies of a design and its resonance rows.
-
-    ``design`` is None for a machine given by its loads only; ``averaged`` is then the same as
-    ``zero_order`` (there is no mechanism whose inertia could be averaged). ``rows``: the
-    conditions shown (the paper's and the extra ones, the loads' orders, every other judged
-    condition and the nearest conditions listed as information); ``governing``: the condition
-    that governs the verdict (:mod:`~foundation_calc.checks.resonance_rule`); ``detuning``: the
-    scene's ``[limits] detuning`` (a band, or a band per order). On a frequency-dependent soil
-    each frequency solves ω = p(K(ω)) with the springs taken at that mode's own frequency, and
-    ``static`` holds the zero-order frequencies on the static springs (None on a
-    frequency-independent soil, where they are the same); ``modulus_range``: the check over the
-    soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if the scene gives one.
-    """
-
-    design: CrankDesign | None
-    zero_order: NaturalFrequencies
-    averaged: NaturalFrequencies
-    stability_margin: float
-    rows: tuple[ResonanceRow, ...]
-    omega: float
-    governing: ResonanceRow | None = None
-    detuning: float | Mapping[int, float] = 0.2
-    conditions_checked: int = 0
-    static: NaturalFrequencies | None = None
-    modulus_range: object = None
-    #: a0 of the judged modes and orders against the soil method's fitted range
-    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
-    soil_validity: object = None
-
-    @property
-    def outcome(self) -> Outcome:
-        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
-        return worst((*(row.outcome for row in self.rows), *ranged))
-
-    @property
-    def information(self) -> tuple[ResonanceRow, ...]:
-        """Near conditions whose forcing does not matter: listed, not the verdict."""
-        return tuple(row for row in self.rows if row.information)
-
-    @property
-    def statement(self) -> str:
-        """The verdict of the rule in words, the same in every command: the governing condition
-        and its margin, then the other failing or warning conditions."""
-        g = self.governing
-        if g is None:
-            return "no resonance condition to judge"
-        if g.status < WARN:
-            return f"governing resonance {g.phrase}"
-        others = [row.phrase for row in self.rows if row.status == g.status and row is not g]
-        word = "inside the band" if g.margin < g.required else "within 5%"
-        return f"{word} of {g.phrase}" + (f"; also {', '.join(others)}" if others else "")
 
 
 def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
@@ -246,13 +144,9 @@ def judge_conditions(omega, zero, averaged, conditions, share, detuning):
 
 def _report(design, zero, averaged, stability, omega, conditions, share, detuning) -> ResonanceReport:
     margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
-    rows = []
-    for i, cond in enumerate(conditions):
-        w0 = critical_speed(getattr(zero, cond.mode), cond.harmonic)
-        w1 = critical_speed(getattr(averaged, cond.mode), cond.harmonic)
-        rows.append(ResonanceRow(cond, float(w0), float(w1), float(margins[i]), float(required[i]), float(share[i]),
-                                 bool(verdict.judged[i]), int(verdict.status[i])))
-    governing = rows[int(verdict.governing)] if int(verdict.governing) >= 0 else None
+    critical = [critical_speed(getattr(zero, c.mode), c.harmonic) for c in conditions]
+    averaged_critical = [critical_speed(getattr(averaged, c.mode), c.harmonic) for c in conditions]
+    rows, governing = judged_rows(conditions, critical, averaged_critical, margins, share, required, verdict)
     information = sorted((row for row in rows if row.information and row.condition.source == "harmonic"), key=lambda r: r.margin)
     listed = {id(row) for row in information[:SHOWN_INFORMATION]}
     shown = tuple(
@@ -260,8 +154,8 @@ def _report(design, zero, averaged, stability, omega, conditions, share, detunin
         if row.condition.source != "harmonic" or row.judged or row.status > INFORMATION or id(row) in listed
     )
     return ResonanceReport(
-        design=design, zero_order=zero, averaged=averaged, stability_margin=stability, rows=shown, omega=omega,
-        governing=governing, detuning=detuning, conditions_checked=len(rows),
+        rows=shown, governing=governing, speeds={"": omega}, detuning=detuning, conditions_checked=len(rows),
+        design=design, zero_order=zero, averaged=averaged, stability_margin=stability,
     )
 
 
@@ -293,14 +187,6 @@ def check_block_resonances(block, omega: float, loads, detuning, frequencies=Non
     stability = rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h)
     conditions, share = machine_conditions(None, loads, block)
     return replace(_report(None, freqs, freqs, stability, omega, conditions, share, detuning), static=static)
-
-
-def scene_conditions(scene) -> tuple[tuple[ResonanceCondition, ...], np.ndarray]:
-    """:func:`machine_conditions` of a ``crank_foundation`` scene (at its own speed and soil)."""
-    loads = scene.harmonic_loads()
-    if scene.mechanism is None:
-        return machine_conditions(None, loads, scene.block())
-    return machine_conditions(scene.design(), loads)
 
 
 def check_scene_resonances(scene) -> ResonanceReport:

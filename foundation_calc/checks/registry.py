@@ -7,7 +7,7 @@ interpreted) and ``(quantity, SI value)`` pairs that the output layer shows in t
 so tables can show speeds in rpm or amplitudes in mm without any check knowing about display
 units. ``values`` names the same numbers for the JSON document.
 
-The functions here adapt the per-topic checks (``checks/crank_resonance.py`` ...); they import
+The functions here adapt the per-topic checks (``checks/resonance.py`` ...); they import
 those modules only when called, so ``fcalc check`` loads the physics of the kinds it meets and
 nothing else. Each finding keeps the check's report, from which the output layer writes the same
 JSON document as the single-scene command. Adding a check to a kind is one function and one entry
@@ -95,21 +95,26 @@ def _support(row) -> str:
     return f"; {phrase}" if phrase else ""
 
 
-def crank_resonance(scene) -> Finding:
-    """Margin of the crank speed from every resonance (``fcalc resonance``)."""
+def scene_resonances(scene):
+    """The resonance report (:class:`~foundation_calc.checks.resonance.ResonanceReport`) of a
+    crank or block scene, with its soil's modulus range and soil validity."""
+    if scene.kind == "block_foundation":
+        from foundation_calc.checks.block import check_block
+
+        return check_block(scene).resonance
     from foundation_calc.checks.crank_resonance import check_scene_resonances
 
-    report = check_scene_resonances(scene)
-    speed = ("speed", report.omega)
-    values = {"speed": speed}
-    governing = report.governing
-    if governing is not None:
-        values["critical"] = ("speed", governing.critical_zero_order)
-    reason = ("speed ", speed, f", {report.statement}")
-    details = ()
-    if report.modulus_range is not None:
-        reason += (f" with the soil data as given; {report.modulus_range.text}",)
-        details = report.modulus_range.details()
+    return check_scene_resonances(scene)
+
+
+def resonance(scene) -> Finding:
+    """Every machine's orders against every mode by the resonance rule (``fcalc resonance``)."""
+    report = scene_resonances(scene)
+    values = {} if report.per_machine else {"speed": ("speed", report.omega)}
+    if report.governing is not None:
+        values["critical"] = ("speed", report.governing.critical)
+    reason = (report.text,) if report.per_machine else ("speed ", values["speed"], f", {report.text}")
+    details = () if report.modulus_range is None else report.modulus_range.details()
     noted, notes = soil_notes(report.soil_validity)
     return Finding("resonance", report.outcome, reason + noted, values, report, details + notes)
 
@@ -216,18 +221,6 @@ def runup(scene) -> Finding | None:
     return Finding("runup", report.outcome, tuple(parts), values, report, details)
 
 
-def block_resonance(scene) -> Finding:
-    """Every machine's orders against the block's six modes by the resonance rule (``fcalc resonance``)."""
-    from foundation_calc.checks.block import check_block, resonance_text
-
-    report = check_block(scene)
-    values = {"critical": ("speed", report.nearest.critical)}
-    details = () if report.resonance_range is None else report.resonance_range.details()
-    noted, notes = soil_notes(report.soil_validity)
-    return Finding("resonance", report.resonance_outcome, (resonance_text(report), *noted), values, report,
-                   details + notes)
-
-
 def block_amplitudes(scene) -> Finding:
     """Damped steady state of the block's points against [limits] and a vibration code (``fcalc amplitudes``)."""
     from foundation_calc.checks.block import check_block
@@ -304,9 +297,9 @@ def requirements(scene) -> Finding | None:
 
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
-    "crank_foundation": {"inputs": inputs, "resonance": crank_resonance, "amplitudes": crank_amplitudes, "runup": runup,
+    "crank_foundation": {"inputs": inputs, "resonance": resonance, "amplitudes": crank_amplitudes, "runup": runup,
                          "office": crank_office, "requirements": requirements},
     "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
-    "block_foundation": {"inputs": inputs, "resonance": block_resonance, "amplitudes": block_amplitudes, "runup": runup,
+    "block_foundation": {"inputs": inputs, "resonance": resonance, "amplitudes": block_amplitudes, "runup": runup,
                          "office": block_office, "requirements": requirements},
 }

@@ -106,7 +106,8 @@ def modulus_factors(low: float, high: float, n: int = GRID_POINTS) -> list[float
 
 
 def resonance_point(factor: float, report) -> RangePoint:
-    """A crank :class:`~foundation_calc.checks.crank_resonance.ResonanceReport` at one factor."""
+    """A :class:`~foundation_calc.checks.resonance.ResonanceReport` at one factor: its governing
+    condition, severity needed/margin."""
     g = report.governing
     if g is None:
         return RangePoint(factor, report.outcome, "no resonance condition to judge", 0.0)
@@ -114,9 +115,9 @@ def resonance_point(factor: float, report) -> RangePoint:
 
 
 def resonance_offsets(report) -> dict[str, tuple[float, bool]]:
-    """Condition -> (its critical speed less the operating speed [rad/s], judged by the rule) of a
-    crank :class:`~foundation_calc.checks.crank_resonance.ResonanceReport`."""
-    return {row.condition.label: (row.critical_zero_order - report.omega, row.judged) for row in report.rows}
+    """Condition -> (its critical speed less its machine's speed [rad/s], judged by the rule) of a
+    :class:`~foundation_calc.checks.resonance.ResonanceReport`."""
+    return report.offsets()
 
 
 def worst_row_point(factor: float, outcome: Outcome, rows) -> RangePoint:
@@ -155,8 +156,8 @@ def resonances_over_range(scene, check, point=resonance_point, offsets=resonance
     """``check(scene)`` at every factor of the scene's ``soil.modulus_range`` and at the factors
     where a critical speed crosses the operating speed (module docstring). ``point(factor,
     report)`` reads a report's verdict, ``offsets(report)`` its conditions (condition ->
-    (critical speed less operating speed [rad/s], judged)); the defaults read a crank
-    :class:`~foundation_calc.checks.crank_resonance.ResonanceReport`."""
+    (critical speed less operating speed [rad/s], judged)); the defaults read a
+    :class:`~foundation_calc.checks.resonance.ResonanceReport`."""
     from scipy.optimize import brentq
 
     low, high = scene.soil.modulus_range

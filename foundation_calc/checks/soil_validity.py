@@ -326,12 +326,12 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
 
 
 def judged_orders(rows) -> list[int]:
-    """The orders n the resonance rule judges on any mode (``rows`` with ``judged`` and the order
-    as ``order`` or ``condition.harmonic``), and 1 (the speed) always, ascending."""
+    """The orders n the resonance rule judges on any mode (``rows``:
+    :class:`~foundation_calc.checks.resonance.ResonanceRow`), and 1 (the speed) always, ascending."""
     orders = {1}
     for row in rows:
         if row.judged:
-            orders.add(int(getattr(row, "order", None) or row.condition.harmonic))
+            orders.add(int(row.order))
     return sorted(orders)
 
 
@@ -341,7 +341,7 @@ def _order_label(n: int) -> str:
 
 def crank_validity(scene, report) -> SoilValidity:
     """The soil model's validity of a ``crank_foundation`` scene at the modes k0, p1, p2 of its
-    resonance ``report`` (:class:`~foundation_calc.checks.crank_resonance.ResonanceReport`, on a
+    resonance ``report`` (:class:`~foundation_calc.checks.resonance.ResonanceReport`, on a
     frequency-dependent soil each at its own frequency) and every order the rule judges."""
     soil, f = scene.soil, scene.foundation
     method = soil.method_used
@@ -372,7 +372,7 @@ def block_validity(scene, report) -> SoilValidity:
     judged = mode_frequencies(labels, modes.frequencies, shares, MOTIONS)
     harmonics: dict[float, list[str]] = {}  # machines at one speed share their orders' frequencies
     for machine, speed in report.speeds.items():
-        for n in judged_orders([r for r in report.resonance_rows if r.machine == machine]):
+        for n in judged_orders([r for r in report.resonance.rows if r.machine == machine]):
             harmonics.setdefault(n * speed, []).append((machine, n))
     several = len(report.speeds) > 1
     for omega, orders in harmonics.items():

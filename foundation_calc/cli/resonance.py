@@ -36,12 +36,8 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
         from foundation_calc.output.console import print_json
 
         print_json(result.document)
-    elif loaded.kind == "block_foundation":
-        from foundation_calc.output.block import print_resonance
+    else:
+        from foundation_calc.output.resonance import print_resonance
 
         print_resonance(result.report, loaded.model, loaded.source, shown, strict)
-    else:
-        from foundation_calc.output.crank_resonance import print_resonance_report
-
-        print_resonance_report(result.report, loaded.model, loaded.source, shown, strict)
     raise typer.Exit(result.exit_code)

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.block import DIRECTIONS, BlockReport, condition_label, resonance_text
+from foundation_calc.checks.block import DIRECTIONS, BlockReport
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import fmt, fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import (
     point_support_document,
@@ -16,13 +17,8 @@ from foundation_calc.output.notes import (
     soil_validity_document,
     support_document,
 )
+from foundation_calc.output.resonance import print_modes, resonance_document, speeds_line
 from foundation_calc.units import speed_triplet
-
-#: What each dominant motion is called in tables.
-MOTION_NAMES = {
-    "x": "sliding x (with rocking)", "y": "sliding y (with rocking)", "z": "vertical",
-    "rx": "rocking about x", "ry": "rocking about y", "rz": "torsion about z",
-}
 
 #: How several machines' amplitudes combine, said once wherever they are shown.
 COMBINATION = (
@@ -33,43 +29,6 @@ COMBINATION = (
 
 def _header(scene, source: str) -> dict:
     return {"source": source, "kind": scene.kind, "name": scene.name}
-
-
-def _modes(report: BlockReport) -> list[dict]:
-    """Each mode; ``static_frequency`` on the static springs beside the frequency-consistent one
-    (None on a frequency-independent soil)."""
-    m = report.modes
-    return [
-        {"mode": j + 1, "frequency": speed_triplet(float(p)), "dominant": m.dominant[j],
-         "dominant_name": MOTION_NAMES[m.dominant[j]], "damping_ratio": float(m.damping[j]),
-         "static_frequency": None if m.static is None else speed_triplet(float(m.static[j])),
-         "shape": [float(v) for v in m.shapes[:, j]]}
-        for j, p in enumerate(m.frequencies)
-    ]
-
-
-def resonance_document(report: BlockReport, scene, source: str, command: str = "resonance") -> dict:
-    """The JSON document of ``fcalc resonance`` for a block scene."""
-    return {
-        "schema_version": JSON_SCHEMA_VERSION,
-        "command": command,
-        "scene": _header(scene, source),
-        "machines": {name: speed_triplet(w) for name, w in report.speeds.items()},
-        "total_mass": report.total_mass,
-        "centre_of_mass": [float(v) for v in report.cog],
-        "modes": _modes(report),
-        "resonances": [
-            {"condition": condition_label(r), "mode_name": MOTION_NAMES[r.motion],
-             "machine": r.machine, "order": r.order, "mode": r.mode, "dominant": r.motion,
-             "critical_speed": speed_triplet(r.critical), "margin": r.margin, "forcing_share": r.share,
-             "judged": r.judged, "required": r.required, "status": r.status, "verdict": r.outcome.value}
-            for r in report.resonance_rows
-        ],
-        "modulus_range": None if report.resonance_range is None else report.resonance_range.document(),
-        "warnings": scene.plausibility_warnings(),
-        "soil_validity": soil_validity_document(report.soil_validity),
-        "verdict": report.resonance_outcome.value,
-    }
 
 
 def _office(report: BlockReport) -> list[dict]:
@@ -90,7 +49,7 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
     """The JSON document of ``fcalc amplitudes`` for a block scene: its ``verdict`` is the
     amplitudes' alone; ``office`` lists the office checks' rows for information (``fcalc check``
     judges them, in its office check)."""
-    doc = resonance_document(report, scene, source, "amplitudes")
+    doc = resonance_document(report.resonance, scene, source, "amplitudes")
     doc.pop("verdict")
     motion = report.motion
     doc["resonant"] = report.resonant
@@ -192,73 +151,13 @@ def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
     return shown if shown == "0" else f"{shown} ∠{np.degrees(np.angle(value)):.0f}°"
 
 
-def _table(title: str, columns, right=()):
-    """A table whose ``title`` may name units in brackets (``[mm]``): kept as text, not read as markup."""
-    import re
-
-    from rich.table import Table
-
-    table = Table(title=re.sub(r"(?<!\\)\[([^\]\s]*)\]", r"\\[\1]", title), title_justify="left")
-    for col in columns:
-        table.add_column(col, justify="right" if col in right else "left")
-    return table
-
-
-def _print_modes(report: BlockReport, units: DisplayUnits) -> None:
-    out = stdout()
-    speed = units.label("speed")
-    static = report.modes.static
-    title = "Natural frequencies (6-DOF, undamped)"
-    columns = ["mode", "dominant motion", "Hz", speed, "damping ratio"]
-    if static is not None:
-        title += ": each mode with the soil's springs at its own frequency, beside the static springs'"
-        columns.append(f"static, {speed}")
-    t = _table(title, columns, columns[2:])
-    for j, p in enumerate(report.modes.frequencies):
-        t.add_row(str(j + 1), MOTION_NAMES[report.modes.dominant[j]], fmt(p / (2 * np.pi)), fmt(units.convert("speed", p)),
-                  fmt(report.modes.damping[j], 3), *(() if static is None else (fmt(units.convert("speed", static[j])),)))
-    out.print(t)
-
-
-def _speeds_line(report: BlockReport, scene, source: str, units: DisplayUnits) -> str:
-    from rich.markup import escape
-
-    speeds = ", ".join(f"{escape(n)} {units.show('speed', w)}" for n, w in report.speeds.items())
-    return f"[bold]{escape(scene.name or source)}[/]  machines: {speeds}; total mass {fmt(report.total_mass)} kg"
-
-
-def print_resonance(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
-    """Tables of ``fcalc resonance`` for a block scene: modes, then every order against every mode."""
-    from rich.markup import escape
-
-    out = stdout()
-    out.print(_speeds_line(report, scene, source, units), soft_wrap=True)
-    _print_modes(report, units)
-    speed = units.label("speed")
-    t = _table("Resonances: n ω of every machine against every mode (resonance rule)",
-               ("machine", "order", "mode", f"critical, {speed}", "margin", "needs", "forcing share", "status"),
-               (f"critical, {speed}", "margin", "needs", "forcing share"))
-    for r in report.resonance_rows:
-        t.add_row(escape(r.machine), str(r.order), f"{r.mode} ({r.motion})", fmt(units.convert("speed", r.critical)),
-                  f"{r.margin:.1%}", f"{r.required:.0%}", f"{r.share:.3g}" + ("" if r.judged else " (not judged)"),
-                  verdict_text(r.outcome.value, strict) if r.status != "information" else "info")
-    out.print(t)
-    print_soil_validity(report.soil_validity)
-    out.print(resonance_summary(report, strict), soft_wrap=True)
-
-
-def resonance_summary(report: BlockReport, strict: bool = False) -> str:
-    """One sentence on the resonance margins, naming the governing condition."""
-    return f"{verdict_text(report.resonance_outcome.value, strict)}: {resonance_text(report)}"
-
-
 def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
     """Tables of ``fcalc amplitudes`` for a block scene."""
     from rich.markup import escape
 
     out = stdout()
-    out.print(_speeds_line(report, scene, source, units), soft_wrap=True)
-    _print_modes(report, units)
+    out.print(speeds_line(report, scene, source, units), soft_wrap=True)
+    print_modes(report.modes, units)
     motion = report.motion
     if motion is None:
         out.print(f"{verdict_text('fail')}: a machine's order is resonant with an undamped mode: no steady state")
@@ -316,4 +215,4 @@ def print_office(report: BlockReport, strict: bool = False) -> None:
     stdout().print(t)
 
 
-__all__ = ["COMBINATION", "amplitudes_document", "office_document", "print_amplitudes", "print_resonance", "resonance_document", "resonance_summary"]
+__all__ = ["COMBINATION", "amplitudes_document", "office_document", "print_amplitudes"]

@@ -133,19 +133,18 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.runup import runup_document
 
         document = runup_document(report, scene, "")
+    elif check == "resonance":
+        from foundation_calc.output.resonance import resonance_document
+
+        document = resonance_document(report, scene, "")
     elif getattr(scene, "kind", "") == "block_foundation":
         from foundation_calc.output import block
 
-        document = {"resonance": block.resonance_document, "amplitudes": block.amplitudes_document,
-                    "office": block.office_document}[check](report, scene, "")
+        document = {"amplitudes": block.amplitudes_document, "office": block.office_document}[check](report, scene, "")
     elif check == "office":
         from foundation_calc.output.block import office_document
 
         document = office_document(report, scene, "")
-    elif check == "resonance":
-        from foundation_calc.output.crank_resonance import resonance_document
-
-        document = resonance_document(report, scene, "")
     elif check == "amplitudes":
         from foundation_calc.output.crank_amplitudes import amplitudes_document
 

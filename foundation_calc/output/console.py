@@ -143,3 +143,16 @@ def fmt_scaled(value: float, scale: float, digits: int = 5) -> str:
     ('0', '0', '3.1e-05')
     """
     return "0" if abs(value) < ROUNDOFF * abs(scale) else fmt(value, digits)
+
+
+def titled_table(title: str, columns, right=()):
+    """A rich table whose ``title`` may name units in brackets (``[mm]``): kept as text, not read
+    as markup; the ``right`` columns right-justified."""
+    import re
+
+    from rich.table import Table
+
+    table = Table(title=re.sub(r"(?<!\\)\[([^\]\s]*)\]", r"\\[\1]", title), title_justify="left")
+    for col in columns:
+        table.add_column(col, justify="right" if col in right else "left")
+    return table

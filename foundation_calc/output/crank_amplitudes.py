@@ -11,7 +11,7 @@ from rich.text import Text
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally, worst_rows
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.crank_resonance import rule_document
+from foundation_calc.output.resonance import rule_document
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import (
