@@ -87,7 +87,7 @@ def code_document(report: AmplitudeReport, limits) -> dict | None:
         "points": [
             {
                 "point": row.point,
-                "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
+                "velocity_rms": dict(zip(("horizontal", "vertical"), row.velocity)),
                 "displacement_rms": dict(zip(("horizontal", "vertical"), row.displacement)),
                 "quantity": row.judged.quantity,
                 "velocity_zone": row.judged.velocity_zone,
@@ -368,7 +368,7 @@ def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
     for row in rows:
         shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
         table.add_row(
-            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
+            Text(row.point), *(fmt(units.convert("velocity", v)) for v in row.velocity),
             fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.governing, row.table.foundation,
             row.zone,
             units.show(shown, row.limit), verdict_text(row.outcome.value),
