@@ -178,6 +178,25 @@ class AmplitudeReport:
         ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
         return amplitude_outcome(self.resonant, self.rows, self.code_rows, (*noted, *ranged))
 
+    # the names a block's report gives the same things, so that one finding and one document
+    # serve both kinds
+
+    @property
+    def amplitude_outcome(self) -> Outcome:
+        return self.outcome
+
+    @property
+    def limit_rows(self) -> tuple[LimitRow, ...]:
+        return self.rows
+
+    @property
+    def zone_rows(self) -> tuple[ZoneRow, ...]:
+        return self.code_rows
+
+    @property
+    def amplitude_range(self):
+        return self.modulus_range
+
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
 POINT_CHUNK = 1024
