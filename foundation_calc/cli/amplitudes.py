@@ -60,7 +60,7 @@ def amplitudes(
     elif loaded.kind == "block_foundation":
         from foundation_calc.output.block import print_amplitudes
 
-        print_amplitudes(result.report, loaded.model, loaded.source, shown, False)
+        print_amplitudes(result.report, loaded.model, loaded.source, shown, False, all_points)
     else:
         from foundation_calc.output.crank_amplitudes import print_amplitudes_report
 
