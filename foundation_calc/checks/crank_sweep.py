@@ -28,9 +28,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.limits import QUANTITIES, limited_quantities
 from foundation_calc.checks.resonance_rule import judge, required_detuning
-from foundation_calc.checks.sweep_status import STATUSES, row_verdicts
+from foundation_calc.checks.sweep_status import STATUSES, RowVerdicts, over_limits, row_verdicts
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -130,6 +130,12 @@ class SweepReport:
         """The displacement limit [m], or None."""
         return self.limits.get("displacement")
 
+    @property
+    def rows(self) -> RowVerdicts:
+        """The rows' verdicts as every kind's sweep gives them."""
+        return RowVerdicts(governing=self.governing, margin=self.margin, needed=self.needed,
+                           resonance_status=self.resonance_status, over_quantities=self.over_quantities, status=self.status)
+
 
 def _peaks(cos, sin):
     """:func:`peak` over the first axis in chunks of :data:`CHUNK`, so memory stays bounded."""
@@ -166,7 +172,7 @@ def _located(motion, omega, points, limits: dict):
                 located.update(zip(names[i : i + step], found))
             if key in limits:
                 largest[key] = np.maximum(largest[key], found.max(axis=(0, 2)))
-    return located, {key: exceeds(value, limits[key]) for key, value in largest.items()}
+    return located, over_limits(largest, limits)
 
 
 def _complex(coefficient):
