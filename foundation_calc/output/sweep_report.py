@@ -275,6 +275,12 @@ def joined_plot(first, kept):
     return replace(first, values=values, peaks=peaks, resonant=resonant)
 
 
+def operating(scene, variable: str) -> float:
+    """Where a crank scene's sweep marks the scene itself: its speed [rad/s] on a speed sweep, the
+    factor 1 on a soil sweep."""
+    return scene.speed.omega_rad_s if variable == "omega" else 1.0
+
+
 def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> None:
     """x, y peaks of C against the swept variable (log scale), the amplitude limit, and, as on the
     calculation sheet, the operating speed (or the scene's soil, factor 1) and the detuning band
@@ -318,6 +324,7 @@ __all__ = [
     "csv_text",
     "joined_plot",
     "limits_document",
+    "operating",
     "plot_sweep",
     "plotted",
     "print_sweep",
