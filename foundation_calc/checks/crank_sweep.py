@@ -95,9 +95,8 @@ class SweepReport:
     conditions : the resonance conditions checked: the mechanism's
         (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
-    over_limit : a peak of C (x, y) or of a point exceeds its limit (displacement, velocity or
-        acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
-    over_quantities : limited quantity -> where its peak exceeds the limit
+    over_quantities : limited quantity -> where a peak or RMS value of C (x, y) or of a point
+        exceeds its limit (:mod:`~foundation_calc.checks.limits`; ``over_limit``: any of them)
     status : one of :data:`STATUSES` per point
     harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
         [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
@@ -115,7 +114,6 @@ class SweepReport:
     needed: np.ndarray
     resonance_status: np.ndarray
     points: dict
-    over_limit: np.ndarray
     over_quantities: dict
     status: np.ndarray
     harmonics: dict
@@ -129,6 +127,11 @@ class SweepReport:
     def amplitude_limit(self) -> float | None:
         """The displacement limit [m], or None."""
         return self.limits.get("displacement")
+
+    @property
+    def over_limit(self) -> np.ndarray:
+        """Where a point exceeds any limit (bool (n,))."""
+        return self.rows.over_limit
 
     @property
     def rows(self) -> RowVerdicts:
@@ -251,7 +254,6 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
         resonance_status=rows.resonance_status,
         needed=rows.needed,
         points=located,
-        over_limit=rows.over_limit,
         over_quantities=over_quantities,
         status=rows.status,
         harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
@@ -361,8 +363,7 @@ def joined(parts: list[SweepReport]) -> SweepReport:
 
 
 #: The fields of :class:`SweepReport` that hold one value per point.
-_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status",
-                 "over_limit", "status")
+_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status", "status")
 
 
 def sweep(
