@@ -29,20 +29,11 @@ def amplitudes(scene, *, exact: bool = False) -> Result:
     SceneError
         An invalid scene, or a scene of another kind.
     """
+    from foundation_calc.checks.amplitudes import scene_amplitudes
     from foundation_calc.checks.outcomes import exit_code
+    from foundation_calc.output.amplitudes import amplitudes_document
 
     loaded = scene_of(scene, KINDS)
-    model = loaded.model
-    if loaded.kind == "block_foundation":
-        from foundation_calc.checks.block import check_block
-        from foundation_calc.output.block import amplitudes_document
-
-        report = check_block(model, periodic=True)
-        outcome = report.amplitude_outcome
-    else:
-        from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
-        from foundation_calc.output.crank_amplitudes import amplitudes_document
-
-        report = check_scene_amplitudes(model, exact=exact)
-        outcome = report.outcome
-    return command_result("amplitudes", amplitudes_document(report, model, loaded.source), exit_code(outcome), loaded, report)
+    report = scene_amplitudes(loaded.model, exact=exact)
+    document = amplitudes_document(report, loaded.model, loaded.source)
+    return command_result("amplitudes", document, exit_code(report.amplitude_outcome), loaded, report)

@@ -124,19 +124,13 @@ def chunks(planned: Plan):
 def swept(planned: Plan, report=None) -> "SweepResult":
     """The :class:`SweepResult` of a :class:`Plan`; ``report``: a crank sweep's report when the
     caller has joined its :func:`chunks` already."""
-    model, source = planned.scene.model, planned.scene.source
-    if planned.machine is not None:
-        from foundation_calc.checks.block_sweep import sweep_block
-        from foundation_calc.output.block_sweep import sweep_document
+    from foundation_calc.checks.sweep import scene_sweep
+    from foundation_calc.output.sweep import sweep_document
 
-        report = sweep_block(model, planned.machine, planned.values, planned.alone)
-        document = sweep_document(report, model, source, model.plausibility_warnings())
-    else:
-        from foundation_calc.checks.crank_sweep import joined
-        from foundation_calc.output.sweep_report import sweep_document
-
-        report = joined(list(chunks(planned))) if report is None else report
-        document = sweep_document(report, source, model.name, model.plausibility_warnings())
+    model = planned.scene.model
+    if report is None:
+        report = scene_sweep(model, planned.variable, planned.values, planned.machine, planned.alone)
+    document = sweep_document(report, model, planned.scene.source)
     result = command_result("sweep", document, 0, planned.scene, report)
     return SweepResult(**{name: getattr(result, name) for name in result.__dataclass_fields__}, variable=planned.variable)
 

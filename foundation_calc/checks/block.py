@@ -28,8 +28,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.codes import TABLES, CodeZone, JudgedRow, ZoneTable, application_warnings, point_zone, zone_outcome
-from foundation_calc.checks.limits import LimitRow, exceeds, limited_quantities
+from foundation_calc.checks import codes, limits as limit_check
+from foundation_calc.checks.codes import ZoneRow, code_warnings
+from foundation_calc.checks.limits import LimitRow, amplitude_outcome
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
@@ -42,28 +43,8 @@ from foundation_calc.solvers.block.response import (
     resonances,
     resonant,
 )
-from foundation_calc.units import rpm_from_omega
 
 DIRECTIONS = ("x", "y", "z")
-
-
-@dataclass(frozen=True)
-class ZoneRow(JudgedRow):
-    """A point's zone in a vibration code: its largest RMS velocity and its largest RMS displacement,
-    the more restrictive deciding (``judged`` says which; ``direction`` is that quantity's direction);
-    ``support``: the support class of x, y, z (:mod:`~foundation_calc.checks.support`), each
-    direction judged in its class's table (``table``: the governing one's)."""
-
-    point: str
-    direction: str
-    judged: CodeZone
-    outcome: Outcome
-    table: ZoneTable
-    support: tuple = ()
-
-    @property
-    def direction_text(self) -> str:
-        return self.direction
 
 
 @dataclass(frozen=True)
@@ -95,10 +76,8 @@ class BlockReport:
 
     @property
     def amplitude_outcome(self) -> Outcome:
-        ranged = [] if self.amplitude_range is None else [self.amplitude_range.outcome]
-        if self.resonant:
-            return Outcome.FAIL
-        return worst([r.outcome for r in self.limit_rows] + [r.outcome for r in self.zone_rows] + ranged)
+        ranged = () if self.amplitude_range is None else (self.amplitude_range.outcome,)
+        return amplitude_outcome(self.resonant, self.limit_rows, self.zone_rows, ranged)
 
     @property
     def office_outcome(self) -> Outcome:
@@ -132,33 +111,15 @@ LIMITED_VALUES = {
 
 
 def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
-    """Each limited quantity (peak or RMS displacement, velocity or acceleration) of every point and
-    direction, as the crank foundation's (:mod:`~foundation_calc.checks.limits`)."""
-    rows = []
-    for quantity, limit in limited_quantities(limits).items():
-        values = getattr(motion, LIMITED_VALUES[quantity])
-        for p, name in enumerate(motion.names):
-            for d, direction in enumerate(DIRECTIONS):
-                v = float(values[p, d])
-                rows.append(LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if exceeds(v, limit) else Outcome.PASS))
-    return tuple(rows)
+    """Each limited quantity of G and every point along x, y, z
+    (:func:`~foundation_calc.checks.limits.limit_rows`)."""
+    return limit_check.limit_rows(motion.names, DIRECTIONS, lambda quantity: getattr(motion, LIMITED_VALUES[quantity]), limits)
 
 
 def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
-    """The code zone of every point (none without ``[limits] code``): its largest RMS velocity and
-    its largest RMS displacement, the more restrictive deciding, each direction in the table of its
-    support class (``supports``: point name -> (x, y, z) classes,
-    :func:`~foundation_calc.checks.support.block_supports`)."""
-    if limits.code is None:
-        return ()
-    rows = []
-    for p, name in enumerate(motion.names):
-        v, x = motion.velocity_rms[p], motion.displacement_rms[p]
-        tables = [TABLES[limits.code, limits.machine_group, c.support] for c in supports[name]]
-        judged, table, d = point_zone(tables, [float(a) for a in v], [float(a) for a in x], limits.acceptable_zone)
-        rows.append(ZoneRow(name, DIRECTIONS[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table,
-                            supports[name]))
-    return tuple(rows)
+    """The code zone of G and every point (:func:`~foundation_calc.checks.codes.zone_rows`; ``supports``:
+    point name -> (x, y, z) classes, :func:`~foundation_calc.checks.support.block_supports`)."""
+    return codes.zone_rows(motion.names, DIRECTIONS, motion.velocity_rms, motion.displacement_rms, limits, supports)
 
 
 #: [scene, its report, the report with the machines' periodic solution (None until asked)]
@@ -246,18 +207,11 @@ def check_block_as_given(scene) -> BlockReport:
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
                                              impedance=impedance)
     limits = scene.limits
-    warnings, supports = (), None
+    supports = None
     if limits.code is not None:
         from foundation_calc.checks.support import block_supports
 
         supports = block_supports(scene, modes, model.cog)
-        table = TABLES[limits.code, limits.machine_group, "rigid"]  # the group's speed and power ranges
-        power = None if limits.machine_power is None else limits.machine_power / 1e3
-        found = []
-        for exc in excitations:
-            found += [f"{exc.name}: {w}" for w in application_warnings(table, rpm_from_omega(exc.omega), power) if "rpm" in w]
-        found += [w for w in application_warnings(table, rpm_from_omega(excitations[0].omega), power) if "rpm" not in w]
-        warnings = tuple(found)
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
@@ -266,7 +220,7 @@ def check_block_as_given(scene) -> BlockReport:
         motion=motion,
         limit_rows=() if motion is None else limit_rows(motion, limits),
         zone_rows=() if motion is None else zone_rows(motion, limits, supports),
-        code_warnings=warnings,
+        code_warnings=code_warnings(limits, [(exc.name, exc.omega) for exc in excitations]),
         office=office_rows(scene, model),
         total_mass=model.mass,
         cog=model.cog,

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.checks.sweep_status import RowVerdicts, row_verdicts
+from foundation_calc.checks.sweep_status import RowVerdicts, over_limits, row_verdicts
 
 
 @dataclass(frozen=True)
@@ -74,14 +74,6 @@ class BlockSweep:
     limits: dict
     detuning: object
 
-    def governing(self, i: int) -> str | None:
-        """The label of the condition that governs row ``i`` (None: none can decide)."""
-        g = int(self.rows.governing[i])
-        return None if g < 0 else self.conditions[g].label
-
-    def over_limits(self, i: int) -> list[str]:
-        """The limited quantities row ``i`` exceeds."""
-        return [q for q, mask in self.rows.over_quantities.items() if mask[i]]
 
 
 def _conditions(modes, excitations):
@@ -116,7 +108,7 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> BlockSweep:
     """Sweep machine ``swept`` (index into ``scene.machines``) of a ``block_foundation`` scene
     over the speeds ``omega`` [rad/s] (module docstring); ``alone``: leave the other machines out."""
     from foundation_calc.checks.block import LIMITED_VALUES, scene_modes
-    from foundation_calc.checks.limits import exceeds, limited_quantities
+    from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.checks.resonance_rule import judge, required_detuning
     from foundation_calc.solvers.block.sweep import speed_sweep
 
@@ -136,7 +128,7 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> BlockSweep:
     verdict = judge(margins, orders, share, required, np.zeros(orders.shape, dtype=bool))
     largest = {key: getattr(result, key).max(axis=1) for key in LIMITED_VALUES.values()}
     limits = limited_quantities(scene.limits)
-    over = {q: exceeds(largest[LIMITED_VALUES[q]], v).any(axis=-1) for q, v in limits.items()}
+    over = over_limits({q: largest[LIMITED_VALUES[q]] for q in limits}, limits)
     judged = verdict.judged[0]
     conditions = tuple(
         SweepCondition(label, name, n, critical, bool(judged[c]), bool(judged[c] or n == 1), float(required[c]))

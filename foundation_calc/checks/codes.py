@@ -307,6 +307,92 @@ def application_warnings(table: ZoneTable, speed_rpm: float, power_kw: float | N
     return found
 
 
-__all__ = ["CODES", "TABLES", "ZONES", "ZONE_CAVEAT", "CodeZone", "JudgedRow", "ZoneTable",
-           "application_warnings", "code_zone", "code_zone_index", "displacement_zone", "point_zone", "zone", "zone_index",
-           "zone_outcome", "zone_verdicts"]
+@dataclass(frozen=True)
+class ZoneRow(JudgedRow):
+    """A point's zone in a vibration code, for every scene kind: its largest RMS velocity and its
+    largest RMS displacement, the more restrictive deciding (``judged`` says which; ``direction``
+    is that quantity's direction, "horizontal"/"vertical" on a crank scene, x/y/z on a block).
+
+    ``velocity``, ``displacement``: the point's RMS velocity [m/s] and RMS displacement [m], one
+    per direction; ``support``: the support class of each direction
+    (:mod:`~foundation_calc.checks.support`), each direction judged in its class's table
+    (``table``: the governing one's); empty when the scene's ``limits.foundation`` judges them all.
+    """
+
+    point: str
+    direction: str
+    judged: CodeZone
+    outcome: Outcome
+    table: ZoneTable
+    support: tuple = ()
+    velocity: tuple = ()
+    displacement: tuple = ()
+
+    @property
+    def direction_text(self) -> str:
+        return self.direction
+
+    @property
+    def governing(self) -> str:
+        """The direction of the deciding quantity's larger value (:attr:`direction`)."""
+        return self.direction
+
+    @property
+    def quantity(self) -> str:
+        """``"r.m.s. velocity"`` or ``"r.m.s. displacement"``."""
+        return f"r.m.s. {self.judged.quantity}"
+
+
+def zone_rows(names, directions, velocity, displacement, limits, supports=None) -> tuple[ZoneRow, ...]:
+    """The code zone of every point, for every scene kind (none without ``[limits] code``): its
+    largest RMS velocity and its largest RMS displacement, the more restrictive deciding, each
+    direction in the table of its support class (:func:`point_zone`).
+
+    ``velocity``, ``displacement``: arrays (points, directions) [m/s, m]; ``supports``: point name
+    -> one :class:`~foundation_calc.checks.support.SupportClass` per direction, None for the
+    scene's ``limits.foundation`` everywhere.
+
+    Raises
+    ------
+    ValueError
+        neither ``supports`` nor ``limits.foundation``.
+    """
+    if getattr(limits, "code", None) is None:
+        return ()
+    if supports is None and limits.foundation is None:
+        raise ValueError("the code's support class: give limits.foundation or the classification from the modes")
+    rows = []
+    for name, v, x in zip(names, velocity.tolist(), displacement.tolist()):
+        classes = () if supports is None else supports[name]
+        kinds = [c.support for c in classes] or [limits.foundation] * len(directions)
+        tables = [TABLES[limits.code, limits.machine_group, kind] for kind in kinds]
+        judged, table, d = point_zone(tables, v, x, limits.acceptable_zone)
+        rows.append(ZoneRow(name, directions[d], judged, zone_outcome(judged.zone, limits.acceptable_zone), table,
+                            classes, tuple(v), tuple(x)))
+    return tuple(rows)
+
+
+def code_warnings(limits, speeds) -> tuple[str, ...]:
+    """Why the scene's code may not apply (:func:`application_warnings` of its group's speed and
+    power ranges, whatever the support), for every scene kind; none without a code.
+
+    ``speeds``: (label, ω [rad/s]) of every machine, the label (None: unnamed) before each one's
+    speed warning; the power's warnings once.
+    """
+    if getattr(limits, "code", None) is None:
+        return ()
+    from foundation_calc.units import rpm_from_omega
+
+    table = TABLES[limits.code, limits.machine_group, "rigid"]
+    power = None if limits.machine_power is None else limits.machine_power / 1e3
+    found = []
+    for label, omega in speeds:
+        found += [w if label is None else f"{label}: {w}"
+                  for w in application_warnings(table, rpm_from_omega(omega), power) if "rpm" in w]
+    found += [w for w in application_warnings(table, rpm_from_omega(speeds[0][1]), power) if "rpm" not in w]
+    return tuple(found)
+
+
+__all__ = ["CODES", "TABLES", "ZONES", "ZONE_CAVEAT", "CodeZone", "JudgedRow", "ZoneRow", "ZoneTable",
+           "application_warnings", "code_warnings", "code_zone", "code_zone_index", "displacement_zone", "point_zone", "zone", "zone_index",
+           "zone_outcome", "zone_rows", "zone_verdicts"]

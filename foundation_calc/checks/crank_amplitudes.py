@@ -28,17 +28,9 @@ from foundation_calc.checks.crank_resonance import (
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.codes import (
-    TABLES,
-    CodeZone,
-    JudgedRow,
-    ZoneTable,
-    application_warnings,
-    point_zone,
-    zone_outcome,
-)
-from foundation_calc.checks.limits import QUANTITIES, LimitRow, exceeds, limited_quantities
-from foundation_calc.checks.outcomes import Outcome, worst
+from foundation_calc.checks.codes import ZoneRow, code_warnings, zone_outcome, zone_rows
+from foundation_calc.checks.limits import QUANTITIES, LimitRow, amplitude_outcome, limit_rows
+from foundation_calc.checks.outcomes import Outcome
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
@@ -56,7 +48,6 @@ from foundation_calc.solvers.crank.response import (
     relative_error,
     superpose,
 )
-from foundation_calc.units import rpm_from_omega
 
 #: The detuning band of a check called without a scene's [limits] (the scene's default) [-].
 DEFAULT_DETUNING = 0.2
@@ -110,39 +101,6 @@ class Approximation:
 
 
 @dataclass(frozen=True)
-class CodeRow(JudgedRow):
-    """The zone of one point in a code's table.
-
-    ``horizontal``, ``vertical``: RMS velocity of the point in each direction [m/s];
-    ``displacement``: its RMS displacement (horizontal, vertical) [m]. The larger velocity and the
-    larger displacement give the zone, the more restrictive deciding (``judged``, which says which
-    quantity decides); ``governing``: the direction of the deciding quantity's larger value.
-    ``support``: the support class of each direction (:mod:`~foundation_calc.checks.support`); a
-    direction of another class is judged in its own table (:func:`~foundation_calc.checks.codes.point_zone`)
-    and ``table`` is the governing one's.
-    """
-
-    point: str
-    horizontal: float
-    vertical: float
-    displacement: tuple[float, float]
-    governing: str
-    judged: CodeZone
-    table: ZoneTable
-    outcome: Outcome
-    support: tuple = ()
-
-    @property
-    def direction_text(self) -> str:
-        return self.governing
-
-    @property
-    def quantity(self) -> str:
-        """``"r.m.s. velocity"`` or ``"r.m.s. displacement"``."""
-        return f"r.m.s. {self.judged.quantity}"
-
-
-@dataclass(frozen=True)
 class ExactInfo:
     """How the exact solution was reached; ``capped``: the solver's message when the harmonic cap
     left ``harmonic_change`` above its tolerance (the solution is then good to about that)."""
@@ -188,7 +146,7 @@ class AmplitudeReport:
     exact_info: ExactInfo | None
     errors: dict | None
     damping: Damping | None = None
-    code_rows: tuple[CodeRow, ...] = ()
+    code_rows: tuple[ZoneRow, ...] = ()
     code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
     resonance: ResonanceReport | None = None
@@ -214,11 +172,30 @@ class AmplitudeReport:
 
     @property
     def outcome(self) -> Outcome:
-        if self.resonant:
-            return Outcome.FAIL
+        """:func:`~foundation_calc.checks.limits.amplitude_outcome` of the checked approximation;
+        a code's warnings warn."""
         noted = (Outcome.WARN,) if self.code_warnings else ()
         ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
-        return worst((*(row.outcome for row in self.rows), *(row.outcome for row in self.code_rows), *noted, *ranged))
+        return amplitude_outcome(self.resonant, self.rows, self.code_rows, (*noted, *ranged))
+
+    # the names a block's report gives the same things, so that one finding and one document
+    # serve both kinds
+
+    @property
+    def amplitude_outcome(self) -> Outcome:
+        return self.outcome
+
+    @property
+    def limit_rows(self) -> tuple[LimitRow, ...]:
+        return self.rows
+
+    @property
+    def zone_rows(self) -> tuple[ZoneRow, ...]:
+        return self.code_rows
+
+    @property
+    def amplitude_range(self):
+        return self.modulus_range
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.
@@ -321,48 +298,27 @@ def _stacked(by_point: dict, quantity: str) -> np.ndarray:
 
 
 def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
+    """The limit rows of C and every point (:func:`~foundation_calc.checks.limits.limit_rows`)."""
     if approx.resonant:
         return ()
-    rows = []
-    for quantity, limit in limited_quantities(limits).items():
-        statistic, field = (approx.rms, quantity[:-4]) if quantity.endswith("_rms") else (approx.points, quantity)
-        values = _stacked(statistic, field)
-        over = exceeds(values, limit).tolist()
-        for name, value, fails in zip(statistic, values.tolist(), over):
-            rows += [
-                LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if f else Outcome.PASS)
-                for direction, v, f in zip(DIRECTIONS, value, fails)
-            ]
-    return tuple(rows)
+
+    def values(quantity):
+        return _stacked(approx.rms, quantity[:-4]) if quantity.endswith("_rms") else _stacked(approx.points, quantity)
+
+    return limit_rows(list(approx.points), DIRECTIONS, values, limits)
 
 
-def _code_rows(approx: Approximation, limits, omega: float, supports=None) -> tuple[tuple[CodeRow, ...], tuple[str, ...]]:
-    """Zone of every point's RMS velocity and RMS displacement in the scene's code table (the more
-    restrictive decides; each direction in the table of its support class, ``supports``: point
-    name -> (horizontal, vertical) :class:`~foundation_calc.checks.support.SupportClass`, as
-    :func:`scene_supports` gives them; None: the scene's ``limits.foundation`` everywhere), and why
-    the code may not apply."""
-    code = getattr(limits, "code", None)
-    if code is None:
-        return (), ()
-    group = limits.machine_group
-    power = None if limits.machine_power is None else limits.machine_power / 1e3
-    # the speed and power ranges are the group's, whatever the support
-    notes = tuple(application_warnings(TABLES[code, group, "rigid"], rpm_from_omega(omega), power))
+def _code_rows(approx: Approximation, limits, omega: float, supports=None) -> tuple[tuple[ZoneRow, ...], tuple[str, ...]]:
+    """Zone of every point's RMS velocity and RMS displacement in the scene's code table
+    (:func:`~foundation_calc.checks.codes.zone_rows`; ``supports``: point name -> (horizontal,
+    vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports`
+    gives them; None: the scene's ``limits.foundation`` everywhere), and why the code may not apply."""
+    notes = code_warnings(limits, [(None, omega)])
     if approx.resonant:
         return (), notes
-    if supports is None and limits.foundation is None:
-        raise ValueError("the code's support class: give limits.foundation or the classification from the modes")
-    rows = []
-    for name, values in approx.rms.items():
-        horizontal, vertical = (float(v) for v in values.velocity)
-        displacement = tuple(float(x) for x in values.displacement)
-        classes = () if supports is None else supports[name]
-        tables = [TABLES[code, group, kind] for kind in [c.support for c in classes] or [limits.foundation] * 2]
-        judged, table, d = point_zone(tables, (horizontal, vertical), displacement, limits.acceptable_zone)
-        rows.append(CodeRow(name, horizontal, vertical, displacement, DIRECTIONS[d], judged, table,
-                            zone_outcome(judged.zone, limits.acceptable_zone), classes))
-    return tuple(rows), notes
+    rows = zone_rows(list(approx.rms), DIRECTIONS, _stacked(approx.rms, "velocity"), _stacked(approx.rms, "displacement"),
+                     limits, supports)
+    return rows, notes
 
 
 def scene_supports(scene):
@@ -528,10 +484,10 @@ __all__ = [
     "RESONANT_MARGIN",
     "AmplitudeReport",
     "Approximation",
-    "CodeRow",
     "Damping",
     "LimitRow",
     "VendorLoads",
+    "ZoneRow",
     "check_amplitudes",
     "check_scene_amplitudes",
     "scene_supports",

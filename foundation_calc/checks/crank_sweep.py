@@ -28,9 +28,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
-from foundation_calc.checks.limits import QUANTITIES, exceeds, limited_quantities
+from foundation_calc.checks.limits import QUANTITIES, limited_quantities
 from foundation_calc.checks.resonance_rule import judge, required_detuning
-from foundation_calc.checks.sweep_status import STATUSES, row_verdicts
+from foundation_calc.checks.sweep_status import STATUSES, RowVerdicts, over_limits, row_verdicts
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -95,9 +95,8 @@ class SweepReport:
     conditions : the resonance conditions checked: the mechanism's
         (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
     points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
-    over_limit : a peak of C (x, y) or of a point exceeds its limit (displacement, velocity or
-        acceleration, whichever the scene limits; :mod:`~foundation_calc.checks.limits`)
-    over_quantities : limited quantity -> where its peak exceeds the limit
+    over_quantities : limited quantity -> where a peak or RMS value of C (x, y) or of a point
+        exceeds its limit (:mod:`~foundation_calc.checks.limits`; ``over_limit``: any of them)
     status : one of :data:`STATUSES` per point
     harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
         [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
@@ -115,7 +114,6 @@ class SweepReport:
     needed: np.ndarray
     resonance_status: np.ndarray
     points: dict
-    over_limit: np.ndarray
     over_quantities: dict
     status: np.ndarray
     harmonics: dict
@@ -129,6 +127,17 @@ class SweepReport:
     def amplitude_limit(self) -> float | None:
         """The displacement limit [m], or None."""
         return self.limits.get("displacement")
+
+    @property
+    def over_limit(self) -> np.ndarray:
+        """Where a point exceeds any limit (bool (n,))."""
+        return self.rows.over_limit
+
+    @property
+    def rows(self) -> RowVerdicts:
+        """The rows' verdicts as every kind's sweep gives them."""
+        return RowVerdicts(governing=self.governing, margin=self.margin, needed=self.needed,
+                           resonance_status=self.resonance_status, over_quantities=self.over_quantities, status=self.status)
 
 
 def _peaks(cos, sin):
@@ -166,7 +175,7 @@ def _located(motion, omega, points, limits: dict):
                 located.update(zip(names[i : i + step], found))
             if key in limits:
                 largest[key] = np.maximum(largest[key], found.max(axis=(0, 2)))
-    return located, {key: exceeds(value, limits[key]) for key, value in largest.items()}
+    return located, over_limits(largest, limits)
 
 
 def _complex(coefficient):
@@ -245,7 +254,6 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
         resonance_status=rows.resonance_status,
         needed=rows.needed,
         points=located,
-        over_limit=rows.over_limit,
         over_quantities=over_quantities,
         status=rows.status,
         harmonics={f"{dof}{n}": _complex(motion.coefficient(dof, n)) for dof, n in HARMONICS},
@@ -355,8 +363,7 @@ def joined(parts: list[SweepReport]) -> SweepReport:
 
 
 #: The fields of :class:`SweepReport` that hold one value per point.
-_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status",
-                 "over_limit", "status")
+_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status", "status")
 
 
 def sweep(

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.checks.outcomes import Outcome, worst
 
 #: Peak quantities a limit may bound, with the scene's ``[limits]`` key of each [m, m/s, m/s²].
 QUANTITIES = {"displacement": "amplitude", "velocity": "velocity", "acceleration": "acceleration"}
@@ -70,3 +70,36 @@ class LimitRow:
     @property
     def source(self) -> str:
         return f"scene [limits] {limit_key(self.quantity)}"
+
+
+def limit_rows(names, directions, values, limits) -> tuple[LimitRow, ...]:
+    """Every limited quantity of every point and direction against its limit, for every scene kind
+    (the crank's C and points in horizontal, vertical; the block's G and points in x, y, z): rows
+    quantity by quantity, then point by point, then direction.
+
+    ``values``: limited quantity -> its values, an array (points, directions) in SI units, called
+    only for the quantities ``limits`` bounds.
+
+    >>> import numpy as np
+    >>> from types import SimpleNamespace
+    >>> rows = limit_rows(["C"], ("x", "y"), lambda q: np.array([[1e-4, 3e-4]]), SimpleNamespace(amplitude=2e-4))
+    >>> [(r.direction, r.outcome.value) for r in rows]
+    [('x', 'pass'), ('y', 'fail')]
+    """
+    rows = []
+    for quantity, limit in limited_quantities(limits).items():
+        array = values(quantity)
+        over = exceeds(array, limit).tolist()
+        for name, value, fails in zip(names, array.tolist(), over):
+            rows += [LimitRow(name, direction, quantity, v, limit, Outcome.FAIL if f else Outcome.PASS)
+                     for direction, v, f in zip(directions, value, fails)]
+    return tuple(rows)
+
+
+def amplitude_outcome(resonant: bool, rows, zone_rows, others=()) -> Outcome:
+    """The verdict of the amplitudes of every scene kind: FAIL without a steady state (``resonant``),
+    else the worst of the limit rows, the code's zone rows and ``others`` (outcomes: a code's
+    warnings, the soil's modulus range)."""
+    if resonant:
+        return Outcome.FAIL
+    return worst((*(row.outcome for row in rows), *(row.outcome for row in zone_rows), *others))

@@ -119,55 +119,75 @@ def resonance(scene) -> Finding:
     return Finding("resonance", report.outcome, reason + noted, values, report, details + notes)
 
 
-def crank_amplitudes(scene) -> Finding:
-    """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
-    zones of a vibration code (``fcalc amplitudes``)."""
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+def amplitudes_finding(report, values: dict, resonant: Reason, statement: str | None = None,
+                       itemised: bool = False) -> Finding:
+    """The amplitude check of every scene kind: its limit rows, code zones, code warnings and soil
+    range (a report with ``limit_rows``, ``zone_rows``, ``code_warnings``, ``amplitude_range``,
+    ``soil_validity``, ``resonant`` and ``amplitude_outcome``) as a finding.
+
+    ``values``: the finding's values before the judged ones; ``resonant``: the reason without a
+    steady state; ``statement``: the resonance rule's verdict, said after the limits. ``itemised``
+    (the crank's wording, kept as CI scripts read it): the count of values over their limits, the
+    worst zone's values, a detail line per zone and the code's warnings in the reason.
+    """
     from foundation_calc.checks.governing import tally
     from foundation_calc.checks.limits import display_quantity
 
-    report = check_scene_amplitudes(scene)
-    approx = report.approximations[report.checked]
-    speed = ("speed", report.omega)
-    values = {"speed": speed}
+    values = dict(values)
+    rows, zones = report.limit_rows, report.zone_rows
     if report.resonant:
-        reason = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state",)
-    elif not report.rows and not report.code_rows:
+        reason = resonant
+    elif not rows and not zones:
         reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
         reason = ()
-        if report.rows:
-            top = max(report.rows, key=lambda row: row.ratio)
+        if rows:
+            top = max(rows, key=lambda row: row.ratio)
             quantity = display_quantity(top.quantity)
             values |= {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
             reason = (
                 f"largest {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
                 " of the limit ", values["limit"],
             )
-            count = tally(report.rows)
-            if count.failed_rows > 1:
+            count = tally(rows)
+            if itemised and count.failed_rows > 1:
                 reason += (f"; {count.failed_rows} of {count.rows} values over their limits, at {count.failed_points} point{'s' * (count.failed_points != 1)}",)
-        if report.code_rows:
-            worst_zone = max(report.code_rows, key=lambda row: row.ratio)
-            values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
+        if zones:
+            worst_zone = max(zones, key=lambda row: row.ratio)
+            if itemised:
+                values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
-        if report.resonance is not None:
-            reason += (f"; {report.resonance.statement}",)
-    if report.code_warnings:
+        if statement is not None:
+            reason += (f"; {statement}",)
+    if itemised and report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
-    if report.modulus_range is not None:
-        reason += (f"; {report.modulus_range.text}",)
+    if report.amplitude_range is not None:
+        reason += (f"; {report.amplitude_range.text}",)
     details = tuple(
         f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
         f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
-        for row in report.rows
-    ) + tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in report.code_rows)
-    details += support_details(report.code_rows) + zone_notes(report.code_rows)
-    details += tuple(f"WARN {warning}" for warning in report.code_warnings)
-    if report.modulus_range is not None:
-        details += report.modulus_range.details()
+        for row in rows
+    )
+    if itemised:
+        details += tuple(f"{row.outcome.value.upper()} {row.point}: {row.verdict_text} ({row.table.clause})" for row in zones)
+    details += support_details(zones) + zone_notes(zones) + tuple(f"WARN {warning}" for warning in report.code_warnings)
+    if report.amplitude_range is not None:
+        details += report.amplitude_range.details()
     noted, notes = soil_notes(report.soil_validity)
-    return Finding("amplitudes", report.outcome, reason + noted, values, report, details + notes)
+    return Finding("amplitudes", report.amplitude_outcome, reason + noted, values, report, details + notes)
+
+
+def crank_amplitudes(scene) -> Finding:
+    """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
+    zones of a vibration code (``fcalc amplitudes``)."""
+    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+
+    report = check_scene_amplitudes(scene)
+    approx = report.approximations[report.checked]
+    speed = ("speed", report.omega)
+    resonant = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state",)
+    statement = None if report.resonance is None else report.resonance.statement
+    return amplitudes_finding(report, {"speed": speed}, resonant, statement, itemised=True)
 
 
 def platform_design(scene) -> Finding:
@@ -224,36 +244,9 @@ def runup(scene) -> Finding | None:
 def block_amplitudes(scene) -> Finding:
     """Damped steady state of the block's points against [limits] and a vibration code (``fcalc amplitudes``)."""
     from foundation_calc.checks.block import check_block
-    from foundation_calc.checks.limits import display_quantity
 
-    report = check_block(scene, periodic=True)
-    values: dict = {}
-    if report.resonant:
-        reason: Reason = ("an order is resonant with an undamped mode: no steady state",)
-    elif not report.limit_rows and not report.zone_rows:
-        reason = ("no amplitude, velocity or acceleration limit in [limits]",)
-    else:
-        reason = ()
-        if report.limit_rows:
-            top = max(report.limit_rows, key=lambda row: row.ratio)
-            quantity = display_quantity(top.quantity)
-            values = {"peak": (quantity, top.value), "limit": (quantity, top.limit)}
-            reason = (f"largest {top.quantity} ", values["peak"], f" at {top.point} ({top.direction}) is {top.ratio:.0%}"
-                      " of the limit ", values["limit"])
-        if report.zone_rows:
-            worst_zone = max(report.zone_rows, key=lambda row: row.ratio)
-            reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
-    if report.amplitude_range is not None:
-        reason += (f"; {report.amplitude_range.text}",)
-    details = tuple(
-        f"{row.outcome.value.upper()} {row.point} {row.direction} {row.quantity}: {row.value:.4g}"
-        f" {'<=' if row.outcome is Outcome.PASS else '>'} {row.limit:.4g} [SI] ({row.source})"
-        for row in report.limit_rows
-    ) + support_details(report.zone_rows) + zone_notes(report.zone_rows) + tuple(f"WARN {warning}" for warning in report.code_warnings)
-    if report.amplitude_range is not None:
-        details += report.amplitude_range.details()
-    noted, notes = soil_notes(report.soil_validity)
-    return Finding("amplitudes", report.amplitude_outcome, reason + noted, values, report, details + notes)
+    return amplitudes_finding(check_block(scene, periodic=True), {},
+                              ("an order is resonant with an undamped mode: no steady state",))
 
 
 def crank_office(scene) -> Finding | None:

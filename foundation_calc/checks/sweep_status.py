@@ -50,6 +50,33 @@ class RowVerdicts:
             over = over | mask
         return over
 
+    def condition(self, i: int, conditions) -> str | None:
+        """The label of the condition that governs row ``i`` (one of ``conditions``, each with a
+        ``label``; None: none can decide)."""
+        g = int(self.governing[i])
+        return None if g < 0 else conditions[g].label
+
+    def over_limits(self, i: int) -> list[str]:
+        """The limited quantities row ``i`` exceeds."""
+        return [q for q, mask in self.over_quantities.items() if mask[i]]
+
+
+def over_limits(largest: dict, limits: dict) -> dict:
+    """Limited quantity -> where a row exceeds its limit (bool (n,)), for every kind's sweep:
+    ``largest``: quantity -> the row's values (n,) or (n, directions), over every point [SI];
+    ``limits``: quantity -> limit (:func:`~foundation_calc.checks.limits.limited_quantities`).
+
+    >>> over_limits({"displacement": np.array([[1.0, 3.0], [1.0, 1.0]])}, {"displacement": 2.0})["displacement"].tolist()
+    [True, False]
+    """
+    from foundation_calc.checks.limits import exceeds
+
+    found = {}
+    for quantity, limit in limits.items():
+        over = np.asarray(exceeds(largest[quantity], limit), dtype=bool)
+        found[quantity] = over.reshape(over.shape[0], -1).any(axis=-1)
+    return found
+
 
 def row_verdicts(margins, verdict: Judgement, over_quantities: dict, resonant=None) -> RowVerdicts:
     """Each row's governing condition and status from the ``margins`` of its conditions (n, C) [-]
@@ -105,4 +132,4 @@ def status_text(status: str, condition: str | None, margin: float, needed: float
     return f"{status}: " + "; ".join(causes) if causes else status
 
 
-__all__ = ["STATUSES", "RowVerdicts", "row_verdicts", "status_text"]
+__all__ = ["STATUSES", "RowVerdicts", "over_limits", "row_verdicts", "status_text"]

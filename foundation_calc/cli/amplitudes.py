@@ -57,12 +57,8 @@ def amplitudes(
         from foundation_calc.output.console import print_json
 
         print_json(result.document)
-    elif loaded.kind == "block_foundation":
-        from foundation_calc.output.block import print_amplitudes
-
-        print_amplitudes(result.report, loaded.model, loaded.source, shown, False)
     else:
-        from foundation_calc.output.crank_amplitudes import print_amplitudes_report
+        from foundation_calc.output.amplitudes import print_amplitudes
 
-        print_amplitudes_report(result.report, loaded.model, loaded.source, shown, all_points)
+        print_amplitudes(result.report, loaded.model, loaded.source, shown, all_points)
     raise typer.Exit(result.exit_code)

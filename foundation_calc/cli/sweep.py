@@ -87,37 +87,11 @@ def sweep(
 
         shown = replace(shown, speed=planned.unit)  # the table speaks the unit the sweep was given in
     name = loaded.name or loaded.source
-    if planned.machine is not None:
-        _block(swept(planned), csv, plot, json, shown, name)
-        return
-    operating = loaded.model.speed.omega_rad_s if planned.variable == "omega" else 1.0
-    if csv is not None and not json and len(planned.values) > TABLE_ROWS_WITH_CSV:
-        _stream_csv(chunks(planned), csv, plot, operating, shown, name, len(planned.values))
+    if planned.machine is None and csv is not None and not json and len(planned.values) > TABLE_ROWS_WITH_CSV:
+        _stream_csv(chunks(planned), csv, plot, loaded.model, shown, name, len(planned.values))
         return
     result = swept(planned)
-    from foundation_calc.output import sweep_report as report_out
-
-    if csv is not None:
-        from foundation_calc.output.files import write_chunks_atomically
-
-        with writing(csv, "--csv"):
-            write_chunks_atomically(csv, (report_out.csv_header(result.report), report_out.csv_rows(result.report)))
-    if plot is not None:
-        with writing(plot, "--plot"):
-            report_out.plot_sweep(result.report, plot, shown, name, operating)
-    if json:
-        from foundation_calc.output.console import print_json
-
-        print_json(result.document)
-    else:
-        report_out.print_sweep(result.report, loaded.source, loaded.model.name, shown)
-
-
-def _block(result, csv: Path | None, plot: Path | None, json: bool, shown, name: str) -> None:
-    """Write and print a block's sweep ``result``: the ``csv`` and ``plot`` files if asked, then
-    the JSON document or the table."""
-    from foundation_calc.api.options import writing
-    from foundation_calc.output import block_sweep as out
+    from foundation_calc.output import sweep as out
 
     if csv is not None:
         from foundation_calc.output.files import write_chunks_atomically
@@ -126,18 +100,18 @@ def _block(result, csv: Path | None, plot: Path | None, json: bool, shown, name:
             write_chunks_atomically(csv, (out.sweep_csv(result.report),))
     if plot is not None:
         with writing(plot, "--plot"):
-            out.plot_sweep(result.report, plot, shown, name)
+            out.plot_sweep(result.report, loaded.model, plot, shown, name)
     if json:
         from foundation_calc.output.console import print_json
 
         print_json(result.document)
     else:
-        out.print_sweep(result.report, result.scene.model, result.scene.source, shown)
+        out.print_sweep(result.report, loaded.model, loaded.source, shown)
 
 
-def _stream_csv(chunks, csv: Path, plot, operating: float, shown, name: str, count: int) -> None:
-    """Write a long sweep to ``csv`` chunk by chunk (memory: one chunk, and 3 numbers a point for
-    ``plot``), then print a summary of its statuses."""
+def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) -> None:
+    """Write a long sweep of a crank ``scene`` to ``csv`` chunk by chunk (memory: one chunk, and 3
+    numbers a point for ``plot``), then print a summary of its statuses."""
     from collections import Counter
 
     from foundation_calc.api.options import writing
@@ -160,5 +134,6 @@ def _stream_csv(chunks, csv: Path, plot, operating: float, shown, name: str, cou
         write_chunks_atomically(csv, texts())
     if plot is not None:
         with writing(plot, "--plot"):
-            report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name, operating)
+            report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name,
+                                  report_out.operating(scene, first[0].variable))
     report_out.print_sweep_summary(count, statuses, first[0], str(csv), shown)

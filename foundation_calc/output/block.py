@@ -6,17 +6,11 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport
-from foundation_calc.checks.limits import display_quantity
 from foundation_calc.output.console import fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.notes import (
-    point_support_document,
-    print_soil_validity,
-    print_supports,
-    soil_validity_document,
-    support_document,
-)
+from foundation_calc.output.limits import ALL_POINTS_UP_TO, code_document, limits_document, limits_table, zones_table
+from foundation_calc.output.notes import print_soil_validity, print_supports
 from foundation_calc.output.resonance import print_modes, resonance_document, speeds_line
 from foundation_calc.units import speed_triplet
 
@@ -77,26 +71,8 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
             for i, (p, at) in enumerate(zip(motion.names, [report.cog] + [pt.at for pt in scene.points]))
         }
         doc["rotation_peak"] = dict(zip(("rx", "ry", "rz"), map(float, motion.rotation_peak)))
-    doc["limits"] = [
-        {"point": r.point, "direction": r.direction, "quantity": r.quantity, "value": r.value, "limit": r.limit,
-         "ratio": r.ratio, "verdict": r.outcome.value, "source": r.source}
-        for r in report.limit_rows
-    ]
-    limits = scene.limits
-    doc["code"] = None if limits.code is None else {
-        "code": limits.code, "machine_group": limits.machine_group, "foundation": limits.foundation,
-        "acceptable_zone": limits.acceptable_zone,
-        "clause": report.zone_rows[0].table.clause if report.zone_rows else None,
-        **support_document(limits, report.zone_rows),
-        "points": [
-            {"point": z.point, "quantity": z.judged.quantity, "governing": z.direction, "value": z.value,
-             "velocity_zone": z.judged.velocity_zone, "displacement_zone": z.judged.displacement_zone,
-             "zone": z.zone, "limit": z.limit, "ratio": z.ratio, "verdict": z.outcome.value, "reason": z.verdict_text,
-             **point_support_document(z)}
-            for z in report.zone_rows
-        ],
-        "warnings": list(report.code_warnings),
-    }
+    doc["limits"] = limits_document(report.limit_rows)
+    doc["code"] = code_document(scene.limits, report.zone_rows, report.code_warnings)
     doc["office"] = _office(report)
     doc["modulus_range"] = None if report.amplitude_range is None else report.amplitude_range.document()
     doc["periodic_inertia"] = [_periodic_document(c, motion.names) for c in report.periodic]
@@ -151,8 +127,11 @@ def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
     return shown if shown == "0" else f"{shown} ∠{np.degrees(np.angle(value)):.0f}°"
 
 
-def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool) -> None:
-    """Tables of ``fcalc amplitudes`` for a block scene."""
+def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnits, strict: bool,
+                     all_points: bool = False) -> None:
+    """Tables of ``fcalc amplitudes`` for a block scene; with more than
+    :data:`~foundation_calc.output.limits.ALL_POINTS_UP_TO` points (and not ``all_points``) the
+    limits table shows the largest value/limit ratios."""
     from rich.markup import escape
 
     out = stdout()
@@ -183,17 +162,10 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
         col.justify = "right"
     out.print(t)
     if report.limit_rows:
-        lim = _table("Limits", ("point", "direction", "quantity", "value", "limit", "ratio", "verdict"), ("value", "limit", "ratio"))
-        for r in report.limit_rows:
-            q = display_quantity(r.quantity)
-            lim.add_row(escape(r.point), r.direction, r.quantity, units.show(q, r.value, 4), units.show(q, r.limit, 4),
-                        f"{r.ratio:.3f}", verdict_text(r.outcome.value, strict))
-        out.print(lim)
+        out.print(limits_table(report.limit_rows, units, "Limits",
+                               not all_points and len(motion.names) - 1 > ALL_POINTS_UP_TO, strict))
     if report.zone_rows:
-        z = _table("Zones of the RMS velocity and displacement (the more restrictive decides)", ("point", "zone", "verdict"))
-        for r in report.zone_rows:
-            z.add_row(escape(r.point), r.verdict_text, verdict_text(r.outcome.value, strict))
-        out.print(z)
+        out.print(zones_table(report.zone_rows, units, DIRECTIONS, strict))
         print_supports(report.zone_rows)
     print_periodic_inertia(report, units)
     for w in report.code_warnings:

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.sweep_status import status_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
+from foundation_calc.output.sweep_report import STATUS_STYLE, csv_cell, csv_text, limits_document, status_text, verdict, verdict_cells
 
 #: The largest values over G and the points a row gives, by key: (JSON/CSV name, SI unit in the CSV).
 VALUES = {"peak": ("peak", "m"), "velocity_peak": ("velocity_peak", "m_s"), "displacement_rms": ("displacement_rms", "m"),
@@ -22,23 +22,12 @@ def _others(sweep) -> str:
 
 def _rows(sweep):
     """One dict per speed, SI units."""
-    for i, w in enumerate(sweep.omega):
+    for i, (w, verdict_of) in enumerate(zip(sweep.omega, verdict_cells(sweep))):
         yield {
             "omega": float(w),
             **{key: dict(zip("xyz", map(float, getattr(sweep, key)[i]))) for key in VALUES},
-            "governing_condition": sweep.governing(i),
-            "resonance_status": str(sweep.rows.resonance_status[i]),
-            "margin": float(sweep.rows.margin[i]),
-            "needed": float(sweep.rows.needed[i]),
-            "over_limit": bool(sweep.rows.over_limit[i]),
-            "over_limits": sweep.over_limits(i),
-            "status": str(sweep.rows.status[i]),
+            **verdict_of,
         }
-
-
-def _text(row: dict) -> str:
-    return status_text(row["status"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
-                       row["over_limits"])
 
 
 def _critical(sweep, lo: float, hi: float):
@@ -48,16 +37,13 @@ def _critical(sweep, lo: float, hi: float):
 
 def sweep_document(sweep, scene, source: str, warnings=()) -> dict:
     """JSON of a block sweep (SI)."""
-    from foundation_calc.output.sweep_report import verdict
-
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "sweep",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
         "machine": sweep.machine,
         "others": "left out" if sweep.alone else "at their own speeds",
-        "limits": {**sweep.limits, "detuning": ({str(k): v for k, v in sweep.detuning.items()}
-                                                if isinstance(sweep.detuning, dict) else sweep.detuning)},
+        "limits": limits_document(sweep.limits, sweep.detuning),
         "critical_speeds": [{"condition": c.label, "order": c.order, "omega": c.critical, "judged": c.judged,
                              "band": c.band if c.judged else 0.0} for c in _critical(sweep, sweep.omega.min(), sweep.omega.max())],
         "points": list(_rows(sweep)),
@@ -71,7 +57,6 @@ def print_sweep(sweep, scene, source: str, units) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    from foundation_calc.output.sweep_report import STATUS_STYLE
 
     amp, vel, speed = units.label("amplitude"), units.label("velocity"), units.label("speed")
     table = Table(title=f"{escape(scene.name or source)}: sweep of {escape(sweep.machine)}'s speed ({_others(sweep)};"
@@ -82,7 +67,7 @@ def print_sweep(sweep, scene, source: str, units) -> None:
     for i, row in enumerate(_rows(sweep)):
         table.add_row(fmt(units.convert("speed", row["omega"])), *(fmt(units.convert("amplitude", v), 4) for v in sweep.peak[i]),
                       fmt(units.convert("velocity", float(sweep.velocity_rms[i].max())), 4),
-                      f"[{STATUS_STYLE[row['status']]}]{escape(_text(row))}[/]")
+                      f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
     stdout().print(table)
 
 
@@ -94,13 +79,12 @@ def _header() -> list[str]:
 
 def sweep_csv(sweep) -> str:
     """The rows as CSV text (SI units, the speed also in Hz and rpm; cells as the crank sweep writes them)."""
-    from foundation_calc.output.sweep_report import _cell, _csv_text
     from foundation_calc.units import hz_from_omega, rpm_from_omega
 
-    lines = [[_cell(c) for c in (r["omega"], hz_from_omega(r["omega"]), rpm_from_omega(r["omega"]),
+    lines = [[csv_cell(c) for c in (r["omega"], hz_from_omega(r["omega"]), rpm_from_omega(r["omega"]),
                                  *(r[key][d] for key in VALUES for d in "xyz"), r["governing_condition"], r["margin"],
                                  r["needed"], r["resonance_status"], r["over_limit"], r["status"])] for r in _rows(sweep)]
-    return _csv_text([_header(), *lines])
+    return csv_text([_header(), *lines])
 
 
 def plot_sweep(sweep, path, units, name: str) -> None:

@@ -137,18 +137,14 @@ def result_document(check: str, report, scene) -> dict:
         from foundation_calc.output.resonance import resonance_document
 
         document = resonance_document(report, scene, "")
-    elif getattr(scene, "kind", "") == "block_foundation":
-        from foundation_calc.output import block
+    elif check == "amplitudes":
+        from foundation_calc.output.amplitudes import amplitudes_document
 
-        document = {"amplitudes": block.amplitudes_document, "office": block.office_document}[check](report, scene, "")
+        document = amplitudes_document(report, scene, "")
     elif check == "office":
         from foundation_calc.output.block import office_document
 
         document = office_document(report, scene, "")
-    elif check == "amplitudes":
-        from foundation_calc.output.crank_amplitudes import amplitudes_document
-
-        document = amplitudes_document(report, scene, "")
     else:
         from foundation_calc.output.platform import platform_document
 

@@ -9,18 +9,19 @@ from rich.table import Table
 from rich.text import Text
 
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
-from foundation_calc.checks.governing import governing_points, tally, worst_rows
-from foundation_calc.checks.limits import display_quantity
+from foundation_calc.checks.governing import governing_points, tally
 from foundation_calc.output.resonance import rule_document
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.notes import (
-    point_support_document,
-    print_soil_validity,
-    print_supports,
-    soil_validity_document,
-    support_document,
+from foundation_calc.output.limits import (
+    ALL_POINTS_UP_TO,
+    EVERY_ROW,
+    code_document,
+    limits_document,
+    limits_table,
+    zones_table,
 )
+from foundation_calc.output.notes import print_soil_validity, print_supports, soil_validity_document
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
@@ -67,44 +68,6 @@ def _approximation_document(approx: Approximation, harmonics: int = 5) -> dict:
         values = {q: getattr(rm, q).tolist() for q in QUANTITIES}
         doc["points_rms"][name] = {d: {q: values[q][i] for q in QUANTITIES} for i, d in enumerate(DIRECTIONS)}
     return doc
-
-
-def code_document(report: AmplitudeReport, limits) -> dict | None:
-    """The ``code`` part of the JSON documents: the table used, its zones per point, warnings."""
-    if getattr(limits, "code", None) is None:
-        return None
-    rows = report.code_rows
-    table = rows[0].table if rows else None
-    return {
-        "code": limits.code,
-        "machine_group": limits.machine_group,
-        "foundation": limits.foundation,
-        "acceptable_zone": limits.acceptable_zone,
-        "clause": table.clause if table else None,
-        "boundaries": dict(zip(("A/B", "B/C", "C/D"), table.boundaries)) if table else None,
-        "displacement_boundaries": dict(zip(("A/B", "B/C", "C/D"), table.displacement_boundaries)) if table else None,
-        **support_document(limits, rows),
-        "points": [
-            {
-                "point": row.point,
-                "velocity_rms": {"horizontal": row.horizontal, "vertical": row.vertical},
-                "displacement_rms": dict(zip(("horizontal", "vertical"), row.displacement)),
-                "quantity": row.judged.quantity,
-                "velocity_zone": row.judged.velocity_zone,
-                "displacement_zone": row.judged.displacement_zone,
-                "governing": row.governing,
-                "value": row.value,
-                "zone": row.zone,
-                "limit": row.limit,
-                "ratio": row.ratio,
-                "verdict": row.outcome.value,
-                "reason": row.verdict_text,
-                **point_support_document(row),
-            }
-            for row in rows
-        ],
-        "warnings": list(report.code_warnings),
-    }
 
 
 def loads_document(vendor) -> dict:
@@ -155,20 +118,8 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         },
         "checked_with": report.checked,
         "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
-        "limits": [
-            {
-                "point": row.point,
-                "direction": row.direction,
-                "quantity": row.quantity,
-                "value": row.value,
-                "limit": row.limit,
-                "ratio": row.ratio,
-                "verdict": row.outcome.value,
-                "source": row.source,
-            }
-            for row in report.rows
-        ],
-        "code": code_document(report, scene.limits),
+        "limits": limits_document(report.rows),
+        "code": code_document(scene.limits, report.code_rows, report.code_warnings, DIRECTIONS),
         "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
         "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
         "soil_validity": soil_validity_document(report.soil_validity),
@@ -284,16 +235,6 @@ def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Tab
     return table
 
 
-#: Points besides C up to which the tables list every point and limit row; with more, they show
-#: the governing points and the largest value/limit ratios (every row with --all-points or --json).
-ALL_POINTS_UP_TO = 12
-
-#: Limit rows shown for a scene with more points: the largest ratios (and each quantity's largest).
-WORST_ROWS = 10
-
-EVERY_ROW = "every row: --all-points or --json"
-
-
 def _summarised(report: AmplitudeReport, all_points: bool) -> bool:
     return not all_points and len(report.approximations[report.checked].points) - 1 > ALL_POINTS_UP_TO
 
@@ -323,56 +264,6 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool
     for i, dof in enumerate(DOFS):
         if dof == "theta":
             table.add_row("C", "rocking θ", *(fmt(float(getattr(approx.peaks, q)[i])) + f" rad{RATE_UNITS[q]}" for q in QUANTITIES))
-    return table
-
-
-def _limits_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
-    title = f"Limits (checked with: {report.approximations[report.checked].title})"
-    rows = report.rows
-    if _summarised(report, all_points):
-        rows = worst_rows(report.rows, WORST_ROWS)
-        title += (
-            f": {len(rows)} of {len(report.rows)} rows, the {WORST_ROWS} largest value/limit ratios and the"
-            f" largest of each quantity ({EVERY_ROW})"
-        )
-    table = Table(title=title, title_justify="left")
-    for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
-        table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
-    for row in rows:
-        shown = display_quantity(row.quantity)
-        table.add_row(
-            Text(row.point), row.direction, row.quantity, units.show(shown, row.value), units.show(shown, row.limit),
-            f"{row.ratio:.3f}", verdict_text(row.outcome.value),
-        )
-    return table
-
-
-def _code_table(report: AmplitudeReport, units: DisplayUnits) -> Table:
-    rows = report.code_rows
-    t = rows[0].table
-    tables = {row.table.foundation: row.table for row in rows}
-    bounds = "; ".join(
-        f"{kind} ({table.clause}) {', '.join(f'{n} {b:g}' for n, b in zip(('A/B', 'B/C', 'C/D'), table.boundaries_mm_s))}"
-        f" mm/s, {', '.join(f'{n} {b:g}' for n, b in zip(('A/B', 'B/C', 'C/D'), table.displacement_boundaries_um))} µm"
-        for kind, table in tables.items()
-    )
-    table = Table(
-        title=f"{t.code}, group {t.group}: zones of the RMS velocity and displacement, the more restrictive deciding"
-        f" (boundaries: {bounds})", title_justify="left",
-    )
-    unit = units.label("velocity")
-    columns = ("point", f"horizontal [{unit}]", f"vertical [{unit}]", f"displacement [{units.label('amplitude')}]", "by",
-               "governs", "support", "zone", "fails over", "verdict")
-    for col in columns:
-        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col or col == "fails over" else "left")
-    for row in rows:
-        shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
-        table.add_row(
-            Text(row.point), *(fmt(units.convert("velocity", v)) for v in (row.horizontal, row.vertical)),
-            fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.governing, row.table.foundation,
-            row.zone,
-            units.show(shown, row.limit), verdict_text(row.outcome.value),
-        )
     return table
 
 
@@ -440,9 +331,10 @@ def print_amplitudes_report(
     if not report.resonant:
         out.print(_points_table(report, units, all_points))
     if report.rows:
-        out.print(_limits_table(report, units, all_points))
+        title = f"Limits (checked with: {report.approximations[report.checked].title})"
+        out.print(limits_table(report.rows, units, title, _summarised(report, all_points)))
     if report.code_rows:
-        out.print(_code_table(report, units))
+        out.print(zones_table(report.code_rows, units, DIRECTIONS))
         print_supports(report.code_rows)
     for warning in report.code_warnings:
         out.print(Text(f"warning: {warning}", style="yellow"))

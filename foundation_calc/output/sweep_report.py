@@ -29,19 +29,36 @@ def method(report) -> str:
     return " + ".join(parts)
 
 
-def _governing(report, i: int) -> str | None:
-    """The label of the condition that governs point i's resonance verdict (None: no condition):
-    the condition's own label, as resonance, amplitudes and check name it (its source, such as
-    the [[loads]], is the critical speeds' column, not part of its name)."""
-    g = int(report.governing[i])
-    return None if g < 0 else report.conditions[g].label
-
-
 def status_text(row: dict) -> str:
     """Why a point has its status (:func:`~foundation_calc.checks.sweep_status.status_text`, the
-    words of every kind's sweep), from a row of :func:`_rows`."""
+    words of every kind's sweep), from a row of the document."""
     return row_status_text(row["status"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
                            row["over_limits"])
+
+
+def verdict_cells(report):
+    """The verdict of each point of every kind's sweep, one dict a point (a report with ``rows``,
+    the :class:`~foundation_calc.checks.sweep_status.RowVerdicts`, and their ``conditions``): its
+    governing condition (its own label, as resonance, amplitudes and check name it), the rule's
+    status, its margin and the margin it needs, the limits exceeded and the status (SI)."""
+    rows = report.rows
+    over = rows.over_limit
+    for i in range(len(rows.status)):
+        yield {
+            "governing_condition": rows.condition(i, report.conditions),
+            "resonance_status": str(rows.resonance_status[i]),
+            "margin": float(rows.margin[i]),
+            "needed": float(rows.needed[i]),
+            "over_limit": bool(over[i]),
+            "over_limits": rows.over_limits(i),
+            "status": str(rows.status[i]),
+        }
+
+
+def limits_document(limits: dict, detuning) -> dict:
+    """The ``limits`` part of every kind's sweep document: ``limits`` (by their ``[limits]``
+    keys) and the detuning band(s), by order."""
+    return {**limits, "detuning": {str(k): v for k, v in detuning.items()} if isinstance(detuning, dict) else detuning}
 
 
 def _harmonics(report, i: int) -> dict | None:
@@ -55,7 +72,7 @@ def _harmonics(report, i: int) -> dict | None:
 
 def _rows(report):
     """One dict per point, SI units; amplitudes None where resonant."""
-    for i, value in enumerate(report.values):
+    for (i, value), verdict_of in zip(enumerate(report.values), verdict_cells(report)):
         resonant = bool(report.resonant[i])
         x, y, th = (None if resonant else float(v) for v in report.peaks[i])
         points = {
@@ -71,13 +88,7 @@ def _rows(report):
             "harmonics": _harmonics(report, i),
             "points": points,
             "resonant": resonant,
-            "governing_condition": _governing(report, i),
-            "resonance_status": str(report.resonance_status[i]),
-            "margin": float(report.margin[i]),
-            "needed": float(report.needed[i]),
-            "over_limit": bool(report.over_limit[i]),
-            "over_limits": [q for q, mask in report.over_quantities.items() if mask[i]],
-            "status": str(report.status[i]),
+            **verdict_of,
         }
 
 
@@ -91,10 +102,8 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
         "name": name,
         "method": method(report),
         "variable": report.variable,
-        "limits": {
-            **{key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
-            "detuning": {str(k): v for k, v in report.detuning.items()} if isinstance(report.detuning, dict) else report.detuning,
-        },
+        "limits": limits_document({key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
+                                  report.detuning),
         "critical_speeds": [
             {"condition": c.label, "source": c.source, "zero_order": c.zero_order, "averaged": c.averaged, "band": c.band,
              "judged": c.judged}
@@ -106,11 +115,11 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
     }
 
 
-def _cell(value) -> str:
+def csv_cell(value) -> str:
     """A CSV cell: ``true``/``false`` for booleans, the shortest round-trip text of a float with
     -0.0 written as 0.0, an empty cell for None.
 
-    >>> [_cell(v) for v in (True, -0.0, 1e-300, None, "3ω = p1")]
+    >>> [csv_cell(v) for v in (True, -0.0, 1e-300, None, "3ω = p1")]
     ['true', '0.0', '1e-300', '', '3ω = p1']
     """
     if value is None:
@@ -131,7 +140,7 @@ def csv_header(report) -> str:
               "resonant", "governing_condition", "margin", "needed", "resonance_status", "over_limit", "status"]
     if report.variable != "omega":
         header.insert(1, "omega_rad_s")
-    return _csv_text([header])
+    return csv_text([header])
 
 
 def csv_rows(report) -> str:
@@ -151,11 +160,11 @@ def csv_rows(report) -> str:
             cells += [None, None] if p is None else [p["horizontal"], p["vertical"]]
         cells += [row["resonant"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
                   row["over_limit"], row["status"]]
-        lines.append([_cell(c) for c in cells])
-    return _csv_text(lines)
+        lines.append([csv_cell(c) for c in cells])
+    return csv_text(lines)
 
 
-def _csv_text(lines) -> str:
+def csv_text(lines) -> str:
     buffer = io.StringIO()
     csv.writer(buffer, lineterminator="\n").writerows(lines)
     return buffer.getvalue()
@@ -266,6 +275,12 @@ def joined_plot(first, kept):
     return replace(first, values=values, peaks=peaks, resonant=resonant)
 
 
+def operating(scene, variable: str) -> float:
+    """Where a crank scene's sweep marks the scene itself: its speed [rad/s] on a speed sweep, the
+    factor 1 on a soil sweep."""
+    return scene.speed.omega_rad_s if variable == "omega" else 1.0
+
+
 def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> None:
     """x, y peaks of C against the swept variable (log scale), the amplitude limit, and, as on the
     calculation sheet, the operating speed (or the scene's soil, factor 1) and the detuning band
@@ -304,8 +319,12 @@ def plot_sweep(report, path: str | Path, units, name: str, operating: float) -> 
 
 __all__ = [
     "csv_header",
+    "csv_cell",
     "csv_rows",
+    "csv_text",
     "joined_plot",
+    "limits_document",
+    "operating",
     "plot_sweep",
     "plotted",
     "print_sweep",
@@ -313,4 +332,5 @@ __all__ = [
     "sweep_csv",
     "sweep_document",
     "verdict",
+    "verdict_cells",
 ]
