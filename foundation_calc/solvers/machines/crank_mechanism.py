@@ -62,6 +62,11 @@ from foundation_calc.solvers.rigid_body.inertia import centre_of_mass, mass_matr
 #: coefficients (harmonics up to 127 resolved); :func:`samples_for` takes more for a rod barely
 #: longer than its crank.
 SAMPLES = 256
+
+#: Most phases per revolution :func:`samples_for` takes: 2^14 resolve the kinematics to round-off
+#: up to λ = r/l ≈ 1 - 1e-5; a throw nearer λ = 1 (a rod hardly longer than the crank, no real
+#: machine) keeps this many, its series cut where its terms are q^8192 of the first.
+MAX_SAMPLES = 1 << 14
 #: Largest |cos| of the angle between a throw's slider and shaft axes (0.06°: directions as typed).
 PERPENDICULAR = 1e-3
 #: Size, relative to the largest harmonic of the same kind (force or moment), below which a
@@ -209,11 +214,17 @@ class MechanismSamples:
 def samples_for(throws) -> int:
     """Phases per revolution that resolve the throws' kinematics to round-off: the harmonics of
     cos ψ fall as q^n, q = (1 - sqrt(1 - λ²))/λ, below 1e-16 from n = log(1e-16)/log q (80 for
-    λ = 0.9, 370 for λ = 0.995); twice that, a power of two, at least :data:`SAMPLES`."""
+    λ = 0.9, 370 for λ = 0.995); twice that, a power of two, at least :data:`SAMPLES` and at most
+    :data:`MAX_SAMPLES`.
+
+    >>> from types import SimpleNamespace as Throw
+    >>> samples_for([Throw(r=0.1, l=0.4)]), samples_for([Throw(r=0.995, l=1.0)]), samples_for([Throw(r=1.0 - 1e-9, l=1.0)])
+    (256, 1024, 16384)
+    """
     lam = max(th.r / th.l for th in throws)
     q = (1.0 - np.sqrt(1.0 - lam * lam)) / lam
     n = np.log(1e-16) / np.log(q)
-    return max(SAMPLES, 1 << int(np.ceil(np.log2(2.0 * n + 2.0))))
+    return int(min(MAX_SAMPLES, max(SAMPLES, 2.0 ** np.ceil(np.log2(2.0 * n + 2.0)))))
 
 
 def mechanism_samples(throws, omega, g, N: int | None = None) -> MechanismSamples:
