@@ -8,6 +8,7 @@ solved at K(nω), C(nω)), the bearing-pressure limit the office check needs, th
 
 from __future__ import annotations
 
+import re
 import tomllib
 from types import SimpleNamespace
 
@@ -64,3 +65,48 @@ def test_what_is_not_checked_follows_the_limits_machines_and_run_up():
     assert "bearing pressure" not in rows["not checked"]
     assert "machines" not in rows
     assert "not checked" not in rows["start-up"]
+
+
+@pytest.fixture(scope="module")
+def piled_sheet(tmp_path_factory) -> str:
+    """The markdown sheet of the shipped piled block (its assumptions table is what a checker reads)."""
+    import foundation_calc as fc
+
+    out = tmp_path_factory.mktemp("piles") / "piles.md"
+    fc.report(CONFIGS / "block_on_piles.toml", output=out)
+    return out.read_text(encoding="utf-8")
+
+
+def _sheet_rows(text: str) -> dict[str, str]:
+    """The assumptions table's rows of a markdown sheet, topic -> text (cells split at unescaped pipes)."""
+    section = text.split("Assumptions and limitations", 1)[1].split("\n## ", 1)[0]
+    return {cells[1].strip(): cells[2].strip() for cells in (re.split(r"(?<!\\)\|", line) for line in section.splitlines())
+            if len(cells) == 4 and cells[1].strip() not in ("topic", "---")}
+
+
+def test_the_piled_blocks_sheet_states_the_groups_coupled_model(piled_sheet):
+    """The group couples sway and rocking at O (K and C not diagonal: tests/test_piles_cli.py), its
+    springs are the piles' (EN 1998-5 Annex C heads, Dobry & Gazetas' group, Makris & Gazetas'
+    frequency shape), and the shipped cap does not bear on the clay (piles.cap_contact = false)."""
+    rows = _sheet_rows(piled_sheet)
+    assert "uncoupled" not in piled_sheet.lower()
+    assert "coupled: sway-rocking" in rows["base"] and "K\\_HM" in rows["base"]
+    assert "cap does not bear on the soil" in rows["base"]
+    for key in ("\\[EC8\\]", "\\[DG\\]", "\\[MG\\]", "\\[RW\\]", "Frequency-dependent"):
+        assert key in rows["soil"], key
+    assert "Gazetas' stiffnesses" not in piled_sheet and "half-space under a rigid surface base" not in piled_sheet
+
+
+@pytest.mark.parametrize(("head", "contact", "embedment", "words"), [
+    ("pinned", False, 0.0, ("no sway-rocking terms", "piles alone carry")),
+    ("fixed", True, 0.0, ("coupled: sway-rocking", "cap bears on the soil")),
+    ("fixed", False, 1.0, ("coupled: sway-rocking", "embedded 1 m")),
+])
+def test_the_piled_base_row_follows_the_heads_and_the_caps_contact(head, contact, embedment, words):
+    data = tomllib.loads((CONFIGS / "block_on_piles.toml").read_text(encoding="utf-8"))
+    data["piles"].update(head=head, cap_contact=contact)
+    data["block"]["embedment"] = embedment
+    base = _rows(parse_scene(data))["base"]
+    assert "uncoupled (no sliding-rocking" not in base
+    for word in words:
+        assert word in base, (word, base)

@@ -15,7 +15,7 @@ from scipy.linalg import eigh
 import foundation_calc as fc
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.supports import register, unregister
-from foundation_calc.solvers.supports.base import AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.base import Assumption, AtO, SoilSection, Validity
 from foundation_calc.solvers.supports.sheet import Given, HandCalc, Step, Text
 
 #: The toy's springs [N/m, N/rad, N m/rad] and dashpots at O, a sway-rocking coupling off the diagonal.
@@ -76,6 +76,10 @@ class Toy:
 
     def soil_section(self, speeds) -> SoilSection:
         return SoilSection({"toy": {"K_x,ry": K_TOY[0, 4]}}, ("The toy's springs couple x and ry.",))
+
+    def assumptions(self) -> tuple:
+        return (Assumption("soil", "The toy support: constant springs and dashpots at O, coupled (x with ry)."
+                                   " Frequency-independent."),)
 
     def sheet(self, model, orders) -> list:
         return [HandCalc("The toy's vertical spring", (Given("k_1", 1.5e9, "N/m", "half the toy's spring"),
@@ -146,5 +150,6 @@ def test_sheet_shows_the_toys_hand_calculation(toy, tmp_path):
     fc.report(toy, output=out)
     text = out.read_text(encoding="utf-8")
     assert "The toy's vertical spring" in text and "The toy support's springs are constant." in text
-    assert "The support toy: the springs and dashpots at O its own model gives" in text  # the assumptions' soil row
+    assert "| soil | The toy support: constant springs and dashpots at O, coupled (x with ry)." in text  # its own assumption
+    assert "uncoupled" not in text  # and no footing's
     assert "| K\\_z | 2·k\\_1 | 2 × 1.500·10⁹ | 3.000·10⁹ | N/m | \\[toy\\] |" in text  # the chain, evaluated

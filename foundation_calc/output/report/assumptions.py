@@ -63,46 +63,12 @@ def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
     return rows
 
 
-#: soil.method of a block -> how its six springs and dashpots at O are found.
-BLOCK_SOIL_MODELS = {
-    "springs": "The six springs (and dashpots) at O as the scene gives them; their source is the"
-               " scene's. Frequency-independent.",
-    "coefficients": "Winkler springs from Barkan's coefficients [Ba]: K_x = K_y = c_x A, K_z = c_z A,"
-                    " K_θx = c_φ I_x, K_θy = c_φ I_y, K_θz = c_ψ J_z (c_ψ default 1.5 c_x, as Barkan is usually quoted:"
-                    " unverified against his text); dashpots 2 ξ √(K m)"
-                    " of each uncoupled motion from the given damping ratios. Frequency-independent.",
-    "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs in"
-              " each vertical plane (equivalent radius per motion) and Reissner-Sagoci's in torsion [RHW]:"
-              " radiation plus material damping. Frequency-independent, fitted for a0 < 1.5.",
-    "gazetas": "Uniform elastic half-space under a rigid surface base, Gazetas' stiffnesses and"
-               " radiation dashpots of the rectangle [Ga]. Frequency-dependent: every order n is solved"
-               " with K(nω), C(nω) and every mode at its own frequency; torsion with Pais & Kausel's"
-               " modifier and radiation dashpot [PK].",
-    "pais_kausel": "Uniform elastic half-space under a rigid surface base, Pais & Kausel's"
-                   " stiffnesses with their frequency modifiers [PK] and Gazetas' dashpots. Frequency-"
-                   "dependent: every order n is solved with K(nω), C(nω) and every mode at its own"
-                   " frequency, torsion included.",
-    "sp26": "The code's coefficients C_z, C_x, C_φ from the deformation modulus and the soil class,"
-            " C_ψ = C_z and ξ_ψ = 0.3 ξ_z (torsion as the code is usually quoted: unverified against its"
-            " text), damping ratios of the code [SP26]. Frequency-independent.",
-}
-
-
 def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     support, limits = scene.support(), scene.limits
     rows = [
         ("model", "Rigid block with every machine rigidly attached: six degrees of freedom about O, the"
                   " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
-        ("soil", BLOCK_SOIL_MODELS.get(support.method, f"The support {support.label}: the springs and dashpots at O"
-                                       " its own model gives (the soil section shows how)."
-                                       + (" Frequency-dependent." if support.frequency_dependent else
-                                          " Frequency-independent."))),
-        ("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
-                 " contact, no uplift; "
-                 + ("no embedment, side soil, " if not scene.embedment else
-                    f"embedded {scene.embedment:g} m, sidewalls in full contact (the method's embedment factors"
-                    " and sidewall dashpots; no torsional sidewall dashpot); no ")
-                 + "layering or coupling through the soil with neighbouring foundations."),
+        *((row.topic, row.text) for row in support.assumptions()),  # the support's own (its soil and base rows)
     ]
     import numpy as np
 

@@ -286,11 +286,15 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     dependent = support.frequency_dependent and amplitudes is not None
     own = [m["frequency"]["omega"] for m in amplitudes["modes"]] if dependent else None
     solve = block_solve(model, excitations, scene.soil_impedance if dependent else None, own)
+    coupling = support.impedance(0.0).coupling
+    springs = (("the six springs at O", "O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10)")
+               if coupling is None or not any(np.any(X) for X in coupling) else
+               ("the support's springs at O, coupled off the diagonal (the soil section shows how),", "O, coupled likewise"))
     blocks: list = [Paragraph(
         "Rigid block in six degrees of freedom about O (centre of the base at base level, x along the length, y along"
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
-        " K: the six springs at O less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
-        " O (given, or 2 ξ √(K m) of each uncoupled motion, [RHW] ch. 10); Q_n: each load (F, M + r_F × F) e^{iφ}.")]
+        f" K: {springs[0]} less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
+        f" {springs[1]}; Q_n: each load (F, M + r_F × F) e^{{iφ}}.")]
     from foundation_calc.output.report.stratum import stratum_blocks
 
     stratum = stratum_blocks(getattr(support, "soil", None), *scene.base, True, amplitudes)  # a footing's stratum

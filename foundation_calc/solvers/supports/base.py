@@ -5,8 +5,10 @@ Axes and coordinates as :mod:`foundation_calc.solvers.rigid_body`: q = (u_x, u_y
 springs K(ω) and dashpots C(ω) it puts between the ground and O (:class:`AtO`: six on the
 diagonal, and the off-diagonal terms of a support that couples its motions, a pile group's
 sway-rocking), whether they depend on ω, the range its model holds over (:class:`Validity`), and
-what the documents show of it: its part of ``fcalc soil`` (:class:`SoilSection`) and of the
-sheet's soil section (:mod:`.sheet`). Everything here is plain data: the output layer renders it.
+what the documents show of it: its part of ``fcalc soil`` (:class:`SoilSection`), of the
+sheet's soil section (:mod:`.sheet`) and the assumptions it rests on (:class:`Assumption`: what
+it models, coupled or not at O, frequency-dependent or not, by which sources). Everything here is
+plain data: the output layer renders it.
 """
 
 from __future__ import annotations
@@ -97,6 +99,16 @@ class SoilSection:
     printed: tuple = ()
 
 
+@dataclass(frozen=True)
+class Assumption:
+    """One row of the sheet's assumptions a support states: ``topic`` (``"soil"``: what its springs
+    and dashpots model, by which sources, and whether they depend on frequency; ``"base"``: how
+    they act at O, coupled or not, and what the model leaves out) and its ``text``."""
+
+    topic: str
+    text: str
+
+
 class Support(Protocol):
     """What carries the body (module docstring)."""
 
@@ -128,10 +140,13 @@ class Support(Protocol):
     def soil_section(self, speeds) -> SoilSection:
         """Its own part of ``fcalc soil``; ``speeds``: machine -> its speed ω [rad/s]."""
 
+    def assumptions(self) -> tuple[Assumption, ...]:
+        """The rows of the sheet's assumptions it states (:class:`Assumption`)."""
+
     def sheet(self, model, orders) -> list:
         """Its part of the sheet's soil section (:mod:`.sheet`'s items): how its springs and
         dashpots at O are found; ``model``, the body's (its static M, K, C); ``orders``: (name, n,
         column head, ω [rad/s]) of every frequency the response and the modes took it at."""
 
 
-__all__ = ["MOTIONS", "AtO", "FrequencyTable", "SoilSection", "Support", "Validity"]
+__all__ = ["MOTIONS", "Assumption", "AtO", "FrequencyTable", "SoilSection", "Support", "Validity"]

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.solvers.supports.base import MOTIONS, AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.base import MOTIONS, Assumption, AtO, SoilSection, Validity
 from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.supports.sheet import SoilMethod, Text
 
@@ -37,6 +37,30 @@ DEFINITIONS = {
               " r0ψ = (BL³/(3π))^¼ rocking, r0θ = (LB(L² + B²)/(6π))^¼ torsion)",
     "gazetas": "a0 = ω B'/V_s, B' the shorter half-side of the base",
     "pais_kausel": "a0 = ω B'/V_s, B' the shorter half-side of the base",
+}
+
+#: soil.method -> how the footing's six springs and dashpots at O are found (the sheet's assumptions).
+SOIL_MODELS = {
+    "springs": "The six springs (and dashpots) at O as the scene gives them; their source is the"
+               " scene's. Frequency-independent.",
+    "coefficients": "Winkler springs from Barkan's coefficients [Ba]: K_x = K_y = c_x A, K_z = c_z A,"
+                    " K_θx = c_φ I_x, K_θy = c_φ I_y, K_θz = c_ψ J_z (c_ψ default 1.5 c_x, as Barkan is usually quoted:"
+                    " unverified against his text); dashpots 2 ξ √(K m)"
+                    " of each uncoupled motion from the given damping ratios. Frequency-independent.",
+    "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs in"
+              " each vertical plane (equivalent radius per motion) and Reissner-Sagoci's in torsion [RHW]:"
+              " radiation plus material damping. Frequency-independent, fitted for a0 < 1.5.",
+    "gazetas": "Uniform elastic half-space under a rigid surface base, Gazetas' stiffnesses and"
+               " radiation dashpots of the rectangle [Ga]. Frequency-dependent: every order n is solved"
+               " with K(nω), C(nω) and every mode at its own frequency; torsion with Pais & Kausel's"
+               " modifier and radiation dashpot [PK].",
+    "pais_kausel": "Uniform elastic half-space under a rigid surface base, Pais & Kausel's"
+                   " stiffnesses with their frequency modifiers [PK] and Gazetas' dashpots. Frequency-"
+                   "dependent: every order n is solved with K(nω), C(nω) and every mode at its own"
+                   " frequency, torsion included.",
+    "sp26": "The code's coefficients C_z, C_x, C_φ from the deformation modulus and the soil class,"
+            " C_ψ = C_z and ξ_ψ = 0.3 ξ_z (torsion as the code is usually quoted: unverified against its"
+            " text), damping ratios of the code [SP26]. Frequency-independent.",
 }
 
 
@@ -142,6 +166,17 @@ class Footing:
         stratum = stratum_document(self.soil, self.L, self.B)
         return SoilSection({"stratum": stratum}, () if stratum is None else (stratum_line(stratum),))
 
+    def assumptions(self) -> tuple[Assumption, ...]:
+        """The soil method's model (:data:`SOIL_MODELS`) and the base's: springs and dashpots at O,
+        uncoupled, in full contact, surface or embedded D [m]."""
+        return (Assumption("soil", SOIL_MODELS[self.method]),
+                Assumption("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
+                                   " contact, no uplift; "
+                                   + ("no embedment, side soil, " if not self.D else
+                                      f"embedded {self.D:g} m, sidewalls in full contact (the method's embedment factors"
+                                      " and sidewall dashpots; no torsional sidewall dashpot); no ")
+                                   + "layering or coupling through the soil with neighbouring foundations."))
+
     def sheet(self, model, orders) -> list:
         """The soil method's hand calculations; the springs given at O need none."""
         if self.method == "springs":
@@ -155,4 +190,4 @@ def build(scene, L, B, masses):
     return Footing(scene.soil, L, B, masses, scene.embedment)
 
 
-__all__ = ["DEFINITIONS", "NO_RANGE", "Footing", "build", "footing_lengths", "footing_range", "six"]
+__all__ = ["DEFINITIONS", "NO_RANGE", "SOIL_MODELS", "Footing", "build", "footing_lengths", "footing_range", "six"]

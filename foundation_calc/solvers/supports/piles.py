@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.solvers.supports.base import MOTIONS, FrequencyTable, SoilSection, Validity
+from foundation_calc.solvers.supports.base import MOTIONS, Assumption, FrequencyTable, SoilSection, Validity
 from foundation_calc.solvers.supports.footing import Footing
 from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.supports.sheet import Grid, HandCalc, Rows, Text
@@ -209,6 +209,39 @@ class Piles(Footing):
                 " factors under a rigid cap. a0 = ω d/V_s.")
         return SoilSection({"stratum": None, "piles": document},
                            (FrequencyTable(title, tuple(r.label for r in rows), tuple(table), 4), note))
+
+    def assumptions(self) -> tuple[Assumption, ...]:
+        """What the group models and by which sources (module docstring; :mod:`~foundation_calc.solvers.piles.cap`),
+        and how it acts at O: coupled sway-rocking through fixed heads' K_HM, and the cap's contact."""
+        from foundation_calc.solvers.piles.single import A0_FITTED
+
+        p, xi_m = self.piles, self.soil.material_damping or 0.0
+        heads = ("K_HH, K_MM and K_HM of a fixed head from EN 1998-5 Table C.1 [EC8]" if p.head == "fixed" else
+                 "K_HH of a pinned head (K_HH − K_HM²/K_MM, no moment) from EN 1998-5 Table C.1 [EC8]")
+        soil = (f"A group of {len(p.positions)} piles (d = {p.diameter:g} m, L = {p.length:g} m, {p.head} heads,"
+                f" {p.tip.replace('_', '-')} tips) under the block's base as a rigid cap, in the scene's soil, its"
+                f" modulus E_s = 3 G at depth d varying with depth as EN 1998-5 Annex C's {p.soil_profile} profile"
+                f" [EC8], not a half-space under the base. One pile's head springs: {heads}, K_v by Randolph & Wroth"
+                " 1978 and K_T by Randolph 1981 [RW], each times the Winkler pile's frequency shape (Makris &"
+                " Gazetas [MG]); the group by Dobry & Gazetas' interaction factors under a rigid cap [DG]; dashpots"
+                f" C = Im K(ω)/ω, with the soil's material damping ξ_m = {xi_m:g} in the interaction factors and"
+                " 2 ξ_m √(|K_ii| m_i) added on the diagonal. Frequency-dependent: every order n is solved with"
+                f" K(nω), C(nω) and every mode at its own frequency; fitted for a0 = ω d/V_s ≤ {A0_FITTED:g}.")
+        coupling = ("coupled: sway-rocking terms K_x,ry and K_y,rx (and C) from the fixed heads' K_HM" if p.head == "fixed"
+                    else "pinned heads carry no moment (K_HM = 0): no sway-rocking terms")
+        if p.cap_contact:
+            cap = (f"the cap bears on the soil: the footing's springs and dashpots of soil.method = {self.method!r}"
+                   " (uncoupled) in parallel, full contact, no uplift")
+        elif self.D:
+            cap = (f"the cap does not bear on the soil; its sidewalls, embedded {self.D:g} m, add the footing's embedded"
+                   f" less surface springs and dashpots of soil.method = {self.method!r} (uncoupled) in parallel")
+        else:
+            cap = "the cap does not bear on the soil (piles.cap_contact = false): the piles alone carry the block"
+        base = (f"Linear springs and dashpots at O, {coupling}; where the heads are not symmetric about O, vertical-"
+                "rocking and sway-torsion terms through their lever arms (the group's K and C in the soil section"
+                f" show every term). Piles elastic and bonded to the soil (no gapping or slip); {cap}; no layering"
+                " beyond the modulus profile, no coupling through the soil with neighbouring foundations.")
+        return Assumption("soil", soil), Assumption("base", base)
 
     def sheet(self, model, orders) -> list:
         """The single pile's static springs as a hand calculation, then the group's method and its
