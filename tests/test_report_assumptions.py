@@ -110,3 +110,15 @@ def test_the_piled_base_row_follows_the_heads_and_the_caps_contact(head, contact
     assert "uncoupled (no sliding-rocking" not in base
     for word in words:
         assert word in base, (word, base)
+
+
+def test_the_base_row_of_a_footing_on_a_stratum_states_the_layer():
+    """A footing on a layer over rock (soil.stratum_depth) is not a half-space: its base row says the
+    layer's depth, Kausel's factors and the cutoffs, and no longer "no ... layering"; without the key
+    the row is the half-space's."""
+    data = tomllib.loads((CONFIGS / "block_fan_torsion_near_speed.toml").read_text(encoding="utf-8"))
+    assert "layering" in _rows(parse_scene(data))["base"]
+    data["soil"]["stratum_depth"] = 3.0
+    base = _rows(parse_scene(data))["base"]
+    assert "layering" not in base
+    assert "3 m deep over rigid rock" in base and "Kausel" in base and "V_s/4H" in base, base

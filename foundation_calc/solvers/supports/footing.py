@@ -168,14 +168,21 @@ class Footing:
 
     def assumptions(self) -> tuple[Assumption, ...]:
         """The soil method's model (:data:`SOIL_MODELS`) and the base's: springs and dashpots at O,
-        uncoupled, in full contact, surface or embedded D [m]."""
+        uncoupled, in full contact, surface or embedded D [m], on a half-space or a layer of
+        depth H [m] over rigid rock (:mod:`.stratum`)."""
+        H = getattr(self.soil, "stratum_depth", None)
+        ground = "layering or coupling" if H is None else "coupling"
+        layer = "" if H is None else (
+            f" The soil is one uniform layer {H:g} m deep over rigid rock: the half-space's springs times Kausel's"
+            " factors on the equivalent radii, no radiation damping below the layer's cutoff frequencies V_s/4H and"
+            " V_La/4H (material damping only).")
         return (Assumption("soil", SOIL_MODELS[self.method]),
                 Assumption("base", "Linear springs and dashpots at O only, uncoupled (no sliding-rocking cross terms); full"
                                    " contact, no uplift; "
-                                   + ("no embedment, side soil, " if not self.D else
+                                   + (f"no embedment, side soil, {ground}" if not self.D else
                                       f"embedded {self.D:g} m, sidewalls in full contact (the method's embedment factors"
-                                      " and sidewall dashpots; no torsional sidewall dashpot); no ")
-                                   + "layering or coupling through the soil with neighbouring foundations."))
+                                      f" and sidewall dashpots; no torsional sidewall dashpot); no {ground}")
+                                   + " through the soil with neighbouring foundations." + layer))
 
     def sheet(self, model, orders) -> list:
         """The soil method's hand calculations; the springs given at O need none."""
