@@ -32,14 +32,14 @@ class _Rotors:
     """The rotors' constants as arrays, for a fast evaluation of their paths."""
 
     def __init__(self, rotors) -> None:
-        d1, d2 = np.array([r.delta1 for r in rotors]), np.array([r.delta2 for r in rotors])
+        d1, d2 = np.array([r.part.delta1 for r in rotors]), np.array([r.part.delta2 for r in rotors])
         self.t1 = np.stack([np.sin(d1), -np.cos(d1), 0 * d1], axis=1)
         self.t2 = np.stack([np.cos(d1) * np.cos(d2), np.sin(d1) * np.cos(d2), -np.sin(d2)], axis=1)
-        self.l = np.array([r.l for r in rotors])[:, None]
+        self.l = np.array([r.part.l for r in rotors])[:, None]
         self.omega = np.array([r.omega for r in rotors])
-        self.phi0 = np.array([r.phi0 for r in rotors])
-        self.m = np.array([r.m for r in rotors])
-        self.rho = np.array([r.rho for r in rotors], dtype=float)
+        self.phi0 = np.array([r.part.phi0 for r in rotors])
+        self.m = np.array([r.part.m for r in rotors])
+        self.rho = np.array([r.part.rho for r in rotors], dtype=float)
 
     def paths(self, t, clock=None):
         """S, L, L', L'' of every rotor at time t, shapes (R, 3). Rotor j turns by ω_j τ(t) + φ_j0:
@@ -65,8 +65,8 @@ def _cross(a, b) -> np.ndarray:
 
 
 def static_equilibrium(platform, rotors) -> np.ndarray:
-    M_sigma = platform.M + sum(r.m for r in rotors)
-    first = platform.M * np.asarray(platform.r_c, dtype=float) + sum(r.m * np.asarray(r.rho, dtype=float) for r in rotors)
+    M_sigma = platform.M + sum(r.part.m for r in rotors)
+    first = platform.M * np.asarray(platform.r_c, dtype=float) + sum(r.part.m * np.asarray(r.part.rho, dtype=float) for r in rotors)
     load = np.concatenate([[0.0, 0.0, -M_sigma * platform.g], -platform.g * np.cross(first, E3)])
     return np.linalg.solve(springs(platform), load)
 
@@ -94,7 +94,7 @@ def equations(platform, rotors: _Rotors, t, clock=None):
 
 
 def tilt(platform, rotors) -> np.ndarray:
-    zeta_sum = platform.M * platform.r_c[2] + sum(r.m * r.rho[2] for r in rotors)
+    zeta_sum = platform.M * platform.r_c[2] + sum(r.part.m * r.part.rho[2] for r in rotors)
     return -platform.g * zeta_sum * np.diag([0, 0, 0, 1.0, 1.0, 0])
 
 

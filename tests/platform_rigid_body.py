@@ -22,12 +22,12 @@ def hat(v):
 
 def rotor_path(rotor, t):
     """Body-frame position, velocity, acceleration of the rotor's mass at time t."""
+    w, rotor = rotor.omega, rotor.part
     s1, c1 = np.sin(rotor.delta1), np.cos(rotor.delta1)
     s2, c2 = np.sin(rotor.delta2), np.cos(rotor.delta2)
     t1 = np.array([s1, -c1, 0.0])
     t2 = np.array([c1 * c2, s1 * c2, -s2])
-    phi = rotor.omega * t + rotor.phi0
-    w = rotor.omega
+    phi = w * t + rotor.phi0
     L = rotor.l * (t1 * np.cos(phi) + t2 * np.sin(phi))
     Ld = rotor.l * w * (-t1 * np.sin(phi) + t2 * np.cos(phi))
     return np.asarray(rotor.rho, dtype=float) + L, Ld, -w * w * L
@@ -49,7 +49,7 @@ def rhs(t, y, platform, rotors):
     for rot in rotors:
         s, sd, sdd = rotor_path(rot, t)
         p, pd, pdd = C @ s, C @ sd, C @ sdd
-        m = rot.m
+        m = rot.part.m
         total += m
         first = first + m * p
         A[3:, 3:] += m * (p @ p * np.eye(3) - np.outer(p, p))

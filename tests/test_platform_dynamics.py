@@ -15,10 +15,10 @@ from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.platform.design import design_from_position, design_from_vertical
 from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
-    Rotor,
     block_inertia,
     inertia_about_corner,
     natural_frequencies,
+    rotor,
 )
 from foundation_calc.solvers.platform.harmonic_balance import steady_state
 from foundation_calc.solvers.platform.verification import PlatformModel, build, sensitivity, verify
@@ -181,9 +181,9 @@ def test_linear_model_matches_integration_with_a_two_shaft_exciter_on_a_tilted_a
     platform = RigidPlatform(2e4, (1.5, 1.0, 0.65), inertia_about_corner(2e4, (1.5, 1.0, 0.65), J), 3.0, 2.0,
                              d.stiffness, 0.0, 9.81)
     rotors = [
-        Rotor(25.0, 0.2, (0.0, 0.0, d.c), 0.0, 0.0, W, 0.0),
-        Rotor(6.0, 0.1, (2.0, 0.5, 0.3), 0.4, 1.2, W, 0.7),
-        Rotor(6.0, 0.1, (2.0, 0.5, 0.3), 0.4, 1.2, -W, -0.7),
+        rotor(25.0, 0.2, (0.0, 0.0, d.c), 0.0, 0.0, W, 0.0),
+        rotor(6.0, 0.1, (2.0, 0.5, 0.3), 0.4, 1.2, W, 0.7),
+        rotor(6.0, 0.1, (2.0, 0.5, 0.3), 0.4, 1.2, -W, -0.7),
     ]
     q, R, phi = _compare_with_integration(platform, rotors)
     rot_scale = np.max(np.abs(q[3:]))
@@ -221,7 +221,7 @@ def test_natural_frequencies_against_a_finite_difference_hessian():
     rot = rotors[0]
     # mean system: rotor mass smeared over its circle (16 points), exact for the mean inertia
     phis = np.linspace(0.0, 2 * math.pi, 16, endpoint=False)
-    points = [(rot.m / 16, np.array(rot.rho) + rot.l * np.array([math.sin(p), -math.cos(p), 0.0])) for p in phis]
+    points = [(rot.part.m / 16, np.array(rot.part.rho) + rot.part.l * np.array([math.sin(p), -math.cos(p), 0.0])) for p in phis]
     # static equilibrium: minimise by Newton on the FD gradient (start from the linear one)
     h = np.array([1e-4] * 3 + [1e-5] * 3)  # truncation ~h², round-off ~eps V/h²: both < 1e-8
 

@@ -18,11 +18,11 @@ from foundation_calc.errors import PhysicsError
 from foundation_calc.scenes import parse_scene
 from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
-    Rotor,
     block_inertia,
     inertia_about_corner,
     natural_frequencies,
     periodic_system,
+    rotor,
 )
 from foundation_calc.solvers.platform.harmonic_balance import VARIANT_TOL, VariantBasis, steady_state, steady_state_near
 from foundation_calc.solvers.platform.verification import build
@@ -176,21 +176,21 @@ def test_undamped_exact_combination_resonance_is_named():
     platform = _undamped_paper_platform()
     omega = 150.0
     for _ in range(60):  # 2ω on the 5th frequency of the gyroscopic system (which depends on ω)
-        rotors = [Rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega, 0.0)]
+        rotors = [rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega, 0.0)]
         omega = _gyroscopic_frequencies(periodic_system(platform, rotors))[-2] / 2
-    rotors = [Rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega, 0.0)]
+    rotors = [rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega, 0.0)]
     with pytest.raises(PhysicsError, match=r"the combination 2ω = [\d.]+ rad/s .* natural frequency") as err:
         steady_state(platform, rotors)
     assert f"{2 * omega:.6g}" in str(err.value)
     # 0.1 % away it is an answer, and a large one
-    rotors = [Rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega * 1.001, 0.0)]
+    rotors = [rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, omega * 1.001, 0.0)]
     assert steady_state(platform, rotors).order >= 2
 
 
 def test_a_platform_without_horizontal_springs_is_told_at_once():
     p = _undamped_paper_platform()
     free = RigidPlatform(p.M, p.r_c, p.J_O1, p.A, p.B, p.stiffness * np.array([0.0, 1.0, 1.0]), 0.0, p.g)
-    rotors = [Rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, W, 0.0)]
+    rotors = [rotor(25.0, 0.2, (1.0, 0.7, 0.5), 0.0, 0.0, W, 0.0)]
     with pytest.raises(PhysicsError, match="not restrained in x"):
         natural_frequencies(free, rotors)
     with pytest.raises(PhysicsError, match="not restrained"):

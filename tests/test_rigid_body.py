@@ -13,10 +13,10 @@ import pytest
 
 from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
-    Rotor,
     inertia_about_corner,
     natural_frequencies,
     periodic_system,
+    rotor,
     spring_stiffness,
 )
 from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, block_inertia, centre_of_mass
@@ -30,21 +30,21 @@ STIFFNESS = np.array([[6.2e7, 6.0e7, 1.0e8], [6.1e7, 1.2e8, 1.1e8], [5.0e7, 1.3e
 
 def _platform_and_rotors():
     platform = RigidPlatform(2e4, R_C, inertia_about_corner(2e4, R_C, J_C), 3.0, 2.0, STIFFNESS, 0.0, 9.81)
-    rotors = (Rotor(25.0, 0.2, (0.3, 0.2, 2.6), 0.4, 0.3, 157.0, 0.1), Rotor(10.0, 0.1, (2.0, 1.5, 1.0), 0.0, 0.0, -90.0, 0.0))
+    rotors = (rotor(25.0, 0.2, (0.3, 0.2, 2.6), 0.4, 0.3, 157.0, 0.1), rotor(10.0, 0.1, (2.0, 1.5, 1.0), 0.0, 0.0, -90.0, 0.0))
     return platform, rotors
 
 
-def _ring(rotor: Rotor) -> np.ndarray:
+def _ring(rotor) -> np.ndarray:
     """Central inertia of a rotor's mass spread over its circle: m l²/2 (I + e eᵀ) [kg m²]."""
-    e = rotor.axes()[2]
-    return rotor.m * rotor.l**2 / 2.0 * (np.eye(3) + np.outer(e, e))
+    e = rotor.part.axes()[2]
+    return rotor.part.m * rotor.part.l**2 / 2.0 * (np.eye(3) + np.outer(e, e))
 
 
 def test_core_mass_matrix_is_the_platforms_mean_mass_matrix():
     platform, rotors = _platform_and_rotors()
     system = periodic_system(platform, rotors)
     core = bodies_mass_matrix(
-        [platform.M] + [r.m for r in rotors], [R_C] + [r.rho for r in rotors], [np.diag(J_C)] + [_ring(r) for r in rotors]
+        [platform.M] + [r.part.m for r in rotors], [R_C] + [r.part.rho for r in rotors], [np.diag(J_C)] + [_ring(r) for r in rotors]
     )
     np.testing.assert_allclose(core, system.mass[0].real, rtol=1e-12, atol=1e-12 * np.abs(core).max())
 
@@ -54,9 +54,9 @@ def test_core_springs_and_weight_are_the_platforms_mean_stiffness():
     system = periodic_system(platform, rotors)
     springs = sum(spring_at(corner, np.diag([*c, 0.0, 0.0, 0.0])) for corner, c in zip(platform.corners, STIFFNESS))
     np.testing.assert_allclose(springs, spring_stiffness(platform), rtol=1e-12, atol=1e-6)
-    moment = platform.M * R_C[2] + sum(r.m * r.rho[2] for r in rotors)
-    W = 9.81 * (platform.M + sum(r.m for r in rotors))
-    core = springs + weight_tilt(W, moment / (platform.M + sum(r.m for r in rotors)))
+    moment = platform.M * R_C[2] + sum(r.part.m * r.part.rho[2] for r in rotors)
+    W = 9.81 * (platform.M + sum(r.part.m for r in rotors))
+    core = springs + weight_tilt(W, moment / (platform.M + sum(r.part.m for r in rotors)))
     np.testing.assert_allclose(core, system.stiff[0].real, rtol=1e-12, atol=1e-12 * np.abs(core).max())
 
 

@@ -28,14 +28,20 @@ preload combined). Damping of the isolators: a hysteretic loss factor η multipl
 The rotor's own inertia about its axis is neglected (point masses), as in the paper's design
 (e × J e = 0).
 
-The rigid-body parts (parallel axes, the springs carried from the corners, the weight's tilt, the
-modes) are those of :mod:`foundation_calc.solvers.rigid_body`, shared with the block foundation
-(``block_inertia`` is re-exported from there); this module adds what is the platform's own, the
-rotors.
+The model is the one of every foundation: a rigid body (the platform: M, r_c, J_O1, about its
+reference point O1) on a support, its isolators (:class:`~foundation_calc.solvers.supports.isolators.Isolators`:
+K_springs, η, β), carrying machines, its exciters (each a
+:class:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter`, whose module gives the rotor's
+terms of M, G, K and F above, Eqs. (1)-(4) there, as Fourier coefficients); the rigid-body parts
+(parallel axes, the springs carried from the corners, the weight's tilt, the modes) are those of
+:mod:`foundation_calc.solvers.rigid_body`, shared with the block foundation (``block_inertia`` is
+re-exported from there). A rotor at its own speed is its own machine (:class:`Rotor`: the part and
+its speed), so that exciters at different speeds make the system quasi-periodic.
 
 Every coefficient is a trigonometric polynomial in the φ_j (harmonic vectors 0, ±e_j, ±2e_j);
-:func:`periodic_system` returns their Fourier coefficients and
-:mod:`~foundation_calc.solvers.platform.harmonic_balance` solves for the steady state.
+:func:`periodic_system` assembles the parts' Fourier coefficients and the support's springs and
+:mod:`~foundation_calc.solvers.platform.harmonic_balance` solves for the steady state with the
+isolators' exact complex stiffness K_springs (1 + iη sgn Ω) + iΩβ K_springs.
 
 References
 ----------
@@ -47,14 +53,16 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 
 from foundation_calc.errors import PhysicsError
+from foundation_calc.solvers.machines.exciter import UnbalancedExciter
 from foundation_calc.solvers.rigid_body.inertia import block_inertia, parallel_axis, skews
-from foundation_calc.solvers.rigid_body.kinematics import springs_at, weight_tilt
+from foundation_calc.solvers.rigid_body.kinematics import weight_tilt
 from foundation_calc.solvers.rigid_body.modes import dominant_motions, eigen
+from foundation_calc.solvers.supports.isolators import Isolators, loss
 
 E3 = np.array([0.0, 0.0, 1.0])
 
@@ -66,39 +74,31 @@ UNRESTRAINED = 1e-12
 COORDINATES = ("x", "y", "z", "alpha", "beta", "gamma")
 
 
-@dataclass(frozen=True)
-class Rotor:
-    """One single-shaft unbalanced exciter (SI units).
+class Rotor(NamedTuple):
+    """One exciter turning on the platform: the machine part
+    (:class:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter`) and its machine's speed.
 
     Attributes
     ----------
-    m : rotor mass [kg]
-    l : eccentricity, axis to rotor's centre of mass [m]
-    rho : (a, b, c), the axis point O^j in the platform frame [m]
-    delta1, delta2 : axis angles of (1.3) [rad]; (0, 0) is a vertical axis
-    omega : signed speed about the axis e [rad/s]
-    phi0 : angle at t = 0 [rad]
+    part : the exciter (mass, eccentricity, axis, phase, sense σ)
+    speed : its machine's speed ω > 0 [rad/s]
     """
 
-    m: float
-    l: float
-    rho: tuple
-    delta1: float
-    delta2: float
-    omega: float
-    phi0: float
+    part: UnbalancedExciter
+    speed: float
 
-    def axes(self):
-        """(t1, t2, e) of (1.3), (1.7) in the platform frame."""
-        s1, c1, s2, c2 = np.sin(self.delta1), np.cos(self.delta1), np.sin(self.delta2), np.cos(self.delta2)
-        t1 = np.array([s1, -c1, 0.0])
-        t2 = np.array([c1 * c2, s1 * c2, -s2])
-        return t1, t2, np.array([c1 * s2, s1 * s2, c2])  # t1 × t2
+    @property
+    def omega(self) -> float:
+        """The signed speed ω_j = σ ω about the axis e [rad/s] (the paper's)."""
+        return self.part.sense * self.speed
 
-    def eccentric_phasor(self) -> np.ndarray:
-        """λ with L(t) = λ e^{iφ} + conj: λ = l (t1 - i t2) e^{iφ0} / 2 [m]."""
-        t1, t2, _ = self.axes()
-        return 0.5 * self.l * (t1 - 1j * t2) * np.exp(1j * self.phi0)
+
+def rotor(m, l, rho, delta1, delta2, omega, phi0) -> Rotor:
+    """A :class:`Rotor` in the paper's symbols: rotor mass m [kg], eccentricity l [m], axis point
+    ρ = (a, b, c) [m], axis angles δ1, δ2 of (1.3) [rad], signed speed ω_j [rad/s] (negative:
+    turning against e; not 0), angle φ_j0 at t = 0 [rad]."""
+    sense = 1.0 if omega > 0 else -1.0
+    return Rotor(UnbalancedExciter(m, l, tuple(rho), delta1, delta2, phi0, sense), abs(omega))
 
 
 @dataclass(frozen=True)
@@ -133,6 +133,11 @@ class RigidPlatform:
         A, B = self.A, self.B
         return np.array([[0.0, 0.0, 0.0], [A, 0.0, 0.0], [A, B, 0.0], [0.0, B, 0.0]])
 
+    @property
+    def isolators(self) -> Isolators:
+        """The support: the twelve springs at the corners from O1, the loss factor and the dashpots."""
+        return Isolators(self.corners, self.stiffness, self.eta, self.beta)
+
 
 def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
     """J_O1 = J_c + M (|r_c|² I - r_c r_cᵀ) (parallel axes) [kg m²]."""
@@ -140,58 +145,8 @@ def inertia_about_corner(M, r_c, J_c) -> np.ndarray:
 
 
 def spring_stiffness(platform: RigidPlatform) -> np.ndarray:
-    """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m]."""
-    return springs_at(platform.corners, platform.stiffness)
-
-
-# ---- trigonometric polynomials of one rotor: arrays over the offsets -2..2 of its angle ----
-
-
-def _product(a, b, kind: str) -> np.ndarray:
-    """The coefficients at offsets -2..2 (shape (5, ...)) of the product of two series a, b given at
-    offsets -1..1 (shape (3, 3) each) with the bilinear ``kind``: "inertia" (a·b) I - a bᵀ,
-    "gyro" (a·b) I - b aᵀ, "moment" a bᵀ - b aᵀ, "cross" a × b."""
-    if kind == "cross":
-        pairs = np.einsum("ikl,jl->ijk", skews(a), b)
-    else:
-        dot = np.einsum("ik,jk->ij", a, b)[..., None, None] * np.eye(3)
-        ab, ba = np.einsum("ik,jl->ijkl", a, b), np.einsum("jk,il->ijkl", b, a)
-        pairs = {"inertia": dot - ab, "gyro": dot - ba, "moment": ab - ba}[kind]
-    out = np.zeros((5,) + pairs.shape[2:], dtype=complex)
-    for i in range(3):
-        out[i : i + 3] += pairs[i]
-    return out
-
-
-@lru_cache(maxsize=256)
-def _rotor_terms(rot: Rotor, g: float) -> dict:
-    """One rotor's parts of S_tot, J, G, K and F (module docstring) at the offsets -2..2 of its
-    angle, each of shape (5, ...), read-only: kept for the next system with this rotor (the
-    tolerance variants of a design change one rotor at most)."""
-    lam, w, m = rot.eccentric_phasor(), rot.omega, rot.m
-    L = np.array([lam.conj(), np.zeros(3), lam])  # offsets -1, 0, 1
-    Ld = np.array([-1j * w * lam.conj(), np.zeros(3), 1j * w * lam])
-    Ldd = -w * w * L
-    S = L + np.array([0.0, 1.0, 0.0])[:, None] * np.asarray(rot.rho, dtype=float)
-
-    def wide(x):  # offsets -1..1 -> -2..2
-        return np.concatenate([np.zeros((1,) + x.shape[1:], dtype=complex), x, np.zeros((1,) + x.shape[1:], dtype=complex)])
-
-    L5, Ldd5 = wide(L), wide(Ldd)
-    tilt = np.einsum("oi,j->oij", L5, E3) - L5[:, 2, None, None] * np.eye(3)
-    terms = {
-        "S": m * wide(S),
-        "J": m * _product(S, S, "inertia"),
-        "G_R": -2.0 * m * skews(wide(Ld)),
-        "G_P": 2.0 * m * _product(S, Ld, "gyro"),
-        "K_R": -m * skews(Ldd5),
-        "K_P": m * _product(S, Ldd, "moment") + g * m * tilt,
-        "F_R": -m * Ldd5,
-        "F_P": -m * _product(S, Ldd, "cross") - g * m * (skews(L5) @ E3),
-    }
-    for value in terms.values():
-        value.setflags(write=False)
-    return terms
+    """K_springs = Σ_i T_iᵀ diag(c_i) T_i, 6×6 [N/m, N, N m], the isolators' at O1."""
+    return platform.isolators.springs
 
 
 @dataclass(frozen=True)
@@ -241,9 +196,8 @@ class PeriodicSystem:
         """D(Ω) = K_0 + i (η sgn Ω + β Ω) K_springs + iΩ G_0 - Ω² M_0 for each Ω, shape (H, 6, 6)
         (of a stack of systems: (V, H, 6, 6))."""
         w = np.asarray(omega, dtype=float)[:, None, None]
-        loss = 1j * (self.eta * np.sign(w) + self.beta * w)
         K0, G0, M0 = (x[..., :1, :, :] for x in (self.stiff, self.gyro, self.mass))
-        return K0 + loss * self.springs[..., None, :, :] + 1j * w * G0 - w * w * M0
+        return K0 + 1j * loss(self.eta, self.beta, w) * self.springs[..., None, :, :] + 1j * w * G0 - w * w * M0
 
 
 def stack(systems) -> PeriodicSystem:
@@ -270,7 +224,7 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
     row = {tuple(k): i for i, k in enumerate(keys.tolist())}
     P = len(keys)
     speeds = np.array([r.omega for r in rotors], dtype=float)
-    M_sigma = platform.M + sum(r.m for r in rotors)
+    M_sigma = platform.M + sum(r.part.m for r in rotors)
     r_c = np.asarray(platform.r_c, dtype=float)
     S_tot = np.zeros((P, 3), dtype=complex)
     S_tot[0] = platform.M * r_c
@@ -280,15 +234,16 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
     zeta_s = platform.M * r_c[2]
     for j, rot in enumerate(rotors):
         at = [row[tuple(o if k == j else 0 for k in range(N))] for o in (-2, -1, 0, 1, 2)]
-        terms = _rotor_terms(rot, platform.g)
-        zeta_s += rot.m * rot.rho[2]
+        terms = rot.part.series(rot.speed, platform.g)
+        zeta_s += rot.part.m * rot.part.rho[2]
         S_tot[at] += terms["S"]
         for name, total in parts.items():
             total[at] += terms[name]
         F[at, :3] += terms["F_R"]
         F[at, 3:] += terms["F_P"]
 
-    springs = spring_stiffness(platform)
+    support = platform.isolators
+    springs = support.springs
     s = skews(S_tot)
     mass = np.zeros((P, 6, 6), dtype=complex)
     mass[0, :3, :3] = M_sigma * np.eye(3)
@@ -302,7 +257,7 @@ def periodic_system(platform: RigidPlatform, rotors) -> PeriodicSystem:
     static = np.array([0.0, 0.0, -M_sigma * platform.g, -platform.g * S_mean[1], platform.g * S_mean[0], 0.0])  # -g S × e3
     return PeriodicSystem(
         speeds, keys, mass, gyro, stiff, keys[by_key], F[by_key],
-        springs, platform.eta, platform.beta, static,
+        springs, support.eta, support.beta, static,
     )
 
 

@@ -371,10 +371,10 @@ def steady_state(platform, rotors, max_order: int | None = None) -> SteadyState:
     ConvergenceError
         when the iterative solve of a very large harmonic set fails to converge.
 
-    >>> from foundation_calc.solvers.platform.dynamics import RigidPlatform, Rotor, block_inertia, inertia_about_corner
+    >>> from foundation_calc.solvers.platform.dynamics import RigidPlatform, block_inertia, inertia_about_corner, rotor
     >>> p = RigidPlatform(2e4, (1.5, 1.0, 0.65), inertia_about_corner(2e4, (1.5, 1.0, 0.65),
     ...     block_inertia(2e4, 3.0, 2.0, 1.3)), 3.0, 2.0, np.full((4, 3), 1e8), 0.0, 9.81)
-    >>> s = steady_state(p, [Rotor(25.0, 0.2, (1.5, 1.0, 0.65), 0.0, 0.0, 100.0, 0.0)])
+    >>> s = steady_state(p, [rotor(25.0, 0.2, (1.5, 1.0, 0.65), 0.0, 0.0, 100.0, 0.0)])
     >>> round(float(s.static[2]) * 1e4, 4), s.order
     (-4.9111, 5)
     """

@@ -92,8 +92,11 @@ def structure(design: PlatformDesign, model: PlatformModel) -> tuple[Structure, 
 
 
 def unbalance_inertia(design: PlatformDesign, model: PlatformModel) -> float:
-    """Σ m_j l_j² r_j²: the exciters' point masses referred to the main shaft [kg m²]."""
-    return design.m * design.l**2 + sum(x.m * x.l**2 * x.speed_ratio**2 for x in model.extra)
+    """Σ_j J_j (ω_j/ω)², J_j = m_j l_j² the inertia each exciter's motor carries
+    (:meth:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter.carried_inertia`), referred
+    to the main shaft by its speed ratio [kg m²]."""
+    _, rotors = build(design, model)
+    return sum(r.part.carried_inertia(r.speed) * (r.speed / design.omega) ** 2 for r in rotors)
 
 
 __all__ = ["structure", "unbalance_inertia"]

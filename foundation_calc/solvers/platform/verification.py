@@ -20,10 +20,10 @@ from foundation_calc.solvers.platform.design import PlatformDesign
 from foundation_calc.errors import ConvergenceError, PhysicsError
 from foundation_calc.solvers.platform.dynamics import (
     RigidPlatform,
-    Rotor,
     inertia_about_corner,
     natural_frequencies,
     periodic_system,
+    rotor,
     spring_stiffness,
     stack,
     stacked_frequencies,
@@ -85,7 +85,10 @@ class PlatformModel:
 
 
 def build(design: PlatformDesign, model: PlatformModel, stiffness=None, rho=None, zeta=None):
-    """The rigid platform and its rotors for ``design`` (optionally with changed values)."""
+    """The rigid platform on its isolators (:attr:`RigidPlatform.isolators`) and its exciters, each a
+    :class:`~foundation_calc.solvers.platform.dynamics.Rotor` (an exciter part at its machine's
+    speed: an extra rotor at speed ratio r turns at |r| ω, in the sense of r), for ``design``
+    (optionally with changed values)."""
     d = design
     r_c = (d.xi, d.eta, d.zeta if zeta is None else zeta)
     platform = RigidPlatform(
@@ -99,8 +102,8 @@ def build(design: PlatformDesign, model: PlatformModel, stiffness=None, rho=None
         g=d.g,
         beta=2.0 * model.damping_ratio / abs(d.omega),
     )
-    main = Rotor(d.m, d.l, (d.a, d.b, d.c) if rho is None else rho, 0.0, 0.0, d.omega, 0.0)
-    extra = [Rotor(e.m, e.l, e.rho, e.delta1, e.delta2, e.speed_ratio * d.omega, e.phi0) for e in model.extra]
+    main = rotor(d.m, d.l, (d.a, d.b, d.c) if rho is None else rho, 0.0, 0.0, d.omega, 0.0)
+    extra = [rotor(e.m, e.l, e.rho, e.delta1, e.delta2, e.speed_ratio * d.omega, e.phi0) for e in model.extra]
     return platform, [main, *extra]
 
 

@@ -1,0 +1,140 @@
+"""Isolators under a rigid body (paper 001's vibro-table, Bolotnik et al. [1]_): at each point r_i
+three linear springs c_i1, c_i2, c_i3 along the fixed x, y, z axes, with a hysteretic loss factor η
+and viscous dashpots β c_ij in parallel, as a :class:`~.base.Support`.
+
+Points and axes are the body's (:mod:`foundation_calc.solvers.rigid_body`), from its reference
+point O. The platform's O is its corner O1 (the paper's origin: r_1 = (0, 0, 0),
+r_2 = (A, 0, 0), r_3 = (A, B, 0), r_4 = (0, B, 0)), not a block's centre of the base: the
+interface's "at O" means at the body's reference point, whichever it is. Carried to O
+(:func:`~foundation_calc.solvers.rigid_body.kinematics.springs_at`, the paper's potential (1.2))::
+
+    K = Σ_i T_iᵀ diag(c_i1, c_i2, c_i3) T_i,   T_i = [I, -[r_i]×]                            (1)
+
+6 × 6 and coupled (sway-rocking u_x-θ_y, u_y-θ_x and torsion with sway, from the points' offsets).
+The loss factor makes the springs complex at a frequency Ω, K (1 + iη sgn Ω); with the dashpots
+the force of the isolators is (K + i (η sgn Ω + β Ω) K) q (:func:`loss`). As springs and dashpots
+at O (:meth:`Isolators.impedance`) that is K and the equivalent dashpots
+
+    C(Ω) = (β + η/|Ω|) K       (Ω ≠ 0;  C = β K at Ω = 0, where a hysteretic force vanishes)     (2)
+
+frequency dependent through η alone; iΩ C(Ω) is the exact complex part at every Ω. The
+platform's harmonic balance keeps the complex-stiffness form
+(:meth:`~foundation_calc.solvers.platform.dynamics.PeriodicSystem.dynamic_matrices`), which has no
+time-domain form: the run-up takes η as modal damping (:mod:`foundation_calc.solvers.platform.runup`).
+
+No range of validity applies: linear springs with a constant loss factor, no soil.
+
+References
+----------
+.. [1] N.N. Bolotnik, B.V. Gusev, Nguyen Truong, I.E. Kholmin, F.L. Chernousko, "Calculation of
+   the parameters of a vibration mechanism with unbalanced vibration exciters", Izv. AN SSSR,
+   MTT, 1986, Eq. (1.2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from foundation_calc.solvers.rigid_body.kinematics import springs_at
+from foundation_calc.solvers.supports.base import Assumption, AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.sheet import Grid, Text
+
+#: Why no range of validity applies.
+NO_RANGE = "linear isolator springs with a constant loss factor: no range of frequency applies"
+
+
+def loss(eta, beta, omega) -> np.ndarray:
+    """η sgn Ω + β Ω, the isolators' complex part over K at the frequencies Ω [rad/s] (module
+    docstring); η [-], β [s] broadcast with Ω.
+
+    >>> loss(0.02, 0.001, np.array([-100.0, 0.0, 100.0])).tolist()
+    [-0.12, 0.0, 0.12]
+    """
+    omega = np.asarray(omega, dtype=float)
+    return eta * np.sign(omega) + beta * omega
+
+
+@dataclass(frozen=True)
+class Isolators:
+    """Three-spring isolators at points of the body (module docstring), SI units.
+
+    Attributes
+    ----------
+    points : r_i from O, (n, 3) [m]
+    stiffness : c_ij, (n, 3), columns along x, y, z [N/m]
+    eta : hysteretic loss factor η [-]
+    beta : time constant β of the dashpots β c_ij [s]
+    """
+
+    points: np.ndarray
+    stiffness: np.ndarray
+    eta: float
+    beta: float
+
+    label = "isolators"
+    method = "isolators"
+    unscaled = "[isolators] are not sampled: their springs are the design's, not a soil's modulus"
+
+    @property
+    def springs(self) -> np.ndarray:
+        """K of (1), 6 × 6 [N/m, N/rad, N m/rad]."""
+        return springs_at(self.points, self.stiffness)
+
+    @property
+    def frequency_dependent(self) -> bool:
+        """True with a loss factor: its equivalent dashpots (2) fall as 1/|Ω|."""
+        return self.eta > 0.0
+
+    def impedance(self, omega) -> AtO:
+        """K and C(Ω) of (1), (2) at the frequencies ``omega`` [rad/s], shape omega.shape + (6,)
+        on the diagonal and (6, 6) off it (coupled)."""
+        w = np.asarray(omega, dtype=float)
+        safe = np.where(w == 0.0, 1.0, w)
+        factor = np.where(w == 0.0, self.beta, loss(self.eta, self.beta, w) / safe)[..., None, None]
+        K = np.broadcast_to(self.springs, w.shape + (6, 6))
+        C = factor * K
+        off = 1.0 - np.eye(6)
+        return AtO(np.diagonal(K, axis1=-2, axis2=-1).copy(), np.diagonal(C, axis1=-2, axis2=-1).copy(),
+                   (K * off, C * off))
+
+    def validity(self) -> Validity:
+        """None applies (:data:`NO_RANGE`)."""
+        return Validity(self.method, None, "", NO_RANGE)
+
+    def a0(self, omega) -> tuple:
+        """No a0: the isolators are not a soil."""
+        return None, "no a0: the isolators are springs, not a soil"
+
+    def soil_section(self, speeds) -> SoilSection:
+        """The twelve springs and the damping as data, nothing printed besides."""
+        return SoilSection({"isolators": {"points": np.asarray(self.points).tolist(),
+                                          "stiffness": np.asarray(self.stiffness).tolist(),
+                                          "loss_factor": self.eta, "dashpot_time_constant": self.beta}})
+
+    def assumptions(self) -> tuple[Assumption, ...]:
+        """What the isolators model and how they act at O."""
+        damping = []
+        if self.eta > 0.0:
+            damping.append(f"a hysteretic loss factor η = {self.eta:g} (complex springs K (1 + iη sgn Ω); as dashpots"
+                           " at a frequency Ω, C = η K/|Ω|)")
+        if self.beta > 0.0:
+            damping.append(f"viscous dashpots β c_ij in parallel with the springs, β = {self.beta:.4g} s")
+        return (Assumption("soil", f"{len(self.points)} isolators, each three linear springs c_i1, c_i2, c_i3 along the"
+                                   " fixed x, y, z axes at its point [BC] (1.2); "
+                                   + ("; ".join(damping) if damping else "no damping") + "."),
+                Assumption("base", "The springs carried to the reference point O as K = Σ T_iᵀ diag(c_i) T_i, coupled"
+                                   " (sway with rocking and torsion through the points' offsets); linear, no"
+                                   " preload limit, no lift-off; the ground beneath is rigid."))
+
+    def sheet(self, model, orders) -> list:
+        """The twelve springs as a table, and K at O by (1)."""
+        names = tuple(f"r_{i + 1} = ({p[0]:g}, {p[1]:g}, {p[2]:g}) m" for i, p in enumerate(np.asarray(self.points)))
+        return [Grid("Isolator springs [MN/m]", ("c_i1 (x)", "c_i2 (y)", "c_i3 (z)"), names,
+                     np.asarray(self.stiffness) * 1e-6),
+                Text("K at O = Σ_i T_iᵀ diag(c_i1, c_i2, c_i3) T_i, T_i = [I, -[r_i]×] [BC] (1.2): coupled; "
+                     + ("C(Ω) = (β + η/|Ω|) K." if self.eta > 0.0 else "C = β K."))]
+
+
+__all__ = ["NO_RANGE", "Isolators", "loss"]
