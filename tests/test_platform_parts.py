@@ -83,7 +83,7 @@ def test_the_isolators_dashpots_are_the_platforms_complex_stiffness(eta, beta):
 def test_the_isolators_answer_the_support_interface():
     iso = Isolators(POINTS, STIFFNESS, 0.02, 1e-4)
     assert iso.validity().a0_max is None and iso.a0(np.array([10.0]))[0] is None
-    assert [a.topic for a in iso.assumptions()] == ["soil", "base"]
+    assert [a.topic for a in iso.assumptions()] == ["isolators", "base"]
     assert "η = 0.02" in iso.assumptions()[0].text and "β = 0.0001 s" in iso.assumptions()[0].text
     section = iso.soil_section({"exciter": OMEGA})
     assert section.document["isolators"]["stiffness"] == STIFFNESS.tolist()
@@ -182,3 +182,15 @@ def test_the_exciters_mean_mass_is_the_average_of_its_periodic_mass(part):
     average = part.periodic_inertia(OMEGA, G, 64)[0].mean(axis=0)
     np.testing.assert_allclose(mine, average, rtol=0, atol=1e-12 * np.abs(average).max())
     assert part.carried_inertia(OMEGA) == pytest.approx(part.m * part.l**2, rel=1e-15)
+
+
+def test_the_platform_sheet_states_its_isolators_assumptions():
+    """The sheet's assumptions are the support's: a loss factor and dashpots named with their values."""
+    from foundation_calc.output.report.assumptions import assumptions_section
+    from foundation_calc.scenes import load_scene
+
+    scene = load_scene("configs/platform_damped.toml")
+    scene = scene.model_copy(update={"isolators": scene.isolators.model_copy(update={"damping_ratio": 0.02})})
+    rows = dict(assumptions_section(scene, []).blocks[0].rows)
+    assert "η = 0.005" in rows["isolators"] and "dashpots β c_ij" in rows["isolators"]
+    assert "coupled" in rows["base"] and "corner O1" in rows["base"]

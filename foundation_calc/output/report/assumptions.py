@@ -51,10 +51,13 @@ def _static_missing(limits) -> list[str]:
 
 
 def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
+    from foundation_calc.solvers.platform.verification import build
+
+    platform, _ = build(scene.design(), scene.model())
     rows = [
         ("model", "Rigid platform (with mould and product) on linear isolators; exciters at one speed;"
                   " steady state of the linear 6-DOF equations [BC]."),
-        ("damping", "Isolator loss factor as given; the soil below the frame is rigid."),
+        *((row.topic, row.text) for row in platform.isolators.assumptions()),  # the support's own
     ]
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked."))

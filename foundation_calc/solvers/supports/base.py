@@ -101,9 +101,10 @@ class SoilSection:
 
 @dataclass(frozen=True)
 class Assumption:
-    """One row of the sheet's assumptions a support states: ``topic`` (``"soil"``: what its springs
-    and dashpots model, by which sources, and whether they depend on frequency; ``"base"``: how
-    they act at O, coupled or not, and what the model leaves out) and its ``text``."""
+    """One row of the sheet's assumptions a support states: ``topic`` (``"soil"``, or the support's
+    own name such as ``"isolators"``: what its springs and dashpots model, by which sources, and
+    whether they depend on frequency; ``"base"``: how they act at O, coupled or not, and what the
+    model leaves out) and its ``text``."""
 
     topic: str
     text: str

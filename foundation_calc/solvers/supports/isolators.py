@@ -121,12 +121,13 @@ class Isolators:
                            " at a frequency Ω, C = η K/|Ω|)")
         if self.beta > 0.0:
             damping.append(f"viscous dashpots β c_ij in parallel with the springs, β = {self.beta:.4g} s")
-        return (Assumption("soil", f"{len(self.points)} isolators, each three linear springs c_i1, c_i2, c_i3 along the"
+        return (Assumption("isolators", f"{len(self.points)} isolators, each three linear springs c_i1, c_i2, c_i3 along the"
                                    " fixed x, y, z axes at its point [BC] (1.2); "
                                    + ("; ".join(damping) if damping else "no damping") + "."),
-                Assumption("base", "The springs carried to the reference point O as K = Σ T_iᵀ diag(c_i) T_i, coupled"
-                                   " (sway with rocking and torsion through the points' offsets); linear, no"
-                                   " preload limit, no lift-off; the ground beneath is rigid."))
+                Assumption("base", "The springs act together at the reference point O (a platform's: its corner O1)"
+                                   " as K = Σ T_iᵀ diag(c_i) T_i, coupled (sway with rocking and torsion through the"
+                                   " points' offsets); linear, without lift-off; the ground beneath the isolators is"
+                                   " rigid."))
 
     def sheet(self, model, orders) -> list:
         """The twelve springs as a table, and K at O by (1)."""
