@@ -194,3 +194,81 @@ def test_the_platform_sheet_states_its_isolators_assumptions():
     rows = dict(assumptions_section(scene, []).blocks[0].rows)
     assert "η = 0.005" in rows["isolators"] and "dashpots β c_ij" in rows["isolators"]
     assert "coupled" in rows["base"] and "corner O1" in rows["base"]
+
+
+# ---- the exciter on a block: one module, no edit across checks/ or output/ ----
+
+BLOCK = (6.0, 4.0, 2.0, 2400.0)  # L, B, H [m], density [kg/m³]
+SPRINGS = np.array([6.0e9, 5.5e9, 8.0e9, 4.0e10, 7.0e10, 5.0e10])
+DASHPOTS = np.array([1.5e7, 1.5e7, 2.5e7, 3.0e7, 5.0e7, 2.0e7])
+EXCITER = UnbalancedExciter(40.0, 0.15, (0.5, 0.3, 2.4), 0.3, 1.1, 0.4, -1.0)
+
+
+def _with_exciter(machine) -> list:
+    """The builder a scene key would register: the machine named "vibrator" carries EXCITER."""
+    return [EXCITER] if machine.name == "vibrator" else []
+
+
+def _direct_block(omega):
+    """Complex amplitude of q at ω from (K - ω² M + iω C) Z = Q, written out: the block, the
+    machine's frame and the rotor as a ring m l²/2 (I + e eᵀ) about ρ; the rotating force
+    m ω² L and the weight's moment -g m L × e3 of L = l (t1 cos θ + t2 sin θ), θ = σωt + φ0,
+    as Re(Q e^{iωt})."""
+    L_, B_, H_, rho = BLOCK
+    m_b = L_ * B_ * H_ * rho
+    p = EXCITER
+    t1 = np.array([math.sin(p.delta1), -math.cos(p.delta1), 0.0])
+    t2 = np.array([math.cos(p.delta1) * math.cos(p.delta2), math.sin(p.delta1) * math.cos(p.delta2), -math.sin(p.delta2)])
+    e = np.cross(t1, t2)
+    bodies = [(m_b, (0.0, 0.0, H_ / 2.0), np.diag([B_**2 + H_**2, L_**2 + H_**2, L_**2 + B_**2]) * m_b / 12.0),
+              (5.0e3, (0.5, 0.2, 2.5), np.diag([1.0e3, 2.0e3, 2.0e3])),
+              (p.m, p.rho, 0.5 * p.m * p.l**2 * (np.eye(3) + np.outer(e, e)))]
+    M = sum(mass_matrix(m, np.array(r), parallel_axis(m, np.array(r), J)) for m, r, J in bodies)
+    z_G = sum(m * r[2] for m, r, _ in bodies) / M[0, 0]
+    K = np.diag(SPRINGS).astype(float)
+    K[3, 3] -= M[0, 0] * G * z_G
+    K[4, 4] -= M[0, 0] * G * z_G
+    # cos θ = Re(e^{iσ(ωt)} e^{iφ0}), sin θ = Re(-i e^{iσ ωt} e^{iφ0}); σ = -1 turns the phasor's conjugate
+    phasor = p.l * (t1 - 1j * t2) * np.exp(1j * p.phi0)
+    L_hat = phasor if p.sense > 0 else phasor.conj()
+    F, Mw = p.m * omega**2 * L_hat, -G * p.m * np.cross(L_hat, E3)
+    Q = np.concatenate([F, Mw + np.cross(p.rho, F)])
+    return np.linalg.solve(K - omega**2 * M + 1j * omega * np.diag(DASHPOTS), Q), M
+
+
+def test_an_exciter_part_on_a_block_runs_through_the_machine_interface(monkeypatch, tmp_path):
+    import foundation_calc as fc
+    from foundation_calc.scenes import block_parts
+
+    monkeypatch.setattr(block_parts, "MACHINE_PARTS", [*block_parts.MACHINE_PARTS, _with_exciter])
+    L_, B_, H_, rho = BLOCK
+    path = tmp_path / "vibrator.toml"
+    path.write_text(f"""kind = "block_foundation"
+name = "exciter on a block"
+[block]
+length = {L_}
+width = {B_}
+height = {H_}
+density = {rho}
+[[machines]]
+name = "vibrator"
+mass = 5.0e3
+cog = [0.5, 0.2, 2.5]
+inertia = [1.0e3, 2.0e3, 2.0e3]
+speed_rpm = 1450.0
+[soil]
+method = "springs"
+stiffness = {SPRINGS.tolist()}
+dashpot = {DASHPOTS.tolist()}
+[[points]]
+name = "corner"
+at = [3.0, 2.0, 2.0]
+""", encoding="utf-8")
+    omega = 1450.0 * 2.0 * math.pi / 60.0
+    Z, M = _direct_block(omega)
+    found = fc.amplitudes(path).to_dict()
+    assert found["total_mass"] == pytest.approx(M[0, 0], rel=1e-12)
+    peak = np.abs(Z[:3] + np.cross(Z[3:], [3.0, 2.0, 2.0]))
+    assert [found["points"]["corner"]["displacement_peak"][d] for d in "xyz"] == pytest.approx(peak, rel=1e-8)
+    (periodic,) = found["periodic_inertia"]  # the rotor's angle-dependent inertia, by the exact periodic solution
+    assert periodic["machine"] == "vibrator" and periodic["first_approximation_error"] < 1e-3

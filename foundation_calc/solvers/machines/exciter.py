@@ -84,6 +84,8 @@ class UnbalancedExciter(MachinePart):
     phi0: float
     sense: float = 1.0
 
+    periodic = True
+
     def axes(self):
         """(t1, t2, e) of (1.3), (1.7), unit vectors in the body's axes."""
         s1, c1, s2, c2 = np.sin(self.delta1), np.cos(self.delta1), np.sin(self.delta2), np.cos(self.delta2)
