@@ -8,9 +8,13 @@ stiffness acting on the static tilt (-K_k q_s, as in the harmonic balance). Each
 k of the load, at speed ratio r = Σ k_j r_j, splits into a part ∝ Ω² and a constant part (the
 rotating weight), found from the loads at two speeds.
 
-Damping: the dashpots β c_ij (β = 2 D/ω) as the matrix β K_springs; the hysteretic loss factor
-η, which has no time-domain form, as modal damping ζ_i = η/2 on every undamped mode (it keeps the
-hysteretic model's resonant peak at every mode), C = M Φ diag(η ω_i) Φᵀ M with Φ mass-normalised.
+Damping, from the support (:class:`~foundation_calc.solvers.supports.isolators.Isolators`): the
+dashpots β c_ij (β = 2 D/ω) as the matrix β K_springs; the hysteretic loss factor η, which has no
+time-domain form, as modal damping ζ_i = η/2 on every undamped mode (it keeps the hysteretic
+model's resonant peak at every mode), C = M Φ diag(η ω_i) Φᵀ M with Φ mass-normalised. So
+Φ_iᵀ C Φ_i = η ω_i = η Φ_iᵀ K Φ_i/ω_i: the isolators' equivalent dashpots η K/|Ω| (Eq. (2)
+there) at each mode's own frequency, on the whole mean stiffness K (the weight's tilt and the
+rotors' mean terms, a small share, included).
 """
 
 from __future__ import annotations
@@ -54,7 +58,8 @@ def structure(design: PlatformDesign, model: PlatformModel) -> tuple[Structure, 
         :func:`~foundation_calc.solvers.platform.dynamics.natural_frequencies`.
     """
     ratios, at_1, system = _loads(design, model, 1.0)
-    natural_frequencies(*build(design, model), system)  # raises before the modal damping's sqrt(p²)
+    platform, rotors = build(design, model)
+    natural_frequencies(platform, rotors, system)  # raises before the modal damping's sqrt(p²)
     _, at_2, _ = _loads(design, model, 2.0)
     w2 = design.omega**2
     inertial_k = (at_2 - at_1) / (3.0 * w2)  # F(s ω) = s² ω² A + B
@@ -76,11 +81,12 @@ def structure(design: PlatformDesign, model: PlatformModel) -> tuple[Structure, 
     M = system.mass[0].real
     K = system.stiff[0].real
     M, K = 0.5 * (M + M.T), 0.5 * (K + K.T)
-    C = system.beta * system.springs
-    if system.eta > 0.0:
+    isolators = platform.isolators
+    C = isolators.beta * isolators.springs
+    if isolators.eta > 0.0:
         p2, shapes = eigh(K, M)
         MP = M @ shapes
-        C = C + MP @ np.diag(system.eta * np.sqrt(p2)) @ MP.T
+        C = C + MP @ np.diag(isolators.eta * np.sqrt(p2)) @ MP.T
     r_c = np.asarray((design.xi, design.eta, design.zeta))
     places = [r_c, *product_corners(design.A, design.B, model.product_height)]
     names = ("centre of mass",) + tuple(
