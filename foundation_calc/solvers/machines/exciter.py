@@ -105,7 +105,12 @@ class UnbalancedExciter(MachinePart):
 
     def mass_properties(self) -> tuple[float, np.ndarray, np.ndarray]:
         """m [kg], the mean centre of mass ρ [m] (the mean of L is zero) and the central inertia
-        of the mean of (1), m l²/2 (I + e eᵀ) [kg m²] (a ring of radius l about e)."""
+        of the mean of (1), m l²/2 (I + e eᵀ) [kg m²] (a ring of radius l about e).
+
+        >>> m, cog, J = UnbalancedExciter(25.0, 0.2, (1.0, 0.5, 2.6), 0.0, 0.0, 0.0).mass_properties()
+        >>> m, cog.tolist(), J.diagonal().round(12).tolist()
+        (25.0, [1.0, 0.5, 2.6], [0.5, 0.5, 1.0])
+        """
         e = self.axes()[2]
         return float(self.m), np.asarray(self.rho, dtype=float), 0.5 * self.m * self.l**2 * (np.eye(3) + np.outer(e, e))
 

@@ -49,7 +49,7 @@ def loss(eta, beta, omega) -> np.ndarray:
     """η sgn Ω + β Ω, the isolators' complex part over K at the frequencies Ω [rad/s] (module
     docstring); η [-], β [s] broadcast with Ω.
 
-    >>> loss(0.02, 0.001, np.array([-100.0, 0.0, 100.0])).tolist()
+    >>> loss(0.02, 0.001, np.array([-100.0, 0.0, 100.0])).round(12).tolist()
     [-0.12, 0.0, 0.12]
     """
     omega = np.asarray(omega, dtype=float)
