@@ -56,7 +56,7 @@ def loss(eta, beta, omega) -> np.ndarray:
     return eta * np.sign(omega) + beta * omega
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # arrays: compared and hashed by identity
 class Isolators:
     """Three-spring isolators at points of the body (module docstring), SI units.
 
