@@ -153,6 +153,7 @@ def _size(loaded, document, searched_grid, judge, given, rule: tuple[bool, float
     import numpy as np
 
     from foundation_calc.checks.design import reference
+    from foundation_calc.checks.design.apply import volumes
     from foundation_calc.checks.design.recheck import recheck
     from foundation_calc.checks.design.search import CHUNK, search, thinned
     from foundation_calc.output.design import PARETO_SHOWN, Sizing
@@ -160,7 +161,8 @@ def _size(loaded, document, searched_grid, judge, given, rule: tuple[bool, float
     evaluate, evaluator, refine = judge
     strict, margin = rule
     confirm = functools.partial(reference.evaluate, document, source=loaded.source)
-    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm, margin=margin)
+    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm, margin=margin,
+                   volume=volumes(loaded.model, given))
     if found.found:
         pareto = thinned(found.pareto, PARETO_SHOWN)
         designs = pareto if pareto.volume[0] == found.best.volume[0] else found.best.joined(pareto)

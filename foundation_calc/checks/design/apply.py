@@ -156,6 +156,22 @@ def _given(document: Mapping[str, Any], scene) -> dict[str, float]:
     return {key: float(block[key.rsplit(".", 1)[1]]) for key in known} | sizing_of(scene).sizes
 
 
+def volumes(scene, given: Mapping[str, float]):
+    """batch -> (n,) the concrete volume [m³] of candidates of ``scene`` (varied key -> (n,); the
+    ``given`` values, :func:`given_dimensions`, where not varied): the block's L B H and what its
+    support adds at the candidates' sizes (:meth:`~foundation_calc.solvers.supports.base.Sizing.concrete`),
+    as the evaluators count it."""
+    sizing = sizing_of(scene)
+
+    def volume(batch) -> np.ndarray:
+        n = len(next(iter(batch.values())))
+        values = {key: np.broadcast_to(np.asarray(batch.get(key, value), dtype=float), (n,)) for key, value in given.items()}
+        L, B, H = (values[key] for key in VARIABLES[scene.kind])
+        return L * B * H + sizing.concrete({key: values[key] for key in sizing.sizes})
+
+    return volume
+
+
 def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
     """The block's length, width and height the scene gives [m], by varied key, and the sizes of
     its support's own it lets a design vary (:attr:`~foundation_calc.solvers.supports.base.Sizing.sizes`);
@@ -306,4 +322,4 @@ def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: s
 
 __all__ = ["ALIASES", "CRANK_DERIVED", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
            "given_dimensions", "moved", "moved_from_c", "moved_positions",
-           "moved_machine_height", "sizing_of", "variable", "variables"]
+           "moved_machine_height", "sizing_of", "variable", "variables", "volumes"]
