@@ -29,6 +29,10 @@ those on an end face follow the face), as ``fcalc check`` sees the scene of
   footprint), its dimensions and the support's sizes against their ranges, the support's own
   warnings of its sizes (a pile group's L/d, active length and spacing), and the scene's findings
   that do not depend on the candidate;
+- ``scene``: where the support's sizes make a scene ``fcalc check`` refuses (a pile group whose
+  piles overlap: :meth:`~foundation_calc.solvers.supports.base.Sizing.size_errors`), the
+  candidate fails it (utilisation inf) and passes every other check with no number, as the
+  reference evaluator judges a scene it cannot build (:mod:`.reference`);
 - ``runup``: not evaluated here (:data:`NOT_EVALUATED`).
 
 Utilisation (demand over capacity, :mod:`.candidates`): resonance, the margin the governing
@@ -393,6 +397,14 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
+    refused = support.size_errors(sizes, L, B)
+    if refused.reasons:  # a candidate whose scene fcalc check refuses fails check "scene" alone, as reference.evaluate says
+        bad = refused.which > 0
+        for check in order:
+            outcome[check], utilisation[check] = np.where(bad, PASS, outcome[check]).astype(np.int8), np.where(bad, np.nan, utilisation[check])
+        outcome["scene"], utilisation["scene"] = np.where(bad, FAIL, PASS).astype(np.int8), np.where(bad, np.inf, np.nan)
+        governing["scene"], reasons["scene"] = refused.which, ("the scene is valid", *refused.reasons)
+        order.append("scene")
     return CandidateVerdicts(
         volume=L * B * H + support.concrete(sizes), mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},

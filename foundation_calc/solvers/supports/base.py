@@ -18,7 +18,8 @@ nothing. The scene keys of a support's own sizes that a design may vary are decl
 before any scene is read; the support of a scene then gives its own values of them
 (:attr:`Sizing.sizes`), the scene with the support at a batch of candidate values
 (:meth:`Sizing.sized`), the concrete it adds (:meth:`Sizing.concrete`), the warnings of each
-candidate's sizes (:meth:`Sizing.size_warnings`), and the scene keys it places under the base that
+candidate's sizes and the errors for which ``fcalc check`` refuses a candidate's scene
+(:meth:`Sizing.size_warnings`, :meth:`Sizing.size_errors`), and the scene keys it places under the base that
 move with a resized plan (:meth:`Sizing.plan_changes`). Whether its springs scale with one factor
 over the soil's modulus range is :attr:`Support.unscaled`.
 """
@@ -184,15 +185,16 @@ class Variable:
 
 
 @dataclass(frozen=True)
-class SizeWarnings:
-    """The warnings of a batch of candidates' sizes, as ``fcalc check`` gives them of each design.
+class SizeFindings:
+    """What ``fcalc check`` finds of each of a batch of candidates' sizes: its warnings, or the
+    errors for which it refuses the candidate's scene.
 
     Attributes
     ----------
     which : per candidate, 0 for none, else 1 + the index in ``reasons`` of the first that applies
-    reasons : what each warns of, without a candidate's numbers (so that candidates tally by it)
+    reasons : what each finds, without a candidate's numbers (so that candidates tally by it)
     keys : the scene keys whose plausibility findings these judge: a finding of a scene under one
-        of them is the candidate's, not the scene's as given
+        of them is the candidate's, not the scene's as given (warnings only)
     """
 
     which: np.ndarray
@@ -220,9 +222,14 @@ class Sizing:
         the scene's), (N,) or a float."""
         return 0.0
 
-    def size_warnings(self, values, L, B) -> SizeWarnings:
+    def size_warnings(self, values, L, B) -> SizeFindings:
         """The warnings of candidates ``values`` (as :meth:`sized`) on bases L × B [m] ((N,) each)."""
-        return SizeWarnings(np.zeros(np.shape(L), dtype=int))
+        return SizeFindings(np.zeros(np.shape(L), dtype=int))
+
+    def size_errors(self, values, L, B) -> SizeFindings:
+        """The candidates (as :meth:`size_warnings`) whose scene ``fcalc check`` refuses for their
+        sizes (a pile group whose piles overlap): ``reasons`` the same for every batch of a scene."""
+        return SizeFindings(np.zeros(np.shape(L), dtype=int))
 
     def plan_changes(self, old, new) -> dict:
         """Scene key -> its new value, of what it places under the base when the plan (L, B) [m]
@@ -231,7 +238,7 @@ class Sizing:
 
 
 #: The hooks of :class:`Sizing`, by name.
-SIZING_HOOKS = ("sizes", "sized", "concrete", "size_warnings", "plan_changes")
+SIZING_HOOKS = ("sizes", "sized", "concrete", "size_warnings", "size_errors", "plan_changes")
 
 
 def sizing(support):
@@ -244,5 +251,5 @@ def sizing(support):
     return SimpleNamespace(**{name: getattr(support, name, getattr(default, name)) for name in SIZING_HOOKS})
 
 
-__all__ = ["MOTIONS", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeWarnings", "Sizing", "SoilSection", "Support",
+__all__ = ["MOTIONS", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing", "SoilSection", "Support",
            "Validity", "Variable", "sizing"]

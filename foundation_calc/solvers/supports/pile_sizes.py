@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.solvers.supports.base import SizeWarnings, Variable
+from foundation_calc.solvers.supports.base import SizeFindings, Variable
 
 #: The ranges the single pile's closed forms and the group's factors were fitted or verified over
 #: (module docstring): E_p/E_s, L/d and the least S/d.
@@ -83,18 +83,32 @@ def too_close(S_min, d):
     return np.asarray(S_min) < VALIDITY["spacing"] * d
 
 
-def warnings(piles, E_s, plan, d, length, L, B) -> SizeWarnings:
+#: Why ``fcalc check`` refuses a candidate's scene (:meth:`~foundation_calc.scenes.block_piles.BlockPiles._do_not_overlap`).
+OVERLAP = "the piles overlap (the closest heads less than piles.diameter apart)"
+
+
+def _first(found) -> np.ndarray:
+    """Per candidate, 0 where none of ``found`` (boolean arrays, in order) applies, else 1 + the first's index."""
+    which = np.zeros(np.broadcast_shapes(*(np.shape(f) for f in found)), dtype=int)
+    for code, flags in reversed(list(enumerate(found, start=1))):
+        which = np.where(flags, code, which)
+    return which
+
+
+def warnings(piles, E_s, plan, d, length, L, B) -> SizeFindings:
     """The warnings (:data:`WARNINGS`) of candidate piles d × L [m] of the ``[piles]`` table
     ``piles`` (its heads given under ``plan``) on bases L × B [m], in a soil of E_s [Pa] at depth d;
     arrays (N,) each."""
     x, y = heads(piles.positions, plan, L, B)
     found = (slenderness_outside(d, length), shorter_than_active(d, length, E_s, piles.modulus, piles.soil_profile)[0],
              too_close(closest(x, y), d))
-    which = np.zeros(np.broadcast_shapes(*(np.shape(f) for f in found)), dtype=int)
-    for code, flags in reversed(list(enumerate(found, start=1))):  # the first that applies names the reason
-        which = np.where(flags, code, which)
-    return SizeWarnings(which, tuple(text for _, text in WARNINGS), tuple(dict.fromkeys(key for key, _ in WARNINGS)))
+    return SizeFindings(_first(found), tuple(text for _, text in WARNINGS), tuple(dict.fromkeys(key for key, _ in WARNINGS)))
 
 
-__all__ = ["VALIDITY", "VARIABLES", "WARNINGS", "WHERE", "closest", "concrete", "heads", "shorter_than_active",
-           "slenderness_outside", "too_close", "warnings"]
+def errors(piles, plan, d, L, B) -> SizeFindings:
+    """The candidates d [m] on bases L × B [m] whose piles overlap (:data:`OVERLAP`), arrays (N,) each."""
+    return SizeFindings(_first([closest(*heads(piles.positions, plan, L, B)) < d]), (OVERLAP,))
+
+
+__all__ = ["OVERLAP", "VALIDITY", "VARIABLES", "WARNINGS", "WHERE", "closest", "concrete", "errors", "heads",
+           "shorter_than_active", "slenderness_outside", "too_close", "warnings"]

@@ -30,7 +30,7 @@ import numpy as np
 from foundation_calc.solvers.supports.base import MOTIONS, Assumption, FrequencyTable, SoilSection, Validity
 from foundation_calc.solvers.supports.footing import Footing
 from foundation_calc.solvers.supports.footing_springs import six_springs
-from foundation_calc.solvers.supports.pile_sizes import VARIABLES, concrete, heads, warnings
+from foundation_calc.solvers.supports.pile_sizes import VARIABLES, concrete, errors, heads, warnings
 from foundation_calc.solvers.supports.sheet import Grid, HandCalc, Rows, Text
 from foundation_calc.units import hz_from_omega
 
@@ -138,6 +138,10 @@ class Piles(Footing):
         """L/d, the active length and the spacing of each candidate's piles on its base (:func:`~.pile_sizes.warnings`)."""
         d, length = self._dimensions(values)
         return warnings(self.piles, 3.0 * self.soil.G, self.soil.plan, d, length, L, B)
+
+    def size_errors(self, values, L, B):
+        """The candidates whose piles overlap on their base (:func:`~.pile_sizes.errors`)."""
+        return errors(self.piles, self.soil.plan, self._dimensions(values)[0], L, B)
 
     def plan_changes(self, old, new) -> dict:
         """The heads keep their place in the plan: x scaled with L, y with B."""
