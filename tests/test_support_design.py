@@ -15,14 +15,9 @@ import pytest
 
 import foundation_calc as fc
 from foundation_calc.solvers.supports import register, unregister
-from foundation_calc.solvers.supports.base import Assumption, AtO, SoilSection, Validity, Variable
-
-#: The toy's springs [N/m, N/rad, N m/rad] and dashpots at O at the scale 1, a sway-rocking coupling.
-K_TOY = np.diag([2.0e9, 1.8e9, 3.0e9, 2.0e10, 3.0e10, 1.5e10])
-K_TOY[0, 4] = K_TOY[4, 0] = -1.0e9
-C_TOY = np.diag([2.0e7, 1.9e7, 3.0e7, 4.0e7, 6.0e7, 3.0e7])
-C_TOY[0, 4] = C_TOY[4, 0] = -5.0e6
-OFF = 1.0 - np.eye(6)
+from foundation_calc.solvers.supports.base import AtO, Variable
+from tests import test_support_interface as toy_support
+from tests.test_support_interface import C_TOY, K_TOY, OFF
 
 #: soil.c_z [N/m³] of the scale 1; the toy's concrete per unit of scale [m³].
 C_REF = 1.0e8
@@ -30,48 +25,16 @@ CONCRETE = 4.0
 
 SCALE = Variable("soil.c_z", "toy's spring scale", "the toy scene", "N/m³", 1.0e7, 4.0e8)
 
-SCENE = """
-kind = "block_foundation"
-name = "toy sized"
-
-[block]
-length = 5.0
-width = 3.0
-height = 1.6
-density = 2400.0
-
-[[machines]]
-name = "fan"
-mass = 9.0e3
-cog = [1.4, 0.0, 2.6]
-inertia = [4.0e3, 6.0e3, 6.0e3]
-speed_rpm = 990.0
-
-[machines.unbalance]
-balance_grade_mm_s = 6.3
-rotor_mass = 2.5e3
-axis = [1.0, 0.0, 0.0]
-at = [1.8, 0.0, 2.7]
-
-[soil]
-method = "coefficients"
-c_z = 1.0e8
-c_x = 7.0e7
-
-[limits]
-velocity = 2.0e-3
-"""
+#: The toy scene of tests/test_support_interface.py, its springs' scale the subgrade coefficient, and a limit.
+SCENE = (toy_support.SCENE.replace('name = "toy"', 'name = "toy sized"')
+         .replace('method = "springs"\nstiffness = [1.0e9, 1.0e9, 1.0e9, 1.0e10, 1.0e10, 1.0e10]',
+                  'method = "coefficients"\nc_z = 1.0e8\nc_x = 7.0e7\n\n[limits]\nvelocity = 2.0e-3'))
 
 
-class Toy:
-    """Constant springs at O times ``scale`` (floats, or (N,) over a batch of candidates), the
-    dashpots constant: the interface and three of the sizing hooks (no warnings, nothing moves
-    with the plan: the defaults)."""
-
-    label = "toy"
-    method = "toy"
-    unscaled = None
-    frequency_dependent = False
+class Toy(toy_support.Toy):
+    """The toy's springs at O times ``scale`` (floats, or (N,) over a batch of candidates), its
+    dashpots as they are: three of the sizing hooks (no warnings, nothing moves with the plan: the
+    defaults)."""
 
     def __init__(self, scale):
         self.scale = np.asarray(scale, dtype=float)
@@ -83,21 +46,6 @@ class Toy:
         s = np.broadcast_to(s, shape)
         return AtO(s[..., None] * np.diagonal(K_TOY), np.broadcast_to(np.diagonal(C_TOY), shape + (6,)),
                    (s[..., None, None] * (K_TOY * OFF), np.broadcast_to(C_TOY * OFF, shape + (6, 6))))
-
-    def validity(self) -> Validity:
-        return Validity("toy", None, "", "the toy's springs are constant: no range of a0 applies")
-
-    def a0(self, omega):
-        return None, "no a0"
-
-    def soil_section(self, speeds) -> SoilSection:
-        return SoilSection({}, ())
-
-    def assumptions(self) -> tuple:
-        return (Assumption("soil", "The toy support: constant springs times a scale."),)
-
-    def sheet(self, model, orders) -> list:
-        return []
 
     @property
     def sizes(self) -> dict:

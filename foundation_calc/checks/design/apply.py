@@ -141,8 +141,8 @@ def sizing_of(scene):
     return Sizing() if support is None else sizing(support())
 
 
-def _given(document: Mapping[str, Any], scene) -> dict[str, float]:
-    """:func:`given_dimensions` of ``document``, parsed as ``scene``."""
+def _given(document: Mapping[str, Any], sizing) -> dict[str, float]:
+    """:func:`given_dimensions` of ``document``, whose support's sizing hooks are ``sizing``."""
     kind = document.get("kind")
     known = VARIABLES.get(kind)
     if known is None:
@@ -153,7 +153,7 @@ def _given(document: Mapping[str, Any], scene) -> dict[str, float]:
     if needed:
         raise VaryError(f"the block's dimensions can vary only when the scene gives {table} length, width, height"
                         f" and density (missing: {', '.join(needed)})")
-    return {key: float(block[key.rsplit(".", 1)[1]]) for key in known} | sizing_of(scene).sizes
+    return {key: float(block[key.rsplit(".", 1)[1]]) for key in known} | sizing.sizes
 
 
 def volumes(scene, given: Mapping[str, float]):
@@ -179,7 +179,7 @@ def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
     mass, a crank scene without ``[foundation.block]``) raises :class:`VaryError` naming what it needs."""
     from foundation_calc.scenes import parse_scene
 
-    return _given(document, parse_scene(document, "<design>"))
+    return _given(document, sizing_of(parse_scene(document, "<design>")))
 
 
 def moved(position, old: tuple[float, float, float], new):
@@ -292,7 +292,8 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
 
     kind = document.get("kind")
     scene = parse_scene(document, "<design>")
-    old_values = _given(document, scene)
+    sizing = sizing_of(scene)
+    old_values = _given(document, sizing)
     new_values = dict(old_values)
     for key, value in candidate.items():
         found = variable(kind, key)
@@ -307,7 +308,7 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
         _crank_positions(result, old, new)
     else:
         _block_positions(result, scene, old, new)
-    for key, value in sizing_of(scene).plan_changes(old[:2], new[:2]).items():
+    for key, value in sizing.plan_changes(old[:2], new[:2]).items():
         _put(result, key, value)
     return result
 

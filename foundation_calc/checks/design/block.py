@@ -287,7 +287,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     """
     unscaled = scene.support().unscaled
     if unscaled is not None and scene.soil.modulus_range is not None:
-        raise NotImplementedError(f"{OVER_RANGE}, and a block on {unscaled}")
+        raise NotImplementedError(f"{OVER_RANGE} a block on {unscaled}")
     if scene.limits.code is not None and scene.limits.foundation is None:
         from foundation_calc.checks.support import PER_CANDIDATE
 
@@ -304,7 +304,7 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
 
 #: Why the batch leaves a support whose springs do not scale with one factor over the soil's
 #: modulus range to fcalc check's path.
-OVER_RANGE = "the batch scales the support's springs by one factor over soil.modulus_range"
+OVER_RANGE = "over soil.modulus_range the batch scales the support's springs by one factor, which does not hold for"
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.

@@ -134,9 +134,9 @@ class Support(Protocol):
     def frequency_dependent(self) -> bool:
         """True when K and C change with frequency."""
 
-    #: why its springs do not scale with one factor on the soil's modulus, so that a sample of the
-    #: soil's stiffness (one factor per draw), and a design's batch over the soil's modulus range,
-    #: do not apply ("[piles] is not sampled: ..."); None when they do
+    #: the support and why its springs do not scale with one factor on the soil's modulus, so that a
+    #: sample of the soil's stiffness (one factor per draw), and a design's batch over the soil's
+    #: modulus range, do not apply ("[piles]: the group's springs do not scale ..."); None when they do
     unscaled: str | None
 
     def impedance(self, omega) -> AtO:

@@ -81,7 +81,7 @@ class Piles(Footing):
     positions are given under; ``dimensions``, the piles' (d, L) [m] of a batch of candidates or None)."""
 
     label = "piles"
-    unscaled = ("[piles] is not sampled: its springs do not scale with one factor on the soil's modulus"
+    unscaled = ("[piles]: the group's springs do not scale with one factor on the soil's modulus"
                 " (EN 1998-5 Table C.1: K ∝ E_s^(1 - n))")
 
     def __init__(self, soil, L, B, masses, D):
