@@ -71,3 +71,12 @@ def test_a_written_design_with_short_piles_is_the_one_fcalc_check_judges(tmp_pat
     with open(written, "rb") as fh:
         assert tomllib.load(fh)["piles"]["length"] == 5.0
     assert {c["check"]: c["verdict"] for c in checked["checks"]}["inputs"] == "warn"
+
+
+@pytest.mark.parametrize("config", ["block_two_machines.toml", "compressor_medium_sand_lysmer.toml"])
+def test_a_pile_size_in_a_scene_without_piles_is_a_usage_error(config):
+    """A support's size that the scene's support does not have: exit 2 naming what has it, before any search."""
+    from foundation_calc.errors import UsageError
+
+    with pytest.raises(UsageError, match=r"piles.length varies only in a scene with \[piles\]"):
+        fc.design(CONFIGS / config, vary=["piles.length=10:20"])

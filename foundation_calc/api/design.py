@@ -23,7 +23,8 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     vary : iterable of str
         ``--vary``: ``"KEY=LO:HI"`` per dimension [m], e.g. ``["block.length=4:10"]``; keys
         ``block.length``, ``block.width``, ``block.height`` (a crank scene's
-        ``foundation.block.*``).
+        ``foundation.block.*``), and the sizes the scene's support lets a design vary
+        (``piles.length``, ``piles.diameter`` of a block on ``[piles]``).
     step : float, optional
         ``--step``: grid step of every range [m] (default 0.1).
     points : int, optional
@@ -52,7 +53,7 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     UsageError
         A bad range or option.
     """
-    from foundation_calc.checks.design.apply import VaryError, given_dimensions
+    from foundation_calc.checks.design.apply import VaryError, given_dimensions, variable
     from foundation_calc.checks.design.grid import grid, parse_range
     from foundation_calc.errors import UsageError
     from foundation_calc.scenes.unit_strings import with_unit_strings_converted
@@ -67,8 +68,11 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
         return Result("design", {}, 1, "fail", loaded, failed)
     try:
         given = given_dimensions(document)
+        ranges = [parse_range(text) for text in vary]
+        for found in ranges:
+            variable(loaded.kind, found.key, given)  # a key this scene has not (a support's size): refused here
         evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded.model, document, loaded.source, given)
-        searched_grid = grid(loaded.kind, [parse_range(text) for text in vary], step, points, maximum, evaluator)
+        searched_grid = grid(loaded.kind, ranges, step, points, maximum, evaluator)
     except VaryError as exc:
         raise UsageError(str(exc), "'--vary'") from None
     sizing = _size(loaded, document, searched_grid, (evaluate, evaluator, refine), given, (strict, margin))

@@ -39,9 +39,9 @@ A vectorised evaluator applies the same rule on arrays with :func:`moved` and
 from __future__ import annotations
 
 import copy
+import dataclasses
 import difflib
 from collections.abc import Mapping
-import dataclasses
 from typing import Any
 
 import numpy as np
@@ -88,6 +88,7 @@ def variables(kind: str) -> dict[str, Variable]:
 
     return VARIABLES[kind] | {key: _bounded(found) for key, found in design_variables().items()}
 
+
 #: scene kind -> {shorthand: varied key}.
 ALIASES: dict[str, dict[str, str]] = {
     "crank_foundation": {f"block.{side}": f"foundation.block.{side}" for side in ("length", "width", "height")},
@@ -101,19 +102,24 @@ CRANK_DERIVED = ("mass", "moment_of_inertia", "cog_height", "base_area", "base_s
 ON_FACE = 1e-3
 
 
-def variable(kind: str, key: str) -> Variable:
-    """The :class:`Variable` of ``key`` (or its shorthand) in a scene of ``kind``.
+def variable(kind: str, key: str, given: Mapping[str, float] | None = None) -> Variable:
+    """The :class:`Variable` of ``key`` (or its shorthand) in a scene of ``kind``; with ``given``
+    (the scene's values, :func:`given_dimensions`), one of the keys that scene has.
 
     Raises
     ------
     VaryError
-        naming the keys that can vary, and the nearest one to a misspelt key.
+        naming the keys that can vary (in the scene, with ``given``), and the nearest one to a
+        misspelt key; or, with ``given``, a support's size the scene's support does not have.
     """
     if kind not in VARIABLES:
         kinds = ", ".join(f'"{k}"' for k in VARIABLES)
         raise VaryError(f'a "{kind}" scene has no dimensions fcalc design can vary (it sizes {kinds} scenes)')
-    known = variables(kind)
+    every = variables(kind)
     key = ALIASES.get(kind, {}).get(key, key)
+    if given is not None and key in every and key not in given:
+        raise VaryError(f"{key} varies only in {every[key].where}")
+    known = every if given is None else {k: v for k, v in every.items() if k in given}
     if key in known:
         return known[key]
     names = list(known) + list(ALIASES.get(kind, {}))
@@ -296,10 +302,7 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
     old_values = _given(document, sizing)
     new_values = dict(old_values)
     for key, value in candidate.items():
-        found = variable(kind, key)
-        if found.key not in old_values:
-            raise VaryError(f"{found.key} varies only in {found.where}")
-        new_values[found.key] = float(value)
+        new_values[variable(kind, key, old_values).key] = float(value)
     result = copy.deepcopy(dict(document))
     for key, value in new_values.items():
         _put(result, key, value)

@@ -5,9 +5,10 @@ on stacks of matrices instead of one.
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
 height and density) and the sizes of its own its support lets a design vary (the support's
 sizing hooks, :class:`~foundation_calc.solvers.supports.base.Sizing`: every candidate on the
-support at its own sizes, e.g. a pile group's length and diameter); the machines, their loads and the points move with the block's top and end
-faces as :func:`~foundation_calc.checks.design.apply.moved` says (those on the top rise with it,
-those on an end face follow the face), as ``fcalc check`` sees the scene of
+support at its own sizes, e.g. a pile group's length and diameter); the machines, their loads
+and the points move with the block's top and end faces as
+:func:`~foundation_calc.checks.design.apply.moved` says (those on the top rise with it, those on
+an end face follow the face), as ``fcalc check`` sees the scene of
 :func:`~foundation_calc.checks.design.apply.apply`. For each candidate:
 
 - the mass matrix of the block and the machines, the soil's six springs and damping of the base
@@ -358,7 +359,7 @@ def _built(scene, L, B, H) -> Built:
                    for m in scene.machines]
     points = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
     impedance = None
-    if scene.support((L, B), block, cogs).frequency_dependent:  # each mode at its own frequency, each order at n ω, as check_block
+    if scene.support((L, B), block, cogs).frequency_dependent:  # each mode at its own frequency, each order at n ω
 
         def impedance(omega):
             return scene.soil_impedance(omega, base=(L, B), block=block, machine_cogs=cogs)
@@ -401,7 +402,8 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     if refused.reasons:  # a candidate whose scene fcalc check refuses fails check "scene" alone, as reference.evaluate says
         bad = refused.which > 0
         for check in order:
-            outcome[check], utilisation[check] = np.where(bad, PASS, outcome[check]).astype(np.int8), np.where(bad, np.nan, utilisation[check])
+            outcome[check] = np.where(bad, PASS, outcome[check]).astype(np.int8)
+            utilisation[check] = np.where(bad, np.nan, utilisation[check])
         outcome["scene"], utilisation["scene"] = np.where(bad, FAIL, PASS).astype(np.int8), np.where(bad, np.inf, np.nan)
         governing["scene"], reasons["scene"] = refused.which, ("the scene is valid", *refused.reasons)
         order.append("scene")
