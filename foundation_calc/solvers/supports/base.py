@@ -19,8 +19,8 @@ before any scene is read; the support of a scene then gives its own values of th
 (:attr:`Sizing.sizes`), the scene with the support at a batch of candidate values
 (:meth:`Sizing.sized`), the concrete it adds (:meth:`Sizing.concrete`), the warnings of each
 candidate's sizes and the errors for which ``fcalc check`` refuses a candidate's scene
-(:meth:`Sizing.size_warnings`, :meth:`Sizing.size_errors`), and the scene keys it places under the base that
-move with a resized plan (:meth:`Sizing.plan_changes`). Whether its springs scale with one factor
+(:meth:`Sizing.size_warnings`, :meth:`Sizing.size_errors`), and the scene keys it places under
+the base that move with a resized plan (:meth:`Sizing.plan_changes`). Whether its springs scale with one factor
 over the soil's modulus range is :attr:`Support.unscaled`.
 """
 
@@ -164,7 +164,7 @@ class Support(Protocol):
 
 @dataclass(frozen=True)
 class Variable:
-    """A size of a support that a design may vary (``--vary KEY=LO:HI``).
+    """A scene key a design may vary (``--vary KEY=LO:HI``): a size of a support, or a block's dimension.
 
     Attributes
     ----------
