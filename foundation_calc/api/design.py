@@ -23,7 +23,8 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     vary : iterable of str
         ``--vary``: ``"KEY=LO:HI"`` per dimension [m], e.g. ``["block.length=4:10"]``; keys
         ``block.length``, ``block.width``, ``block.height`` (a crank scene's
-        ``foundation.block.*``).
+        ``foundation.block.*``), and the sizes the scene's support lets a design vary
+        (``piles.length``, ``piles.diameter`` of a block on ``[piles]``).
     step : float, optional
         ``--step``: grid step of every range [m] (default 0.1).
     points : int, optional
@@ -52,7 +53,7 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     UsageError
         A bad range or option.
     """
-    from foundation_calc.checks.design.apply import VaryError, given_dimensions
+    from foundation_calc.checks.design.apply import VaryError, given_dimensions, variable
     from foundation_calc.checks.design.grid import grid, parse_range
     from foundation_calc.errors import UsageError
     from foundation_calc.scenes.unit_strings import with_unit_strings_converted
@@ -67,8 +68,11 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
         return Result("design", {}, 1, "fail", loaded, failed)
     try:
         given = given_dimensions(document)
+        ranges = [parse_range(text) for text in vary]
+        for found in ranges:
+            variable(loaded.kind, found.key, given)  # a key this scene has not (a support's size): refused here
         evaluate, evaluator, maximum, refine = _evaluator(loaded.kind, loaded.model, document, loaded.source, given)
-        searched_grid = grid(loaded.kind, [parse_range(text) for text in vary], step, points, maximum, evaluator)
+        searched_grid = grid(loaded.kind, ranges, step, points, maximum, evaluator)
     except VaryError as exc:
         raise UsageError(str(exc), "'--vary'") from None
     sizing = _size(loaded, document, searched_grid, (evaluate, evaluator, refine), given, (strict, margin))
@@ -153,6 +157,7 @@ def _size(loaded, document, searched_grid, judge, given, rule: tuple[bool, float
     import numpy as np
 
     from foundation_calc.checks.design import reference
+    from foundation_calc.checks.design.apply import volumes
     from foundation_calc.checks.design.recheck import recheck
     from foundation_calc.checks.design.search import CHUNK, search, thinned
     from foundation_calc.output.design import PARETO_SHOWN, Sizing
@@ -160,7 +165,8 @@ def _size(loaded, document, searched_grid, judge, given, rule: tuple[bool, float
     evaluate, evaluator, refine = judge
     strict, margin = rule
     confirm = functools.partial(reference.evaluate, document, source=loaded.source)
-    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm, margin=margin)
+    found = search(searched_grid, evaluate, given, strict, refine=refine, confirm=confirm, margin=margin,
+                   volume=volumes(loaded.model, given))
     if found.found:
         pareto = thinned(found.pareto, PARETO_SHOWN)
         designs = pareto if pareto.volume[0] == found.best.volume[0] else found.best.joined(pareto)

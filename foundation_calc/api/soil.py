@@ -63,7 +63,8 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
             if (unscaled := model.support().unscaled) is not None:
-                raise UsageError(f"a block on {unscaled}; give soil.modulus_range and fcalc check judges the range",
+                raise UsageError(f"not sampled, a block on {unscaled}; give soil.modulus_range and fcalc check judges"
+                                 " the range",
                                  "'--sample'")
             drawn = sample_block(model, sample, modulus_cov, seed)
         springs = model.model()

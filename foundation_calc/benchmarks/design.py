@@ -61,7 +61,7 @@ def _grid(kind: str, given: dict[str, float]):
 def benchmark_design(source: str, scene, document, min_time: float) -> DesignTiming:
     """Time the vectorised search and the loop on ``scene`` (module docstring)."""
     from foundation_calc.checks.design import reference
-    from foundation_calc.checks.design.apply import given_dimensions
+    from foundation_calc.checks.design.apply import given_dimensions, volumes
     from foundation_calc.checks.design.candidates import EVALUATORS
     from foundation_calc.checks.design.search import search
 
@@ -70,7 +70,9 @@ def benchmark_design(source: str, scene, document, min_time: float) -> DesignTim
     vectorised = None
     if scene.kind in EVALUATORS:
         evaluate = functools.partial(importlib.import_module(EVALUATORS[scene.kind]).evaluate, scene)
-        vectorised = measure(lambda: search(searched, evaluate, given), min_time=min_time, min_calls=1, max_calls=3)
+        volume = volumes(scene, given)
+        vectorised = measure(lambda: search(searched, evaluate, given, volume=volume), min_time=min_time, min_calls=1,
+                             max_calls=3)
     picked = np.linspace(0, searched.size - 1, LOOP_CANDIDATES).astype(int)
     index = np.unravel_index(picked, searched.shape)
     sample = {a.variable.key: a.values[i] for a, i in zip(searched.axes, index)}

@@ -15,7 +15,8 @@ SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind block_found
 VaryOpt = Annotated[list[str], typer.Option(
     "--vary", metavar="KEY=LO:HI", show_default=False,
     help="A dimension to vary and its range [m], e.g. block.length=4:10; repeat for each. Keys: block.length,"
-    " block.width, block.height (a crank scene's foundation.block.*, block.* as shorthand).",
+    " block.width, block.height (a crank scene's foundation.block.*, block.* as shorthand), and the sizes of the"
+    " scene's support (piles.length, piles.diameter on [piles]).",
 )]
 StepOpt = Annotated[Optional[float], typer.Option(
     "--step", metavar="S", show_default=False, help="Grid step of every range [m] (default 0.1; ends included, so"

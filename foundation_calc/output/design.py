@@ -277,7 +277,9 @@ def _print_pareto(console, document: dict, keys: list[str]) -> None:
     shown, size = len(document["pareto"]), document["pareto_size"]
     title = f"Pareto set: volume against worst margin ({shown} of {size} designs)"
     table = Table(title=title, show_edge=False)
-    for header in (*[k.rsplit(".", 1)[1] + " [m]" for k in keys], "volume [m³]", "mass [t]", "worst margin", "governed by"):
+    last = [k.rsplit(".", 1)[1] for k in keys]
+    names = [name if last.count(name) == 1 else key for name, key in zip(last, keys)]  # piles.length beside block.length
+    for header in (*[name + " [m]" for name in names], "volume [m³]", "mass [t]", "worst margin", "governed by"):
         table.add_column(header, justify="right" if header != "governed by" else "left", overflow="fold")
     for design in document["pareto"]:
         top = max(design["checks"].items(), key=lambda item: -math.inf if item[1]["utilisation"] is None else item[1]["utilisation"])

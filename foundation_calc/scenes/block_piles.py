@@ -24,17 +24,10 @@ from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import SceneModel, quantity
 from foundation_calc.scenes.plausibility import Remark
 from foundation_calc.scenes.soil import HALF_SPACE_METHODS
+from foundation_calc.solvers.supports.pile_sizes import VALIDITY, closest, heads, shorter_than_active, slenderness_outside, too_close
 
 #: A pile head in the base plane: [x, y] from O [m].
 Head = Annotated[list[float], Field(min_length=2, max_length=2)]
-
-#: The ranges the single pile's closed forms were fitted or verified over (module docstrings of
-#: :mod:`~foundation_calc.solvers.piles.single` and :mod:`~foundation_calc.solvers.piles.group`):
-#: E_p/E_s (Gazetas 1991 fitted Table C.1 over 300-10 000; fcalc warns from 100), L/d (Randolph &
-#: Wroth compared with the continuum for L/d 10-100), S/d (Dobry & Gazetas verified 2-10 against
-#: Kaynia & Kausel; wider spacings tend to independent piles, which their form keeps).
-VALIDITY = {"stiffness_ratio": (100.0, 1.0e4), "slenderness": (10.0, 100.0), "spacing": 2.0}
-
 
 class BlockPiles(SceneModel):
     """Piles under the block, their heads in the base plane, the base their rigid cap."""
@@ -89,16 +82,11 @@ class BlockPiles(SceneModel):
                              f" {self.diameter:g} m: the piles overlap (centre distance >= d)")
         return self
 
-    def spacings(self) -> np.ndarray:
-        """The distances between every two pile axes [m], (n, n), 0 on the diagonal."""
-        xy = np.array(self.positions, dtype=float)
-        return np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-
     def related_findings(self, prefix: str, found: list) -> list:
         """L/d outside the range Randolph & Wroth's closed form was compared over (:data:`VALIDITY`)."""
         low, high = VALIDITY["slenderness"]
         ratio = self.length / self.diameter
-        if low <= ratio <= high:
+        if not slenderness_outside(self.diameter, self.length):
             return []
         return [Remark(f"{prefix}length", f"{prefix}length/{prefix}diameter = {ratio:.3g} is outside {low:g}-{high:g},"
                                           " the range Randolph & Wroth's vertical stiffness was compared over")]
@@ -158,10 +146,9 @@ class PiledSoil(BlockSoil):
 
     def related_findings(self, prefix: str, found: list) -> list:
         """The soil's own (:meth:`Soil.related_findings`) and where the piles leave the ranges of
-        their closed forms (:data:`VALIDITY`): E_p/E_s, the length against the active length
-        (Table C.1 holds for flexible piles, L >= l_a) and the spacing."""
-        from foundation_calc.solvers.piles.single import active_length
-
+        their closed forms (:data:`VALIDITY`, :mod:`~foundation_calc.solvers.supports.pile_sizes`):
+        E_p/E_s, the length against the active length (Table C.1 holds for flexible piles,
+        L >= l_a) and the spacing."""
         p, remarks = self._piles, list(super().related_findings(prefix, found))
         E_s = 3.0 * self.G  # EN 1998-5 Annex C: the soil model's Young's modulus, 3 G
         low, high = VALIDITY["stiffness_ratio"]
@@ -169,18 +156,16 @@ class PiledSoil(BlockSoil):
         if not low <= ratio <= high:
             remarks.append(Remark("piles.modulus", f"E_p/E_s = {ratio:.4g} (E_s = 3 G = {E_s:.4g} Pa) is outside"
                                   f" {low:g}-{high:g}, the range of EN 1998-5 Table C.1's fits"))
-        l_a = float(active_length(E_s, p.modulus, p.diameter, p.soil_profile))
-        if p.length < l_a:
+        short, l_a = shorter_than_active(p.diameter, p.length, E_s, p.modulus, p.soil_profile)
+        if short:
             remarks.append(Remark("piles.length", f"piles.length = {p.length:g} m is shorter than the active length"
                                   f" l_a = {l_a:.3g} m: the piles are not flexible, and Table C.1 (flexible piles)"
                                   " overstates their lateral stiffness"))
-        S = p.spacings()
-        if len(S) > 1:
-            S_min = S[~np.eye(len(S), dtype=bool)].min()
-            if S_min < VALIDITY["spacing"] * p.diameter:
-                remarks.append(Remark("piles.positions", f"the closest piles are {S_min:.3g} m = {S_min / p.diameter:.3g} d"
-                                      f" apart, below the {VALIDITY['spacing']:g} d Dobry & Gazetas' factors were"
-                                      " verified from"))
+        S_min = float(closest(*heads(p.positions, self._plan, *self._plan)))
+        if too_close(S_min, p.diameter):
+            remarks.append(Remark("piles.positions", f"the closest piles are {S_min:.3g} m = {S_min / p.diameter:.3g} d"
+                                  f" apart, below the {VALIDITY['spacing']:g} d Dobry & Gazetas' factors were"
+                                  " verified from"))
         return remarks
 
 

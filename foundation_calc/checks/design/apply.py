@@ -2,11 +2,12 @@
 
 The varied keys are the block's dimensions, per kind (:data:`VARIABLES`): a
 ``block_foundation``'s ``block.length``, ``block.width``, ``block.height`` (a block given by
-height and density) and, on ``[piles]``, ``piles.length`` and ``piles.diameter`` (the heads'
-positions scale with the base's plan, x with L and y with B), a ``crank_foundation``'s ``foundation.block.length``, ``width``, ``height``
-(``block.length`` … is accepted as their shorthand). Each has bounds: the plausible range of
-:data:`~foundation_calc.scenes.plausibility.RANGES` (what real blocks measure), so that a search
-never proposes a 5 km block.
+height and density), a ``crank_foundation``'s ``foundation.block.length``, ``width``, ``height``
+(``block.length`` … is accepted as their shorthand); and the sizes of its own that the scene's
+support lets a design vary (:func:`~foundation_calc.solvers.supports.design_variables`, e.g. a
+pile group's ``piles.length`` and ``piles.diameter``: :attr:`~foundation_calc.solvers.supports.base.Sizing.sizes`).
+Each has bounds: the plausible range of :data:`~foundation_calc.scenes.plausibility.RANGES` (what
+real blocks measure), so that a search never proposes a 5 km block, or the support's own.
 
 What changes with the block besides its dimensions (:func:`moved`, one rule for every position
 the scene gives):
@@ -20,6 +21,9 @@ the scene gives):
   machine's centre of mass) moves with that machine's centre of mass (:func:`moved_positions`:
   a block scene's positions are the scene's one list,
   :meth:`~foundation_calc.scenes.block.BlockScene.positions`);
+- what the support places under the base moves with the plan as the support says
+  (:meth:`~foundation_calc.solvers.supports.base.Sizing.plan_changes`: a pile group's heads keep
+  their place in the plan, x scaled with L and y with B);
 - a crank foundation's mass, moment of inertia, centre-of-mass height, base area, second moment
   and base length and width, when the scene gives them beside ``[foundation.block]``, are left out
   of the candidate's document and computed from the block (:data:`CRANK_DERIVED`: given, they
@@ -35,14 +39,15 @@ A vectorised evaluator applies the same rule on arrays with :func:`moved` and
 from __future__ import annotations
 
 import copy
+import dataclasses
 import difflib
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from foundation_calc.errors import ExitCode, FcalcError
+from foundation_calc.solvers.supports.base import Variable
 
 
 class VaryError(FcalcError, ValueError):
@@ -51,43 +56,38 @@ class VaryError(FcalcError, ValueError):
     exit_code = ExitCode.USAGE
 
 
-@dataclass(frozen=True)
-class Variable:
-    """A scene key a search may vary: its dotted path, unit, bounds [unit] and meaning."""
+def _bounded(found: Variable) -> Variable:
+    """``found`` with its bounds and unit: its own, else the plausible range of its key."""
+    if found.low is not None:
+        return found
+    from foundation_calc.scenes.plausibility import KEYS, RANGES
 
-    key: str
-    unit: str
-    low: float
-    high: float
-    text: str
-
-
-def _dimension(key: str, plausible: str, text: str) -> Variable:
-    from foundation_calc.scenes.plausibility import RANGES
-
-    found = RANGES[plausible]
-    return Variable(key, found.unit, found.low, found.high, text)
+    plausible = RANGES[KEYS[found.key]]
+    return dataclasses.replace(found, unit=plausible.unit, low=plausible.low, high=plausible.high)
 
 
 def _variables(prefix: str) -> dict[str, Variable]:
-    return {
-        f"{prefix}length": _dimension(f"{prefix}length", "block_length", "block length along x"),
-        f"{prefix}width": _dimension(f"{prefix}width", "block_length", "block width along y"),
-        f"{prefix}height": _dimension(f"{prefix}height", "block_height", "block height"),
-    }
+    where = "a scene with [foundation.block]" if prefix.startswith("foundation.") else "a block scene"
+    return {key: _bounded(Variable(key, text, where)) for key, text in (
+        (f"{prefix}length", "block length along x"), (f"{prefix}width", "block width along y"),
+        (f"{prefix}height", "block height"))}
 
 
-#: The keys of a block's ``[piles]`` a search may vary (a scene with ``[piles]`` only).
-PILE_VARIABLES: dict[str, Variable] = {
-    "piles.length": _dimension("piles.length", "pile_length", "pile length"),
-    "piles.diameter": _dimension("piles.diameter", "pile_diameter", "pile diameter"),
-}
-
-#: scene kind -> {varied key: Variable}.
+#: scene kind -> {varied key: Variable} of the block's dimensions (the supports' own sizes:
+#: :func:`variables`).
 VARIABLES: dict[str, dict[str, Variable]] = {
-    "block_foundation": _variables("block.") | PILE_VARIABLES,
+    "block_foundation": _variables("block."),
     "crank_foundation": _variables("foundation.block."),
 }
+
+
+def variables(kind: str) -> dict[str, Variable]:
+    """Every key a search may vary in a scene of ``kind``: the block's dimensions and every size a
+    support may let a design vary (the scene's support decides whether it does: :func:`applied_document`)."""
+    from foundation_calc.solvers.supports import design_variables
+
+    return VARIABLES[kind] | {key: _bounded(found) for key, found in design_variables().items()}
+
 
 #: scene kind -> {shorthand: varied key}.
 ALIASES: dict[str, dict[str, str]] = {
@@ -102,19 +102,24 @@ CRANK_DERIVED = ("mass", "moment_of_inertia", "cog_height", "base_area", "base_s
 ON_FACE = 1e-3
 
 
-def variable(kind: str, key: str) -> Variable:
-    """The :class:`Variable` of ``key`` (or its shorthand) in a scene of ``kind``.
+def variable(kind: str, key: str, given: Mapping[str, float] | None = None) -> Variable:
+    """The :class:`Variable` of ``key`` (or its shorthand) in a scene of ``kind``; with ``given``
+    (the scene's values, :func:`given_dimensions`), one of the keys that scene has.
 
     Raises
     ------
     VaryError
-        naming the keys that can vary, and the nearest one to a misspelt key.
+        naming the keys that can vary (in the scene, with ``given``), and the nearest one to a
+        misspelt key; or, with ``given``, a support's size the scene's support does not have.
     """
-    known = VARIABLES.get(kind)
-    if known is None:
+    if kind not in VARIABLES:
         kinds = ", ".join(f'"{k}"' for k in VARIABLES)
         raise VaryError(f'a "{kind}" scene has no dimensions fcalc design can vary (it sizes {kinds} scenes)')
+    every = variables(kind)
     key = ALIASES.get(kind, {}).get(key, key)
+    if given is not None and key in every and key not in given:
+        raise VaryError(f"{key} varies only in {every[key].where}")
+    known = every if given is None else {k: v for k, v in every.items() if k in given}
     if key in known:
         return known[key]
     names = list(known) + list(ALIASES.get(kind, {}))
@@ -133,26 +138,54 @@ def _block_table(document: Mapping[str, Any]) -> dict[str, Any] | None:
     return block if isinstance(block, dict) else None
 
 
-def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
-    """The block's length, width and height the scene gives [m], by varied key; the values a
-    candidate leaves unchanged. A scene without them (a block given by its mass, a crank scene
-    without ``[foundation.block]``) raises :class:`VaryError` naming what it needs."""
+def sizing_of(scene):
+    """The sizing hooks (:func:`~foundation_calc.solvers.supports.base.sizing`) of the support of
+    ``scene``, or the defaults for a scene that gives no support (a crank scene)."""
+    from foundation_calc.solvers.supports.base import Sizing, sizing
+
+    support = getattr(scene, "support", None)
+    return Sizing() if support is None else sizing(support())
+
+
+def _given(document: Mapping[str, Any], sizing) -> dict[str, float]:
+    """:func:`given_dimensions` of ``document``, whose support's sizing hooks are ``sizing``."""
     kind = document.get("kind")
     known = VARIABLES.get(kind)
     if known is None:
         variable(str(kind), "")
     block = _block_table(document)
     table = "[foundation.block]" if kind == "crank_foundation" else "[block]"
-    sides = [key for key in known if key not in PILE_VARIABLES]
-    needed = [key for key in sides if not isinstance((block or {}).get(key.rsplit(".", 1)[1]), (int, float))]
+    needed = [key for key in known if not isinstance((block or {}).get(key.rsplit(".", 1)[1]), (int, float))]
     if needed:
         raise VaryError(f"the block's dimensions can vary only when the scene gives {table} length, width, height"
                         f" and density (missing: {', '.join(needed)})")
-    piles = document.get("piles")
-    given = {key: float(block[key.rsplit(".", 1)[1]]) for key in sides}
-    if isinstance(piles, dict):
-        given |= {key: float(piles[key.rsplit(".", 1)[1]]) for key in PILE_VARIABLES}
-    return given
+    return {key: float(block[key.rsplit(".", 1)[1]]) for key in known} | sizing.sizes
+
+
+def volumes(scene, given: Mapping[str, float]):
+    """batch -> (n,) the concrete volume [m³] of candidates of ``scene`` (varied key -> (n,); the
+    ``given`` values, :func:`given_dimensions`, where not varied): the block's L B H and what its
+    support adds at the candidates' sizes (:meth:`~foundation_calc.solvers.supports.base.Sizing.concrete`),
+    as the evaluators count it."""
+    sizing = sizing_of(scene)
+
+    def volume(batch) -> np.ndarray:
+        n = len(next(iter(batch.values())))
+        values = {key: np.broadcast_to(np.asarray(batch.get(key, value), dtype=float), (n,)) for key, value in given.items()}
+        L, B, H = (values[key] for key in VARIABLES[scene.kind])
+        return L * B * H + sizing.concrete({key: values[key] for key in sizing.sizes})
+
+    return volume
+
+
+def given_dimensions(document: Mapping[str, Any]) -> dict[str, float]:
+    """The block's length, width and height the scene gives [m], by varied key, and the sizes of
+    its support's own it lets a design vary (:attr:`~foundation_calc.solvers.supports.base.Sizing.sizes`);
+    the values a candidate leaves unchanged. A scene without the block's (a block given by its
+    mass, a crank scene without ``[foundation.block]``) raises :class:`VaryError` naming what it needs."""
+    from foundation_calc.scenes import parse_scene
+
+    return _given(document, sizing_of(parse_scene(document, "<design>")))
 
 
 def moved(position, old: tuple[float, float, float], new):
@@ -196,12 +229,10 @@ def _put(document: dict, key: str, value) -> None:
     table[last[0]] = value
 
 
-def _block_positions(document: dict, given: Mapping[str, Any], old, new) -> None:
-    """Every position of the scene ``given`` (the document before the candidate's values), moved
-    onto the candidate's block in ``document`` (:func:`moved_positions`)."""
-    from foundation_calc.scenes import parse_scene
-
-    for key, position in moved_positions(parse_scene(given, "<design>"), old, new).items():
+def _block_positions(document: dict, scene, old, new) -> None:
+    """Every position of ``scene`` (the document before the candidate's values), moved onto the
+    candidate's block in ``document`` (:func:`moved_positions`)."""
+    for key, position in moved_positions(scene, old, new).items():
         _put(document, key, [float(v) for v in position])
 
 
@@ -263,26 +294,25 @@ def applied_document(document: Mapping[str, Any], candidate: Mapping[str, float]
     """A copy of the scene ``document`` (parsed TOML) with the ``candidate``'s values (varied key
     or shorthand -> value [m]) put in, and what depends on them moved or left out (module
     docstring). Keys the candidate does not name keep the scene's values."""
+    from foundation_calc.scenes import parse_scene
+
     kind = document.get("kind")
-    old_values = given_dimensions(document)
+    scene = parse_scene(document, "<design>")
+    sizing = sizing_of(scene)
+    old_values = _given(document, sizing)
     new_values = dict(old_values)
     for key, value in candidate.items():
-        found = variable(kind, key)
-        if found.key in PILE_VARIABLES and found.key not in old_values:
-            raise VaryError(f"{found.key} varies only in a scene with [piles]")
-        new_values[found.key] = float(value)
+        new_values[variable(kind, key, old_values).key] = float(value)
     result = copy.deepcopy(dict(document))
-    block = _block_table(result)
     for key, value in new_values.items():
-        (result["piles"] if key in PILE_VARIABLES else block)[key.rsplit(".", 1)[1]] = value
-    old = tuple(v for k, v in old_values.items() if k not in PILE_VARIABLES)
-    new = tuple(v for k, v in new_values.items() if k not in PILE_VARIABLES)
+        _put(result, key, value)
+    old, new = (tuple(values[key] for key in VARIABLES[kind]) for values in (old_values, new_values))
     if kind == "crank_foundation":
         _crank_positions(result, old, new)
     else:
-        _block_positions(result, document, old, new)
-    if isinstance(result.get("piles"), dict):  # the heads keep their place in the plan, scaled with it
-        result["piles"]["positions"] = [[x * new[0] / old[0], y * new[1] / old[1]] for x, y in result["piles"]["positions"]]
+        _block_positions(result, scene, old, new)
+    for key, value in sizing.plan_changes(old[:2], new[:2]).items():
+        _put(result, key, value)
     return result
 
 
@@ -294,6 +324,6 @@ def apply(document: Mapping[str, Any], candidate: Mapping[str, float], source: s
     return parse_scene(applied_document(document, candidate), source)
 
 
-__all__ = ["ALIASES", "CRANK_DERIVED", "PILE_VARIABLES", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
+__all__ = ["ALIASES", "CRANK_DERIVED", "VARIABLES", "Variable", "VaryError", "applied_document", "apply",
            "given_dimensions", "moved", "moved_from_c", "moved_positions",
-           "moved_machine_height", "variable"]
+           "moved_machine_height", "sizing_of", "variable", "variables", "volumes"]

@@ -3,9 +3,12 @@ candidate blocks at once: the same equations as :func:`~foundation_calc.checks.b
 on stacks of matrices instead of one.
 
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
-height and density); the machines, their loads and the points move with the block's top and end
-faces as :func:`~foundation_calc.checks.design.apply.moved` says (those on the top rise with it,
-those on an end face follow the face), as ``fcalc check`` sees the scene of
+height and density) and the sizes of its own its support lets a design vary (the support's
+sizing hooks, :class:`~foundation_calc.solvers.supports.base.Sizing`: every candidate on the
+support at its own sizes, e.g. a pile group's length and diameter); the machines, their loads
+and the points move with the block's top and end faces as
+:func:`~foundation_calc.checks.design.apply.moved` says (those on the top rise with it, those on
+an end face follow the face), as ``fcalc check`` sees the scene of
 :func:`~foundation_calc.checks.design.apply.apply`. For each candidate:
 
 - the mass matrix of the block and the machines, the soil's six springs and damping of the base
@@ -24,8 +27,13 @@ those on an end face follow the face), as ``fcalc check`` sees the scene of
 - ``office``: eccentricity of the combined centre of mass, bearing pressure, mass ratio;
 - ``inputs``: the plausibility warnings of the candidate's scene (a warning; no number): its
   positions off the block (more than 10 × the base's diagonal from O, below the base, beyond the
-  footprint), its dimensions against their ranges, and the scene's findings that do not depend on
-  the block;
+  footprint), its dimensions and the support's sizes against their ranges, the support's own
+  warnings of its sizes (a pile group's L/d, active length and spacing), and the scene's findings
+  that do not depend on the candidate;
+- ``scene``: where the support's sizes make a scene ``fcalc check`` refuses (a pile group whose
+  piles overlap: :meth:`~foundation_calc.solvers.supports.base.Sizing.size_errors`), the
+  candidate fails it (utilisation inf) and passes every other check with no number, as the
+  reference evaluator judges a scene it cannot build (:mod:`.reference`);
 - ``runup``: not evaluated here (:data:`NOT_EVALUATED`).
 
 Utilisation (demand over capacity, :mod:`.candidates`): resonance, the margin the governing
@@ -49,9 +57,6 @@ from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, Ca
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
 
-#: The keys of a scene's ``[piles]`` a candidate may vary [m] (:func:`_piles`).
-PILE_KEYS = ("piles.length", "piles.diameter")
-
 #: Candidates evaluated together: stacks of this many 6×6 matrices stay in the processor's cache
 #: (10⁵ candidates take about 40 % longer in one piece than in pieces of this size).
 PIECE = 16_384
@@ -73,26 +78,19 @@ _STATUS_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
 _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 
-def _candidates(scene, batch: Batch):
-    """(L, B, H) of every candidate, (N,) each [m]: the scene's values where not varied."""
+def _candidates(scene, sizing, batch: Batch):
+    """((L, B, H) of every candidate, (N,) each [m]; the support's sizes, key -> (N,)): the scene's
+    values where not varied; ``sizing``, the support's sizing hooks."""
     n = len(next(iter(batch.values()))) if batch else 1
-    batch = {key: values for key, values in batch.items() if key not in PILE_KEYS}
-    unknown = sorted(set(batch) - set(VARIABLE_KEYS))
+    unknown = sorted(set(batch) - set(VARIABLE_KEYS) - set(sizing.sizes))
     if unknown:
-        raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can: {', '.join(VARIABLE_KEYS)}")
+        raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can:"
+                         f" {', '.join((*VARIABLE_KEYS, *sizing.sizes))}")
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    return [np.broadcast_to(np.asarray(batch.get(key, getattr(scene.block, key.split(".")[1])), dtype=float), (n,))
-            for key in VARIABLE_KEYS]
-
-
-def _piles(scene, batch: Batch, n: int):
-    """(d, L) of every candidate's piles, (n,) each [m] (the scene's where not varied), or None for a
-    scene without ``[piles]``."""
-    if scene.piles is None:
-        return None
-    return tuple(np.broadcast_to(np.asarray(batch.get(key, getattr(scene.piles, key.split(".")[1])), dtype=float), (n,))
-                 for key in ("piles.diameter", "piles.length"))
+    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS} | sizing.sizes
+    values = {key: np.broadcast_to(np.asarray(batch.get(key, value), dtype=float), (n,)) for key, value in given.items()}
+    return [values.pop(key) for key in VARIABLE_KEYS], values
 
 
 def _block_body(L, B, H, rho):
@@ -231,34 +229,46 @@ def _office(scene, model, L, B, m_b):
     return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
 
 
-def _inputs(scene, L, B, H):
+def _inputs(scene, sizing, sizes, L, B, H):
     """Outcome and governing index of the ``inputs`` check (plausibility warnings), as ``fcalc
     check`` finds them on each candidate's scene: a position not on the candidate's block
     (:func:`~foundation_calc.scenes.block.placement`: mm typed as m, below the base, beyond the
-    footprint), a dimension outside its plausible range, a stratum shallower than twice the
-    candidate base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`), or any
-    finding of the scene that does not depend on the block (the soil, the machines, the limits)."""
+    footprint), a dimension or a size of the support (``sizes``, key -> (N,)) outside its plausible
+    range, the support's own warnings of its sizes (``sizing``'s
+    :meth:`~foundation_calc.solvers.supports.base.Sizing.size_warnings`), a stratum shallower than
+    twice the candidate base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`),
+    or any finding of the scene that does not depend on the candidate (the soil, the machines, the
+    limits)."""
     from foundation_calc.checks.design.apply import moved_positions
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
 
     positions = scene.positions()
+    warned = sizing.size_warnings(sizes, L, B)
+    judged = {*VARIABLE_KEYS, *sizes, *warned.keys}  # findings under these keys are each candidate's
     on_base = {str(r) for r in stratum_remarks(scene.soil, *scene.base)}  # the scene's own base's, judged per candidate below
-    fixed = any(f.key not in positions and f.key not in VARIABLE_KEYS and str(f) not in on_base
+    fixed = any(f.key not in positions and f.key not in judged and str(f) not in on_base
                 for f in scene.plausibility_findings())
-    sizes = np.zeros(L.shape, dtype=bool)
+    outside = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
-        sizes |= RANGES[KEYS[key]].outside(values)
+        outside |= RANGES[KEYS[key]].outside(values)
+    support_outside = np.zeros(L.shape, dtype=bool)
+    for key, values in sizes.items():
+        if key in KEYS:
+            support_outside |= RANGES[KEYS[key]].outside(values)
     placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
     block = (scene.block.length, scene.block.width, scene.block.height)
     for position in moved_positions(scene, block, (L, B, H)).values():
         placed = np.where(placed == 0, placement(position, L, B), placed)
-    governing = np.where(placed > 0, placed, np.where(sizes, 4, np.where(shallow(scene.soil, L, B), 6, 5 if fixed else 0)))
+    own = np.where(support_outside, 7, np.where(warned.which > 0, 7 + warned.which, 0))
+    governing = np.where(placed > 0, placed, np.where(outside, 4, np.where(own > 0, own, np.where(
+        shallow(scene.soil, L, B), 6, 5 if fixed else 0))))
     reasons = ("no input outside its plausible range", "a position from O more than 10 × the base's diagonal (mm typed as m?)",
                "a position below the block's base", "a position beyond the block's footprint",
                "a block dimension outside its plausible range", "an input value outside its plausible range",
-               "soil.stratum_depth less than twice the base's equivalent radius")
+               "soil.stratum_depth less than twice the base's equivalent radius",
+               "a size of the support outside its plausible range", *warned.reasons)
     return np.where(governing > 0, WARN, PASS).astype(np.int8), governing, reasons
 
 
@@ -272,11 +282,13 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         for a key not in :data:`VARIABLE_KEYS`, or a block given by its mass (no dimensions to vary).
     NotImplementedError
         for a code whose support class the modes of each candidate decide (no ``[limits] foundation``),
-        and for a block on piles over the soil's modulus range (the batch scales the soil's springs
-        by one factor, which a pile group's are not: EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
+        and over the soil's modulus range for a support whose springs do not scale with one factor
+        (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: the batch scales them so,
+        :mod:`.block_range`; a pile group's, EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
-    if getattr(scene, "piles", None) is not None and scene.soil.modulus_range is not None:
-        raise NotImplementedError(PILES_OVER_RANGE)
+    unscaled = scene.support().unscaled
+    if unscaled is not None and scene.soil.modulus_range is not None:
+        raise NotImplementedError(f"{OVER_RANGE} a block on {unscaled}")
     if scene.limits.code is not None and scene.limits.foundation is None:
         from foundation_calc.checks.support import PER_CANDIDATE
 
@@ -291,8 +303,9 @@ def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
         return _evaluate_piece(scene, batch)
 
 
-#: Why the batch leaves a piled block over the soil's modulus range to fcalc check's path.
-PILES_OVER_RANGE = "a block on [piles] over soil.modulus_range: the group's springs do not scale with one factor"
+#: Why the batch leaves a support whose springs do not scale with one factor over the soil's
+#: modulus range to fcalc check's path.
+OVER_RANGE = "over soil.modulus_range the batch scales the support's springs by one factor, which does not hold for"
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
@@ -346,7 +359,7 @@ def _built(scene, L, B, H) -> Built:
                    for m in scene.machines]
     points = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
     impedance = None
-    if scene.soil.frequency_dependent:  # each mode at its own frequency, each order at n ω, as check_block
+    if scene.support((L, B), block, cogs).frequency_dependent:  # each mode at its own frequency, each order at n ω
 
         def impedance(omega):
             return scene.soil_impedance(omega, base=(L, B), block=block, machine_cogs=cogs)
@@ -356,14 +369,14 @@ def _built(scene, L, B, H) -> Built:
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     from foundation_calc.checks.runup import judged
+    from foundation_calc.solvers.supports.base import sizing
 
-    L, B, H = _candidates(scene, batch)
-    piles = _piles(scene, batch, len(L))
-    if piles is not None:  # every candidate on its own piles
-        scene = scene.model_copy(update={"soil": scene.soil.with_dimensions(*piles)})
+    support = sizing(scene.support())
+    (L, B, H), sizes = _candidates(scene, support, batch)
+    scene = support.sized(scene, sizes)  # every candidate on its support at its own sizes
     built = _built(scene, L, B, H)
     model, m_b = built.model, built.block_mass
-    found = {"inputs": _inputs(scene, L, B, H)}
+    found = {"inputs": _inputs(scene, support, sizes, L, B, H)}
     outcome, utilisation, governing, reasons = {}, {}, {}, {}
     moving = dynamics(scene, built)
     if getattr(scene.soil, "modulus_range", None) is not None:
@@ -385,11 +398,17 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    from foundation_calc.checks.design.reference import pile_volume
-
-    volume = L * B * H + (0.0 if piles is None else pile_volume(scene.piles, *piles))
+    refused = support.size_errors(sizes, L, B)
+    if refused.reasons:  # a candidate whose scene fcalc check refuses fails check "scene" alone, as reference.evaluate says
+        bad = refused.which > 0
+        for check in order:
+            outcome[check] = np.where(bad, PASS, outcome[check]).astype(np.int8)
+            utilisation[check] = np.where(bad, np.nan, utilisation[check])
+        outcome["scene"], utilisation["scene"] = np.where(bad, FAIL, PASS).astype(np.int8), np.where(bad, np.inf, np.nan)
+        governing["scene"], reasons["scene"] = refused.which, ("the scene is valid", *refused.reasons)
+        order.append("scene")
     return CandidateVerdicts(
-        volume=volume, mass=np.asarray(m_b, dtype=float),
+        volume=L * B * H + support.concrete(sizes), mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},
         governing={c: governing[c] for c in order}, reasons={c: reasons[c] for c in order},
         deferred=tuple(c for c in order if c in NOT_EVALUATED),

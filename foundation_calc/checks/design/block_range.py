@@ -101,7 +101,7 @@ def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarra
     docstring), for candidates ``dimensions`` (L, B, H (N,) each [m]). A candidate that already
     fails a check is not evaluated again for it. ``built(scene, L, B, H)`` (the candidates on a
     scene's soil) and ``dynamics(scene, built, checks)`` are the evaluator's
-    (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent soil Eq. (1) does not
+    (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent support Eq. (1) does not
     hold: there the crossings are not added (:data:`~foundation_calc.checks.design.block.NOT_EVALUATED`)."""
     from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
 
@@ -124,7 +124,7 @@ def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarra
                 found[check] = np.where(valid, np.maximum(found[check], outcome), found[check])
         return found
 
-    if not scene.soil.frequency_dependent:
+    if not scene.support().frequency_dependent:
         judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
     grids = {"resonance": set(modulus_factors(low, high)), "amplitudes": set(modulus_factors(low, high, AMPLITUDE_GRID_POINTS))}
     for factor in sorted(grids["resonance"] | grids["amplitudes"]):

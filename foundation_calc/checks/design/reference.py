@@ -109,19 +109,14 @@ def judged(run) -> tuple[int, float, str]:
 
 
 def block_size(scene) -> tuple[float, float]:
-    """(volume [m³], mass [kg]) of the scene's block; the volume with its piles' (n π d²/4 L), the
-    concrete a design pays for."""
+    """(volume [m³], mass [kg]) of the scene's block; the volume with the concrete its support adds
+    (:meth:`~foundation_calc.solvers.supports.base.Sizing.concrete`, a pile group's n π d²/4 L),
+    the concrete a design pays for."""
+    from foundation_calc.checks.design.apply import sizing_of
+
     block = scene.foundation.block if scene.kind == "crank_foundation" else scene.block
     volume = block.length * block.width * block.height
-    return volume + pile_volume(getattr(scene, "piles", None)), volume * block.density
-
-
-def pile_volume(piles, d=None, L=None):
-    """n π d²/4 L [m³] of ``piles`` (0 without), d and L [m] the piles' unless given (arrays broadcast)."""
-    if piles is None:
-        return 0.0
-    d = piles.diameter if d is None else d
-    return len(piles.positions) * np.pi * d * d / 4.0 * (piles.length if L is None else L)
+    return volume + float(sizing_of(scene).concrete()), volume * block.density
 
 
 def evaluate(document: Mapping[str, Any], batch: Batch, source: str = "<design>") -> CandidateVerdicts:

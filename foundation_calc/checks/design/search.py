@@ -67,6 +67,9 @@ CONFIRM = 20
 
 Evaluate = Callable[[Batch], CandidateVerdicts]
 
+#: batch -> (n,) the candidates' concrete volume [m³].
+Volume = Callable[[Batch], np.ndarray]
+
 #: Errors by which an evaluator says that a candidate cannot be evaluated (module docstring): an
 #: error fcalc reports of a design (:class:`~foundation_calc.errors.FcalcError`: a block that
 #: cannot be built or computed), arithmetic that fails, a singular matrix. Any other error is a
@@ -314,13 +317,16 @@ def _refinement_batch(grid: Grid, best: dict[str, float], factor: int) -> tuple[
     return {a.variable.key: m.ravel() for a, m in zip(grid.axes, mesh)}, steps
 
 
-def _volume(batch: Batch, given: dict[str, float]) -> np.ndarray:
-    """(n,) block volume of the candidates [m³]: the product of the three dimensions."""
-    count = len(next(iter(batch.values())))
-    out = np.ones(count)
-    for key, value in given.items():
-        out = out * (batch[key] if key in batch else value)
-    return out
+def block_volume(given: dict[str, float]) -> Volume:
+    """The candidates' volume [m³] when ``given`` are a block's three dimensions (by varied key)
+    and nothing else adds concrete: their product."""
+    def volume(batch: Batch) -> np.ndarray:
+        out = np.ones(len(next(iter(batch.values()))))
+        for key, value in given.items():
+            out = out * (batch[key] if key in batch else value)
+        return out
+
+    return volume
 
 
 def _confirmed(found: Search, queue: Front, confirm: Evaluate, on_grid: dict[str, int]) -> Front:
@@ -341,13 +347,13 @@ def _confirmed(found: Search, queue: Front, confirm: Evaluate, on_grid: dict[str
     return queue.take(slice(0, 0))
 
 
-def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], chunk: int, refine: int,
+def _refine(found: Search, walk: _Walk, around: Front, volume: Volume, chunk: int, refine: int,
             confirm: Evaluate | None) -> Front:
     """The cheapest design after the refinement around ``around`` (module docstring)."""
     grid = found.grid
     batch, found.refined_steps = _refinement_batch(grid, around.design(0), refine)
     before = around.volume[0]
-    cheaper = _volume(batch, given) < before
+    cheaper = volume(batch) < before
     batch = {k: v[cheaper] for k, v in batch.items()}
     queue = Front.empty(grid.keys)
     for first in range(0, len(next(iter(batch.values()))), chunk):
@@ -368,13 +374,16 @@ def _refine(found: Search, walk: _Walk, around: Front, given: dict[str, float], 
 
 def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool = False, chunk: int = CHUNK,
            refine: int = REFINE, confirm: Evaluate | None = None, bound: int = CONFIRM,
-           margin: float | None = None) -> Search:
+           margin: float | None = None, volume: Volume | None = None) -> Search:
     """Walk ``grid`` in chunks of ``chunk`` with ``evaluate`` (module docstring). ``given``: the
-    scene's block dimensions by varied key [m] (what the volume of the dimensions not varied is);
+    scene's block dimensions by varied key [m]; ``volume``: batch -> (n,) the candidates' volume
+    [m³] as ``evaluate`` finds it, to pass over those no cheaper before judging them (default
+    :func:`block_volume` of ``given``);
     ``refine``: the refinement's factor on the grid step (0 or 1: no refinement); ``confirm``: the
     full path, which judges the checks ``evaluate`` defers, on at most ``bound`` candidates;
     ``margin``: the reserve asked of every utilisation [-] (None: none)."""
     start = time.perf_counter()
+    volume = block_volume(given) if volume is None else volume
     found = Search(grid, strict, bound=bound, margin=margin)
     walk = _Walk(found, evaluate)
     for first in range(0, grid.size, chunk):
@@ -387,7 +396,7 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
         if not len(best.volume):
             found.unconfirmed = walk.queued - found.confirmations
     if len(best.volume) and refine > 1 and any(a.step for a in grid.axes):
-        best = _refine(found, walk, best, given, chunk, refine, confirm)
+        best = _refine(found, walk, best, volume, chunk, refine, confirm)
     found.best = best
     found.pareto = walk.passed
     if found.deferred and confirm is not None and len(best.volume):  # the confirmed design, the batch's front above it
@@ -396,7 +405,7 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
     found.closest = walk.queue.take(slice(0, 1)) if unjudged else walk.all_best
     found.sample = tuple(np.concatenate(parts) for parts in zip(*walk.samples))
     if found.found or unjudged:
-        _tally_cheaper(found, walk, given, chunk, best.volume[0] if found.found else np.inf)
+        _tally_cheaper(found, walk, volume, chunk, best.volume[0] if found.found else np.inf)
         _add_counts(found.cheaper_failures, on_grid)
     else:
         found.cheaper_failures, found.cheaper_count = walk.failures, found.evaluated
@@ -404,14 +413,14 @@ def search(grid: Grid, evaluate: Evaluate, given: dict[str, float], strict: bool
     return found
 
 
-def _tally_cheaper(found: Search, walk: _Walk, given: dict[str, float], chunk: int, limit: float) -> None:
+def _tally_cheaper(found: Search, walk: _Walk, volume: Volume, chunk: int, limit: float) -> None:
     """``cheaper_failures``: the governing failure of each grid candidate cheaper than ``limit``
     [m³] that fails the batch's checks (those cheaper judged again, the others skipped; those
     that cannot be evaluated, counted already, left out)."""
     grid = found.grid
     for first in range(0, grid.size, chunk):
         batch = grid.chunk(first, first + chunk)
-        cheaper = _volume(batch, given) < limit
+        cheaper = volume(batch) < limit
         if not cheaper.any():
             continue
         _, verdicts = walk.judge({k: v[cheaper] for k, v in batch.items()}, count=False)
@@ -428,5 +437,6 @@ def thinned(front: Front, count: int) -> Front:
     return front.take(np.unique(np.round(np.linspace(0, size - 1, count)).astype(int)))
 
 
-__all__ = ["CHUNK", "Front", "REFINE", "SAMPLE", "Search", "UNEVALUABLE", "failure_tally", "passing", "search", "thinned",
+__all__ = ["CHUNK", "Front", "REFINE", "SAMPLE", "Search", "UNEVALUABLE", "Volume", "block_volume", "failure_tally", "passing",
+           "search", "thinned",
            "worst_margin"]

@@ -56,8 +56,11 @@ class ModeBatch:
     matrices): frequencies (..., 6) [rad/s] (0 where unstable), shapes (..., 6, 6), the dominant
     motion as an index into :data:`~foundation_calc.solvers.rigid_body.modes.MOTIONS` (..., 6),
     damping ratios (..., 6) [-], the squared frequencies p² (..., 6) [rad²/s²] as solved, and
-    ``stable`` (...): every squared frequency positive; ``static_frequencies`` (..., 6) [rad/s]:
-    on a frequency-dependent soil (:func:`consistent_batch`) each mode's on the static springs."""
+    ``stable`` (...): every squared frequency positive (on a frequency-dependent soil,
+    :func:`consistent_batch`, on the static springs: a block that tips over, as ``fcalc check``
+    judges it, :func:`consistent_modes`; a spring that turns negative at another mode's frequency,
+    as a pile group's can, is no tipping); ``static_frequencies`` (..., 6) [rad/s]: on a
+    frequency-dependent soil each mode's on the static springs."""
 
     frequencies: np.ndarray
     shapes: np.ndarray
@@ -156,9 +159,8 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     order = np.argsort(p, axis=-1)  # ascending by the proof; round-off may swap equal roots
     sort = lambda a: np.take_along_axis(a, order, -1)  # noqa: E731
     shapes = np.take_along_axis(shapes, order[..., None, :], -1)
-    stable = np.logical_and.reduce([m.stable for m in found])
     pairs = nearest_shapes(static.shapes, shapes, model.M)
-    return ModeBatch(sort(p), shapes, sort(dominant), sort(damping), sort(squared), stable & static.stable,
+    return ModeBatch(sort(p), shapes, sort(dominant), sort(damping), sort(squared), static.stable,
                      np.take_along_axis(static.frequencies, pairs, -1))
 
 

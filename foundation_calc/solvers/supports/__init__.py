@@ -10,6 +10,10 @@ A new support is one module that defines a :class:`~.base.Support` and a builder
 :data:`SHIPPED`, any other (a test's, a plug-in's) hands its builder to :func:`register`.
 :func:`support_of` asks the registered builders, newest first, then the shipped ones in order,
 and the first that recognises the scene builds its support.
+
+The sizes a support lets a design vary (:class:`~.base.Variable`) are declared with it: a shipped
+module's ``VARIABLES``, a registered builder's ``variables``; :func:`design_variables` lists them
+all, so that ``fcalc design`` knows a key before it reads a scene.
 """
 
 from __future__ import annotations
@@ -20,17 +24,32 @@ SHIPPED = ("piles", "footing")
 #: The builders :func:`register` added, newest first.
 BUILDERS: list = []
 
+#: builder -> the sizes its supports let a design vary (:func:`register`'s ``variables``).
+VARIABLES: dict = {}
 
-def register(builder):
-    """Register ``builder(scene, L, B, masses) -> Support | None`` (newest first); returns it, so it
-    serves as a decorator. ``masses``: the body's diagonal of M about O, (..., 6) [kg, kg m²]."""
+
+def register(builder, variables=()):
+    """Register ``builder(scene, L, B, masses) -> Support | None`` (newest first) and the sizes its
+    supports let a design vary (:class:`~.base.Variable` each); returns it, so it serves as a
+    decorator. ``masses``: the body's diagonal of M about O, (..., 6) [kg, kg m²]."""
     BUILDERS.insert(0, builder)
+    VARIABLES[builder] = tuple(variables)
     return builder
 
 
 def unregister(builder) -> None:
     """Remove a builder :func:`register` added."""
     BUILDERS.remove(builder)
+    VARIABLES.pop(builder, None)
+
+
+def design_variables() -> dict:
+    """Key -> :class:`~.base.Variable` of every size a support may let a design vary: the
+    registered builders' and the shipped modules' ``VARIABLES``."""
+    from importlib import import_module
+
+    shipped = [getattr(import_module(f"{__name__}.{name}"), "VARIABLES", ()) for name in SHIPPED]
+    return {v.key: v for group in (*VARIABLES.values(), *shipped) for v in group}
 
 
 def support_of(scene, L, B, masses):
@@ -47,4 +66,4 @@ def support_of(scene, L, B, masses):
     raise LookupError("no support recognises the scene")  # the footing takes every scene: a bug
 
 
-__all__ = ["BUILDERS", "SHIPPED", "register", "support_of", "unregister"]
+__all__ = ["BUILDERS", "SHIPPED", "VARIABLES", "design_variables", "register", "support_of", "unregister"]

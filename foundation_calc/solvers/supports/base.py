@@ -9,6 +9,19 @@ what the documents show of it: its part of ``fcalc soil`` (:class:`SoilSection`)
 sheet's soil section (:mod:`.sheet`) and the assumptions it rests on (:class:`Assumption`: what
 it models, coupled or not at O, frequency-dependent or not, by which sources). Everything here is
 plain data: the output layer renders it.
+
+Sizing (``fcalc design``) asks a support the hooks of :class:`Sizing`, each optional: a support
+that leaves one out takes its default (:func:`sizing`), so one without sizes of its own costs
+nothing. The scene keys of a support's own sizes that a design may vary are declared once, as
+:class:`Variable` (a shipped support's module lists them in ``VARIABLES``; any other hands them to
+:func:`~foundation_calc.solvers.supports.register` with its builder), so that a range names them
+before any scene is read; the support of a scene then gives its own values of them
+(:attr:`Sizing.sizes`), the scene with the support at a batch of candidate values
+(:meth:`Sizing.sized`), the concrete it adds (:meth:`Sizing.concrete`), the warnings of each
+candidate's sizes and the errors for which ``fcalc check`` refuses a candidate's scene
+(:meth:`Sizing.size_warnings`, :meth:`Sizing.size_errors`), and the scene keys it places under
+the base that move with a resized plan (:meth:`Sizing.plan_changes`). Whether its springs scale with one factor
+over the soil's modulus range is :attr:`Support.unscaled`.
 """
 
 from __future__ import annotations
@@ -111,7 +124,7 @@ class Assumption:
 
 
 class Support(Protocol):
-    """What carries the body (module docstring)."""
+    """What carries the body (module docstring); for sizing, optionally the hooks of :class:`Sizing`."""
 
     #: the support as the ``fcalc soil`` title names it (``"'gazetas'"``, ``"piles"``)
     label: str
@@ -122,9 +135,9 @@ class Support(Protocol):
     def frequency_dependent(self) -> bool:
         """True when K and C change with frequency."""
 
-    #: why its springs do not scale with one factor on the soil's modulus, so that a sample of the
-    #: soil's stiffness (one factor per draw) does not apply ("[piles] is not sampled: ..."); None
-    #: when they do
+    #: the support and why its springs do not scale with one factor on the soil's modulus, so that a
+    #: sample of the soil's stiffness (one factor per draw), and a design's batch over the soil's
+    #: modulus range, do not apply ("[piles]: the group's springs do not scale ..."); None when they do
     unscaled: str | None
 
     def impedance(self, omega) -> AtO:
@@ -150,4 +163,94 @@ class Support(Protocol):
         column head, ω [rad/s]) of every frequency the response and the modes took it at."""
 
 
-__all__ = ["MOTIONS", "Assumption", "AtO", "FrequencyTable", "SoilSection", "Support", "Validity"]
+@dataclass(frozen=True)
+class Variable:
+    """A scene key a design may vary (``--vary KEY=LO:HI``): a size of a support, or a block's dimension.
+
+    Attributes
+    ----------
+    key : the scene key, dotted as written (``"piles.length"``)
+    text : what it is, as a message names it (``"pile length"``)
+    where : the scenes that have it, as a message names them (``"a scene with [piles]"``)
+    unit : its unit [SI]
+    low, high : its bounds [unit]; None: the plausible range of the key
+        (:data:`~foundation_calc.scenes.plausibility.KEYS`), what real foundations measure
+    """
+
+    key: str
+    text: str
+    where: str
+    unit: str = "m"
+    low: float | None = None
+    high: float | None = None
+
+
+@dataclass(frozen=True)
+class SizeFindings:
+    """What ``fcalc check`` finds of each of a batch of candidates' sizes: its warnings, or the
+    errors for which it refuses the candidate's scene.
+
+    Attributes
+    ----------
+    which : per candidate, 0 for none, else 1 + the index in ``reasons`` of the first that applies
+    reasons : what each finds, without a candidate's numbers (so that candidates tally by it)
+    keys : the scene keys whose plausibility findings these judge: a finding of a scene under one
+        of them is the candidate's, not the scene's as given (warnings only)
+    """
+
+    which: np.ndarray
+    reasons: tuple = ()
+    keys: tuple = ()
+
+
+class Sizing:
+    """The sizing hooks of a support (module docstring) and their defaults: a support with no
+    sizes a design may vary, that adds no concrete and warns of nothing of its own."""
+
+    @property
+    def sizes(self) -> dict:
+        """Scene key -> the scene's value [the key's unit] of each of its sizes a design may vary."""
+        return {}
+
+    def sized(self, scene, values):
+        """The scene with its support at candidate ``values`` (key -> (N,) of :attr:`sizes`' keys,
+        those not given the scene's): its support built from it (``scene.support(...)``) is then
+        the candidates' batch."""
+        return scene
+
+    def concrete(self, values=None):
+        """The concrete volume it adds [m³] at ``values`` (as :meth:`sized`; None or a key left out:
+        the scene's), (N,) or a float."""
+        return 0.0
+
+    def size_warnings(self, values, L, B) -> SizeFindings:
+        """The warnings of candidates ``values`` (as :meth:`sized`) on bases L × B [m] ((N,) each)."""
+        return SizeFindings(np.zeros(np.shape(L), dtype=int))
+
+    def size_errors(self, values, L, B) -> SizeFindings:
+        """The candidates (as :meth:`size_warnings`) whose scene ``fcalc check`` refuses for their
+        sizes (a pile group whose piles overlap): ``reasons`` the same for every batch of a scene."""
+        return SizeFindings(np.zeros(np.shape(L), dtype=int))
+
+    def plan_changes(self, old, new) -> dict:
+        """Scene key -> its new value, of what it places under the base when the plan (L, B) [m]
+        changes from ``old`` to ``new`` (a design's written scene)."""
+        return {}
+
+
+#: The hooks of :class:`Sizing`, by name.
+SIZING_HOOKS = ("sizes", "sized", "concrete", "size_warnings", "size_errors", "plan_changes")
+
+
+def sizing(support):
+    """The sizing hooks of ``support``: its own, and :class:`Sizing`'s defaults for those it leaves out."""
+    if isinstance(support, Sizing):
+        return support
+    from types import SimpleNamespace
+
+    default = Sizing()
+    return SimpleNamespace(**{name: getattr(support, name, getattr(default, name)) for name in SIZING_HOOKS})
+
+
+__all__ = ["MOTIONS", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing", "SoilSection", "Support",
+           "Validity", "Variable", "sizing"]

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.solvers.supports.base import MOTIONS, Assumption, AtO, SoilSection, Validity
+from foundation_calc.solvers.supports.base import MOTIONS, Assumption, AtO, Sizing, SoilSection, Validity
 from foundation_calc.solvers.supports.footing_springs import six_springs
 from foundation_calc.solvers.supports.sheet import SoilMethod, Text
 
@@ -102,11 +102,12 @@ def six(values, shape) -> np.ndarray:
     return np.stack(np.broadcast_arrays(*values, np.zeros(shape))[:-1], axis=-1)
 
 
-class Footing:
+class Footing(Sizing):
     """The base on the soil ``soil`` (a block's ``[soil]``: its keys as attributes, as
     :func:`~.footing_springs.six_springs` reads them, and ``frequency_dependent``), L × B [m],
     embedded D [m], under a body whose diagonal of M about O is ``masses`` (..., 6) [kg, kg m²]
-    (L, B and the masses: arrays over a batch of candidate blocks, or floats)."""
+    (L, B and the masses: arrays over a batch of candidate blocks, or floats). A design sizes the
+    block, not the footing: :class:`~.base.Sizing`'s defaults."""
 
     def __init__(self, soil, L, B, masses, D):
         self.soil, self.L, self.B, self.masses, self.D = soil, L, B, np.asarray(masses, dtype=float), D

@@ -14,6 +14,11 @@ springs and dashpots and the group's efficiency (its spring over n single piles'
 each machine's speed; on the sheet the single pile's static springs as a hand calculation and the
 group's at rest (its interaction needs a linear solve: the method and the result, not a chain).
 ``tests/test_piles_cli.py`` compares the chain's printed springs with the solver's.
+
+Sizing (:class:`~.base.Sizing`): a design may vary the piles' length and diameter
+(:data:`~.pile_sizes.VARIABLES`); the heads keep their place in a resized plan; the piles add
+n π d²/4 L of concrete; each candidate's piles are judged against the ranges of the closed forms
+as ``fcalc check`` judges a scene's (:mod:`.pile_sizes`).
 """
 
 from __future__ import annotations
@@ -25,6 +30,7 @@ import numpy as np
 from foundation_calc.solvers.supports.base import MOTIONS, Assumption, FrequencyTable, SoilSection, Validity
 from foundation_calc.solvers.supports.footing import Footing
 from foundation_calc.solvers.supports.footing_springs import six_springs
+from foundation_calc.solvers.supports.pile_sizes import VARIABLES, concrete, errors, heads, warnings
 from foundation_calc.solvers.supports.sheet import Grid, HandCalc, Rows, Text
 from foundation_calc.units import hz_from_omega
 
@@ -75,7 +81,7 @@ class Piles(Footing):
     positions are given under; ``dimensions``, the piles' (d, L) [m] of a batch of candidates or None)."""
 
     label = "piles"
-    unscaled = ("[piles] is not sampled: its springs do not scale with one factor on the soil's modulus"
+    unscaled = ("[piles]: the group's springs do not scale with one factor on the soil's modulus"
                 " (EN 1998-5 Table C.1: K ∝ E_s^(1 - n))")
 
     def __init__(self, soil, L, B, masses, D):
@@ -103,15 +109,43 @@ class Piles(Footing):
         from foundation_calc.solvers.piles.cap import pile_group
 
         soil, p = self.soil, self.piles
-        xy = np.array(p.positions, dtype=float)
-        L0, B0 = soil.plan
-        x = xy[:, 0] * (np.asarray(L, dtype=float)[..., None] / L0)
-        y = xy[:, 1] * (np.asarray(B, dtype=float)[..., None] / B0)
+        x, y = heads(p.positions, soil.plan, L, B)
         d, length = (p.diameter, p.length) if soil.dimensions is None else (
             np.reshape(v, np.shape(v) + (1,) * (np.ndim(L) - np.ndim(v))) for v in soil.dimensions)
         return pile_group(x, y, d, length, p.modulus, p.density, soil.G, soil.poisson, soil.density,
                           soil.material_damping or 0.0, p.soil_profile, p.tip == "end_bearing", p.head == "pinned",
                           omega)
+
+    @property
+    def sizes(self) -> dict:
+        """The piles' length and diameter [m], by scene key (:data:`~.pile_sizes.VARIABLES`)."""
+        return {"piles.length": self.piles.length, "piles.diameter": self.piles.diameter}
+
+    def _dimensions(self, values) -> tuple:
+        """(d, L) [m] of candidate ``values`` (key -> (N,); the table's where not given)."""
+        values = {} if values is None else values
+        return tuple(np.asarray(values.get(key, self.sizes[key]), dtype=float) for key in ("piles.diameter", "piles.length"))
+
+    def sized(self, scene, values):
+        """``scene`` with every candidate on its own piles (:meth:`~foundation_calc.scenes.block_piles.PiledSoil.with_dimensions`)."""
+        return scene.model_copy(update={"soil": self.soil.with_dimensions(*self._dimensions(values))})
+
+    def concrete(self, values=None):
+        """n π d²/4 L [m³] of the piles (:func:`~.pile_sizes.concrete`)."""
+        return concrete(len(self.piles.positions), *self._dimensions(values))
+
+    def size_warnings(self, values, L, B):
+        """L/d, the active length and the spacing of each candidate's piles on its base (:func:`~.pile_sizes.warnings`)."""
+        d, length = self._dimensions(values)
+        return warnings(self.piles, 3.0 * self.soil.G, self.soil.plan, d, length, L, B)
+
+    def size_errors(self, values, L, B):
+        """The candidates whose piles overlap on their base (:func:`~.pile_sizes.errors`)."""
+        return errors(self.piles, self.soil.plan, self._dimensions(values)[0], L, B)
+
+    def plan_changes(self, old, new) -> dict:
+        """The heads keep their place in the plan: x scaled with L, y with B."""
+        return {"piles.positions": [[x * new[0] / old[0], y * new[1] / old[1]] for x, y in self.piles.positions]}
 
     def cap(self, L, B, m, omega):
         """The cap's own springs and radiation dashpots (diagonal, six each) where it touches the soil:
@@ -317,4 +351,4 @@ def build(scene, L, B, masses):
     return Piles(scene.soil, L, B, masses, scene.embedment)
 
 
-__all__ = ["SINGLE_ROWS", "Piles", "PilesAt", "build", "single_pile_chain"]
+__all__ = ["SINGLE_ROWS", "VARIABLES", "Piles", "PilesAt", "build", "single_pile_chain"]
