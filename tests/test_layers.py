@@ -193,9 +193,9 @@ def test_an_import_circle_is_caught() -> None:
     assert _circles(graph) == [["a", "b", "c"]]
 
 
-#: The scene modules of a block's supports: they read, validate and carry the keys of ``[soil]`` and
-#: ``[piles]``; the springs and dashpots are computed in ``solvers/supports``.
-SUPPORT_SCENES = ("scenes/block_soil.py", "scenes/block_piles.py")
+#: The scene modules of a block's supports and the crank foundation's scene: they read, validate and
+#: carry the keys of ``[soil]`` and ``[piles]``; the springs and dashpots are computed in ``solvers/supports``.
+SUPPORT_SCENES = ("scenes/block_soil.py", "scenes/block_piles.py", "scenes/crank.py")
 #: What computes a support's springs and dashpots (the soil methods, the pile group under its cap).
 SUPPORT_PHYSICS = ("foundation_calc.solvers.soil", "foundation_calc.solvers.piles.cap", "foundation_calc.solvers.piles.group")
 

@@ -454,15 +454,15 @@ def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
 def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     """The amplitudes of ``scene`` with its soil data as given.
 
-    On a frequency-dependent soil (``soil.frequency_dependent``) every harmonic n of the closed
+    On a frequency-dependent support (its ``frequency_dependent``) every harmonic n of the closed
     forms (first approximation, averaged operator, loads) is solved with the springs and dashpots
     at its own frequency n ω (:func:`splice_harmonics`; the mean, n = 0, on the static springs);
     the exact harmonic balance, which couples the harmonics, takes them at the speed ω.
     """
     omega = scene.speed.omega_rad_s
-    supports = scene_supports(scene)
-    base = _at_soil_frequency(scene, omega if scene.soil.frequency_dependent else 0.0, exact, supports)
-    if not scene.soil.frequency_dependent:
+    supports, dependent = scene_supports(scene), scene.support().frequency_dependent
+    base = _at_soil_frequency(scene, omega if dependent else 0.0, exact, supports)
+    if not dependent:
         return base
     live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
     width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)

@@ -228,7 +228,7 @@ def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> Natura
 def scene_design_frequencies(scene):
     """(zero-order, averaged, static) frequencies of a scene's mechanism on a frequency-dependent
     soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
-    if not scene.soil.frequency_dependent:
+    if not scene.support().frequency_dependent:
         return None
     static, static_averaged = design_frequencies(scene.design())
     zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
@@ -252,7 +252,7 @@ def scene_frequencies(scene) -> NaturalFrequencies:
 def scene_block_frequencies(scene):
     """(frequencies, static) of a machine given by its loads on a frequency-dependent soil, each
     mode at its own frequency; None on a frequency-independent soil."""
-    if not scene.soil.frequency_dependent:
+    if not scene.support().frequency_dependent:
         return None
     from foundation_calc.solvers.crank.loads import block_frequencies
 

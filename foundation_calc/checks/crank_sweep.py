@@ -340,7 +340,7 @@ def scene_sweep_chunks(scene, variable: str, values):
 
     points = [(p.name, p.horizontal, p.height) for p in scene.points]
     limits, detuning = scene.limits, scene.limits.detuning
-    if variable == "soil_factor" and scene.soil.frequency_dependent:
+    if variable == "soil_factor" and scene.support().frequency_dependent:
         return factored_soil_chunks(scene, values, limits, detuning, points)
     design = None if scene.mechanism is None else scene.design()
     dynamic = scene_dynamic_soil(scene) if variable == "omega" else None
@@ -392,7 +392,7 @@ def sweep(
 def scene_dynamic_soil(scene) -> DynamicSoil | None:
     """The :class:`DynamicSoil` of a ``crank_foundation`` scene on a frequency-dependent soil; None
     on the others."""
-    if not scene.soil.frequency_dependent:
+    if not scene.support().frequency_dependent:
         return None
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
     from foundation_calc.checks.crank_resonance import scene_block_frequencies, scene_design_frequencies

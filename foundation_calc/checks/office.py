@@ -120,7 +120,7 @@ def static_rows(W: float, K_z: float, limits, bearing: OfficeRow | None = None) 
 
 def crank_office_rows(scene) -> tuple[OfficeRow, ...]:
     """The office checks of a ``crank_foundation`` scene: its bearing pressure W/S
-    (:func:`crank_bearing_row`) and settlement W/K_z (K_z of its soil method at ω = 0), where
+    (:func:`crank_bearing_row`) and settlement W/K_z (K_z of its support at ω = 0), where
     ``[limits]`` gives their allowables; W = M_tot g."""
     from foundation_calc.solvers.constants import GRAVITY
 
@@ -128,7 +128,7 @@ def crank_office_rows(scene) -> tuple[OfficeRow, ...]:
     W = scene.total_mass * GRAVITY
     bearing = None if limits.bearing_pressure is None else crank_bearing_row(W, scene.foundation.base_area,
                                                                              limits.bearing_pressure)
-    K_z = None if limits.settlement is None else float(scene.soil_springs().K_z)
+    K_z = None if limits.settlement is None else float(scene.support().impedance(0.0).springs[2])
     return tuple(static_rows(W, K_z, limits, bearing))
 
 

@@ -177,7 +177,7 @@ def _on_soil(scene, built):
     from foundation_calc.solvers.crank.loads import matrices
     from foundation_calc.solvers.crank.runup import crank_modes
 
-    if scene.soil.frequency_dependent:
+    if scene.support().frequency_dependent:
         _, _, static = matrices(scene.block())
 
         def at_frequency(omega):

@@ -105,7 +105,7 @@ def _designs_at(scene, speed: np.ndarray):
     ``soil_frequency`` [rad/s] (arrays alike)."""
     base = scene.design()
     omega = base.omega * speed
-    if not scene.soil.frequency_dependent:
+    if not scene.support().frequency_dependent:
         return lambda soil_frequency, factor: varied(base, omega=omega, soil_factor=factor)
     from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
@@ -146,7 +146,7 @@ def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed
     safe = np.where(stable, factor, 1.0)  # a tipping sample is counted, never solved
     static = at(0.0, safe)
     omega = static.omega
-    if scene.soil.frequency_dependent:
+    if scene.support().frequency_dependent:
         zero, averaged = _consistent(at, safe, 0), _consistent(at, safe, 1)
         motions = [first_approximation_motion(at(k * omega, safe)) for k in range(4)]
         motion, resonant = splice_harmonics([m for m, _ in motions]), motions[1][1]

@@ -129,15 +129,6 @@ class StratumCutoffs:
                 f" (x, y, rz), f_c = V_La/4H = {self.omega_c / (2 * math.pi):.4g} Hz (z, rx, ry)")
 
 
-def stratum_cutoffs(soil) -> StratumCutoffs | None:
-    """The :class:`StratumCutoffs` of a scene's ``soil`` (None without ``stratum_depth``;
-    :func:`~foundation_calc.solvers.supports.stratum.stratum_cutoffs`)."""
-    from foundation_calc.solvers.supports.stratum import stratum_cutoffs as cutoffs
-
-    found = cutoffs(soil)
-    return None if found is None else StratumCutoffs(*found)
-
-
 @dataclass(frozen=True)
 class SoilValidity:
     """Every judged a0 of a scene and those beyond its method's fitted range; on a stratum, the
@@ -266,7 +257,7 @@ def soil_validity(method: str, V_s: float | None, lengths: Mapping[str, float],
     V_s : shear wave velocity of the soil [m/s] (unused by a method without a range)
     lengths : motion -> b [m] (:func:`characteristic_lengths`)
     frequencies : the judged frequencies and the motions judged at each
-    stratum : the cutoffs of a stratum over bedrock (:func:`stratum_cutoffs`), None on a half-space
+    stratum : the cutoffs of a stratum over bedrock (:func:`declared_range`), None on a half-space
 
     >>> v = soil_validity("lysmer", 170.0, characteristic_lengths("lysmer", 6.0, 4.0),
     ...                   [JudgedFrequency("p2", 140.56, ("horizontal", "rocking"))])
@@ -313,16 +304,30 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
                    speeds: Mapping[str, float], stratum: StratumCutoffs | None = None) -> SoilValidity:
     """:func:`soil_validity` of the plane model: the modes ``frequencies`` (name -> p [rad/s]) of
     the block ``block_at(ω)`` with the motions they strain, and ``speeds`` (name -> ω [rad/s],
-    e.g. the judged orders n ω) with every motion; ``stratum`` as :func:`soil_validity` takes it."""
-    from foundation_calc.checks.plane_modes import BASE_MOTIONS, plane_modes
-
+    e.g. the judged orders n ω) with every motion (:func:`plane_judged`); ``stratum`` as
+    :func:`soil_validity` takes it."""
     if not fitted_range(method).applies:
         return soil_validity(method, V_s, {}, ())
+    judged = plane_judged(frequencies, block_at, speeds)
+    return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged, stratum)
+
+
+def plane_judged(frequencies: Mapping[str, float], block_at, speeds: Mapping[str, float]) -> list[JudgedFrequency]:
+    """The plane model's judged frequencies (:func:`plane_validity`'s arguments)."""
+    from foundation_calc.checks.plane_modes import BASE_MOTIONS, plane_modes
+
     modes = plane_modes(frequencies, block_at)
     shares = spring_shares(modes.springs, modes.base_motion())
     judged = mode_frequencies(modes.labels, modes.frequencies, shares, BASE_MOTIONS)
-    judged += [JudgedFrequency(at, w, BASE_MOTIONS) for at, w in speeds.items()]
-    return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged, stratum)
+    return judged + [JudgedFrequency(at, w, BASE_MOTIONS) for at, w in speeds.items()]
+
+
+def declared_range(support) -> tuple[FittedRange, StratumCutoffs | None]:
+    """The range a support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`)
+    and its stratum's cutoffs, as the checks judge them."""
+    declared = support.validity()
+    cutoffs = None if declared.cutoffs is None else StratumCutoffs(*declared.cutoffs)
+    return FittedRange(declared.method, declared.a0_max, declared.definition, declared.source), cutoffs
 
 
 def judged_orders(rows) -> list[int]:
@@ -342,15 +347,20 @@ def _order_label(n: int) -> str:
 def crank_validity(scene, report) -> SoilValidity:
     """The soil model's validity of a ``crank_foundation`` scene at the modes k0, p1, p2 of its
     resonance ``report`` (:class:`~foundation_calc.checks.resonance.ResonanceReport`, on a
-    frequency-dependent soil each at its own frequency) and every order the rule judges."""
-    soil, f = scene.soil, scene.foundation
-    method = soil.method_used
-    V_s = soil.V_s if fitted_range(method).applies else None
+    frequency-dependent support each at its own frequency) and every order the rule judges, against
+    the range its support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`;
+    the plane's horizontal, vertical and rocking motions are the support's x, z and ry)."""
+    support = scene.support()
+    declared = support.validity()
+    fitted, cutoffs = declared_range(support)
+    if not fitted.applies:
+        return SoilValidity(fitted, None, ())
     zero = report.zero_order
     modes = {m: float(getattr(zero, m)) for m in ("k0", "p1", "p2")}
     speeds = {_order_label(n): n * report.omega for n in judged_orders(report.rows)}
-    L, B = f.dimensions
-    return plane_validity(method, V_s, L, B, modes, scene.block, speeds, stratum_cutoffs(soil))
+    b = declared.lengths
+    lengths = b | {"horizontal": b["x"], "vertical": b["z"], "rocking": b["ry"]}
+    return judge_a0(fitted, declared.V_s, lengths, plane_judged(modes, scene.block, speeds), cutoffs)
 
 
 def block_validity(scene, report) -> SoilValidity:
@@ -362,7 +372,7 @@ def block_validity(scene, report) -> SoilValidity:
 
     support = scene.support()
     declared = support.validity()
-    fitted = FittedRange(declared.method, declared.a0_max, declared.definition, declared.source)
+    fitted, cutoffs = declared_range(support)
     if not fitted.applies:
         return SoilValidity(fitted, None, ())
     modes = report.modes
@@ -378,11 +388,11 @@ def block_validity(scene, report) -> SoilValidity:
     for omega, orders in harmonics.items():
         names = ", ".join(f"{m}: {_order_label(n)}" if several else _order_label(n) for m, n in orders)
         judged.append(JudgedFrequency(names, omega, MOTIONS))
-    cutoffs = None if declared.cutoffs is None else StratumCutoffs(*declared.cutoffs)
     return judge_a0(fitted, declared.V_s, declared.lengths, judged, cutoffs)
 
 
 __all__ = ["MOTION_SHARE", "SHEAR_MOTIONS", "A0Value", "FittedRange", "JudgedFrequency",
-           "SoilValidity", "StratumCutoffs", "stratum_cutoffs",
-           "block_validity", "characteristic_lengths", "crank_validity", "fitted_range", "judge_a0", "judged_orders",
-           "mode_frequencies", "plane_validity", "soil_validity", "spring_shares"]
+           "SoilValidity", "StratumCutoffs",
+           "block_validity", "characteristic_lengths", "crank_validity", "declared_range", "fitted_range", "judge_a0",
+           "judged_orders",
+           "mode_frequencies", "plane_judged", "plane_validity", "soil_validity", "spring_shares"]

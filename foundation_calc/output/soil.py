@@ -6,7 +6,6 @@ import math
 
 from foundation_calc.checks.soil_methods import MethodResult, SoilComparison
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
-from foundation_calc.solvers.supports.stratum import stratum_document, stratum_line
 from foundation_calc.units import hz_from_omega
 
 #: Rows of the table: (label, unit, attribute, scale from SI to the unit shown).
@@ -88,8 +87,25 @@ def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
             for r in comparison.results
         },
         "warnings": [*comparison.input_warnings, *comparison.findings],
-        "stratum": stratum_document(scene.soil, *scene.foundation.dimensions),
-    }
+    } | _section(scene).document
+
+
+def _section(scene):
+    """The support's own part of ``fcalc soil`` (:meth:`~foundation_calc.solvers.supports.base.Support.soil_section`:
+    a stratum's factors and cutoffs), at the machine's speed."""
+    return scene.support().soil_section({"machine": scene.speed.omega_rad_s})
+
+
+def print_section(section) -> None:
+    """Print a support's own part of ``fcalc soil`` (:class:`~foundation_calc.solvers.supports.base.SoilSection`):
+    its lines and its tables at several frequencies, in order."""
+    from rich.markup import escape
+
+    for part in section.printed:
+        if isinstance(part, str):
+            stdout().print(escape(part), soft_wrap=True)
+        else:
+            stdout().print(frequency_table(part.title, part.heads, part.rows, part.digits))
 
 
 def _dynamic_document(result: MethodResult) -> dict:
@@ -171,8 +187,7 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
             " frequency; its damping ratios are taken at their mode's frequency. The other methods are"
             " frequency-independent.", soft_wrap=True,
         )
-    if (stratum := stratum_document(scene.soil, L, B)) is not None:
-        out.print(escape(stratum_line(stratum)), soft_wrap=True)
+    print_section(_section(scene))
     for text in comparison.findings:
         out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
 

@@ -31,9 +31,6 @@ from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 from foundation_calc.scenes.project import Project, Requirements, SheetOptions
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
-from foundation_calc.solvers.soil.lysmer import lysmer_springs
-from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
-from foundation_calc.solvers.soil.springs import SoilSprings
 
 if TYPE_CHECKING:
     from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock
@@ -387,63 +384,68 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         mech = self.mechanism
         return self.foundation.mass + (0.0 if mech is None else mech.rod_mass + mech.slider_mass)
 
-    def soil_springs(self, method: str | None = None, omega: float = 0.0) -> SoilSprings:
-        """K_z, K_x, K_φ and damping ratios of the soil by ``method`` (default: the scene's own).
+    def support(self, base=None, masses=None):
+        """What carries the block (:func:`~foundation_calc.solvers.supports.support_of`: the footing on
+        ``[soil]`` in the paper's symbols, :mod:`~foundation_calc.solvers.supports.plane_footing`,
+        unless a registered support takes the scene), under the plane's body: M_tot and
+        I_0 = I_c + M_tot h² about the base's axis (:func:`plane_masses`). ``base`` (L, B) [m] and
+        ``masses`` (..., 6) [kg, kg m²] replace the scene's own."""
+        from foundation_calc.solvers.supports import support_of
+        from foundation_calc.solvers.supports.plane_footing import plane_masses
 
-        ``"coefficients"``: K = c S, c1 S, c_φ I1 and ``soil.damping``; ``"lysmer"``, ``"gazetas"``,
-        ``"pais_kausel"``, ``"sp26"``: the solvers of :mod:`foundation_calc.solvers.soil` on the
-        rectangular base (L, B), the total mass M_tot and I_0 = I_c + M_tot h² about the base axis.
-        ``omega`` [rad/s] is the frequency at which a frequency-dependent method (``"gazetas"``,
-        ``"pais_kausel"``) takes its
-        springs and dashpots; the other methods are frequency-independent and ignore it.
-        """
+        f = self.foundation
+        if masses is None:
+            masses = plane_masses(self.total_mass, f.moment_of_inertia + self.total_mass * f.cog_height**2)
+        return support_of(self, *(f.dimensions if base is None else base), masses)
+
+    def in_plane(self, soil_frequency=0.0) -> tuple:
+        """((K_x, K_z, K_φ), (C_x, C_z, C_φ), the support's method) at O of :meth:`support` at
+        ``soil_frequency`` [rad/s] (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a
+        support that couples the plane's motions is a PhysicsError), each a float (an array at an
+        array of frequencies); raises PhysicsError (:meth:`require_stable_rocking`) for a block that
+        tips over."""
+        from foundation_calc.solvers.supports.plane_footing import plane
+
+        support = self.support()
+        springs, dashpots = plane(support.impedance(soil_frequency), support.label)
+        springs, dashpots = tuple(map(_number, springs)), tuple(map(_number, dashpots))
+        self.require_stable_rocking(springs[2])
+        return springs, dashpots, support.method
+
+    def soil_springs(self, method: str | None = None, omega: float = 0.0):
+        """K_z, K_x, K_φ and damping ratios (:class:`~foundation_calc.solvers.soil.springs.SoilSprings`) of
+        the footing on the soil by ``method`` (default: the scene's own) at ``omega`` [rad/s]
+        (:meth:`base_springs` under the scene's own block)."""
         f = self.foundation
         L, B = f.dimensions
         return self.base_springs(L, B, f.base_area, f.base_second_moment, self.total_mass, f.moment_of_inertia,
                                  f.cog_height, method, omega)
 
-    def base_springs(self, L, B, S, I1, M_tot, I_c, h, method: str | None = None, omega=0.0, factor=1.0) -> SoilSprings:
+    def base_springs(self, L, B, S, I1, M_tot, I_c, h, method: str | None = None, omega=0.0, factor=1.0):
         """:meth:`soil_springs` of this soil under another block: base L × B [m] (area S [m²],
         second moment I1 [m⁴]), total mass M_tot [kg], I_c [kg m²] about its centre of mass at
         height h [m]; ``factor`` [-] multiplies the soil's stiffness data as :meth:`Soil.factored`
-        does. Arrays welcome (a batch of candidate blocks, a frequency or a factor per element)."""
-        s = self.soil
-        method = method or s.method_used
-        if method == "coefficients":
-            c_phi = s.c_z if s.c_phi is None else s.c_phi
-            xi_z, xi_x, xi_phi = s.damping or (0.0, 0.0, 0.0)
-            return SoilSprings(K_z=s.c_z * factor * S, K_x=s.c_x * factor * S, K_phi=c_phi * factor * I1,
-                               xi_z=xi_z, xi_x=xi_x, xi_phi=xi_phi)
-        if method == "sp26":
-            return sp26_springs(s.deformation_modulus * factor, B0_BY_CLASS[s.soil_class], S, I1, M_tot * GRAVITY / S)
-        I_0 = I_c + M_tot * h**2
-        if method == "lysmer":
-            return s.with_stratum(lysmer_springs(s.G * factor, s.density, s.poisson, L, B, M_tot, I_0,
-                                                 s.material_damping or 0.0), L, B, omega, factor)
-        if method == "pais_kausel":
-            from foundation_calc.solvers.soil.pais_kausel import pais_kausel_springs as springs
-        else:
-            from foundation_calc.solvers.soil.gazetas import gazetas_springs as springs  # numpy: only when asked for
+        does. Arrays welcome (a batch of candidate blocks, a frequency or a factor per element).
+        The footing's own springs and damping ratios
+        (:meth:`~foundation_calc.solvers.supports.plane_footing.PlaneFooting.plane_springs`)."""
+        from foundation_calc.solvers.supports.plane_footing import plane_footing, plane_masses
 
-        return s.with_stratum(springs(s.G * factor, s.density, s.poisson, L, B, self.foundation.embedment or 0.0, M_tot,
-                                      I_0, s.material_damping or 0.0, omega), L, B, omega, factor)
+        soil = self.soil if method is None else self.soil.model_copy(update={"method": method})
+        soil = soil if isinstance(factor, float | int) and factor == 1.0 else soil.factored(factor)
+        masses = plane_masses(M_tot, I_c + M_tot * h**2)
+        return plane_footing(soil, L, B, S, I1, masses, self.foundation.embedment or 0.0).plane_springs(omega)
 
-    def base_dashpots(self, springs: SoilSprings, M_tot: float) -> dict[str, float]:
-        """C_x, C_z, C_phi of the springs' damping ratios; exactly 0 (and no numpy import) undamped."""
-        if all(_largest(abs(xi)) == 0.0 for xi in (springs.xi_z, springs.xi_x, springs.xi_phi)):
-            return {"C_x": 0.0, "C_z": 0.0, "C_phi": 0.0}
-        from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios  # numpy: only for damped soil
+    def base_dashpots(self, springs, M_tot: float) -> dict[str, float]:
+        """C_x, C_z, C_phi of the springs' damping ratios under the scene's block of total mass M_tot [kg]
+        (:func:`~foundation_calc.solvers.supports.plane_footing.plane_dashpots`)."""
+        from foundation_calc.solvers.supports.plane_footing import plane_dashpots
 
         f = self.foundation
-        d = dashpots_from_ratios(
-            springs.xi_z, springs.xi_x, springs.xi_phi,
-            K_z=springs.K_z, K_x=springs.K_x, K_phi=springs.K_phi,
-            M_tot=M_tot, I_0=f.moment_of_inertia + M_tot * f.cog_height**2,
-        )
-        return {"C_x": _number(d.C_x), "C_z": _number(d.C_z), "C_phi": _number(d.C_phi)}
+        return plane_dashpots(springs, M_tot, f.moment_of_inertia + M_tot * f.cog_height**2)
 
-    def require_stable_rocking(self, springs: SoilSprings) -> None:
-        """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 does not exceed
+    def require_stable_rocking(self, K_phi) -> None:
+        """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 [N m/rad] (the
+        softest of an array) does not exceed
         the weight's overturning moment P h (paper (3.4); docs/crank-foundation.md, "The model").
 
         The message names the likely culprit, an implausible soil or foundation value
@@ -451,7 +453,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         the keys of the scene file that set K_φ, I1 and h.
         """
         f = self.foundation
-        K_phi, overturning = -_largest(-springs.K_phi), self.total_mass * GRAVITY * f.cog_height
+        K_phi, overturning = -_largest(-K_phi), self.total_mass * GRAVITY * f.cog_height
         if K_phi > overturning:
             return
         culprits = [x for x in self.plausibility_findings()
@@ -469,24 +471,14 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         raise culprit_error(text, culprits, spring, f"increase {spring} or {base}, or lower {height}")
 
     def block(self, soil_frequency: float = 0.0) -> RigidBlock:
-        """The block (with the whole machine's mass) on the soil method's springs and dashpots, for
-        the loads; a frequency-dependent soil takes them at ``soil_frequency`` [rad/s]."""
+        """The block (with the whole machine's mass) on its support's springs and dashpots at O
+        (:meth:`in_plane`), for the loads; a frequency-dependent support takes them at ``soil_frequency`` [rad/s]."""
         from foundation_calc.solvers.crank.loads import RigidBlock
 
         f = self.foundation
-        springs = self.soil_springs(omega=soil_frequency)
-        self.require_stable_rocking(springs)
-        M_tot = self.total_mass
-        return RigidBlock(
-            M_tot=M_tot,
-            I_c=f.moment_of_inertia,
-            h=f.cog_height,
-            K_x=_number(springs.K_x),
-            K_z=_number(springs.K_z),
-            K_phi=_number(springs.K_phi),
-            **self.base_dashpots(springs, M_tot),
-            g=GRAVITY,
-        )
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), _ = self.in_plane(soil_frequency)
+        return RigidBlock(M_tot=self.total_mass, I_c=f.moment_of_inertia, h=f.cog_height, K_x=K_x, K_z=K_z,
+                          K_phi=K_phi, C_x=C_x, C_z=C_z, C_phi=C_phi, g=GRAVITY)
 
     def harmonic_loads(self) -> HarmonicLoads | None:
         """The scene's ``[[loads]]`` as solver arrays (None without loads)."""
@@ -502,13 +494,13 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     def design(self, soil_frequency: float = 0.0) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
 
-        A frequency-dependent soil (``soil.frequency_dependent``) takes its springs and dashpots at
+        A frequency-dependent support (its ``frequency_dependent``) takes its springs and dashpots at
         ``soil_frequency`` [rad/s], 0 for the static springs.
 
-        The soil method's springs map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 (Barkan's
-        coefficients pass through unchanged) and its damping ratios to the base dashpots of
-        :func:`dashpots_from_ratios`. Raises PhysicsError naming ``mechanism`` for a machine given
-        by its loads only, and (:meth:`require_stable_rocking`) for a block that tips over.
+        The support's springs at O (:meth:`in_plane`) map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1
+        (Barkan's coefficients pass through unchanged), its dashpots to C_x, C_z, C_φ. Raises
+        PhysicsError naming ``mechanism`` for a machine given by its loads only, and
+        (:meth:`in_plane`) for a block that tips over or a support that couples the plane.
         """
         f, s, mech = self.foundation, self.soil, self.mechanism
         if mech is None:
@@ -523,15 +515,11 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             rho=mech.rod_radius_of_gyration,
             m1=mech.slider_mass,
         )
-        springs = self.soil_springs(omega=soil_frequency)
-        self.require_stable_rocking(springs)
-        if s.method_used == "coefficients":
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), method = self.in_plane(soil_frequency)
+        if method == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:
-            c = _number(springs.K_z) / f.base_area
-            c1 = _number(springs.K_x) / f.base_area
-            c_phi = _number(springs.K_phi) / f.base_second_moment
-        dashpots = self.base_dashpots(springs, f.mass + rod.m)
+            c, c1, c_phi = K_z / f.base_area, K_x / f.base_area, K_phi / f.base_second_moment
         return CrankDesign(
             M=f.mass,
             I_c=f.moment_of_inertia,
@@ -541,7 +529,9 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             c=c,
             c1=c1,
             c_phi=c_phi,
-            **dashpots,
+            C_x=C_x,
+            C_z=C_z,
+            C_phi=C_phi,
             omega=mech.omega_rad_s,
             r=mech.crank_radius,
             l=mech.rod_length,

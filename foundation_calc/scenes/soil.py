@@ -215,17 +215,6 @@ class Soil(SceneModel):
         cutoff frequencies); Barkan's coefficients, Lysmer's analogs and SP 26 are frequency-independent."""
         return self.method_used in FREQUENCY_DEPENDENT_METHODS or self.stratum_depth is not None
 
-    def with_stratum(self, springs, L, B, omega, factor=1.0):
-        """A half-space method's plane ``springs`` (L [m] in the plane, B [m] normal to it) at ``omega``
-        [rad/s] on the scene's stratum (:func:`~foundation_calc.solvers.soil.stratum.on_stratum`), the
-        soil's stiffness data times ``factor`` [-]; the springs themselves without ``stratum_depth``."""
-        if self.stratum_depth is None:
-            return springs
-        from foundation_calc.solvers.soil.stratum import on_stratum
-
-        return on_stratum(springs, L, B, self.stratum_depth, self.V_s * factor**0.5, self.poisson,
-                          self.material_damping or 0.0, omega)
-
     @property
     def G(self) -> float:
         """Shear modulus [Pa], given or ρ V_s² (half-space methods only)."""

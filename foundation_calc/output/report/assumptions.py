@@ -4,29 +4,14 @@ from __future__ import annotations
 
 from foundation_calc.output.report.model import Section, table
 
-#: soil.method -> how its springs and damping are modelled.
-SOIL_MODELS = {
-    "coefficients": "Soil: linear springs at the base from Barkan's coefficients c_z, c_x, c_φ (Winkler"
-                    " model) [Ba]; damping only as the ratios given in soil.damping.",
-    "lysmer": "Uniform elastic half-space under a rigid surface base, Lysmer's and Hall's analogs"
-              " [RHW]: frequency-independent springs and radiation damping fitted for a0 < 1.5.",
-    "gazetas": "Uniform elastic half-space, Gazetas' static stiffnesses with embedment factors [Ga]"
-               " and frequency-independent damping ratios.",
-    "pais_kausel": "Uniform elastic half-space, Pais & Kausel's static stiffnesses with embedment"
-                   " factors [PK], Gazetas' dashpots and Pais & Kausel's frequency modifiers.",
-    "sp26": "The code's coefficients from the static deformation modulus [SP26]; damping ratios of"
-            " the code.",
-}
-
-
 def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
+    support = scene.support()
     rows = [
         ("model", "Rigid block; plane motion in the plane of symmetry normal to the crank shaft; small"
                   " rotations; the crank's own mass neglected [KM]."),
-        ("soil", SOIL_MODELS.get(scene.soil.method_used, f"Soil method {scene.soil.method_used!r}.")),
+        *((row.topic, row.text) for row in support.assumptions()),  # the support's own (its soil and base rows)
     ]
-    springs = scene.soil_springs()
-    if all(float(getattr(springs, k)) == 0 for k in ("xi_z", "xi_x", "xi_phi")):
+    if _undamped(support):
         rows.append(("damping", "Undamped: at a resonance there is no steady state; amplitudes near one are"
                                 " upper-bound estimates only."))
     if scene.mechanism is not None:
@@ -42,6 +27,13 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
                       " out-of-plane vibration, transmission to neighbouring structures."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
+
+
+def _undamped(support) -> bool:
+    """True when ``support`` has no dashpot at any frequency."""
+    import numpy as np
+
+    return not support.frequency_dependent and not np.any(support.impedance(0.0).dashpots)
 
 
 def _static_missing(limits) -> list[str]:
@@ -73,9 +65,7 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                   " centre of the base; small rotations; the weight's tilt stiffness −W z_G included."),
         *((row.topic, row.text) for row in support.assumptions()),  # the support's own (its soil and base rows)
     ]
-    import numpy as np
-
-    if not support.frequency_dependent and not np.any(support.impedance(0.0).dashpots):  # none at any frequency
+    if _undamped(support):
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
                                 " keeps the speeds away from them."))
     rows.append(("loads", "Each machine's loads as given, harmonic orders n at nω (amplitude, phase, point);"

@@ -71,7 +71,7 @@ def operators(scene, harmonics) -> list[list[Operator]]:
     cache: dict[float, tuple] = {}
     out = []
     for n in harmonics:
-        soil_frequency = n * scene.speed.omega_rad_s if scene.soil.frequency_dependent else 0.0
+        soil_frequency = n * scene.speed.omega_rad_s if scene.support().frequency_dependent else 0.0
         if soil_frequency not in cache:
             mechanism = None if scene.mechanism is None else averaged_operator(scene.design(soil_frequency))
             block = None if loads is None else matrices(scene.block(soil_frequency))
@@ -228,7 +228,8 @@ def damped_response_blocks(scene, amplitudes: dict | None) -> tuple:
     if amplitudes["approximations"][amplitudes["checked_with"]]["resonant"]:
         return ()
     solve = damped_solve(scene)
-    soil = " with the springs and dashpots at n ω (frequency-dependent soil)" if scene.soil.frequency_dependent else ""
+    dependent = scene.support().frequency_dependent
+    soil = " with the springs and dashpots at n ω (frequency-dependent soil)" if dependent else ""
     sources = {op.source for group in solve.by_harmonic for op in group}
     how = []
     if "mechanism (averaged operator)" in sources:

@@ -40,7 +40,7 @@ def first_approximation_chain(scene) -> Chain:
                "centre of mass of rod and slider to the crank pin")
     chain.step("mu", "m/M_tot", "-", f"{KM} §1", "moving-mass ratio")
     chain.step("lam", "r/l", "-", f"{KM} §1", "crank-to-rod ratio")
-    dependent = scene.soil.frequency_dependent
+    dependent = scene.support().frequency_dependent
     for n, force in ((1, "mu*r*omega**2"), (2, "mu*(l1/l)*lam*r*omega**2")):
         design = scene.design(n * omega if dependent else 0.0)
         at = ("w" if n == 1 else f"{n}w") if dependent else ""  # printed K_z(ω), K_z(2ω), ...

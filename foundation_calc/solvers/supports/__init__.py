@@ -2,8 +2,9 @@
 
 One interface (:class:`~.base.Support`), one module per support kind (:mod:`.footing`: a footing
 on a soil method, surface or embedded, on a half-space or a stratum; :mod:`.piles`: a pile group
-under a rigid cap), in the spirit of ROSS's bearing elements: the body assembles whatever its
-support gives, and the checks and the documents read the support only through the interface.
+under a rigid cap; :mod:`.plane_footing`: the crank foundation's footing in the paper's symbols),
+in the spirit of ROSS's bearing elements: the body assembles whatever its support gives, and the
+checks and the documents read the support only through the interface.
 
 A new support is one module that defines a :class:`~.base.Support` and a builder
 ``build(scene, L, B, masses) -> Support | None``: a shipped one names its module in
@@ -19,7 +20,7 @@ all, so that ``fcalc design`` knows a key before it reads a scene.
 from __future__ import annotations
 
 #: The shipped supports' modules, asked in this order (the footing takes every scene: last).
-SHIPPED = ("piles", "footing")
+SHIPPED = ("piles", "plane_footing", "footing")
 
 #: The builders :func:`register` added, newest first.
 BUILDERS: list = []

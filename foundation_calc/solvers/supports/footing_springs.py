@@ -23,7 +23,7 @@ SP26_TORSION = (1.0, 0.3)
 BARKAN_TORSION_RATIO = 1.5
 
 
-def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0) -> tuple[list, list | None]:
+def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0, section=None) -> tuple[list, list | None]:
     """Springs at O [N/m, N m/rad] along x, y, z, about x, y, z, and the damping ratios
     [ξ_x, ξ_y, ξ_z, ξ_rx, ξ_ry, ξ_rz] of the uncoupled motions (None for dashpots given at O).
 
@@ -36,12 +36,15 @@ def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0) -> tuple[list, list | None
     omega : the frequencies [rad/s] at which a frequency-dependent method takes them; the other
         methods ignore it
     D : the base's embedment [m] (sidewalls in contact), taken by ``"gazetas"`` and ``"pais_kausel"``
+    section : (A [m²], I_x, I_y [m⁴]), the base's area and second moments about x and y as a scene
+        gives them (the crank foundation's S and I1), taken by ``"coefficients"`` and ``"sp26"``;
+        default (None) the rectangle's L B, L B³/12, B L³/12
 
     L, B, M, each of J_O and omega may be arrays over a batch of candidate blocks and frequencies;
     the springs and ratios broadcast.
 
     Coefficients (Barkan): K_x = K_y = c_x A, K_z = c_z A, K_rx = c_φ I_x, K_ry = c_φ I_y,
-    K_rz = c_ψ J_z with A = L B, I_x = L B³/12, I_y = B L³/12, J_z = I_x + I_y. Lysmer, Gazetas,
+    K_rz = c_ψ J_z with J_z = I_x + I_y (A, I_x, I_y: ``section``). Lysmer, Gazetas,
     Pais & Kausel, SP 26: the crank foundation's plane method in each vertical plane
     (:func:`planes`), on a stratum by :func:`~foundation_calc.solvers.soil.stratum.on_stratum`.
 
@@ -55,7 +58,7 @@ def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0) -> tuple[list, list | None
     if method == "springs":
         return list(soil.stiffness), None
     if method != "coefficients":  # a half-space method or SP 26
-        along, across, (k_t, xi_t) = planes(soil, L, B, M, J_O, omega, D)
+        along, across, (k_t, xi_t) = planes(soil, L, B, M, J_O, omega, D, section)
         if soil.stratum_depth is not None:
             from foundation_calc.solvers.soil.stratum import on_stratum, torsion_on_stratum
 
@@ -65,9 +68,10 @@ def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0) -> tuple[list, list | None
             xi_t = torsion_on_stratum(xi_t, H, soil.V_s, xi_m, omega)
         springs = [along.K_x, across.K_x, along.K_z, across.K_phi, along.K_phi, k_t]
         return springs, [along.xi_x, across.xi_x, along.xi_z, across.xi_phi, along.xi_phi, xi_t]
-    A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
+    A, I_x, I_y = base_section(L, B, section)
     c_phi = soil.c_z if soil.c_phi is None else soil.c_phi
-    c_psi = BARKAN_TORSION_RATIO * soil.c_x if soil.c_psi is None else soil.c_psi
+    c_psi = getattr(soil, "c_psi", None)  # a crank foundation's [soil] has no c_psi: Barkan's ratio
+    c_psi = BARKAN_TORSION_RATIO * soil.c_x if c_psi is None else c_psi
     xi = list(soil.damping or (0.0, 0.0, 0.0))
     xi_z, xi_x, xi_phi = xi[:3]
     xi_psi = xi[3] if len(xi) == 4 else xi_phi
@@ -75,7 +79,13 @@ def six_springs(soil, L, B, M, J_O, omega=0.0, D=0.0) -> tuple[list, list | None
     return springs, [xi_x, xi_x, xi_z, xi_phi, xi_phi, xi_psi]
 
 
-def planes(soil, L, B, M, J_O, omega=0.0, D=0.0):
+def base_section(L, B, section=None) -> tuple:
+    """(A [m²], I_x, I_y [m⁴]) of the base: ``section`` as given, else the rectangle L × B's
+    (L B, L B³/12, B L³/12)."""
+    return (L * B, L * B**3 / 12.0, B * L**3 / 12.0) if section is None else tuple(section)
+
+
+def planes(soil, L, B, M, J_O, omega=0.0, D=0.0, section=None):
     """The plane method twice, in the plane of x (sliding x, rocking about y, with L in the plane)
     and of y (sliding y, rocking about x), and the torsion: (along, across, (k_ψ, ξ_ψ)), on a
     half-space (arguments as :func:`six_springs`).
@@ -94,7 +104,7 @@ def planes(soil, L, B, M, J_O, omega=0.0, D=0.0):
         from foundation_calc.solvers.constants import GRAVITY
         from foundation_calc.solvers.soil.sp26 import B0_BY_CLASS, sp26_springs
 
-        A, I_x, I_y = L * B, L * B**3 / 12.0, B * L**3 / 12.0
+        A, I_x, I_y = base_section(L, B, section)
         b0, p_m = B0_BY_CLASS[soil.soil_class], M * GRAVITY / A
         along = sp26_springs(soil.deformation_modulus, b0, A, I_y, p_m)
         across = sp26_springs(soil.deformation_modulus, b0, A, I_x, p_m)
@@ -123,4 +133,4 @@ def planes(soil, L, B, M, J_O, omega=0.0, D=0.0):
             (K_t, C_t / (2.0 * (K_t * J_O[2]) ** 0.5) + xi_m))
 
 
-__all__ = ["BARKAN_TORSION_RATIO", "SP26_TORSION", "planes", "six_springs"]
+__all__ = ["BARKAN_TORSION_RATIO", "SP26_TORSION", "base_section", "planes", "six_springs"]
