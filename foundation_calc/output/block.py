@@ -81,8 +81,8 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
 
 
 #: How the block's machines with periodic inertia are solved, in the JSON and under the table.
-PERIODIC_METHOD = ("exact periodic solution with the cranks' angle-dependent inertia (harmonic balance); the limits"
-                   " judge the first approximation (averaged operator)")
+PERIODIC_METHOD = ("exact periodic solution with the angle-dependent inertia of the machine's parts (harmonic"
+                   " balance); the limits judge the first approximation (averaged operator)")
 
 
 def _periodic_document(c, names) -> dict:
