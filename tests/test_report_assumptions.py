@@ -122,3 +122,28 @@ def test_the_base_row_of_a_footing_on_a_stratum_states_the_layer():
     base = _rows(parse_scene(data))["base"]
     assert "layering" not in base
     assert "3 m deep over rigid rock" in base and "Kausel" in base and "V_s/4H" in base, base
+
+
+@pytest.mark.parametrize(("contact", "limits", "named", "absent"), [
+    (False, {}, ("static settlement of the pile group w/k_z", "piles' axial and lateral capacity"), ("bearing pressure",)),
+    (True, {}, ("static bearing pressure under the cap", "piles' axial and lateral capacity"), ()),
+    (False, {"settlement": 0.01}, ("piles' axial and lateral capacity",), ("bearing pressure", "settlement")),
+])
+def test_a_piled_block_says_what_is_not_checked_of_its_piles(contact, limits, named, absent):
+    """The support names its own terms in "not checked": a pile group's capacity, strength and settlement, and a
+    bearing pressure only where its cap bears on the soil, not the footing's soil pressure under the base."""
+    data = tomllib.loads((CONFIGS / "block_on_piles.toml").read_text(encoding="utf-8"))
+    data["piles"]["cap_contact"] = contact
+    data["limits"].update(limits)
+    text = _rows(parse_scene(data))["not checked"].lower()
+    assert "dynamic soil pressure" not in text, text
+    for words in named:
+        assert words in text, (words, text)
+    for words in absent:
+        assert words not in text, (words, text)
+
+
+def test_a_footing_says_what_is_not_checked_of_the_soil():
+    text = _rows(_scene("gazetas"))["not checked"]
+    assert "static settlement W/K_z (no [limits] settlement)" in text and "dynamic soil pressure and settlement" in text
+    assert "pile" not in text

@@ -38,16 +38,12 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no run time with [limits]"
                                  " transient_amplitude, and no [drive])."))
-    text = "; ".join([*_static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
+    from foundation_calc.solvers.supports.footing import static_missing
+
+    text = "; ".join([*static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
                       " out-of-plane vibration, transmission to neighbouring structures."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
-
-
-def _static_missing(limits) -> list[str]:
-    """The office checks on the soil a scene leaves out, for want of their allowables."""
-    return ([] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]) + (
-        [] if limits.settlement is not None else ["static settlement W/K_z (no [limits] settlement)"])
 
 
 def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
@@ -95,8 +91,10 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no [operation] run time with [limits]"
                                  " transient_amplitude)."))
-    text = "; ".join([*_static_missing(limits), "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
-                                " grout and machines, transmission to neighbouring structures and people."])
+    from foundation_calc.solvers.supports.base import not_checked
+
+    text = "; ".join([*not_checked(support, limits), "strength and fatigue of the block, anchors, grout and machines,"
+                      " transmission to neighbouring structures and people."])  # the support names its own terms
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
 
