@@ -55,3 +55,14 @@ def test_every_line_fits_80_columns(terminal, runner, command, config):
     wide = [line for line in result.stdout.splitlines() if cell_len(line) > WIDTH]
     assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
     assert "…" not in result.stdout
+
+
+def test_check_on_a_narrow_terminal_puts_each_scene_over_its_table(terminal, runner):
+    """Beside a scene column as wide as its file's name the reasons had some 17 cells at 80 columns:
+    each scene's name goes over a table of its own, which leaves the reasons the room."""
+    result = runner.invoke(app, ["check", str(BLOCKS[0]), str(BLOCKS[1])])
+    lines = [line.rstrip() for line in result.stdout.splitlines()]
+    assert BLOCKS[0].name in lines and BLOCKS[1].name in lines
+    header = next(line for line in lines if "┃ check" in line)
+    assert "scene" not in header and header.split("┃")[3].strip() == "reason"
+    assert len(header.split("┃")[3]) >= 30

@@ -46,7 +46,7 @@ def _plain_text(cell) -> str:
     return ""
 
 
-def _widths(table, width: int) -> tuple[list[int], list[int], int]:
+def column_widths(table, width: int) -> tuple[list[int], list[int], int]:
     """A table's columns' natural widths, their floors (each column's longest word: the
     ``min_width`` of :func:`keep_words_whole`) and the room ``width`` leaves for the columns'
     text, borders and padding taken off [terminal cells]."""
@@ -63,7 +63,7 @@ def fits(table, width: int) -> bool:
     """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
     at most down to their longest words)."""
     keep_words_whole(table)
-    _, floor, room = _widths(table, width)
+    _, floor, room = column_widths(table, width)
     return sum(floor) <= room
 
 
@@ -80,7 +80,7 @@ def fit_columns(table, width: int) -> None:
     columns = table.columns
     if not columns:
         return
-    natural, floor, room = _widths(table, width)
+    natural, floor, room = column_widths(table, width)
     if sum(natural) <= room or sum(floor) > room:
         return
 

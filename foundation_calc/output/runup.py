@@ -192,25 +192,26 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
             out.print(*_passages_tables(key, r, report.points))
         else:
             out.print(f"{run_title(key).capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
-    out.print(
-        "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
-        " integration: the same mode's motion in the time integration of the whole linear model;"
-        " all modes: largest displacement of any point in the passage's window"
-    )
+    if any(r.passages for r in report.runs.values()):  # what the passages' columns mean
+        out.print(
+            "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
+            " integration: the same mode's motion in the time integration of the whole linear model;"
+            " all modes: largest displacement of any point in the passage's window"
+        )
     if report.frequency_dependent:
         out.print(SOIL_NOTE)
     for machine in report.motors:
         out.print(_motor_table(report, machine))
+    limited = any(row.limit is not None for row in report.rows)  # without a limit the verdict below says why
     table = Table(title="Largest displacement during the runs", title_justify="left")
-    for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", "limit [m]", "ratio", "verdict"):
+    for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", *(("limit [m]", "ratio", "verdict") if limited else ())):
         table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
     for row in report.rows:
         steady = report.steady_points[report.points.index(row.point)]
-        table.add_row(
-            escape(row.point), run_title(row.run), fmt(float(steady), 4), fmt(row.value, 4),
-            fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
-            NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value),
-        )
+        judged = (fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
+                  NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value))
+        table.add_row(escape(row.point), run_title(row.run), fmt(float(steady), 4), fmt(row.value, 4),
+                      *(judged if limited else ()))
     out.print(table)
     out.print(_directions_table(report))
     same = " (the steady ones are fcalc amplitudes' peaks of the same point)" if scene.kind != "platform" else ""
