@@ -71,9 +71,12 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if not support.frequency_dependent and not np.any(support.impedance(0.0).dashpots):  # none at any frequency
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
                                 " keeps the speeds away from them."))
-    rows.append(("loads", "Each machine's loads as given, harmonic orders n at nω (amplitude, phase, point);"
-                          " an unbalance from its balance grade, F = m_r G ω rotating normal to its axis; no"
-                          " interaction of the machines with the block's motion."))
+    rows.append(("loads", _loads(scene.machines)))
+    if any(m.periodic_parts for m in scene.machines):
+        rows.append(("response", "The crank mechanisms' inertia depends on the crank angle: the limits judge the first"
+                                 " approximation, its mass averaged over a revolution (the averaged operator); the"
+                                 " exact periodic solution with the angle-dependent mass matrix (harmonic balance)"
+                                 " gives its error (Accuracy)."))
     if len(scene.machines) > 1:
         rows.append(("machines", "Steady state of each machine solved alone; the peaks of the machines added"
                                  " (an upper bound: their relative phase is not known) and the RMS values"
@@ -97,6 +100,18 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                       " transmission to neighbouring structures and people."])  # the support names its own terms
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
+
+
+def _loads(machines) -> str:
+    """The loads row of a block: what forces the scene's machines, by the kinds of parts they have."""
+    kinds = [text for key, text in (
+        ("loads", "the vendor's loads as given, harmonic orders n at nω (amplitude, phase, point)"),
+        ("unbalance", "an unbalance from its balance grade, F = m_r G ω rotating normal to its axis"),
+        ("cranks", "the crank mechanisms' inertia forces, every order of the sliders' and rods' motion at the"
+                   " machine's speed ([KM] for one throw)"),
+    ) if any(getattr(m, key) for m in machines)]
+    said = "; ".join(kinds) if kinds else "each machine's parts' loads at their orders n, at nω"
+    return f"{said[0].upper()}{said[1:]}; the forces do not depend on the block's motion."
 
 
 def assumptions_section(scene, runs) -> Section:
