@@ -219,7 +219,7 @@ def _conditions_table(report: ResonanceReport, units: DisplayUnits, strict: bool
             t.add_row(escape(r.machine), str(r.order), f"{r.mode} ({r.motion})", fmt(units.convert("speed", r.critical)),
                       f"{r.margin:.1%}", f"{r.required:.0%}", fmt_scaled(r.share, 1.0, 3), _status(r, strict))
         return t
-    columns = ("condition", "mode", speed, f"{speed}, avg. inertia", "margin", "required", "forcing share", "verdict")
+    columns = ("condition", "mode", speed, f"{speed}, avg. inertia", "margin", "needs", "forcing share", "verdict")
     t = titled_table("Resonances (critical speeds)", columns, columns[2:7])
     for row in report.rows:
         t.add_row(
@@ -229,7 +229,7 @@ def _conditions_table(report: ResonanceReport, units: DisplayUnits, strict: bool
             fmt(units.convert("speed", row.critical_averaged)),
             f"{row.margin:.1%}",
             f"{row.required:.0%}" if row.required > 0.0 else "none",
-            f"{row.share:.2g}",
+            fmt_scaled(row.share, 1.0, 2),
             verdict_text(row.outcome.value) if row.judged or row.status > INFORMATION else
             ("info" if row.information else "not judged"),
         )
@@ -250,14 +250,14 @@ def print_resonance(report: ResonanceReport, scene, source: str, units: DisplayU
     if not report.per_machine:
         out.print(
             f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
-            f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
-            " The rule: docs/resonance-rule.md.", soft_wrap=True,
+            f" {FORCING_SHARE:.0%}; needs: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
+            " The rule: docs/resonance-rule.md.",
         )
     if report.per_machine:
         out.print(f"Forcing share: |φᵀF_n|/p of the order on the mode over the machine's largest; a higher order"
                   f" under {FORCING_SHARE:.0%} is not judged (info: inside its band). The rule: docs/resonance-rule.md.")
     print_soil_validity(report.soil_validity)
-    out.print(summary_line(report, strict, units), soft_wrap=not report.per_machine)
+    out.print(summary_line(report, strict, units))
 
 
 __all__ = ["MOTION_NAMES", "modes_document", "print_modes", "print_resonance", "resonance_document", "rule_document",
