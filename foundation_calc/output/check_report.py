@@ -137,12 +137,11 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
                                    ("check", "verdict", "reason")))
     skipped = [f"{scene.source} ({scene.skip_note})" for scene in scenes if scene.skipped]
     if skipped:
-        out.print(Text("skipped: " + ", ".join(skipped)), soft_wrap=True)
+        out.print(Text("skipped: " + ", ".join(skipped)))
     out.print(
         f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
         f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
         f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
-        soft_wrap=True,
     )
 
 
