@@ -55,7 +55,7 @@ def column_widths(table, width: int) -> tuple[list[int], list[int], int]:
     columns = table.columns
     natural = [max((cell_len(line) for cell in (c.header, *c.cells) for line in _plain_text(cell).splitlines()),
                    default=0) for c in columns]
-    floor = [min(c.min_width or 0, n) for c, n in zip(columns, natural)]
+    floor = [n if c.no_wrap else min(c.min_width or 0, n) for c, n in zip(columns, natural)]  # no_wrap: never narrowed
     return natural, floor, width - table._extra_width - sum(table._get_padding_width(i) for i in range(len(columns)))
 
 
@@ -102,7 +102,8 @@ def fit_columns(table, width: int) -> None:
 
 @cache
 def stdout() -> Console:
-    """Console for results: full width when not a terminal, and no table cuts a word."""
+    """Console for results: full width when not a terminal, and no table cuts a word; on a
+    terminal a table too wide is fitted to it (:func:`fit_columns`)."""
     import sys
 
     from rich.console import Console
