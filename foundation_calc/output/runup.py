@@ -194,7 +194,8 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
             out.print(f"{run_title(key).capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
     if any(r.passages for r in report.runs.values()):  # what the passages' columns mean
         out.print(
-            "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
+            "closed form: the mode alone, Faddeeva envelope with the order's force (its inertial part growing as the"
+            " speed squared; ≤ +3 % for η ≤ 1e-2);"
             " integration: the same mode's motion in the time integration of the whole linear model;"
             " all modes: largest displacement of any point in the passage's window"
         )
