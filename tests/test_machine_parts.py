@@ -146,6 +146,7 @@ def test_a_toy_part_runs_through_every_command(toy_scene, tmp_path):
     assert amplitudes["total_mass"] == pytest.approx(L * B * H * RHO + MACHINE["mass"] + TOY_MASS, rel=1e-12)
     (periodic,) = amplitudes["periodic_inertia"]  # the toy's angle-dependent inertia, solved as a crank's
     assert periodic["machine"] == "toy" and 0.0 < periodic["first_approximation_error"] < 0.5
+    assert "crank" not in periodic["method"] and "machine's parts" in periodic["method"]  # the toy is no crank
 
     resonance = fc.resonance(toy_scene).to_dict()
     assert {(r["machine"], r["order"]) for r in resonance["resonances"]} == {("toy", 2)}

@@ -52,6 +52,24 @@ def test_a_narrow_terminal_wraps_words_and_never_cuts_them(width):
     assert "-7.15432e-05" in text and "123456789.123" in text and "description" in text
 
 
+def test_a_table_whose_words_fit_is_levelled_to_the_terminal():
+    """Rich narrows the widest columns first and stops at a column's longest word, so this row ran
+    to 82 cells at 80 although its words fit: fit_columns levels the columns to what fits."""
+    from rich.cells import cell_len
+
+    from foundation_calc.output.console import fit_columns
+
+    table = Table("machine", "order", "mode", "critical, rad/s", "margin", "needs", "forcing share", "status")
+    table.add_row("opposed compressor", "1", "3 (z)", "181.99", "71.2%", "20%", "0.000305", "not judged")
+    console = Console(width=80, record=True, color_system=None)
+    keep_words_whole(table)
+    fit_columns(table, 80)
+    console.print(table, crop=False)
+    text = console.export_text()
+    assert max(map(cell_len, text.splitlines())) <= 80
+    assert "0.000305" in text and "181.99" in text and "compressor" in text
+
+
 @pytest.mark.parametrize(
     "args",
     [("check", str(CONFIGS)), ("platform",), ("resonance", str(CONFIGS / "frame_saw.toml")), ("check", str(CONFIGS), "--json")],

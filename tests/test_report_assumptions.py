@@ -122,3 +122,60 @@ def test_the_base_row_of_a_footing_on_a_stratum_states_the_layer():
     base = _rows(parse_scene(data))["base"]
     assert "layering" not in base
     assert "3 m deep over rigid rock" in base and "Kausel" in base and "V_s/4H" in base, base
+
+
+@pytest.mark.parametrize(("contact", "limits", "named", "absent"), [
+    (False, {}, ("static settlement of the pile group w/k_z", "piles' axial and lateral capacity"), ("bearing pressure",)),
+    (True, {}, ("static bearing pressure under the cap", "piles' axial and lateral capacity"), ()),
+    (False, {"settlement": 0.01}, ("piles' axial and lateral capacity",), ("bearing pressure", "settlement")),
+])
+def test_a_piled_block_says_what_is_not_checked_of_its_piles(contact, limits, named, absent):
+    """The support names its own terms in "not checked": a pile group's capacity, strength and settlement, and a
+    bearing pressure only where its cap bears on the soil, not the footing's soil pressure under the base."""
+    data = tomllib.loads((CONFIGS / "block_on_piles.toml").read_text(encoding="utf-8"))
+    data["piles"]["cap_contact"] = contact
+    data["limits"].update(limits)
+    text = _rows(parse_scene(data))["not checked"].lower()
+    assert "dynamic soil pressure" not in text, text
+    for words in named:
+        assert words in text, (words, text)
+    for words in absent:
+        assert words not in text, (words, text)
+
+
+def test_a_footing_says_what_is_not_checked_of_the_soil():
+    text = _rows(_scene("gazetas"))["not checked"]
+    assert "static settlement W/K_z (no [limits] settlement)" in text and "dynamic soil pressure and settlement" in text
+    assert "pile" not in text
+
+
+@pytest.mark.parametrize(("config", "named", "absent"), [
+    ("block_two_throw_compressor", ("crank mechanisms' inertia forces",), ("unbalance", "vendor's loads")),
+    ("block_two_machines", ("vendor's loads as given", "unbalance from its balance grade"), ("crank",)),
+    ("block_on_piles", ("unbalance from its balance grade",), ("crank", "vendor's loads")),
+])
+def test_the_loads_row_names_the_machines_parts(config, named, absent):
+    """The loads row says what forces the scene's machines (a crank compressor has no unbalance and
+    no vendor's loads), and only a scene with angle-dependent inertia states how the response takes it."""
+    rows = _rows(parse_scene(tomllib.loads((CONFIGS / f"{config}.toml").read_text(encoding="utf-8"))))
+    for words in named:
+        assert words in rows["loads"], (words, rows["loads"])
+    for words in absent:
+        assert words not in rows["loads"], (words, rows["loads"])
+    assert ("response" in rows) == ("crank" in named[0]), rows.get("response")
+    if "response" in rows:
+        assert "first approximation" in rows["response"] and "exact periodic solution" in rows["response"]
+
+
+def test_the_accuracy_of_a_block_with_crank_mechanisms_states_the_first_approximations_error():
+    """The judged numbers of a scene with angle-dependent inertia are the first approximation's: the
+    Accuracy section gives its error against the exact periodic solution (the amplitudes document's),
+    and no longer says there is no approximation."""
+    from foundation_calc.output.report.block_accuracy import block_accuracy_section
+
+    scene = parse_scene(tomllib.loads((CONFIGS / "block_two_throw_compressor.toml").read_text(encoding="utf-8")))
+    periodic = [{"machine": "compressor", "first_approximation_error": 1.44e-4, "harmonics": 16}]
+    first = block_accuracy_section(scene, periodic).blocks[0].text
+    assert "compressor: at most 0.014 % of a peak (16 harmonics)" in first
+    assert "no closed-form approximation" not in first
+    assert "no closed-form approximation" in block_accuracy_section(scene).blocks[0].text

@@ -38,6 +38,7 @@ def test_rows_without_a_limit_are_not_judged(runner, tmp_path):
     assert doc["verdict"] == "not judged"
     text = runner.invoke(app, ["runup", str(scene)], env={"COLUMNS": "200"}).stdout
     assert "not judged" in text and "PASS" not in text
+    assert "limit [m]" not in text  # no column of "none" in every row: the verdict line says why
 
 
 def test_a_figure_says_which_displacement_it_is(runner, tmp_path):

@@ -152,4 +152,7 @@ def test_sheet_shows_the_toys_hand_calculation(toy, tmp_path):
     assert "The toy's vertical spring" in text and "The toy support's springs are constant." in text
     assert "| soil | The toy support: constant springs and dashpots at O, coupled (x with ry)." in text  # its own assumption
     assert "uncoupled" not in text  # and no footing's
+    (unchecked,) = (line for line in text.splitlines() if line.startswith("| not checked |"))
+    assert "The support's static capacity and settlement" in unchecked  # the toy says nothing: the default does
+    assert "bearing pressure" not in unchecked and "W/K" not in unchecked  # and no footing's terms
     assert "| K\\_z | 2·k\\_1 | 2 × 1.500·10⁹ | 3.000·10⁹ | N/m | \\[toy\\] |" in text  # the chain, evaluated

@@ -13,10 +13,12 @@ Sources:
   e_x, e_y (contact over the whole base, e within the kern) is at most
   q_max = W / (L B) (1 + 6 |e_x| / L + 6 |e_y| / B); above the allowable of the scene
   (``[limits] bearing_pressure``, from the geotechnical report) the check **fails**.
-- Static settlement: s = W / K_z, the total weight W on the static vertical spring K_z of the
-  scene's soil method (its ω = 0 value for a frequency-dependent one): the elastic settlement of
-  the soil model the dynamic checks use, not a consolidation settlement. Above the allowable of the
-  scene (``[limits] settlement``) the check **fails**; crank and block scenes alike.
+- Static settlement: s = W / K_z, the total weight W on the static vertical spring K_z at O of the
+  scene's support (a soil method's, a pile group's; its ω = 0 value for a frequency-dependent one):
+  the elastic settlement of the model the dynamic checks use, not a consolidation settlement. Above
+  the allowable of the scene (``[limits] settlement``) the check **fails**; crank and block scenes
+  alike. What the office checks leave out, each support says on the sheet
+  (:func:`~foundation_calc.solvers.supports.base.not_checked`).
 - Mass ratio: the same rules of thumb: a block at least 2-3 times the mass of a rotating
   machine and 3-5 times that of a reciprocating one. A rule of thumb, so below
   ``[limits] mass_ratio`` (default 3) the check **warns**.

@@ -81,8 +81,8 @@ def amplitudes_document(report: BlockReport, scene, source: str) -> dict:
 
 
 #: How the block's machines with periodic inertia are solved, in the JSON and under the table.
-PERIODIC_METHOD = ("exact periodic solution with the cranks' angle-dependent inertia (harmonic balance); the limits"
-                   " judge the first approximation (averaged operator)")
+PERIODIC_METHOD = ("exact periodic solution with the angle-dependent inertia of the machine's parts (harmonic"
+                   " balance); the limits judge the first approximation (averaged operator)")
 
 
 def _periodic_document(c, names) -> dict:
@@ -106,19 +106,18 @@ def print_periodic_inertia(report: BlockReport, units: DisplayUnits) -> None:
 
     amp = units.label("amplitude")
     for c in report.periodic:
-        t = _table(f"{escape(c.name)}: exact periodic solution (harmonic balance, {c.harmonics} harmonics) and first"
-                   f" approximation, peak displacement [{amp}]",
-                   ("point", "exact x", "exact y", "exact z", "first x", "first y", "first z"), ())
+        t = _table(f"{escape(c.name)}: peak displacement [{amp}], exact periodic solution (harmonic balance,"
+                   f" {c.harmonics} harmonics) and first approximation", ("point", "solution", "x", "y", "z"),
+                   ("x", "y", "z"))  # a row per solution: 80 columns
         for i, p in enumerate(report.motion.names):
-            t.add_row(escape(p), *(fmt(units.convert("amplitude", v), 5) for v in c.exact_peak[i]),
-                      *(fmt(units.convert("amplitude", v), 5) for v in c.first_peak[i]))
-        for col in t.columns[1:]:
-            col.justify = "right"
+            for solution, peaks in (("exact", c.exact_peak), ("first", c.first_peak)):
+                t.add_row(escape(p) if solution == "exact" else "", solution,
+                          *(fmt(units.convert("amplitude", v), 5) for v in peaks[i]))
         stdout().print(t)
         capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
                   f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
         stdout().print(f"{escape(c.name)}: first approximation's error {c.error:.2g} (largest relative difference of the"
-                       f" peaks from the exact solution's){capped}; the limits judge the first approximation", soft_wrap=True)
+                       f" peaks from the exact solution's){capped}; the limits judge the first approximation")
 
 
 def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
@@ -135,7 +134,7 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
     from rich.markup import escape
 
     out = stdout()
-    out.print(speeds_line(report, scene, source, units), soft_wrap=True)
+    out.print(speeds_line(report, scene, source, units))
     print_modes(report.modes, units)
     motion = report.motion
     if motion is None:
@@ -151,27 +150,25 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
                 cells = [_phasor(U[i, d, k], scale, units) for d in range(3)]
                 h.add_row(escape(name), str(n), escape(p), *cells)
     out.print(h)
-    vel = units.label("velocity")
-    t = _table("Peaks and RMS (" + COMBINATION + ")",
-               ("point", f"peak x, {amp}", f"peak y, {amp}", f"peak z, {amp}", f"RMS v x, {vel}", f"RMS v y, {vel}",
-                f"RMS v z, {vel}"), ())
-    for i, p in enumerate(motion.names):
-        t.add_row(escape(p), *(fmt(units.convert("amplitude", v), 4) for v in motion.peak[i]),
-                  *(fmt(units.convert("velocity", v), 4) for v in motion.velocity_rms[i]))
-    for col in t.columns[1:]:
-        col.justify = "right"
-    out.print(t)
+    if len(motion.machines) > 1:
+        out.print(COMBINATION[0].upper() + COMBINATION[1:] + ".")
+    for title, quantity, values in ((f"Peak displacement [{amp}]", "amplitude", motion.peak),
+                                    (f"RMS velocity [{units.label('velocity')}]", "velocity", motion.velocity_rms)):
+        t = _table(title, ("point", "x", "y", "z"), ("x", "y", "z"))  # one table each: 80 columns
+        for i, p in enumerate(motion.names):
+            t.add_row(escape(p), *(fmt(units.convert(quantity, v), 4) for v in values[i]))
+        out.print(t)
     if report.limit_rows:
         out.print(limits_table(report.limit_rows, units, "Limits",
                                not all_points and len(motion.names) - 1 > ALL_POINTS_UP_TO, strict))
     if report.zone_rows:
-        out.print(zones_table(report.zone_rows, units, DIRECTIONS, strict))
+        out.print(*zones_table(report.zone_rows, units, DIRECTIONS, strict))
         print_supports(report.zone_rows)
     print_periodic_inertia(report, units)
     for w in report.code_warnings:
-        out.print(f"note: {escape(w)}", soft_wrap=True)
+        out.print(f"note: {escape(w)}")
     if report.amplitude_range is not None:
-        out.print(f"Amplitudes {escape(report.amplitude_range.text)}", soft_wrap=True)
+        out.print(f"Amplitudes {escape(report.amplitude_range.text)}")
     print_office(report, strict)
     print_soil_validity(report.soil_validity)
     out.print(f"{verdict_text(report.amplitude_outcome.value, strict)}: amplitudes")
@@ -183,7 +180,7 @@ def print_office(report: BlockReport, strict: bool = False) -> None:
 
     t = _table("Office checks, for information: fcalc check judges them", ("check", "result", "source", "verdict"))
     for o in report.office:
-        t.add_row(o.name, escape(o.text), o.source, verdict_text(o.outcome.value, strict))
+        t.add_row(o.name, escape(o.text), escape(o.source), verdict_text(o.outcome.value, strict))
     stdout().print(t)
 
 

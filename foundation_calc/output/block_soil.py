@@ -15,7 +15,7 @@ from foundation_calc.units import hz_from_omega
 UNITS = {"K": ("N/m",) * 3 + ("N m/rad",) * 3, "C": ("N s/m",) * 3 + ("N m s/rad",) * 3}
 
 #: Rows of the tables at each frequency: (label, unit, scale from SI) of each spring, then of each
-#: dashpot (units that keep four significant figures short, so nine columns fit 80 characters).
+#: dashpot (units that keep four significant figures short).
 SPRINGS_AT = tuple((f"K_{m}(ω)", "MN/m" if i < 3 else "MN m/rad", 1e-6) for i, m in enumerate(MOTIONS))
 DASHPOTS_AT = tuple((f"C_{m}(ω)", "MN s/m" if i < 3 else "MN m s/rad", 1e-6) for i, m in enumerate(MOTIONS))
 
@@ -97,17 +97,35 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     out.print(table)
     for part in support.soil_section(_speeds(scene)).printed:
         if isinstance(part, str):
-            out.print(escape(part), soft_wrap=True)
+            out.print(escape(part))
         else:
             out.print(frequency_table(part.title, part.heads, part.rows, part.digits))
     speeds = [c for c in columns if c.at != "mode"]
     modes = [c for c in columns if c.at == "mode"]
     if speeds:
-        out.print(frequency_table("Springs and dashpots at O at rest and at each machine's speed ω",
-                                  [c.label for c in speeds], _frequency_rows(speeds), 4))
+        _print_frequencies("Springs and dashpots at O at rest and at each machine's speed ω", speeds)
     if modes:
-        out.print(frequency_table("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of"
-                                  " fcalc resonance, its dominant motion)", [c.label for c in modes], _frequency_rows(modes), 4))
+        _print_frequencies("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of fcalc"
+                           " resonance, its dominant motion)", modes)
         out.print(support.a0(0.0)[1] + ". The modes and the checks take the soil at these"
                   " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at rest"
-                  " only.", soft_wrap=True)
+                  " only.")
+
+
+def _print_frequencies(title: str, columns) -> None:
+    """The springs and dashpots at the frequencies of ``columns``: one table, or as few tables of
+    fewer frequencies each as fit the console's width (a terminal's; a file takes one)."""
+    from math import ceil
+
+    from foundation_calc.output.console import fits
+    from foundation_calc.output.soil import frequency_table
+
+    out = stdout()
+    for parts in range(1, len(columns) + 1):
+        size = ceil(len(columns) / parts)
+        groups = [columns[k:k + size] for k in range(0, len(columns), size)]
+        tables = [frequency_table(title if k == 0 else f"{title} (continued)", [c.label for c in group],
+                                  _frequency_rows(group), 4) for k, group in enumerate(groups)]
+        if all(fits(t, out.width) for t in tables) or size == 1:
+            out.print(*tables)
+            return

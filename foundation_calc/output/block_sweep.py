@@ -57,12 +57,11 @@ def print_sweep(sweep, scene, source: str, units) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-
     amp, vel, speed = units.label("amplitude"), units.label("velocity"), units.label("speed")
-    table = Table(title=f"{escape(scene.name or source)}: sweep of {escape(sweep.machine)}'s speed ({_others(sweep)};"
-                  " largest over G and the points)", title_justify="left")
-    for col in (speed, f"peak x, {amp}", f"peak y, {amp}", f"peak z, {amp}", f"RMS v (largest), {vel}",
-                "status: governing resonance, margin; limits"):
+    table = Table(title=escape(f"{scene.name or source}: sweep of {sweep.machine}'s speed ({_others(sweep)}; largest over"
+                               f" G and the points): peak displacement x, y, z [{amp}], RMS velocity v [{vel}] (largest"
+                               " direction)"), title_justify="left")
+    for col in (speed, "x", "y", "z", "v", "status: governing resonance, margin; limits"):
         table.add_column(escape(col), justify="left" if col.startswith("status") else "right")
     for i, row in enumerate(_rows(sweep)):
         table.add_row(fmt(units.convert("speed", row["omega"])), *(fmt(units.convert("amplitude", v), 4) for v in sweep.peak[i]),

@@ -75,6 +75,33 @@ def _common_folder(sources: list[str]) -> str:
     return common if all(f == common or f.startswith(common + os.sep) for f in folders) else ""
 
 
+#: The narrowest reason column [terminal cells] beside the scene column; on a terminal that leaves
+#: less, each scene gets a table of its own under its name.
+REASON_WIDTH = 30
+
+
+def _check_table(title, rows, columns):
+    """A table of the check rows (their cells: plain text, the verdict as markup)."""
+    from rich.table import Table
+    from rich.text import Text
+
+    table = Table(title=title, title_justify="left")
+    for col in columns:
+        table.add_column(col)
+    for row in rows:
+        table.add_row(*(cell if k == len(row) - 2 else Text(cell) for k, cell in enumerate(row)))
+    return table
+
+
+def _reason_room(table, width: int) -> int:
+    """The cells a ``width`` console leaves the last column (the reasons) of ``table``."""
+    from foundation_calc.output.console import column_widths, keep_words_whole
+
+    keep_words_whole(table)
+    _, floor, room = column_widths(table, width)
+    return room - sum(floor[:-1])
+
+
 def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False, verbose: bool = False) -> None:
     """One line per scene and check (scene, check, verdict, reason), then the counts of scenes
     and of checks. An invalid scene shows its first problem (all of them with ``verbose``; they
@@ -87,9 +114,7 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
     checked = [scene for scene in scenes if not scene.skipped]
     folder = _common_folder([scene.source for scene in checked])
     title = f"fcalc check: scenes in {folder}{os.sep}" if folder else "fcalc check"
-    table = Table(title=Text(title), title_justify="left")
-    for col in ("scene", "check", "verdict", "reason"):
-        table.add_column(col)
+    rows = []
     for scene in checked:
         shown = os.path.relpath(scene.source, folder) if folder else scene.source
         for run in scene.runs:
@@ -100,17 +125,23 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
                 lines = [lines[0], f"(+{more} more problem{'s' * (more > 1)}, on stderr)"]
             if verbose:
                 lines += list(run.details)
-            table.add_row(Text(shown), run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", Text("\n".join(lines)))
+            rows.append((shown, run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", "\n".join(lines)))
     out = stdout()
-    out.print(table)
+    table = _check_table(Text(title), rows, ("scene", "check", "verdict", "reason"))
+    if _reason_room(table, out.width) >= REASON_WIDTH:
+        out.print(table)
+    else:  # a narrow terminal: the scene's name over its own table leaves the reasons room
+        out.print(Text(title))
+        for shown in dict.fromkeys(row[0] for row in rows):
+            out.print(_check_table(Text(shown, style="bold"), [row[1:] for row in rows if row[0] == shown],
+                                   ("check", "verdict", "reason")))
     skipped = [f"{scene.source} ({scene.skip_note})" for scene in scenes if scene.skipped]
     if skipped:
-        out.print(Text("skipped: " + ", ".join(skipped)), soft_wrap=True)
+        out.print(Text("skipped: " + ", ".join(skipped)))
     out.print(
         f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
         f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
         f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
-        soft_wrap=True,
     )
 
 

@@ -27,25 +27,83 @@ def keep_words_whole(table) -> None:
     never cut at any width; a table that cannot fit runs past the right edge instead.
     """
     from rich.cells import cell_len
-    from rich.text import Text
-
-    def plain_text(cell) -> str:
-        if isinstance(cell, Text):
-            return cell.plain
-        if isinstance(cell, str):  # markup only where a tag may be: parsing every number costs
-            return Text.from_markup(cell).plain if "[" in cell else cell
-        return ""
 
     for column in table.columns:
         cells = (column.header, *column.cells)
-        plain = map(plain_text, cells)
+        plain = map(_plain_text, cells)
         longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
         column.min_width = max(column.min_width or 0, longest)
 
 
+def _plain_text(cell) -> str:
+    """A cell's text without markup ("" for another renderable)."""
+    from rich.text import Text
+
+    if isinstance(cell, Text):
+        return cell.plain
+    if isinstance(cell, str):  # markup only where a tag may be: parsing every number costs
+        return Text.from_markup(cell).plain if "[" in cell else cell
+    return ""
+
+
+def column_widths(table, width: int) -> tuple[list[int], list[int], int]:
+    """A table's columns' natural widths, their floors (each column's longest word: the
+    ``min_width`` of :func:`keep_words_whole`) and the room ``width`` leaves for the columns'
+    text, borders and padding taken off [terminal cells]."""
+    from rich.cells import cell_len
+
+    columns = table.columns
+    natural = [max((cell_len(line) for cell in (c.header, *c.cells) for line in _plain_text(cell).splitlines()),
+                   default=0) for c in columns]
+    floor = [n if c.no_wrap else min(c.min_width or 0, n) for c, n in zip(columns, natural)]  # no_wrap: never narrowed
+    return natural, floor, width - table._extra_width - sum(table._get_padding_width(i) for i in range(len(columns)))
+
+
+def fits(table, width: int) -> bool:
+    """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
+    at most down to their longest words)."""
+    keep_words_whole(table)
+    _, floor, room = column_widths(table, width)
+    return sum(floor) <= room
+
+
+def fit_columns(table, width: int) -> None:
+    """Cap the widest columns of a rich ``table`` so that it fits ``width`` terminal cells, each
+    column at least as wide as its longest word (:func:`keep_words_whole`, called first).
+
+    Rich narrows a table that is too wide by levelling its widest columns, and a column held at
+    its longest word then pushes the table past the edge even where narrower columns could have
+    given way. Here the columns' widths are levelled down to one cap C, the largest that fits
+    (each column max(its longest word, min(its natural width, C))), so a table fits whenever its
+    words do. A table that fits as it is, or whose words alone are wider, is left alone.
+    """
+    columns = table.columns
+    if not columns:
+        return
+    natural, floor, room = column_widths(table, width)
+    if sum(natural) <= room or sum(floor) > room:
+        return
+
+    def total(cap: int) -> int:
+        return sum(max(f, min(n, cap)) for f, n in zip(floor, natural))
+
+    low, high = 0, max(natural)  # total(low) <= room < total(high)
+    while high - low > 1:
+        mid = (low + high) // 2
+        low, high = (mid, high) if total(mid) <= room else (low, mid)
+    spare = room - total(low)
+    for column, f, n in zip(columns, floor, natural):
+        cap = max(f, min(n, low))
+        if cap < n and spare > 0 and cap == low:  # the cells left over go to the first capped columns
+            cap, spare = cap + 1, spare - 1
+        if cap < n:
+            column.max_width = cap
+
+
 @cache
 def stdout() -> Console:
-    """Console for results: full width when not a terminal, and no table cuts a word."""
+    """Console for results: full width when not a terminal, and no table cuts a word; on a
+    terminal a table too wide is fitted to it (:func:`fit_columns`)."""
     import sys
 
     from rich.console import Console
@@ -60,6 +118,7 @@ def stdout() -> Console:
             for item in objects:
                 if isinstance(item, Table):
                     keep_words_whole(item)
+                    fit_columns(item, self.width)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
             super().print(*objects, **kwargs)
 

@@ -334,7 +334,7 @@ def print_amplitudes_report(
         title = f"Limits (checked with: {report.approximations[report.checked].title})"
         out.print(limits_table(report.rows, units, title, _summarised(report, all_points)))
     if report.code_rows:
-        out.print(zones_table(report.code_rows, units, DIRECTIONS))
+        out.print(*zones_table(report.code_rows, units, DIRECTIONS))
         print_supports(report.code_rows)
     for warning in report.code_warnings:
         out.print(Text(f"warning: {warning}", style="yellow"))

@@ -64,7 +64,8 @@ def _zone_document(row, directions) -> dict:
 
 
 def limits_table(rows, units, title: str, summarised: bool = False, strict: bool = False):
-    """The limit rows as a table (numbers in ``units``); ``summarised``: only the
+    """The limit rows as a table (numbers in ``units``, each quantity's unit beside its name; ratio:
+    the row's value/limit); ``summarised``: only the
     :data:`WORST_ROWS` largest value/limit ratios and the largest of each quantity."""
     from rich.table import Table
     from rich.text import Text
@@ -75,18 +76,20 @@ def limits_table(rows, units, title: str, summarised: bool = False, strict: bool
                   f" largest of each quantity ({EVERY_ROW})")
         rows = shown
     table = Table(title=title, title_justify="left")
-    for col in ("point", "direction", "quantity", "value", "limit", "value/limit", "verdict"):
-        table.add_column(col, justify="right" if col in ("value", "limit", "value/limit") else "left")
-    for row in rows:
+    for col in ("point", "along", "quantity", "value", "limit", "ratio", "verdict"):
+        table.add_column(col, justify="right" if col in ("value", "limit", "ratio") else "left")
+    for row in rows:  # the unit with the quantity, so that the numbers' columns stay narrow (80 columns)
         quantity = display_quantity(row.quantity)
-        table.add_row(Text(row.point), row.direction, row.quantity, units.show(quantity, row.value),
-                      units.show(quantity, row.limit), f"{row.ratio:.3f}", verdict_text(row.outcome.value, strict))
+        table.add_row(Text(row.point), row.direction, Text(f"{row.quantity} [{units.label(quantity)}]"),
+                      fmt(units.convert(quantity, row.value)), fmt(units.convert(quantity, row.limit)),
+                      f"{row.ratio:.3f}", verdict_text(row.outcome.value, strict))
     return table
 
 
 def zones_table(rows, units, directions, strict: bool = False):
-    """The code zone of every point as a table: its RMS velocity in each of ``directions``, its
-    largest RMS displacement, the deciding quantity and direction, the support class, the zone."""
+    """The code zone of every point in two tables that fit 80 columns: its RMS velocity in each of
+    ``directions`` and its largest RMS displacement; then the deciding quantity and direction, the
+    support class, the zone and the verdict."""
     from rich.table import Table
     from rich.text import Text
 
@@ -97,23 +100,22 @@ def zones_table(rows, units, directions, strict: bool = False):
         f" mm/s, {', '.join(f'{n} {b:g}' for n, b in zip(BOUNDARIES, t.displacement_boundaries_um))} µm"
         for kind, t in tables.items()
     )
-    table = Table(
-        title=f"{first.code}, group {first.group}: zones of the RMS velocity and displacement, the more restrictive"
-        f" deciding (boundaries: {bounds})", title_justify="left",
-    )
     unit = units.label("velocity")
-    columns = ("point", *(f"{d} [{unit}]" for d in directions), f"displacement [{units.label('amplitude')}]", "by",
-               "governs", "support", "zone", "fails over", "verdict")
-    for col in columns:
-        table.add_column(col.replace("[", "\\["), justify="right" if "[" in col or col == "fails over" else "left")
+    values = Table(title=f"{first.code}, group {first.group}: RMS velocity of each point and its largest RMS displacement",
+                   title_justify="left")
+    for col in ("point", *(f"{d} [{unit}]" for d in directions), f"displacement [{units.label('amplitude')}]"):
+        values.add_column(col.replace("[", "\\["), justify="left" if col == "point" else "right")
+    zones = Table(title=f"{first.code}, group {first.group}: zones of the RMS velocity and displacement, the more"
+                  f" restrictive deciding (boundaries: {bounds})", title_justify="left")
+    for col in ("point", "by", "governs", "support", "zone", "fails over", "verdict"):
+        zones.add_column(col, justify="right" if col == "fails over" else "left")
     for row in rows:
         shown = "velocity" if row.judged.quantity == "velocity" else "amplitude"
-        table.add_row(
-            Text(row.point), *(fmt(units.convert("velocity", v)) for v in row.velocity),
-            fmt(units.convert("amplitude", max(row.displacement))), row.judged.quantity, row.direction,
-            row.table.foundation, row.zone, units.show(shown, row.limit), verdict_text(row.outcome.value, strict),
-        )
-    return table
+        values.add_row(Text(row.point), *(fmt(units.convert("velocity", v)) for v in row.velocity),
+                       fmt(units.convert("amplitude", max(row.displacement))))
+        zones.add_row(Text(row.point), row.judged.quantity, row.direction, row.table.foundation, row.zone,
+                      units.show(shown, row.limit), verdict_text(row.outcome.value, strict))
+    return values, zones
 
 
 __all__ = ["ALL_POINTS_UP_TO", "EVERY_ROW", "WORST_ROWS", "code_document", "limits_document", "limits_table", "zones_table"]

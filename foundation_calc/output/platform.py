@@ -110,10 +110,15 @@ def platform_document(report: PlatformReport, scene, source: str, given_as: str)
     }
 
 
+#: The columns of numbers, right-justified so that their digits line up.
+NUMBERS = ("value", "rad/s", "Hz", "rpm", "margin", "x (c_i1)", "y (c_i2)", "z (c_i3)", "rocking +", "rocking -",
+           "static +", "static -")
+
+
 def _table(title: str, *columns: str) -> Table:
     table = Table(title=title, title_justify="left")
     for col in columns:
-        table.add_column(col, justify="right" if col in ("value", "rad/s", "Hz", "rpm", "margin") else "left")
+        table.add_column(col, justify="right" if col in NUMBERS else "left")
     return table
 
 
@@ -184,8 +189,8 @@ def print_platform_report(report: PlatformReport, scene, source: str, given_as: 
     out.print(se)
 
     for f in report.findings:
-        out.print(f"{verdict_text(f.outcome.value)} {escape(f.name)}: {escape(f.message)}", soft_wrap=True)
-    out.print(f"{verdict_text(report.outcome.value, strict)}: {summary(report)}", soft_wrap=True)
+        out.print(f"{verdict_text(f.outcome.value)} {escape(f.name)}: {escape(f.message)}")
+    out.print(f"{verdict_text(report.outcome.value, strict)}: {summary(report)}")
 
 
 def summary(report: PlatformReport) -> str:

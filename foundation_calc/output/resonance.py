@@ -17,7 +17,7 @@ import numpy as np
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 from foundation_calc.checks.resonance import ResonanceReport
 from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, bands_text
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, titled_table, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, titled_table, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import print_soil_validity, soil_validity_document
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
@@ -196,6 +196,15 @@ def _print_plane(report: ResonanceReport, scene, source: str, units: DisplayUnit
     out.print(freqs)
 
 
+def _status(row, strict: bool) -> str:
+    """A block's condition as the rule takes it: ``info`` for a higher order under the forcing
+    share inside its band, ``not judged`` for one outside it, else its verdict (rules 1-4 of
+    :mod:`~foundation_calc.checks.resonance_rule`: the speed itself always decides)."""
+    if row.information:
+        return "info"
+    return verdict_text(row.outcome.value, strict) if row.judged or row.order == 1 else "not judged"
+
+
 def _conditions_table(report: ResonanceReport, units: DisplayUnits, strict: bool):
     """Every condition shown: the block's by machine, order and mode; the plane model's by its
     label, with both critical speeds."""
@@ -208,10 +217,9 @@ def _conditions_table(report: ResonanceReport, units: DisplayUnits, strict: bool
                          (f"critical, {speed}", "margin", "needs", "forcing share"))
         for r in report.rows:
             t.add_row(escape(r.machine), str(r.order), f"{r.mode} ({r.motion})", fmt(units.convert("speed", r.critical)),
-                      f"{r.margin:.1%}", f"{r.required:.0%}", f"{r.share:.3g}" + ("" if r.judged else " (not judged)"),
-                      verdict_text(r.outcome.value, strict) if not r.information else "info")
+                      f"{r.margin:.1%}", f"{r.required:.0%}", fmt_scaled(r.share, 1.0, 3), _status(r, strict))
         return t
-    columns = ("condition", "mode", speed, f"{speed}, avg. inertia", "margin", "required", "forcing share", "verdict")
+    columns = ("condition", "mode", speed, f"{speed}, avg. inertia", "margin", "needs", "forcing share", "verdict")
     t = titled_table("Resonances (critical speeds)", columns, columns[2:7])
     for row in report.rows:
         t.add_row(
@@ -221,9 +229,9 @@ def _conditions_table(report: ResonanceReport, units: DisplayUnits, strict: bool
             fmt(units.convert("speed", row.critical_averaged)),
             f"{row.margin:.1%}",
             f"{row.required:.0%}" if row.required > 0.0 else "none",
-            f"{row.share:.2g}",
+            fmt_scaled(row.share, 1.0, 2),
             verdict_text(row.outcome.value) if row.judged or row.status > INFORMATION else
-            ("information" if row.information else "not judged"),
+            ("info" if row.information else "not judged"),
         )
     return t
 
@@ -234,7 +242,7 @@ def print_resonance(report: ResonanceReport, scene, source: str, units: DisplayU
     every condition, the soil model's validity and the verdict."""
     out = stdout()
     if report.per_machine:
-        out.print(speeds_line(report, scene, source, units), soft_wrap=True)
+        out.print(speeds_line(report, scene, source, units))
         print_modes(report.modes, units)
     else:
         _print_plane(report, scene, source, units)
@@ -242,11 +250,14 @@ def print_resonance(report: ResonanceReport, scene, source: str, units: DisplayU
     if not report.per_machine:
         out.print(
             f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"
-            f" {FORCING_SHARE:.0%}; required: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
-            " The rule: docs/resonance-rule.md.", soft_wrap=True,
+            f" {FORCING_SHARE:.0%}; needs: the band of the condition's order (\\[limits] detuning = {bands_text(report.detuning)})."
+            " The rule: docs/resonance-rule.md.",
         )
+    if report.per_machine:
+        out.print(f"Forcing share: |φᵀF_n|/p of the order on the mode over the machine's largest; a higher order"
+                  f" under {FORCING_SHARE:.0%} is not judged (info: inside its band). The rule: docs/resonance-rule.md.")
     print_soil_validity(report.soil_validity)
-    out.print(summary_line(report, strict, units), soft_wrap=True)
+    out.print(summary_line(report, strict, units))
 
 
 __all__ = ["MOTION_NAMES", "modes_document", "print_modes", "print_resonance", "resonance_document", "rule_document",

@@ -126,22 +126,26 @@ def runup_document(report: RunupReport, scene, source: str) -> dict:
     }
 
 
-def _passages_table(key: str, r: RunupResult, points) -> Table:
+def _passages_tables(key: str, r: RunupResult, points) -> tuple[Table, Table]:
+    """A run's passages in two tables that fit 80 columns: each passage (its mode, harmonic, speed,
+    sweep rate η, damping ζ and the time of its peak), then its peaks [m] by each method."""
     title = (
         f"{run_title(key).capitalize()} in {fmt(r.duration)} s: every resonance passed"
         f" (steady amplitude at the operating speed {fmt(r.steady)} m)"
     )
-    table = Table(title=title, title_justify="left")
-    for name in ("mode", "ω_n [rad/s]", "harmonic", "speed [rad/s]", "η [-]", "ζ [-]", "closed form [m]",
-                 "Lewis, undamped [m]", "integration [m]", "at t [s]", "all modes [m]", "× steady", "point"):
-        table.add_column(escape(name), justify="left" if name == "point" else "right")
+    passages = Table(title=title, title_justify="left")
+    for name in ("mode", "ω_n [rad/s]", "harmonic", "speed [rad/s]", "η [-]", "ζ [-]", "peak at t [s]"):
+        passages.add_column(escape(name), justify="right")
+    peaks = Table(title=escape(f"{run_title(key).capitalize()}: peak of each passage [m]"), title_justify="left")
+    for name in ("mode", "closed form", "Lewis, undamped", "integration", "all modes", "× steady", "point"):
+        peaks.add_column(escape(name), justify="left" if name == "point" else "right")
     for p in r.passages:
-        table.add_row(
-            escape(mode_label(p.mode, r.names)), fmt(p.natural), f"{p.ratio:g}ω", fmt(p.speed), fmt(p.eta, 3), fmt(p.zeta, 3),
-            fmt(p.closed_form, 4), fmt(p.lewis, 4), fmt(p.integrated, 4), fmt(p.peak_time, 4), fmt(p.total, 4),
-            fmt(p.total / r.steady, 3) if r.steady > 0.0 else "-", escape(points[p.point]),
-        )
-    return table
+        mode = escape(mode_label(p.mode, r.names))
+        passages.add_row(mode, fmt(p.natural), f"{p.ratio:g}ω", fmt(p.speed), fmt(p.eta, 3), fmt(p.zeta, 3),
+                         fmt(p.peak_time, 4))
+        peaks.add_row(mode, fmt(p.closed_form, 4), fmt(p.lewis, 4), fmt(p.integrated, 4), fmt(p.total, 4),
+                      fmt(p.total / r.steady, 3) if r.steady > 0.0 else "-", escape(points[p.point]))
+    return passages, peaks
 
 
 def _motor_table(report: RunupReport, machine: str) -> Table:
@@ -185,28 +189,30 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
     for key, r in report.runs.items():
         if r.passages:
-            out.print(_passages_table(key, r, report.points))
+            out.print(*_passages_tables(key, r, report.points))
         else:
             out.print(f"{run_title(key).capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
-    out.print(
-        "closed form: the mode alone, Faddeeva envelope with the unbalance force (≤ +3 % for η ≤ 1e-2);"
-        " integration: the same mode's motion in the time integration of the whole linear model;"
-        " all modes: largest displacement of any point in the passage's window"
-    )
+    if any(r.passages for r in report.runs.values()):  # what the passages' columns mean
+        out.print(
+            "closed form: the mode alone, Faddeeva envelope with the order's force (its inertial part growing as the"
+            " speed squared; ≤ +3 % for η ≤ 1e-2);"
+            " integration: the same mode's motion in the time integration of the whole linear model;"
+            " all modes: largest displacement of any point in the passage's window"
+        )
     if report.frequency_dependent:
         out.print(SOIL_NOTE)
     for machine in report.motors:
         out.print(_motor_table(report, machine))
+    limited = any(row.limit is not None for row in report.rows)  # without a limit the verdict below says why
     table = Table(title="Largest displacement during the runs", title_justify="left")
-    for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", "limit [m]", "ratio", "verdict"):
+    for name in ("point", "run", "steady |u| [m]", "transient |u| [m]", *(("limit [m]", "ratio", "verdict") if limited else ())):
         table.add_column(escape(name), justify="left" if name in ("point", "run", "verdict") else "right")
     for row in report.rows:
         steady = report.steady_points[report.points.index(row.point)]
-        table.add_row(
-            escape(row.point), run_title(row.run), fmt(float(steady), 4), fmt(row.value, 4),
-            fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
-            NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value),
-        )
+        judged = (fmt(row.limit, 4) if row.limit is not None else "none", fmt(row.ratio, 3) if row.ratio is not None else "-",
+                  NOT_JUDGED if row.outcome is None else verdict_text(row.outcome.value))
+        table.add_row(escape(row.point), run_title(row.run), fmt(float(steady), 4), fmt(row.value, 4),
+                      *(judged if limited else ()))
     out.print(table)
     out.print(_directions_table(report))
     same = " (the steady ones are fcalc amplitudes' peaks of the same point)" if scene.kind != "platform" else ""

@@ -23,7 +23,9 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no run time with [limits]"
                                  " transient_amplitude, and no [drive])."))
-    text = "; ".join([*_static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
+    from foundation_calc.solvers.supports.footing import static_missing
+
+    text = "; ".join([*static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
                       " out-of-plane vibration, transmission to neighbouring structures."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
@@ -34,12 +36,6 @@ def _undamped(support) -> bool:
     import numpy as np
 
     return not support.frequency_dependent and not np.any(support.impedance(0.0).dashpots)
-
-
-def _static_missing(limits) -> list[str]:
-    """The office checks on the soil a scene leaves out, for want of their allowables."""
-    return ([] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]) + (
-        [] if limits.settlement is not None else ["static settlement W/K_z (no [limits] settlement)"])
 
 
 def _platform(scene, checks: set[str]) -> list[tuple[str, str]]:
@@ -68,9 +64,12 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if _undamped(support):
         rows.append(("damping", "Undamped: amplitudes near a resonance are unbounded; the resonance check"
                                 " keeps the speeds away from them."))
-    rows.append(("loads", "Each machine's loads as given, harmonic orders n at nω (amplitude, phase, point);"
-                          " an unbalance from its balance grade, F = m_r G ω rotating normal to its axis; no"
-                          " interaction of the machines with the block's motion."))
+    rows.append(("loads", _loads(scene.machines)))
+    if any(m.periodic_parts for m in scene.machines):
+        rows.append(("response", "Machine parts whose inertia depends on the shaft's angle (a crank mechanism's rods"
+                                 " and sliders): the limits judge the first approximation, their mass averaged over a"
+                                 " revolution (the averaged operator); the exact periodic solution with the"
+                                 " angle-dependent mass matrix (harmonic balance) gives its error (Accuracy)."))
     if len(scene.machines) > 1:
         rows.append(("machines", "Steady state of each machine solved alone; the peaks of the machines added"
                                  " (an upper bound: their relative phase is not known) and the RMS values"
@@ -88,10 +87,24 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no [operation] run time with [limits]"
                                  " transient_amplitude)."))
-    text = "; ".join([*_static_missing(limits), "dynamic soil pressure and settlement, strength and fatigue of the block, anchors,"
-                                " grout and machines, transmission to neighbouring structures and people."])
+    from foundation_calc.solvers.supports.base import not_checked
+
+    text = "; ".join([*not_checked(support, limits), "strength and fatigue of the block, anchors, grout and machines,"
+                      " transmission to neighbouring structures and people."])  # the support names its own terms
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows
+
+
+def _loads(machines) -> str:
+    """The loads row of a block: what forces the scene's machines, by the kinds of parts they have."""
+    kinds = [text for key, text in (
+        ("loads", "the vendor's loads as given, harmonic orders n at nω (amplitude, phase, point)"),
+        ("unbalance", "an unbalance from its balance grade, F = m_r G ω rotating normal to its axis"),
+        ("cranks", "the crank mechanisms' inertia forces, every order of the sliders' and rods' motion at the"
+                   " machine's speed ([KM] for one throw)"),
+    ) if any(getattr(m, key) for m in machines)]
+    said = "; ".join(kinds) if kinds else "each machine's parts' loads at their orders n, at nω"
+    return f"{said[0].upper()}{said[1:]}; the forces do not depend on the block's motion."
 
 
 def assumptions_section(scene, runs) -> Section:

@@ -10,17 +10,28 @@ the sheet, ``output/report/chain.py``).
 from __future__ import annotations
 
 from foundation_calc.output.report.model import Paragraph, Section
+from foundation_calc.output.report.numbers import figure
 
 
-def block_accuracy_section(scene) -> Section:
-    """The statements of the accuracy of a block sheet's judged numbers (module docstring)."""
+def block_accuracy_section(scene, periodic=()) -> Section:
+    """The statements of the accuracy of a block sheet's judged numbers (module docstring);
+    ``periodic``: the amplitudes document's ``periodic_inertia`` entries, the first approximation's
+    error for each machine whose parts have angle-dependent inertia."""
     soil = getattr(scene, "soil", None)
     dependent = soil is not None and getattr(soil, "frequency_dependent", False)
     several = len(scene.machines) > 1
+    solve = ("Limits checked on the steady state of Eq. (1) under Methods: one complex solve"
+             " (K − Ω² M + i Ω C) Z = Q_n per order of each machine, ")
+    exact = [f"{c['machine']}: at most {figure(100.0 * c['first_approximation_error'], 2)} % of a peak"
+             f" ({c['harmonics']} harmonics)" for c in periodic or ()]
     text = [
-        "Limits checked on the steady state of Eq. (1) under Methods: one complex solve"
-        " (K − Ω² M + i Ω C) Z = Q_n per order of each machine, the exact steady state of the linear"
-        " rigid-block model; there is no closed-form approximation whose error would need estimating.",
+        solve + ("the first approximation of the machines whose parts have an angle-dependent inertia (their mean"
+                 " mass matrix, the averaged operator); its error against the exact periodic solution with the"
+                 " angle-dependent mass matrix M(ωt) (harmonic balance, its largest relative difference of the"
+                 " peaks of G, the points and the rotations): " + "; ".join(exact) + "."
+                 if exact else
+                 "the exact steady state of the linear rigid-block model; there is no closed-form approximation"
+                 " whose error would need estimating."),
         "Peaks over time: each machine's series Σ_n Re(u_P,n e^{i nωt}) is searched to round-off (sampled,"
         " then refined by Newton steps)"
         + ("; the machines' peaks are added, an upper bound of their combined motion that is reached when"

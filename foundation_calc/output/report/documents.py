@@ -96,7 +96,7 @@ def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, fi
             from foundation_calc.output.report.figures import block_sweep_figures
 
             plots = (Section("Plots", block_sweep_figures(loaded, units, documents["resonance"])),)
-        return (*plots, block_accuracy_section(loaded))
+        return (*plots, block_accuracy_section(loaded, documents.get("amplitudes", {}).get("periodic_inertia")))
     if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
         resonance = documents["resonance"]
         plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()

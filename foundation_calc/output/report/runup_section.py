@@ -11,8 +11,8 @@ from foundation_calc.output.report.model import Figure, Paragraph, Section, tabl
 from foundation_calc.output.report.numbers import DIGITS, figure, quantity
 
 CLOSED_FORM_NOTE = (
-    "closed form: the mode alone, Faddeeva envelope of the passage with the unbalance force growing as"
-    " (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote [Le]; integrated: the same mode's motion"
+    "closed form: the mode alone, Faddeeva envelope of the passage with the order's force, its inertial part"
+    " growing as (Ω/ω)² (within +3 % for η ≤ 10⁻²); Lewis: the undamped asymptote [Le]; integrated: the same mode's motion"
     " in the time integration of the whole linear model; all modes: largest displacement of any point in"
     " the passage's window, at time t. Order: the harmonic of the shaft speed Ω that passes the mode."
     " η = (dΩ/dt)/ω_n² is the sweep rate, ζ the mode's damping ratio."

@@ -340,7 +340,8 @@ class CrankMechanism(MachinePart):
         """The throws' moving mass and mean centre of mass, and how Q_n is taken."""
         m, cog, _ = self.mass_properties()
         cog = np.where(np.abs(cog) < 1e-9 * np.abs(cog).max(), 0.0, cog)  # round-off of a symmetric arrangement
-        return (f"{len(self.throws)} crank throw(s) ([KM]'s crank-slider mechanism, each rod as m/2 at C1 ± ρ e, the"
+        throws = f"{len(self.throws)} crank throw{'s' * (len(self.throws) != 1)}"
+        return (f"{throws} ([KM]'s crank-slider mechanism, each rod as m/2 at C1 ± ρ e, the"
                 " slider and any rotating mass as points): moving mass ", Number(m), " kg, mean centre of mass ",
                 Triple(cog), " m, added to M as a body of the time-averaged inertia; Q_n = the inertia forces"
                 " -(Σ m r'', Σ m r × r'') of the throws turning at ω on a fixed block and the moving weight's moment,"

@@ -6,9 +6,10 @@ springs K(ω) and dashpots C(ω) it puts between the ground and O (:class:`AtO`:
 diagonal, and the off-diagonal terms of a support that couples its motions, a pile group's
 sway-rocking), whether they depend on ω, the range its model holds over (:class:`Validity`), and
 what the documents show of it: its part of ``fcalc soil`` (:class:`SoilSection`), of the
-sheet's soil section (:mod:`.sheet`) and the assumptions it rests on (:class:`Assumption`: what
-it models, coupled or not at O, frequency-dependent or not, by which sources). Everything here is
-plain data: the output layer renders it.
+sheet's soil section (:mod:`.sheet`), the assumptions it rests on (:class:`Assumption`: what
+it models, coupled or not at O, frequency-dependent or not, by which sources) and what the sheet
+does not check of it (:func:`not_checked`). Everything here is plain data: the output layer
+renders it.
 
 Sizing (``fcalc design``) asks a support the hooks of :class:`Sizing`, each optional: a support
 that leaves one out takes its default (:func:`sizing`), so one without sizes of its own costs
@@ -162,6 +163,9 @@ class Support(Protocol):
         dashpots at O are found; ``model``, the body's (its static M, K, C); ``orders``: (name, n,
         column head, ω [rad/s]) of every frequency the response and the modes took it at."""
 
+    # Optional: def not_checked(self, limits) -> tuple[str, ...], what the sheet's "not checked"
+    # row says of the support (:func:`not_checked`; without it, :data:`NOT_CHECKED`).
+
 
 @dataclass(frozen=True)
 class Variable:
@@ -252,5 +256,18 @@ def sizing(support):
     return SimpleNamespace(**{name: getattr(support, name, getattr(default, name)) for name in SIZING_HOOKS})
 
 
-__all__ = ["MOTIONS", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing", "SoilSection", "Support",
-           "Validity", "Variable", "sizing"]
+#: What the sheet says is not checked of a support that does not say it itself.
+NOT_CHECKED = ("the support's static capacity and settlement, and the dynamic forces in it",)
+
+
+def not_checked(support, limits) -> tuple[str, ...]:
+    """What is not checked of ``support`` under the scene's ``limits`` (its ``[limits]``), phrases
+    in lower case for the sheet's "not checked" row: its own ``not_checked(limits)`` (each support
+    names its own terms: the footing's static bearing pressure and settlement W/K_z, the piles'
+    capacity and strength), or :data:`NOT_CHECKED` for a support without one."""
+    own = getattr(support, "not_checked", None)
+    return NOT_CHECKED if own is None else tuple(own(limits))
+
+
+__all__ = ["MOTIONS", "NOT_CHECKED", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing",
+           "SoilSection", "Support", "Validity", "Variable", "not_checked", "sizing"]

@@ -185,6 +185,11 @@ class Footing(Sizing):
                                       f" and sidewall dashpots; no torsional sidewall dashpot); no {ground}")
                                    + " through the soil with neighbouring foundations." + layer))
 
+    def not_checked(self, limits) -> tuple[str, ...]:
+        """The office checks on the soil that ``limits`` leave out (:func:`static_missing`) and the
+        soil's dynamic pressure and settlement, which no check judges."""
+        return (*static_missing(limits), "dynamic soil pressure and settlement")
+
     def sheet(self, model, orders) -> list:
         """The soil method's hand calculations; the springs given at O need none."""
         if self.method == "springs":
@@ -193,9 +198,17 @@ class Footing(Sizing):
         return [SoilMethod(self.method, self.soil, (self.L, self.B), self.D)]
 
 
+def static_missing(limits) -> list[str]:
+    """The office checks of a base on the soil that ``limits`` (a scene's ``[limits]``) leave out for
+    want of their allowables: the static bearing pressure and the settlement W/K_z."""
+    return ([] if limits.bearing_pressure is not None else ["static bearing pressure (no [limits] bearing_pressure)"]) + (
+        [] if limits.settlement is not None else ["static settlement W/K_z (no [limits] settlement)"])
+
+
 def build(scene, L, B, masses):
     """Every block scene stands on its ``[soil]`` unless another support takes it."""
     return Footing(scene.soil, L, B, masses, scene.embedment)
 
 
-__all__ = ["DEFINITIONS", "NO_RANGE", "SOIL_MODELS", "Footing", "build", "footing_lengths", "footing_range", "six"]
+__all__ = ["DEFINITIONS", "NO_RANGE", "SOIL_MODELS", "Footing", "build", "footing_lengths", "footing_range", "six",
+           "static_missing"]

@@ -277,6 +277,17 @@ class Piles(Footing):
                 " beyond the modulus profile, no coupling through the soil with neighbouring foundations.")
         return Assumption("soil", soil), Assumption("base", base)
 
+    def not_checked(self, limits) -> tuple[str, ...]:
+        """The piles' own terms: their capacity and strength, which no check judges, and the group's
+        static settlement W/K_z (K_z the group's) where ``limits`` give no allowable; the cap's
+        bearing pressure only where the cap bears on the soil (``piles.cap_contact``)."""
+        bearing = ["static bearing pressure under the cap (no [limits] bearing_pressure)"] if (
+            self.piles.cap_contact and limits.bearing_pressure is None) else []
+        settlement = [] if limits.settlement is not None else [
+            "static settlement of the pile group W/K_z (no [limits] settlement)"]
+        return (*bearing, *settlement, "the piles' axial and lateral capacity, negative skin friction, their structural"
+                " strength (bending, shear, buckling, the heads' connection to the cap) and the dynamic forces in them")
+
     def sheet(self, model, orders) -> list:
         """The single pile's static springs as a hand calculation, then the group's method and its
         springs and dashpots at O at rest."""

@@ -1,0 +1,68 @@
+"""Every command on every shipped block scene reads at 80 columns: no line of its tables and text is
+wider than a terminal of 80 columns, and no number is cut to fit (the console never cuts a word:
+:func:`foundation_calc.output.console.keep_words_whole`; a table that cannot fit runs past the
+edge, which this test catches).
+
+In process, as a terminal of 80 columns shows it: the results console (cached) is rebuilt at that
+width for the module's tests. The slow commands take their fast paths: a short sweep, a run-up of
+1 s each way, a design over 2 × 2 candidates (the tables' shapes do not depend on their lengths).
+"""
+
+from __future__ import annotations
+
+import pytest
+from rich.cells import cell_len
+
+from foundation_calc.scenes.files import read_toml
+
+from foundation_calc.cli.app import app
+from foundation_calc.output import console
+from tests.conftest import configs_of_kind
+
+WIDTH = 80
+BLOCKS = configs_of_kind("block_foundation")
+COMMANDS = {
+    "resonance": (),
+    "amplitudes": (),
+    "check": (),
+    "soil": (),
+    "sweep": ("--speed", "300:1500:5", "--machine", "{machine}"),
+    "runup": ("--time", "1", "--down", "1"),
+    "design": ("--vary", "block.length=4:8", "--vary", "block.width=3:6", "--points", "2"),
+}
+
+
+@pytest.fixture(scope="module")
+def terminal():
+    """The results console at :data:`WIDTH` columns, as on a terminal that wide."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(console, "UNLIMITED_WIDTH", WIDTH)
+        console.stdout.cache_clear()
+        yield
+    console.stdout.cache_clear()
+
+
+def test_the_shipped_block_scenes_are_found():
+    assert len(BLOCKS) >= 5
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+@pytest.mark.parametrize("config", BLOCKS, ids=lambda p: p.stem)
+def test_every_line_fits_80_columns(terminal, runner, command, config):
+    machine = read_toml(config)["machines"][0]["name"]
+    result = runner.invoke(app, [command, str(config), *(a.format(machine=machine) for a in COMMANDS[command])])
+    assert result.exit_code in (0, 1), result.output
+    wide = [line for line in result.stdout.splitlines() if cell_len(line) > WIDTH]
+    assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
+    assert "…" not in result.stdout
+
+
+def test_check_on_a_narrow_terminal_puts_each_scene_over_its_table(terminal, runner):
+    """Beside a scene column as wide as its file's name the reasons had some 17 cells at 80 columns:
+    each scene's name goes over a table of its own, which leaves the reasons the room."""
+    result = runner.invoke(app, ["check", str(BLOCKS[0]), str(BLOCKS[1])])
+    lines = [line.rstrip() for line in result.stdout.splitlines()]
+    assert BLOCKS[0].name in lines and BLOCKS[1].name in lines
+    header = next(line for line in lines if "┃ check" in line)
+    assert "scene" not in header and header.split("┃")[3].strip() == "reason"
+    assert len(header.split("┃")[3]) >= 30
