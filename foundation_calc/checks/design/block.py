@@ -80,17 +80,13 @@ _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 def _candidates(scene, sizing, batch: Batch):
     """((L, B, H) of every candidate, (N,) each [m]; the support's sizes, key -> (N,)): the scene's
-    values where not varied; ``sizing``, the support's sizing hooks."""
-    n = len(next(iter(batch.values()))) if batch else 1
-    unknown = sorted(set(batch) - set(VARIABLE_KEYS) - set(sizing.sizes))
-    if unknown:
-        raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can:"
-                         f" {', '.join((*VARIABLE_KEYS, *sizing.sizes))}")
+    values where not varied (:func:`~.supported.candidate_values`); ``sizing``, the support's sizing hooks."""
+    from foundation_calc.checks.design.supported import candidate_values
+
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS} | sizing.sizes
-    values = {key: np.broadcast_to(np.asarray(batch.get(key, value), dtype=float), (n,)) for key, value in given.items()}
-    return [values.pop(key) for key in VARIABLE_KEYS], values
+    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}
+    return candidate_values(batch, given, sizing.sizes, "block_foundation")
 
 
 def _block_body(L, B, H, rho):
@@ -286,13 +282,9 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: the batch scales them so,
         :mod:`.block_range`; a pile group's, EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
-    unscaled = scene.support().unscaled
-    if unscaled is not None and scene.soil.modulus_range is not None:
-        raise NotImplementedError(f"{OVER_RANGE} a block on {unscaled}")
-    if scene.limits.code is not None and scene.limits.foundation is None:
-        from foundation_calc.checks.support import PER_CANDIDATE
+    from foundation_calc.checks.design.supported import refuse_unjudged
 
-        raise NotImplementedError(PER_CANDIDATE)
+    refuse_unjudged(scene, scene.support())
     n = len(next(iter(batch.values()))) if batch else 1
     return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
                      n, PIECE)
@@ -301,11 +293,6 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
         return _evaluate_piece(scene, batch)
-
-
-#: Why the batch leaves a support whose springs do not scale with one factor over the soil's
-#: modulus range to fcalc check's path.
-OVER_RANGE = "over soil.modulus_range the batch scales the support's springs by one factor, which does not hold for"
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
@@ -368,6 +355,7 @@ def _built(scene, L, B, H) -> Built:
 
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
+    from foundation_calc.checks.design.supported import with_scene_check
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.supports.base import sizing
 
@@ -398,15 +386,7 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    refused = support.size_errors(sizes, L, B)
-    if refused.reasons:  # a candidate whose scene fcalc check refuses fails check "scene" alone, as reference.evaluate says
-        bad = refused.which > 0
-        for check in order:
-            outcome[check] = np.where(bad, PASS, outcome[check]).astype(np.int8)
-            utilisation[check] = np.where(bad, np.nan, utilisation[check])
-        outcome["scene"], utilisation["scene"] = np.where(bad, FAIL, PASS).astype(np.int8), np.where(bad, np.inf, np.nan)
-        governing["scene"], reasons["scene"] = refused.which, ("the scene is valid", *refused.reasons)
-        order.append("scene")
+    with_scene_check(support.size_errors(sizes, L, B), outcome, utilisation, governing, reasons, order)
     return CandidateVerdicts(
         volume=L * B * H + support.concrete(sizes), mass=np.asarray(m_b, dtype=float),
         outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},
