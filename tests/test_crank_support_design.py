@@ -24,10 +24,8 @@ from foundation_calc.solvers.supports.base import AtO, Variable
 from tests.conftest import CONFIGS
 from tests.test_crank_support import C_TOY, K_TOY
 from tests.test_crank_support import Toy as PlaneToy
-
-#: soil.c_z [N/m³] of the scale 1; the toy's concrete per unit of scale [m³].
-C_REF = 1.0e8
-CONCRETE = 4.0
+from tests.test_support_design import C_REF, CONCRETE, _verdicts
+from tests.test_support_design import Toy as SizedToy
 
 SCALE = Variable("soil.c_z", "toy's spring scale", "the toy crank scene", "N/m³", 1.0e5, 2.0e8)
 
@@ -35,32 +33,22 @@ SCALE = Variable("soil.c_z", "toy's spring scale", "the toy crank scene", "N/m³
 SIZED, COUPLED, UNSCALED = "toy crank sized", "coupled toy crank design", "unscaled toy crank"
 
 
-class Toy(PlaneToy):
+class Toy(SizedToy):
     """The plane toy's springs at O times ``scale`` (a float, or (N,) over a batch of candidates),
-    its dashpots as they are (coupled x with ry when ``coupled``); sizes, sized and concrete of the
-    sizing hooks (the others: the defaults)."""
+    its dashpots as they are (coupled x with ry when ``coupled``); the sizing hooks of the block's
+    sized toy (its scale is soil.c_z / C_REF, its concrete CONCRETE per unit of scale)."""
 
     def __init__(self, scale, coupled=False):
-        super().__init__(coupled)
-        self.scale = np.asarray(scale, dtype=float)
+        super().__init__(scale)
+        self.coupled = coupled
 
     def impedance(self, omega) -> AtO:
-        at = super().impedance(omega)
+        at = PlaneToy.impedance(self, omega)
         omega = np.asarray(omega, dtype=float)
         s = self.scale.reshape(self.scale.shape + (1,) * max(omega.ndim - self.scale.ndim, 0))
         shape = np.broadcast_shapes(omega.shape, s.shape)
         coupling = None if at.coupling is None else tuple(np.broadcast_to(c, shape + (6, 6)) for c in at.coupling)
         return AtO(np.broadcast_to(s, shape)[..., None] * K_TOY, np.broadcast_to(C_TOY, shape + (6,)), coupling)
-
-    @property
-    def sizes(self) -> dict:
-        return {"soil.c_z": float(self.scale * C_REF)}
-
-    def sized(self, scene, values):
-        return scene.model_copy(update={"soil": scene.soil.model_copy(update={"c_z": values["soil.c_z"]})})
-
-    def concrete(self, values=None):
-        return CONCRETE * np.asarray((values or self.sizes).get("soil.c_z", self.sizes["soil.c_z"])) / C_REF
 
 
 def build(scene, L, B, masses):
@@ -93,8 +81,10 @@ def toy(tmp_path_factory):
     unregister(build)
 
 
-def _verdicts(path) -> dict:
-    return {c["check"]: c["verdict"] for c in fc.check(path).to_dict()["checks"]}
+def _agrees(best: dict, written) -> None:
+    """The design's verdicts of its ``best`` are fc.check's of its ``written`` scene."""
+    said = {name: check["outcome"] for name, check in best["checks"].items()}
+    assert _verdicts(written) == {name: said.get(name, "pass") for name in _verdicts(written)}
 
 
 def test_design_sizes_a_crank_on_the_toys_own_scale(toy, tmp_path):
@@ -107,8 +97,7 @@ def test_design_sizes_a_crank_on_the_toys_own_scale(toy, tmp_path):
     assert 1e6 < c_z < 1e8  # the softest scales fail, the scene's own passes: a size in between
     with open(written, "rb") as fh:
         assert tomllib.load(fh)["soil"]["c_z"] == pytest.approx(c_z, rel=1e-9)
-    said = {name: check["outcome"] for name, check in best["checks"].items()}
-    assert _verdicts(written) == {name: said.get(name, "pass") for name in _verdicts(written)}
+    _agrees(best, written)
     assert best["volume"] == pytest.approx(6.0 * 4.0 * 1.6 + CONCRETE * c_z / C_REF, rel=1e-12)
     (axis,) = document["grid"]["axes"]
     step = axis["refined_step"] or axis["step"]
@@ -126,8 +115,7 @@ def test_the_crank_batch_judges_blocks_on_the_toy_as_fcalc_check_does(toy, tmp_p
     result = fc.design(toy[SIZED], vary=["foundation.block.length=3:8", "foundation.block.height=0.8:2.5"], points=4,
                        write=written)
     assert result.exit_code == 0, result.to_dict()["recheck"]
-    said = {name: check["outcome"] for name, check in result.to_dict()["best"]["checks"].items()}
-    assert _verdicts(written) == {name: said.get(name, "pass") for name in _verdicts(written)}
+    _agrees(result.to_dict()["best"], written)
 
 
 def test_a_coupled_support_is_refused_by_the_crank_design(toy, runner):

@@ -52,7 +52,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -236,6 +236,7 @@ def _inputs(scene, sizing, sizes, L, B, H):
     or any finding of the scene that does not depend on the candidate (the soil, the machines, the
     limits)."""
     from foundation_calc.checks.design.apply import moved_positions
+    from foundation_calc.checks.design.supported import sizes_outside
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
@@ -249,10 +250,7 @@ def _inputs(scene, sizing, sizes, L, B, H):
     outside = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         outside |= RANGES[KEYS[key]].outside(values)
-    support_outside = np.zeros(L.shape, dtype=bool)
-    for key, values in sizes.items():
-        if key in KEYS:
-            support_outside |= RANGES[KEYS[key]].outside(values)
+    support_outside = sizes_outside(sizes, L.shape)
     placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
     block = (scene.block.length, scene.block.width, scene.block.height)
     for position in moved_positions(scene, block, (L, B, H)).values():
@@ -379,20 +377,14 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, g, r = found["inputs"]
     outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
     if judged(scene):
-        outcome["runup"] = np.full(len(L), PASS, dtype=np.int8)
-        utilisation["runup"] = np.full(len(L), np.nan)
-        governing["runup"] = np.zeros(len(L), dtype=int)
-        reasons["runup"] = ("not evaluated for a batch: " + NOT_EVALUATED["runup"],)
+        outcome["runup"], utilisation["runup"], governing["runup"], reasons["runup"] = not_evaluated(
+            len(L), "not evaluated for a batch: " + NOT_EVALUATED["runup"])
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
     with_scene_check(support.size_errors(sizes, L, B), outcome, utilisation, governing, reasons, order)
-    return CandidateVerdicts(
-        volume=L * B * H + support.concrete(sizes), mass=np.asarray(m_b, dtype=float),
-        outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},
-        governing={c: governing[c] for c in order}, reasons={c: reasons[c] for c in order},
-        deferred=tuple(c for c in order if c in NOT_EVALUATED),
-    )
+    return ordered(L * B * H + support.concrete(sizes), np.asarray(m_b, dtype=float), outcome, utilisation, governing,
+                   reasons, order, (c for c in order if c in NOT_EVALUATED))
 
 
 __all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]

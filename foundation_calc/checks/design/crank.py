@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import PASS, Batch, CandidateVerdicts, in_pieces
+from foundation_calc.checks.design.candidates import Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
 from foundation_calc.checks.design.crank_physics import VARIED, CandidateDesigns, Verdicts, judge_inputs, judge_office, judge_physics
 from foundation_calc.checks.design.crank_range import over_range, with_range
 
@@ -74,8 +74,7 @@ def _chunk(scene, L, B, H, sizes, mech, harmonics, checks, sizing) -> Verdicts:
     if "inputs" in checks:
         judge_inputs(out, scene, given, sizing.size_warnings(sizes, L, B), sizes)
     if "runup" in checks:
-        n = len(L)
-        out.put("runup", np.full(n, PASS), np.full(n, np.nan), np.zeros(n), [NOT_EVALUATED])
+        out.put("runup", *not_evaluated(len(L), NOT_EVALUATED))
     if "office" in checks:
         judge_office(out, scene, given)
     return out
@@ -137,12 +136,8 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         with_scene_check(support.size_errors(own, parts[0], parts[1]), found.outcome, found.utilisation, found.governing,
                          found.reasons, order)
         volume = parts[0] * parts[1] * parts[2]
-        return CandidateVerdicts(
-            volume=volume + support.concrete(own), mass=scene.foundation.block.density * volume,
-            outcome={c: found.outcome[c] for c in order}, utilisation={c: found.utilisation[c] for c in order},
-            governing={c: found.governing[c] for c in order}, reasons={c: found.reasons[c] for c in order},
-            deferred=("runup",) if "runup" in order else (),
-        )
+        return ordered(volume + support.concrete(own), scene.foundation.block.density * volume, found.outcome,
+                       found.utilisation, found.governing, found.reasons, order, ("runup",) if "runup" in order else ())
 
     return in_pieces(judge, len(L), CHUNK)
 

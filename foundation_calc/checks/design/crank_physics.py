@@ -303,8 +303,9 @@ def judge_inputs(out: Verdicts, scene, designs, warned, sizes):
     model judges them; the support's ``sizes`` (key -> (N,)) against their plausible ranges and
     the support's own warnings of them (``warned``, its
     :meth:`~foundation_calc.solvers.supports.base.Sizing.size_warnings`: governing 1 + its index)."""
+    from foundation_calc.checks.design.supported import sizes_outside
     from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR
-    from foundation_calc.scenes.plausibility import KEYS, RANGES
+    from foundation_calc.scenes.plausibility import RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
 
     f, mech = scene.foundation, scene.mechanism
@@ -331,9 +332,7 @@ def judge_inputs(out: Verdicts, scene, designs, warned, sizes):
         name = "mass_ratio_rotating" if mech is None else "mass_ratio_reciprocating"
         ratio = f.block.density * designs.L * designs.B * designs.H / machine
         warn |= ~(foundation | too_long_foundation) & outside(ratio, name)
-    for key, values in sizes.items():
-        if key in KEYS:
-            warn |= RANGES[KEYS[key]].outside(values)
+    warn |= sizes_outside(sizes, warn.shape)
     governing = np.where(warn, 0, warned.which)
     out.put("inputs", np.where(warn | (governing > 0), WARN, PASS), np.full(len(warn), np.nan), governing,
             ["input values outside the plausible ranges", *warned.reasons])

@@ -48,6 +48,18 @@ def candidate_values(batch: Batch, dimensions: dict, sizes: dict, kind: str):
     return [values.pop(key) for key in dimensions], values
 
 
+def sizes_outside(sizes: dict, shape) -> np.ndarray:
+    """(shape) True where a candidate's size of the support (key -> (N,)) lies outside the plausible
+    range of its key (:data:`~foundation_calc.scenes.plausibility.KEYS`; a key without one is not judged)."""
+    from foundation_calc.scenes.plausibility import KEYS, RANGES
+
+    outside = np.zeros(shape, dtype=bool)
+    for key, values in sizes.items():
+        if key in KEYS:
+            outside |= RANGES[KEYS[key]].outside(values)
+    return outside
+
+
 def with_scene_check(refused, outcome: dict, utilisation: dict, governing: dict, reasons: dict, order: list) -> None:
     """Add the ``scene`` check to the verdicts (check -> (N,) each; ``order`` the checks' names):
     a candidate whose sizes make a scene ``fcalc check`` refuses (``refused``, the support's
@@ -65,4 +77,4 @@ def with_scene_check(refused, outcome: dict, utilisation: dict, governing: dict,
     order.append("scene")
 
 
-__all__ = ["OVER_RANGE", "candidate_values", "refuse_unjudged", "with_scene_check"]
+__all__ = ["OVER_RANGE", "candidate_values", "refuse_unjudged", "sizes_outside", "with_scene_check"]
