@@ -140,7 +140,7 @@ def _block_table(document: Mapping[str, Any]) -> dict[str, Any] | None:
 
 def sizing_of(scene):
     """The sizing hooks (:func:`~foundation_calc.solvers.supports.base.sizing`) of the support of
-    ``scene``, or the defaults for a scene that gives no support (a crank scene)."""
+    ``scene`` (a block's or a crank's), or the defaults for a scene that gives no support."""
     from foundation_calc.solvers.supports.base import Sizing, sizing
 
     support = getattr(scene, "support", None)

@@ -52,7 +52,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -80,17 +80,13 @@ _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 def _candidates(scene, sizing, batch: Batch):
     """((L, B, H) of every candidate, (N,) each [m]; the support's sizes, key -> (N,)): the scene's
-    values where not varied; ``sizing``, the support's sizing hooks."""
-    n = len(next(iter(batch.values()))) if batch else 1
-    unknown = sorted(set(batch) - set(VARIABLE_KEYS) - set(sizing.sizes))
-    if unknown:
-        raise ValueError(f"{', '.join(unknown)} cannot vary for a block_foundation scene; the keys that can:"
-                         f" {', '.join((*VARIABLE_KEYS, *sizing.sizes))}")
+    values where not varied (:func:`~.supported.candidate_values`); ``sizing``, the support's sizing hooks."""
+    from foundation_calc.checks.design.supported import candidate_values
+
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS} | sizing.sizes
-    values = {key: np.broadcast_to(np.asarray(batch.get(key, value), dtype=float), (n,)) for key, value in given.items()}
-    return [values.pop(key) for key in VARIABLE_KEYS], values
+    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}
+    return candidate_values(batch, given, sizing.sizes, "block_foundation")
 
 
 def _block_body(L, B, H, rho):
@@ -240,6 +236,7 @@ def _inputs(scene, sizing, sizes, L, B, H):
     or any finding of the scene that does not depend on the candidate (the soil, the machines, the
     limits)."""
     from foundation_calc.checks.design.apply import moved_positions
+    from foundation_calc.checks.design.supported import sizes_outside
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
@@ -253,10 +250,7 @@ def _inputs(scene, sizing, sizes, L, B, H):
     outside = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         outside |= RANGES[KEYS[key]].outside(values)
-    support_outside = np.zeros(L.shape, dtype=bool)
-    for key, values in sizes.items():
-        if key in KEYS:
-            support_outside |= RANGES[KEYS[key]].outside(values)
+    support_outside = sizes_outside(sizes, L.shape)
     placed = np.zeros(L.shape, dtype=int)  # the first position off the block names the reason
     block = (scene.block.length, scene.block.width, scene.block.height)
     for position in moved_positions(scene, block, (L, B, H)).values():
@@ -286,13 +280,9 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: the batch scales them so,
         :mod:`.block_range`; a pile group's, EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
-    unscaled = scene.support().unscaled
-    if unscaled is not None and scene.soil.modulus_range is not None:
-        raise NotImplementedError(f"{OVER_RANGE} a block on {unscaled}")
-    if scene.limits.code is not None and scene.limits.foundation is None:
-        from foundation_calc.checks.support import PER_CANDIDATE
+    from foundation_calc.checks.design.supported import refuse_unjudged
 
-        raise NotImplementedError(PER_CANDIDATE)
+    refuse_unjudged(scene, scene.support())
     n = len(next(iter(batch.values()))) if batch else 1
     return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
                      n, PIECE)
@@ -301,11 +291,6 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
 def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
     with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
         return _evaluate_piece(scene, batch)
-
-
-#: Why the batch leaves a support whose springs do not scale with one factor over the soil's
-#: modulus range to fcalc check's path.
-OVER_RANGE = "over soil.modulus_range the batch scales the support's springs by one factor, which does not hold for"
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
@@ -368,6 +353,7 @@ def _built(scene, L, B, H) -> Built:
 
 
 def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
+    from foundation_calc.checks.design.supported import with_scene_check
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.supports.base import sizing
 
@@ -391,28 +377,14 @@ def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
     o, g, r = found["inputs"]
     outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
     if judged(scene):
-        outcome["runup"] = np.full(len(L), PASS, dtype=np.int8)
-        utilisation["runup"] = np.full(len(L), np.nan)
-        governing["runup"] = np.zeros(len(L), dtype=int)
-        reasons["runup"] = ("not evaluated for a batch: " + NOT_EVALUATED["runup"],)
+        outcome["runup"], utilisation["runup"], governing["runup"], reasons["runup"] = not_evaluated(
+            len(L), "not evaluated for a batch: " + NOT_EVALUATED["runup"])
     o, u, g, r = _office(scene, model, L, B, m_b)
     outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
     order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    refused = support.size_errors(sizes, L, B)
-    if refused.reasons:  # a candidate whose scene fcalc check refuses fails check "scene" alone, as reference.evaluate says
-        bad = refused.which > 0
-        for check in order:
-            outcome[check] = np.where(bad, PASS, outcome[check]).astype(np.int8)
-            utilisation[check] = np.where(bad, np.nan, utilisation[check])
-        outcome["scene"], utilisation["scene"] = np.where(bad, FAIL, PASS).astype(np.int8), np.where(bad, np.inf, np.nan)
-        governing["scene"], reasons["scene"] = refused.which, ("the scene is valid", *refused.reasons)
-        order.append("scene")
-    return CandidateVerdicts(
-        volume=L * B * H + support.concrete(sizes), mass=np.asarray(m_b, dtype=float),
-        outcome={c: outcome[c] for c in order}, utilisation={c: utilisation[c] for c in order},
-        governing={c: governing[c] for c in order}, reasons={c: reasons[c] for c in order},
-        deferred=tuple(c for c in order if c in NOT_EVALUATED),
-    )
+    with_scene_check(support.size_errors(sizes, L, B), outcome, utilisation, governing, reasons, order)
+    return ordered(L * B * H + support.concrete(sizes), np.asarray(m_b, dtype=float), outcome, utilisation, governing,
+                   reasons, order, (c for c in order if c in NOT_EVALUATED))
 
 
 __all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]

@@ -73,6 +73,20 @@ class CandidateVerdicts:
         return 1.0 - np.nanmax(np.stack(list(self.utilisation.values())), axis=0)
 
 
+def ordered(volume, mass, outcome, utilisation, governing, reasons, order, deferred=()) -> CandidateVerdicts:
+    """:class:`CandidateVerdicts` of the checks ``order`` names, in that order (``outcome``,
+    ``utilisation``, ``governing``: check -> (N,); ``reasons``: check -> its texts)."""
+    return CandidateVerdicts(volume=volume, mass=mass, outcome={c: outcome[c] for c in order},
+                             utilisation={c: utilisation[c] for c in order}, governing={c: governing[c] for c in order},
+                             reasons={c: tuple(reasons[c]) for c in order}, deferred=tuple(deferred))
+
+
+def not_evaluated(n: int, reason: str) -> tuple:
+    """(outcome, utilisation, governing, reasons) of a check a batch of ``n`` does not evaluate and
+    leaves to the full path (its re-check of the chosen designs): PASS, NaN, ``reason``."""
+    return np.full(n, PASS, dtype=np.int8), np.full(n, np.nan), np.zeros(n, dtype=np.intp), (reason,)
+
+
 def in_pieces(
     judge: Callable[[int, int], CandidateVerdicts], count: int, size: int, workers: int = WORKERS
 ) -> CandidateVerdicts:

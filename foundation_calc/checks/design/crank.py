@@ -5,9 +5,13 @@ Each candidate replaces the block's length, width and/or height (keys ``foundati
 L × B); everything else is the scene's. Per candidate, in array operations over the batch:
 
 - mass, moment of inertia and height of C (:func:`~foundation_calc.solvers.crank.block.block_with_machine`),
-  base area L B and second moment B L³/12, the soil's springs and dashpots by the scene's method
-  (:meth:`~foundation_calc.scenes.crank.CrankScene.base_springs`; a frequency-dependent soil at
-  each frequency it is needed at);
+  base area L B and second moment B L³/12, and the springs and dashpots at O of what carries the
+  block, asked of the scene's support (:meth:`~foundation_calc.scenes.crank.CrankScene.support`)
+  under the candidate's base and body at the candidate's sizes of the support's own (its sizing
+  hooks, :class:`~foundation_calc.solvers.supports.base.Sizing`: the concrete it adds, the
+  warnings and refusals of its sizes), read in the plane (a support that couples the plane's
+  motions is refused by name, as the crank's checks refuse it); a frequency-dependent support at
+  each frequency it is needed at;
 - **resonance**: k0, p1, p2 of the zero-order and averaged-inertia operators (each mode at its
   own frequency, ω = p(K(ω)), on a frequency-dependent soil), the forcing shares of the
   mechanism's harmonics on the averaged operator, and the resonance rule
@@ -28,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import PASS, Batch, CandidateVerdicts, in_pieces
+from foundation_calc.checks.design.candidates import Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
 from foundation_calc.checks.design.crank_physics import VARIED, CandidateDesigns, Verdicts, judge_inputs, judge_office, judge_physics
 from foundation_calc.checks.design.crank_range import over_range, with_range
 
@@ -39,37 +43,38 @@ CHUNK = 4096
 NOT_EVALUATED = "not evaluated in the batch (a time integration): the full check re-judges the chosen designs"
 
 
-def block_dimensions(scene, batch: Batch) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(L, B, H) [m] of every candidate: the batch's values, the scene's block for a key it leaves out.
+def block_dimensions(scene, batch: Batch, sizes=None):
+    """((L, B, H) [m] of every candidate, (N,) each; the support's sizes, key -> (N,)): the batch's
+    values, the scene's block and the support's ``sizes`` (its own, by default) for a key it leaves
+    out; a block's key also without the ``foundation.`` prefix.
 
     Raises ValueError naming a key that cannot vary, and for a scene without ``[foundation.block]``.
     """
+    from foundation_calc.checks.design.supported import candidate_values
+
     block = scene.foundation.block
     if block is None:
         raise ValueError("the scene gives no [foundation.block]: there is no block to size")
-    given = {}
-    for key, values in batch.items():
-        short = key.removeprefix("foundation.").removeprefix("block.")
-        if not key.removeprefix("foundation.").startswith("block.") or short not in VARIED:
-            raise ValueError(f"{key} cannot vary here; a crank foundation varies "
-                             + ", ".join(f"foundation.block.{k}" for k in VARIED))
-        given[short] = np.asarray(values, dtype=float)
-    size = np.broadcast_shapes((1,) if not given else (), *(v.shape for v in given.values()))
-    return tuple(np.atleast_1d(np.broadcast_to(given.get(k, getattr(block, k)), size)).astype(float) for k in VARIED)
+    full = {("foundation." + key if key.startswith("block.") else key): values for key, values in batch.items()}
+    given = {f"foundation.block.{k}": getattr(block, k) for k in VARIED}
+    if sizes is None:
+        from foundation_calc.checks.design.apply import sizing_of
+
+        sizes = sizing_of(scene).sizes
+    return candidate_values(full, given, sizes, "crank_foundation")
 
 
-def _chunk(scene, L, B, H, mech, harmonics, checks) -> Verdicts:
+def _chunk(scene, L, B, H, sizes, mech, harmonics, checks, sizing) -> Verdicts:
     out = Verdicts()
-    given, _ = judge_physics(out, scene, L, B, H, mech, harmonics)
+    given, _ = judge_physics(out, scene, L, B, H, mech, harmonics, sizes=sizes)
     if scene.soil.modulus_range is not None:
-        for check, ranged in over_range(scene, L, B, H, mech, harmonics, CHUNK).items():
+        for check, ranged in over_range(scene, L, B, H, sizes, mech, harmonics, CHUNK).items():
             out.put(check, *with_range(out.outcome[check], out.utilisation[check], out.governing[check],
                                        out.reasons[check], ranged))
     if "inputs" in checks:
-        judge_inputs(out, scene, given)
+        judge_inputs(out, scene, given, sizing.size_warnings(sizes, L, B), sizes)
     if "runup" in checks:
-        n = len(L)
-        out.put("runup", np.full(n, PASS), np.full(n, np.nan), np.zeros(n), [NOT_EVALUATED])
+        out.put("runup", *not_evaluated(len(L), NOT_EVALUATED))
     if "office" in checks:
         judge_office(out, scene, given)
     return out
@@ -101,17 +106,19 @@ def checks_judged(scene) -> tuple[str, ...]:
 
 
 def evaluate(scene, batch: Batch) -> CandidateVerdicts:
-    """Every check of ``fcalc check`` on every candidate block of ``batch`` (module docstring)."""
+    """Every check of ``fcalc check`` on every candidate of ``batch`` (module docstring): the block's
+    dimensions and the sizes of its support's own (:class:`~foundation_calc.solvers.supports.base.Sizing`)."""
+    from foundation_calc.checks.design.supported import refuse_unjudged, with_scene_check
     from foundation_calc.solvers.crank.batch import MechanismOperator
+    from foundation_calc.solvers.supports.base import sizing
 
     if scene.mechanism is None or scene.loads:
         raise NotImplementedError("the batch judges a crank foundation's [mechanism] alone; a scene with [[loads]]"
                                   " is judged by the full path")
-    if scene.limits.code is not None and scene.limits.foundation is None:
-        from foundation_calc.checks.support import PER_CANDIDATE
-
-        raise NotImplementedError(PER_CANDIDATE)
-    L, B, H = block_dimensions(scene, batch)
+    support = scene.support()
+    refuse_unjudged(scene, support)
+    support = sizing(support)
+    (L, B, H), sizes = block_dimensions(scene, batch, support.sizes)
     if not len(L):  # an empty batch: the verdicts' arrays of a batch of one, emptied
         one = evaluate(scene, {f"foundation.block.{k}": np.array([getattr(scene.foundation.block, k)]) for k in VARIED})
         return CandidateVerdicts(*(v[:0] for v in (one.volume, one.mass)),
@@ -120,17 +127,17 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     mech = MechanismOperator.of(scene.design())
     harmonics = mech.harmonics
     checks = checks_judged(scene)
+
     def judge(start, stop):
         parts = L[start:stop], B[start:stop], H[start:stop]
-        found = _chunk(scene, *parts, mech, harmonics, checks)
+        own = {key: values[start:stop] for key, values in sizes.items()}
+        found = _chunk(scene, *parts, own, mech, harmonics, checks, support)
         order = [c for c in checks if c in found.outcome]
+        with_scene_check(support.size_errors(own, parts[0], parts[1]), found.outcome, found.utilisation, found.governing,
+                         found.reasons, order)
         volume = parts[0] * parts[1] * parts[2]
-        return CandidateVerdicts(
-            volume=volume, mass=scene.foundation.block.density * volume,
-            outcome={c: found.outcome[c] for c in order}, utilisation={c: found.utilisation[c] for c in order},
-            governing={c: found.governing[c] for c in order}, reasons={c: found.reasons[c] for c in order},
-            deferred=("runup",) if "runup" in order else (),
-        )
+        return ordered(volume + support.concrete(own), scene.foundation.block.density * volume, found.outcome,
+                       found.utilisation, found.governing, found.reasons, order, ("runup",) if "runup" in order else ())
 
     return in_pieces(judge, len(L), CHUNK)
 

@@ -19,17 +19,26 @@ _UNSTABLE = "the block tips over: rocking spring K_φ <= P h (fcalc check: inval
 
 class CandidateDesigns:
     """The scene's design for each block (L, B, H) of a batch: ``at(soil_frequency)`` is a
-    :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` whose block and soil fields
+    :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` whose block and support fields
     are arrays over the batch (``soil_frequency`` [rad/s] a scalar or one per candidate).
 
     The machine and the positions given from C move with the block as a candidate's scene moves
     them (:func:`~foundation_calc.checks.design.apply.moved`): the machine's centre of mass, the
     crank axis (``a``) and the points (``points_u``, ``points_H``: (points, N) [m] from the new C).
+
+    What carries each block is the scene's support (:meth:`~foundation_calc.scenes.crank.CrankScene.support`)
+    under its base L × B and the plane's body (M_tot, I_0 = I_c + M_tot h²), at the support's own
+    ``sizes`` (key -> (N,), :meth:`~foundation_calc.solvers.supports.base.Sizing.sized`; the scene's
+    where left out) and on the soil's stiffness data times ``factor`` (a scalar or one per candidate,
+    :meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`); read in the plane
+    (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
+    plane's motions is a PhysicsError naming it).
     """
 
-    def __init__(self, scene, L, B, H, factor=1.0):
-        from foundation_calc.checks.design.apply import moved
+    def __init__(self, scene, L, B, H, factor=1.0, sizes=None):
+        from foundation_calc.checks.design.apply import moved, sizing_of
         from foundation_calc.solvers.crank.block import block_with_machine
+        from foundation_calc.solvers.supports.plane_footing import plane_masses
 
         f, machine = scene.foundation, scene.foundation.machine
         self.scene, self.base = scene, scene.design()
@@ -41,35 +50,35 @@ class CandidateDesigns:
             return position[..., 0], position[..., 2]
 
         self.machine_height = None if machine is None else moved([0.0, 0.0, machine.cog_height], old, new)[..., 2]
-        self.props = block_with_machine(L, B, H, f.block.density, *(
+        self.props = p = block_with_machine(L, B, H, f.block.density, *(
             (0.0, 0.0, 0.0) if machine is None else (machine.mass, self.machine_height, machine.moment_of_inertia)))
         self.S, self.I1 = L * B, B * L**3 / 12.0
-        self.M_tot = self.props.M + self.base.rod.m
-        self.a = at_base(0.0, scene.mechanism.crank_axis_to_cog)[1] - self.props.h
-        moved_points = [at_base(p.horizontal, p.height) for p in scene.points]
+        self.M_tot = p.M + self.base.rod.m
+        self.a = at_base(0.0, scene.mechanism.crank_axis_to_cog)[1] - p.h
+        moved_points = [at_base(q.horizontal, q.height) for q in scene.points]
         shape = (len(moved_points), *np.shape(L))
         self.points_u = np.array([np.broadcast_to(u, np.shape(L)) for u, _ in moved_points]).reshape(shape)
-        self.points_H = np.array([z - self.props.h for _, z in moved_points]).reshape(shape)
+        self.points_H = np.array([z - p.h for _, z in moved_points]).reshape(shape)
+        on = sizing_of(scene).sized(scene, sizes) if sizes else scene
+        if np.ndim(factor) or factor != 1.0:
+            on = on.with_modulus_factor(factor)
+        self.support = on.support((L, B), plane_masses(self.M_tot, p.I_c + self.M_tot * p.h**2))
 
-    def springs(self, soil_frequency=0.0):
-        p = self.props
-        return self.scene.base_springs(self.L, self.B, self.S, self.I1, self.M_tot, p.I_c, p.h, omega=soil_frequency,
-                                       factor=self.factor)
+    def in_plane(self, soil_frequency=0.0) -> tuple:
+        """((K_x, K_z, K_φ), (C_x, C_z, C_φ)) at O of every candidate's support at ``soil_frequency``
+        [rad/s] (class docstring), (N,) each."""
+        from foundation_calc.solvers.supports.plane_footing import plane
+
+        return plane(self.support.impedance(soil_frequency), self.support.label)
 
     def at(self, soil_frequency=0.0):
-        from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
-
-        s, p = self.scene.soil, self.props
-        k = self.springs(soil_frequency)
-        if s.method_used == "coefficients":  # as scene.design: Barkan's coefficients pass through
-            c, c1, c_phi = (v * self.factor for v in (s.c_z, s.c_x, s.c_z if s.c_phi is None else s.c_phi))
-        else:
-            c, c1, c_phi = k.K_z / self.S, k.K_x / self.S, k.K_phi / self.I1
-        b = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, self.M_tot,
-                                 p.I_c + self.M_tot * p.h**2)
-        ones = np.ones_like(self.L)
-        return replace(self.base, M=p.M, I_c=p.I_c, h=p.h, S=self.S, I1=self.I1, c=c * ones, c1=c1 * ones,
-                       c_phi=c_phi * ones, C_x=b.C_x * ones, C_z=b.C_z * ones, C_phi=b.C_phi * ones, a=self.a)
+        """The candidates' designs on the support at ``soil_frequency`` [rad/s], its springs as
+        c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 of each candidate's base (as ``scene.design``)."""
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi) = self.in_plane(soil_frequency)
+        p, ones = self.props, np.ones_like(self.L)
+        return replace(self.base, M=p.M, I_c=p.I_c, h=p.h, S=self.S, I1=self.I1, c=K_z / self.S * ones,
+                       c1=K_x / self.S * ones, c_phi=K_phi / self.I1 * ones, C_x=C_x * ones, C_z=C_z * ones,
+                       C_phi=C_phi * ones, a=self.a)
 
     def stable(self) -> np.ndarray:
         """The candidates whose rocking spring exceeds the weight's overturning moment at every
@@ -79,9 +88,9 @@ class CandidateDesigns:
         from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
 
         overturning = self.M_tot * GRAVITY * self.props.h
-        ok = self.springs(0.0).K_phi > overturning
-        if self.scene.soil.frequency_dependent:
-            ok &= self.springs(FORCING_HARMONICS * self.base.omega).K_phi > overturning
+        ok = self.in_plane(0.0)[0][2] > overturning
+        if self.support.frequency_dependent:
+            ok &= self.in_plane(FORCING_HARMONICS * self.base.omega)[0][2] > overturning
         return ok
 
 
@@ -91,7 +100,7 @@ def candidate_frequencies(designs: CandidateDesigns):
     from foundation_calc.checks.crank_resonance import consistent_frequencies, design_frequencies
 
     static = design_frequencies(designs.at(0.0))
-    if not designs.scene.soil.frequency_dependent:
+    if not designs.support.frequency_dependent:
         return static
     return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
                  for which in (0, 1))
@@ -160,7 +169,7 @@ def _motion(scene, designs, d0, block, mech, harmonics, decoupled):
 
     M_m, C_m, K_m, fc, fs = mech
     omega = d0.omega
-    if scene.soil.frequency_dependent:
+    if designs.support.frequency_dependent:
         parts = [block_matrices(designs.at(n * omega)) for n in range(harmonics + 1)]
         M, C, K = (np.stack([p[i] for p in parts], axis=-3) for i in range(3))
         resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega)
@@ -286,19 +295,24 @@ def judge_office(out: Verdicts, scene, designs):
     out.put("office", np.where(q > allowed, FAIL, PASS), q / allowed, np.zeros(len(q)), ["bearing pressure q = W/S"])
 
 
-def judge_inputs(out: Verdicts, scene, designs):
+def judge_inputs(out: Verdicts, scene, designs, warned, sizes):
     """The plausibility warnings (the ``inputs`` check) of every candidate: the scene's own that
-    do not depend on the block, and the block's dimensions, the lengths against the size
+    do not depend on the candidate, and the block's dimensions, the lengths against the size
     sqrt(S) of its base, the block-to-machine mass ratio and a stratum shallower than twice the
     base's equivalent radius (:func:`~foundation_calc.scenes.stratum.shallow`), as the scene
-    model judges them."""
+    model judges them; the support's ``sizes`` (key -> (N,)) against their plausible ranges and
+    the support's own warnings of them (``warned``, its
+    :meth:`~foundation_calc.solvers.supports.base.Sizing.size_warnings`: governing 1 + its index)."""
+    from foundation_calc.checks.design.supported import sizes_outside
     from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR
     from foundation_calc.scenes.plausibility import RANGES
     from foundation_calc.scenes.stratum import shallow, stratum_remarks
 
     f, mech = scene.foundation, scene.mechanism
     on_base = {str(x) for x in stratum_remarks(scene.soil, *f.dimensions)}  # the scene's own base's
-    fixed = [x for x in scene.plausibility_findings() if not _block_dependent(x.key) and str(x) not in on_base]
+    judged = {*sizes, *warned.keys}  # findings under these keys are each candidate's
+    fixed = [x for x in scene.plausibility_findings()
+             if not _block_dependent(x.key) and x.key not in judged and str(x) not in on_base]
 
     def outside(values, name):
         return RANGES[name].outside(values)
@@ -318,8 +332,10 @@ def judge_inputs(out: Verdicts, scene, designs):
         name = "mass_ratio_rotating" if mech is None else "mass_ratio_reciprocating"
         ratio = f.block.density * designs.L * designs.B * designs.H / machine
         warn |= ~(foundation | too_long_foundation) & outside(ratio, name)
-    out.put("inputs", np.where(warn, WARN, PASS), np.full(len(warn), np.nan), np.zeros(len(warn)),
-            ["input values outside the plausible ranges"])
+    warn |= sizes_outside(sizes, warn.shape)
+    governing = np.where(warn, 0, warned.which)
+    out.put("inputs", np.where(warn | (governing > 0), WARN, PASS), np.full(len(warn), np.nan), governing,
+            ["input values outside the plausible ranges", *warned.reasons])
 
 
 def _block_dependent(key: str) -> bool:
@@ -333,22 +349,25 @@ def _block_dependent(key: str) -> bool:
         "foundation.machine.cog_height", "mechanism.crank_radius", "mechanism.rod_length", "mechanism.crank_axis_to_cog")
 
 
-def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resonance=True, amplitudes=True):
-    """The resonance and amplitude checks of blocks (L, B, H) on the soil × ``factor`` into
-    ``out``; returns the blocks' designs and the resonance judgement (zero-order frequencies,
-    margins, :class:`~foundation_calc.checks.resonance_rule.Judgement`, conditions)."""
+def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, resonance=True, amplitudes=True, sizes=None):
+    """The resonance and amplitude checks of blocks (L, B, H) on their support at ``sizes`` (key ->
+    (N,); None: the scene's) on the soil × ``factor`` into ``out``; returns the blocks' designs and
+    the resonance judgement (zero-order frequencies, margins,
+    :class:`~foundation_calc.checks.resonance_rule.Judgement`, conditions)."""
     from foundation_calc.solvers.crank.averaged import block_matrices
 
-    given = CandidateDesigns(scene, L, B, H, factor)
+    given = CandidateDesigns(scene, L, B, H, factor, sizes)
     stable = given.stable()
     designs = given
     if not stable.all():  # a tipping candidate is solved as a stable stand-in, its verdicts overwritten
         if stable.any():
             keep = int(np.argmax(stable))
             stand_in = [np.where(stable, v, v[keep]) for v in (L, B, H, np.broadcast_to(factor, L.shape))]
+            own = {key: np.where(stable, v, v[keep]) for key, v in (sizes or {}).items()}
         else:
             stand_in = [np.full_like(L, getattr(scene.foundation.block, k)) for k in VARIED] + [np.ones_like(L)]
-        designs = CandidateDesigns(scene, *stand_in)
+            own = None
+        designs = CandidateDesigns(scene, *stand_in, own)
     d0 = designs.at(0.0)
     block = block_matrices(d0)
     decoupled, mech = mech.decoupled, mech.at(designs.a)

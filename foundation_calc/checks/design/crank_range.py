@@ -34,8 +34,8 @@ CROSSING_STEPS = 44
 OVER_RANGE = " (over the soil's modulus range)"
 
 
-def _judged(scene, L, B, H, factor, mech, harmonics, resonance: bool, amplitudes: bool, chunk: int):
-    """``judge_physics`` of elements (block, factor), ``chunk`` at a time: the Verdicts' arrays and,
+def _judged(scene, L, B, H, sizes, factor, mech, harmonics, resonance: bool, amplitudes: bool, chunk: int):
+    """``judge_physics`` of elements (block, the support's sizes, factor), ``chunk`` at a time: the Verdicts' arrays and,
     with ``resonance``, each element's zero-order frequencies, judgement and conditions."""
     from foundation_calc.checks.design.crank_physics import Verdicts, judge_physics
 
@@ -44,7 +44,8 @@ def _judged(scene, L, B, H, factor, mech, harmonics, resonance: bool, amplitudes
     for i in range(0, len(L), chunk):
         part = slice(i, i + chunk)
         out = Verdicts()
-        _, found = judge_physics(out, scene, L[part], B[part], H[part], mech, harmonics, factor[part], resonance, amplitudes)
+        _, found = judge_physics(out, scene, L[part], B[part], H[part], mech, harmonics, factor[part], resonance, amplitudes,
+                                 _take(sizes, part))
         outs.append(out)
         if found is not None:
             frequencies, _, verdict, conditions = found
@@ -56,6 +57,11 @@ def _judged(scene, L, B, H, factor, mech, harmonics, resonance: bool, amplitudes
               for c in checks}
     extra = None if not resonance else (np.concatenate(zero), np.concatenate(judged), np.concatenate(status), conditions)
     return merged, extra, (outs[0].reasons if outs else {})
+
+
+def _take(sizes, index) -> dict:
+    """The support's sizes (key -> (N,)) of the elements ``index`` (a slice or indices)."""
+    return {key: values[index] for key, values in sizes.items()}
 
 
 def _worst(owner, outcome, utilisation, governing, n):
@@ -71,7 +77,7 @@ def _worst(owner, outcome, utilisation, governing, n):
     return result
 
 
-def _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, omega):
+def _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega):
     """(candidate index, factor) of every crossing of a listed condition between two grid
     factors (module docstring), found by bisection in log(factor)."""
     from foundation_calc.checks.design.crank_physics import CandidateDesigns, candidate_frequencies
@@ -92,7 +98,7 @@ def _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, o
     sign = np.sign(offset[who, j, c])
     for _ in range(CROSSING_STEPS if len(who) else 0):
         mid = 0.5 * (low + high)
-        designs = CandidateDesigns(scene, L[who], B[who], H[who], np.exp(mid))
+        designs = CandidateDesigns(scene, L[who], B[who], H[who], np.exp(mid), _take(sizes, who))
         frequencies = candidate_frequencies(designs)[0]
         value = np.stack([getattr(frequencies, m) * np.ones(len(who)) for m in ("k0", "p1", "p2")], -1)
         same = np.sign(value[np.arange(len(who)), mode[c]] / order[c] - omega) == sign
@@ -100,9 +106,9 @@ def _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, o
     return who, np.exp(0.5 * (low + high)), c
 
 
-def over_range(scene, L, B, H, mech, harmonics, chunk: int) -> dict:
+def over_range(scene, L, B, H, sizes, mech, harmonics, chunk: int) -> dict:
     """check -> (outcome, utilisation, governing, reasons) over the soil's modulus range of every
-    candidate (module docstring); governing indexes the check's reasons, then the same with
+    candidate (module docstring), its support at ``sizes`` (key -> (N,)); governing indexes the check's reasons, then the same with
     :data:`OVER_RANGE`."""
     from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
 
@@ -113,11 +119,11 @@ def over_range(scene, L, B, H, mech, harmonics, chunk: int) -> dict:
     who = np.repeat(np.arange(n), len(grid))
     factor = np.tile(grid, n)
     resonance, (zero, judged, status, conditions), reasons = _judged(
-        scene, L[who], B[who], H[who], factor, mech, harmonics, True, False, chunk)
+        scene, L[who], B[who], H[who], _take(sizes, who), factor, mech, harmonics, True, False, chunk)
     stable = resonance["resonance"][2] != len(conditions)  # the last reason: the block tips over
-    at, crossed, c = _crossings(scene, L, B, H, grid, zero, judged, status, conditions, stable, omega)
+    at, crossed, c = _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega)
     if len(at):  # the crossings where the rule judges the crossed condition
-        found, extra, _ = _judged(scene, L[at], B[at], H[at], crossed, mech, harmonics, True, False, chunk)
+        found, extra, _ = _judged(scene, L[at], B[at], H[at], _take(sizes, at), crossed, mech, harmonics, True, False, chunk)
         kept = extra[1][np.arange(len(at)), c]
         at, crossed = at[kept], crossed[kept]
         outcome, utilisation, governing = (np.concatenate([a, b[kept]]) for a, b in zip(resonance["resonance"], found["resonance"]))
@@ -129,7 +135,7 @@ def over_range(scene, L, B, H, mech, harmonics, chunk: int) -> dict:
     grid = modulus_factors(low, high, AMPLITUDE_GRID_POINTS)
     owner = np.concatenate([np.repeat(np.arange(n), len(grid)), at])
     factor = np.concatenate([np.tile(grid, n), crossed])
-    amplitudes, _, reasons = _judged(scene, L[owner], B[owner], H[owner], factor, mech, harmonics, False, True, chunk)
+    amplitudes, _, reasons = _judged(scene, L[owner], B[owner], H[owner], _take(sizes, owner), factor, mech, harmonics, False, True, chunk)
     result["amplitudes"] = (*_worst(owner, *amplitudes["amplitudes"], n), reasons["amplitudes"])
     return result
 
