@@ -24,6 +24,7 @@ from foundation_calc.scenes.common import (
     quantity,
     source,
 )
+from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
@@ -266,6 +267,11 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     )
     foundation: Foundation
     soil: Soil
+    piles: BlockPiles | None = quantity(
+        "-", "-", "a pile group under the block, its base the rigid cap: the group's springs and dashpots replace"
+        " the footing's ([soil] gives the soil around the piles; the block's keys, docs/block-foundation.md); optional",
+        None,
+    )
     mechanism: Mechanism | None = quantity(
         "-", "-", "the crank-slider machine; leave out when the machine is given by its [[loads]]", None
     )
@@ -358,6 +364,20 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         if (error := stratum_error(self.soil, self.foundation.embedment or 0.0, "foundation.embedment")) is not None:
             raise ValueError(error)
         return self
+
+    @model_validator(mode="after")
+    def _piles_carry_the_block(self):
+        """The support: a pile group when ``[piles]`` is given, as a block's
+        (:func:`~foundation_calc.scenes.block_piles.piled`), its heads under the base L × B."""
+        if self.piles is None or isinstance(self.soil, PiledSoil):
+            return self
+        object.__setattr__(self, "soil", piled(self.soil, self.piles, self.foundation.dimensions))
+        return self
+
+    @property
+    def embedment(self) -> float:
+        """D: the base's depth below the ground surface [m], 0 for a surface footing."""
+        return self.foundation.embedment or 0.0
 
     @property
     def speed(self) -> SpeedFields:
