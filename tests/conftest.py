@@ -30,6 +30,12 @@ def mechanism_configs() -> list[Path]:
     return [p for p in configs_of_kind("crank_foundation") if "mechanism" in read_toml(p)]
 
 
+def closed_form_configs() -> list[Path]:
+    """:func:`mechanism_configs` on a footing, where the paper's closed forms apply (not on [piles], whose
+    coupling of sway with rocking they do not take: tests/test_crank_piles.py)."""
+    return [p for p in mechanism_configs() if "piles" not in read_toml(p)]
+
+
 def only_input_warnings(stderr: str, config: Path) -> bool:
     """True when ``stderr`` holds nothing but the plausibility warnings of the scene ``config``
     (every shipped scene has none but the contrived soft soil of frame_saw_soft_soil_runup.toml)."""
