@@ -32,10 +32,14 @@ def test_config_json(scene, exact):
     doc = json.loads(result.stdout)
     assert result.exit_code == (1 if doc["verdict"] == "fail" else 0)
     approx = doc["approximations"]
-    assert set(approx["first_approximation"]["coefficients"]) == {"y1", "y2", "x1", "x3", "theta1", "theta3"}
+    closed_forms = "not_applicable" not in doc  # a pile group couples the plane: (4.14) does not apply
+    if closed_forms:
+        assert set(approx["first_approximation"]["coefficients"]) == {"y1", "y2", "x1", "x3", "theta1", "theta3"}
+    else:
+        assert "first_approximation" not in approx and set(doc["not_applicable"]) == {"first_approximation"}
     assert doc["checked_with"] == ("exact" if exact else "averaged_operator")
     if exact:
-        assert set(doc["errors"]) == {"first_approximation", "averaged_operator"}
+        assert set(doc["errors"]) == {"first_approximation", "averaged_operator"} if closed_forms else {"averaged_operator"}
         assert doc["exact_solver"]["harmonic_change"] < 1e-10
 
 

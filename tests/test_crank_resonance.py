@@ -12,7 +12,7 @@ import tomli_w
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import parse_scene, read_toml
 from tests import crank_reference as ref
-from tests.conftest import CONFIGS, mechanism_configs
+from tests.conftest import CONFIGS, closed_form_configs
 
 PAPER = {"ω = k0", "2ω = k0", "ω = p1", "ω = p2", "3ω = p1", "3ω = p2"}
 EXTRA = {"4ω = k0", "2ω = p1", "2ω = p2"}
@@ -58,7 +58,7 @@ def test_table_lists_the_papers_and_the_extra_conditions(runner, tmp_path, frame
     assert {r["source"] for c, r in rows.items() if c in EXTRA} == {"extra"}
 
 
-@pytest.mark.parametrize("config", mechanism_configs(), ids=lambda p: p.name)
+@pytest.mark.parametrize("config", closed_form_configs(), ids=lambda p: p.name)
 def test_critical_speeds_and_margins_against_reference(runner, tmp_path, config):
     from foundation_calc.scenes import read_toml
 

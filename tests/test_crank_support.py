@@ -26,11 +26,11 @@ from foundation_calc.solvers.crank.plane import in_plane
 from foundation_calc.solvers.supports import register, unregister
 from foundation_calc.solvers.supports.base import AtO, Validity
 
-from tests.conftest import CONFIGS, mechanism_configs
+from tests.conftest import CONFIGS, closed_form_configs
 
-#: The shipped crank scenes with a mechanism, each in every soil method its data allow, and on a stratum.
+#: The shipped crank scenes with a mechanism on a footing, each in every soil method its data allow, and on a stratum.
 LYSMER = "compressor_medium_sand_lysmer.toml"
-VARIANTS = [(p.name, {}) for p in mechanism_configs()] + [
+VARIANTS = [(p.name, {}) for p in closed_form_configs()] + [
     (LYSMER, {"method": "gazetas"}), (LYSMER, {"method": "pais_kausel"}),
     (LYSMER, {"stratum_depth": 7.0}), (LYSMER, {"method": "gazetas", "stratum_depth": 7.0}),
     (LYSMER, {"method": "pais_kausel", "embedment": 1.0}),
@@ -113,18 +113,20 @@ C_TOY = np.array([2.0e7, 1.0e7, 3.0e7, 4.0e7, 6.0e7, 3.0e7])
 
 
 class Toy:
-    """Constant springs and dashpots at O (coupled x with ry when ``coupled``): a support's whole interface."""
+    """Constant springs and dashpots at O (coupled at ``coupled``, a pair of motions: x with ry, or z
+    with ry): a support's whole interface."""
 
     label, method, unscaled, frequency_dependent = "toy", "toy", None, False
 
-    def __init__(self, coupled: bool):
+    def __init__(self, coupled: tuple[int, int] | None):
         self.coupled = coupled
 
     def impedance(self, omega) -> AtO:
         shape = np.shape(omega)
         off = np.zeros(shape + (6, 6))
         if self.coupled:
-            off[..., 0, 4] = off[..., 4, 0] = -1.0e9
+            i, j = self.coupled
+            off[..., i, j] = off[..., j, i] = -1.0e9
         return AtO(np.broadcast_to(K_TOY, shape + (6,)), np.broadcast_to(C_TOY, shape + (6,)),
                    (off, np.zeros_like(off)) if self.coupled else None)
 
@@ -136,13 +138,15 @@ class Toy:
 
 
 def _toy_builder(scene, L, B, masses):
-    return {"toy crank": Toy(False), "coupled toy crank": Toy(True)}.get(scene.name)
+    return {"toy crank": Toy(None), "coupled toy crank": Toy((0, 4)), "vertically coupled toy crank": Toy((2, 4))}.get(scene.name)
 
 
 @pytest.fixture(scope="module")
 def toys():
-    """Two crank scene documents a toy support takes (uncoupled, coupled), registered while the module's tests run."""
-    documents = {name: {**read_toml(CONFIGS / "frame_saw.toml"), "name": name} for name in ("toy crank", "coupled toy crank")}
+    """Three crank scene documents a toy support takes (uncoupled, coupled in sway-rocking, coupled vertically),
+    registered while the module's tests run."""
+    documents = {name: {**read_toml(CONFIGS / "frame_saw.toml"), "name": name}
+                 for name in ("toy crank", "coupled toy crank", "vertically coupled toy crank")}
     register(_toy_builder)
     yield documents
     unregister(_toy_builder)
@@ -168,11 +172,15 @@ def test_a_registered_support_carries_the_crank_resonance(toys):
 
 
 def test_a_support_coupling_the_plane_is_refused_by_name(toys, runner, tmp_path):
-    """The paper's closed forms take three uncoupled springs: a coupled support is a PhysicsError that
-    names it (exit code 3, docs/exit-codes.md), never a silently dropped coupling."""
-    with pytest.raises(fc.PhysicsError, match="support toy couples"):
-        fc.resonance(toys["coupled toy crank"])
+    """The paper's closed forms take three uncoupled springs: a support coupling sway with rocking is a
+    PhysicsError that names it (exit code 3, docs/exit-codes.md) wherever only they are solved (a sweep),
+    never a silently dropped coupling; its resonance and amplitudes are the plane model's
+    (tests/test_crank_piles.py); a coupling of the vertical motion is refused there too."""
+    assert fc.resonance(toys["coupled toy crank"]).to_dict()["natural_frequencies"]["p1"] > 0.0
+    assert "first_approximation" in fc.amplitudes(toys["coupled toy crank"]).to_dict()["not_applicable"]
+    with pytest.raises(fc.PhysicsError, match="support toy couples the motions of the plane at O other than"):
+        fc.resonance(toys["vertically coupled toy crank"])
     path = tmp_path / "coupled.toml"
     path.write_text(tomli_w.dumps(toys["coupled toy crank"]), encoding="utf-8")
-    run = runner.invoke(app, ["resonance", str(path)])
+    run = runner.invoke(app, ["sweep", str(path), "--speed", "100:200:3"])
     assert run.exit_code == 3 and "support toy couples" in run.output

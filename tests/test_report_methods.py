@@ -12,11 +12,11 @@ import pytest
 
 from foundation_calc.output.report.methods import crank_chains, methods_section, platform_chain
 from foundation_calc.scenes import load_scene
-from tests.conftest import CONFIGS
+from tests.conftest import CONFIGS, sheet_configs
 
 TOLERANCE = 1e-9
 
-CRANK = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "crank_foundation")
+CRANK = sorted(p for p in sheet_configs() if load_scene(p).kind == "crank_foundation")
 PLATFORM = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "platform")
 
 

@@ -17,7 +17,7 @@ import pytest
 import tomli_w
 
 from foundation_calc.cli.app import app
-from tests.conftest import CONFIGS
+from tests.conftest import CONFIGS, sheet_configs
 from tests.sheet_numbers import NUMBER, numbers
 
 pytest.importorskip("matplotlib")
@@ -109,7 +109,7 @@ def _numbers(text: str) -> list[float]:
 def _scenes(tmp_path_factory):
     folder = tmp_path_factory.mktemp("generated")
     generated = [_variant(folder, config, name, change) for name, (config, change) in GENERATED.items()]
-    return sorted(CONFIGS.glob("*.toml")) + generated
+    return sheet_configs() + generated
 
 
 @pytest.fixture(scope="module")

@@ -22,11 +22,11 @@ import re
 import numpy as np
 import pytest
 
-from tests.conftest import CONFIGS
+from tests.conftest import sheet_configs
 from tests.sheet_numbers import NUMBER, _SUPERSCRIPTS
 from tests.sheet_reader import READERS, NotPrinted, cell_texts
 
-SCENES = sorted(p.stem for p in CONFIGS.glob("*.toml"))
+SCENES = [p.stem for p in sheet_configs()]
 FORMATS = tuple(READERS)
 
 #: Formulas whose number is a numerical solution stated on the sheet, not recomputed here.

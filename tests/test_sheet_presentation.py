@@ -9,11 +9,11 @@ import re
 
 import pytest
 
-from tests.conftest import CONFIGS
+from tests.conftest import CONFIGS, sheet_configs
 from tests.sheet_numbers import NUMBER, numbers
 from tests.sheet_reader import read_markdown, read_typst
 
-SCENES = sorted(p.stem for p in CONFIGS.glob("*.toml"))
+SCENES = [p.stem for p in sheet_configs()]
 
 #: A typst string literal of the source (text set as text, never as math or markup).
 LITERAL = re.compile(r'"((?:[^"\\]|\\.)*)"')

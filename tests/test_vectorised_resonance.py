@@ -10,10 +10,10 @@ import pytest
 from foundation_calc.benchmarks.throughput import perturbed_designs
 from foundation_calc.checks.crank_resonance import check_resonances, design_frequencies, paper_margin
 from foundation_calc.scenes import load_scene
-from tests.conftest import mechanism_configs
+from tests.conftest import closed_form_configs
 
 
-@pytest.mark.parametrize("config", mechanism_configs(), ids=lambda p: p.name)
+@pytest.mark.parametrize("config", closed_form_configs(), ids=lambda p: p.name)
 def test_batch_matches_scalar(config):
     design = load_scene(config).design()
     batch = perturbed_designs(design, 200, seed=1)

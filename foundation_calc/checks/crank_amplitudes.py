@@ -18,7 +18,7 @@ is the rule's (:mod:`~foundation_calc.checks.resonance_rule`), reported beside t
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
@@ -61,6 +61,10 @@ TITLES = {
     "exact": "exact periodic solution (harmonic balance)",
     "loads": "vendor loads: linear steady state of the block (K - n²ω²M + i nωC) Z = F",
 }
+
+#: Why the paper's first approximation is left out of a design on a support coupling sway with rocking.
+FIRST_NOT_APPLICABLE = ("not applicable: the support couples sway with rocking (K_xφ, a pile group), and Eqs. (4.11)-(4.14)"
+                        " take three uncoupled springs; the averaged operator and the exact solution take the coupling")
 
 #: Appended to the title of a mechanism's approximation when the scene's [[loads]] are added to it.
 WITH_LOADS = " + vendor loads (linear)"
@@ -155,6 +159,8 @@ class AmplitudeReport:
     #: a0 of the judged modes and orders against the soil method's fitted range
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
     soil_validity: object = None
+    #: approximation key -> why it is not computed for this design (:data:`FIRST_NOT_APPLICABLE`)
+    not_applicable: dict = field(default_factory=dict)
 
     @property
     def omega(self) -> float:
@@ -356,6 +362,7 @@ def check_amplitudes(
     loads = None if vendor is None else _loads_part(vendor)
     info = errors = None
     damping = None
+    not_applicable = {}
     if design is None:
         approximations = {"loads": _approximation("loads", None, False, loads.margin, loads.nearest, points, loads)}
         checked = "loads"
@@ -363,7 +370,10 @@ def check_amplitudes(
     else:
         omega = design.omega
         averaged, damping = _averaged(design, points, loads)
-        approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
+        if design.coupled:
+            approximations, not_applicable = {"averaged_operator": averaged}, {"first_approximation": FIRST_NOT_APPLICABLE}
+        else:
+            approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
         checked = "averaged_operator"
     if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
@@ -383,7 +393,7 @@ def check_amplitudes(
         checked = "exact"
         errors = {
             key: _errors(approximations[key], approximations["exact"])
-            for key in ("first_approximation", "averaged_operator")
+            for key in ("first_approximation", "averaged_operator") if key in approximations
         }
     code_rows, code_warnings = _code_rows(approximations[checked], limits, omega, supports)
     detuning = getattr(limits, "detuning", DEFAULT_DETUNING)
@@ -403,6 +413,7 @@ def check_amplitudes(
         code_warnings=code_warnings,
         vendor=vendor,
         resonance=resonance,
+        not_applicable=not_applicable,
     )
 
 
@@ -414,7 +425,7 @@ def scene_vendor_loads(scene, soil_frequency: float = 0.0) -> VendorLoads | None
 
 
 def _at_soil_frequency(scene, soil_frequency: float, exact: bool, supports=None) -> AmplitudeReport:
-    design = None if scene.mechanism is None else scene.design(soil_frequency)
+    design = None if scene.mechanism is None else scene.design(soil_frequency, coupled=True)
     return check_amplitudes(design, scene.limits, scene.points, exact=exact,
                             vendor=scene_vendor_loads(scene, soil_frequency), supports=supports)
 
@@ -481,6 +492,7 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
 
 
 __all__ = [
+    "FIRST_NOT_APPLICABLE",
     "RESONANT_MARGIN",
     "AmplitudeReport",
     "Approximation",

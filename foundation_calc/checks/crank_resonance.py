@@ -34,7 +34,15 @@ from foundation_calc.solvers.crank.resonance import (
 
 
 def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
-    """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays)."""
+    """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays). On a
+    support coupling u_x with θ_y (a pile group) the closed forms do not apply: both are the one
+    model's eigen-solve in the plane (:func:`~foundation_calc.solvers.crank.averaged.plane_frequencies`,
+    one design)."""
+    if design.coupled:
+        from foundation_calc.solvers.crank.averaged import plane_frequencies
+
+        found = plane_frequencies(design)
+        return found, found
     d, rod = design, design.rod
     soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g)
     zero = zero_order_frequencies(*soil_args)
@@ -211,7 +219,7 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     if scene.mechanism is None:
         return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
                                       scene_block_frequencies(scene))
-    return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
+    return check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene))
 
 
 def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
@@ -230,10 +238,28 @@ def scene_design_frequencies(scene):
     soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
     if not scene.support().frequency_dependent:
         return None
-    static, static_averaged = design_frequencies(scene.design())
-    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
-    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
+    design = scene.design(coupled=True)
+    static, static_averaged = design_frequencies(design)
+    if design.coupled:  # the one model's modes, by rank as the block's are: one root of each
+        ranked = by_static_rank(static)
+        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w, coupled=True))[1]))
+        return found, found, static
+    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w, coupled=True))[0])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w, coupled=True))[1])
     return zero, averaged, static
+
+
+def by_static_rank(static: NaturalFrequencies):
+    """A function giving k0, p1, p2 at a frequency named by their rank in ``static``: the j-th
+    lowest there takes the name of the j-th lowest at rest. A mode then follows its rank, as
+    :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency` needs it (its root exists
+    and is bracketed), not its dominant motion, which a pile group's springs at frequency reorder."""
+    names = sorted(_MODES, key=lambda mode: getattr(static, mode))
+
+    def ranked(found: NaturalFrequencies) -> NaturalFrequencies:
+        return NaturalFrequencies(**dict(zip(names, sorted(getattr(found, mode) for mode in _MODES))))
+
+    return ranked
 
 
 def scene_frequencies(scene) -> NaturalFrequencies:

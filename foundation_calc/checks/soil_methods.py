@@ -233,7 +233,16 @@ def _frequency_range(scene, results) -> list[str]:
 
 
 def compare_soil_methods(scene) -> SoilComparison:
-    """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`)."""
+    """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`). A crank
+    scene on ``[piles]`` is a PhysicsError: these are the footing's methods, which the piles replace."""
+    if getattr(scene, "piles", None) is not None:
+        from foundation_calc.errors import PhysicsError
+
+        raise PhysicsError(
+            "the support piles couples the motions of the plane at O, and fcalc soil compares the footing's soil methods,"
+            " which [piles] replace: not available for a crank scene on piles", field="piles",
+            hint="fcalc resonance gives the piled crank's natural frequencies; describe the foundation as a"
+                 " block_foundation scene for fcalc soil's table of the pile group")
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
     findings += _frequency_range(scene, results)

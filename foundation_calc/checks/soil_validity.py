@@ -349,7 +349,8 @@ def crank_validity(scene, report) -> SoilValidity:
     resonance ``report`` (:class:`~foundation_calc.checks.resonance.ResonanceReport`, on a
     frequency-dependent support each at its own frequency) and every order the rule judges, against
     the range its support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`;
-    the plane's horizontal, vertical and rocking motions are the support's x, z and ry)."""
+    the plane's horizontal, vertical and rocking motions are the support's x, z and ry). On a support
+    coupling the plane (a pile group) every mode is judged with every motion, as the orders are."""
     support = scene.support()
     declared = support.validity()
     fitted, cutoffs = declared_range(support)
@@ -360,7 +361,13 @@ def crank_validity(scene, report) -> SoilValidity:
     speeds = {_order_label(n): n * report.omega for n in judged_orders(report.rows)}
     b = declared.lengths
     lengths = b | {"horizontal": b["x"], "vertical": b["z"], "rocking": b["ry"]}
-    return judge_a0(fitted, declared.V_s, lengths, plane_judged(modes, scene.block, speeds), cutoffs)
+    if report.design is not None and report.design.coupled:  # a pile group: no uncoupled block gives the shapes
+        from foundation_calc.checks.plane_modes import BASE_MOTIONS
+
+        judged = [JudgedFrequency(m, p, BASE_MOTIONS) for m, p in (modes | speeds).items()]
+    else:
+        judged = plane_judged(modes, scene.block, speeds)
+    return judge_a0(fitted, declared.V_s, lengths, judged, cutoffs)
 
 
 def block_validity(scene, report) -> SoilValidity:

@@ -118,6 +118,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         },
         "checked_with": report.checked,
         "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
+        **({"not_applicable": dict(report.not_applicable)} if report.not_applicable else {}),
         "limits": limits_document(report.rows),
         "code": code_document(scene.limits, report.code_rows, report.code_warnings, DIRECTIONS),
         "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
@@ -310,6 +311,8 @@ def print_amplitudes_report(
     for a in report.approximations.values():
         note = f" (resonant: {a.nearest}, margin {a.margin:.2g})" if a.resonant else ""
         out.print(f"  {a.key.replace('_', ' ')}: {a.title}{note}")
+    for key, why in report.not_applicable.items():
+        out.print(f"  {key.replace('_', ' ')}: {escape(why)}", soft_wrap=True)
     if report.resonance is not None:
         out.print(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}", soft_wrap=True)
     if report.damping is not None:

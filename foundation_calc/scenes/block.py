@@ -12,7 +12,7 @@ from typing import Literal
 from pydantic import field_validator, model_validator
 
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
-from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil
+from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.block_soil import BlockSoil
 from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
 from foundation_calc.scenes.crank import Limits
@@ -150,19 +150,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         the one place a support other than the footing's soil is chosen), its heads under the base."""
         if self.piles is None or isinstance(self.soil, PiledSoil):
             return self
-        if getattr(self.soil, "stratum_depth", None) is not None:
-            raise ValueError(
-                f"soil.stratum_depth = {self.soil.stratum_depth:g} m with [piles]: a layer over rock under piles is not"
-                " modelled (the piles' springs and dashpots are those of a deep soil); remove the key, and for"
-                ' piles that reach the rock give piles.tip = "end_bearing"'
-            )
-        L, B = self.base
-        for i, (x, y) in enumerate(self.piles.positions):
-            if abs(x) > L / 2.0 + ON_BLOCK or abs(y) > B / 2.0 + ON_BLOCK:
-                raise ValueError(f"piles.positions[{i}] = [{x:g}, {y:g}] m is outside the block's base (|x| <= L/2 ="
-                                 f" {L / 2.0:g} m, |y| <= B/2 = {B / 2.0:g} m; O is the centre of the base): the base is"
-                                 " the piles' cap")
-        object.__setattr__(self, "soil", PiledSoil.on(self.soil, self.piles, self.base))
+        object.__setattr__(self, "soil", piled(self.soil, self.piles, self.base))
         return self
 
     @property

@@ -169,4 +169,28 @@ class PiledSoil(BlockSoil):
         return remarks
 
 
-__all__ = ["BlockPiles", "PiledSoil", "VALIDITY"]
+#: How far [m] a pile head may lie outside the base's edge (round-off of a position typed at the edge).
+ON_BASE = 1e-3
+
+
+def piled(soil, piles: BlockPiles, plan: tuple[float, float], *, stratum_key: str = "soil.stratum_depth") -> PiledSoil:
+    """``soil`` with ``piles`` standing in it under a base of ``plan`` (L, B) [m]
+    (:meth:`PiledSoil.on`), the one place a scene's support becomes a pile group, for a block and a
+    crank scene alike. Raises ValueError for a stratum under the piles (not modelled) and for a pile
+    head outside the base (the base is their cap; O its centre)."""
+    if getattr(soil, "stratum_depth", None) is not None:
+        raise ValueError(
+            f"{stratum_key} = {soil.stratum_depth:g} m with [piles]: a layer over rock under piles is not"
+            " modelled (the piles' springs and dashpots are those of a deep soil); remove the key, and for"
+            ' piles that reach the rock give piles.tip = "end_bearing"'
+        )
+    L, B = plan
+    for i, (x, y) in enumerate(piles.positions):
+        if abs(x) > L / 2.0 + ON_BASE or abs(y) > B / 2.0 + ON_BASE:
+            raise ValueError(f"piles.positions[{i}] = [{x:g}, {y:g}] m is outside the block's base (|x| <= L/2 ="
+                             f" {L / 2.0:g} m, |y| <= B/2 = {B / 2.0:g} m; O is the centre of the base): the base is"
+                             " the piles' cap")
+    return PiledSoil.on(soil, piles, plan)
+
+
+__all__ = ["ON_BASE", "BlockPiles", "PiledSoil", "VALIDITY", "piled"]

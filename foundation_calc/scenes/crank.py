@@ -24,6 +24,7 @@ from foundation_calc.scenes.common import (
     quantity,
     source,
 )
+from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
@@ -266,6 +267,11 @@ class CrankScene(Plausible, OnSoil, SceneModel):
     )
     foundation: Foundation
     soil: Soil
+    piles: BlockPiles | None = quantity(
+        "-", "-", "a pile group under the block, its base the rigid cap: the group's springs and dashpots replace"
+        " the footing's ([soil] gives the soil around the piles; the block's keys, docs/block-foundation.md); optional",
+        None,
+    )
     mechanism: Mechanism | None = quantity(
         "-", "-", "the crank-slider machine; leave out when the machine is given by its [[loads]]", None
     )
@@ -359,6 +365,20 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             raise ValueError(error)
         return self
 
+    @model_validator(mode="after")
+    def _piles_carry_the_block(self):
+        """The support: a pile group when ``[piles]`` is given, as a block's
+        (:func:`~foundation_calc.scenes.block_piles.piled`), its heads under the base L × B."""
+        if self.piles is None or isinstance(self.soil, PiledSoil):
+            return self
+        object.__setattr__(self, "soil", piled(self.soil, self.piles, self.foundation.dimensions))
+        return self
+
+    @property
+    def embedment(self) -> float:
+        """D: the base's depth below the ground surface [m], 0 for a surface footing."""
+        return self.foundation.embedment or 0.0
+
     @property
     def speed(self) -> SpeedFields:
         """The section that gives the speed (its ``omega_rad_s``, ``speed_given_as``)."""
@@ -398,19 +418,20 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             masses = plane_masses(self.total_mass, f.moment_of_inertia + self.total_mass * f.cog_height**2)
         return support_of(self, *(f.dimensions if base is None else base), masses)
 
-    def in_plane(self, soil_frequency=0.0) -> tuple:
-        """((K_x, K_z, K_φ), (C_x, C_z, C_φ), the support's method) at O of :meth:`support` at
-        ``soil_frequency`` [rad/s] (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a
-        support that couples the plane's motions is a PhysicsError), each a float (an array at an
-        array of frequencies); raises PhysicsError (:meth:`require_stable_rocking`) for a block that
-        tips over."""
+    def in_plane(self, soil_frequency=0.0, coupled: bool = False) -> tuple:
+        """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ), the support's method) at O of
+        :meth:`support` at ``soil_frequency`` [rad/s]
+        (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
+        plane's motions is a PhysicsError, but for u_x with θ_y when ``coupled``), each a float (an
+        array at an array of frequencies); raises PhysicsError (:meth:`require_stable_rocking`) for a
+        block that tips over."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
         support = self.support()
-        springs, dashpots = plane(support.impedance(soil_frequency), support.label)
-        springs, dashpots = tuple(map(_number, springs)), tuple(map(_number, dashpots))
+        springs, dashpots, coupling = plane(support.impedance(soil_frequency), support.label, coupled)
+        springs, dashpots, coupling = (tuple(map(_number, v)) for v in (springs, dashpots, coupling))
         self.require_stable_rocking(springs[2])
-        return springs, dashpots, support.method
+        return springs, dashpots, coupling, support.method
 
     def soil_springs(self, method: str | None = None, omega: float = 0.0):
         """K_z, K_x, K_φ and damping ratios (:class:`~foundation_calc.solvers.soil.springs.SoilSprings`) of
@@ -476,7 +497,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         from foundation_calc.solvers.crank.loads import RigidBlock
 
         f = self.foundation
-        (K_x, K_z, K_phi), (C_x, C_z, C_phi), _ = self.in_plane(soil_frequency)
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), _, _ = self.in_plane(soil_frequency)
         return RigidBlock(M_tot=self.total_mass, I_c=f.moment_of_inertia, h=f.cog_height, K_x=K_x, K_z=K_z,
                           K_phi=K_phi, C_x=C_x, C_z=C_z, C_phi=C_phi, g=GRAVITY)
 
@@ -491,11 +512,13 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         columns = zip(*((ld.order, ld.horizontal, ld.vertical, ld.moment, ld.phase, ld.at.horizontal, ld.at.height) for ld in self.loads))
         return HarmonicLoads(*(np.array(c, dtype=int if i == 0 else float) for i, c in enumerate(columns)))
 
-    def design(self, soil_frequency: float = 0.0) -> CrankDesign:
+    def design(self, soil_frequency: float = 0.0, coupled: bool = False) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
 
         A frequency-dependent support (its ``frequency_dependent``) takes its springs and dashpots at
-        ``soil_frequency`` [rad/s], 0 for the static springs.
+        ``soil_frequency`` [rad/s], 0 for the static springs. With ``coupled``, a support coupling
+        u_x with θ_y (a pile group) gives its K_xφ, C_xφ to the design, for the solvers that take
+        them (the plane model's eigen-solve: the resonance check); without, it is refused.
 
         The support's springs at O (:meth:`in_plane`) map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1
         (Barkan's coefficients pass through unchanged), its dashpots to C_x, C_z, C_φ. Raises
@@ -515,7 +538,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             rho=mech.rod_radius_of_gyration,
             m1=mech.slider_mass,
         )
-        (K_x, K_z, K_phi), (C_x, C_z, C_phi), method = self.in_plane(soil_frequency)
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi), method = self.in_plane(soil_frequency, coupled)
         if method == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:
@@ -539,6 +562,8 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             rod=rod,
             drive_on_foundation=mech.drive_on_foundation,
             g=GRAVITY,
+            K_xphi=K_xphi,
+            C_xphi=C_xphi,
         )
 
     def plane_model(self, soil_frequency: float = 0.0) -> PlaneFoundation:

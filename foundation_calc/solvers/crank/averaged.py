@@ -37,7 +37,7 @@ import numpy as np
 from foundation_calc.errors import PhysicsError
 from foundation_calc.solvers.crank.dynamics import drive_reaction, mechanism_motion, residual
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
-from foundation_calc.solvers.crank.frequencies import require_stable_rocking
+from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, require_stable_rocking
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.plane import in_plane, plane_foundation, plane_samples, plane_throw
 from foundation_calc.solvers.crank.response import PeriodicMotion
@@ -121,13 +121,15 @@ FREQUENCY_FIELDS = (
 
 
 def base_dashpot_matrix(design: CrankDesign) -> np.ndarray:
-    """Damping matrix [N s/m, N s, N m s] of the base dashpots in the order x, y, θ (soil note)::
+    """Damping matrix [N s/m, N s, N m s] of the base dashpots in the order x, y, θ (soil note;
+    u_x = x - h θ at O, and a pile group's coupling C_xφ of u_x with θ_y)::
 
-        [[C_x, 0, -h C_x], [0, C_z, 0], [-h C_x, 0, C_φ + h² C_x]]
+        [[C_x, 0, C_xφ - h C_x], [0, C_z, 0], [C_xφ - h C_x, 0, C_φ - 2 h C_xφ + h² C_x]]
     """
     d = design
+    xt = d.C_xphi - d.h * d.C_x
     return np.array(
-        [[d.C_x, 0.0, -d.h * d.C_x], [0.0, d.C_z, 0.0], [-d.h * d.C_x, 0.0, d.C_phi + d.h * d.h * d.C_x]],
+        [[d.C_x, 0.0, xt], [0.0, d.C_z, 0.0], [xt, 0.0, d.C_phi - 2.0 * d.h * d.C_xphi + d.h * d.h * d.C_x]],
         dtype=float,
     )
 
@@ -239,6 +241,22 @@ def averaged_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
     return (M + drive[0], C + s.D.mean(axis=0) + drive[1], K + drive[2], fc + drive[3], fs + drive[4])
 
 
+def plane_frequencies(design: CrankDesign) -> NaturalFrequencies:
+    """k0, p1, p2 [rad/s] of the one model in the plane: the eigen-solve of :func:`averaged_operator`'s
+    M̄, K̄ (the support's coupling K_xφ included), each mode named by its dominant motion as the
+    closed forms name them (:func:`mode_order`: k0 the most vertical, p1 < p2 the others). The
+    frequencies of a coupled support (a pile group), where (4.5)-(4.7) do not apply; on an
+    uncoupled one they are :func:`~foundation_calc.solvers.crank.frequencies.averaged_inertia_frequencies`'
+    to round-off. A dynamic pile group's springs at a frequency past its interaction peaks may make a
+    K̄ indefinite: a mode's |p²| then stands for it, as :func:`natural_modes` takes it (the static
+    stability is the scene's :meth:`~foundation_calc.scenes.crank.CrankScene.require_stable_rocking`).
+    """
+    M, _, K, _, _ = averaged_operator(design)
+    natural, shapes = _modes(M, K)
+    k0, p1, p2 = natural[mode_order(M, shapes)]
+    return NaturalFrequencies(k0=float(k0), p1=float(p1), p2=float(p2))
+
+
 def averaged_response(design: CrankDesign) -> AveragedResponse:
     """Forced steady state with the time-averaged operator and the exact forcing (module docs).
 
@@ -304,4 +322,5 @@ __all__ = [
     "modal_damping_ratios",
     "mode_order",
     "natural_modes",
+    "plane_frequencies",
 ]

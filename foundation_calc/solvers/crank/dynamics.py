@@ -14,6 +14,9 @@ to c_φ I1), with base dashpots C_x, C_z, C_φ in parallel with the springs::
     Q_x = -c1 S (x - hθ) - C_x (x' - hθ'),   Q_y = -c S y - C_z y',   P = M_tot g
     Q_θ = -h Q_x - (c_φ I1 - P h) θ - C_φ θ'
 
+and a support's sway-rocking coupling K_xφ, C_xφ at O (a pile group; 0 for Barkan's springs) adds
+-K_xφ θ - C_xφ θ' to the base's force Q_x and -K_xφ u - C_xφ u' to its moment, u = x - hθ the sway at O.
+
 Motor on the foundation (the crank's rheonomic constraint is ideal)::
 
     M_tot X'' + m R[(θ'' J - θ'² I) p + 2 θ' J p' + p''] = Q_X
@@ -126,9 +129,10 @@ def residual(design: CrankDesign, motion: MechanismMotion, q, dq, ddq):
     p, rel, ext = _kinematics(d, motion, q, dq, ddq)
     P = d.M_tot * d.g
     dx, dy = dq[0], dq[1]
-    soil_x = -d.c1 * d.S * (x - d.h * th) - d.C_x * (dx - d.h * dth)
+    u, du = x - d.h * th, dx - d.h * dth  # the base's sway u_x at O
+    soil_x = -d.c1 * d.S * u - d.C_x * du - d.K_xphi * th - d.C_xphi * dth
     soil_y = -d.c * d.S * y - d.C_z * dy
-    soil_th = -d.h * soil_x - (d.c_phi * d.I1 - P * d.h) * th - d.C_phi * dth
+    soil_th = -d.h * soil_x - (d.c_phi * d.I1 - P * d.h) * th - d.C_phi * dth - d.K_xphi * u - d.C_xphi * du
     res_x = d.M_tot * ddq[0] + m * (ct * rel[0] - st * rel[1]) - soil_x
     res_y = d.M_tot * ddq[1] + m * (st * rel[0] + ct * rel[1]) - soil_y
     res_th = (

@@ -44,6 +44,9 @@ class CrankDesign:
     rod : the rod with the slider lumped in
     drive_on_foundation : the motor's reaction torque acts on the foundation
     g : acceleration of gravity [m/s²]
+    K_xphi, C_xphi : the support's coupling of u_x with θ_y at O [N/rad; N s/rad] (a pile group's
+        sway-rocking); 0 for the paper's uncoupled springs, whose closed forms hold only then
+        (:attr:`coupled`)
     """
 
     M: float
@@ -64,6 +67,14 @@ class CrankDesign:
     rod: "LumpedRod"
     drive_on_foundation: bool
     g: float
+    K_xphi: float = 0.0
+    C_xphi: float = 0.0
+
+    @property
+    def coupled(self) -> bool:
+        """Whether the support couples u_x with θ_y (K_xφ or C_xφ not 0, for any design of a batch):
+        the paper's closed forms, which take three uncoupled springs, do not apply."""
+        return bool(np.any(np.asarray(self.K_xphi) != 0.0) or np.any(np.asarray(self.C_xphi) != 0.0))
 
     @property
     def M_tot(self) -> float:

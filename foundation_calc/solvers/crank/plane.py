@@ -12,7 +12,8 @@ u + θ × r gives, at r_C = (0, 0, h)::
 
 and a matrix A or a generalised force Q about O reads Pᵀ A P, Pᵀ Q in the crank's coordinates
 (virtual work). The supports are the base's springs K_x, K_z, K_φ and dashpots C_x, C_z, C_φ at O
-(Barkan's c1 S, c S, c_φ I1, or the soil method's); the weight's tilt W z_G of the model is the
+(Barkan's c1 S, c S, c_φ I1, or the soil method's), and a pile group's coupling K_xφ, C_xφ of u_x
+with θ_y; the weight's tilt W z_G of the model is the
 paper's -P h (Krichever & Makarov (3.4), corrected) for a body at C.
 
 The machine (:mod:`foundation_calc.solvers.machines.crank_mechanism`): one throw with its crank
@@ -81,12 +82,26 @@ def support(K_x, K_z, K_phi, C_x, C_z, C_phi) -> tuple[np.ndarray, np.ndarray]:
     return springs, np.broadcast_to(dashpots, springs.shape)
 
 
-def block_on_base(bodies, K_x, K_z, K_phi, C_x, C_z, C_phi, g) -> BlockModel:
+def sway_rocking(K_xphi, C_xphi) -> tuple[np.ndarray, np.ndarray] | None:
+    """The coupling of u_x with θ_y at O, K_xφ [N/rad] and C_xφ [N s/rad], as the off-diagonal
+    (..., 6, 6) springs and dashpots of :func:`~foundation_calc.solvers.block.model.block_model`;
+    None when both are 0 (the paper's uncoupled base)."""
+    K_xphi, C_xphi = np.broadcast_arrays(np.asarray(K_xphi, dtype=float), np.asarray(C_xphi, dtype=float))
+    if not (np.any(K_xphi != 0.0) or np.any(C_xphi != 0.0)):
+        return None
+    K_c, C_c = np.zeros(K_xphi.shape + (6, 6)), np.zeros(K_xphi.shape + (6, 6))
+    K_c[..., 0, 4] = K_c[..., 4, 0] = K_xphi
+    C_c[..., 0, 4] = C_c[..., 4, 0] = C_xphi
+    return K_c, C_c
+
+
+def block_on_base(bodies, K_x, K_z, K_phi, C_x, C_z, C_phi, g, K_xphi=0.0, C_xphi=0.0) -> BlockModel:
     """The block model of ``bodies`` (masses, centres of mass from O, central moments) on the
-    base's springs and dashpots (:func:`support`). The size is that of a rotation of 1 m
-    (the model is solved in the plane, not by the block's scaled eigen-solve)."""
+    base's springs and dashpots (:func:`support`) and their sway-rocking coupling
+    (:func:`sway_rocking`). The size is that of a rotation of 1 m (the model is solved in the
+    plane, not by the block's scaled eigen-solve)."""
     springs, dashpots = support(K_x, K_z, K_phi, C_x, C_z, C_phi)
-    return block_model(*bodies, springs, g, 1.0, dashpots=dashpots)
+    return block_model(*bodies, springs, g, 1.0, dashpots=dashpots, coupling=sway_rocking(K_xphi, C_xphi))
 
 
 def rigid_block(M, I_c, h) -> tuple[list, list, list]:
@@ -122,7 +137,7 @@ def plane_foundation(design) -> PlaneFoundation:
     m, cog, J = mean_mass_properties([throw])
     masses, cogs, inertias = rigid_block(d.M, d.I_c, d.h)
     model = block_on_base((masses + [m], cogs + [cog], inertias + [J]),
-                          d.c1 * d.S, d.c * d.S, d.c_phi * d.I1, d.C_x, d.C_z, d.C_phi, d.g)
+                          d.c1 * d.S, d.c * d.S, d.c_phi * d.I1, d.C_x, d.C_z, d.C_phi, d.g, d.K_xphi, d.C_xphi)
     return PlaneFoundation(model, throw, float(d.h))
 
 
@@ -136,4 +151,4 @@ def plane_samples(throw: CrankThrow, h, omega, g, N: int) -> MechanismSamples:
 
 
 __all__ = ["PLANE", "PlaneFoundation", "block_on_base", "in_plane", "plane_foundation", "plane_map",
-           "plane_samples", "plane_throw", "rigid_block", "support"]
+           "plane_samples", "plane_throw", "rigid_block", "support", "sway_rocking"]

@@ -120,26 +120,52 @@ def build(scene, L, B, masses):
     return plane_footing(scene.soil, L, B, S, I1, masses, f.embedment or 0.0)
 
 
-def plane(at, name: str) -> tuple:
-    """((K_x, K_z, K_φ), (C_x, C_z, C_φ)) at O of a support's springs and dashpots ``at``
-    (:class:`~.base.AtO`), the plane's motions u_x, u_z, θ_y [N/m, N m/rad; N s/m, N m s/rad].
+#: An off-diagonal term at most this times √(|K_ii K_jj|) (of C: √(|C_ii C_jj|)) is round-off of the
+#: support's assembly (a pile group's symmetric heads), not a coupling [-].
+NEGLIGIBLE = 1e-9
 
-    The paper's closed forms take the plane's three springs and dashpots uncoupled: a support that
-    couples a motion of the plane to any other (an off-diagonal term in the rows of u_x, u_z, θ_y,
-    a pile group's sway-rocking) raises :class:`~foundation_calc.errors.PhysicsError` naming the
-    support ``name``, never drops the coupling. Couplings among the motions out of the plane alone
-    (u_y, θ_x, θ_z) are not read: the crank's body and forcing leave those motions at rest."""
-    if at.coupling is not None:
-        off = np.stack([np.asarray(at.coupling[i])[..., PLANE, :] for i in (0, 1)])
-        if np.any(off != 0.0):
-            from foundation_calc.errors import PhysicsError
-
-            raise PhysicsError(
-                f"the support {name} couples the motions of the plane at O (its K or C has off-diagonal terms in the"
-                " rows of u_x, u_z, θ_y); the crank foundation's closed forms take three uncoupled springs and dashpots",
-                field="soil", hint="describe the foundation as a block_foundation scene, whose 6-DOF model takes a"
-                                   " coupled support")
-    return (tuple(at.springs[..., i] for i in PLANE), tuple(at.dashpots[..., i] for i in PLANE))
+#: The one coupling of the plane's motions a crank scene takes: u_x with θ_y (a pile group's sway-rocking).
+SWAY_ROCKING = (0, 4)
 
 
-__all__ = ["PLANE", "PLANE_MODELS", "PlaneFooting", "build", "plane", "plane_dashpots", "plane_footing", "plane_masses"]
+def plane(at, name: str, coupled: bool = False) -> tuple:
+    """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ)) at O of a support's springs and dashpots
+    ``at`` (:class:`~.base.AtO`), the plane's motions u_x, u_z, θ_y [N/m, N m/rad; N s/m, N m s/rad]
+    and the sway-rocking coupling of u_x with θ_y [N/rad; N s/rad] (0 for an uncoupled support).
+
+    The paper's closed forms take the plane's three springs and dashpots uncoupled: unless
+    ``coupled`` (the one model's eigen-solve in the plane, which takes K_xφ, C_xφ), a support that
+    couples a motion of the plane to any other (an off-diagonal term in the rows of u_x, u_z, θ_y)
+    raises :class:`~foundation_calc.errors.PhysicsError` naming the support ``name``, never drops the
+    coupling; with ``coupled``, any coupling but u_x with θ_y does. Couplings among the motions out
+    of the plane alone (u_y, θ_x, θ_z) are not read: the crank's body and forcing leave those
+    motions at rest."""
+    zero = 0.0 * at.springs[..., 0]
+    if at.coupling is None:
+        return (tuple(at.springs[..., i] for i in PLANE), tuple(at.dashpots[..., i] for i in PLANE), (zero, zero))
+    K_c, C_c = (np.asarray(at.coupling[i]) for i in (0, 1))
+    i, j = SWAY_ROCKING
+    scale = [np.sqrt(np.abs(d[..., PLANE, None] * d[..., None, :])) for d in (at.springs, at.dashpots)]
+    off = np.stack([np.where(np.abs(A[..., PLANE, :]) > NEGLIGIBLE * s, A[..., PLANE, :], 0.0)
+                    for A, s in zip((K_c, C_c), scale)])
+    if coupled:  # the rows of u_x and θ_y are 0 and 2 of PLANE: their terms in the columns of θ_y and u_x
+        off[..., PLANE.index(i), j] = off[..., PLANE.index(j), i] = 0.0
+    if np.any(off != 0.0):
+        from foundation_calc.errors import PhysicsError
+
+        what = ("couples the motions of the plane at O (its K or C has off-diagonal terms in the rows of u_x, u_z,"
+                " θ_y); the crank foundation's closed forms take three uncoupled springs and dashpots") if not coupled else (
+                "couples the motions of the plane at O other than u_x with θ_y (the sway-rocking a symmetric pile"
+                " group gives); the crank foundation's plane model takes that one coupling")
+        raise PhysicsError(
+            f"the support {name} {what}", field="soil",
+            hint=("fcalc resonance, amplitudes and check (without a vibration code) solve a crank scene on a pile group by"
+                  " the plane's one model;"
+                  " for the other commands describe the foundation as a block_foundation scene, whose 6-DOF model"
+                  " takes a coupled support") if not coupled else
+                 "describe the foundation as a block_foundation scene, whose 6-DOF model takes a coupled support")
+    return (tuple(at.springs[..., k] for k in PLANE), tuple(at.dashpots[..., k] for k in PLANE),
+            (K_c[..., i, j], C_c[..., i, j]))
+
+
+__all__ = ["PLANE", "PLANE_MODELS", "SWAY_ROCKING", "PlaneFooting", "build", "plane", "plane_dashpots", "plane_footing", "plane_masses"]
