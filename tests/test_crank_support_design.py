@@ -35,10 +35,10 @@ SIZED, COUPLED, UNSCALED = "toy crank sized", "coupled toy crank design", "unsca
 
 class Toy(SizedToy):
     """The plane toy's springs at O times ``scale`` (a float, or (N,) over a batch of candidates),
-    its dashpots as they are (coupled x with ry when ``coupled``); the sizing hooks of the block's
+    its dashpots as they are (coupled at ``coupled``, a pair of motions, as the plane toy); the sizing hooks of the block's
     sized toy (its scale is soil.c_z / C_REF, its concrete CONCRETE per unit of scale)."""
 
-    def __init__(self, scale, coupled=False):
+    def __init__(self, scale, coupled=None):
         super().__init__(scale)
         self.coupled = coupled
 
@@ -54,7 +54,7 @@ class Toy(SizedToy):
 def build(scene, L, B, masses):
     if scene.name not in (SIZED, COUPLED, UNSCALED):
         return None
-    toy = Toy(np.asarray(scene.soil.c_z, dtype=float) / C_REF, coupled=scene.name == COUPLED)
+    toy = Toy(np.asarray(scene.soil.c_z, dtype=float) / C_REF, coupled=(0, 4) if scene.name == COUPLED else None)
     if scene.name == UNSCALED:
         toy.unscaled = "[toy]: its springs do not scale with the soil's modulus"
     return toy

@@ -69,7 +69,8 @@ class CandidateDesigns:
         [rad/s] (class docstring), (N,) each."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
-        return plane(self.support.impedance(soil_frequency), self.support.label)
+        springs, dashpots, _ = plane(self.support.impedance(soil_frequency), self.support.label)  # uncoupled: 0
+        return springs, dashpots
 
     def at(self, soil_frequency=0.0):
         """The candidates' designs on the support at ``soil_frequency`` [rad/s], its springs as
