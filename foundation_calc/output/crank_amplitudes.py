@@ -312,9 +312,9 @@ def print_amplitudes_report(
         note = f" (resonant: {a.nearest}, margin {a.margin:.2g})" if a.resonant else ""
         out.print(f"  {a.key.replace('_', ' ')}: {a.title}{note}")
     for key, why in report.not_applicable.items():
-        out.print(f"  {key.replace('_', ' ')}: {escape(why)}", soft_wrap=True)
+        out.print(f"  {key.replace('_', ' ')}: {escape(why)}")
     if report.resonance is not None:
-        out.print(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}", soft_wrap=True)
+        out.print(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}")
     if report.damping is not None:
         damping = report.damping
         modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
