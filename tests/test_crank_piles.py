@@ -36,8 +36,13 @@ def document():
 
 
 @pytest.fixture(scope="module")
-def frequencies(document):
-    return fc.resonance(document).to_dict()["natural_frequencies"]
+def resonance(document):
+    return fc.resonance(document).to_dict()
+
+
+@pytest.fixture(scope="module")
+def frequencies(resonance):
+    return resonance["natural_frequencies"]
 
 
 #: Samples of one revolution: the means and Fourier coefficients of smooth periodic functions are exact to
@@ -118,6 +123,52 @@ def test_the_piled_crank_frequencies_are_a_brute_force_eigen_solve(document, fre
         roots = np.sqrt(np.sort(eigvals(_plane(scene, p, z_G)[0], M).real))
         assert np.min(np.abs(roots - p)) / p < 1e-6, (mode, p, roots)
     assert frequencies["k0"] != pytest.approx(frequencies["p1"], rel=1e-3)
+
+
+def _static_sway_rocking(scene, K_phi=None) -> np.ndarray:
+    """The group's static stiffness at O in (u_x, θ_y), read from its 6 × 6 at rest (u_x the 1st
+    motion, θ_y the 5th), with the weight's tilt −P h on θ_y; ``K_phi`` [N m/rad] replaces the group's own."""
+    at = scene.support().impedance(0.0)
+    K = np.diag(at.springs) + at.coupling[0]
+    K = K[np.ix_((0, 4), (0, 4))]
+    K[1, 1] = K[1, 1] if K_phi is None else K_phi
+    return K - np.diag([0.0, scene.total_mass * GRAVITY * scene.foundation.cog_height])
+
+
+def test_the_rocking_stability_margin_takes_the_coupling(resonance, document):
+    """The margin is the weight's factor s* − 1 at which the static (u_x, θ_y) stiffness at O, the weight's
+    tilt −s P h on θ_y, first has a zero eigenvalue, found by bisection of numpy's eigenvalues
+    (tolerance 1e-9: the bisection's 1e-13 and round-off of the eigen-solve of a matrix with entries
+    of 1e9 to 1e12 are far below it). Without the coupling (K_φ/(P h) − 1) it would be 3 % larger."""
+    from scipy.optimize import brentq
+
+    scene = parse_scene(document)
+    K, Ph = _static_sway_rocking(scene), scene.total_mass * GRAVITY * scene.foundation.cog_height
+    assert K[0, 1] != 0.0
+    softest = lambda s: np.linalg.eigvalsh(K - np.diag([0.0, (s - 1.0) * Ph]))[0]  # noqa: E731
+    critical = brentq(softest, 1.0, (K[1, 1] + Ph) / Ph, xtol=1e-13, rtol=1e-15)
+    margin = resonance["derived"]["rocking_stability_margin"]
+    assert margin == pytest.approx(critical - 1.0, rel=1e-9)
+    assert (K[1, 1] + Ph) / Ph - 1.0 > margin * 1.01
+
+
+def test_a_crank_tipping_over_on_its_coupled_support_is_refused(document):
+    """A rocking spring above P h but below P h + K_xφ²/K_x leaves the static (u_x, θ_y) stiffness at O
+    indefinite (its eigenvalues, checked here): the scene refuses it, naming the coupled margin; twice
+    the coupling's share is positive definite and passes, as the same spring without the coupling does."""
+    scene = parse_scene(document)
+    K = _static_sway_rocking(scene)
+    K_x, K_xphi, Ph = K[0, 0], K[0, 1], scene.total_mass * GRAVITY * scene.foundation.cog_height
+    for share, stable in ((0.5, False), (2.0, True)):
+        K_phi = Ph + share * K_xphi**2 / K_x
+        assert (np.linalg.eigvalsh(_static_sway_rocking(scene, K_phi))[0] > 0.0) == stable
+        if stable:
+            scene.require_stable_rocking(K_phi, K_x, K_xphi)
+            continue
+        with pytest.raises(fc.PhysicsError, match=r"\(K_φ - K_xφ²/K_x\)/\(P·h\) - 1 = -\d") as error:
+            scene.require_stable_rocking(K_phi, K_x, K_xphi)
+        assert "sway-rocking coupling" in str(error.value)
+        scene.require_stable_rocking(K_phi, K_x, 0.0)
 
 
 def _as_block(document) -> dict:

@@ -22,6 +22,7 @@ from foundation_calc.solvers.crank.frequencies import (
     NaturalFrequencies,
     averaged_inertia_frequencies,
     rocking_stability_margin,
+    stability_arguments,
     zero_order_frequencies,
 )
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -178,7 +179,7 @@ def check_resonances(design: CrankDesign, detuning, loads=None, frequencies=None
     static = None
     if frequencies is not None:
         zero, averaged, static = frequencies
-    stability = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h)
+    stability = rocking_stability_margin(*stability_arguments(d))
     conditions, share = machine_conditions(design, loads)
     return replace(_report(design, zero, averaged, stability, d.omega, conditions, share, detuning), static=static)
 

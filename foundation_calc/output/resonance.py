@@ -20,6 +20,7 @@ from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, ba
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, titled_table, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import print_soil_validity, soil_validity_document
+from foundation_calc.solvers.crank.frequencies import stability_margin_formula
 from foundation_calc.solvers.crank.resonance import MODE_NAMES
 from foundation_calc.units import hz_from_omega, rpm_from_omega, speed_triplet
 
@@ -71,8 +72,9 @@ def _derived(report: ResonanceReport, scene) -> dict:
         block = scene.block()
         return {"total_mass": block.M_tot, "rho1": (block.I_c / block.M_tot) ** 0.5,
                 "rocking_stability_margin": report.stability_margin}
+    coupling = {"K_xphi": d.K_xphi} if d.K_xphi != 0.0 else {}  # the margin's reduction, a coupled support only
     return {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m, "rho1": d.rho1_sq**0.5,
-            "kappa": d.rod.kappa, "rocking_stability_margin": report.stability_margin}
+            "kappa": d.rod.kappa, **coupling, "rocking_stability_margin": report.stability_margin}
 
 
 def _row_document(row, per_machine: bool) -> dict:
@@ -179,7 +181,10 @@ def _print_plane(report: ResonanceReport, scene, source: str, units: DisplayUnit
         design.add_row("λ = r/l, crank-to-rod ratio", fmt(d.lam, 4), "-")
         design.add_row("M_tot, total mass", fmt(d.M_tot), "kg")
         design.add_row("ρ1 = sqrt(I_c/M_tot)", fmt(d.rho1_sq**0.5, 4), "m")
-    design.add_row("rocking stability margin c_φ·I1/(P·h) - 1", fmt(report.stability_margin, 4), "-")
+    coupled = d is not None and d.K_xphi != 0.0
+    if coupled:
+        design.add_row("K_xφ, the support's sway-rocking coupling", fmt(d.K_xphi, 4), "N/rad")
+    design.add_row(f"rocking stability margin {stability_margin_formula(coupled)}", fmt(report.stability_margin, 4), "-")
     out.print(design)
 
     dependent = report.static is not None

@@ -430,7 +430,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         support = self.support()
         springs, dashpots, coupling = plane(support.impedance(soil_frequency), support.label, coupled)
         springs, dashpots, coupling = (tuple(map(_number, v)) for v in (springs, dashpots, coupling))
-        self.require_stable_rocking(springs[2])
+        self.require_stable_rocking(springs[2], springs[0], coupling[0])
         return springs, dashpots, coupling, support.method
 
     def soil_springs(self, method: str | None = None, omega: float = 0.0):
@@ -464,25 +464,32 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         f = self.foundation
         return plane_dashpots(springs, M_tot, f.moment_of_inertia + M_tot * f.cog_height**2)
 
-    def require_stable_rocking(self, K_phi) -> None:
+    def require_stable_rocking(self, K_phi, K_x=1.0, K_xphi=0.0) -> None:
         """Raise :class:`PhysicsError` when the soil's rocking spring K_φ = c_φ I1 [N m/rad] (the
         softest of an array) does not exceed
-        the weight's overturning moment P h (paper (3.4); docs/crank-foundation.md, "The model").
+        the weight's overturning moment P h (paper (3.4); docs/crank-foundation.md, "The model");
+        on a support coupling sway with rocking (K_xφ [N/rad], K_x [N/m]), when K_φ - K_xφ²/K_x
+        does not (:func:`~foundation_calc.solvers.crank.frequencies.rocking_stability_margin`).
 
         The message names the likely culprit, an implausible soil or foundation value
         (:meth:`plausibility_findings`: a modulus in MPa for Pa, a block height in mm), or else
         the keys of the scene file that set K_φ, I1 and h.
         """
-        f = self.foundation
-        K_phi, overturning = -_largest(-K_phi), self.total_mass * GRAVITY * f.cog_height
+        from foundation_calc.solvers.crank.frequencies import coupled_rocking_stiffness, stability_margin_formula
+
+        f, coupled = self.foundation, bool(_largest(abs(K_xphi)) != 0.0)
+        K_phi = -_largest(-coupled_rocking_stiffness(K_phi, K_x, K_xphi))
+        overturning = self.total_mass * GRAVITY * f.cog_height
         if K_phi > overturning:
             return
         culprits = [x for x in self.plausibility_findings()
                     if any(part in x.key for part in ("soil.", "foundation.")) and x.key not in self.soil.not_rocking]
+        stiffness = "net of the support's sway-rocking coupling, K_φ - K_xφ²/K_x," if coupled else "K_φ = c_φ·I1"
         text = (
-            f"the foundation is unstable in rocking: the soil's rocking stiffness K_φ = c_φ·I1 = {K_phi:.4g} N m"
+            f"the foundation is unstable in rocking: the soil's rocking stiffness {stiffness}"
+            f" = {K_phi:.4g} N m"
             f" does not exceed the overturning moment of the weight P·h = {overturning:.4g} N m"
-            f" (c_φ·I1/(P·h) - 1 = {K_phi / overturning - 1.0:.4g})"
+            f" ({stability_margin_formula(coupled)} = {K_phi / overturning - 1.0:.4g})"
         )
         spring = self.soil.rocking_key
         base = "foundation.base_second_moment" if f.given("base_second_moment") else (

@@ -16,6 +16,7 @@ from foundation_calc.output.report.model import Figure, Paragraph, Section, tabl
 from foundation_calc.output.report.numbers import column, echoed, figure, percent, share
 from foundation_calc.output.report.resonance_text import crank_rule_paragraph, margin_definition
 from foundation_calc.output.report.verdict import resonance_verdict, sensitivity_label
+from foundation_calc.solvers.crank.frequencies import stability_margin_formula
 
 DIGITS = 4
 #: A harmonic smaller than this fraction of its coordinate's largest one is left out of the table.
@@ -102,7 +103,8 @@ def _crank_derived(res: dict, units: DisplayUnits) -> Section:
         ("moving_mass", "m, moving mass", "kg"),
         ("rho1", "ρ1 = sqrt(I_c/M_tot)", "m"),
         ("kappa", "κ = l'l'' − ρ²", "m²"),
-        ("rocking_stability_margin", "rocking stability margin c_φ·I1/(P·h) − 1", "-"),
+        ("K_xphi", "K_xφ, the support's sway-rocking coupling", "N/rad"),
+        ("rocking_stability_margin", f"rocking stability margin {stability_margin_formula('K_xphi' in d, '−')}", "-"),
     )
     rows = (
         ("ω, speed", _speed(units, s["omega"]), units.label("speed")),

@@ -48,10 +48,15 @@ def _any(mask) -> bool:
     return bool(mask.any()) if hasattr(mask, "any") else bool(mask)
 
 
-def rocking_stability_margin(c_phi, I1, P, h):
+def rocking_stability_margin(c_phi, I1, P, h, K_x=1.0, K_xphi=0.0):
     """Relative reserve of the soil's rocking stiffness over the overturning moment, c_φ I1/(P h) - 1.
 
     Positive: stable. Zero or negative: the foundation tips over (p1² <= 0).
+
+    A support coupling sway with rocking at O (a pile group's K_xφ) gives the static stiffness in
+    (u_x, θ_y) [[K_x, K_xφ], [K_xφ, c_φ I1 - P h]] ((3.4) with the weight's tilt -P h), positive
+    definite iff K_x > 0 and its Schur complement c_φ I1 - P h - K_xφ²/K_x > 0: the margin is then
+    (c_φ I1 - K_xφ²/K_x)/(P h) - 1, the uncoupled one for K_xφ = 0.
 
     Parameters
     ----------
@@ -59,20 +64,45 @@ def rocking_stability_margin(c_phi, I1, P, h):
     I1 : second moment of the base area [m⁴]
     P : total weight M_tot g [N]
     h : height of the centre of mass above the base [m]
+    K_x : the support's sway spring at O [N/m] (> 0; read only with K_xphi)
+    K_xphi : the support's sway-rocking coupling at O [N/rad] (0 uncoupled)
 
     >>> rocking_stability_margin(c_phi=4.0e7, I1=90.0, P=1.0e6, h=1.5)
     2399.0
     """
-    return c_phi * I1 / (P * h) - 1.0
+    return coupled_rocking_stiffness(c_phi * I1, K_x, K_xphi) / (P * h) - 1.0
 
 
-def require_stable_rocking(c_phi, I1, P, h):
+def coupled_rocking_stiffness(K_phi, K_x, K_xphi):
+    """K_φ - K_xφ²/K_x [N m/rad]: the rocking stiffness at O left when u_x, coupled to θ_y by
+    K_xφ [N/rad], settles statically on its spring K_x [N/m] (the Schur complement of the
+    support's static sway-rocking stiffness); K_φ itself for K_xφ = 0."""
+    return K_phi - K_xphi * K_xphi / K_x
+
+
+def stability_margin_formula(coupled: bool, minus: str = "-") -> str:
+    """The formula of :func:`rocking_stability_margin` as a calc sheet names it: with the
+    sway-rocking coupling's reduction when ``coupled``, ``minus`` the sign printed."""
+    rocking = f"(K_φ {minus} K_xφ²/K_x)" if coupled else "c_φ·I1"
+    return f"{rocking}/(P·h) {minus} 1"
+
+
+def stability_arguments(design) -> tuple:
+    """The arguments of :func:`rocking_stability_margin` of a design
+    (:class:`~foundation_calc.solvers.crank.mechanism.CrankDesign`): c_φ, I1, P = M_tot g, h,
+    K_x = c1 S and its support's K_xφ."""
+    d = design
+    return d.c_phi, d.I1, d.M_tot * d.g, d.h, d.c1 * d.S, d.K_xphi
+
+
+def require_stable_rocking(c_phi, I1, P, h, K_x=1.0, K_xphi=0.0):
     """Raise :class:`PhysicsError` when ``rocking_stability_margin`` is not positive."""
-    margin = rocking_stability_margin(c_phi, I1, P, h)
+    margin, coupled = rocking_stability_margin(c_phi, I1, P, h, K_x, K_xphi), _any(K_xphi != 0.0)
     if _any(margin <= 0.0):
         raise PhysicsError(
-            "the foundation is unstable in rocking: the soil's rocking stiffness c_φ·I1 does not"
-            " exceed the overturning moment of the weight P·h (c_φ·I1/(P·h) - 1 ="
+            "the foundation is unstable in rocking: the soil's rocking stiffness"
+            f" {'reduced by the sway coupling, c_φ·I1 - K_xφ²/K_x,' if coupled else 'c_φ·I1'} does not"
+            f" exceed the overturning moment of the weight P·h ({stability_margin_formula(coupled)} ="
             f" {_first(margin):.4g})",
             field="foundation.base_second_moment",
             hint="increase soil.c_phi (default soil.c_z) or the base's second moment I1, or lower the"
