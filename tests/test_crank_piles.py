@@ -227,6 +227,20 @@ def test_the_piled_crank_amplitudes_are_a_direct_complex_solve(document, amplitu
     assert "not applicable" in amplitudes["not_applicable"]["first_approximation"]
 
 
+def test_the_damped_line_names_the_coupling_dashpot(document, amplitudes, runner):
+    """The damped response's dashpots carry the group's C_xφ at ω, read here from its 6 × 6 at O (u_x the
+    1st motion, θ_y the 5th; the same numbers, 1e-12), and the text names it with its unit."""
+    scene = parse_scene(document)
+    at = scene.support().impedance(scene.speed.omega_rad_s)
+    dashpots = amplitudes["damping"]["dashpots"]
+    assert dashpots["C_xphi"] == pytest.approx(at.coupling[1][0, 4], rel=1e-12)
+    assert dashpots["C_phi"] == pytest.approx(at.dashpots[4], rel=1e-12)
+    run = runner.invoke(app, ["amplitudes", str(CONFIG)], env={"COLUMNS": "200"})
+    assert run.exit_code == 0, run.output
+    line = next(text for text in run.output.splitlines() if "damped (base dashpots" in text)
+    assert "C_xφ = " in line and "N s/rad)" in line
+
+
 def test_the_same_machine_on_a_block_has_the_same_amplitudes(document, amplitudes):
     """The one-model bar: the block_foundation's harmonics and peaks at C (a point there) are the
     crank's averaged operator's (1e-6 relative: the piles' material dashpots 2 ξ √(K m) take the block's

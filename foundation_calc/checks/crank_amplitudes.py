@@ -130,7 +130,8 @@ class VendorLoads:
 class Damping:
     """The base dashpots of a design and the modal damping ratios they give.
 
-    ``dashpots``: C_x [N s/m], C_z [N s/m], C_phi [N m s/rad]; ``natural``: natural frequencies of
+    ``dashpots``: C_x [N s/m], C_z [N s/m], C_phi [N m s/rad] and, on a support coupling sway with
+    rocking, C_xphi [N s/rad]; ``natural``: natural frequencies of
     the averaged operator [rad/s], ascending; ``modal_ratios``: each mode's damping ratio [-].
     """
 
@@ -274,6 +275,8 @@ def _averaged(design: CrankDesign, points, loads=None) -> tuple[Approximation, D
     label = f"{n if n > 1 else ''}ω = {name} ({w:.6g} rad/s with the averaged operator)"
     damping = None
     dashpots = {"C_x": float(design.C_x), "C_z": float(design.C_z), "C_phi": float(design.C_phi)}
+    if design.C_xphi != 0.0:  # a support coupling sway with rocking (a pile group) damps that pair too
+        dashpots["C_xphi"] = float(design.C_xphi)
     if any(value > 0.0 for value in dashpots.values()):
         damping = Damping(dashpots, tuple(map(float, res.natural)), tuple(map(float, res.damping_ratios)))
     return _approximation("averaged_operator", res.motion, res.resonant, res.margin, label, points, loads), damping

@@ -318,9 +318,10 @@ def print_amplitudes_report(
     if report.damping is not None:
         damping = report.damping
         modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
+        coupling = f", C_xφ = {fmt(damping.dashpots['C_xphi'])} N s/rad" if "C_xphi" in damping.dashpots else ""
         out.print(
             f"  damped (base dashpots C_x = {fmt(damping.dashpots['C_x'])} N s/m, C_z = {fmt(damping.dashpots['C_z'])} N s/m,"
-            f" C_φ = {fmt(damping.dashpots['C_phi'])} N m s/rad); modes of the averaged operator: {modes}"
+            f" C_φ = {fmt(damping.dashpots['C_phi'])} N m s/rad{coupling}); modes of the averaged operator: {modes}"
         )
     if report.exact_info is not None:
         info = report.exact_info
