@@ -12,7 +12,9 @@ Sources:
 - Bearing pressure: statics. The base pressure of the total weight W with eccentricities
   e_x, e_y (contact over the whole base, e within the kern) is at most
   q_max = W / (L B) (1 + 6 |e_x| / L + 6 |e_y| / B); above the allowable of the scene
-  (``[limits] bearing_pressure``, from the geotechnical report) the check **fails**.
+  (``[limits] bearing_pressure``, from the geotechnical report) the check **fails**. A base that
+  does not bear on the soil (a pile cap without ``piles.cap_contact``: the piles carry W) has no
+  such pressure: the row says so, with no number (:func:`~foundation_calc.solvers.supports.base.bears_on_soil`).
 - Static settlement: s = W / K_z, the total weight W on the static vertical spring K_z at O of the
   scene's support (a soil method's, a pile group's; its ω = 0 value for a frequency-dependent one):
   the elastic settlement of the model the dynamic checks use, not a consolidation settlement. Above
@@ -35,10 +37,11 @@ SOURCE_RULES = "ACI 351.3R-18, ch. 3 (rules of thumb)"
 
 @dataclass(frozen=True)
 class OfficeRow:
-    """One office check: the value, the limit, the verdict and where the rule comes from."""
+    """One office check: the value, the limit, the verdict and where the rule comes from; ``value``
+    None for a check that does not apply (its ``text`` says why)."""
 
     name: str
-    value: float
+    value: float | None
     limit: float
     unit: str
     outcome: Outcome
@@ -84,6 +87,22 @@ def crank_bearing_row(W: float, S: float, allowable: float) -> OfficeRow:
     return _bearing(W / S, allowable, W, f"q = W/S, S = {S:.4g} m²")
 
 
+def bearing_rows(support, allowable: float | None, computed) -> list[OfficeRow]:
+    """The bearing pressure's row where ``[limits]`` gives its ``allowable`` [Pa]: ``computed()`` (the
+    scene's q) under a base that bears on the soil, else a row saying that none applies."""
+    from foundation_calc.solvers.supports.base import bears_on_soil
+
+    if allowable is None:
+        return []
+    if bears_on_soil(support):
+        return [computed()]
+    return [OfficeRow(
+        "bearing pressure", None, allowable, "Pa", Outcome.PASS, "scene [limits] bearing_pressure",
+        f"not applicable: the base does not bear on the soil, its support ({support.label}) alone carries the"
+        " weight; no pressure under it to judge",
+    )]
+
+
 def _bearing(q: float, allowable: float, W: float, formula: str = "q_max = W/(L B) (1 + 6|e_x|/L + 6|e_y|/B)") -> OfficeRow:
     """The bearing pressure's row; its text names the weight W, so q follows from the sheet's numbers."""
     outcome = Outcome.FAIL if q > allowable else Outcome.PASS
@@ -104,11 +123,11 @@ def settlement(W, K_z):
     return W / K_z
 
 
-def static_rows(W: float, K_z: float, limits, bearing: OfficeRow | None = None) -> list[OfficeRow]:
-    """The static checks of every kind on the soil: the bearing pressure row (given, as each kind
-    computes its pressure) and the settlement s = W / K_z [m] against ``[limits] settlement``,
-    each where the scene gives its limit."""
-    rows = [] if bearing is None else [bearing]
+def static_rows(W: float, K_z: float, limits, bearing: list[OfficeRow]) -> list[OfficeRow]:
+    """The static checks of every kind on the soil: the bearing pressure rows (given, as each kind
+    computes its pressure: :func:`bearing_rows`) and the settlement s = W / K_z [m] against
+    ``[limits] settlement``, where the scene gives its limit."""
+    rows = list(bearing)
     if limits.settlement is not None:
         s, allowable = float(settlement(W, K_z)), limits.settlement
         over = s > allowable
@@ -128,8 +147,8 @@ def crank_office_rows(scene) -> tuple[OfficeRow, ...]:
 
     limits = scene.limits
     W = scene.total_mass * GRAVITY
-    bearing = None if limits.bearing_pressure is None else crank_bearing_row(W, scene.foundation.base_area,
-                                                                             limits.bearing_pressure)
+    bearing = bearing_rows(scene.support(), limits.bearing_pressure,
+                           lambda: crank_bearing_row(W, scene.foundation.base_area, limits.bearing_pressure))
     K_z = None if limits.settlement is None else float(scene.support().impedance(0.0).springs[2])
     return tuple(static_rows(W, K_z, limits, bearing))
 
@@ -167,12 +186,12 @@ def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     limits = scene.limits
     W = model.mass * GRAVITY
     rows = eccentricity_rows(model.cog[:2], L, B, limits.eccentricity)
-    bearing = None if limits.bearing_pressure is None else bearing_row(W, model.cog[0], model.cog[1], L, B,
-                                                                       limits.bearing_pressure)
+    bearing = bearing_rows(scene.support(), limits.bearing_pressure,
+                           lambda: bearing_row(W, model.cog[0], model.cog[1], L, B, limits.bearing_pressure))
     rows += static_rows(W, float(model.springs[2]), limits, bearing)
     rows.append(mass_ratio_row(scene.block.mass_properties[0], sum(m.total_mass for m in scene.machines), limits.mass_ratio))
     return tuple(rows)
 
 
-__all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "crank_bearing_row", "crank_office_rows",
+__all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "bearing_rows", "crank_bearing_row", "crank_office_rows",
            "eccentricity_rows", "mass_ratio_row", "office_rows", "settlement", "static_rows"]

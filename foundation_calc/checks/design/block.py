@@ -200,13 +200,14 @@ def _office(scene, model, L, B, m_b):
     (:func:`~foundation_calc.checks.office.office_rows`)."""
     from foundation_calc.checks.office import bearing_pressure, settlement
     from foundation_calc.solvers.constants import GRAVITY
+    from foundation_calc.solvers.supports.base import bears_on_soil
 
     limits = scene.limits
     e_x, e_y = model.cog[:, 0], model.cog[:, 1]
     ratios = [np.abs(e_x) / L / limits.eccentricity, np.abs(e_y) / B / limits.eccentricity]
     outcomes = [np.where(r > 1.0, WARN, PASS) for r in ratios]  # abs(e)/L > e_max warns
     reasons = ["eccentricity x", "eccentricity y"]
-    if limits.bearing_pressure is not None:
+    if limits.bearing_pressure is not None and bears_on_soil(scene.support()):  # as office_rows judges it
         q = bearing_pressure(model.mass * GRAVITY, e_x, e_y, L, B)
         ratios.append(q / limits.bearing_pressure)
         outcomes.append(np.where(q > limits.bearing_pressure, FAIL, PASS))

@@ -66,7 +66,7 @@ def _amplitudes(report) -> tuple[float, str]:
 
 def _office(report) -> tuple[float, str]:
     rows = [(_ratio(row.limit, row.value) if row.name == "mass ratio" else _ratio(row.value, row.limit), row.name)
-            for row in report.office]
+            for row in report.office if row.value is not None]  # a check that does not apply
     return max(rows, default=(math.nan, "no office rule"))
 
 

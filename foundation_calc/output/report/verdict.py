@@ -262,6 +262,10 @@ def _office_rows(doc: dict, scene, units: DisplayUnits):
     eccentricities = {r["check"][-1]: r["text"] for r in doc["office"] if r["check"].startswith("eccentricity")}
     for row in doc["office"]:
         above = row["check"] == "mass ratio"  # a ratio that must stay at or above its limit
+        if row["value"] is None:  # a check that does not apply: its text says why
+            yield (row["text"], "-", shown(row, row["limit"], "≤ "), ratio(None), row["verdict"],
+                   limit_source(scene, row["source"].removeprefix(SCENE_LIMIT)), None)
+            continue
         yield (
             row["text"],
             shown(row, row["value"], ""),

@@ -165,6 +165,7 @@ class Support(Protocol):
 
     # Optional: def not_checked(self, limits) -> tuple[str, ...], what the sheet's "not checked"
     # row says of the support (:func:`not_checked`; without it, :data:`NOT_CHECKED`).
+    # Optional: base_bears: bool, whether the base bears on the soil (:func:`bears_on_soil`; without it, True).
 
 
 @dataclass(frozen=True)
@@ -269,5 +270,12 @@ def not_checked(support, limits) -> tuple[str, ...]:
     return NOT_CHECKED if own is None else tuple(own(limits))
 
 
+def bears_on_soil(support) -> bool:
+    """Whether the base of ``support`` bears on the soil, so that a static pressure under it means
+    something (the office check's bearing pressure): its own ``base_bears`` (a footing: True; a pile
+    group: its ``piles.cap_contact``), or True for a support without one."""
+    return bool(getattr(support, "base_bears", True))
+
+
 __all__ = ["MOTIONS", "NOT_CHECKED", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing",
-           "SoilSection", "Support", "Validity", "Variable", "not_checked", "sizing"]
+           "SoilSection", "Support", "Validity", "Variable", "bears_on_soil", "not_checked", "sizing"]

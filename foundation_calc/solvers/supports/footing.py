@@ -115,6 +115,9 @@ class Footing(Sizing):
         self.label = repr(self.method)
         self.unscaled = None  # every method's springs scale with one factor on the soil's stiffness data
 
+    #: the base bears on the soil (:func:`~.base.bears_on_soil`)
+    base_bears = True
+
     @property
     def frequency_dependent(self) -> bool:
         """The soil method's (:attr:`~foundation_calc.scenes.soil.Soil.frequency_dependent`)."""

@@ -89,6 +89,12 @@ class Piles(Footing):
         self.piles = soil.piles
         self.label, self.unscaled = Piles.label, Piles.unscaled
 
+    @property
+    def base_bears(self) -> bool:
+        """Whether the cap bears on the soil (``piles.cap_contact``); else the piles alone carry the
+        block (:func:`~.base.bears_on_soil`)."""
+        return self.piles.cap_contact
+
     def springs(self, L, B, m, omega) -> tuple:
         """The diagonal of :meth:`matrices` as springs and damping ratios ξ_i = C_ii/(2 √(|K_ii| m_i))
         plus the soil's material damping (module docstring; a group's dynamic spring can be negative
