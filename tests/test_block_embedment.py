@@ -18,6 +18,7 @@ import pytest
 
 from foundation_calc.errors import SceneError
 from foundation_calc.scenes import parse_scene
+from foundation_calc.solvers.supports.plane_footing import plane_masses
 
 SOIL = {"shear_wave_velocity": 450.0, "density": 1950.0, "poisson": 0.3, "material_damping": 0.04}
 Lh, Bh, D = 3.5, 2.0, 1.0
@@ -95,7 +96,7 @@ def test_the_crank_foundations_plane_is_the_blocks_plane_of_x_embedded(method):
     M = block.model().M
     omega = 90.0
     springs, dashpots = block.soil_impedance(np.array(omega))
-    plane = crank.base_springs(7.0, 4.0, 28.0, 4.0 * 7.0**3 / 12.0, M[0, 0], M[4, 4], 0.0, omega=omega)
+    plane = crank.support((7.0, 4.0), plane_masses(M[0, 0], M[4, 4])).plane_springs(omega)  # S = L B, I1 = B L³/12
     np.testing.assert_allclose([springs[0], springs[2], springs[4]], [plane.K_x, plane.K_z, plane.K_phi], rtol=1e-13)
     for k, (K, xi, m) in enumerate(((plane.K_x, plane.xi_x, M[0, 0]), (plane.K_z, plane.xi_z, M[0, 0]),
                                     (plane.K_phi, plane.xi_phi, M[4, 4]))):

@@ -66,3 +66,25 @@ def test_check_on_a_narrow_terminal_puts_each_scene_over_its_table(terminal, run
     header = next(line for line in lines if "┃ check" in line)
     assert "scene" not in header and header.split("┃")[3].strip() == "reason"
     assert len(header.split("┃")[3]) >= 30
+
+
+#: The crank scenes whose block a design may vary (a [foundation.block]; on piles a design is refused by name).
+SIZED_CRANKS = [p for p in configs_of_kind("crank_foundation")
+                if "block" in read_toml(p)["foundation"] and "piles" not in read_toml(p)]
+
+
+def test_a_crank_scene_to_size_is_shipped():
+    assert SIZED_CRANKS
+
+
+@pytest.mark.parametrize("config", SIZED_CRANKS, ids=lambda p: p.stem)
+def test_a_crank_design_fits_80_columns(terminal, runner, config):
+    """The design of a crank scene over two sizes: its verdict table, its Pareto set (the sizes'
+    long keys foundation.block.length, ...) and why cheaper candidates fail, within 80 columns."""
+    result = runner.invoke(app, ["design", str(config), "--vary", "block.length=1:8", "--vary", "block.width=1:6",
+                                 "--points", "3"])
+    assert result.exit_code in (0, 1), result.output
+    assert "Pareto set" in result.stdout
+    wide = [line for line in result.stdout.splitlines() if cell_len(line) > WIDTH]
+    assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
+    assert "…" not in result.stdout

@@ -184,3 +184,33 @@ def test_a_support_coupling_the_plane_is_refused_by_name(toys, runner, tmp_path)
     path.write_text(tomli_w.dumps(toys["coupled toy crank"]), encoding="utf-8")
     run = runner.invoke(app, ["sweep", str(path), "--speed", "100:200:3"])
     assert run.exit_code == 3 and "support toy couples" in run.output
+
+
+def _stiff_builder(scene, L, B, masses):
+    """The scene's own footing on its soil with G × 4 (V_s × 2), for the scene named "stiff crank"."""
+    from foundation_calc.solvers.supports.plane_footing import build
+
+    return build(scene.with_modulus_factor(4.0), L, B, masses) if scene.name == "stiff crank" else None
+
+
+def test_the_soil_sample_reads_the_scenes_support():
+    """fcalc soil --sample of a frequency-dependent crank scene takes each sample's springs from the
+    scene's support, as resonance does: on a registered footing whose soil has G × 4, the sample
+    without scatter gives fc.resonance's k0, p1, p2 (1e-9: the same fixed point ω = p(K(ω)) solved
+    by both), and a vertical k0 = √(K_z/M_tot) twice the plain scene's (Gazetas' K(a0) ∝ G at
+    a0 = ωB/V_s, so K_z × 4 at ω × 2 is again consistent; 1e-6, the fixed point's tolerance; p1, p2
+    hold the weight's P h, which G does not scale)."""
+    from foundation_calc.checks.soil_sample import sample_scene
+
+    document = _document(LYSMER, {"method": "gazetas"})
+    plain = sample_scene(parse_scene(document), 4, 0.0).percentiles
+    document["name"] = "stiff crank"
+    register(_stiff_builder)
+    try:
+        stiff = sample_scene(parse_scene(document), 4, 0.0).percentiles
+        found = fc.resonance(document).to_dict()["natural_frequencies"]
+    finally:
+        unregister(_stiff_builder)
+    for mode in ("k0", "p1", "p2"):
+        assert stiff[mode] == pytest.approx([found[mode]] * len(stiff[mode]), rel=1e-9)
+    assert stiff["k0"] == pytest.approx([2.0 * v for v in plain["k0"]], rel=1e-6)

@@ -110,13 +110,10 @@ def _designs_at(scene, speed: np.ndarray):
     from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
     f = scene.foundation
-    L, B = f.dimensions
-    h, I_c = f.cog_height, f.moment_of_inertia
-    M_scene, M_rod = scene.total_mass, base.M_tot  # as scene.soil_springs and scene.design take them
+    h, I_c, M_rod = f.cog_height, f.moment_of_inertia, base.M_tot  # the dashpots' body as scene.design takes it
 
-    def at(soil_frequency, factor):  # the scene's own method (and stratum), as scene.soil_springs
-        k = scene.base_springs(L, B, f.base_area, f.base_second_moment, M_scene, I_c, h,
-                               omega=soil_frequency, factor=factor)
+    def at(soil_frequency, factor):  # the scene's own method (and stratum) on the soil × factor
+        k = scene.with_modulus_factor(factor).soil_springs(omega=soil_frequency)
         c = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, M_rod, I_c + M_rod * h * h)
         return replace(base, omega=omega, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
                        c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi)

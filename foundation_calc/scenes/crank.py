@@ -433,28 +433,13 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         self.require_stable_rocking(springs[2], springs[0], coupling[0])
         return springs, dashpots, coupling, support.method
 
-    def soil_springs(self, method: str | None = None, omega: float = 0.0):
+    def soil_springs(self, method: str | None = None, omega=0.0):
         """K_z, K_x, K_φ and damping ratios (:class:`~foundation_calc.solvers.soil.springs.SoilSprings`) of
-        the footing on the soil by ``method`` (default: the scene's own) at ``omega`` [rad/s]
-        (:meth:`base_springs` under the scene's own block)."""
-        f = self.foundation
-        L, B = f.dimensions
-        return self.base_springs(L, B, f.base_area, f.base_second_moment, self.total_mass, f.moment_of_inertia,
-                                 f.cog_height, method, omega)
-
-    def base_springs(self, L, B, S, I1, M_tot, I_c, h, method: str | None = None, omega=0.0, factor=1.0):
-        """:meth:`soil_springs` of this soil under another block: base L × B [m] (area S [m²],
-        second moment I1 [m⁴]), total mass M_tot [kg], I_c [kg m²] about its centre of mass at
-        height h [m]; ``factor`` [-] multiplies the soil's stiffness data as :meth:`Soil.factored`
-        does. Arrays welcome (a batch of candidate blocks, a frequency or a factor per element).
-        The footing's own springs and damping ratios
-        (:meth:`~foundation_calc.solvers.supports.plane_footing.PlaneFooting.plane_springs`)."""
-        from foundation_calc.solvers.supports.plane_footing import plane_footing, plane_masses
-
-        soil = self.soil if method is None else self.soil.model_copy(update={"method": method})
-        soil = soil if isinstance(factor, float | int) and factor == 1.0 else soil.factored(factor)
-        masses = plane_masses(M_tot, I_c + M_tot * h**2)
-        return plane_footing(soil, L, B, S, I1, masses, self.foundation.embedment or 0.0).plane_springs(omega)
+        the footing on the soil by ``method`` (default: the scene's own) at ``omega`` [rad/s] (arrays
+        welcome): :meth:`support`'s
+        :meth:`~foundation_calc.solvers.supports.plane_footing.PlaneFooting.plane_springs`."""
+        scene = self if method is None else self.model_copy(update={"soil": self.soil.model_copy(update={"method": method})})
+        return scene.support().plane_springs(omega)
 
     def base_dashpots(self, springs, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios under the scene's block of total mass M_tot [kg]
