@@ -439,7 +439,16 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         welcome): :meth:`support`'s
         :meth:`~foundation_calc.solvers.supports.plane_footing.PlaneFooting.plane_springs`."""
         scene = self if method is None else self.model_copy(update={"soil": self.soil.model_copy(update={"method": method})})
-        return scene.support().plane_springs(omega)
+        support = scene.support()
+        if not hasattr(support, "plane_springs"):  # a pile group, a registered support: no soil method's chain
+            from foundation_calc.solvers.supports.plane_footing import plane
+
+            plane(support.impedance(omega), support.label)  # a support that couples the plane stops here, by name
+            raise PhysicsError(
+                f"the support {support.label} gives no soil method's springs and damping ratios in the plane, which the"
+                " crank's calculation sheet and soil comparison derive by hand", field="soil",
+                hint="describe the foundation as a block_foundation scene, whose sheet takes any support")
+        return support.plane_springs(omega)
 
     def base_dashpots(self, springs, M_tot: float) -> dict[str, float]:
         """C_x, C_z, C_phi of the springs' damping ratios under the scene's block of total mass M_tot [kg]
