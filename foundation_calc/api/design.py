@@ -6,7 +6,6 @@ from pathlib import Path
 
 from foundation_calc.api.result import Result, command_result
 from foundation_calc.api.scene import scene_of
-from foundation_calc.errors import PhysicsError
 
 
 def design(scene, *, vary=(), step: float | None = None, points: int | None = None, strict: bool = False,
@@ -61,11 +60,6 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
 
     _options(write, step, points, margin)
     loaded = scene_of(scene, ("block_foundation", "crank_foundation"))
-    if loaded.kind == "crank_foundation" and loaded.model.piles is not None:
-        raise PhysicsError("the support piles couples the motions of the plane at O, and fcalc design sizes a crank"
-                           " scene by the paper's closed forms, which take three uncoupled springs: not available for"
-                           " a crank scene on piles", field="piles",
-                           hint="describe the foundation as a block_foundation scene, whose design varies its piles")
     if write is not None and loaded.path is None:
         raise UsageError("writes the design into the scene's own file: give the scene as a file", "'--write'")
     document = with_unit_strings_converted(loaded.kind, loaded.document, loaded.source)[0]  # numbers to vary, not "6000 mm"
