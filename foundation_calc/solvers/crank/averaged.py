@@ -39,7 +39,7 @@ from foundation_calc.solvers.crank.dynamics import drive_reaction, mechanism_mot
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN, UNDAMPED_RATIO
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, require_stable_rocking, stability_arguments
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.crank.plane import in_plane, plane_foundation, plane_samples, plane_throw
+from foundation_calc.solvers.crank.plane import in_plane, plane_foundation, plane_samples, plane_throw, sway_rocking
 from foundation_calc.solvers.crank.response import PeriodicMotion
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
 
@@ -184,13 +184,16 @@ def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
 def block_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """M, C, K (..., 3, 3) of the block on its soil with the moving mass m lumped at C (the
     paper's zero-order operator): the block model of one body M_tot, I_c at C on the base's springs
-    and dashpots, in the crank's coordinates (:mod:`~foundation_calc.solvers.crank.plane`; fields
+    and dashpots (and a support's sway-rocking coupling K_xφ, C_xφ), in the crank's coordinates (:mod:`~foundation_calc.solvers.crank.plane`; fields
     may be arrays: a batch of blocks)."""
     from foundation_calc.solvers.crank.loads import RigidBlock, matrices
 
     d = design
     M, K, C = matrices(RigidBlock(M_tot=d.M_tot, I_c=d.I_c, h=d.h, K_x=d.c1 * d.S, K_z=d.c * d.S,
                                   K_phi=d.c_phi * d.I1, C_x=d.C_x, C_z=d.C_z, C_phi=d.C_phi, g=d.g))
+    coupling = sway_rocking(d.K_xphi, d.C_xphi)
+    if coupling is not None:  # a support's K_xφ, C_xφ of u_x with θ_y (a pile group)
+        K, C = K + in_plane(coupling[0], d.h), C + in_plane(coupling[1], d.h)
     return M, C, K
 
 

@@ -53,28 +53,36 @@ def forcing_harmonics(fc, fs) -> int:
 @dataclass(frozen=True)
 class MechanismOperator:
     """The mechanism's part of the averaged operator (:func:`~foundation_calc.solvers.crank.averaged.mechanism_operator`)
-    as a function of the distance ``a`` from the crank axis to C [m], for blocks whose C moves.
+    as a function of one of the design's fields, :attr:`field`: the distance ``a`` from the crank
+    axis to C [m], for blocks whose C moves, or the speed ``omega`` [rad/s], for a speed sweep.
 
     The exact equations hold the rod's position p = (p_u, p_v - a) in products of at most two
-    factors (m |p|² θ'', m p × (...)); the drive's torque takes the arm M' - C1, free of a. So
-    every averaged matrix and forcing coefficient is a polynomial of degree 2 in a, given
-    exactly by its values at a0 - 1, a0, a0 + 1 m (:attr:`samples`: (M, C, K, fc, fs) at each,
-    the forcing's harmonics 0 ... :attr:`harmonics`).
+    factors (m |p|² θ'', m p × (...)); the drive's torque takes the arm M' - C1, free of a. The
+    mechanism's velocities go as ω and its accelerations as ω² at every phase φ = ω t (the
+    Coriolis terms as ω, the inertia forcing and the centrifugal stiffness as ω², the weight's
+    terms free of it). So every averaged matrix and forcing coefficient is a polynomial of degree 2
+    in a and in ω, given exactly by its values at x0 - Δ, x0, x0 + Δ (:attr:`samples`: (M, C, K,
+    fc, fs) at each, the forcing's harmonics 0 ... :attr:`harmonics`; x0 = :attr:`centre`, Δ =
+    :attr:`step`: 1 m for a, ω0 for ω, so samples at 0, ω0, 2 ω0).
     """
 
-    a0: float
+    centre: float
     samples: tuple
 
     harmonics: int
+    field: str = "a"
+    step: float = 1.0
 
     @classmethod
-    def of(cls, design) -> "MechanismOperator":
-        """The samples of ``design``'s mechanism, the forcing kept to the highest harmonic
-        :func:`forcing_harmonics` finds in any of them (:attr:`harmonics`)."""
-        a0 = float(design.a)
-        samples = [mechanism_operator(replace(design, a=a0 + step)) for step in (-1.0, 0.0, 1.0)]
+    def of(cls, design, field: str = "a") -> "MechanismOperator":
+        """The samples of ``design``'s mechanism about its own ``field`` (``"a"`` or ``"omega"``),
+        the forcing kept to the highest harmonic :func:`forcing_harmonics` finds in any of them
+        (:attr:`harmonics`)."""
+        centre = float(getattr(design, field))
+        step = 1.0 if field == "a" else centre
+        samples = [mechanism_operator(replace(design, **{field: centre + k * step})) for k in (-1.0, 0.0, 1.0)]
         kept = max(forcing_harmonics(fc, fs) for *_, fc, fs in samples)
-        return cls(a0, tuple((*s[:3], s[3][:, : kept + 1], s[4][:, : kept + 1]) for s in samples), kept)
+        return cls(centre, tuple((*s[:3], s[3][:, : kept + 1], s[4][:, : kept + 1]) for s in samples), kept, field, step)
 
     @property
     def decoupled(self) -> bool:
@@ -89,9 +97,10 @@ class MechanismOperator:
                     return False
         return True
 
-    def at(self, a) -> tuple[np.ndarray, ...]:
-        """M, C, K (..., 3, 3) and fc, fs (..., 3, K + 1) at the distances ``a`` [m] (any shape)."""
-        t = (np.asarray(a, dtype=float) - self.a0).reshape(np.shape(a) + (1, 1))
+    def at(self, value) -> tuple[np.ndarray, ...]:
+        """M, C, K (..., 3, 3) and fc, fs (..., 3, K + 1) at the values ``value`` of :attr:`field`
+        [m or rad/s] (any shape)."""
+        t = ((np.asarray(value, dtype=float) - self.centre) / self.step).reshape(np.shape(value) + (1, 1))
         low, mid, high = self.samples
         return tuple(m + t * (h - lo) / 2.0 + t * t * (h - 2.0 * m + lo) / 2.0 for lo, m, h in zip(low, mid, high))
 
