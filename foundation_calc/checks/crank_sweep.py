@@ -19,6 +19,16 @@ at each factor: the springs and dashpots at each harmonic's n ω and the natural
 its own, at the scene's speed (:func:`factored_soil_chunks`): each point is ``fcalc amplitudes``
 and ``fcalc resonance`` of the scene with that soil. On a frequency-independent soil a soil sweep
 multiplies the springs by the factor and the dashpots by its square root.
+
+On a support that couples sway with rocking (a pile group's K_xφ, C_xφ at O) the paper's closed
+forms do not apply ("not applicable", :data:`~foundation_calc.checks.crank_amplitudes.FIRST_NOT_APPLICABLE`):
+the peaks are the plane's one model's, the averaged operator with the exact forcing as ``fcalc
+amplitudes`` solves it there, each harmonic n at n ω on the support's springs and dashpots at n ω,
+for every speed at once (:func:`coupled_motion`: the mechanism's part, a polynomial of degree 2
+in ω, :class:`~foundation_calc.solvers.crank.batch.MechanismOperator`; one batched 3 × 3 solve per
+harmonic over the chunk of speeds); the critical speeds and margins are to the modes ``fcalc
+resonance`` reports, the one model's eigen-solve, each at its own frequency. A soil sweep there
+recomputes the group from the factored soil data, as a frequency-dependent soil's.
 """
 
 from __future__ import annotations
@@ -69,11 +79,14 @@ class DynamicSoil:
     ``at(soil_frequency)``: (design, vendor loads) with the springs and dashpots taken at the
     frequencies ``soil_frequency`` [rad/s] (an array, one per point; either part None when the
     scene has none); ``zero``, ``averaged``: the natural frequencies that solve ω = p(K(ω))
-    (:func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`)."""
+    (:func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`); ``blocks``: the
+    block's M, C, K on the support at an array of frequencies (:func:`plane_blocks`), for a design
+    whose support couples sway with rocking (None otherwise)."""
 
     at: object
     zero: object
     averaged: object
+    blocks: object = None
 
 
 @dataclass(frozen=True)
@@ -102,6 +115,8 @@ class SweepReport:
         [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
     damped : the design has base dashpots
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
+    coupled : the support couples sway with rocking: the peaks are the averaged operator's, the
+        paper's first approximation does not apply
     """
 
     variable: str
@@ -122,6 +137,7 @@ class SweepReport:
     limits: dict
     detuning: float | dict
     conditions: tuple = CONDITIONS
+    coupled: bool = False
 
     @property
     def amplitude_limit(self) -> float | None:
@@ -211,7 +227,12 @@ def _at_harmonics(static, width: int, solve):
 def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share, dynamic=None) -> SweepReport:
     """One chunk of :func:`sweep_chunks` (``critical`` left empty: the caller sets it)."""
     motion = resonant = None
-    if design is not None:
+    coupled = design is not None and design.coupled
+    if coupled:
+        motion, resonant = coupled_motion(design, values, _static_blocks(design) if dynamic is None else dynamic.blocks)
+        zero, averaged = design_frequencies(design) if dynamic is None else (dynamic.zero, dynamic.averaged)
+        omega = values
+    elif design is not None:
         batch = varied(design, **{variable: values})
         motion, resonant = first_approximation_motion(batch)
         if dynamic is not None:
@@ -262,7 +283,66 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
         limits=limited,
         detuning=detuning,
         conditions=tuple(conditions),
+        coupled=coupled,
     )
+
+
+def coupled_motion(design: CrankDesign, omega, blocks):
+    """The averaged operator's steady state of ``design`` at each speed of ``omega`` [rad/s] (n,),
+    and where it has none (bool (n,)): the mechanism's M̄, C̄, K̄ and forcing at each speed
+    (:class:`~foundation_calc.solvers.crank.batch.MechanismOperator` about ω, exact), the block's
+    on the support at each harmonic's frequency n ω, n = 0 ... K (``blocks(frequencies)``: M, C, K
+    (..., 3, 3) at an array of frequencies [rad/s], :func:`plane_blocks`), and per harmonic
+
+        (K̄(nω) + i nω C̄(nω) - n²ω² M̄) Z_n = F_n
+
+    solved for every speed at once (:func:`~foundation_calc.solvers.crank.batch.harmonic_response`);
+    resonant where a mode of the operator at ω that the dashpots leave undamped lies within the
+    resonant margin of a harmonic (:func:`~foundation_calc.solvers.crank.batch.resonant_blocks`)."""
+    from foundation_calc.solvers.crank.batch import MechanismOperator, harmonic_response, resonant_blocks
+
+    omega = np.asarray(omega, dtype=float)
+    mech = MechanismOperator.of(design, "omega")
+    M_m, C_m, K_m, fc, fs = mech.at(omega)
+    M, C, K = blocks(omega[:, None] * np.arange(mech.harmonics + 1))  # (n, K + 1, 3, 3)
+    resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega[:, None])
+    Z = harmonic_response(M_m[:, None] + M, C_m[:, None] + C, K_m[:, None] + K, omega[:, None], fc, fs, mech.harmonics,
+                          per_harmonic=True, decoupled=mech.decoupled)
+    Z = np.where(resonant[:, None, None], 0.0, Z)
+    return PeriodicMotion(omega, Z.real, -Z.imag), resonant
+
+
+def _static_blocks(design: CrankDesign):
+    """``blocks`` of :func:`coupled_motion` on a frequency-independent support: the design's own at every frequency."""
+    from foundation_calc.solvers.crank.averaged import block_matrices
+
+    found = block_matrices(design)
+    return lambda frequencies: tuple(np.broadcast_to(A, np.shape(frequencies) + (3, 3)) for A in found)
+
+
+def plane_blocks(scene, design: CrankDesign):
+    """M, C, K (..., 3, 3) of ``design``'s block (:func:`~foundation_calc.solvers.crank.averaged.block_matrices`)
+    on the ``crank_foundation`` scene's support at the frequencies given (an array [rad/s]), its
+    sway-rocking coupling included (:func:`~foundation_calc.solvers.supports.plane_footing.plane`):
+    the springs and dashpots ``scene.design(frequency, coupled=True)`` takes, read for every
+    frequency at once. The static stability in rocking is the scene's (its design at rest); a
+    pile group's rocking spring at a frequency past its interaction peaks may fall below P h there
+    without making the steady state any less defined."""
+    from foundation_calc.solvers.crank.averaged import block_matrices
+    from foundation_calc.solvers.supports.plane_footing import plane
+
+    support = scene.support()
+    f = scene.foundation
+
+    def at(frequencies):
+        shape = np.shape(frequencies)
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi) = (
+            tuple(np.broadcast_to(v, (np.size(frequencies),)).reshape(shape) for v in part)
+            for part in plane(support.impedance(np.ravel(frequencies)), support.label, coupled=True))
+        return block_matrices(replace(design, c=K_z / f.base_area, c1=K_x / f.base_area, c_phi=K_phi / f.base_second_moment,
+                                      C_x=C_x, C_z=C_z, C_phi=C_phi, K_xphi=K_xphi, C_xphi=C_xphi))
+
+    return at
 
 
 def _critical_speeds(design, vendor, conditions, share, detuning, lo: float, hi: float, dynamic=None) -> tuple[CriticalSpeed, ...]:
@@ -321,12 +401,12 @@ def factored_soil_chunks(scene, values, limits, detuning, points=()):
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 
     vendor = scene_vendor_loads(scene)
-    conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(),
+    conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(coupled=True),
                                            None if vendor is None else vendor.loads, None if vendor is None else vendor.block)
     omega = np.array([scene.speed.omega_rad_s])
     for factor in np.asarray(values, dtype=float):
         at = scene.with_modulus_factor(float(factor))
-        design = None if at.mechanism is None else at.design()
+        design = None if at.mechanism is None else at.design(coupled=True)
         part = _chunk(design, "omega", omega, limits, detuning, points, scene_vendor_loads(at), conditions, share,
                       scene_dynamic_soil(at))
         yield replace(part, variable="soil_factor", values=np.array([factor]))
@@ -340,9 +420,10 @@ def scene_sweep_chunks(scene, variable: str, values):
 
     points = [(p.name, p.horizontal, p.height) for p in scene.points]
     limits, detuning = scene.limits, scene.limits.detuning
-    if variable == "soil_factor" and scene.support().frequency_dependent:
+    design = None if scene.mechanism is None else scene.design(coupled=True)
+    coupled = design is not None and design.coupled  # its K_xφ is recomputed from the soil, not scaled
+    if variable == "soil_factor" and (coupled or scene.support().frequency_dependent):
         return factored_soil_chunks(scene, values, limits, detuning, points)
-    design = None if scene.mechanism is None else scene.design()
     dynamic = scene_dynamic_soil(scene) if variable == "omega" else None
     return sweep_chunks(design, variable, values, limits, detuning, points, scene_vendor_loads(scene), dynamic=dynamic)
 
@@ -404,8 +485,9 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
         frequencies, _ = scene_block_frequencies(scene)
         return DynamicSoil(at, frequencies, frequencies)
     zero, averaged, _ = scene_design_frequencies(scene)
-    return DynamicSoil(at, zero, averaged)
+    design = scene.design(coupled=True)
+    return DynamicSoil(at, zero, averaged, plane_blocks(scene, design) if design.coupled else None)
 
 
-__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "factored_soil_chunks", "joined",
-           "scene_dynamic_soil", "scene_sweep_chunks", "sweep", "sweep_chunks"]
+__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "coupled_motion",
+           "factored_soil_chunks", "joined", "plane_blocks", "scene_dynamic_soil", "scene_sweep_chunks", "sweep", "sweep_chunks"]

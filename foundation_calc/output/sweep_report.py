@@ -18,6 +18,8 @@ from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, f
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
+#: The mechanism's method on a support coupling sway with rocking, where the first approximation does not apply.
+COUPLED_METHOD = "averaged operator, exact forcing (the plane's one model, the support's sway-rocking coupling K_xφ, C_xφ)"
 LOADS_METHOD = "vendor loads, linear steady state"
 STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
 
@@ -25,7 +27,8 @@ STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
 def method(report) -> str:
     """What computed the sweep's amplitudes: the mechanism's closed form, the loads' steady state or both."""
     sources = {c.source for c in report.conditions}
-    parts = ([METHOD] if sources - {"loads"} else []) + ([LOADS_METHOD] if "loads" in sources else [])
+    mechanism = COUPLED_METHOD if report.coupled else METHOD
+    parts = ([mechanism] if sources - {"loads"} else []) + ([LOADS_METHOD] if "loads" in sources else [])
     return " + ".join(parts)
 
 
@@ -53,6 +56,16 @@ def verdict_cells(report):
             "over_limits": rows.over_limits(i),
             "status": str(rows.status[i]),
         }
+
+
+def not_applicable(report) -> dict:
+    """The approximations a crank sweep leaves out and why: the paper's first approximation on a
+    support coupling sway with rocking (as ``fcalc amplitudes`` words it); empty otherwise."""
+    if not report.coupled:
+        return {}
+    from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
+
+    return {"first_approximation": FIRST_NOT_APPLICABLE}
 
 
 def limits_document(limits: dict, detuning) -> dict:
@@ -101,6 +114,7 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
         "scene": scene_path,
         "name": name,
         "method": method(report),
+        **({"not_applicable": not_applicable(report)} if report.coupled else {}),
         "variable": report.variable,
         "limits": limits_document({key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
                                   report.detuning),
@@ -235,6 +249,8 @@ def _print_footer(report, units) -> None:
 
     out = stdout()
     speed_unit = units.label("speed")
+    for key, why in not_applicable(report).items():
+        out.print(f"{key.replace('_', ' ')}: {escape(why)}", soft_wrap=True)
     if report.critical:
         crit = Table(title="Critical speeds inside the sweep (zero-order / averaged-inertia operator)", title_justify="left")
         for col in ("condition", "source", "judged", f"zero-order [{speed_unit}]", f"averaged [{speed_unit}]"):
@@ -324,6 +340,7 @@ __all__ = [
     "csv_text",
     "joined_plot",
     "limits_document",
+    "not_applicable",
     "operating",
     "plot_sweep",
     "plotted",

@@ -37,18 +37,22 @@ SWEEP_POINTS = 1001
 
 def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[dict]):
     """The crank speed sweep plot of a crank scene (peaks of C, limits, detuning bands), over a
-    range that shows every judged resonance of ``resonances`` (the resonance document's rows)."""
+    range that shows every judged resonance of ``resonances`` (the resonance document's rows); on a
+    support coupling sway with rocking, the averaged operator's peaks with the support at each
+    harmonic's frequency, as ``fcalc sweep`` gives them."""
     import numpy as np
 
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
-    from foundation_calc.checks.crank_sweep import sweep
+    from foundation_calc.checks.crank_sweep import scene_dynamic_soil, sweep
     from foundation_calc.output.report.figures import sweep_factors, sweep_figure
     from foundation_calc.output.sweep_report import sweep_document
 
-    design = None if loaded.mechanism is None else loaded.design()
+    design = None if loaded.mechanism is None else loaded.design(coupled=True)
     omegas = loaded.speed.omega_rad_s * np.linspace(*sweep_factors(omega, resonances), SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
-    swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded))
+    coupled = design is not None and design.coupled  # the one model, its support at each harmonic's frequency
+    swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded),
+                  scene_dynamic_soil(loaded) if coupled else None)
     return sweep_figure(sweep_series(sweep_document(swept, "", loaded.name)), omega, units)
 
 
