@@ -292,7 +292,8 @@ def coupled_motion(design: CrankDesign, omega, blocks):
     and where it has none (bool (n,)): the mechanism's M̄, C̄, K̄ and forcing at each speed
     (:class:`~foundation_calc.solvers.crank.batch.MechanismOperator` about ω, exact), the block's
     on the support at each harmonic's frequency n ω, n = 0 ... K (``blocks(frequencies)``: M, C, K
-    (..., 3, 3) at an array of frequencies [rad/s], :func:`plane_blocks`), and per harmonic
+    (..., 3, 3) at an array of frequencies [rad/s], :func:`plane_blocks`; one call per harmonic, so
+    that a pile group's impedance holds one chunk of frequencies at a time), and per harmonic
 
         (K̄(nω) + i nω C̄(nω) - n²ω² M̄) Z_n = F_n
 
@@ -304,7 +305,8 @@ def coupled_motion(design: CrankDesign, omega, blocks):
     omega = np.asarray(omega, dtype=float)
     mech = MechanismOperator.of(design, "omega")
     M_m, C_m, K_m, fc, fs = mech.at(omega)
-    M, C, K = blocks(omega[:, None] * np.arange(mech.harmonics + 1))  # (n, K + 1, 3, 3)
+    parts = [blocks(n * omega) for n in range(mech.harmonics + 1)]  # one harmonic at a time: the support's memory
+    M, C, K = (np.stack([part[i] for part in parts], axis=1) for i in range(3))  # (n, K + 1, 3, 3)
     resonant, _ = resonant_blocks(M_m + M[:, 1], C[:, 1], K_m + K[:, 1], omega[:, None])
     Z = harmonic_response(M_m[:, None] + M, C_m[:, None] + C, K_m[:, None] + K, omega[:, None], fc, fs, mech.harmonics,
                           per_harmonic=True, decoupled=mech.decoupled)
