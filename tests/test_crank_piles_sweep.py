@@ -193,3 +193,28 @@ def test_the_sheet_sweep_figure_draws_the_piled_crank(monkeypatch, resonance):
     scene = parse_scene(read_toml(CONFIG))
     figure = documents.sweep_figure_of(scene, display_units(None), scene.speed.omega_rad_s, resonance["resonances"])
     assert figure is not None
+
+
+def test_the_mechanism_operator_is_a_quadratic_in_the_speed():
+    """The mechanism's averaged M̄, C̄, K̄ and forcing at any speed, from its three samples at 0, ω0, 2 ω0
+    (``MechanismOperator.of(design, "omega")``), are ``mechanism_operator`` evaluated at that speed, the
+    motor on the foundation or off it (the drive's reaction): to 1e-12 of each term's natural size (M̄,
+    M̄ ω for the Coriolis terms, M̄ ω² for the stiffness, the largest forcing coefficient), round-off of
+    sums of 256 samples carried to 8 ω0."""
+    from dataclasses import replace
+
+    from foundation_calc.solvers.crank.averaged import mechanism_operator
+    from foundation_calc.solvers.crank.batch import MechanismOperator
+
+    design = parse_scene(read_toml(CONFIG)).design(coupled=True)
+    for drive in (True, False):
+        d = replace(design, drive_on_foundation=drive)
+        mech = MechanismOperator.of(d, "omega")
+        for factor in (0.3, 2.7, 8.0):
+            omega = factor * d.omega
+            found = mech.at(np.array([omega]))
+            direct = mechanism_operator(replace(d, omega=omega))
+            mass, force = np.abs(direct[0]).max(), max(np.abs(direct[3]).max(), np.abs(direct[4]).max())
+            scales = (mass, mass * omega, mass * omega**2, force, force)
+            for name, a, b, scale in zip(("M", "C", "K", "fc", "fs"), found, direct, scales):
+                assert np.abs(a[0] - b[..., : a.shape[-1]]).max() <= 1e-12 * scale, (drive, factor, name)

@@ -377,6 +377,8 @@ def sweep_chunks(
     ``dynamic``: a frequency-dependent soil, for a speed sweep (module docstring)."""
     if dynamic is not None and variable != "omega":
         raise ValueError("a frequency-dependent soil is swept frequency-consistently by speed only")
+    if design is not None and design.coupled and variable != "omega":
+        raise ValueError("a support coupling sway with rocking is swept by soil from its scene (factored_soil_chunks)")
     if variable not in VARIABLES:
         raise ValueError(f"variable must be one of {VARIABLES}, not {variable!r}")
     values = np.asarray(values, dtype=float)

@@ -184,8 +184,9 @@ def modal_damping_ratios(M, C, natural, shapes) -> np.ndarray:
 def block_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """M, C, K (..., 3, 3) of the block on its soil with the moving mass m lumped at C (the
     paper's zero-order operator): the block model of one body M_tot, I_c at C on the base's springs
-    and dashpots (and a support's sway-rocking coupling K_xφ, C_xφ), in the crank's coordinates (:mod:`~foundation_calc.solvers.crank.plane`; fields
-    may be arrays: a batch of blocks)."""
+    and dashpots and a support's sway-rocking coupling K_xφ, C_xφ (0: the paper's base), in the
+    crank's coordinates (:mod:`~foundation_calc.solvers.crank.plane`; fields may be arrays: a
+    batch of blocks)."""
     from foundation_calc.solvers.crank.loads import RigidBlock, matrices
 
     d = design
