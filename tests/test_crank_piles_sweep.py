@@ -112,7 +112,8 @@ def test_the_sweep_peaks_are_a_direct_complex_solve(swept):
     """Each row's peaks of x, y, θ of C and its harmonics x1, y1, y2, θ1 are those of the direct solve
     at its speed (module docstring; 1e-9)."""
     rows = swept["points"]
-    assert [r["omega"] * 30.0 / np.pi for r in rows] == pytest.approx([100.0, 100.0 + 700.0 / 3.0, 100.0 + 1400.0 / 3.0, 800.0])
+    speeds = [100.0, 100.0 + 700.0 / 3.0, 100.0 + 1400.0 / 3.0, 800.0]  # [rpm]
+    assert [r["omega"] * 30.0 / np.pi for r in rows] == pytest.approx(speeds)
     for row in rows:
         Z, omega = _direct(row["omega"] * 30.0 / np.pi)
         assert row["omega"] == pytest.approx(omega, rel=1e-15)

@@ -12,6 +12,7 @@ arithmetic in another order."""
 from __future__ import annotations
 
 import copy
+import json
 
 import numpy as np
 import pytest
@@ -172,18 +173,29 @@ def test_a_registered_support_carries_the_crank_resonance(toys):
 
 
 def test_a_support_coupling_the_plane_is_refused_by_name(toys, runner, tmp_path):
-    """The paper's closed forms take three uncoupled springs: a support coupling sway with rocking is a
-    PhysicsError that names it (exit code 3, docs/exit-codes.md) wherever only they are solved (a sweep),
-    never a silently dropped coupling; its resonance and amplitudes are the plane model's
-    (tests/test_crank_piles.py); a coupling of the vertical motion is refused there too."""
+    """The paper's closed forms take three uncoupled springs: a support coupling sway with rocking is
+    solved by the plane model (tests/test_crank_piles.py), never a silently dropped coupling: its
+    resonance, its amplitudes and its speed sweep, whose row at the scene's speed is the amplitudes'
+    averaged operator on the toy's constant springs (1e-9: the same operator, solved for all speeds at
+    once); a coupling of the vertical motion is a PhysicsError that names it (exit code 3,
+    docs/exit-codes.md), in the sweep too."""
     assert fc.resonance(toys["coupled toy crank"]).to_dict()["natural_frequencies"]["p1"] > 0.0
-    assert "first_approximation" in fc.amplitudes(toys["coupled toy crank"]).to_dict()["not_applicable"]
+    amplitudes = fc.amplitudes(toys["coupled toy crank"]).to_dict()
+    assert "first_approximation" in amplitudes["not_applicable"]
     with pytest.raises(fc.PhysicsError, match="support toy couples the motions of the plane at O other than"):
         fc.resonance(toys["vertically coupled toy crank"])
-    path = tmp_path / "coupled.toml"
-    path.write_text(tomli_w.dumps(toys["coupled toy crank"]), encoding="utf-8")
-    run = runner.invoke(app, ["sweep", str(path), "--speed", "100:200:3"])
-    assert run.exit_code == 3 and "support toy couples" in run.output
+    runs = {}
+    for name in ("coupled toy crank", "vertically coupled toy crank"):
+        path = tmp_path / f"{name.replace(' ', '_')}.toml"
+        path.write_text(tomli_w.dumps(toys[name]), encoding="utf-8")
+        runs[name] = runner.invoke(app, ["sweep", str(path), "--speed", str(toys[name]["mechanism"]["speed_rpm"]), "--json"])
+    vertical = runs["vertically coupled toy crank"]
+    assert vertical.exit_code == 3 and "support toy couples the motions of the plane at O other than" in vertical.output
+    assert runs["coupled toy crank"].exit_code == 0, runs["coupled toy crank"].output
+    row = json.loads(runs["coupled toy crank"].stdout)["points"][0]
+    peaks = amplitudes["approximations"]["averaged_operator"]["peaks"]
+    for key, dof in (("x_peak", "x"), ("y_peak", "y"), ("theta_peak", "theta")):
+        assert row[key] == pytest.approx(peaks[dof]["displacement"], rel=1e-9), key
 
 
 def _stiff_builder(scene, L, B, masses):

@@ -494,4 +494,5 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
 
 
 __all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "coupled_motion",
-           "factored_soil_chunks", "joined", "plane_blocks", "scene_dynamic_soil", "scene_sweep_chunks", "sweep", "sweep_chunks"]
+           "factored_soil_chunks", "joined", "plane_blocks", "scene_dynamic_soil", "scene_sweep_chunks", "sweep",
+           "sweep_chunks"]
