@@ -101,18 +101,19 @@ def fit_columns(table, width: int) -> None:
 
 
 @cache
-def stdout() -> Console:
-    """Console for results: full width when not a terminal, and no table cuts a word; on a
-    terminal a table too wide is fitted to it (:func:`fit_columns`)."""
-    import sys
-
+def _console_class():
+    """The class of fcalc's consoles (built on first use: rich is imported only then)."""
     from rich.console import Console
     from rich.table import Table
 
-    class ResultConsole(Console):
-        def on_broken_pipe(self) -> None:
-            """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
-            raise BrokenPipeError
+    class FcalcConsole(Console):
+        """A rich console whose tables cut no word (:func:`keep_words_whole`) and fit a terminal
+        (:func:`fit_columns`); in a file or a pipe (``piped``) its width is unlimited."""
+
+        def __init__(self, piped: bool, **kwargs):
+            self.piped = piped
+            kwargs.setdefault("width", UNLIMITED_WIDTH if piped else None)
+            super().__init__(highlight=False, **kwargs)
 
         def print(self, *objects, **kwargs):
             for item in objects:
@@ -122,16 +123,67 @@ def stdout() -> Console:
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
             super().print(*objects, **kwargs)
 
-    width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
-    return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
+    return FcalcConsole
+
+
+@cache
+def stdout() -> Console:
+    """Console for results: on a terminal its tables are fitted to it (:func:`fit_columns`); in a
+    file or a pipe of unlimited width, so that no table is ever squeezed. No table cuts a word."""
+    import sys
+
+    class ResultConsole(_console_class()):
+        def on_broken_pipe(self) -> None:
+            """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
+            raise BrokenPipeError
+
+    return ResultConsole(not sys.stdout.isatty(), emoji=False)  # ":name:" in user text stays text
 
 
 @cache
 def stderr() -> Console:
-    """Console for messages; never mixed into JSON on stdout."""
-    from rich.console import Console
+    """Console for messages; never mixed into JSON on stdout. As :func:`stdout`, of unlimited
+    width in a file or a pipe: a message is one line there (:class:`Hanging` wraps it on a
+    terminal only)."""
+    import sys
 
-    return Console(stderr=True, highlight=False)
+    return _console_class()(not sys.stderr.isatty(), stderr=True)
+
+
+class Hanging:
+    """Console text that wraps at words with a hanging indent: its first line at the console's
+    width, the lines after it ``indent`` cells in, so that what starts the line (``error:``, a
+    field's name) stands out on the left. Each line of ``text`` (console markup, or a rich
+    ``Text``) is wrapped so; in a file or a pipe, whose width is unlimited, it stays one line."""
+
+    def __init__(self, text, indent: int):
+        self.text = text
+        self.indent = indent
+
+    def __rich_console__(self, console, options):
+        from rich.text import Text
+
+        text = console.render_str(self.text) if isinstance(self.text, str) else self.text
+        width = options.max_width
+        indent = min(self.indent, width // 2)  # a terminal too narrow keeps half its width for the words
+        lines = []
+        for line in text.split("\n", allow_blank=True):
+            head, *_ = line.wrap(console, width) or [line]
+            rest = line[len(head.plain):]
+            rest = rest[len(rest.plain) - len(rest.plain.lstrip(" ")):]
+            lines.append(head)
+            if rest.plain:
+                lines.extend(Text(" " * indent) + part for part in rest.wrap(console, width - indent))
+        for line in lines:
+            line.rstrip()
+        yield Text("\n").join(lines)
+
+
+def warning_line(text: str) -> Hanging:
+    """A warning for stderr, ``warning: text`` (``text`` plain, not markup)."""
+    from rich.markup import escape
+
+    return Hanging(f"[bold yellow]warning[/]: {escape(text)}", len("warning: "))
 
 
 def verdict_text(outcome: str, strict: bool = False) -> str:

@@ -1,0 +1,117 @@
+"""Messages and notes at 80 columns: on a terminal (a pseudo-terminal here) a refusal, a warning or
+a long note wraps at words with a hanging indent, so that ``error:`` and the field stay on the
+left; in a file or a pipe each problem is one line (scripts grep them), and no line of a table's
+output ends in a space. Run as a user runs fcalc: a real process, a real terminal or pipe."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+import tomli_w
+from rich.cells import cell_len
+
+from foundation_calc.scenes import parse_scene, read_toml
+from tests.conftest import CONFIGS
+
+FCALC = (sys.executable, "-m", "foundation_calc")
+ENV = {**os.environ, "COLUMNS": "80", "TERM": "dumb", "NO_COLOR": "1"}
+
+
+def _on_terminal(*args: str) -> tuple[int, list[str]]:
+    """Exit code and lines of ``fcalc args`` with stdout and stderr on one 80-column terminal."""
+    pty = pytest.importorskip("pty")
+    main, child = pty.openpty()
+    process = subprocess.Popen((*FCALC, *args), stdout=child, stderr=child, env=ENV)
+    os.close(child)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(main, 65536)
+        except OSError:  # the child closed the terminal
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(main)
+    process.wait()
+    return process.returncode, b"".join(chunks).decode("utf-8").replace("\r\n", "\n").splitlines()
+
+
+def _piped(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run((*FCALC, *args), capture_output=True, text=True, env=ENV, check=False)
+
+
+def _paragraph(lines: list[str], start: str) -> list[str]:
+    """The line that starts with ``start`` and the lines after it that are indented deeper than
+    it (its continuation on a terminal)."""
+    first = next(i for i, line in enumerate(lines) if line.startswith(start))
+    lead = len(start) - len(start.lstrip())
+    rest = []
+    for line in lines[first + 1:]:
+        if len(line) - len(line.lstrip()) <= lead:
+            break
+        rest.append(line)
+    return [lines[first], *rest]
+
+
+def _hangs(lines: list[str], start: str, indent: int, whole: str) -> None:
+    """The paragraph at ``start`` fits 80 columns, each line after its first ``indent`` cells in,
+    and says ``whole`` (the one line of a pipe) word for word."""
+    paragraph = _paragraph(lines, start)
+    assert len(paragraph) > 1, paragraph  # long enough to wrap at 80
+    assert all(cell_len(line) <= 80 for line in paragraph), paragraph
+    assert all(line.startswith(" " * indent) and line[indent] != " " for line in paragraph[1:]), paragraph
+    assert " ".join(paragraph).split() == whole.split()
+
+
+def test_a_refusal_wraps_with_a_hanging_indent_on_a_terminal():
+    """``fcalc design`` refuses a piled crank in a 460-character line: on a terminal it wraps
+    under the field (7 cells, after ``error: ``), in a pipe it stays one line."""
+    scene = str(CONFIGS / "crank_on_piles.toml")
+    piped = _piped("design", scene)
+    assert piped.returncode == 3
+    [line] = piped.stderr.splitlines()  # one line per problem, for grep
+    assert line.startswith("error: soil: ") and len(line) > 300
+    code, lines = _on_terminal("design", scene)
+    assert code == 3
+    _hangs(lines, "error: soil: ", len("error: "), line)
+
+
+@pytest.fixture
+def terminal(monkeypatch):
+    """fcalc's stderr console as on an 80-column terminal, recording what it prints."""
+    from rich.console import Console
+
+    from foundation_calc.output import console
+
+    term = Console(stderr=True, force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    monkeypatch.setattr(console, "stderr", lambda: term)
+    return term
+
+
+def test_scene_problems_and_warnings_wrap_under_their_field_on_a_terminal(terminal):
+    """A misspelt key (refused) and a block's length typed in mm (a warning), each longer than 80
+    columns, as ``fcalc check`` prints them (the same functions as every command)."""
+    from foundation_calc.cli.guard import print_warnings, report_error
+    from foundation_calc.errors import SceneError
+
+    saw = read_toml(CONFIGS / "frame_saw.toml")
+    saw["foundation"]["masss"] = saw["foundation"].pop("mass")
+    with pytest.raises(SceneError) as refused:
+        parse_scene(saw, source="misspelt.toml")
+    block = read_toml(CONFIGS / "block_two_machines.toml")
+    block["block"]["length"] = 7000.0  # a 7 m block in mm
+    warnings = parse_scene(block, source="in_mm.toml").plausibility_warnings()
+    report_error(refused.value)
+    print_warnings(warnings, "in_mm.toml")
+    lines = terminal.export_text().splitlines()
+    assert lines[0] == "error: invalid scene misspelt.toml"
+    [(field, message)] = refused.value.problems
+    assert field == "foundation.masss"
+    _hangs(lines, "  foundation.masss: ", len("    "), f"  {field}: {message}")
+    [warning] = warnings
+    assert "block.length = 7000 m" in warning
+    _hangs(lines, "warning: in_mm.toml: ", len("warning: "), f"warning: in_mm.toml: {warning}")
