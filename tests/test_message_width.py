@@ -115,3 +115,29 @@ def test_scene_problems_and_warnings_wrap_under_their_field_on_a_terminal(termin
     [warning] = warnings
     assert "block.length = 7000 m" in warning
     _hangs(lines, "warning: in_mm.toml: ", len("warning: "), f"warning: in_mm.toml: {warning}")
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("resonance", "frame_saw.toml"),
+        ("amplitudes", "compressor_damped_near_resonance.toml"),
+        ("amplitudes", "block_two_machines.toml"),
+        ("soil", "compressor_medium_sand_lysmer.toml"),
+        ("sweep", "frame_saw.toml", "--speed", "150:300:7"),
+        ("check", "frame_saw.toml"),
+        ("platform",),
+    ],
+    ids=" ".join,
+)
+def test_no_line_of_a_file_ends_in_a_space(runner, args):
+    """Rich pads a table's title to the table's width; in a file or a pipe fcalc ends every line
+    at its last character, with the same text (the JSON is printed apart and is untouched)."""
+    from foundation_calc.cli.app import app
+
+    command, *rest = args
+    rest = [str(CONFIGS / a) if a.endswith(".toml") else a for a in rest]
+    result = runner.invoke(app, [command, *rest])
+    assert result.exit_code in (0, 1), result.stderr
+    padded = [line for line in result.stdout.splitlines() if line != line.rstrip()]
+    assert not padded, padded

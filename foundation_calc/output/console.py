@@ -100,6 +100,24 @@ def fit_columns(table, width: int) -> None:
             column.max_width = cap
 
 
+#: Spaces and tabs ending a line, with any style codes among them (kept) [regular expression].
+_TRAILING_SPACE = r"(?:[ \t]|\x1b\[[0-9;]*m)+$"
+
+
+def strip_trailing_spaces(text: str) -> str:
+    """``text`` without the spaces and tabs that end its lines (style codes among them are kept).
+
+    Rich pads a table's title, and the lines it wraps, to the table's width: in a file or a pipe
+    these are only trailing spaces, which ``diff``, ``git`` and editors flag.
+
+    >>> strip_trailing_spaces("Natural frequencies   \n┃ mode ┃\n")
+    'Natural frequencies\n┃ mode ┃\n'
+    """
+    import re
+
+    return re.sub(_TRAILING_SPACE, lambda m: "".join(re.findall(r"\x1b\[[0-9;]*m", m.group())), text, flags=re.M)
+
+
 @cache
 def _console_class():
     """The class of fcalc's consoles (built on first use: rich is imported only then)."""
@@ -108,7 +126,8 @@ def _console_class():
 
     class FcalcConsole(Console):
         """A rich console whose tables cut no word (:func:`keep_words_whole`) and fit a terminal
-        (:func:`fit_columns`); in a file or a pipe (``piped``) its width is unlimited."""
+        (:func:`fit_columns`); in a file or a pipe (``piped``) its width is unlimited and its lines
+        end without spaces (:func:`strip_trailing_spaces`)."""
 
         def __init__(self, piped: bool, **kwargs):
             self.piped = piped
@@ -121,7 +140,16 @@ def _console_class():
                     keep_words_whole(item)
                     fit_columns(item, self.width)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
-            super().print(*objects, **kwargs)
+            if not self.piped:
+                super().print(*objects, **kwargs)
+                return
+            with self.capture() as captured:
+                super().print(*objects, **kwargs)
+            try:
+                self.file.write(strip_trailing_spaces(captured.get()))
+                self.file.flush()
+            except BrokenPipeError:
+                self.on_broken_pipe()
 
     return FcalcConsole
 
@@ -129,7 +157,8 @@ def _console_class():
 @cache
 def stdout() -> Console:
     """Console for results: on a terminal its tables are fitted to it (:func:`fit_columns`); in a
-    file or a pipe of unlimited width, so that no table is ever squeezed. No table cuts a word."""
+    file or a pipe of unlimited width, so that no table is ever squeezed, and its lines end
+    without spaces (:func:`strip_trailing_spaces`). No table cuts a word."""
     import sys
 
     class ResultConsole(_console_class()):
