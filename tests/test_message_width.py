@@ -141,3 +141,37 @@ def test_no_line_of_a_file_ends_in_a_space(runner, args):
     assert result.exit_code in (0, 1), result.stderr
     padded = [line for line in result.stdout.splitlines() if line != line.rstrip()]
     assert not padded, padded
+
+
+@pytest.mark.parametrize("config", ["compressor_damped_near_resonance.toml"])
+def test_a_crank_s_damped_amplitudes_note_hangs_at_80_columns(config):
+    """The damped crank's note of its base dashpots and damped modes (over 200 characters, one line
+    in a file) wraps on an 80-column terminal under its own name, and every line of the output fits."""
+    code, lines = _on_terminal("amplitudes", str(CONFIGS / config))
+    assert code in (0, 1)  # 1: the compressor is inside its resonance band
+    assert all(cell_len(line) <= 80 for line in lines), [line for line in lines if cell_len(line) > 80]
+    paragraph = _paragraph(lines, "  damped (base dashpots C_x = ")
+    words = " ".join(paragraph).split()
+    _hangs(lines, "  damped (base dashpots C_x = ", len("    "), " ".join(words))
+    assert "modes of the averaged operator:" in " ".join(words) and words[-3:-1] == ["ζ", "="]
+
+
+def test_fcalc_check_s_skipped_line_hangs_at_80_columns(runner, tmp_path, monkeypatch):
+    """``fcalc check`` of frame_saw.toml beside a TOML file that is not a scene: its skipped line
+    (the file's name and why) wraps under its text on a terminal; the summary follows."""
+    from rich.console import Console
+
+    from foundation_calc.cli.app import app
+    from foundation_calc.output import check_report
+
+    (tmp_path / "frame_saw.toml").write_bytes((CONFIGS / "frame_saw.toml").read_bytes())
+    name = "a_tool_s_settings_with_a_long_name_beside_the_scenes.toml"
+    (tmp_path / name).write_text("[tool]\nline_length = 100\n")
+    term = Console(force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    monkeypatch.setattr(check_report, "stdout", lambda: term)
+    monkeypatch.chdir(tmp_path)
+    result = runner.invoke(app, ["check", ".", "--strict"])
+    assert result.exit_code == 0, result.stderr
+    lines = term.export_text().splitlines()
+    _hangs(lines, "skipped: ", len("skipped: "), f"skipped: {name} (TOML without a kind or a scene table, not a scene)")
+    assert lines[-1] == "1 scene: 1 pass (2 checks: 2 pass); warnings fail (--strict); exit code 0"

@@ -79,7 +79,7 @@ def report_error(exc: FcalcError) -> None:
     if isinstance(exc, SceneError):
         err.print(Hanging(f"[bold red]error[/]: invalid scene {escape(exc.source)}", len("error: ")))
         for loc, msg in exc.problems:
-            err.print(Hanging(f"  {escape(loc) + ': ' if loc else ''}{escape(msg)}", len("    ")))
+            err.print(Hanging(f"  {escape(loc) + ': ' if loc else ''}{escape(msg)}"))
     else:
         err.print(Hanging(f"[bold red]error[/]: {escape(str(exc))}", len("error: ")))
 
@@ -109,7 +109,7 @@ def report_internal(text: str) -> None:
     err = stderr()
     err.print(Hanging(f"[bold red]internal error[/]: {escape(text)}", len("internal error: ")))
     err.print(Hanging("  This is a bug in fcalc; please report it with the scene file"
-                      " (FCALC_DEBUG=1 shows the traceback).", len("    ")))
+                      " (FCALC_DEBUG=1 shows the traceback)."))
 
 
 def error_document(command: str, scene: str, exc: BaseException) -> dict:

@@ -181,11 +181,12 @@ def stderr() -> Console:
 
 class Hanging:
     """Console text that wraps at words with a hanging indent: its first line at the console's
-    width, the lines after it ``indent`` cells in, so that what starts the line (``error:``, a
-    field's name) stands out on the left. Each line of ``text`` (console markup, or a rich
-    ``Text``) is wrapped so; in a file or a pipe, whose width is unlimited, it stays one line."""
+    width, the lines after it ``indent`` cells in (by default two more than the line's own leading
+    spaces), so that what starts the line (``error:``, a field's name, a note's name) stands out
+    on the left. Each line of ``text`` (console markup, or a rich ``Text``) is wrapped so; in a
+    file or a pipe, whose width is unlimited, it stays one line."""
 
-    def __init__(self, text, indent: int):
+    def __init__(self, text, indent: int | None = None):
         self.text = text
         self.indent = indent
 
@@ -194,9 +195,10 @@ class Hanging:
 
         text = console.render_str(self.text) if isinstance(self.text, str) else self.text
         width = options.max_width
-        indent = min(self.indent, width // 2)  # a terminal too narrow keeps half its width for the words
         lines = []
         for line in text.split("\n", allow_blank=True):
+            lead = len(line.plain) - len(line.plain.lstrip(" "))
+            indent = min(lead + 2 if self.indent is None else self.indent, width // 2)  # half the width stays for words
             head, *_ = line.wrap(console, width) or [line]
             rest = line[len(head.plain):]
             rest = rest[len(rest.plain) - len(rest.plain.lstrip(" ")):]
