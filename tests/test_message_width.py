@@ -175,3 +175,20 @@ def test_fcalc_check_s_skipped_line_hangs_at_80_columns(runner, tmp_path, monkey
     lines = term.export_text().splitlines()
     _hangs(lines, "skipped: ", len("skipped: "), f"skipped: {name} (TOML without a kind or a scene table, not a scene)")
     assert lines[-1] == "1 scene: 1 pass (2 checks: 2 pass); warnings fail (--strict); exit code 0"
+
+
+def test_fcalc_sweep_s_limits_line_wraps_at_80_columns(runner, monkeypatch):
+    """The sweep's closing line of limits and detuning (110 characters for frame_saw.toml) wrapped
+    only where the terminal cut it: it wraps at words, under its own text."""
+    from rich.console import Console
+
+    from foundation_calc.cli.app import app
+    from foundation_calc.output import sweep_report
+
+    term = Console(force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    monkeypatch.setattr(sweep_report, "stdout", lambda: term)
+    result = runner.invoke(app, ["sweep", str(CONFIGS / "frame_saw.toml"), "--speed", "150:300:7"])
+    assert result.exit_code == 0, result.stderr
+    lines = term.export_text().splitlines()
+    whole = "limits (x, y of C and of every point): displacement 0.0002 m; [limits] detuning = 0.2 (docs/resonance-rule.md)"
+    _hangs(lines, "limits (x, y of C ", 2, whole)
