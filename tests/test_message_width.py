@@ -10,11 +10,11 @@ import subprocess
 import sys
 
 import pytest
-import tomli_w
 from rich.cells import cell_len
+from rich.console import Console
 
 from foundation_calc.scenes import parse_scene, read_toml
-from tests.conftest import CONFIGS
+from tests.conftest import CONFIGS, on_terminal
 
 FCALC = (sys.executable, "-m", "foundation_calc")
 ENV = {**os.environ, "COLUMNS": "80", "TERM": "dumb", "NO_COLOR": "1"}
@@ -22,22 +22,13 @@ ENV = {**os.environ, "COLUMNS": "80", "TERM": "dumb", "NO_COLOR": "1"}
 
 def _on_terminal(*args: str) -> tuple[int, list[str]]:
     """Exit code and lines of ``fcalc args`` with stdout and stderr on one 80-column terminal."""
-    pty = pytest.importorskip("pty")
-    main, child = pty.openpty()
-    process = subprocess.Popen((*FCALC, *args), stdout=child, stderr=child, env=ENV)
-    os.close(child)
-    chunks = []
-    while True:
-        try:
-            chunk = os.read(main, 65536)
-        except OSError:  # the child closed the terminal
-            break
-        if not chunk:
-            break
-        chunks.append(chunk)
-    os.close(main)
-    process.wait()
-    return process.returncode, b"".join(chunks).decode("utf-8").replace("\r\n", "\n").splitlines()
+    process, shown = on_terminal((*FCALC, *args), env=ENV)
+    return process.returncode, shown.splitlines()
+
+
+def _recording_terminal(**kwargs) -> Console:
+    """A console as fcalc's on an 80-column terminal (before its own classes), recording its text."""
+    return Console(force_terminal=True, width=80, record=True, color_system=None, highlight=False, **kwargs)
 
 
 def _piped(*args: str) -> subprocess.CompletedProcess:
@@ -83,11 +74,9 @@ def test_a_refusal_wraps_with_a_hanging_indent_on_a_terminal():
 @pytest.fixture
 def terminal(monkeypatch):
     """fcalc's stderr console as on an 80-column terminal, recording what it prints."""
-    from rich.console import Console
-
     from foundation_calc.output import console
 
-    term = Console(stderr=True, force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    term = _recording_terminal(stderr=True)
     monkeypatch.setattr(console, "stderr", lambda: term)
     return term
 
@@ -159,15 +148,13 @@ def test_a_crank_s_damped_amplitudes_note_hangs_at_80_columns(config):
 def test_fcalc_check_s_skipped_line_hangs_at_80_columns(runner, tmp_path, monkeypatch):
     """``fcalc check`` of frame_saw.toml beside a TOML file that is not a scene: its skipped line
     (the file's name and why) wraps under its text on a terminal; the summary follows."""
-    from rich.console import Console
-
     from foundation_calc.cli.app import app
     from foundation_calc.output import check_report
 
     (tmp_path / "frame_saw.toml").write_bytes((CONFIGS / "frame_saw.toml").read_bytes())
     name = "a_tool_s_settings_with_a_long_name_beside_the_scenes.toml"
     (tmp_path / name).write_text("[tool]\nline_length = 100\n")
-    term = Console(force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    term = _recording_terminal()
     monkeypatch.setattr(check_report, "stdout", lambda: term)
     monkeypatch.chdir(tmp_path)
     result = runner.invoke(app, ["check", ".", "--strict"])
@@ -180,12 +167,10 @@ def test_fcalc_check_s_skipped_line_hangs_at_80_columns(runner, tmp_path, monkey
 def test_fcalc_sweep_s_limits_line_wraps_at_80_columns(runner, monkeypatch):
     """The sweep's closing line of limits and detuning (110 characters for frame_saw.toml) wrapped
     only where the terminal cut it: it wraps at words, under its own text."""
-    from rich.console import Console
-
     from foundation_calc.cli.app import app
     from foundation_calc.output import sweep_report
 
-    term = Console(force_terminal=True, width=80, record=True, color_system=None, highlight=False)
+    term = _recording_terminal()
     monkeypatch.setattr(sweep_report, "stdout", lambda: term)
     result = runner.invoke(app, ["sweep", str(CONFIGS / "frame_saw.toml"), "--speed", "150:300:7"])
     assert result.exit_code == 0, result.stderr
