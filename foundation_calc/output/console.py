@@ -105,7 +105,7 @@ _TRAILING_SPACE = r"(?:[ \t]|\x1b\[[0-9;]*m)+$"
 
 
 def strip_trailing_spaces(text: str) -> str:
-    """``text`` without the spaces and tabs that end its lines (style codes among them are kept).
+    r"""``text`` without the spaces and tabs that end its lines (style codes among them are kept).
 
     Rich pads a table's title, and the lines it wraps, to the table's width: in a file or a pipe
     these are only trailing spaces, which ``diff``, ``git`` and editors flag.
