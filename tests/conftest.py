@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import copy
 import os
+import subprocess
 from pathlib import Path
 
 from foundation_calc.cli.app import BLAS_THREAD_VARIABLES
@@ -46,6 +47,28 @@ def closed_form_configs() -> list[Path]:
 def sheet_configs() -> list[Path]:
     """Every shipped scene whose calculation sheet fcalc report makes (all but :func:`crank_on_piles`)."""
     return [p for p in sorted(CONFIGS.glob("*.toml")) if not crank_on_piles(p)]
+
+
+def on_terminal(args, **streams) -> tuple[subprocess.Popen, str]:
+    """Run ``args`` with its stdout on a new pseudo-terminal (and stderr too, unless ``streams``
+    names it); the finished process and what the terminal showed, lines ending in ``\\n``."""
+    pty = pytest.importorskip("pty")
+    main, child = pty.openpty()
+    streams = {"stderr": child, **streams}
+    process = subprocess.Popen(args, stdout=child, **streams)
+    os.close(child)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(main, 65536)
+        except OSError:  # the child closed the terminal
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(main)
+    process.wait()
+    return process, b"".join(chunks).decode("utf-8").replace("\r\n", "\n")
 
 
 def only_input_warnings(stderr: str, config: Path) -> bool:

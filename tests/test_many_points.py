@@ -14,7 +14,7 @@ import tomli_w
 
 from foundation_calc.output.crank_amplitudes import ALL_POINTS_UP_TO
 from foundation_calc.scenes import read_toml
-from tests.conftest import CONFIGS
+from tests.conftest import CONFIGS, on_terminal
 
 POINTS = 40
 
@@ -133,27 +133,12 @@ def test_point_names_must_be_distinct(runner, frame_saw, tmp_path, names):
 def test_the_summary_table_cuts_no_number_on_a_terminal(many_points):
     """At 80 columns on a terminal (a pseudo-terminal here) the summarised tables wrap their
     titles, never a number."""
-    pty = pytest.importorskip("pty")
-    main, child = pty.openpty()
     env = {**os.environ, "COLUMNS": "80", "TERM": "dumb"}
-    process = subprocess.Popen(
-        [sys.executable, "-m", "foundation_calc", "amplitudes", str(many_points)], stdout=child, stderr=subprocess.PIPE, env=env
-    )
-    os.close(child)
-    chunks = []
-    while True:
-        try:
-            chunk = os.read(main, 65536)
-        except OSError:  # the child closed the terminal
-            break
-        if not chunk:
-            break
-        chunks.append(chunk)
-    os.close(main)
-    with process:  # waits, and closes the stderr pipe
+    process, out = on_terminal([sys.executable, "-m", "foundation_calc", "amplitudes", str(many_points)],
+                               stderr=subprocess.PIPE, env=env)
+    with process:  # closes the stderr pipe
         errors = process.stderr.read()
     assert process.returncode == 1, errors
-    out = b"".join(chunks).decode("utf-8")
     assert "…" not in out
     assert "values over their limits" in " ".join(out.split())  # the summary line wraps at 80
     assert max(len(line) for line in out.splitlines()) <= 90  # the tables fit (a few cells wider at most)

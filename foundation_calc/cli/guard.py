@@ -69,18 +69,19 @@ def interruptible():
 
 
 def report_error(exc: FcalcError) -> None:
-    """Print a user-facing error on stderr."""
+    """Print a user-facing error on stderr: one line per problem in a file or a pipe (scripts grep
+    them), wrapped with a hanging indent on a terminal (:class:`~foundation_calc.output.console.Hanging`)."""
     from rich.markup import escape
 
-    from foundation_calc.output.console import stderr
+    from foundation_calc.output.console import Hanging, stderr
 
     err = stderr()
     if isinstance(exc, SceneError):
-        err.print(f"[bold red]error[/]: invalid scene {escape(exc.source)}")
+        err.print(Hanging(f"[bold red]error[/]: invalid scene {escape(exc.source)}", len("error: ")))
         for loc, msg in exc.problems:
-            err.print(f"  {escape(loc) + ': ' if loc else ''}{escape(msg)}", soft_wrap=True)
+            err.print(Hanging(f"  {escape(loc) + ': ' if loc else ''}{escape(msg)}"))
     else:
-        err.print(f"[bold red]error[/]: {escape(str(exc))}", soft_wrap=True)
+        err.print(Hanging(f"[bold red]error[/]: {escape(str(exc))}", len("error: ")))
 
 
 def warn_implausible(scene, source: str = "") -> None:
@@ -93,27 +94,22 @@ def print_warnings(texts, source: str = "") -> None:
     """Print plausibility warnings ``texts`` of the scene read from ``source`` on stderr."""
     if not texts:
         return  # nothing to import or set up: most scenes have no warning
-    from rich.markup import escape
-
-    from foundation_calc.output.console import stderr
+    from foundation_calc.output.console import stderr, warning_line
 
     for text in texts:
-        where = f"{escape(source)}: " if source else ""
-        stderr().print(f"[bold yellow]warning[/]: {where}{escape(text)}", soft_wrap=True)
+        stderr().print(warning_line(f"{source}: {text}" if source else text))
 
 
 def report_internal(text: str) -> None:
     """Print an unexpected exception (a bug in fcalc) on stderr, without a traceback."""
     from rich.markup import escape
 
-    from foundation_calc.output.console import stderr
+    from foundation_calc.output.console import Hanging, stderr
 
-    stderr().print(
-        f"[bold red]internal error[/]: {escape(text)}\n"
-        "  This is a bug in fcalc; please report it with the scene file"
-        " (FCALC_DEBUG=1 shows the traceback).",
-        soft_wrap=True,
-    )
+    err = stderr()
+    err.print(Hanging(f"[bold red]internal error[/]: {escape(text)}", len("internal error: ")))
+    err.print(Hanging("  This is a bug in fcalc; please report it with the scene file"
+                      " (FCALC_DEBUG=1 shows the traceback)."))
 
 
 def error_document(command: str, scene: str, exc: BaseException) -> dict:

@@ -19,7 +19,7 @@ from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
 from foundation_calc.errors import NonFiniteError
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, json_text, stdout, with_version
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, json_text, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -137,12 +137,12 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
                                    ("check", "verdict", "reason")))
     skipped = [f"{scene.source} ({scene.skip_note})" for scene in scenes if scene.skipped]
     if skipped:
-        out.print(Text("skipped: " + ", ".join(skipped)))
-    out.print(
+        out.print(Hanging(Text("skipped: " + ", ".join(skipped)), len("skipped: ")))
+    out.print(Hanging(
         f"{_plural(len(checked), 'scene')}: {_tally(scene_counts(scenes, strict))}"
         f" ({_plural(sum(len(s.runs) for s in checked), 'check')}: {_tally(counts(scenes, strict))})"
         f"{'; warnings fail (--strict)' if strict else ''}; exit code {int(exit_code(scenes, strict))}",
-    )
+    ))
 
 
 def _values_si(values) -> dict:

@@ -100,19 +100,39 @@ def fit_columns(table, width: int) -> None:
             column.max_width = cap
 
 
-@cache
-def stdout() -> Console:
-    """Console for results: full width when not a terminal, and no table cuts a word; on a
-    terminal a table too wide is fitted to it (:func:`fit_columns`)."""
-    import sys
+#: Spaces and tabs ending a line, with any style codes among them (kept) [regular expression].
+_TRAILING_SPACE = r"(?:[ \t]|\x1b\[[0-9;]*m)+$"
 
+
+def strip_trailing_spaces(text: str) -> str:
+    r"""``text`` without the spaces and tabs that end its lines (style codes among them are kept).
+
+    Rich pads a table's title, and the lines it wraps, to the table's width: in a file or a pipe
+    these are only trailing spaces, which ``diff``, ``git`` and editors flag.
+
+    >>> strip_trailing_spaces("Natural frequencies   \n┃ mode ┃\n")
+    'Natural frequencies\n┃ mode ┃\n'
+    """
+    import re
+
+    return re.sub(_TRAILING_SPACE, lambda m: "".join(re.findall(r"\x1b\[[0-9;]*m", m.group())), text, flags=re.M)
+
+
+@cache
+def _console_class():
+    """The class of fcalc's consoles (built on first use: rich is imported only then)."""
     from rich.console import Console
     from rich.table import Table
 
-    class ResultConsole(Console):
-        def on_broken_pipe(self) -> None:
-            """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
-            raise BrokenPipeError
+    class FcalcConsole(Console):
+        """A rich console whose tables cut no word (:func:`keep_words_whole`) and fit a terminal
+        (:func:`fit_columns`); in a file or a pipe (``piped``) its width is unlimited and its lines
+        end without spaces (:func:`strip_trailing_spaces`)."""
+
+        def __init__(self, piped: bool, **kwargs):
+            self.piped = piped
+            kwargs.setdefault("width", UNLIMITED_WIDTH if piped else None)
+            super().__init__(highlight=False, **kwargs)
 
         def print(self, *objects, **kwargs):
             for item in objects:
@@ -120,18 +140,81 @@ def stdout() -> Console:
                     keep_words_whole(item)
                     fit_columns(item, self.width)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
-            super().print(*objects, **kwargs)
+            if not self.piped:
+                super().print(*objects, **kwargs)
+                return
+            with self.capture() as captured:
+                super().print(*objects, **kwargs)
+            try:
+                self.file.write(strip_trailing_spaces(captured.get()))
+                self.file.flush()
+            except BrokenPipeError:
+                self.on_broken_pipe()
 
-    width = None if sys.stdout.isatty() else UNLIMITED_WIDTH
-    return ResultConsole(highlight=False, width=width, emoji=False)  # ":name:" in user text stays text
+    return FcalcConsole
+
+
+@cache
+def stdout() -> Console:
+    """Console for results: on a terminal its tables are fitted to it (:func:`fit_columns`); in a
+    file or a pipe of unlimited width, so that no table is ever squeezed, and its lines end
+    without spaces (:func:`strip_trailing_spaces`). No table cuts a word."""
+    import sys
+
+    class ResultConsole(_console_class()):
+        def on_broken_pipe(self) -> None:
+            """Leave a closed stdout to the CLI, which exits 141 as documented (rich exits 1)."""
+            raise BrokenPipeError
+
+    return ResultConsole(not sys.stdout.isatty(), emoji=False)  # ":name:" in user text stays text
 
 
 @cache
 def stderr() -> Console:
-    """Console for messages; never mixed into JSON on stdout."""
-    from rich.console import Console
+    """Console for messages; never mixed into JSON on stdout. As :func:`stdout`, of unlimited
+    width in a file or a pipe: a message is one line there (:class:`Hanging` wraps it on a
+    terminal only)."""
+    import sys
 
-    return Console(stderr=True, highlight=False)
+    return _console_class()(not sys.stderr.isatty(), stderr=True)
+
+
+class Hanging:
+    """Console text that wraps at words with a hanging indent: its first line at the console's
+    width, the lines after it ``indent`` cells in (by default two more than the line's own leading
+    spaces), so that what starts the line (``error:``, a field's name, a note's name) stands out
+    on the left. Each line of ``text`` (console markup, or a rich ``Text``) is wrapped so; in a
+    file or a pipe, whose width is unlimited, it stays one line."""
+
+    def __init__(self, text, indent: int | None = None):
+        self.text = text
+        self.indent = indent
+
+    def __rich_console__(self, console, options):
+        from rich.text import Text
+
+        text = console.render_str(self.text) if isinstance(self.text, str) else self.text
+        width = options.max_width
+        lines = []
+        for line in text.split("\n", allow_blank=True):
+            lead = len(line.plain) - len(line.plain.lstrip(" "))
+            indent = min(lead + 2 if self.indent is None else self.indent, width // 2)  # half the width stays for words
+            head, *_ = line.wrap(console, width) or [line]
+            rest = line[len(head.plain):]
+            rest = rest[len(rest.plain) - len(rest.plain.lstrip(" ")):]
+            lines.append(head)
+            if rest.plain:
+                lines.extend(Text(" " * indent) + part for part in rest.wrap(console, width - indent))
+        for line in lines:
+            line.rstrip()
+        yield Text("\n").join(lines)
+
+
+def warning_line(text: str) -> Hanging:
+    """A warning for stderr, ``warning: text`` (``text`` plain, not markup)."""
+    from rich.markup import escape
+
+    return Hanging(f"[bold yellow]warning[/]: {escape(text)}", len("warning: "))
 
 
 def verdict_text(outcome: str, strict: bool = False) -> str:

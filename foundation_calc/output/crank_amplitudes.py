@@ -11,7 +11,7 @@ from rich.text import Text
 from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally
 from foundation_calc.output.resonance import rule_document
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, Hanging, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.limits import (
     ALL_POINTS_UP_TO,
@@ -304,33 +304,33 @@ def print_amplitudes_report(
     d, w = report.design, report.omega
     out = stdout()
     machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
-    out.print(
+    out.print(Hanging(
         f"[bold]{escape(scene.name or source)}[/]  speed {units.show('speed', w)} = {fmt(rpm_from_omega(w))} rpm,"
         f" {machine}; y positive downward"
-    )
+    ))
     for a in report.approximations.values():
         note = f" (resonant: {a.nearest}, margin {a.margin:.2g})" if a.resonant else ""
-        out.print(f"  {a.key.replace('_', ' ')}: {a.title}{note}")
+        out.print(Hanging(f"  {a.key.replace('_', ' ')}: {a.title}{note}"))
     for key, why in report.not_applicable.items():
-        out.print(f"  {key.replace('_', ' ')}: {escape(why)}")
+        out.print(Hanging(f"  {key.replace('_', ' ')}: {escape(why)}"))
     if report.resonance is not None:
-        out.print(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}")
+        out.print(Hanging(f"  resonance rule (as fcalc resonance): {escape(report.resonance.statement)}"))
     if report.damping is not None:
         damping = report.damping
         modes = ", ".join(f"{w:.5g} rad/s: ζ = {z:.3g}" for w, z in zip(damping.natural, damping.modal_ratios))
         coupling = f", C_xφ = {fmt(damping.dashpots['C_xphi'])} N s/rad" if "C_xphi" in damping.dashpots else ""
-        out.print(
+        out.print(Hanging(
             f"  damped (base dashpots C_x = {fmt(damping.dashpots['C_x'])} N s/m, C_z = {fmt(damping.dashpots['C_z'])} N s/m,"
             f" C_φ = {fmt(damping.dashpots['C_phi'])} N m s/rad{coupling}); modes of the averaged operator: {modes}"
-        )
+        ))
     if report.exact_info is not None:
         info = report.exact_info
-        out.print(
+        out.print(Hanging(
             f"  exact: {info.harmonics} harmonics (change from {info.harmonics // 2}: {info.harmonic_change:.1e}),"
             f" {info.newton_iterations} Newton step(s), {info.seconds * 1e3:.0f} ms"
-        )
+        ))
         if info.capped is not None:
-            out.print(f"  [yellow]exact: {escape(info.capped)}; its figures are good to about that change[/]")
+            out.print(Hanging(f"  [yellow]exact: {escape(info.capped)}; its figures are good to about that change[/]"))
     out.print(_harmonics_table(report, units))
     if not report.resonant:
         out.print(_points_table(report, units, all_points))

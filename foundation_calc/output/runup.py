@@ -171,10 +171,10 @@ def _motor_table(report: RunupReport, machine: str) -> Table:
 
 def print_warnings(report: RunupReport) -> None:
     """The report's warnings on stderr (also with --json, whose stdout holds only the document)."""
-    from foundation_calc.output.console import stderr
+    from foundation_calc.output.console import stderr, warning_line
 
     for text in report.warnings:
-        stderr().print(f"[bold yellow]warning[/]: {escape(text)}", soft_wrap=True)
+        stderr().print(warning_line(text))
 
 
 def print_runup_report(report: RunupReport, scene, source: str) -> None:

@@ -14,7 +14,7 @@ import numpy as np
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
 from foundation_calc.checks.resonance_rule import bands_text
 from foundation_calc.checks.sweep_status import status_text as row_status_text
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, fmt, stdout
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, stdout
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
@@ -260,10 +260,10 @@ def _print_footer(report, units) -> None:
                          fmt(units.convert("speed", c.zero_order), 6), fmt(units.convert("speed", c.averaged), 6))
         out.print(crit)
     limits = "; ".join(f"{q} {units.show(display_quantity(q), v)}" for q, v in report.limits.items()) or "none"
-    out.print(
+    out.print(Hanging(
         f"limits (x, y of C and of every point): {limits}; \\[limits] detuning = {bands_text(report.detuning)}"
-        " (docs/resonance-rule.md)", soft_wrap=True
-    )
+        " (docs/resonance-rule.md)"
+    ))
 
 
 def print_sweep_summary(count: int, statuses: dict, report, csv_path: str, units) -> None:
@@ -273,7 +273,7 @@ def print_sweep_summary(count: int, statuses: dict, report, csv_path: str, units
     tally = ", ".join(f"{statuses[s]} {s}" for s in STATUS_STYLE if statuses.get(s))
     from rich.markup import escape
 
-    out.print(f"{count} points written to {escape(csv_path)} (CSV, SI units): {tally}", soft_wrap=True)
+    out.print(Hanging(f"{count} points written to {escape(csv_path)} (CSV, SI units): {tally}"))
     _print_footer(report, units)
 
 
