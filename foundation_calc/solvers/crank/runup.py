@@ -25,6 +25,14 @@ On a frequency-dependent soil the structure carries the springs and dashpots at 
 (``Structure.at_frequency``, built by the caller from the scene) and each mode its own frequency
 (:func:`crank_modes`); :mod:`~foundation_calc.solvers.numerics.runup` integrates each harmonic on
 the soil at its own frequency.
+
+A support that couples sway with rocking (a pile group: K_xφ, C_xφ of u_x with θ_y at O) enters
+K and C whole (:func:`support_matrices`), at rest and at every frequency, as the block's run-up
+takes its support's 6 × 6 springs and dashpots at each harmonic's frequency
+(:mod:`~foundation_calc.solvers.block.runup`), never the static springs: a pile group always
+depends on frequency (its dynamic interaction), and on the shipped crank_on_piles.toml its
+springs at the modes' own frequencies move k0 and p2 by 11 % and 37 % from the static springs'.
+The modes are then the plane model's eigen-solve, named by rank as ``fcalc resonance`` names them.
 """
 
 from __future__ import annotations
