@@ -162,12 +162,13 @@ def _structure(scene):
 
         omega = scene.speed.omega_rad_s
         built = block_structure(scene.block(), loads, omega, horizontal, height)
-        return _on_soil(scene, built, lambda w: matrices(scene.block(w))[:0:-1]), names, omega, 0.0
+        return _on_soil(scene, built, lambda w: matrices(scene.block(w))[:0:-1]), names, omega, 0.0  # (C, K)
     design = scene.design(coupled=True)
     built = structure(design, horizontal, height)
     if loads is not None:
         built = with_vendor_loads(built, loads, design.omega)
-    return _on_soil(scene, built, lambda w: support_matrices(scene.design(w, coupled=True))), names, design.omega, mechanism_inertia(design)
+    built = _on_soil(scene, built, lambda w: support_matrices(scene.design(w, coupled=True)))
+    return built, names, design.omega, mechanism_inertia(design)
 
 
 def _on_soil(scene, built, support_at):
