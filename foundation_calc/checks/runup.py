@@ -152,36 +152,40 @@ def _structure(scene):
         design, model = scene.design(), scene.model()
         built, names = structure(design, model)
         return built, names, design.omega, unbalance_inertia(design, model)
-    from foundation_calc.solvers.crank.runup import block_structure, mechanism_inertia, structure, with_vendor_loads
+    from foundation_calc.solvers.crank.runup import block_structure, mechanism_inertia, structure, support_matrices, with_vendor_loads
 
     names = ("C", *(p.name for p in scene.points))
     horizontal, height = [p.horizontal for p in scene.points], [p.height for p in scene.points]
     loads = scene.harmonic_loads()
     if scene.mechanism is None:  # a machine given by its vendor's loads alone
+        from foundation_calc.solvers.crank.loads import matrices
+
         omega = scene.speed.omega_rad_s
-        return _on_soil(scene, block_structure(scene.block(), loads, omega, horizontal, height)), names, omega, 0.0
-    design = scene.design()
+        built = block_structure(scene.block(), loads, omega, horizontal, height)
+        return _on_soil(scene, built, lambda w: matrices(scene.block(w))[:0:-1]), names, omega, 0.0  # (C, K)
+    design = scene.design(coupled=True)
     built = structure(design, horizontal, height)
     if loads is not None:
         built = with_vendor_loads(built, loads, design.omega)
-    return _on_soil(scene, built), names, design.omega, mechanism_inertia(design)
+    built = _on_soil(scene, built, lambda w: support_matrices(scene.design(w, coupled=True)))
+    return built, names, design.omega, mechanism_inertia(design)
 
 
-def _on_soil(scene, built):
+def _on_soil(scene, built, support_at):
     """A crank foundation's structure ``built`` with its scene's modes, the resonance check's
     averaged-inertia k0, p1, p2 (:func:`~foundation_calc.checks.crank_resonance.scene_frequencies`,
-    :func:`~foundation_calc.solvers.crank.runup.crank_modes`), and on a frequency-dependent soil
-    its damping and stiffness at any frequency: the base's springs and dashpots there
-    (:meth:`~foundation_calc.scenes.crank.CrankScene.block`) in place of the static ones."""
+    :func:`~foundation_calc.solvers.crank.runup.crank_modes`), and on a frequency-dependent support
+    its damping and stiffness at any frequency: ``support_at(ω)``, the support's (C, K) there in the
+    crank's x, y, θ (a pile group's sway-rocking K_xφ, C_xφ with the rest, as the block's run-up
+    takes its support's whole 6 × 6 at the harmonic's frequency), in place of the static ones."""
     from foundation_calc.checks.crank_resonance import scene_frequencies
-    from foundation_calc.solvers.crank.loads import matrices
     from foundation_calc.solvers.crank.runup import crank_modes
 
     if scene.support().frequency_dependent:
-        _, _, static = matrices(scene.block())
+        static = support_at(0.0)[0]
 
         def at_frequency(omega):
-            _, K, C = matrices(scene.block(omega))
+            C, K = support_at(omega)
             return built.damping + (C - static), K
 
         built = replace(built, at_frequency=at_frequency)

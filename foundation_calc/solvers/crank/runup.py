@@ -25,6 +25,14 @@ On a frequency-dependent soil the structure carries the springs and dashpots at 
 (``Structure.at_frequency``, built by the caller from the scene) and each mode its own frequency
 (:func:`crank_modes`); :mod:`~foundation_calc.solvers.numerics.runup` integrates each harmonic on
 the soil at its own frequency.
+
+A support that couples sway with rocking (a pile group: K_xφ, C_xφ of u_x with θ_y at O) enters
+K and C whole (:func:`support_matrices`), at rest and at every frequency, as the block's run-up
+takes its support's 6 × 6 springs and dashpots at each harmonic's frequency
+(:mod:`~foundation_calc.solvers.block.runup`), never the static springs: a pile group always
+depends on frequency (its dynamic interaction), and on the shipped crank_on_piles.toml its
+springs at the modes' own frequencies move k0 and p2 by 11 % and 37 % from the static springs'.
+The modes are then the plane model's eigen-solve, named by rank as ``fcalc resonance`` names them.
 """
 
 from __future__ import annotations
@@ -34,12 +42,13 @@ from dataclasses import replace
 import numpy as np
 
 from foundation_calc.errors import ConvergenceError, PhysicsError
-from foundation_calc.solvers.crank.averaged import averaged_operator, block_matrices, mechanism_operator, mode_order
+from foundation_calc.solvers.crank.averaged import averaged_operator, block_matrices, mechanism_operator
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
 from foundation_calc.solvers.crank.frequencies import require_stable_rocking, stability_arguments
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
+from foundation_calc.solvers.crank.plane import in_plane, sway_rocking
 from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Modes, Structure, matrices_at
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
@@ -73,8 +82,8 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     require_stable_rocking(*stability_arguments(design))
     M, C, exact, *_ = averaged_operator(design)
     require_stable_rest(exact, design.a)
-    K = block_matrices(design)[2]
-    if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0:
+    K = support_matrices(design)[1]
+    if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0 and design.C_xphi == 0.0:
         C = np.zeros_like(C)  # the mechanism's mean velocity terms vanish: what is left is round-off
     f1, f2, f3 = (_forcing(design, s) for s in (1.0, 2.0, 3.0))
     w2 = design.omega**2
@@ -89,6 +98,25 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     n = np.arange(HARMONICS + 1)[keep]
     load = RotatingLoad(n.astype(float), A[keep], B[keep])
     return Structure(mass=M, damping=C, stiffness=K, load=load, points=_point_maps(horizontal, height))
+
+
+def support_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray]:
+    """C, K (..., 3, 3) [N s/m, N s, N m s; N/m, N, N m] of the block on its support in the crank's
+    x, y, θ: the zero-order operator's (:func:`~foundation_calc.solvers.crank.averaged.block_matrices`:
+    the base's springs and dashpots at O, the weight's -P h) with a coupled support's K_xφ, C_xφ of
+    u_x with θ_y (:func:`~foundation_calc.solvers.crank.plane.sway_rocking`) carried to C by
+    u_x = x - h θ, Eq. (1) of :mod:`~foundation_calc.solvers.crank.plane`::
+
+        K_xθ += K_xφ,   K_θθ -= 2 h K_xφ      (C alike with C_xφ)
+
+    The design's fields may be arrays (its support at many frequencies): a stack of matrices.
+    """
+    _, C, K = block_matrices(design)
+    coupling = sway_rocking(design.K_xphi, design.C_xphi)
+    if coupling is None:
+        return C, K
+    K_c, C_c = (in_plane(A, design.h) for A in coupling)
+    return C + C_c, K + K_c
 
 
 def require_stable_rest(K, a) -> float:
@@ -167,17 +195,20 @@ MODE_NAMES = ("k0", "p1", "p2")
 def crank_modes(built: Structure, frequencies: NaturalFrequencies) -> Modes:
     """The modes k0, p1, p2 of ``built`` at the natural frequencies ``frequencies`` [rad/s] its
     scene's resonance check reports, ascending: mode j's shape is the eigenvector of
-    K(p_j) v = p² M v whose motion is k0 (the most vertical) or p1, p2 (the others, lower first)
-    (:func:`~foundation_calc.solvers.crank.averaged.mode_order`), with K, C at p_j on a
-    frequency-dependent soil, and its damping ratio φᵀ C(p_j) φ / (2 p_j)."""
+    K(p_j) v = p² M v whose p is nearest p_j, with K, C at p_j on a frequency-dependent support,
+    and its damping ratio φᵀ C(p_j) φ / (2 p_j). p_j is a root of that very problem (ω = p(K(ω)),
+    to the fixed point's tolerance; on static springs p_j of K, M̄ itself), so the shape is the
+    mode's whichever way the check names it: by its dominant motion on the paper's three springs
+    (:func:`~foundation_calc.solvers.crank.averaged.mode_order`), by its rank on a support that
+    couples sway with rocking (as the resonance check names a pile group's modes)."""
     from scipy.linalg import eigh
 
     p = np.array([float(getattr(frequencies, name)) for name in MODE_NAMES])
     C, K = matrices_at(built, p)
     shapes = np.empty((3, 3))
     for j in range(3):
-        _, v = eigh(K[j], built.mass)
-        shapes[:, j] = v[:, mode_order(built.mass, v)[j]]
+        squared, v = eigh(K[j], built.mass)
+        shapes[:, j] = v[:, np.argmin(np.abs(squared - p[j] ** 2))]
     zeta = np.einsum("nj,jnm,mj->j", shapes, C, shapes) / (2.0 * p)
     order = np.argsort(p)
     return Modes(p[order], shapes[:, order], zeta[order], tuple(MODE_NAMES[j] for j in order))
@@ -194,5 +225,5 @@ def mechanism_inertia(design: CrankDesign) -> float:
     return float(np.mean(rod.m * (motion.dp**2).sum(axis=0) + rod.m * rod.rho**2 * dpsi**2))
 
 
-__all__ = ["MODE_NAMES", "block_structure", "crank_modes", "mechanism_inertia", "require_stable_rest", "structure", "vendor_load",
-           "with_vendor_loads"]
+__all__ = ["MODE_NAMES", "block_structure", "crank_modes", "mechanism_inertia", "require_stable_rest", "structure",
+           "support_matrices", "vendor_load", "with_vendor_loads"]
