@@ -152,7 +152,8 @@ def _structure(scene):
         design, model = scene.design(), scene.model()
         built, names = structure(design, model)
         return built, names, design.omega, unbalance_inertia(design, model)
-    from foundation_calc.solvers.crank.runup import block_structure, mechanism_inertia, structure, support_matrices, with_vendor_loads
+    from foundation_calc.solvers.crank.averaged import block_matrices
+    from foundation_calc.solvers.crank.runup import block_structure, mechanism_inertia, structure, with_vendor_loads
 
     names = ("C", *(p.name for p in scene.points))
     horizontal, height = [p.horizontal for p in scene.points], [p.height for p in scene.points]
@@ -167,7 +168,7 @@ def _structure(scene):
     built = structure(design, horizontal, height)
     if loads is not None:
         built = with_vendor_loads(built, loads, design.omega)
-    built = _on_soil(scene, built, lambda w: support_matrices(scene.design(w, coupled=True)))
+    built = _on_soil(scene, built, lambda w: block_matrices(scene.design(w, coupled=True))[1:])
     return built, names, design.omega, mechanism_inertia(design)
 
 

@@ -27,7 +27,7 @@ On a frequency-dependent soil the structure carries the springs and dashpots at 
 the soil at its own frequency.
 
 A support that couples sway with rocking (a pile group: K_xφ, C_xφ of u_x with θ_y at O) enters
-K and C whole (:func:`support_matrices`), at rest and at every frequency, as the block's run-up
+K and C whole (:func:`~foundation_calc.solvers.crank.averaged.block_matrices`), at rest and at every frequency, as the block's run-up
 takes its support's 6 × 6 springs and dashpots at each harmonic's frequency
 (:mod:`~foundation_calc.solvers.block.runup`), never the static springs: a pile group always
 depends on frequency (its dynamic interaction), and on the shipped crank_on_piles.toml its
@@ -48,7 +48,6 @@ from foundation_calc.solvers.crank.frequencies import require_stable_rocking, st
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
-from foundation_calc.solvers.crank.plane import in_plane, sway_rocking
 from foundation_calc.solvers.numerics.runup import NEGLIGIBLE, Modes, Structure, matrices_at
 from foundation_calc.solvers.numerics.sweep_response import RotatingLoad
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
@@ -82,7 +81,7 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     require_stable_rocking(*stability_arguments(design))
     M, C, exact, *_ = averaged_operator(design)
     require_stable_rest(exact, design.a)
-    K = support_matrices(design)[1]
+    K = block_matrices(design)[2]
     if design.C_x == 0.0 and design.C_z == 0.0 and design.C_phi == 0.0 and design.C_xphi == 0.0:
         C = np.zeros_like(C)  # the mechanism's mean velocity terms vanish: what is left is round-off
     f1, f2, f3 = (_forcing(design, s) for s in (1.0, 2.0, 3.0))
@@ -98,25 +97,6 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
     n = np.arange(HARMONICS + 1)[keep]
     load = RotatingLoad(n.astype(float), A[keep], B[keep])
     return Structure(mass=M, damping=C, stiffness=K, load=load, points=_point_maps(horizontal, height))
-
-
-def support_matrices(design: CrankDesign) -> tuple[np.ndarray, np.ndarray]:
-    """C, K (..., 3, 3) [N s/m, N s, N m s; N/m, N, N m] of the block on its support in the crank's
-    x, y, θ: the zero-order operator's (:func:`~foundation_calc.solvers.crank.averaged.block_matrices`:
-    the base's springs and dashpots at O, the weight's -P h) with a coupled support's K_xφ, C_xφ of
-    u_x with θ_y (:func:`~foundation_calc.solvers.crank.plane.sway_rocking`) carried to C by
-    u_x = x - h θ, Eq. (1) of :mod:`~foundation_calc.solvers.crank.plane`::
-
-        K_xθ += K_xφ,   K_θθ -= 2 h K_xφ      (C alike with C_xφ)
-
-    The design's fields may be arrays (its support at many frequencies): a stack of matrices.
-    """
-    _, C, K = block_matrices(design)
-    coupling = sway_rocking(design.K_xphi, design.C_xphi)
-    if coupling is None:
-        return C, K
-    K_c, C_c = (in_plane(A, design.h) for A in coupling)
-    return C + C_c, K + K_c
 
 
 def require_stable_rest(K, a) -> float:
@@ -226,4 +206,4 @@ def mechanism_inertia(design: CrankDesign) -> float:
 
 
 __all__ = ["MODE_NAMES", "block_structure", "crank_modes", "mechanism_inertia", "require_stable_rest", "structure",
-           "support_matrices", "vendor_load", "with_vendor_loads"]
+           "vendor_load", "with_vendor_loads"]
