@@ -30,7 +30,7 @@ import scipy.linalg
 
 import foundation_calc as fc
 from foundation_calc.cli.app import app
-from foundation_calc.scenes import load_scene
+from foundation_calc.scenes import load_scene, parse_scene
 from foundation_calc.solvers.constants import GRAVITY
 from tests.conftest import CONFIGS
 
@@ -231,3 +231,33 @@ def test_isolators_too_close_for_the_weight_tip_the_block_over(runner, tmp_path)
     result = runner.invoke(app, ["resonance", str(path)])
     assert result.exit_code == 3, result.stdout + result.stderr
     assert "tips over about x" in result.stderr and "isolators" in result.stderr
+
+
+def test_a_catalogues_damping_ratio_is_the_loss_factor_twice_it():
+    """ξ of a catalogue is η = 2 ξ: the same response, and each mode's damping ratio ξ where the
+    springs alone store its energy (the weight's tilt, here under 2 % of the rocking springs, aside)."""
+    as_ratio = fc.amplitudes(_document(isolation={"damping_ratio": 0.03})).to_dict()
+    as_loss = fc.amplitudes(_document(isolation={"loss_factor": 0.06})).to_dict()
+    for name, point in as_ratio["points"].items():
+        for a in "xyz":
+            assert math.isclose(point["displacement_peak"][a], as_loss["points"][name]["displacement_peak"][a], rel_tol=1e-12)
+    np.testing.assert_allclose([m["damping_ratio"] for m in as_ratio["modes"]], 0.03, rtol=0.02)
+
+
+def load_scene_document(document):
+    return parse_scene(document, "isolators.toml")
+
+
+def test_a_spring_rate_typed_in_N_per_mm_is_warned_of():
+    isolators = _moved(i3={"stiffness": [300.0, 300.0, 400.0]})
+    warnings = load_scene_document(_document(isolators=isolators)).plausibility_warnings()
+    assert any(w.startswith("isolators[3].stiffness[0] = 300 N/m") and "N/mm" in w for w in warnings), warnings
+    assert load_scene_document(SHIPPED).plausibility_warnings() == []
+
+
+def test_a_run_up_on_hysteretic_isolators_is_damped_at_the_modes():
+    """A loss factor's dashpots η K/|ω| vanish at rest only: the run-up, integrated on the
+    isolators at each harmonic's frequency, is damped and not warned of; undamped springs are."""
+    assert fc.runup(ISOLATED, time=1.0, down=1.0).to_dict()["warnings"] == []
+    undamped = fc.runup(_document(isolation={"damping_ratio": 0.0}), time=1.0, down=1.0).to_dict()["warnings"]
+    assert len(undamped) == 1 and "undamped" in undamped[0]
