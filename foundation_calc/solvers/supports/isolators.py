@@ -97,7 +97,7 @@ class Isolators:
 
     label = "isolators"
     method = "isolators"
-    unscaled = "[isolators] are not sampled: their springs are the design's, not a soil's modulus"
+    unscaled = "[[isolators]]: their springs are the rates a catalogue gives, not a soil's modulus to scale"
     #: the base stands on the isolators, not on soil: no bearing pressure (:func:`~.base.bears_on_soil`)
     base_bears = False
     #: why ``fcalc design`` does not size a block on them (:func:`~.base.unsized`)
