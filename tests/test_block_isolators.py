@@ -116,6 +116,9 @@ def test_static_deflections_carry_the_weight():
     np.testing.assert_allclose(found["static_deflection"], expected, rtol=1e-9)
     assert math.isclose(sum(found["static_load"]), W, rel_tol=1e-9)
     assert 0.015 < min(expected) and max(expected) < 0.025  # the catalogue's 25 mm series, under its rating
+    grid = load_scene(ISOLATED).support().sheet(None, ())[0]  # the sheet's isolators table
+    assert len(grid.head) == 1 + grid.values.shape[1] and grid.head[-2:] == ("δ_i [mm]", "load [kN]")
+    np.testing.assert_allclose(grid.values[:, 3], expected * 1e3, rtol=1e-9)
 
 
 def test_amplitude_at_a_point_is_the_complex_solve_with_hysteretic_springs():

@@ -191,7 +191,7 @@ class Isolators:
         """The twelve springs as a table, with :attr:`weight` each isolator's static deflection and
         load, and K at O by (1)."""
         names = tuple(f"r_{i + 1} = ({p[0]:g}, {p[1]:g}, {p[2]:g}) m" for i, p in enumerate(np.asarray(self.points)))
-        heads, values = ("c_i1 (x)", "c_i2 (y)", "c_i3 (z)"), np.asarray(self.stiffness) * 1e-6
+        heads, values = ("isolator", "c_i1 (x)", "c_i2 (y)", "c_i3 (z)"), np.asarray(self.stiffness) * 1e-6
         if (static := self.static()) is not None:
             heads, values = heads + ("δ_i [mm]", "load [kN]"), np.column_stack([values, static[0] * 1e3, static[1] * 1e-3])
         return [Grid("Isolator springs [MN/m]", heads, names, values),
