@@ -99,9 +99,9 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     soil: BlockSoil | None = quantity(
         "-", "-", "the soil under the block (its method and data); leave it out for a block on [[isolators]]", None
     )
-    isolators: list[BlockIsolator] | None = quantity(
+    isolators: list[BlockIsolator] = quantity(
         "-", "-", "spring isolators under the block instead of soil (an inertia block), one table per isolator;"
-        " with [isolation]", None
+        " with [isolation]", []
     )
     isolation: Isolation | None = quantity(
         "-", "-", "the damping of the [[isolators]]: loss_factor or damping_ratio, and/or time_constant", None
@@ -146,7 +146,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     def _soil_or_isolators(self):
         """One support: ``[soil]`` (with ``[piles]`` if any), or ``[[isolators]]`` with ``[isolation]``
         that carry the block (:func:`~foundation_calc.scenes.block_isolators.isolators_error`)."""
-        if self.isolators is None:
+        if not self.isolators:
             if self.soil is None:
                 raise ValueError("give [soil] (the soil under the block) or [[isolators]] with [isolation]"
                                  " (spring isolators under it)")
