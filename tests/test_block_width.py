@@ -49,9 +49,11 @@ def test_the_shipped_block_scenes_are_found():
 @pytest.mark.parametrize("command", COMMANDS)
 @pytest.mark.parametrize("config", BLOCKS, ids=lambda p: p.stem)
 def test_every_line_fits_80_columns(terminal, runner, command, config):
-    machine = read_toml(config)["machines"][0]["name"]
+    scene = read_toml(config)
+    machine = scene["machines"][0]["name"]
     result = runner.invoke(app, [command, str(config), *(a.format(machine=machine) for a in COMMANDS[command])])
-    assert result.exit_code in (0, 1), result.output
+    refused = command == "design" and "isolators" in scene  # by name, exit 3 (tests/test_block_isolators.py)
+    assert result.exit_code in ((3,) if refused else (0, 1)), result.output
     wide = [line for line in result.stdout.splitlines() if cell_len(line) > WIDTH]
     assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
     assert "…" not in result.stdout

@@ -35,7 +35,7 @@ def test_the_sheets_6dof_solve_is_the_checks(path):
     scene = load_scene(path)
     doc = _amplitudes(scene)
     model, excitations = scene.model(), scene.excitations()
-    impedance = scene.soil_impedance if scene.soil.frequency_dependent else None  # as the sheet takes it
+    impedance = scene.soil_impedance if scene.support().frequency_dependent else None  # as the sheet takes it
     own = [m["frequency"]["omega"] for m in doc["modes"]] if impedance is not None else None
     solve = block_solve(model, excitations, impedance, own)
     for mode, p, zeta in zip(doc["modes"], solve.frequencies, solve.damping):

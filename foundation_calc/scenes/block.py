@@ -11,6 +11,7 @@ from typing import Literal
 
 from pydantic import field_validator, model_validator
 
+from foundation_calc.scenes.block_isolators import BlockIsolator, Isolation, isolators_error
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
 from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.block_soil import BlockSoil
@@ -95,7 +96,16 @@ class BlockScene(Plausible, OnSoil, SceneModel):
     )
     block: BlockBody
     machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)
-    soil: BlockSoil
+    soil: BlockSoil | None = quantity(
+        "-", "-", "the soil under the block (its method and data); leave it out for a block on [[isolators]]", None
+    )
+    isolators: list[BlockIsolator] = quantity(
+        "-", "-", "spring isolators under the block instead of soil (an inertia block), one table per isolator;"
+        " with [isolation]", []
+    )
+    isolation: Isolation | None = quantity(
+        "-", "-", "the damping of the [[isolators]]: loss_factor or damping_ratio, and/or time_constant", None
+    )
     piles: BlockPiles | None = quantity(
         "-", "-", "a pile group under the block, its base the rigid cap: the group's springs and dashpots replace"
         " the footing's ([soil] gives the soil around the piles); optional", None
@@ -133,7 +143,45 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         return points
 
     @model_validator(mode="after")
+    def _soil_or_isolators(self):
+        """One support: ``[soil]`` (with ``[piles]`` if any), or ``[[isolators]]`` with ``[isolation]``
+        that carry the block (:func:`~foundation_calc.scenes.block_isolators.isolators_error`)."""
+        if not self.isolators:
+            if self.soil is None:
+                raise ValueError("give [soil] (the soil under the block) or [[isolators]] with [isolation]"
+                                 " (spring isolators under it)")
+            if self.isolation is not None:
+                raise ValueError("[isolation] is the damping of [[isolators]]: give the isolators, or remove it")
+            return self
+        if self.soil is not None or self.piles is not None:
+            given = "[soil]" if self.piles is None else "[soil] and [piles]"
+            raise ValueError(f"give [[isolators]] or {given}, not both: the block stands on one support")
+        if self.isolation is None:
+            raise ValueError("[[isolators]] need [isolation] with loss_factor [-] or damping_ratio [-] (η = 2 ξ),"
+                             " and/or time_constant [s]; give damping_ratio = 0 for undamped springs")
+        if self.block.embedment:
+            raise ValueError(f"block.embedment = {self.block.embedment:g} m: a block on [[isolators]] is not"
+                             " embedded in soil; remove the key")
+        if (error := isolators_error(self.isolators, *self.isolated_weight())) is not None:
+            raise ValueError(error)
+        return self
+
+    def isolated_weight(self) -> tuple[float, list[float]]:
+        """(W [N], r_G [m] from O): the weight of the block with every machine (their time-averaged
+        mass properties) and its centre of mass."""
+        import numpy as np
+
+        from foundation_calc.solvers.constants import GRAVITY
+
+        masses, centres, _ = self._bodies()
+        m = float(sum(masses))
+        cog = sum(mi * np.asarray(c, dtype=float) for mi, c in zip(masses, centres)) / m
+        return m * GRAVITY, cog.tolist()
+
+    @model_validator(mode="after")
     def _embedment_has_its_method(self):
+        if self.soil is None:
+            return self
         if self.block.embedment and self.soil.method_used not in FREQUENCY_DEPENDENT_METHODS:
             raise ValueError(
                 f"block.embedment = {self.block.embedment:g} m is taken by soil methods 'gazetas' and 'pais_kausel'"
@@ -205,7 +253,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                         f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
                         " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
                         " as the crank radius, or the rod measured between other points?")))
-        return found + stratum_remarks(self.soil, L, B)
+        return found + ([] if self.soil is None else stratum_remarks(self.soil, L, B))
 
     def stable_model(self):
         """:meth:`model` of the scene as it is, for the checks.
@@ -232,10 +280,15 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                 f" exceed the overturning moment of the weight W z_G = {tilt:.4g} N m per rad"
                 f" (K_r{axis}/(W z_G) - 1 = {spring / tilt - 1.0:.4g})")
         weight = ("machines[].mass", "machines[].cog")
-        culprits = [x for x in self.plausibility_findings() if x.key not in self.soil.not_rocking
-                    and (x.key.startswith(("soil.", "block.", "V_s")) or key_pattern(x.key) in weight)]
+        not_rocking = () if self.soil is None else self.soil.not_rocking
+        culprits = [x for x in self.plausibility_findings() if x.key not in not_rocking
+                    and (x.key.startswith(("soil.", "block.", "V_s", "isolators")) or key_pattern(x.key) in weight)]
+        lower = "lower the centre of mass (block.height, machines[].cog)"
+        if self.soil is None:
+            raise culprit_error(text, culprits, "isolators", "spread the isolators wider (isolators[].position) or stiffen"
+                                f" them (isolators[].stiffness k_z), or {lower}")
         key = self.soil.rocking_key
-        raise culprit_error(text, culprits, key, f"stiffen {key}, or lower the centre of mass (block.height, machines[].cog)")
+        raise culprit_error(text, culprits, key, f"stiffen {key}, or {lower}")
 
     def _bodies(self, block=None, machine_cogs=None):
         """(masses, cogs, central inertias) of the block, every machine and every machine's parts
@@ -254,8 +307,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         return masses, centres, inertias
 
     def support(self, base=None, block=None, machine_cogs=None):
-        """What carries the block (:func:`~foundation_calc.solvers.supports.support_of`: a pile group
-        on ``[piles]``, else the footing on ``[soil]``), under the body of :meth:`model`'s masses;
+        """What carries the block (:func:`~foundation_calc.solvers.supports.support_of`: its
+        ``[[isolators]]``, a pile group on ``[piles]``, else the footing on ``[soil]``), under the body of :meth:`model`'s masses;
         ``base``, ``block`` and ``machine_cogs`` as :meth:`model` takes them (a batch of candidates)."""
         import numpy as np
 

@@ -176,6 +176,11 @@ RANGES: dict[str, PlausibleRange] = {
         (Slip("MPa", 1e6), Slip("GPa", 1e9)),
         basis="timber about 10 GPa (from 5), concrete 27-44 GPa, steel 210 GPa",
     ),
+    "isolator_stiffness": PlausibleRange(
+        "spring rates of machine isolators", "N/m", 2e3, 2e8, _JUDGEMENT, (Slip("N/mm (or kN/m)", 1e3),), slip_beyond=1.0,
+        basis="small spring and elastomer mounts of fans and pumps (a few kN/m) to the spring units under"
+        " turbine tables and hammers (about 1e8 N/m)",
+    ),
     "amplitude_limit": PlausibleRange(
         "peak displacement limits of block foundations", "m", 1e-6, 5e-3, _JUDGEMENT, (_MM, _MICRON),
         basis="limits of ACI 351.3R-18 and Barkan (0.1-0.2 mm for low-speed machines), with room either way",

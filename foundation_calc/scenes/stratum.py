@@ -26,7 +26,7 @@ def stratum_error(soil, D: float, embedment_key: str) -> str | None:
 def shallow(soil, L, B):
     """Where the stratum is shallower than H_OVER_R_MIN × R, R = sqrt(L B/π), under a base L × B [m]
     (floats, or arrays over a batch of candidate blocks: the result broadcasts); False everywhere
-    without a stratum.
+    without a stratum (or without soil: ``soil`` None, a block on isolators).
 
     >>> from types import SimpleNamespace
     >>> import numpy as np
@@ -37,7 +37,7 @@ def shallow(soil, L, B):
 
     from foundation_calc.solvers.soil.stratum import H_OVER_R_MIN
 
-    H = soil.stratum_depth
+    H = getattr(soil, "stratum_depth", None)
     if H is None:
         return np.zeros(np.broadcast(L, B).shape, dtype=bool)
     return H < H_OVER_R_MIN * np.sqrt(np.asarray(L, dtype=float) * B / math.pi)

@@ -17,8 +17,7 @@ def block_accuracy_section(scene, periodic=()) -> Section:
     """The statements of the accuracy of a block sheet's judged numbers (module docstring);
     ``periodic``: the amplitudes document's ``periodic_inertia`` entries, the first approximation's
     error for each machine whose parts have angle-dependent inertia."""
-    soil = getattr(scene, "soil", None)
-    dependent = soil is not None and getattr(soil, "frequency_dependent", False)
+    dependent = scene.support().frequency_dependent
     several = len(scene.machines) > 1
     solve = ("Limits checked on the steady state of Eq. (1) under Methods: one complex solve"
              " (K − Ω² M + i Ω C) Z = Q_n per order of each machine, ")

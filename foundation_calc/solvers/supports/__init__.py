@@ -2,7 +2,9 @@
 
 One interface (:class:`~.base.Support`), one module per support kind (:mod:`.footing`: a footing
 on a soil method, surface or embedded, on a half-space or a stratum; :mod:`.piles`: a pile group
-under a rigid cap; :mod:`.plane_footing`: the crank foundation's footing in the paper's symbols),
+under a rigid cap; :mod:`.isolators`: spring isolators at points of the body, the platform's and
+a block's on ``[[isolators]]``; :mod:`.plane_footing`: the crank foundation's footing in the
+paper's symbols),
 in the spirit of ROSS's bearing elements: the body assembles whatever its support gives, and the
 checks and the documents read the support only through the interface.
 
@@ -20,7 +22,7 @@ all, so that ``fcalc design`` knows a key before it reads a scene.
 from __future__ import annotations
 
 #: The shipped supports' modules, asked in this order (the footing takes every scene: last).
-SHIPPED = ("piles", "plane_footing", "footing")
+SHIPPED = ("isolators", "piles", "plane_footing", "footing")
 
 #: The builders :func:`register` added, newest first.
 BUILDERS: list = []

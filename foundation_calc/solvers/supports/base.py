@@ -166,6 +166,7 @@ class Support(Protocol):
     # Optional: def not_checked(self, limits) -> tuple[str, ...], what the sheet's "not checked"
     # row says of the support (:func:`not_checked`; without it, :data:`NOT_CHECKED`).
     # Optional: base_bears: bool, whether the base bears on the soil (:func:`bears_on_soil`; without it, True).
+    # Optional: unsized: (scene key, why) when ``fcalc design`` cannot size a block on it (:func:`unsized`).
 
 
 @dataclass(frozen=True)
@@ -277,5 +278,12 @@ def bears_on_soil(support) -> bool:
     return bool(getattr(support, "base_bears", True))
 
 
+def unsized(support) -> tuple[str, str] | None:
+    """(the scene key that names it, why) when ``fcalc design`` cannot size a block on ``support``
+    (its own ``unsized``: the isolators, whose places and springs a resized block does not carry
+    along), else None."""
+    return getattr(support, "unsized", None)
+
+
 __all__ = ["MOTIONS", "NOT_CHECKED", "SIZING_HOOKS", "Assumption", "AtO", "FrequencyTable", "SizeFindings", "Sizing",
-           "SoilSection", "Support", "Validity", "Variable", "bears_on_soil", "not_checked", "sizing"]
+           "SoilSection", "Support", "Validity", "Variable", "bears_on_soil", "not_checked", "sizing", "unsized"]
