@@ -32,8 +32,9 @@ def mechanism_configs() -> list[Path]:
 
 def crank_on_piles(path: Path) -> bool:
     """Whether ``path`` is a crank scene on [piles], whose sway-rocking coupling the paper's closed forms
-    do not take: its resonance, amplitudes and check are the plane model's, and fcalc sweep, runup,
-    soil, report and design refuse it (exit 3; tests/test_crank_piles.py)."""
+    do not take: its resonance, amplitudes and check are the plane model's, fcalc soil shows the group
+    in the plane (tests/test_crank_piles_soil.py), and fcalc sweep, runup, report and design refuse it
+    (exit 3; tests/test_crank_piles.py)."""
     data = read_toml(path)
     return data.get("kind") == "crank_foundation" and "piles" in data
 

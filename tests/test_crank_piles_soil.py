@@ -122,7 +122,8 @@ def _plane_at_c(scene, row: dict, z_G: float) -> np.ndarray:
 
 def test_the_frequencies_are_an_eigen_solve_of_the_tables_springs(scene, soil):
     """Each printed k0, p1, p2 is a natural frequency of the plane's 3 × 3 on the table's springs at
-    that mode (module docstring); the static ones of the springs at rest. They are resonance's."""
+    that mode (module docstring); the static ones of the springs at rest. They are resonance's, and
+    so is the warning that a0 leaves the piles' fitted range."""
     M, z_G = _mean_mass(scene)
     frequencies = soil["in_plane"]["natural_frequencies"]
     for row, mode in zip(soil["in_plane"]["at_modes"], ("k0", "p1", "p2")):
@@ -132,12 +133,15 @@ def test_the_frequencies_are_an_eigen_solve_of_the_tables_springs(scene, soil):
     static = np.sqrt(np.sort(eigvals(_plane_at_c(scene, soil["in_plane"]["at_frequencies"][0], z_G), M).real))
     found = soil["in_plane"]["static_frequencies"]
     assert sorted(found.values()) == pytest.approx(static, rel=1e-9)
-    assert frequencies == pytest.approx(fc.resonance(read_toml(CONFIG)).to_dict()["natural_frequencies"], rel=1e-12)
+    resonance = fc.resonance(read_toml(CONFIG)).to_dict()
+    assert frequencies == pytest.approx(resonance["natural_frequencies"], rel=1e-12)
+    assert soil["soil_validity"] == resonance["soil_validity"] and soil["soil_validity"]["beyond"]  # p2: a0 = 2.85
 
 
 def test_the_json_keeps_the_crank_shape_and_says_why_no_methods(soil):
     """The crank's keys (methods empty), the piles' own table as the block's, and one line why."""
-    assert {"scene", "method", "total_mass", "base", "methods", "warnings", "stratum", "piles", "sample"} <= set(soil)
+    assert {"scene", "method", "total_mass", "base", "methods", "warnings", "stratum", "piles", "sample",
+            "comparison", "soil_validity", "in_plane"} <= set(soil)
     assert soil["methods"] == {} and soil["method"] == "piles" and soil["sample"] is None
     assert "for footings" in soil["comparison"]
     assert [r["at"] for r in soil["piles"]] == ["static", "ω, machine"]

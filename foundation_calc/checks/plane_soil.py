@@ -45,13 +45,16 @@ class PlaneAt:
 class PlaneSoil:
     """``fcalc soil`` of a crank scene on a support: ``method`` its label; ``columns`` at rest and at
     each n ω of :data:`ORDERS`; ``modes`` at k0, p1, p2, each at its own frequency; ``frequencies``
-    and ``static_frequencies`` k0, p1, p2 [rad/s] on those springs and on the springs at rest."""
+    and ``static_frequencies`` k0, p1, p2 [rad/s] on those springs and on the springs at rest;
+    ``validity`` the support's a0 at the modes and judged orders against its fitted range
+    (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)."""
 
     method: str
     columns: tuple[PlaneAt, ...]
     modes: tuple[PlaneAt, ...]
     frequencies: dict[str, float]
     static_frequencies: dict[str, float]
+    validity: object
 
 
 def _in_plane(column: SoilAt, name: str) -> PlaneAt:
@@ -67,24 +70,24 @@ def _in_plane(column: SoilAt, name: str) -> PlaneAt:
 
 def plane_soil(scene) -> PlaneSoil:
     """The support's springs and dashpots in the plane and the one model's frequencies (module
-    docstring) of a crank scene with a mechanism; PhysicsError (naming ``mechanism``) for a machine
-    given by its loads only, whose plane model is the paper's uncoupled block."""
-    from foundation_calc.checks.crank_resonance import design_frequencies, scene_design_frequencies
+    docstring) of a crank scene with a mechanism, and the support's validity at the modes and the
+    orders the resonance rule judges, as ``fcalc resonance`` gives it
+    (:func:`~foundation_calc.checks.soil_validity.crank_validity`); PhysicsError for a machine given
+    by its loads only, whose plane model is the paper's uncoupled block."""
+    from foundation_calc.checks.crank_resonance import scene_resonances_as_given
+    from foundation_calc.checks.soil_validity import crank_validity
     from foundation_calc.solvers.crank.resonance import MODE_NAMES
 
     support = scene.support()
-    found = scene_design_frequencies(scene)
-    if found is None:  # a support whose springs do not depend on frequency
-        averaged = static = design_frequencies(scene.design(coupled=True))[1]
-    else:
-        _, averaged, static = found
+    resonance = scene_resonances_as_given(scene)
+    averaged, static = resonance.averaged, resonance.static or resonance.averaged  # static: None if not frequency-dependent
     omega = scene.speed.omega_rad_s
     modes = {mode: float(getattr(averaged, mode)) for mode in MODE_NAMES}
     entries = [("static", "", None, 0.0), *(("order", f"{n}ω" if n > 1 else "ω", None, n * omega) for n in ORDERS)]
     entries += [("mode", name, mode, modes[mode]) for mode, name in MODE_NAMES.items()]
     at = [_in_plane(column, support.label) for column in support_at(support, entries)]
     return PlaneSoil(support.label, tuple(at[:1 + len(ORDERS)]), tuple(at[1 + len(ORDERS):]), modes,
-                     {mode: float(getattr(static, mode)) for mode in MODE_NAMES})
+                     {mode: float(getattr(static, mode)) for mode in MODE_NAMES}, crank_validity(scene, resonance))
 
 
 __all__ = ["DASHPOTS", "ORDERS", "SPRINGS", "PlaneAt", "PlaneSoil", "plane_soil"]

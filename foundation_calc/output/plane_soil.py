@@ -32,10 +32,13 @@ def _at_document(at) -> dict:
 
 def plane_document(report) -> dict:
     """The keys a crank scene on a support adds to the soil document (:func:`~foundation_calc.output.soil.soil_document`'s
-    shape, with no ``methods``): ``comparison``, why none; ``in_plane``, the springs and dashpots at
-    each frequency and the natural frequencies [rad/s]."""
+    shape, with no ``methods``): ``comparison``, why none; ``soil_validity``, as ``fcalc resonance``'s;
+    ``in_plane``, the springs and dashpots at each frequency and the natural frequencies [rad/s]."""
+    from foundation_calc.output.notes import soil_validity_document
+
     return {
         "comparison": not_compared(report.method),
+        "soil_validity": soil_validity_document(report.validity),
         "in_plane": {
             "at_frequencies": [_at_document(a) for a in report.columns],
             "at_modes": [_at_document(a) for a in report.modes],
@@ -45,9 +48,10 @@ def plane_document(report) -> dict:
     }
 
 
-def _rows(columns) -> list:
-    """f [Hz], a0 (where the support has one), then the plane's springs and dashpots at ``columns``."""
-    rows = [("f", "Hz", [hz_from_omega(c.column.omega) for c in columns])]
+def _rows(columns, *after_f) -> list:
+    """f [Hz], the rows ``after_f``, a0 (where the support has one), then the plane's springs and
+    dashpots at ``columns``."""
+    rows = [("f", "Hz", [hz_from_omega(c.column.omega) for c in columns]), *after_f]
     rows += [("a0", "-", [c.column.a0 for c in columns])] if all(c.column.a0 is not None for c in columns) else []
     return rows + [(label, unit, [c.values[key] * scale for c in columns]) for key, label, unit, scale in PLANE_ROWS]
 
@@ -55,6 +59,7 @@ def _rows(columns) -> list:
 def print_plane_soil(report, scene, source: str) -> None:
     """The tables of ``fcalc soil`` for a crank scene on a support (module docstring)."""
     from foundation_calc.output.block_soil import print_frequencies, print_rest_note
+    from foundation_calc.output.notes import print_soil_validity
     from foundation_calc.output.soil import print_heading, print_section, section_of
 
     out = stdout()
@@ -63,12 +68,12 @@ def print_plane_soil(report, scene, source: str) -> None:
     print_section(section_of(scene))
     print_frequencies(f"Springs and dashpots of the {report.method} in the plane at O (u_x, u_z, θ_y; K_xφ, C_xφ the"
                       " sway-rocking coupling) at rest and at the speed's harmonics n ω", report.columns, _rows)
-    static = dict(zip(report.static_frequencies, map(hz_from_omega, report.static_frequencies.values())))
+    static = report.static_frequencies
     print_frequencies("Natural frequencies k0, p1, p2 of the plane's one model (fcalc resonance), each on the springs"
-                      " at its own frequency p = p(K(p)), and those springs",
-                      report.modes, lambda columns: _rows(columns)[:1] + [
-                          ("f, static springs", "Hz", [static[c.column.mode] for c in columns])] + _rows(columns)[1:])
+                      " at its own frequency p = p(K(p)), and those springs", report.modes,
+                      lambda columns: _rows(columns, ("f, static K", "Hz", [hz_from_omega(static[c.column.mode]) for c in columns])))
     print_rest_note(scene.support())
+    print_soil_validity(report.validity)
 
 
 __all__ = ["PLANE_ROWS", "not_compared", "plane_document", "print_plane_soil"]
