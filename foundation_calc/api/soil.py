@@ -71,14 +71,12 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
         report, document = (springs, columns), soil_document(springs, model, loaded.source, columns)
     elif not compares_methods(model):  # a pile group: its own springs and dashpots in the plane
         from foundation_calc.checks.plane_soil import plane_soil
-        from foundation_calc.output.plane_soil import plane_document
-        from foundation_calc.output.soil import heading_document, section_of
+        from foundation_calc.output.plane_soil import soil_document
 
         if sample:
             _scales_with_the_soil(model, "crank foundation")
         report = plane_soil(model)
-        document = heading_document(model, loaded.source, report.method) | {
-            "methods": {}, "warnings": model.plausibility_warnings()} | section_of(model).document | plane_document(report)
+        document = soil_document(report, model, loaded.source)
     else:
         from foundation_calc.checks.soil_methods import compare_soil_methods
         from foundation_calc.output.soil import soil_document

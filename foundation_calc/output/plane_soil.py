@@ -30,13 +30,18 @@ def _at_document(at) -> dict:
     return {"at": c.at, "order": c.name if c.at == "order" else None, "mode": c.mode, "omega": c.omega, "a0": c.a0} | at.values
 
 
-def plane_document(report) -> dict:
-    """The keys a crank scene on a support adds to the soil document (:func:`~foundation_calc.output.soil.soil_document`'s
-    shape, with no ``methods``): ``comparison``, why none; ``soil_validity``, as ``fcalc resonance``'s;
+def soil_document(report, scene, source: str) -> dict:
+    """The JSON document (SI) of ``fcalc soil`` for a crank scene on a support: the crank's keys
+    (:func:`~foundation_calc.output.soil.heading_document`, ``methods`` empty, the support's own part)
+    and ``comparison``, why no methods are compared; ``soil_validity``, as ``fcalc resonance``'s;
     ``in_plane``, the springs and dashpots at each frequency and the natural frequencies [rad/s]."""
     from foundation_calc.output.notes import soil_validity_document
+    from foundation_calc.output.soil import heading_document, section_of
 
-    return {
+    return heading_document(scene, source, report.method) | {
+        "methods": {},
+        "warnings": scene.plausibility_warnings(),
+    } | section_of(scene).document | {
         "comparison": not_compared(report.method),
         "soil_validity": soil_validity_document(report.validity),
         "in_plane": {
@@ -76,4 +81,4 @@ def print_plane_soil(report, scene, source: str) -> None:
     print_soil_validity(report.validity)
 
 
-__all__ = ["PLANE_ROWS", "not_compared", "plane_document", "print_plane_soil"]
+__all__ = ["PLANE_ROWS", "not_compared", "print_plane_soil", "soil_document"]
