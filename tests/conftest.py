@@ -33,8 +33,9 @@ def mechanism_configs() -> list[Path]:
 
 def crank_on_piles(path: Path) -> bool:
     """Whether ``path`` is a crank scene on [piles], whose sway-rocking coupling the paper's closed forms
-    do not take: its resonance, amplitudes, check and speed sweep are the plane model's, and fcalc runup,
-    soil, report and design refuse it (exit 3; tests/test_crank_piles.py, tests/test_crank_piles_sweep.py)."""
+    do not take: its resonance, amplitudes, check, speed sweep and run-up are the plane model's, fcalc soil
+    shows the group in the plane (tests/test_crank_piles_soil.py), and fcalc report and design refuse it
+    (exit 3; tests/test_crank_piles.py)."""
     data = read_toml(path)
     return data.get("kind") == "crank_foundation" and "piles" in data
 

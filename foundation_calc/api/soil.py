@@ -33,18 +33,20 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
     -------
     Result
         ``to_dict()`` is the document of ``fcalc soil --json`` (its ``sample`` null without one);
-        ``report`` is (the methods compared, or a block's springs and their columns by frequency;
-        the sample or None).
+        ``report`` is (the methods compared, a crank's support's springs in the plane on a support
+        that is no footing (:class:`~foundation_calc.checks.plane_soil.PlaneSoil`: a pile group), or
+        a block's springs and their columns by frequency; the sample or None).
 
     Raises
     ------
     SceneError
         An invalid scene, or a scene of another kind.
     UsageError
-        A sample of a crank scene without a [mechanism], ``speed_cov`` for a block, or a sample of a block
-        on a support whose springs do not scale with the soil's modulus (piles).
+        A sample of a crank scene without a [mechanism], ``speed_cov`` for a block, or a sample of a
+        scene on a support whose springs do not scale with the soil's modulus (piles).
     """
     from foundation_calc.api.options import within
+    from foundation_calc.checks.soil_methods import compares_methods
     from foundation_calc.errors import UsageError
     from foundation_calc.output.soil import sample_document
 
@@ -62,14 +64,19 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
             if speed_cov:
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
-            if (unscaled := model.support().unscaled) is not None:
-                raise UsageError(f"not sampled, a block on {unscaled}; give soil.modulus_range and fcalc check judges"
-                                 " the range",
-                                 "'--sample'")
+            _scales_with_the_soil(model, "block")
             drawn = sample_block(model, sample, modulus_cov, seed)
         springs = model.model()
         columns = soil_at_frequencies(model, springs)
         report, document = (springs, columns), soil_document(springs, model, loaded.source, columns)
+    elif not compares_methods(model):  # a pile group: its own springs and dashpots in the plane
+        from foundation_calc.checks.plane_soil import plane_soil
+        from foundation_calc.output.plane_soil import soil_document
+
+        if sample:
+            _scales_with_the_soil(model, "crank foundation")
+        report = plane_soil(model)
+        document = soil_document(report, model, loaded.source)
     else:
         from foundation_calc.checks.soil_methods import compare_soil_methods
         from foundation_calc.output.soil import soil_document
@@ -84,3 +91,14 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
             drawn = sample_scene(model, sample, modulus_cov, speed_cov, seed)
         document = soil_document(report, model, loaded.source)
     return command_result("soil", document | {"sample": sample_document(drawn)}, 0, loaded, (report, drawn))
+
+
+def _scales_with_the_soil(model, noun: str) -> None:
+    """Raise UsageError on ``--sample`` when the scene's support's springs do not scale with one
+    factor on the soil's modulus (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`:
+    a pile group), ``noun`` naming the foundation."""
+    from foundation_calc.errors import UsageError
+
+    if (unscaled := model.support().unscaled) is not None:
+        raise UsageError(f"not sampled, a {noun} on {unscaled}; give soil.modulus_range and fcalc check judges the range",
+                         "'--sample'")

@@ -232,17 +232,16 @@ def _frequency_range(scene, results) -> list[str]:
     return found
 
 
-def compare_soil_methods(scene) -> SoilComparison:
-    """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`). A crank
-    scene on ``[piles]`` is a PhysicsError: these are the footing's methods, which the piles replace."""
-    if getattr(scene, "piles", None) is not None:
-        from foundation_calc.errors import PhysicsError
+def compares_methods(scene) -> bool:
+    """Whether a crank scene stands on the footing whose soil methods are compared: its support gives
+    a soil method's chain in the plane (``plane_springs``); a pile group replaces the footing and
+    ``fcalc soil`` shows its own springs (:mod:`foundation_calc.checks.plane_soil`)."""
+    return hasattr(scene.support(), "plane_springs")
 
-        raise PhysicsError(
-            "the support piles couples the motions of the plane at O, and fcalc soil compares the footing's soil methods,"
-            " which [piles] replace: not available for a crank scene on piles", field="piles",
-            hint="fcalc resonance gives the piled crank's natural frequencies; describe the foundation as a"
-                 " block_foundation scene for fcalc soil's table of the pile group")
+
+def compare_soil_methods(scene) -> SoilComparison:
+    """Apply every method the scene's ``[soil]`` data allow (:meth:`Soil.methods_allowed`) to the
+    footing (:func:`compares_methods`; on another support :meth:`soil_springs` is a PhysicsError)."""
     results = tuple(_method_result(scene, m) for m in scene.soil.methods_allowed())
     findings = _disagreements(results)
     findings += _frequency_range(scene, results)

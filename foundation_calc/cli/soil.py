@@ -32,6 +32,10 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
          speed_cov: SpeedCovOpt = 0.0, seed: SeedOpt = 0) -> None:
     """Soil springs and damping of every method the scene's [soil] data allow, side by side.
 
+    A crank scene on [piles] shows the pile group instead: its springs and dashpots in the plane at
+    O (K_x, K_z, K_φ, K_xφ; C_x, C_z, C_φ, C_xφ) at rest, at the speed's harmonics and at each mode's
+    own frequency, the natural frequencies k0, p1, p2 of fcalc resonance, and the piles' own table.
+
     K_z, K_x [N/m] and K_φ [N m/rad]; the equivalent c_z, c_x, c_phi [N/m³]; damping ratios [-]
     and base dashpots; uncoupled vertical, horizontal and rocking frequencies and the coupled
     k0, p1, p2 (tables in Hz, JSON in rad/s). The scene's method is marked with *. Warns when a
@@ -59,8 +63,12 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
         from foundation_calc.output.block_soil import print_soil
 
         print_soil(report[0], loaded.model, loaded.source, report[1])
-    else:
+    elif isinstance(report, soil_out.SoilComparison):
         soil_out.print_soil_report(report, loaded.model, loaded.source)
+    else:  # a crank on a support that is no footing (a pile group)
+        from foundation_calc.output.plane_soil import print_plane_soil
+
+        print_plane_soil(report, loaded.model, loaded.source)
     if drawn is not None:
         soil_out.print_sample(drawn)
     raise typer.Exit(result.exit_code)

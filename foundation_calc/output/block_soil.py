@@ -82,7 +82,7 @@ def print_soil(model, scene, source: str, columns=()) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    from foundation_calc.output.soil import frequency_table
+    from foundation_calc.output.soil import print_section
 
     out = stdout()
     support = scene.support()
@@ -95,26 +95,29 @@ def print_soil(model, scene, source: str, columns=()) -> None:
         table.add_row(row["motion"], fmt(row["K"], 4), UNITS["K"][i], fmt(row["C"], 4), UNITS["C"][i], fmt(row["xi"], 3),
                       fmt(row["omega_uncoupled"] / (2 * np.pi), 4))
     out.print(table)
-    for part in support.soil_section(_speeds(scene)).printed:
-        if isinstance(part, str):
-            out.print(escape(part))
-        else:
-            out.print(frequency_table(part.title, part.heads, part.rows, part.digits))
+    print_section(support.soil_section(_speeds(scene)))
     speeds = [c for c in columns if c.at != "mode"]
     modes = [c for c in columns if c.at == "mode"]
     if speeds:
-        _print_frequencies("Springs and dashpots at O at rest and at each machine's speed ω", speeds)
+        print_frequencies("Springs and dashpots at O at rest and at each machine's speed ω", speeds)
     if modes:
-        _print_frequencies("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of fcalc"
-                           " resonance, its dominant motion)", modes)
-        out.print(support.a0(0.0)[1] + ". The modes and the checks take the soil at these"
-                  " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at rest"
-                  " only.")
+        print_frequencies("Springs and dashpots at O at each mode's own frequency p_j = p_j(K(p_j)) (mode j of fcalc"
+                          " resonance, its dominant motion)", modes)
+        print_rest_note(support)
 
 
-def _print_frequencies(title: str, columns) -> None:
-    """The springs and dashpots at the frequencies of ``columns``: one table, or as few tables of
-    fewer frequencies each as fit the console's width (a terminal's; a file takes one)."""
+def print_rest_note(support) -> None:
+    """What a0 is and at which frequencies the commands take a frequency-dependent support's springs."""
+    stdout().print(support.a0(0.0)[1] + ". The modes and the checks take the soil at these"
+                   " frequencies: each mode at its own, each order n of a machine at n ω; the static springs hold at"
+                   " rest only.")
+
+
+def print_frequencies(title: str, columns, rows=_frequency_rows) -> None:
+    """The springs and dashpots at the frequencies of ``columns`` (:class:`~foundation_calc.checks.block_soil.SoilAt`;
+    ``rows`` of some columns the table's rows, by default the six springs and dashpots at O): one
+    table, or as few tables of fewer frequencies each as fit the console's width (a terminal's; a
+    file takes one)."""
     from math import ceil
 
     from foundation_calc.output.console import fits
@@ -125,7 +128,7 @@ def _print_frequencies(title: str, columns) -> None:
         size = ceil(len(columns) / parts)
         groups = [columns[k:k + size] for k in range(0, len(columns), size)]
         tables = [frequency_table(title if k == 0 else f"{title} (continued)", [c.label for c in group],
-                                  _frequency_rows(group), 4) for k, group in enumerate(groups)]
+                                  rows(group), 4) for k, group in enumerate(groups)]
         if all(fits(t, out.width) for t in tables) or size == 1:
             out.print(*tables)
             return

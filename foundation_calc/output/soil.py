@@ -74,36 +74,44 @@ def _finite(value: float) -> float | None:
 def soil_document(comparison: SoilComparison, scene, source: str) -> dict:
     """The JSON document of ``fcalc soil``: every method's numbers in SI (frequencies in rad/s;
     null where the block tips over in rocking)."""
-    return {
-        "schema_version": JSON_SCHEMA_VERSION,
-        "command": "soil",
-        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
-        "method": comparison.used,
-        "total_mass": scene.total_mass,
-        "base": dict(zip(("length", "width"), scene.foundation.dimensions), area=scene.foundation.base_area,
-                     second_moment=scene.foundation.base_second_moment, embedment=scene.foundation.embedment or 0.0),
+    return heading_document(scene, source, comparison.used) | {
         "methods": {
             r.method: {key: _finite(getattr(r, key)) for key in _JSON_KEYS} | _dynamic_document(r)
             for r in comparison.results
         },
         "warnings": [*comparison.input_warnings, *comparison.findings],
-    } | _section(scene).document
+    } | section_of(scene).document
 
 
-def _section(scene):
+def heading_document(scene, source: str, method: str) -> dict:
+    """The head of a crank scene's ``fcalc soil`` document: the scene, ``method`` (the scene's soil
+    method or its support's label), the total mass [kg] and the base [m, m², m⁴]."""
+    f = scene.foundation
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "soil",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "method": method,
+        "total_mass": scene.total_mass,
+        "base": dict(zip(("length", "width"), f.dimensions), area=f.base_area, second_moment=f.base_second_moment,
+                     embedment=f.embedment or 0.0),
+    }
+
+
+def section_of(scene):
     """The support's own part of ``fcalc soil`` (:meth:`~foundation_calc.solvers.supports.base.Support.soil_section`:
-    a stratum's factors and cutoffs), at the machine's speed."""
+    a stratum's factors and cutoffs, a pile group's single pile and efficiency), at the machine's speed."""
     return scene.support().soil_section({"machine": scene.speed.omega_rad_s})
 
 
 def print_section(section) -> None:
     """Print a support's own part of ``fcalc soil`` (:class:`~foundation_calc.solvers.supports.base.SoilSection`):
-    its lines and its tables at several frequencies, in order."""
+    its lines (wrapped at a terminal's width) and its tables at several frequencies, in order."""
     from rich.markup import escape
 
     for part in section.printed:
         if isinstance(part, str):
-            stdout().print(escape(part), soft_wrap=True)
+            stdout().print(escape(part))
         else:
             stdout().print(frequency_table(part.title, part.heads, part.rows, part.digits))
 
@@ -150,10 +158,9 @@ def _dynamic_table(result: MethodResult):
                            [names[row.at] for row in result.dynamic], rows)
 
 
-def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
-    """Print the methods side by side; the scene's own method is marked with *."""
+def print_heading(scene, source: str) -> None:
+    """The scene's name, its base and total mass: the head of a crank scene's ``fcalc soil``."""
     from rich.markup import escape
-    from rich.table import Table
 
     out = stdout()
     f = scene.foundation
@@ -164,6 +171,15 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
         f"base {fmt(L)} m × {fmt(B)} m{derived} (S = {fmt(f.base_area)} m², I1 = {fmt(f.base_second_moment)} m⁴,"
         f" embedment {fmt(f.embedment or 0.0)} m), M_tot = {fmt(scene.total_mass, 7)} kg", soft_wrap=True,
     )
+
+
+def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
+    """Print the methods side by side; the scene's own method is marked with *."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    out = stdout()
+    print_heading(scene, source)
     table = Table(title="Springs and damping by soil method (* the scene's)", title_justify="left")
     table.add_column("quantity")
     table.add_column("unit")
@@ -187,7 +203,7 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
             " frequency; its damping ratios are taken at their mode's frequency. The other methods are"
             " frequency-independent.", soft_wrap=True,
         )
-    print_section(_section(scene))
+    print_section(section_of(scene))
     for text in comparison.findings:
         out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
 
