@@ -25,8 +25,6 @@ instead, each reproducible by hand from what the sheet prints:
 
 from __future__ import annotations
 
-import numpy as np
-
 from foundation_calc.output.report.handcalc import Chain, Columns
 from foundation_calc.output.report.model import Paragraph, table
 from foundation_calc.output.report.numbers import column
@@ -134,12 +132,11 @@ def plane_chains(scene, amplitudes: dict | None) -> list:
     entries = [("rest", 0.0), *((f"n = {n}", n * omega) for n in harmonics), *((f"ω* of {m}", own[m]) for m in own)]
     out.append(Paragraph(
         "The plane of the motion takes the rows and columns u_x, u_z, θ_y of the support's K and C at O: K_x, K_z, K_φ"
-        " on the diagonal and the sway-rocking coupling K_xφ, C_xφ. The damped solve takes them at each harmonic's n ω,"
-        " the natural frequencies each mode at its own ω*." if support.frequency_dependent else
-        "The plane of the motion takes the rows and columns u_x, u_z, θ_y of the support's K and C at O: K_x, K_z, K_φ"
-        " on the diagonal and the sway-rocking coupling K_xφ, C_xφ."))
+        " on the diagonal and the sway-rocking coupling K_xφ, C_xφ."
+        + (" The damped solve takes them at each harmonic's n ω, the natural frequencies each mode at its own ω*."
+           if support.frequency_dependent else "")))
     out += _frequency_table(scene, entries)
-    at = own or {m: 0.0 for m in MODES}
+    at = own or {MODES[0]: 0.0}  # a frequency-independent support: one column on the static springs
     coupled = scene.design(coupled=True).coupled
     title = ("Natural frequencies of the plane model about C (the centre of mass, coordinates x, y, θ), the support's"
              " coupling K_xφ included: k0 from K_z, p1 and p2 the roots of det(K̄ − p² M̄) = 0 in (x, θ)" if coupled else
@@ -149,13 +146,13 @@ def plane_chains(scene, amplitudes: dict | None) -> list:
         title += "; each mode with the springs at its own ω*, where the mode's own row returns ω* = p(K(ω*))"
         footer = table("Natural frequencies: static springs and each mode at its own frequency (the resonance check's)",
                        ("mode", "static [rad/s]", "at ω* [rad/s]", "change"), frequency_table_rows(static, own))
-    chains = [(_mode_chain if coupled else _closed_form_chain)(scene, at[m]) for m in MODES]
+    chains = [(_mode_chain if coupled else _closed_form_chain)(scene, w) for w in at.values()]
     lead = (("omega_s", "ω* = p(K(ω*))", "the resonance check's root, table below"),) if own else ()
     sources = {"M_tot": "derived quantities", "M_xt": "averaged operator (M̄ under Methods)", "M_tt": "averaged operator (M̄ under Methods)"}
     givens = ("M_tot", "M_xt", "M_tt", "K_xw", "K_zw", "K_phiw", "K_xphiw") if coupled else ("K_xw", "K_zw", "K_phiw")
     lead += tuple((name, "given", sources.get(name, "springs at O, table above")) for name in givens)
     heads = tuple(f"at ω* of {m}" for m in MODES) if own else ("static springs",)
-    out.append(Columns(title, heads, chains if own else chains[:1], lead, footer))
+    out.append(Columns(title, heads, chains, lead, footer))
     return out
 
 
