@@ -446,7 +446,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             plane(support.impedance(omega), support.label)  # a support that couples the plane stops here, by name
             raise PhysicsError(
                 f"the support {support.label} gives no soil method's springs and damping ratios in the plane, which the"
-                " crank's calculation sheet and soil comparison derive by hand", field="soil",
+                " crank's soil comparison derives by hand", field="soil",
                 hint="describe the foundation as a block_foundation scene, whose sheet takes any support")
         return support.plane_springs(omega)
 

@@ -23,9 +23,12 @@ def _crank(scene, checks: set[str]) -> list[tuple[str, str]]:
     if "runup" not in checks:
         rows.append(("start-up", "Start-up and run-down not checked (no run time with [limits]"
                                  " transient_amplitude, and no [drive])."))
+    from foundation_calc.output.report.plane_support import by_soil_method
+    from foundation_calc.solvers.supports.base import not_checked
     from foundation_calc.solvers.supports.footing import static_missing
 
-    text = "; ".join([*static_missing(scene.limits), "strength of the block, anchors and machine, fatigue,"
+    missing = static_missing(scene.limits) if by_soil_method(scene) else not_checked(support, scene.limits)  # a pile group's own
+    text = "; ".join([*missing, "strength of the block, anchors and machine, fatigue,"
                       " out-of-plane vibration, transmission to neighbouring structures."])
     rows.append(("not checked", text[0].upper() + text[1:]))
     return rows

@@ -160,6 +160,7 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
     approximations = amp["approximations"]
     checked = approximations[amp["checked_with"]]
     blocks = [Paragraph(f"Checked with: {checked['title']}. Signs: {amp['conventions']}.")]
+    blocks += [Paragraph(f"{key.replace('_', ' ').capitalize()}: {why}.") for key, why in (amp.get("not_applicable") or {}).items()]
     if checked["resonant"]:
         blocks.append(Paragraph(f"Resonant: {checked['nearest_resonance']}; no steady state without damping."))
         return Section("Amplitudes", tuple(blocks))
@@ -191,7 +192,9 @@ def _crank_amplitudes(amp: dict, units: DisplayUnits) -> Section:
         )
         blocks.append(Paragraph(
             f"Damped: base dashpots C_x = {num(d['dashpots']['C_x'])} N s/m, C_z = {num(d['dashpots']['C_z'])} N s/m,"
-            f" C_φ = {num(d['dashpots']['C_phi'])} N m s/rad; modes of the averaged operator and their damping"
+            f" C_φ = {num(d['dashpots']['C_phi'])} N m s/rad"
+            + (f", C_xφ = {num(d['dashpots']['C_xphi'])} N s/rad" if "C_xphi" in d["dashpots"] else "")
+            + "; modes of the averaged operator and their damping"
             f" ratios: {modes}. Each harmonic is A cos(nωt − φ)."
         ))
         blocks.append(table("Phase lag φ per harmonic [°]", ("harmonic", *methods), phase_rows))
@@ -262,7 +265,8 @@ def crank_sections(docs: dict, figures: tuple[Figure, ...], units: DisplayUnits,
         _crank_derived(res, units),
         _crank_frequencies(res, units),
         _crank_amplitudes(amp, units),
-        _equation_section((equations.CRANK if mechanism else ()) + (equations.LOADS if amp.get("loads") else ())),
+        _equation_section(((equations.PLANE if "K_xphi" in res["derived"] else equations.CRANK) if mechanism else ())
+                          + (equations.LOADS if amp.get("loads") else ())),
         Section("Plots", figures),
         _crank_accuracy(amp, exact, mechanism),
     )

@@ -57,6 +57,29 @@ CRANK = (
     ),
 )
 
+#: The plane model of a crank on a support coupling sway with rocking (a pile group), where (4.5)-(4.14)
+#: do not apply: its frequencies (:mod:`~foundation_calc.output.report.plane_support`) and damped solve.
+PLANE = (
+    Equation(
+        'k_0^2 = K_z / M_"tot", quad A_2 p^4 - A_1 p^2 + A_0 = 0, quad'
+        ' A_2 = M_"tot" macron(M)_(theta theta) - macron(M)_(x theta)^2, quad'
+        ' A_1 = K_x macron(M)_(theta theta) + macron(K)_(theta theta) M_"tot" - 2 macron(K)_(x theta) macron(M)_(x theta), quad'
+        ' A_0 = K_x macron(K)_(theta theta) - macron(K)_(x theta)^2',
+        "k0² = K_z/M_tot;  A2 p⁴ − A1 p² + A0 = 0 (det(K̄ − p² M̄) = 0 in x, θ about C): A2 = M_tot M̄_θθ − M̄_xθ²,"
+        " A1 = K_x M̄_θθ + K̄_θθ M_tot − 2 K̄_xθ M̄_xθ, A0 = K_x K̄_θθ − K̄_xθ²;  K̄_xθ = K_xφ − h K_x,"
+        " K̄_θθ = K_φ − 2h K_xφ + h² K_x − P h − g M̄_xθ",
+        "plane model about C with the mechanism's inertia averaged over a revolution; K at O of the support, coupled"
+        " (u_x = x − h θ); [KM] (3.4) for −P h",
+    ),
+    CRANK[2],
+    Equation(
+        '(macron(K) - n^2 omega^2 macron(M) + i n omega macron(C)) Z_n = F_n',
+        "(K̄ − n²ω² M̄ + i nω C̄) Z_n = F_n, harmonic by harmonic, C̄ with the support's C_xφ",
+        "averaged operator: the exact equations linearised about rest and averaged over a revolution, F_n the exact"
+        " forcing's Fourier coefficients",
+    ),
+)
+
 LOADS = (
     Equation(
         '(K - n^2 omega^2 M + i n omega C) Z_n = sum Q e^(i phi), quad'

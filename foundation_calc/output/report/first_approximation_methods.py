@@ -24,22 +24,10 @@ def first_approximation_chain(scene) -> Chain:
     an undamped design at a resonance of the vertical mode has no y_n (the sheet says resonant)."""
     from foundation_calc.solvers.crank.closed_form import design_first_approximation
 
-    mech = scene.mechanism
     omega = scene.speed.omega_rad_s
     chain = Chain("First approximation: the slider lumped into the rod, the base's dashpot kept; the forcing to"
                   " leading order in λ")
-    chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass (block, machine, rod and slider)")
-    chain.given("m_rod", mech.rod_mass, "kg", "connecting-rod mass (mechanism.rod_mass)")
-    chain.given("m1", mech.slider_mass, "kg", "mass carried by the slider (mechanism.slider_mass)")
-    chain.given("l", mech.rod_length, "m", "connecting-rod length")
-    chain.given("l1_rod", mech.rod_cog_to_crank_pin, "m", "rod's centre of mass to the crank pin (mechanism.rod_cog_to_crank_pin)")
-    chain.given("r", mech.crank_radius, "m", "crank radius")
-    chain.given("omega", omega, "rad/s", "operating speed")
-    chain.step("m", "m_rod + m1", "kg", f"{KM}, last paragraph", "moving mass: rod and slider")
-    chain.step("l1", "(m_rod*l1_rod + m1*l)/m", "m", f"{KM}, last paragraph (slider at M'')",
-               "centre of mass of rod and slider to the crank pin")
-    chain.step("mu", "m/M_tot", "-", f"{KM} §1", "moving-mass ratio")
-    chain.step("lam", "r/l", "-", f"{KM} §1", "crank-to-rod ratio")
+    _mechanism_steps(chain, scene)
     dependent = scene.support().frequency_dependent
     for n, force in ((1, "mu*r*omega**2"), (2, "mu*(l1/l)*lam*r*omega**2")):
         design = scene.design(n * omega if dependent else 0.0)
@@ -59,6 +47,35 @@ def first_approximation_chain(scene) -> Chain:
         )
     _forcing_steps(chain, scene)
     return chain
+
+
+def forcing_chain(scene) -> Chain:
+    """The mechanism's forcing to leading order in λ without the first approximation's amplitudes,
+    which do not apply on a support coupling sway with rocking
+    (:data:`~foundation_calc.checks.crank_amplitudes.FIRST_NOT_APPLICABLE`)."""
+    from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
+
+    chain = Chain(f"The mechanism's forcing to leading order in λ; the first approximation (4.14) is {FIRST_NOT_APPLICABLE}")
+    _mechanism_steps(chain, scene)
+    _forcing_steps(chain, scene)
+    return chain
+
+
+def _mechanism_steps(chain: Chain, scene) -> None:
+    """M_tot and the mechanism's inputs, then m, l', μ, λ with the slider lumped into the rod."""
+    mech = scene.mechanism
+    chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass (block, machine, rod and slider)")
+    chain.given("m_rod", mech.rod_mass, "kg", "connecting-rod mass (mechanism.rod_mass)")
+    chain.given("m1", mech.slider_mass, "kg", "mass carried by the slider (mechanism.slider_mass)")
+    chain.given("l", mech.rod_length, "m", "connecting-rod length")
+    chain.given("l1_rod", mech.rod_cog_to_crank_pin, "m", "rod's centre of mass to the crank pin (mechanism.rod_cog_to_crank_pin)")
+    chain.given("r", mech.crank_radius, "m", "crank radius")
+    chain.given("omega", scene.speed.omega_rad_s, "rad/s", "operating speed")
+    chain.step("m", "m_rod + m1", "kg", f"{KM}, last paragraph", "moving mass: rod and slider")
+    chain.step("l1", "(m_rod*l1_rod + m1*l)/m", "m", f"{KM}, last paragraph (slider at M'')",
+               "centre of mass of rod and slider to the crank pin")
+    chain.step("mu", "m/M_tot", "-", f"{KM} §1", "moving-mass ratio")
+    chain.step("lam", "r/l", "-", f"{KM} §1", "crank-to-rod ratio")
 
 
 def _forcing_steps(chain: Chain, scene) -> None:
@@ -84,4 +101,4 @@ def _forcing_steps(chain: Chain, scene) -> None:
                f"{KM} (4.12) corrected × I_c μ", "moment at ω, M_θ1 sin ωt (phase lag 90° when positive, −90° when negative)")
 
 
-__all__ = ["first_approximation_chain"]
+__all__ = ["first_approximation_chain", "forcing_chain"]

@@ -43,6 +43,7 @@ SYMBOLS = {
     "C_xw": "C_x(ω)", "C_yw": "C_y(ω)", "C_rxw": "C_rx(ω)", "C_ryw": "C_ry(ω)", "eta_t": "η_t", "K_t0": "K_t,s", "r0t": "r0θ",
     "r0x": "r0ψx", "r0y": "r0ψy", "k_psi": "k_ψ", "c_psi": "c_ψ", "k_xi": "k_ξ", "c_zsp": "c_z,SP",
     "H_r": "H", "R_a": "R", "R_ry": "R_ry", "R_rx": "R_rx", "eta_ry": "η_ry", "eta_rx": "η_rx",
+    "M_xt": "M̄_xθ", "M_tt": "M̄_θθ", "K_xt": "K̄_xθ", "K_tt": "K̄_θθ", "K_xphiw": "K_xφ(ω)",
     "Omega_dot": "Ω̇", "Omega_dot_r": "Ω̇_r", "Delta": "Δ", "beta": "β", "rho_G": "ρ_G", "muL": "μL",
 }
 

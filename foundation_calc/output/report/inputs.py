@@ -144,13 +144,30 @@ def inputs_section(scene: BaseModel, units: DisplayUnits, written: dict[str, str
                 elif title.startswith("[[") and isinstance(getattr(model, key), BaseModel):  # [machines.unbalance]
                     nested = list(_rows(title.strip("[]").split("]")[0], getattr(model, key), units, f"{path}{key}.", written))
                     blocks.append(table(f"{title} {key}", header, nested, (False, False, True, False, False), literal=(0,)))
-        if name == "soil" and hasattr(scene, "soil_springs"):
+        if name == _springs_after(scene):
             blocks.append(_springs_table(scene))
     return Section("Inputs (the scene as validated)", tuple(blocks))
 
 
+def _springs_after(scene) -> str | None:
+    """The group of a crank scene's inputs its springs' table follows: ``[soil]``, or the support's
+    own (``[piles]``) for a support without a soil method's chain in the plane; None for another kind."""
+    if not hasattr(scene, "soil_springs"):
+        return None
+    from foundation_calc.output.report.plane_support import by_soil_method
+
+    label = "soil" if by_soil_method(scene) else scene.support().label
+    return label if label in type(scene).model_fields else "soil"
+
+
 def _springs_table(scene) -> object:
-    """The base springs and damping ratios the scene's soil method gives (what the solvers use)."""
+    """The base springs and damping ratios the scene's soil method gives (what the solvers use); a
+    support without a soil method's chain in the plane (a pile group): its springs and dashpots at O
+    at rest (:func:`~foundation_calc.output.report.plane_support.rest_table`)."""
+    from foundation_calc.output.report.plane_support import by_soil_method, rest_table
+
+    if not by_soil_method(scene):
+        return rest_table(scene)
     springs = scene.soil_springs()
     rows = [
         ("K_z", "vertical spring", "N/m"), ("K_x", "horizontal spring at the base", "N/m"),

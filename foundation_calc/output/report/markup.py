@@ -2,8 +2,8 @@
 
 The sheet's text is plain (Markdown prints it as it is). An exponent is written ``e^{i nωt}`` (or
 ``^½``, ``^¼`` for a root); a
-subscript is a symbol of one letter, ``_`` and its index of letters and digits, commas joining
-indices: ``Z_n``, ``K_z``, ``a_0``, ``u_P,n``, ``v_rms``, ``M_Σ``. A scene key is not a symbol
+subscript is a symbol of one letter (a bar over it welcome: ``M̄_xθ``), ``_`` and its index of
+letters and digits, commas joining indices: ``Z_n``, ``K_z``, ``a_0``, ``u_P,n``, ``v_rms``, ``M_Σ``. A scene key is not a symbol
 and keeps its ``_``: a word before it (``speed_rpm``, ``xi_z``), a dotted path (``soil.c_phi``), a
 Greek letter spelled out (``c_phi``), a second ``_`` (``balance_grade_mm_s``), and a table's
 column of keys (:attr:`~foundation_calc.output.report.model.Table.literal`).
@@ -21,7 +21,7 @@ _LETTER = "A-Za-zα-ωΑ-Ω"
 
 _MARK = re.compile(
     r"\^(?:\{(?P<super>[^{}]*)\}|(?P<fraction>[½¼¾]))"
-    rf"|(?<![{_LETTER}0-9_.\\])(?P<symbol>[{_LETTER}])_(?P<sub>[{_LETTER}0-9]+(?:,[{_LETTER}0-9]+)*)(?![_{_LETTER}0-9])"
+    rf"|(?<![{_LETTER}0-9_.\\])(?P<symbol>[{_LETTER}]\u0304?)_(?P<sub>[{_LETTER}0-9]+(?:,[{_LETTER}0-9]+)*)(?![_{_LETTER}0-9])"
 )
 
 #: Greek letters spelled out: ``c_phi`` is a scene key, ``c_φ`` the symbol.

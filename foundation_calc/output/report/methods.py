@@ -83,7 +83,16 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     frequencies, when the soil is damped the dashpots, with a mechanism the first approximation's
     vertical amplitudes; on Gazetas' soil also the springs
     at each harmonic n ω shown in ``amplitudes`` (the ``amplitudes`` document) and each mode at
-    its own frequency."""
+    its own frequency. A support without a soil method's chain in the plane (a pile group, which
+    couples sway with rocking): its own sheet and the plane model's frequencies
+    (:func:`~foundation_calc.output.report.plane_support.plane_chains`), then the mechanism's forcing
+    (the first approximation does not apply)."""
+    from foundation_calc.output.report.plane_support import by_soil_method, plane_chains
+
+    if not by_soil_method(scene):  # a pile group: the support's own sheet and the plane model's frequencies
+        from foundation_calc.output.report.first_approximation_methods import forcing_chain
+
+        return [*plane_chains(scene, amplitudes), *([] if scene.mechanism is None else [forcing_chain(scene)])]
     springs = scene.soil_springs()
     method = scene.soil.method_used
     chains = {"coefficients": [_coefficient_springs], "lysmer": [_lysmer_springs], "sp26": [sp26_springs_chain]}.get(method, [])
@@ -134,7 +143,8 @@ def methods_section(scene, documents: dict, units=None):
         from foundation_calc.output.report.runup_governing import governing_blocks
 
         runup = [*runup_columns(scene, documents["runup"]), *governing_blocks(scene, documents["runup"])]
-    blocks = [block for chain in chains for block in chain.blocks()]
+    blocks = [block for chain in chains for block in (chain.blocks() if hasattr(chain, "blocks") else (chain,))]  # a support's text and tables as they are
+    chains = [chain for chain in chains if hasattr(chain, "nomenclature")]
     terms = [block for block in response if hasattr(block, "nomenclature")]
     blocks += [block for block in response if not hasattr(block, "nomenclature")]
     blocks += [block for columns in runup for block in columns.blocks()]

@@ -45,8 +45,11 @@ def crank_rule_paragraph(res: dict, convert, unit: str) -> str:
     omega = res["speed"]["omega"]
     text = [
         margin_definition(f"{figure(convert(omega), 4)} {unit}"),
-        "Critical: p from the zero-order operator, [KM] (4.5)-(4.7); avg. inertia: p with the mechanism's"
-        " inertia averaged over a revolution; the margin is measured to the nearer of the two.",
+        ("Critical and avg. inertia: p of the plane model with the mechanism's inertia averaged over a revolution"
+         " and the support's sway-rocking coupling K_xφ (Methods; [KM] (4.5)-(4.7) take three uncoupled springs and"
+         " do not apply), one value." if "K_xphi" in res["derived"] else
+         "Critical: p from the zero-order operator, [KM] (4.5)-(4.7); avg. inertia: p with the mechanism's"
+         " inertia averaged over a revolution; the margin is measured to the nearer of the two."),
         f"Forcing share of harmonic n on mode j: s_nj = w_nj / max w, w_nj = |φ_jᵀ F_n|/p_j, φ_j the mode"
         f" of M̄, K̄ normalised to unit modal mass (φ_jᵀ M̄ φ_j = 1), F_n the forcing of harmonic n (Methods);"
         f" the maximum is over every harmonic and mode, so the largest share is 1.",
