@@ -269,7 +269,7 @@ def test_the_exact_solution_takes_the_coupling(document):
         assert error < 1e-5, dof
 
 
-@pytest.mark.parametrize("command", ["sweep", "runup", "soil", "design", "report"])
+@pytest.mark.parametrize("command", ["sweep", "runup", "soil", "report"])
 def test_what_the_plane_cannot_solve_on_piles_stops_by_name(command, runner, tmp_path):
     """The commands that solve the crank by its closed forms stop on the piled crank with exit code 3
     (docs/exit-codes.md) and a message naming the coupling, never a traceback or a number that drops it."""
