@@ -209,50 +209,73 @@ def strict_scene(tmp_path_factory):
     return path
 
 
+#: Columns of the terminal the design's tables must fit (tests/test_block_width.py).
+WIDTH = 80
+
+
 @pytest.fixture(scope="module")
 def sized(strict_scene):
-    """``fcalc design --json --write`` over block and pile lengths on the strict scene: the run, its
-    document and the scene it wrote."""
+    """``fcalc design --write`` over block and pile lengths on the strict scene, on a terminal of
+    :data:`WIDTH` columns: the run and the scene it wrote."""
     from typer.testing import CliRunner
 
     from foundation_calc.cli.app import app
+    from foundation_calc.output import console
 
     written = strict_scene.with_name("best.toml")
-    run = CliRunner().invoke(app, ["design", str(strict_scene), "--vary", "block.length=4:5", "--vary", "piles.length=12:16",
-                                   "--points", "2", "--json", "--write", str(written)])
-    return run, json.loads(run.output), written
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(console, "UNLIMITED_WIDTH", WIDTH)
+        console.stdout.cache_clear()
+        run = CliRunner().invoke(app, ["design", str(strict_scene), "--vary", "block.length=4:5", "--vary",
+                                       "piles.length=12:16", "--points", "2", "--write", str(written)])
+    console.stdout.cache_clear()
+    return run, written
 
 
 def test_best_passes_check_and_the_next_cheaper_fails(sized, strict_scene):
     """Exit 0: the cheapest design, inside the range, re-checked by fcalc check's path agrees, and its
-    scene as written passes ``fcalc check``; the block one refined step shorter fails it (exit 1)
-    on amplitudes, as the search found."""
+    scene as written passes ``fcalc check``; the block one refined step (0.2 m: the grid's 1 m over
+    its refinement) shorter fails it (exit 1) on amplitudes, as the search found."""
     from foundation_calc.api.check import check
     from foundation_calc.scenes.files import parse_toml, read_text
 
-    run, document, written = sized
-    assert run.exit_code == 0 and document["recheck"]["disagreements"] == []
-    best = document["best"]["values"]
-    assert 4.0 < best["foundation.block.length"] < 5.0 and document["best"]["outcome"] == "pass"
+    run, written = sized
+    assert run.exit_code == 0, run.output
+    assert "every check agrees" in run.stdout and "refined to 0.2" in run.stdout
+    best = parse_toml(read_text(written), str(written))
+    length, piles = best["foundation"]["block"]["length"], best["piles"]["length"]
+    assert 4.0 < length < 5.0
     assert check(written).exit_code == 0
-    step = next(a["refined_step"] for a in document["grid"]["axes"] if a["key"] == "foundation.block.length")
-    cheaper = _candidate_document(parse_toml(read_text(strict_scene), str(strict_scene)),
-                                  best["foundation.block.length"] - step, best["piles.length"])
-    run = check(cheaper)
+    run = check(_candidate_document(parse_toml(read_text(strict_scene), str(strict_scene)), round(length - 0.2, 6), piles))
     assert run.exit_code == 1
     assert [c["verdict"] for c in run.to_dict()["checks"]] == ["pass", "fail"]
-    assert [f["check"] for f in document["cheaper_failures"]] == ["amplitudes"]
+
+
+def test_design_tables_fit_80_columns(sized):
+    """The verdicts, the Pareto set (the long key foundation.block.length beside piles.length) and
+    why the cheaper candidates fail, within 80 columns, no number cut."""
+    from rich.cells import cell_len
+
+    run, _ = sized
+    assert "Pareto set" in run.stdout and "cheaper candidates fail" in run.stdout
+    wide = [line for line in run.stdout.splitlines() if cell_len(line) > WIDTH]
+    assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
+    assert "…" not in run.stdout
 
 
 def test_design_exit_codes(runner, strict_scene, tmp_path):
-    """Exit 1 when no block passes (never the refusal of the coupled support, exit 3); 2 for a key
-    the scene cannot vary."""
+    """Exit 1 and the design's JSON when no block passes (never the refusal of the coupled support,
+    exit 3); 2 for a key the scene cannot vary."""
     from foundation_calc.cli.app import app
 
     impossible = tmp_path / "impossible.toml"
     impossible.write_text(strict_scene.read_text(encoding="utf-8").replace(f"amplitude = {STRICT_AMPLITUDE}",
                                                                            "amplitude = 1e-07"), encoding="utf-8")
-    run = runner.invoke(app, ["design", str(impossible), "--vary", "block.length=4:5", "--points", "2"])
-    assert run.exit_code == 1 and "no candidate passes" in run.output, run.output
+    run = runner.invoke(app, ["design", str(impossible), "--vary", "block.length=4:5", "--vary", "piles.length=12:16",
+                              "--points", "2", "--json"])
+    assert run.exit_code == 1, run.output
+    found = json.loads(run.stdout)
+    assert not found["passed"] and found["recheck"]["disagreements"] == []
+    assert found["closest"]["checks"]["amplitudes"]["outcome"] == "fail"
     run = runner.invoke(app, ["design", str(CONFIG), "--vary", "piles.spacing=1:2"])
     assert run.exit_code == 2 and "piles.spacing" in run.output and "Traceback" not in run.output
