@@ -31,8 +31,8 @@ class CandidateDesigns:
     ``sizes`` (key -> (N,), :meth:`~foundation_calc.solvers.supports.base.Sizing.sized`; the scene's
     where left out) and on the soil's stiffness data times ``factor`` (a scalar or one per candidate,
     :meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`); read in the plane
-    (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
-    plane's motions is a PhysicsError naming it).
+    (:func:`~foundation_calc.solvers.supports.plane_footing.plane` with ``coupled``: a pile group's
+    sway-rocking K_xφ, C_xφ taken, any other coupling of the plane's motions a PhysicsError naming it).
     """
 
     def __init__(self, scene, L, B, H, factor=1.0, sizes=None):
