@@ -70,7 +70,8 @@ def test_check_on_a_narrow_terminal_puts_each_scene_over_its_table(terminal, run
     assert len(header.split("┃")[3]) >= 30
 
 
-#: The crank scenes whose block a design may vary (a [foundation.block]; on piles a design is refused by name).
+#: The crank scenes whose block a design may vary (a [foundation.block]; on piles: tests/test_crank_piles_design.py,
+#: over the pile length too).
 SIZED_CRANKS = [p for p in configs_of_kind("crank_foundation")
                 if "block" in read_toml(p)["foundation"] and "piles" not in read_toml(p)]
 

@@ -267,14 +267,3 @@ def test_the_exact_solution_takes_the_coupling(document):
     assert set(exact["errors"]) == {"averaged_operator"}
     for dof, error in exact["errors"]["averaged_operator"]["peaks"]["displacement"].items():
         assert error < 1e-5, dof
-
-
-@pytest.mark.parametrize("command", ["design"])
-def test_what_the_plane_cannot_solve_on_piles_stops_by_name(command, runner):
-    """The commands that solve the crank by its closed forms stop on the piled crank with exit code 3
-    (docs/exit-codes.md) and a message naming the coupling, never a traceback or a number that drops it."""
-    extra = {}.get(command, [])
-    args = [command, str(CONFIG), *extra]
-    run = runner.invoke(app, args)
-    assert run.exit_code == 3, run.output
-    assert "support piles couples" in run.output and "Traceback" not in run.output

@@ -4,9 +4,11 @@ the scene key of its scale (``soil.c_z``, the subgrade coefficient it reads) as 
 vary and whose concrete grows with it, sizes a crank scene through ``fc.design``. Its cheapest
 design, written into the scene, is judged by ``fc.check`` as the design said; the next cheaper
 scale on the grid fails ``fc.check`` (the toy put in the scene's text here); the design's volume
-is the block's and the toy's, summed here. A support that couples the plane's motions is refused
-by the design as by the crank's checks: a PhysicsError naming it, exit code 3
-(docs/exit-codes.md), from the batch evaluator itself too, never an answer on uncoupled springs."""
+is the block's and the toy's, summed here. A support that couples sway with rocking (x with θ_y,
+a pile group's coupling) is sized by the plane's one model, as the crank's checks judge it; one
+that couples the plane's motions otherwise (z with θ_y) is refused by the design as by the crank's
+checks: a PhysicsError naming it, exit code 3 (docs/exit-codes.md), from the batch evaluator itself
+too, never an answer on uncoupled springs."""
 
 from __future__ import annotations
 
@@ -31,6 +33,10 @@ SCALE = Variable("soil.c_z", "toy's spring scale", "the toy crank scene", "N/m³
 
 #: The names of the scenes the toys take.
 SIZED, COUPLED, UNSCALED = "toy crank sized", "coupled toy crank design", "unscaled toy crank"
+SWAY = "sway-rocking toy crank design"
+
+#: The pair of motions each coupled toy couples at O: z with θ_y (refused), x with θ_y (taken).
+COUPLINGS = {COUPLED: (2, 4), SWAY: (0, 4)}
 
 
 class Toy(SizedToy):
@@ -52,9 +58,9 @@ class Toy(SizedToy):
 
 
 def build(scene, L, B, masses):
-    if scene.name not in (SIZED, COUPLED, UNSCALED):
+    if scene.name not in (SIZED, COUPLED, SWAY, UNSCALED):
         return None
-    toy = Toy(np.asarray(scene.soil.c_z, dtype=float) / C_REF, coupled=(0, 4) if scene.name == COUPLED else None)
+    toy = Toy(np.asarray(scene.soil.c_z, dtype=float) / C_REF, coupled=COUPLINGS.get(scene.name))
     if scene.name == UNSCALED:
         toy.unscaled = "[toy]: its springs do not scale with the soil's modulus"
     return toy
@@ -70,10 +76,10 @@ def _document(name: str) -> dict:
 
 @pytest.fixture(scope="module")
 def toy(tmp_path_factory):
-    """The toy scenes' files (sized, coupled), with the toy and its size registered while the module's tests run."""
+    """The toy scenes' files (sized, coupled vertically, coupled in sway-rocking), with the toy and its size registered while the module's tests run."""
     folder = tmp_path_factory.mktemp("crank_toy")
     paths = {}
-    for name in (SIZED, COUPLED):
+    for name in (SIZED, COUPLED, SWAY):
         paths[name] = folder / f"{name.replace(' ', '_')}.toml"
         paths[name].write_text(tomli_w.dumps(_document(name)), encoding="utf-8")
     register(build, variables=(SCALE,))
@@ -114,6 +120,15 @@ def test_the_crank_batch_judges_blocks_on_the_toy_as_fcalc_check_does(toy, tmp_p
     written = tmp_path / "block.toml"
     result = fc.design(toy[SIZED], vary=["foundation.block.length=3:8", "foundation.block.height=0.8:2.5"], points=4,
                        write=written)
+    assert result.exit_code == 0, result.to_dict()["recheck"]
+    _agrees(result.to_dict()["best"], written)
+
+
+def test_a_sway_rocking_support_is_sized_as_fcalc_check_judges_it(toy, tmp_path):
+    """x coupled with θ_y (K_xφ, C_xφ): the batch's verdicts of the cheapest block are fc.check's of
+    its written scene, and the re-check agrees (exit 0)."""
+    written = tmp_path / "sway.toml"
+    result = fc.design(toy[SWAY], vary=["foundation.block.length=3:8"], points=4, write=written)
     assert result.exit_code == 0, result.to_dict()["recheck"]
     _agrees(result.to_dict()["best"], written)
 

@@ -254,13 +254,20 @@ def by_static_rank(static: NaturalFrequencies):
     """A function giving k0, p1, p2 at a frequency named by their rank in ``static``: the j-th
     lowest there takes the name of the j-th lowest at rest. A mode then follows its rank, as
     :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency` needs it (its root exists
-    and is bracketed), not its dominant motion, which a pile group's springs at frequency reorder."""
-    names = sorted(_MODES, key=lambda mode: getattr(static, mode))
+    and is bracketed), not its dominant motion, which a pile group's springs at frequency reorder.
+    Fields may be arrays (a batch of designs): each design's modes by their own ranks."""
+    rank = np.argsort(np.argsort(_stacked(static), axis=-1, kind="stable"), axis=-1)
 
     def ranked(found: NaturalFrequencies) -> NaturalFrequencies:
-        return NaturalFrequencies(**dict(zip(names, sorted(getattr(found, mode) for mode in _MODES))))
+        values = np.take_along_axis(np.sort(_stacked(found), axis=-1), np.broadcast_to(rank, np.shape(_stacked(found))), -1)
+        return NaturalFrequencies(*(values[..., j] for j in range(len(_MODES))))
 
     return ranked
+
+
+def _stacked(found: NaturalFrequencies) -> np.ndarray:
+    """k0, p1, p2 of ``found`` stacked on a last axis, (..., 3)."""
+    return np.stack(np.broadcast_arrays(*(np.asarray(getattr(found, mode), dtype=float) for mode in _MODES)), axis=-1)
 
 
 def scene_frequencies(scene) -> NaturalFrequencies:

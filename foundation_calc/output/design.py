@@ -228,8 +228,8 @@ def print_written(sizing: Sizing) -> None:
 
     console = stdout()
     changes = sizing.written_changes
-    console.print(f"written: {escape(sizing.written)} (the scene's text, {len(changes)} key{'s' * (len(changes) != 1)}"
-                  " changed, comments and layout kept)", soft_wrap=True)
+    console.print(f"written: {escape(sizing.written)}", soft_wrap=True)  # the path whole, the words below wrap
+    console.print(f"  the scene's text, {len(changes)} key{'s' * (len(changes) != 1)} changed, comments and layout kept:")
     for change in changes:
         after = "commented out" if change.new is None else f"-> {change.new}"
         console.print(f"  {change.key}: {change.old} {after}", soft_wrap=True, markup=False)
@@ -277,15 +277,35 @@ def _print_pareto(console, document: dict, keys: list[str]) -> None:
     shown, size = len(document["pareto"]), document["pareto_size"]
     title = f"Pareto set: volume against worst margin ({shown} of {size} designs)"
     table = Table(title=title, show_edge=False)
-    last = [k.rsplit(".", 1)[1] for k in keys]
-    names = [name if last.count(name) == 1 else key for name, key in zip(last, keys)]  # piles.length beside block.length
-    for header in (*[name + " [m]" for name in names], "volume [m³]", "mass [t]", "worst margin", "governed by"):
+    for header in (*[name + " [m]" for name in _short_names(keys)], "volume [m³]", "mass [t]", "worst margin", "governed by"):
         table.add_column(header, justify="right" if header != "governed by" else "left", overflow="fold")
     for design in document["pareto"]:
         top = max(design["checks"].items(), key=lambda item: -math.inf if item[1]["utilisation"] is None else item[1]["utilisation"])
         table.add_row(*[f"{v:.3f}" for v in design["values"].values()], f"{design['volume']:.4g}", f"{design['mass'] / 1e3:.4g}",
                       _number(design["worst_margin"]), f"{top[0]}: {top[1]['governing']}")
     console.print(table)
+
+
+def _short_names(keys: list[str]) -> list[str]:
+    """Each varied key by its shortest dotted ending that no other key shares: ``length`` and
+    ``width`` of a block, ``block.length`` beside ``piles.length`` (a crank scene's
+    ``foundation.block.length`` too: the 80 columns of a terminal hold its Pareto set).
+
+    >>> _short_names(["foundation.block.length", "piles.length"])
+    ['block.length', 'piles.length']
+    """
+    parts = [key.split(".") for key in keys]
+
+    def ending(words, n):
+        return ".".join(words[-n:])
+
+    names = []
+    for words in parts:
+        n = 1
+        while n < len(words) and sum(ending(other, n) == ending(words, n) for other in parts) > 1:
+            n += 1
+        names.append(ending(words, n))
+    return names
 
 
 def _print_recheck(sizing: Sizing, document: dict) -> None:

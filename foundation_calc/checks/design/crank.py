@@ -9,12 +9,13 @@ L × B); everything else is the scene's. Per candidate, in array operations over
   block, asked of the scene's support (:meth:`~foundation_calc.scenes.crank.CrankScene.support`)
   under the candidate's base and body at the candidate's sizes of the support's own (its sizing
   hooks, :class:`~foundation_calc.solvers.supports.base.Sizing`: the concrete it adds, the
-  warnings and refusals of its sizes), read in the plane (a support that couples the plane's
-  motions is refused by name, as the crank's checks refuse it); a frequency-dependent support at
-  each frequency it is needed at;
+  warnings and refusals of its sizes), read in the plane with its sway-rocking coupling K_xφ, C_xφ
+  (a pile group's; any other coupling of the plane's motions is refused by name, as the crank's
+  checks refuse it); a frequency-dependent support at each frequency it is needed at;
 - **resonance**: k0, p1, p2 of the zero-order and averaged-inertia operators (each mode at its
-  own frequency, ω = p(K(ω)), on a frequency-dependent soil), the forcing shares of the
-  mechanism's harmonics on the averaged operator, and the resonance rule
+  own frequency, ω = p(K(ω)), on a frequency-dependent soil; on a coupled support both are the
+  averaged operator's eigen-solve stacked over the candidates, as ``fcalc resonance`` takes them),
+  the forcing shares of the mechanism's harmonics on the averaged operator, and the resonance rule
   (:func:`~foundation_calc.checks.crank_resonance.judge_conditions`), as one design's check;
 - **amplitudes**: the averaged-operator steady state (:mod:`~foundation_calc.solvers.crank.batch`),
   the peaks and RMS values of C and every point (:func:`~foundation_calc.solvers.crank.response.point_series`,
@@ -124,7 +125,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         return CandidateVerdicts(*(v[:0] for v in (one.volume, one.mass)),
                                  *({c: a[:0] for c, a in d.items()} for d in (one.outcome, one.utilisation, one.governing)),
                                  one.reasons, one.deferred)
-    mech = MechanismOperator.of(scene.design())
+    mech = MechanismOperator.of(scene.design(coupled=True))  # the mechanism alone: any support
     harmonics = mech.harmonics
     checks = checks_judged(scene)
 

@@ -14,7 +14,7 @@ from foundation_calc.checks.design.candidates import FAIL, PASS, WARN
 #: The scene keys a candidate may vary, by their short names.
 VARIED = ("length", "width", "height")
 
-_UNSTABLE = "the block tips over: rocking spring K_φ <= P h (fcalc check: invalid scene)"
+_UNSTABLE = "the block tips over: rocking stiffness K_φ - K_xφ²/K_x <= P h (fcalc check: invalid scene)"
 
 
 class CandidateDesigns:
@@ -31,8 +31,8 @@ class CandidateDesigns:
     ``sizes`` (key -> (N,), :meth:`~foundation_calc.solvers.supports.base.Sizing.sized`; the scene's
     where left out) and on the soil's stiffness data times ``factor`` (a scalar or one per candidate,
     :meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`); read in the plane
-    (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
-    plane's motions is a PhysicsError naming it).
+    (:func:`~foundation_calc.solvers.supports.plane_footing.plane` with ``coupled``: a pile group's
+    sway-rocking K_xφ, C_xφ taken, any other coupling of the plane's motions a PhysicsError naming it).
     """
 
     def __init__(self, scene, L, B, H, factor=1.0, sizes=None):
@@ -41,7 +41,7 @@ class CandidateDesigns:
         from foundation_calc.solvers.supports.plane_footing import plane_masses
 
         f, machine = scene.foundation, scene.foundation.machine
-        self.scene, self.base = scene, scene.design()
+        self.scene, self.base = scene, scene.design(coupled=True)
         self.L, self.B, self.H, self.factor = L, B, H, factor
         old, new = tuple(getattr(f.block, k) for k in VARIED), (L, B, H)
 
@@ -63,48 +63,122 @@ class CandidateDesigns:
         if np.ndim(factor) or factor != 1.0:
             on = on.with_modulus_factor(factor)
         self.support = on.support((L, B), plane_masses(self.M_tot, p.I_c + self.M_tot * p.h**2))
+        self._last = None  # (frequency, springs at O): :meth:`in_plane`'s last
 
     def in_plane(self, soil_frequency=0.0) -> tuple:
-        """((K_x, K_z, K_φ), (C_x, C_z, C_φ)) at O of every candidate's support at ``soil_frequency``
-        [rad/s] (class docstring), (N,) each."""
+        """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ)) at O of every candidate's support at
+        ``soil_frequency`` [rad/s] (class docstring), (N,) each: the plane's springs and dashpots and
+        the support's sway-rocking coupling (a pile group's; 0 on an uncoupled support), as
+        ``fcalc check`` reads them (:meth:`~foundation_calc.scenes.crank.CrankScene.design` with
+        ``coupled``). The last frequency's are kept: the designs and the stability at one
+        frequency ask the support once."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
-        springs, dashpots, _ = plane(self.support.impedance(soil_frequency), self.support.label)  # uncoupled: 0
-        return springs, dashpots
+        asked = np.array(soil_frequency, dtype=float)
+        if self._last is None or self._last[0].shape != asked.shape or not np.array_equal(self._last[0], asked):
+            self._last = asked, plane(self.support.impedance(soil_frequency), self.support.label, coupled=True)
+        return self._last[1]
 
     def at(self, soil_frequency=0.0):
         """The candidates' designs on the support at ``soil_frequency`` [rad/s], its springs as
-        c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 of each candidate's base (as ``scene.design``)."""
-        (K_x, K_z, K_phi), (C_x, C_z, C_phi) = self.in_plane(soil_frequency)
+        c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1 of each candidate's base (as ``scene.design``), with the
+        support's K_xφ, C_xφ (:attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`
+        when it couples sway with rocking)."""
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi) = self.in_plane(soil_frequency)
         p, ones = self.props, np.ones_like(self.L)
         return replace(self.base, M=p.M, I_c=p.I_c, h=p.h, S=self.S, I1=self.I1, c=K_z / self.S * ones,
                        c1=K_x / self.S * ones, c_phi=K_phi / self.I1 * ones, C_x=C_x * ones, C_z=C_z * ones,
-                       C_phi=C_phi * ones, a=self.a)
+                       C_phi=C_phi * ones, a=self.a, K_xphi=K_xphi * ones, C_xphi=C_xphi * ones)
+
+    @property
+    def coupled(self) -> bool:
+        """Whether the support couples sway with rocking at rest (a pile group's K_xφ, C_xφ): the
+        closed forms do not apply (:attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`)."""
+        return self.at(0.0).coupled
+
+    def rocking_stable(self, soil_frequency) -> np.ndarray:
+        """The candidates whose rocking stiffness at O on the support at ``soil_frequency`` [rad/s]
+        (a scalar or one per candidate), net of its sway-rocking coupling, K_φ - K_xφ²/K_x
+        (:func:`~foundation_calc.solvers.crank.frequencies.coupled_rocking_stiffness`; K_φ
+        uncoupled), exceeds the weight's overturning moment P h: those ``fcalc check`` does not
+        refuse as tipping over (:meth:`~foundation_calc.scenes.crank.CrankScene.require_stable_rocking`)
+        wherever it takes the springs at that frequency."""
+        from foundation_calc.solvers.constants import GRAVITY
+        from foundation_calc.solvers.crank.frequencies import coupled_rocking_stiffness
+
+        (K_x, _, K_phi), _, (K_xphi, _) = self.in_plane(soil_frequency)
+        return coupled_rocking_stiffness(K_phi, K_x, K_xphi) > self.M_tot * GRAVITY * self.props.h
 
     def stable(self) -> np.ndarray:
-        """The candidates whose rocking spring exceeds the weight's overturning moment at every
-        frequency the checks take it at (a frequency-dependent rocking spring falls with
-        frequency: the highest harmonic's is the softest)."""
-        from foundation_calc.solvers.constants import GRAVITY
+        """The candidates that stand (:meth:`rocking_stable`) on the static springs and, on an
+        uncoupled frequency-dependent support, at the highest harmonic (its rocking spring falls
+        with frequency: the highest harmonic's is the softest). A coupled support's springs at
+        frequency are judged where the checks take them: :meth:`harmonics_stable`,
+        :func:`candidate_frequencies`."""
         from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
 
-        overturning = self.M_tot * GRAVITY * self.props.h
-        ok = self.in_plane(0.0)[0][2] > overturning
-        if self.support.frequency_dependent:
-            ok &= self.in_plane(FORCING_HARMONICS * self.base.omega)[0][2] > overturning
+        ok = self.rocking_stable(0.0)
+        if self.support.frequency_dependent and not self.coupled:
+            ok &= self.rocking_stable(FORCING_HARMONICS * self.base.omega)
+        return ok
+
+    def harmonics_stable(self) -> np.ndarray:
+        """The candidates that stand (:meth:`rocking_stable`) on a coupled frequency-dependent
+        support at every harmonic n ω, n = 1 ... :data:`~foundation_calc.solvers.crank.averaged.FORCING_HARMONICS`,
+        where ``fcalc amplitudes`` takes the springs of each harmonic (a pile group's K_xφ²/K_x is not
+        monotonic in frequency); all True otherwise (:meth:`stable` judges them)."""
+        from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
+
+        ok = np.ones(np.shape(self.L), dtype=bool)
+        if self.support.frequency_dependent and self.coupled:
+            for n in range(1, FORCING_HARMONICS + 1):
+                ok &= self.rocking_stable(n * self.base.omega)
         return ok
 
 
-def candidate_frequencies(designs: CandidateDesigns):
-    """(zero-order, averaged) k0, p1, p2 of every candidate, each mode at its own frequency on a
-    frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`)."""
-    from foundation_calc.checks.crank_resonance import consistent_frequencies, design_frequencies
+def candidate_frequencies(designs: CandidateDesigns, mechanism):
+    """(zero-order, averaged, steady) of every candidate: k0, p1, p2, each mode at its own
+    frequency on a frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`),
+    and whether the support stood (:meth:`CandidateDesigns.rocking_stable`) at every frequency
+    they were solved at, as ``fcalc resonance`` refuses a scene that tips over at one (N,).
+    ``mechanism``: the mechanism's M̄, C̄, K̄ (..., 3, 3) at the candidates' distances ``a``
+    (:meth:`~foundation_calc.solvers.crank.batch.MechanismOperator.at`).
 
-    static = design_frequencies(designs.at(0.0))
-    if not designs.support.frequency_dependent:
-        return static
-    return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
-                 for which in (0, 1))
+    On a support coupling sway with rocking (a pile group) the closed forms do not apply: both are
+    the one model's, the eigen-solve of the averaged operator M̄, K̄ (mechanism and
+    :func:`~foundation_calc.solvers.crank.averaged.block_matrices`) stacked over the candidates, each mode named by its dominant motion
+    (:func:`~foundation_calc.solvers.crank.averaged.mode_order`) on the static springs and followed
+    by its rank at frequency (:func:`~foundation_calc.checks.crank_resonance.by_static_rank`), as
+    ``fcalc resonance`` takes them."""
+    from foundation_calc.checks.crank_resonance import by_static_rank, consistent_frequencies, design_frequencies
+    from foundation_calc.solvers.crank.averaged import block_matrices, mode_order, natural_modes
+    from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
+
+    static_design = designs.at(0.0)
+    steady = np.ones(np.shape(designs.L), dtype=bool)
+    if not static_design.coupled:
+        static = design_frequencies(static_design)
+        if not designs.support.frequency_dependent:
+            return (*static, steady)
+        return (*(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
+                  for which in (0, 1)), steady)
+    M_m, _, K_m = mechanism[:3]
+
+    def modes(design):
+        M, _, K = block_matrices(design)
+        return M_m + M, natural_modes(M_m + M, K_m + K)
+
+    M, (natural, shapes) = modes(static_design)
+    static = NaturalFrequencies(*np.moveaxis(np.take_along_axis(natural, mode_order(M, shapes), -1), -1, 0))
+    if designs.support.frequency_dependent:
+        ranked = by_static_rank(static)
+
+        def at(w):
+            steady[...] &= designs.rocking_stable(w)
+            return ranked(NaturalFrequencies(*np.moveaxis(modes(designs.at(w))[1][0], -1, 0)))
+
+        static = consistent_frequencies(static, at)
+    return static, static, steady
 
 
 class Verdicts:
@@ -118,10 +192,11 @@ class Verdicts:
         self.governing[check], self.reasons[check] = governing.astype(np.intp), tuple(reasons)
 
 
-def _resonance(out: Verdicts, scene, designs, d0, M, K, mech, harmonics, stable):
+def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, stable):
     """The resonance rule on every candidate, as :func:`~foundation_calc.checks.crank_resonance.check_resonances`
     judges one design; returns (zero-order frequencies, margins, judgement, conditions), the
-    arrays over every condition n ω = k0, p1, p2 of harmonics 1 ... ``harmonics``.
+    arrays over every condition n ω = k0, p1, p2 of harmonics 1 ... ``harmonics``; ``frequencies``:
+    the candidates' (zero-order, averaged) k0, p1, p2 (:func:`candidate_frequencies`).
 
     Only the conditions that can decide somewhere in the batch are judged (a source's, order 1,
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
@@ -135,7 +210,7 @@ def _resonance(out: Verdicts, scene, designs, d0, M, K, mech, harmonics, stable)
     shares = forcing_shares(M, K, forces).reshape(len(d0.S), -1)
     deciding = np.array([c.source == "paper" or c.harmonic == 1 for c in conditions]) | (shares >= FORCING_SHARE).any(0)
     kept = np.nonzero(deciding)[0]
-    zero, averaged = candidate_frequencies(designs)
+    zero, averaged = frequencies
     margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, [conditions[i] for i in kept], shares[:, kept],
                                            scene.limits.detuning)
     worst = verdict.worst
@@ -373,9 +448,12 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
     block = block_matrices(d0)
     decoupled, mech = mech.decoupled, mech.at(designs.a)
     judgement = None
+    if resonance or designs.coupled:  # a coupled support stands or not at the frequencies the modes take
+        *frequencies, steady = candidate_frequencies(designs, mech)
+        stable = stable & steady
     if resonance:
-        judgement = _resonance(out, scene, designs, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, stable)
-    if amplitudes:
+        judgement = _resonance(out, scene, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, frequencies, stable)
+    if amplitudes:  # fcalc amplitudes judges the resonances too, and takes every harmonic's springs
         motion, resonant = _motion(scene, designs, d0, block, mech, harmonics, decoupled)
-        _amplitudes(out, scene, designs, motion, resonant, stable)
+        _amplitudes(out, scene, designs, motion, resonant, stable & designs.harmonics_stable())
     return given, judgement

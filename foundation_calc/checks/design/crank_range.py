@@ -77,9 +77,10 @@ def _worst(owner, outcome, utilisation, governing, n):
     return result
 
 
-def _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega):
+def _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega, mech):
     """(candidate index, factor) of every crossing of a listed condition between two grid
-    factors (module docstring), found by bisection in log(factor)."""
+    factors (module docstring), found by bisection in log(factor); ``mech`` the
+    :class:`~foundation_calc.solvers.crank.batch.MechanismOperator`."""
     from foundation_calc.checks.design.crank_physics import CandidateDesigns, candidate_frequencies
     from foundation_calc.checks.resonance_rule import INFORMATION
 
@@ -99,7 +100,7 @@ def _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, st
     for _ in range(CROSSING_STEPS if len(who) else 0):
         mid = 0.5 * (low + high)
         designs = CandidateDesigns(scene, L[who], B[who], H[who], np.exp(mid), _take(sizes, who))
-        frequencies = candidate_frequencies(designs)[0]
+        frequencies = candidate_frequencies(designs, mech.at(designs.a))[0]
         value = np.stack([getattr(frequencies, m) * np.ones(len(who)) for m in ("k0", "p1", "p2")], -1)
         same = np.sign(value[np.arange(len(who)), mode[c]] / order[c] - omega) == sign
         low, high = np.where(same, mid, low), np.where(same, high, mid)
@@ -121,7 +122,7 @@ def over_range(scene, L, B, H, sizes, mech, harmonics, chunk: int) -> dict:
     resonance, (zero, judged, status, conditions), reasons = _judged(
         scene, L[who], B[who], H[who], _take(sizes, who), factor, mech, harmonics, True, False, chunk)
     stable = resonance["resonance"][2] != len(conditions)  # the last reason: the block tips over
-    at, crossed, c = _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega)
+    at, crossed, c = _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, stable, omega, mech)
     if len(at):  # the crossings where the rule judges the crossed condition
         found, extra, _ = _judged(scene, L[at], B[at], H[at], _take(sizes, at), crossed, mech, harmonics, True, False, chunk)
         kept = extra[1][np.arange(len(at)), c]

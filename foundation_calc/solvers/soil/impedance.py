@@ -299,7 +299,7 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
                           np.where(rising, g_hi, g_lo), np.where(rising, g_lo, g_hi))
     lost = ((g_hi > 0.0) | (g_lo < 0.0)) & (np.abs(hi - lo) > tol)
     if np.any(lost):  # p(ω) not monotonic (a pile group's): the crossing of ω = p(ω) nearest p_s on a grid
-        grid = hi[..., None] * SCAN
+        grid = hi[..., None] * np.where(lost[..., None], SCAN, 1.0)  # the others asked again where they were
         at_once = trials and grid.size <= AT_ONCE
         g = (frequency_at(grid) if at_once else np.stack([frequency_at(grid[..., k]) for k in range(len(SCAN))], axis=-1)) - grid
         down = (g[..., :-1] >= 0.0) & (g[..., 1:] <= 0.0)
