@@ -24,7 +24,7 @@ KIND_COMMANDS: dict[str, tuple[str, ...]] = {
 #: foundation): a TOML file with any of them is a scene, with or without its kind line.
 SCENE_TABLES = frozenset({
     "foundation", "soil", "mechanism", "operation", "loads", "limits", "drive", "points",
-    "platform", "exciter", "isolators", "extra_exciters", "block", "machines", "piles", "report",
+    "platform", "exciter", "isolators", "isolation", "extra_exciters", "block", "machines", "piles", "report",
 })
 
 def model_for_kind(kind: str) -> type:
