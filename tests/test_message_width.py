@@ -59,16 +59,16 @@ def _hangs(lines: list[str], start: str, indent: int, whole: str) -> None:
 
 
 def test_a_refusal_wraps_with_a_hanging_indent_on_a_terminal():
-    """``fcalc design`` refuses a piled crank in a 460-character line: on a terminal it wraps
-    under the field (7 cells, after ``error: ``), in a pipe it stays one line."""
-    scene = str(CONFIGS / "crank_on_piles.toml")
-    piped = _piped("design", scene)
+    """``fcalc design`` refuses a block on isolators in a 240-character line: on a terminal it
+    wraps under the field (7 cells, after ``error: ``), in a pipe it stays one line."""
+    args = ("design", str(CONFIGS / "block_on_isolators.toml"), "--vary", "block.length=2:3")
+    piped = _piped(*args)
     assert piped.returncode == 3
     [line] = piped.stderr.splitlines()  # one line per problem, for grep
-    assert line.startswith("error: soil: ") and len(line) > 300
-    code, lines = _on_terminal("design", scene)
+    assert line.startswith("error: isolators: ") and len(line) > 200
+    code, lines = _on_terminal(*args)
     assert code == 3
-    _hangs(lines, "error: soil: ", len("error: "), line)
+    _hangs(lines, "error: isolators: ", len("error: "), line)
 
 
 @pytest.fixture
