@@ -159,9 +159,8 @@ def plane(at, name: str, coupled: bool = False) -> tuple:
                 " group gives); the crank foundation's plane model takes that one coupling")
         raise PhysicsError(
             f"the support {name} {what}", field="soil",
-            hint=("fcalc resonance, amplitudes and check (without a vibration code) solve a crank scene on a pile group by"
-                  " the plane's one model;"
-                  " for the other commands describe the foundation as a block_foundation scene, whose 6-DOF model"
+            hint=("the crank's commands take a support's sway-rocking coupling (a pile group) by the plane's one model;"
+                  " for another coupling describe the foundation as a block_foundation scene, whose 6-DOF model"
                   " takes a coupled support") if not coupled else
                  "describe the foundation as a block_foundation scene, whose 6-DOF model takes a coupled support")
     return (tuple(at.springs[..., k] for k in PLANE), tuple(at.dashpots[..., k] for k in PLANE),
