@@ -152,7 +152,7 @@ def print_modes(modes, units: DisplayUnits) -> None:
     title = "Natural frequencies (6-DOF, undamped)"
     columns = ["mode", "dominant motion", "Hz", speed, "damping ratio"]
     if modes.static is not None:
-        title += ": each mode with the soil's springs at its own frequency, beside the static springs'"
+        title += ": each mode with the support's springs at its own frequency, beside the static springs'"
         columns.append(f"static, {speed}")
     t = titled_table(title, columns, columns[2:])
     for j, p in enumerate(modes.frequencies):
@@ -191,7 +191,7 @@ def _print_plane(report: ResonanceReport, scene, source: str, units: DisplayUnit
     columns = ["mode", "rad/s", "Hz", "rpm", f"{units.label('speed')}, averaged inertia"]
     if dependent:
         columns.append(f"{units.label('speed')}, static springs")
-    freqs = titled_table("Natural frequencies" + (", each on the soil's springs at its own frequency" if dependent else ""),
+    freqs = titled_table("Natural frequencies" + (", each on the support's springs at its own frequency" if dependent else ""),
                          columns, columns[1:])
     for mode in ("k0", "p1", "p2"):
         w0, w1 = getattr(report.zero_order, mode), getattr(report.averaged, mode)
