@@ -9,6 +9,14 @@ diag(M_tot, M_tot, I_c), the base springs K_x on x − h θ, K_z on y, K_φ on �
 −P h), whose frequencies are the paper's zero-order k0, p1, p2 (4.5)-(4.7). On a
 frequency-dependent soil the mode p_j is the eigenvector of the operator on the springs K(p_j)
 whose eigenvalue is p_j² (p_j solves p = p(K(p)), so p_j² is an eigenvalue there).
+
+On a support that couples sway with rocking (a pile group: K_xφ, C_xφ at O) no uncoupled block
+holds the plane: the modes are those of the one model the resonance check solves
+(:func:`~foundation_calc.solvers.crank.averaged.plane_frequencies`), the averaged operator M̄, K̄
+with the coupling, by its solver (:func:`~foundation_calc.solvers.crank.averaged.natural_modes`),
+each mode on the springs at its own frequency p_j, where it is the eigenvector whose eigenvalue is
+p_j² (the mode of that rank there, as the resonance check names it), mass-normalised on M̄
+(:func:`coupled_plane_modes`).
 """
 
 from __future__ import annotations
@@ -77,4 +85,38 @@ def plane_modes(frequencies: Mapping[str, float], block_at: Callable) -> PlaneMo
     return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
 
 
-__all__ = ["BASE_MOTIONS", "PlaneModes", "plane_modes"]
+def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -> PlaneModes:
+    """The shapes of the modes ``frequencies`` (name -> p [rad/s]; nan: left out) of the one model
+    in the plane of the design ``design_at(ω)`` (a
+    :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` on the support at ω, its
+    sway-rocking coupling included), each at its own frequency (module docstring); ``springs`` are
+    the support's direct springs K_x, K_z, K_φ at O there."""
+    from foundation_calc.solvers.crank.averaged import averaged_operator, natural_modes
+
+    labels, found, shapes, springs, h = [], [], [], [], 0.0
+    for label, p in frequencies.items():
+        if math.isnan(p):
+            continue
+        design = design_at(p)
+        M, _, K, _, _ = averaged_operator(design)
+        natural, vectors = natural_modes(M, K)
+        j = int(np.argmin(np.abs(natural - p)))
+        shape = vectors[:, j] / math.sqrt(float(vectors[:, j] @ M @ vectors[:, j]))
+        labels.append(label)
+        found.append(p)
+        shapes.append(shape)
+        springs.append((float(design.c1 * design.S), float(design.c * design.S), float(design.c_phi * design.I1)))
+        h = float(design.h)
+    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+
+
+def scene_plane_modes(scene, frequencies: Mapping[str, float]) -> PlaneModes:
+    """The modes ``frequencies`` (name -> p [rad/s]) of a ``crank_foundation`` scene: of its block
+    (:func:`plane_modes`), or, on a support coupling sway with rocking, of its one model in the
+    plane (:func:`coupled_plane_modes`)."""
+    if scene.mechanism is not None and scene.design(coupled=True).coupled:
+        return coupled_plane_modes(frequencies, lambda w: scene.design(w, coupled=True))
+    return plane_modes(frequencies, scene.block)
+
+
+__all__ = ["BASE_MOTIONS", "PlaneModes", "coupled_plane_modes", "plane_modes", "scene_plane_modes"]
