@@ -135,3 +135,17 @@ def test_check_and_report_judge_the_code_on_piles(scene_file, runner):
     write_sheet(sheet, out)
     text = out.read_text(encoding="utf-8")
     assert "ISO 10816-3" in text and "classified from the modes" in text
+
+
+def test_the_soil_validity_on_piles_judges_the_motions_each_mode_strains(document, brute_force):
+    """The soil model's range is judged at each mode with the motions whose direct springs at O (the
+    group's K_x, K_z, K_φ read from its 6 × 6 at the mode's frequency) hold at least 1 % of the
+    mode's strain energy k_i q_i² in the brute-force shape (u_x = x − h θ, u_z = −y, θ_y = θ)."""
+    scene = parse_scene(document)
+    h = scene.foundation.cog_height
+    values = fc.resonance(document).to_dict()["soil_validity"]["values"]
+    for mode, (p, (x, y, theta)) in brute_force.items():
+        springs = scene.support().impedance(p).springs[[0, 2, 4]]
+        energy = springs * np.array([x - h * theta, -y, theta]) ** 2
+        expected = [m for m, e in zip(("horizontal", "vertical", "rocking"), energy) if e >= 0.01 * energy.sum()]
+        assert [v["motion"] for v in values if v["at"] == mode] == expected, (mode, energy / energy.sum())
