@@ -62,6 +62,22 @@ class PlaneModes:
         return np.array([x + height * theta, y + horizontal * theta])
 
 
+def _modes(frequencies: Mapping[str, float], mode_at: Callable) -> PlaneModes:
+    """The modes ``frequencies`` (name -> p [rad/s]; nan: left out), ``mode_at(p)`` giving the
+    mass-normalised shape (3,) whose frequency is p on the springs at p, those springs K_x, K_z,
+    K_φ at O and h [m]."""
+    labels, found, shapes, springs, h = [], [], [], [], 0.0
+    for label, p in frequencies.items():
+        if math.isnan(p):
+            continue
+        shape, at, h = mode_at(p)
+        labels.append(label)
+        found.append(p)
+        shapes.append(shape)
+        springs.append(at)
+    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+
+
 def plane_modes(frequencies: Mapping[str, float], block_at: Callable) -> PlaneModes:
     """The shapes of the modes ``frequencies`` (name -> p [rad/s]; nan: left out) of the block
     ``block_at(ω)`` (a :class:`~foundation_calc.solvers.crank.loads.RigidBlock` on the springs at
@@ -69,20 +85,14 @@ def plane_modes(frequencies: Mapping[str, float], block_at: Callable) -> PlaneMo
     from foundation_calc.solvers.crank.loads import matrices
     from foundation_calc.solvers.numerics.symmetric_modes import symmetric_modes
 
-    labels, found, shapes, springs, h = [], [], [], [], 0.0
-    for label, p in frequencies.items():
-        if math.isnan(p):
-            continue
+    def mode_at(p):
         block = block_at(p)
         M, K, _ = matrices(block)
         squared, vectors = symmetric_modes(K, M)
         j = int(np.argmin(np.abs(np.sqrt(np.clip(squared, 0.0, None)) - p)))
-        labels.append(label)
-        found.append(p)
-        shapes.append(vectors[:, j])
-        springs.append((float(block.K_x), float(block.K_z), float(block.K_phi)))
-        h = float(block.h)
-    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+        return vectors[:, j], (float(block.K_x), float(block.K_z), float(block.K_phi)), float(block.h)
+
+    return _modes(frequencies, mode_at)
 
 
 def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -> PlaneModes:
@@ -93,21 +103,14 @@ def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -
     the support's direct springs K_x, K_z, K_φ at O there."""
     from foundation_calc.solvers.crank.averaged import averaged_operator, natural_modes
 
-    labels, found, shapes, springs, h = [], [], [], [], 0.0
-    for label, p in frequencies.items():
-        if math.isnan(p):
-            continue
-        design = design_at(p)
-        M, _, K, _, _ = averaged_operator(design)
+    def mode_at(p):
+        d = design_at(p)
+        M, _, K, _, _ = averaged_operator(d)
         natural, vectors = natural_modes(M, K)
-        j = int(np.argmin(np.abs(natural - p)))
-        shape = vectors[:, j] / math.sqrt(float(vectors[:, j] @ M @ vectors[:, j]))
-        labels.append(label)
-        found.append(p)
-        shapes.append(shape)
-        springs.append((float(design.c1 * design.S), float(design.c * design.S), float(design.c_phi * design.I1)))
-        h = float(design.h)
-    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+        v = vectors[:, int(np.argmin(np.abs(natural - p)))]
+        return v / math.sqrt(float(v @ M @ v)), (float(d.c1 * d.S), float(d.c * d.S), float(d.c_phi * d.I1)), float(d.h)
+
+    return _modes(frequencies, mode_at)
 
 
 def scene_plane_modes(scene, frequencies: Mapping[str, float]) -> PlaneModes:
