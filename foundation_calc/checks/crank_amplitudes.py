@@ -333,11 +333,20 @@ def _code_rows(approx: Approximation, limits, omega: float, supports=None) -> tu
 def scene_supports(scene):
     """The support class of every point and direction of a ``crank_foundation`` scene with a
     vibration code (:func:`~foundation_calc.checks.support.crank_supports`, from the block's modes
-    k0, p1, p2, each at its own frequency on a frequency-dependent soil); None without a code."""
+    k0, p1, p2, each at its own frequency on a frequency-dependent soil; on a support coupling sway
+    with rocking, a pile group, the one model's modes as the resonance check reports them); None
+    without a code."""
     if getattr(scene.limits, "code", None) is None:
         return None
-    from foundation_calc.checks.crank_resonance import scene_block_frequencies
     from foundation_calc.checks.support import crank_supports
+
+    design = None if scene.mechanism is None else scene.design(coupled=True)
+    if design is not None and design.coupled:
+        from foundation_calc.checks.crank_resonance import design_frequencies, scene_design_frequencies
+
+        consistent = scene_design_frequencies(scene)
+        return crank_supports(scene, design_frequencies(design)[1] if consistent is None else consistent[1])
+    from foundation_calc.checks.crank_resonance import scene_block_frequencies
     from foundation_calc.solvers.crank.loads import block_frequencies
 
     consistent = scene_block_frequencies(scene)

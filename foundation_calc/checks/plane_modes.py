@@ -9,6 +9,14 @@ diag(M_tot, M_tot, I_c), the base springs K_x on x − h θ, K_z on y, K_φ on �
 −P h), whose frequencies are the paper's zero-order k0, p1, p2 (4.5)-(4.7). On a
 frequency-dependent soil the mode p_j is the eigenvector of the operator on the springs K(p_j)
 whose eigenvalue is p_j² (p_j solves p = p(K(p)), so p_j² is an eigenvalue there).
+
+On a support that couples sway with rocking (a pile group: K_xφ, C_xφ at O) no uncoupled block
+holds the plane: the modes are those of the one model the resonance check solves
+(:func:`~foundation_calc.solvers.crank.averaged.plane_frequencies`), the averaged operator M̄, K̄
+with the coupling, by its solver (:func:`~foundation_calc.solvers.crank.averaged.natural_modes`),
+each mode on the springs at its own frequency p_j, where it is the eigenvector whose eigenvalue is
+p_j² (the mode of that rank there, as the resonance check names it), mass-normalised on M̄
+(:func:`coupled_plane_modes`).
 """
 
 from __future__ import annotations
@@ -54,6 +62,22 @@ class PlaneModes:
         return np.array([x + height * theta, y + horizontal * theta])
 
 
+def _modes(frequencies: Mapping[str, float], mode_at: Callable) -> PlaneModes:
+    """The modes ``frequencies`` (name -> p [rad/s]; nan: left out), ``mode_at(p)`` giving the
+    mass-normalised shape (3,) whose frequency is p on the springs at p, those springs K_x, K_z,
+    K_φ at O and h [m]."""
+    labels, found, shapes, springs, h = [], [], [], [], 0.0
+    for label, p in frequencies.items():
+        if math.isnan(p):
+            continue
+        shape, at, h = mode_at(p)
+        labels.append(label)
+        found.append(p)
+        shapes.append(shape)
+        springs.append(at)
+    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+
+
 def plane_modes(frequencies: Mapping[str, float], block_at: Callable) -> PlaneModes:
     """The shapes of the modes ``frequencies`` (name -> p [rad/s]; nan: left out) of the block
     ``block_at(ω)`` (a :class:`~foundation_calc.solvers.crank.loads.RigidBlock` on the springs at
@@ -61,20 +85,41 @@ def plane_modes(frequencies: Mapping[str, float], block_at: Callable) -> PlaneMo
     from foundation_calc.solvers.crank.loads import matrices
     from foundation_calc.solvers.numerics.symmetric_modes import symmetric_modes
 
-    labels, found, shapes, springs, h = [], [], [], [], 0.0
-    for label, p in frequencies.items():
-        if math.isnan(p):
-            continue
+    def mode_at(p):
         block = block_at(p)
         M, K, _ = matrices(block)
         squared, vectors = symmetric_modes(K, M)
         j = int(np.argmin(np.abs(np.sqrt(np.clip(squared, 0.0, None)) - p)))
-        labels.append(label)
-        found.append(p)
-        shapes.append(vectors[:, j])
-        springs.append((float(block.K_x), float(block.K_z), float(block.K_phi)))
-        h = float(block.h)
-    return PlaneModes(tuple(labels), np.array(found), np.array(shapes).T.reshape(3, -1), np.array(springs).reshape(-1, 3), h)
+        return vectors[:, j], (float(block.K_x), float(block.K_z), float(block.K_phi)), float(block.h)
+
+    return _modes(frequencies, mode_at)
 
 
-__all__ = ["BASE_MOTIONS", "PlaneModes", "plane_modes"]
+def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -> PlaneModes:
+    """The shapes of the modes ``frequencies`` (name -> p [rad/s]; nan: left out) of the one model
+    in the plane of the design ``design_at(ω)`` (a
+    :class:`~foundation_calc.solvers.crank.mechanism.CrankDesign` on the support at ω, its
+    sway-rocking coupling included), each at its own frequency (module docstring); ``springs`` are
+    the support's direct springs K_x, K_z, K_φ at O there."""
+    from foundation_calc.solvers.crank.averaged import averaged_operator, natural_modes
+
+    def mode_at(p):
+        d = design_at(p)
+        M, _, K, _, _ = averaged_operator(d)
+        natural, vectors = natural_modes(M, K)
+        v = vectors[:, int(np.argmin(np.abs(natural - p)))]
+        return v / math.sqrt(float(v @ M @ v)), (float(d.c1 * d.S), float(d.c * d.S), float(d.c_phi * d.I1)), float(d.h)
+
+    return _modes(frequencies, mode_at)
+
+
+def scene_plane_modes(scene, frequencies: Mapping[str, float]) -> PlaneModes:
+    """The modes ``frequencies`` (name -> p [rad/s]) of a ``crank_foundation`` scene: of its block
+    (:func:`plane_modes`), or, on a support coupling sway with rocking, of its one model in the
+    plane (:func:`coupled_plane_modes`)."""
+    if scene.mechanism is not None and scene.design(coupled=True).coupled:
+        return coupled_plane_modes(frequencies, lambda w: scene.design(w, coupled=True))
+    return plane_modes(frequencies, scene.block)
+
+
+__all__ = ["BASE_MOTIONS", "PlaneModes", "coupled_plane_modes", "plane_modes", "scene_plane_modes"]

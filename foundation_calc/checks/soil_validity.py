@@ -308,15 +308,19 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
     :func:`soil_validity` takes it."""
     if not fitted_range(method).applies:
         return soil_validity(method, V_s, {}, ())
-    judged = plane_judged(frequencies, block_at, speeds)
+    from foundation_calc.checks.plane_modes import plane_modes
+
+    judged = plane_judged(plane_modes(frequencies, block_at), speeds)
     return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged, stratum)
 
 
-def plane_judged(frequencies: Mapping[str, float], block_at, speeds: Mapping[str, float]) -> list[JudgedFrequency]:
-    """The plane model's judged frequencies (:func:`plane_validity`'s arguments)."""
-    from foundation_calc.checks.plane_modes import BASE_MOTIONS, plane_modes
+def plane_judged(modes, speeds: Mapping[str, float]) -> list[JudgedFrequency]:
+    """The plane model's judged frequencies: each of ``modes``
+    (:class:`~foundation_calc.checks.plane_modes.PlaneModes`) with the base motions whose direct
+    springs hold at least :data:`MOTION_SHARE` of its strain energy in them (:func:`spring_shares`),
+    and ``speeds`` (name -> ω [rad/s]) with every motion."""
+    from foundation_calc.checks.plane_modes import BASE_MOTIONS
 
-    modes = plane_modes(frequencies, block_at)
     shares = spring_shares(modes.springs, modes.base_motion())
     judged = mode_frequencies(modes.labels, modes.frequencies, shares, BASE_MOTIONS)
     return judged + [JudgedFrequency(at, w, BASE_MOTIONS) for at, w in speeds.items()]
@@ -350,7 +354,11 @@ def crank_validity(scene, report) -> SoilValidity:
     frequency-dependent support each at its own frequency) and every order the rule judges, against
     the range its support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`;
     the plane's horizontal, vertical and rocking motions are the support's x, z and ry). On a support
-    coupling the plane (a pile group) every mode is judged with every motion, as the orders are."""
+    coupling the plane (a pile group) the modes are the one model's the resonance check solves
+    (:func:`~foundation_calc.checks.plane_modes.scene_plane_modes`), each judged with the motions
+    whose direct springs K_x, K_z, K_φ at O it strains."""
+    from foundation_calc.checks.plane_modes import scene_plane_modes
+
     support = scene.support()
     declared = support.validity()
     fitted, cutoffs = declared_range(support)
@@ -361,12 +369,7 @@ def crank_validity(scene, report) -> SoilValidity:
     speeds = {_order_label(n): n * report.omega for n in judged_orders(report.rows)}
     b = declared.lengths
     lengths = b | {"horizontal": b["x"], "vertical": b["z"], "rocking": b["ry"]}
-    if report.design is not None and report.design.coupled:  # a pile group: no uncoupled block gives the shapes
-        from foundation_calc.checks.plane_modes import BASE_MOTIONS
-
-        judged = [JudgedFrequency(m, p, BASE_MOTIONS) for m, p in (modes | speeds).items()]
-    else:
-        judged = plane_judged(modes, scene.block, speeds)
+    judged = plane_judged(scene_plane_modes(scene, modes), speeds)
     return judge_a0(fitted, declared.V_s, lengths, judged, cutoffs)
 
 

@@ -134,10 +134,12 @@ def crank_supports(scene, frequencies) -> dict[str, tuple[SupportClass, ...]]:
     """Point name -> the support class (horizontal, vertical) of C and of every point of a
     ``crank_foundation`` scene whose modes k0, p1, p2 have ``frequencies``
     (:class:`~foundation_calc.solvers.crank.frequencies.NaturalFrequencies`, rad/s; on a
-    frequency-dependent soil each at its own frequency); the main excitation is the speed."""
-    from foundation_calc.checks.plane_modes import plane_modes
+    frequency-dependent soil each at its own frequency; on a support coupling sway with rocking, a
+    pile group, the one model's modes the resonance check reports:
+    :func:`~foundation_calc.checks.plane_modes.scene_plane_modes`); the main excitation is the speed."""
+    from foundation_calc.checks.plane_modes import scene_plane_modes
 
-    modes = plane_modes({m: float(getattr(frequencies, m)) for m in ("k0", "p1", "p2")}, scene.block)
+    modes = scene_plane_modes(scene, {m: float(getattr(frequencies, m)) for m in ("k0", "p1", "p2")})
     excitation = scene.speed.omega_rad_s
     given = scene.limits.foundation
     points = [("C", 0.0, 0.0), *((p.name, p.horizontal, p.height) for p in scene.points)]
