@@ -111,6 +111,18 @@ def require_stable_rocking(c_phi, I1, P, h, K_x=1.0, K_xphi=0.0):
     return margin
 
 
+def require_stable_design(design):
+    """:func:`require_stable_rocking` of a design (:func:`stability_arguments`) whose springs are
+    static (its ``soil_frequency`` 0); None, judging nothing, for one on a frequency-dependent
+    support's springs at ω ≠ 0. Stability in rocking (paper (3.4)) is a statement about the static
+    equilibrium; the springs at ω are the real part of an impedance (a pile group's K_x(ω) may dip
+    near zero, making K_xφ²/K_x explode), and its scene judged the springs at rest
+    (:meth:`~foundation_calc.scenes.crank.CrankScene.in_plane`)."""
+    if _any(design.soil_frequency != 0.0):
+        return None
+    return require_stable_rocking(*stability_arguments(design))
+
+
 def _first(values):
     """The smallest element of an array, or the value itself."""
     return float(values.min()) if hasattr(values, "min") else float(values)
