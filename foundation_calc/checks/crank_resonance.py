@@ -35,7 +35,10 @@ from foundation_calc.solvers.crank.resonance import (
 
 
 def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, NaturalFrequencies]:
-    """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays). On a
+    """Zero-order and averaged-inertia natural frequencies of a design (fields may be arrays); on a
+    frequency-dependent support's springs at ω ≠ 0 (its ``soil_frequency``) no stability is judged
+    and a mode the springs there leave without a positive frequency is 0 (the scene judged the
+    springs at rest, :meth:`~foundation_calc.scenes.crank.CrankScene.in_plane`). On a
     support coupling u_x with θ_y (a pile group) the closed forms do not apply: both are the one
     model's eigen-solve in the plane (:func:`~foundation_calc.solvers.crank.averaged.plane_frequencies`,
     one design)."""
@@ -46,8 +49,9 @@ def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, Natural
         return found, found
     d, rod = design, design.rod
     soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g)
-    zero = zero_order_frequencies(*soil_args)
-    averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho)
+    at_rest = not np.any(np.asarray(d.soil_frequency) != 0.0)  # stability is judged on static springs only
+    zero = zero_order_frequencies(*soil_args, at_rest=at_rest)
+    averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho, at_rest=at_rest)
     return zero, averaged
 
 

@@ -424,13 +424,23 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
         plane's motions is a PhysicsError, but for u_x with θ_y when ``coupled``), each a float (an
         array at an array of frequencies); raises PhysicsError (:meth:`require_stable_rocking`) for a
-        block that tips over."""
+        block that tips over.
+
+        Stability is judged on the support's springs at rest (ω = 0), whatever ``soil_frequency``:
+        tipping over under the weight (paper (3.4)) is a statement about the static equilibrium, and
+        a frequency-dependent support's springs at ω are the real part of an impedance (a pile
+        group's K_x(ω) may dip near zero, making K_xφ²/K_x explode), not a static stiffness. The
+        6-DOF block judges its stability on the static springs alike (:mod:`~foundation_calc.checks.block`)."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
         support = self.support()
         springs, dashpots, coupling = plane(support.impedance(soil_frequency), support.label, coupled)
         springs, dashpots, coupling = (tuple(map(_number, v)) for v in (springs, dashpots, coupling))
-        self.require_stable_rocking(springs[2], springs[0], coupling[0])
+        at_rest = springs, coupling
+        if support.frequency_dependent and _largest(abs(soil_frequency)) != 0.0:
+            static, _, static_coupling = plane(support.impedance(0.0), support.label, coupled)
+            at_rest = tuple(map(_number, static)), tuple(map(_number, static_coupling))
+        self.require_stable_rocking(at_rest[0][2], at_rest[0][0], at_rest[1][0])
         return springs, dashpots, coupling, support.method
 
     def soil_springs(self, method: str | None = None, omega=0.0):
@@ -565,6 +575,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             g=GRAVITY,
             K_xphi=K_xphi,
             C_xphi=C_xphi,
+            soil_frequency=soil_frequency,
         )
 
     def plane_model(self, soil_frequency: float = 0.0) -> PlaneFoundation:

@@ -88,7 +88,8 @@ class CandidateDesigns:
         p, ones = self.props, np.ones_like(self.L)
         return replace(self.base, M=p.M, I_c=p.I_c, h=p.h, S=self.S, I1=self.I1, c=K_z / self.S * ones,
                        c1=K_x / self.S * ones, c_phi=K_phi / self.I1 * ones, C_x=C_x * ones, C_z=C_z * ones,
-                       C_phi=C_phi * ones, a=self.a, K_xphi=K_xphi * ones, C_xphi=C_xphi * ones)
+                       C_phi=C_phi * ones, a=self.a, K_xphi=K_xphi * ones, C_xphi=C_xphi * ones,
+                       soil_frequency=soil_frequency)
 
     @property
     def coupled(self) -> bool:
@@ -96,13 +97,11 @@ class CandidateDesigns:
         closed forms do not apply (:attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`)."""
         return self.at(0.0).coupled
 
-    def rocking_stable(self, soil_frequency) -> np.ndarray:
-        """The candidates whose rocking stiffness at O on the support at ``soil_frequency`` [rad/s]
-        (a scalar or one per candidate), net of its sway-rocking coupling, K_φ - K_xφ²/K_x
+    def rocking_stable(self, soil_frequency=0.0) -> np.ndarray:
+        """The candidates whose rocking stiffness at O on the support's springs at ``soil_frequency``
+        [rad/s], net of its sway-rocking coupling, K_φ - K_xφ²/K_x
         (:func:`~foundation_calc.solvers.crank.frequencies.coupled_rocking_stiffness`; K_φ
-        uncoupled), exceeds the weight's overturning moment P h: those ``fcalc check`` does not
-        refuse as tipping over (:meth:`~foundation_calc.scenes.crank.CrankScene.require_stable_rocking`)
-        wherever it takes the springs at that frequency."""
+        uncoupled), exceeds the weight's overturning moment P h (paper (3.4))."""
         from foundation_calc.solvers.constants import GRAVITY
         from foundation_calc.solvers.crank.frequencies import coupled_rocking_stiffness
 
@@ -110,37 +109,33 @@ class CandidateDesigns:
         return coupled_rocking_stiffness(K_phi, K_x, K_xphi) > self.M_tot * GRAVITY * self.props.h
 
     def stable(self) -> np.ndarray:
-        """The candidates that stand (:meth:`rocking_stable`) on the static springs and, on an
-        uncoupled frequency-dependent support, at the highest harmonic (its rocking spring falls
-        with frequency: the highest harmonic's is the softest). A coupled support's springs at
-        frequency are judged where the checks take them: :meth:`harmonics_stable`,
-        :func:`candidate_frequencies`."""
+        """The candidates ``fcalc check`` does not refuse as tipping over: those that stand
+        (:meth:`rocking_stable`) on the support's springs at rest (ω = 0), as the scene judges them
+        (:meth:`~foundation_calc.scenes.crank.CrankScene.in_plane`). Stability is a statement about
+        the static equilibrium: a frequency-dependent support's springs at a harmonic or at a mode's
+        own frequency are the real part of an impedance (a pile group's K_x(ω) may dip near zero,
+        making K_xφ²/K_x explode), on which the steady state is solved and the modes are found, but
+        no stability judged."""
+        return self.rocking_stable(0.0)
+
+    def first_approximation_solvable(self) -> np.ndarray:
+        """The candidates whose paper's first approximation ``fcalc amplitudes`` solves at every
+        harmonic's springs: on an uncoupled frequency-dependent support, its closed forms
+        (:func:`~foundation_calc.solvers.crank.frequencies.zero_order_frequencies`) take them only
+        where c_φ I1 > P h, judged at the highest harmonic (the rocking spring falls with
+        frequency: the highest harmonic's is the softest); all True otherwise (a coupled support
+        has no first approximation)."""
         from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
 
-        ok = self.rocking_stable(0.0)
         if self.support.frequency_dependent and not self.coupled:
-            ok &= self.rocking_stable(FORCING_HARMONICS * self.base.omega)
-        return ok
-
-    def harmonics_stable(self) -> np.ndarray:
-        """The candidates that stand (:meth:`rocking_stable`) on a coupled frequency-dependent
-        support at every harmonic n ω, n = 1 ... :data:`~foundation_calc.solvers.crank.averaged.FORCING_HARMONICS`,
-        where ``fcalc amplitudes`` takes the springs of each harmonic (a pile group's K_xφ²/K_x is not
-        monotonic in frequency); all True otherwise (:meth:`stable` judges them)."""
-        from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
-
-        ok = np.ones(np.shape(self.L), dtype=bool)
-        if self.support.frequency_dependent and self.coupled:
-            for n in range(1, FORCING_HARMONICS + 1):
-                ok &= self.rocking_stable(n * self.base.omega)
-        return ok
+            return self.rocking_stable(FORCING_HARMONICS * self.base.omega)
+        return np.ones(np.shape(self.L), dtype=bool)
 
 
 def candidate_frequencies(designs: CandidateDesigns, mechanism):
-    """(zero-order, averaged, steady) of every candidate: k0, p1, p2, each mode at its own
-    frequency on a frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`),
-    and whether the support stood (:meth:`CandidateDesigns.rocking_stable`) at every frequency
-    they were solved at, as ``fcalc resonance`` refuses a scene that tips over at one (N,).
+    """(zero-order, averaged) of every candidate: k0, p1, p2, each mode at its own frequency on a
+    frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`;
+    the stability is judged at rest, :meth:`CandidateDesigns.stable`).
     ``mechanism``: the mechanism's M̄, C̄, K̄ (..., 3, 3) at the candidates' distances ``a``
     (:meth:`~foundation_calc.solvers.crank.batch.MechanismOperator.at`).
 
@@ -155,13 +150,12 @@ def candidate_frequencies(designs: CandidateDesigns, mechanism):
     from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
 
     static_design = designs.at(0.0)
-    steady = np.ones(np.shape(designs.L), dtype=bool)
     if not static_design.coupled:
         static = design_frequencies(static_design)
         if not designs.support.frequency_dependent:
-            return (*static, steady)
-        return (*(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
-                  for which in (0, 1)), steady)
+            return static
+        return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
+                     for which in (0, 1))
     M_m, _, K_m = mechanism[:3]
 
     def modes(design):
@@ -174,11 +168,10 @@ def candidate_frequencies(designs: CandidateDesigns, mechanism):
         ranked = by_static_rank(static)
 
         def at(w):
-            steady[...] &= designs.rocking_stable(w)
             return ranked(NaturalFrequencies(*np.moveaxis(modes(designs.at(w))[1][0], -1, 0)))
 
         static = consistent_frequencies(static, at)
-    return static, static, steady
+    return static, static
 
 
 class Verdicts:
@@ -448,12 +441,10 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
     block = block_matrices(d0)
     decoupled, mech = mech.decoupled, mech.at(designs.a)
     judgement = None
-    if resonance or designs.coupled:  # a coupled support stands or not at the frequencies the modes take
-        *frequencies, steady = candidate_frequencies(designs, mech)
-        stable = stable & steady
     if resonance:
+        frequencies = candidate_frequencies(designs, mech)
         judgement = _resonance(out, scene, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, frequencies, stable)
     if amplitudes:  # fcalc amplitudes judges the resonances too, and takes every harmonic's springs
         motion, resonant = _motion(scene, designs, d0, block, mech, harmonics, decoupled)
-        _amplitudes(out, scene, designs, motion, resonant, stable & designs.harmonics_stable())
+        _amplitudes(out, scene, designs, motion, resonant, stable & designs.first_approximation_solvable())
     return given, judgement

@@ -111,12 +111,30 @@ def require_stable_rocking(c_phi, I1, P, h, K_x=1.0, K_xphi=0.0):
     return margin
 
 
+def require_stable_design(design):
+    """:func:`require_stable_rocking` of a design (:func:`stability_arguments`) whose springs are
+    static (its ``soil_frequency`` 0); None, judging nothing, for one on a frequency-dependent
+    support's springs at ω ≠ 0. Stability in rocking (paper (3.4)) is a statement about the static
+    equilibrium; the springs at ω are the real part of an impedance (a pile group's K_x(ω) may dip
+    near zero, making K_xφ²/K_x explode), and its scene judged the springs at rest
+    (:meth:`~foundation_calc.scenes.crank.CrankScene.in_plane`)."""
+    if _any(design.soil_frequency != 0.0):
+        return None
+    return require_stable_rocking(*stability_arguments(design))
+
+
+def _positive(x):
+    """max(x, 0) of a float or an array: a determinant of the springs that is not positive (a
+    tipping block's, on springs at ω ≠ 0) gives p1 = 0, not a NaN."""
+    return (x + abs(x)) / 2.0
+
+
 def _first(values):
     """The smallest element of an array, or the value itself."""
     return float(values.min()) if hasattr(values, "min") else float(values)
 
 
-def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g) -> NaturalFrequencies:
+def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, at_rest: bool = True) -> NaturalFrequencies:
     """k0, p1, p2 of the zero-order operator, Eqs. (4.5)-(4.7) of [1]_ (c I1 → c_φ I1).
 
     The smaller root is taken as p1² = (a0 b1 - a1 b0)/p2², and a0 b1 - a1 b0 is evaluated as
@@ -133,28 +151,33 @@ def zero_order_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g) -> NaturalFreq
     c1 : coefficient of elastic uniform shear [N/m³]
     c_phi : coefficient of elastic non-uniform compression (rocking spring c_φ I1) [N/m³]
     g : acceleration of gravity [m/s²]
+    at_rest : the springs are static (the default): stability in rocking is judged on them. False
+        for a frequency-dependent support's springs at ω ≠ 0 (the real part of an impedance, its
+        scene judged at rest): where c_φ I1 <= P h there, p1² <= 0 and p1 is 0, no positive
+        frequency, as a root search ω = p(K(ω)) takes it.
 
     Raises
     ------
     PhysicsError
-        when the foundation is unstable in rocking (c_φ I1 <= M_tot g h).
+        when the foundation is unstable in rocking (c_φ I1 <= M_tot g h) on static springs.
 
     >>> f = zero_order_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 4.0e7, 9.81)
     >>> round(f.k0, 6), round(f.p1, 6), round(f.p2, 6)
     (108.732056, 63.428974, 128.254857)
     """
     P = M_tot * g
-    require_stable_rocking(c_phi, I1, P, h)
+    if at_rest:
+        require_stable_rocking(c_phi, I1, P, h)
     a0 = c1 * S / M_tot
     b0 = c1 * h * S / M_tot
     a1 = c1 * h * S / I_c
     b1 = (c1 * h * h * S + c_phi * I1 - P * h) / I_c
     det = c1 * S * (c_phi * I1 - P * h) / (M_tot * I_c)
     p2_sq = (a0 + b1) / 2.0 + (((a0 - b1) / 2.0) ** 2 + a1 * b0) ** 0.5
-    return NaturalFrequencies(k0=(c * S / M_tot) ** 0.5, p1=(det / p2_sq) ** 0.5, p2=p2_sq**0.5)
+    return NaturalFrequencies(k0=(c * S / M_tot) ** 0.5, p1=(_positive(det) / p2_sq) ** 0.5, p2=p2_sq**0.5)
 
 
-def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r, l, l1, rho) -> NaturalFrequencies:
+def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r, l, l1, rho, at_rest: bool = True) -> NaturalFrequencies:
     """k0, p1, p2 with the mechanism's inertia averaged over one revolution.
 
     The zero-order operator of [1]_ gives the rod's mass to x and y but no rocking inertia, so
@@ -175,6 +198,7 @@ def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r,
     l : rod length [m]
     l1 : l', rod centre of mass to crank pin (slider lumped in) [m]
     rho : rod radius of gyration about its centre of mass (slider lumped in) [m]
+    at_rest : as :func:`zero_order_frequencies`
 
     >>> f = averaged_inertia_frequencies(1.015e5, 4.5e5, 1.5, 30.0, 90.0, 4.0e7, 2.8e7, 4.0e7, 9.81,
     ...                                  1.5e3, 2.0, 0.3, 1.2, 1.0, 0.35)
@@ -182,7 +206,8 @@ def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r,
     (63.172362, 128.522152)
     """
     P = M_tot * g
-    require_stable_rocking(c_phi, I1, P, h)
+    if at_rest:
+        require_stable_rocking(c_phi, I1, P, h)
     mean_cos = mean_cos_psi(r / l)
     m12 = -m * mean_position_v(a, l1, mean_cos)
     m22 = I_c + m * (rho * rho + mean_square_distance(a, r, l, l1, mean_cos))
@@ -196,5 +221,5 @@ def averaged_inertia_frequencies(M_tot, I_c, h, S, I1, c, c1, c_phi, g, m, a, r,
     disc = (disc + abs(disc)) / 2.0  # rounding can make it -0 when p1 ≈ p2
     p2_sq = (trace + disc**0.5) / (2.0 * det_m)
     return NaturalFrequencies(
-        k0=(c * S / M_tot) ** 0.5, p1=(det_k / (det_m * p2_sq)) ** 0.5, p2=p2_sq**0.5
+        k0=(c * S / M_tot) ** 0.5, p1=(_positive(det_k) / (det_m * p2_sq)) ** 0.5, p2=p2_sq**0.5
     )

@@ -47,6 +47,10 @@ class CrankDesign:
     K_xphi, C_xphi : the support's coupling of u_x with θ_y at O [N/rad; N s/rad] (a pile group's
         sway-rocking); 0 for the paper's uncoupled springs, whose closed forms hold only then
         (:attr:`coupled`)
+    soil_frequency : the frequency [rad/s] a frequency-dependent support's springs and dashpots were
+        taken at (0: the static springs, or a support whose springs do not depend on frequency); at
+        ω ≠ 0 they are the real and imaginary parts of an impedance, on which no stability is
+        judged (:func:`~foundation_calc.solvers.crank.frequencies.require_stable_design`)
     """
 
     M: float
@@ -69,6 +73,7 @@ class CrankDesign:
     g: float
     K_xphi: float = 0.0
     C_xphi: float = 0.0
+    soil_frequency: float = 0.0
 
     @property
     def coupled(self) -> bool:

@@ -44,7 +44,7 @@ import numpy as np
 from foundation_calc.errors import ConvergenceError, PhysicsError
 from foundation_calc.solvers.crank.averaged import averaged_operator, block_matrices, mechanism_operator
 from foundation_calc.solvers.crank.dynamics import mechanism_motion
-from foundation_calc.solvers.crank.frequencies import require_stable_rocking, stability_arguments
+from foundation_calc.solvers.crank.frequencies import require_stable_design, require_stable_rocking
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, matrices
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
@@ -78,7 +78,7 @@ def structure(design: CrankDesign, horizontal, height) -> Structure:
         when the foundation is unstable in rocking, alone or with the rod's weight
         (:func:`require_stable_rest`).
     """
-    require_stable_rocking(*stability_arguments(design))
+    require_stable_design(design)
     M, C, exact, *_ = averaged_operator(design)
     require_stable_rest(exact, design.a)
     K = block_matrices(design)[2]

@@ -25,7 +25,7 @@ import numpy as np
 
 from foundation_calc.errors import ConvergenceError
 from foundation_calc.solvers.crank.dynamics import mechanism_motion, residual
-from foundation_calc.solvers.crank.frequencies import require_stable_rocking, stability_arguments
+from foundation_calc.solvers.crank.frequencies import require_stable_design
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.response import PeriodicMotion
 from foundation_calc.solvers.numerics.trig_series import analyse, phases
@@ -92,7 +92,7 @@ def shooting_solution(design: CrankDesign, *, rtol: float = RTOL) -> ShootingSol
     """
     from scipy.integrate import solve_ivp
 
-    require_stable_rocking(*stability_arguments(design))
+    require_stable_design(design)
     w = design.omega
     period = 2.0 * np.pi / w
     scale = np.array([1.0, 1.0, 1.0, w, w, w])
