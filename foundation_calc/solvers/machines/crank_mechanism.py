@@ -217,13 +217,18 @@ def samples_for(throws) -> int:
     λ = 0.9, 370 for λ = 0.995); twice that, a power of two, at least :data:`SAMPLES` and at most
     :data:`MAX_SAMPLES`.
 
+    q is computed as λ/(1 + sqrt(1 - λ²)), the same number without the cancellation that makes
+    1 - sqrt(1 - λ²) exactly 0 for a crank radius of round-off size (λ < 1e-8).
+
     >>> from types import SimpleNamespace as Throw
     >>> samples_for([Throw(r=0.1, l=0.4)]), samples_for([Throw(r=0.995, l=1.0)]), samples_for([Throw(r=1.0 - 1e-9, l=1.0)])
     (256, 1024, 16384)
+    >>> samples_for([Throw(r=1e-15, l=0.5)])
+    256
     """
     lam = max(th.r / th.l for th in throws)
-    q = (1.0 - np.sqrt(1.0 - lam * lam)) / lam
-    n = np.log(1e-16) / np.log(q)
+    q = lam / (1.0 + np.sqrt(1.0 - lam * lam))
+    n = np.log(1e-16) / np.log(max(q, np.finfo(float).tiny))
     return int(min(MAX_SAMPLES, max(SAMPLES, 2.0 ** np.ceil(np.log2(2.0 * n + 2.0)))))
 
 
