@@ -101,7 +101,14 @@ def plan(scene, speed: str | float | None = None, soil: str | float | None = Non
                              "'--machine'" if machine is not None else "'--alone'")
         return Plan(loaded, variable, values, unit)
     if variable != "omega":
-        raise UsageError("a block_foundation scene is swept by --speed", "'--soil'")
+        from foundation_calc.checks.block_soil_sweep import refusal
+
+        if machine is not None or alone:
+            raise UsageError("--machine and --alone choose the machine whose speed is swept; a soil sweep runs every"
+                             " machine at its own speed", "'--machine'" if machine is not None else "'--alone'")
+        if (why := refusal(loaded.model)) is not None:
+            raise UsageError(why, "'--soil'")
+        return Plan(loaded, variable, values, unit)
     names = [m.name for m in loaded.model.machines]
     if machine is None and len(names) > 1:
         raise UsageError(f"the scene has {len(names)} machines: name the one to sweep ({', '.join(names)})", "'--machine'")
@@ -149,12 +156,16 @@ def sweep(scene, *, speed: str | float | None = None, soil: str | float | None =
         ``--speed``: ``"FROM:TO[:N][UNIT]"``, N points (default 101) in rpm unless a unit follows
         (rpm, rad/s, hz), e.g. ``"100:600:251"`` or ``"10:60rad/s"``; one value is one point.
     soil : str or float, optional
-        ``--soil``: ``"FROM:TO[:N]"``, a factor on the soil's coefficients [-], e.g.
-        ``"0.5:1.5:41"``; a crank scene only. Give exactly one of ``speed`` and ``soil``.
+        ``--soil``: ``"FROM:TO[:N]"``, a factor on the soil's stiffness data [-] (Barkan's
+        coefficients; G, or V_s by its square root; SP 26's E; a block's given springs, their
+        dashpots by its square root; a pile group recomputed from its factored soil), e.g.
+        ``"0.5:1.5:41"``; not for a block on ``[[isolators]]``. Give exactly one of ``speed`` and
+        ``soil``.
     machine : str, optional
-        ``--machine``: a block's machine whose speed is swept (needed when it has several).
+        ``--machine``: a block's machine whose speed is swept (needed when it has several; not
+        with ``soil``: every machine then runs at its own speed).
     alone : bool
-        ``--alone``: a block's swept machine alone, the others standing still.
+        ``--alone``: a block's swept machine alone, the others standing still (not with ``soil``).
 
     Returns
     -------

@@ -22,7 +22,10 @@ SpeedOpt = Annotated[
 SoilOpt = Annotated[
     Optional[str],
     typer.Option("--soil", metavar="FROM:TO[:N]", show_default=False,
-                 help="Sweep a factor on the soil coefficients c_z, c_x and c_phi, e.g. 0.5:1.5:41 (soil known to ±50 %)."),
+                 help="Sweep a factor on the soil's stiffness data, e.g. 0.5:1.5:41 (soil known to ±50 %): Barkan's c_z,"
+                 " c_x, c_phi (c_psi); G, or V_s by its square root (lysmer, gazetas, pais_kausel); E (sp26); a block's"
+                 " given springs, their dashpots by its square root; a pile group recomputed from its factored soil."
+                 " Every machine of a block at its own speed; not for a block on [[isolators]]."),
 ]
 CsvOpt = Annotated[Optional[Path], typer.Option(
     "--csv", metavar="FILE", show_default=False,
@@ -69,7 +72,9 @@ def sweep(
     inside its band, or a peak or RMS limit exceeded), warn, pass. A scene's [[loads]] add their
     linear steady state and their resonance conditions. A long sweep written with --csv is
     streamed and summarised. A block_foundation scene sweeps one machine's speed (--machine; the
-    others at their own, or left out with --alone), its rows judged and worded the same way. A
+    others at their own, or left out with --alone), or the factor on its soil with every machine
+    at its own speed (each row fcalc amplitudes and resonance of the block on that soil), its rows
+    judged and worded the same way. A
     sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
     """
     from foundation_calc.api.options import display_units, plot_path, writable_path, writing
@@ -89,7 +94,7 @@ def sweep(
 
         shown = replace(shown, speed=planned.unit)  # the table speaks the unit the sweep was given in
     name = loaded.name or loaded.source
-    if planned.machine is None and csv is not None and not json and len(planned.values) > TABLE_ROWS_WITH_CSV:
+    if loaded.kind != "block_foundation" and csv is not None and not json and len(planned.values) > TABLE_ROWS_WITH_CSV:
         _stream_csv(chunks(planned), csv, plot, loaded.model, shown, name, len(planned.values))
         return
     result = swept(planned)

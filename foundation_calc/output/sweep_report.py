@@ -41,14 +41,16 @@ def status_text(row: dict) -> str:
 
 def verdict_cells(report):
     """The verdict of each point of every kind's sweep, one dict a point (a report with ``rows``,
-    the :class:`~foundation_calc.checks.sweep_status.RowVerdicts`, and their ``conditions``): its
-    governing condition (its own label, as resonance, amplitudes and check name it), the rule's
-    status, its margin and the margin it needs, the limits exceeded and the status (SI)."""
+    the :class:`~foundation_calc.checks.sweep_status.RowVerdicts`, and their ``conditions``, or
+    ``row_conditions``, one tuple a row, where the labels change along the sweep): its governing
+    condition (its own label, as resonance, amplitudes and check name it), the rule's status, its
+    margin and the margin it needs, the limits exceeded and the status (SI)."""
     rows = report.rows
     over = rows.over_limit
+    per_row = getattr(report, "row_conditions", None)
     for i in range(len(rows.status)):
         yield {
-            "governing_condition": rows.condition(i, report.conditions),
+            "governing_condition": rows.condition(i, report.conditions if per_row is None else per_row[i]),
             "resonance_status": str(rows.resonance_status[i]),
             "margin": float(rows.margin[i]),
             "needed": float(rows.needed[i]),

@@ -1,0 +1,119 @@
+"""``fcalc sweep --soil`` of a block scene: one row per factor on the soil's stiffness data
+(:class:`~foundation_calc.checks.block_soil_sweep.BlockSoilSweep`); table, JSON, CSV and plot, with
+the values and the verdict cells of the block's speed sweep (:mod:`~foundation_calc.output.block_sweep`)
+and the factor named as the crank foundation's soil sweep names it (``soil_factor``)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from foundation_calc.output.block_sweep import VALUES
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
+from foundation_calc.output.sweep_report import STATUS_STYLE, csv_cell, csv_text, limits_document, status_text, verdict, verdict_cells
+
+#: What the factor scales, for titles and labels.
+FACTORED = "factor on the soil's stiffness data"
+
+
+def _value(v) -> float | None:
+    """A float, None where there is none (a resonant row's NaN)."""
+    return None if np.isnan(v) else float(v)
+
+
+def _rows(sweep):
+    """One dict per factor, SI units."""
+    for i, (f, verdict_of) in enumerate(zip(sweep.factor, verdict_cells(sweep))):
+        yield {
+            "soil_factor": float(f),
+            "resonant": bool(sweep.resonant[i]),
+            **{key: dict(zip("xyz", map(_value, getattr(sweep, key)[i]))) for key in VALUES},
+            **verdict_of,
+        }
+
+
+def sweep_document(sweep, scene, source: str, warnings=()) -> dict:
+    """JSON of a block's soil sweep (SI): ``variable`` ``"soil_factor"`` and each point's
+    ``soil_factor``, as the crank foundation's soil sweep gives them; ``machines``: every machine's
+    speed (all run at their own); a resonant point's values null."""
+    from foundation_calc.units import speed_triplet
+
+    return {
+        "schema_version": JSON_SCHEMA_VERSION,
+        "command": "sweep",
+        "scene": {"source": source, "kind": scene.kind, "name": scene.name},
+        "variable": "soil_factor",
+        "machines": {name: speed_triplet(w) for name, w in sweep.speeds.items()},
+        "limits": limits_document(sweep.limits, sweep.detuning),
+        "critical_speeds": [],
+        "points": list(_rows(sweep)),
+        "warnings": list(warnings),
+        "verdict": verdict(sweep.rows.status),
+    }
+
+
+def _cell(units, quantity: str, value) -> str:
+    return "-" if np.isnan(value) else fmt(units.convert(quantity, float(value)), 4)
+
+
+def print_sweep(sweep, scene, source: str, units) -> None:
+    """The table of a block's soil sweep."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    amp, vel = units.label("amplitude"), units.label("velocity")
+    table = Table(title=escape(f"{scene.name or source}: sweep of the {FACTORED} (every machine at its own speed;"
+                               f" largest over G and the points): peak displacement x, y, z [{amp}], RMS velocity v"
+                               f" [{vel}] (largest direction)"), title_justify="left")
+    for col in ("factor", "x", "y", "z", "v", "status: governing resonance, margin; limits"):
+        table.add_column(escape(col), justify="left" if col.startswith("status") else "right")
+    for i, row in enumerate(_rows(sweep)):
+        table.add_row(fmt(row["soil_factor"]), *(_cell(units, "amplitude", v) for v in sweep.peak[i]),
+                      _cell(units, "velocity", np.max(sweep.velocity_rms[i])),
+                      f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
+    stdout().print(table)
+
+
+def sweep_csv(sweep) -> str:
+    """The rows as CSV text (SI units; cells as every kind's sweep writes them, empty where resonant)."""
+    values = [f"{name}_{d}_{unit}" for name, unit in VALUES.values() for d in "xyz"]
+    header = ["soil_factor", "resonant", *values, "governing_condition", "margin", "needed", "resonance_status",
+              "over_limit", "status"]
+    lines = [[csv_cell(c) for c in (r["soil_factor"], r["resonant"], *(r[key][d] for key in VALUES for d in "xyz"),
+                                    r["governing_condition"], r["margin"], r["needed"], r["resonance_status"],
+                                    r["over_limit"], r["status"])] for r in _rows(sweep)]
+    return csv_text([header, *lines])
+
+
+def plot_sweep(sweep, path, units, name: str) -> None:
+    """Largest peaks along x, y, z over G and the points against the factor (log scale), the
+    amplitude limit, the scene's soil (factor 1), and shaded the factors where the resonance rule
+    warns or fails (a judged condition inside its band)."""
+    from foundation_calc.checks.resonance_rule import bands_text
+    from foundation_calc.output.plots import mark_resonances, new_figure, save, title
+
+    fig, ax = new_figure()
+    xs = np.asarray(sweep.factor, dtype=float)
+    marker = "o" if len(xs) == 1 else None
+    for d, direction in enumerate("xyz"):
+        ax.semilogy(xs, units.convert("amplitude", sweep.peak[:, d]), label=f"peak {direction}", marker=marker)
+    if "displacement" in sweep.limits:
+        ax.axhline(units.convert("amplitude", sweep.limits["displacement"]), color="red", linestyle="--", label="amplitude limit")
+    inside = np.isin(sweep.rows.resonance_status, ("warn", "fail"))
+    step = np.diff(xs).min() / 2.0 if len(xs) > 1 else 0.05 * xs[0]
+    for i in np.flatnonzero(inside):
+        ax.axvspan(xs[i] - step, xs[i] + step, color="orange", alpha=0.25, lw=0,
+                   label="inside a detuning band" if i == np.flatnonzero(inside)[0] else None)
+    lo, hi = float(xs.min()), float(xs.max())
+    if hi == lo:
+        lo, hi = 0.9 * lo, 1.1 * hi
+    mark_resonances(ax, [], 1.0, lo, hi, "the scene's soil (factor 1)")
+    ax.set_xlabel(f"{FACTORED} [-]")
+    ax.set_ylabel(f"largest peak displacement over G and the points [{units.label('amplitude')}]")
+    title(ax, f"{name}: sweep of the {FACTORED} (every machine at its own speed)\nshaded: a judged resonance inside its"
+          f" band ([limits] detuning = {bands_text(sweep.detuning)})")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    save(fig, path)
+
+
+__all__ = ["plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
