@@ -13,7 +13,9 @@ from __future__ import annotations
 import copy
 import json
 import math
+import re
 
+import numpy as np
 import pytest
 import tomli_w
 
@@ -135,11 +137,40 @@ def test_csv_plot_and_api_hold_the_json_rows(runner, tmp_path):
     assert fc.sweep(CONFIGS / "block_two_machines.toml", soil="0.5:2:3").values.tolist() == [0.5, 1.25, 2.0]
 
 
-def test_a_soil_sweep_refuses_isolators_and_a_swept_machine(runner):
+def test_a_soil_sweep_refuses_isolators_a_swept_machine_and_a_block_that_tips_over(runner):
     """Isolators are catalogue springs, no soil to factor; --machine/--alone choose a speed sweep's
-    machine: usage errors (exit 2) that name the option and why."""
+    machine: usage errors (exit 2) that name the option and why. A factor so small that the block
+    tips over (K_rx = 1e-5 × 6.6e10 N m/rad below W z_G = 2.1e6 N m) is an invalid scene (exit 3)
+    naming the factor."""
     isolated = runner.invoke(app, ["sweep", str(CONFIGS / "block_on_isolators.toml"), "--soil", "0.5:2:3"])
     assert isolated.exit_code == 2 and "'--soil'" in isolated.stderr and "[[isolators]]" in isolated.stderr
     for extra in (["--machine", "motor"], ["--alone"]):
         result = runner.invoke(app, ["sweep", str(CONFIGS / "block_two_machines.toml"), "--soil", "0.5:2:3", *extra])
         assert result.exit_code == 2 and "every machine at its own speed" in result.stderr, extra
+    tipped = runner.invoke(app, ["sweep", str(CONFIGS / "block_two_machines.toml"), "--soil", "0.00001:1:3"])
+    assert tipped.exit_code == 3 and "at soil factor 1e-05: the block tips over about x" in tipped.stderr
+
+
+def test_a_factor_where_an_order_meets_an_undamped_mode_is_resonant(runner, tmp_path):
+    """block_two_machines.toml without dashpots: at the factor f where a mode's frequency is the
+    motor's speed ω, det(f K_s + K_W - ω² M) = 0, f an eigenvalue of (ω² M - K_W) v = f K_s v
+    (scipy; K_s the given springs, K_W the weight's tilt), the row has no steady state: status
+    resonant, its values null in the JSON, empty in the CSV and a dash in the table."""
+    import scipy.linalg
+
+    from foundation_calc.scenes import parse_scene
+
+    document = _springs()
+    del document["soil"]["dashpot"]
+    path = _write(tmp_path, "undamped", document)
+    model = parse_scene(document).model()
+    K_s = np.diag(model.springs)
+    omega = 1490.0 * math.pi / 30.0  # the motor
+    f = float(max(scipy.linalg.eigvals(omega**2 * model.M - (model.K - K_s), K_s).real))
+    (row,) = _json(runner, "sweep", str(path), "--soil", repr(f))["points"]
+    assert row["resonant"] and row["status"] == "resonant" and row["peak"] == {"x": None, "y": None, "z": None}
+    assert row["governing_condition"].startswith("motor: ω = mode") and row["margin"] < 1e-9
+    table = tmp_path / "undamped.csv"
+    shown = runner.invoke(app, ["sweep", str(path), "--soil", repr(f), "--csv", str(table)])
+    assert shown.exit_code == 0 and "resonant" in shown.stdout and re.search(r"│\s+-\s+│", shown.stdout)
+    assert ",true,,,," in table.read_text(encoding="utf-8")

@@ -90,16 +90,16 @@ def sweep_block_soil(scene, factors) -> BlockSoilSweep:
         the scene stands on ``[[isolators]]`` (:func:`refusal`).
     PhysicsError
         a factor so small that the block tips over (its rocking spring at O no stiffer than the
-        weight's overturning moment).
+        weight's overturning moment): the scene's message, naming the factor.
     """
-    from foundation_calc.checks.block import LIMITED_VALUES, check_block_as_given
+    from foundation_calc.checks.block import LIMITED_VALUES
     from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.checks.resonance_rule import judge
 
     if (why := refusal(scene)) is not None:
         raise ValueError(why)
     factors = np.asarray(factors, dtype=float)
-    reports = [check_block_as_given(scene.with_modulus_factor(float(f))) for f in factors]
+    reports = [_at_factor(scene, float(f)) for f in factors]
     conditions = [r.resonance.rows for r in reports]
     first = conditions[0]
     margins = np.array([[c.margin for c in rows] for rows in conditions]).reshape(len(factors), len(first))
@@ -117,6 +117,18 @@ def sweep_block_soil(scene, factors) -> BlockSoilSweep:
         row_conditions=tuple(conditions), rows=row_verdicts(margins, verdict, over, resonant), limits=limits,
         detuning=scene.limits.detuning,
     )
+
+
+def _at_factor(scene, factor: float):
+    """:func:`~foundation_calc.checks.block.check_block_as_given` of ``scene`` on its soil × ``factor``;
+    a block that tips over there says at which factor."""
+    from foundation_calc.checks.block import check_block_as_given
+    from foundation_calc.errors import PhysicsError
+
+    try:
+        return check_block_as_given(scene.with_modulus_factor(factor))
+    except PhysicsError as exc:
+        raise PhysicsError(f"at soil factor {factor:g}: {exc.message}", field=exc.field, hint=exc.hint) from None
 
 
 __all__ = ["BlockSoilSweep", "refusal", "sweep_block_soil"]
