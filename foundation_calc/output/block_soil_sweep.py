@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.output.block_sweep import VALUES
+from foundation_calc.output.block_sweep import VALUES, plot_largest_peaks
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
 from foundation_calc.output.sweep_report import STATUS_STYLE, csv_cell, csv_text, limits_document, status_text, verdict, verdict_cells
 
@@ -87,33 +87,17 @@ def sweep_csv(sweep) -> str:
 def plot_sweep(sweep, path, units, name: str) -> None:
     """Largest peaks along x, y, z over G and the points against the factor (log scale), the
     amplitude limit, the scene's soil (factor 1), and shaded the factors where the resonance rule
-    warns or fails (a judged condition inside its band)."""
+    warns or fails (a judged condition inside its band), half-way to the next factors
+    (:func:`~foundation_calc.output.block_sweep.plot_largest_peaks`)."""
     from foundation_calc.checks.resonance_rule import bands_text
-    from foundation_calc.output.plots import mark_resonances, new_figure, save, title
 
-    fig, ax = new_figure()
     xs = np.asarray(sweep.factor, dtype=float)
-    marker = "o" if len(xs) == 1 else None
-    for d, direction in enumerate("xyz"):
-        ax.semilogy(xs, units.convert("amplitude", sweep.peak[:, d]), label=f"peak {direction}", marker=marker)
-    if "displacement" in sweep.limits:
-        ax.axhline(units.convert("amplitude", sweep.limits["displacement"]), color="red", linestyle="--", label="amplitude limit")
+    half = np.diff(xs).min() / 2.0 if len(xs) > 1 else 0.05 * xs[0]
     inside = np.isin(sweep.rows.resonance_status, ("warn", "fail"))
-    step = np.diff(xs).min() / 2.0 if len(xs) > 1 else 0.05 * xs[0]
-    for i in np.flatnonzero(inside):
-        ax.axvspan(xs[i] - step, xs[i] + step, color="orange", alpha=0.25, lw=0,
-                   label="inside a detuning band" if i == np.flatnonzero(inside)[0] else None)
-    lo, hi = float(xs.min()), float(xs.max())
-    if hi == lo:
-        lo, hi = 0.9 * lo, 1.1 * hi
-    mark_resonances(ax, [], 1.0, lo, hi, "the scene's soil (factor 1)")
-    ax.set_xlabel(f"{FACTORED} [-]")
-    ax.set_ylabel(f"largest peak displacement over G and the points [{units.label('amplitude')}]")
-    title(ax, f"{name}: sweep of the {FACTORED} (every machine at its own speed)\nshaded: a judged resonance inside its"
-          f" band ([limits] detuning = {bands_text(sweep.detuning)})")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="lower right")
-    save(fig, path)
+    plot_largest_peaks(sweep, xs, path, units, [], (1.0, "the scene's soil (factor 1)"), f"{FACTORED} [-]",
+                       f"{name}: sweep of the {FACTORED} (every machine at its own speed)\nshaded: a judged resonance"
+                       f" inside its band ([limits] detuning = {bands_text(sweep.detuning)})",
+                       [(x - half, x + half) for x in xs[inside]])
 
 
 __all__ = ["plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]

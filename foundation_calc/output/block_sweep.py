@@ -93,28 +93,43 @@ def plot_sweep(sweep, path, units, name: str) -> None:
     rule does not judge as a grey line (:func:`~foundation_calc.output.plots.mark_resonances`);
     conditions that never decide are left out."""
     from foundation_calc.checks.resonance_rule import bands_text
+
+    marks = [(units.convert("speed", c.critical), c.label.removeprefix(f"{c.machine}: "), "extra", c.band if c.judged else 0.0)
+             for c in _critical(sweep, 0.0, np.inf)]
+    plot_largest_peaks(
+        sweep, np.asarray(units.convert("speed", sweep.omega), dtype=float), path, units, marks,
+        (units.convert("speed", sweep.speed), f"{sweep.machine}'s speed"), f"speed of {sweep.machine} [{units.label('speed')}]",
+        f"{name}: sweep of {sweep.machine}'s speed ({_others(sweep)})\nshaded: the detuning band of each judged"
+        f" critical speed $p_j/n$ ([limits] detuning = {bands_text(sweep.detuning)}); grey: order 1, not judged",
+    )
+
+
+def plot_largest_peaks(sweep, xs, path, units, marks, operating, xlabel: str, heading: str, shaded=()) -> None:
+    """The plot of every block sweep: the largest peaks along x, y, z over G and the points
+    (``sweep.peak`` (N, 3) [m]) against ``xs`` (N,) (log scale), the amplitude limit of
+    ``sweep.limits``, ``marks`` and ``operating`` (the scene's own value, its label) as
+    :func:`~foundation_calc.output.plots.mark_resonances` draws them, and the x-ranges ``shaded``
+    [(lo, hi)], labelled as inside a detuning band."""
     from foundation_calc.output.plots import mark_resonances, new_figure, save, title
 
     fig, ax = new_figure()
-    xs = np.asarray(units.convert("speed", sweep.omega), dtype=float)
     marker = "o" if len(xs) == 1 else None
     for d, direction in enumerate("xyz"):
         ax.semilogy(xs, units.convert("amplitude", sweep.peak[:, d]), label=f"peak {direction}", marker=marker)
     if "displacement" in sweep.limits:
         ax.axhline(units.convert("amplitude", sweep.limits["displacement"]), color="red", linestyle="--", label="amplitude limit")
-    marks = [(units.convert("speed", c.critical), c.label.removeprefix(f"{c.machine}: "), "extra", c.band if c.judged else 0.0)
-             for c in _critical(sweep, 0.0, np.inf)]
+    for k, (lo, hi) in enumerate(shaded):
+        ax.axvspan(lo, hi, color="orange", alpha=0.25, lw=0, label=None if k else "inside a detuning band")
     lo, hi = float(xs.min()), float(xs.max())
     if hi == lo:
         lo, hi = 0.9 * lo, 1.1 * hi
-    mark_resonances(ax, marks, units.convert("speed", sweep.speed), lo, hi, f"{sweep.machine}'s speed")
-    ax.set_xlabel(f"speed of {sweep.machine} [{units.label('speed')}]")
+    mark_resonances(ax, marks, operating[0], lo, hi, operating[1])
+    ax.set_xlabel(xlabel)
     ax.set_ylabel(f"largest peak displacement over G and the points [{units.label('amplitude')}]")
-    title(ax, f"{name}: sweep of {sweep.machine}'s speed ({_others(sweep)})\nshaded: the detuning band of each judged"
-          f" critical speed $p_j/n$ ([limits] detuning = {bands_text(sweep.detuning)}); grey: order 1, not judged")
+    title(ax, heading)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
     save(fig, path)
 
 
-__all__ = ["plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
+__all__ = ["plot_largest_peaks", "plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
