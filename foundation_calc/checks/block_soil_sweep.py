@@ -25,8 +25,8 @@ it; the row is :func:`~foundation_calc.checks.block.check_block_as_given` of tha
   undamped mode has no steady state (status ``resonant``, its values NaN).
 
 Isolators are no soil: a block on ``[[isolators]]`` has no soil to factor
-(:func:`refusal`). One check per factor (about 20 ms on a block on given springs, 0.2 s on a pile
-group).
+(:func:`refusal`). One check per factor: 41 factors of ``configs/block_two_machines.toml`` take
+0.3 s of CPU, of ``configs/block_on_piles.toml`` (the group's impedance) 3.3 s.
 """
 
 from __future__ import annotations
