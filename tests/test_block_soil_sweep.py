@@ -174,3 +174,19 @@ def test_a_factor_where_an_order_meets_an_undamped_mode_is_resonant(runner, tmp_
     shown = runner.invoke(app, ["sweep", str(path), "--soil", repr(f), "--csv", str(table)])
     assert shown.exit_code == 0 and "resonant" in shown.stdout and re.search(r"│\s+-\s+│", shown.stdout)
     assert ",true,,,," in table.read_text(encoding="utf-8")
+
+
+def test_each_row_names_the_modes_as_they_are_at_its_factor(runner, tmp_path):
+    """block_on_piles.toml: mode 5 is dominated by z at factor 0.5 and by ry at 2 (the group's
+    springs do not scale alike); each row's conditions carry the labels `fcalc resonance` gives the
+    scene written with V_s × sqrt(f), not the first row's."""
+    from foundation_calc.api.scene import load
+    from foundation_calc.checks.block_soil_sweep import sweep_block_soil
+
+    document = _piles()
+    sweep = sweep_block_soil(load(CONFIGS / "block_on_piles.toml").model, [0.5, 2.0])
+    labels = [[c.label for c in rows] for rows in sweep.row_conditions]
+    assert labels[0] != labels[1]
+    for f, found in zip((0.5, 2.0), labels):
+        path = _write(tmp_path, f"piles_{f}", _factored(document, f))
+        assert found == [r["condition"] for r in _json(runner, "resonance", str(path))["resonances"]]
