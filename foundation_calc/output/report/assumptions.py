@@ -99,13 +99,10 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
 
 
 def _loads(machines) -> str:
-    """The loads row of a block: what forces the scene's machines, by the kinds of parts they have."""
-    kinds = [text for key, text in (
-        ("loads", "the vendor's loads as given, harmonic orders n at nω (amplitude, phase, point)"),
-        ("unbalance", "an unbalance from its balance grade, F = m_r G ω rotating normal to its axis"),
-        ("cranks", "the crank mechanisms' inertia forces, every order of the sliders' and rods' motion at the"
-                   " machine's speed ([KM] for one throw)"),
-    ) if any(getattr(m, key) for m in machines)]
+    """The loads row of a block: what forces the scene's machines, each kind of part they have in its
+    own words (:meth:`~foundation_calc.solvers.machines.part.MachinePart.assumption`), kind by kind."""
+    kinds = list(dict.fromkeys(text for kind in zip(*(m.parts_by_kind for m in machines)) for parts in kind
+                               for part in parts if (text := part.assumption()) is not None))
     said = "; ".join(kinds) if kinds else "each machine's parts' loads at their orders n, at nω"
     return f"{said[0].upper()}{said[1:]}; the forces do not depend on the block's motion."
 
