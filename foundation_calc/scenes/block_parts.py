@@ -11,7 +11,7 @@ import math
 from functools import cached_property
 from typing import Annotated, ClassVar
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from foundation_calc.scenes.common import Drive, SceneModel, SpeedFields, quantity, source
 
@@ -186,10 +186,11 @@ class MachineCrank(SceneModel):
 
 
 class MachineExciter(SceneModel):
-    """One rotor of an unbalanced vibration exciter (paper 001's single-shaft exciter, Bolotnik et al.,
-    :mod:`~foundation_calc.solvers.machines.exciter`): a point mass at an eccentricity from its
-    axis, turning at the machine's speed. A two-shaft directional exciter is two tables on one axis
-    with opposite ``sense``: their forces add along the line where both rotors stand at t = 0."""
+    """One rotor of an unbalanced vibration exciter: a point mass off its axis, turning at the machine's speed.
+
+    Paper 001's single-shaft exciter (Bolotnik et al., :mod:`~foundation_calc.solvers.machines.exciter`).
+    A two-shaft directional exciter is two tables on parallel axes with opposite ``sense``: their
+    forces add along the line where both rotors stand at t = 0 and cancel across it."""
 
     rotor_mass: float = quantity("m", "kg", "mass of the rotor's unbalanced part (its eccentric mass)", gt=0,
                                  examples=[25.0])
@@ -210,14 +211,19 @@ class MachineExciter(SceneModel):
         " axis: e × z/|e × z|, or -y for a vertical axis)", 0.0, examples=[0.0],
     )
 
-    @model_validator(mode="after")
-    def _a_rotor(self):
-        if math.hypot(*self.axis) == 0.0:
-            raise ValueError("axis [-] must not be [0, 0, 0]: give the rotor's axis direction, e.g. [0, 1, 0]")
-        if self.sense not in (1.0, -1.0):
-            raise ValueError(f"sense = {self.sense:g} [-] must be +1 (turning positively about axis, right-hand rule)"
-                             " or -1 (against it)")
-        return self
+    @field_validator("axis")
+    @classmethod
+    def _axis_has_a_direction(cls, axis: list[float]) -> list[float]:
+        if math.hypot(*axis) == 0.0:
+            raise ValueError("must not be [0, 0, 0]: give the rotor's axis direction, e.g. [0, 1, 0] (shaft along y)")
+        return axis
+
+    @field_validator("sense")
+    @classmethod
+    def _one_of_two_senses(cls, sense: float) -> float:
+        if sense not in (1.0, -1.0):
+            raise ValueError("must be +1 (turning positively about axis, right-hand rule) or -1 (against it)")
+        return sense
 
     def part(self, cog):
         """The solver's :class:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter`, its axis
@@ -230,8 +236,7 @@ class MachineExciter(SceneModel):
 
 
 class BlockMachine(SpeedFields):
-    """A machine on the block: its mass properties, its own speed and its loads, unbalance, crank throws or
-    exciters."""
+    """A machine on the block: its mass properties, its own speed and its loads, unbalance, cranks or exciters."""
 
     name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
     mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])
