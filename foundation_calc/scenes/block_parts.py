@@ -296,7 +296,7 @@ class BlockMachine(SpeedFields):
 
     @property
     def periodic_parts(self) -> tuple:
-        """The parts with an angle-dependent inertia (crank mechanisms)."""
+        """The parts with an angle-dependent inertia (crank mechanisms, exciters' rotors)."""
         return tuple(part for part in self.parts if part.periodic)
 
     @property
