@@ -69,10 +69,10 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                                 " keeps the speeds away from them."))
     rows.append(("loads", _loads(scene.machines)))
     if any(m.periodic_parts for m in scene.machines):
-        rows.append(("response", "Machine parts whose inertia depends on the shaft's angle (a crank mechanism's rods"
-                                 " and sliders): the limits judge the first approximation, their mass averaged over a"
-                                 " revolution (the averaged operator); the exact periodic solution with the"
-                                 " angle-dependent mass matrix (harmonic balance) gives its error (Accuracy)."))
+        rows.append(("response", "Machine parts whose inertia depends on the shaft's angle (see loads): the limits"
+                                 " judge the first approximation, their mass averaged over a revolution (the averaged"
+                                 " operator); the exact periodic solution with the angle-dependent mass matrix"
+                                 " (harmonic balance) gives its error (Accuracy)."))
     if len(scene.machines) > 1:
         rows.append(("machines", "Steady state of each machine solved alone; the peaks of the machines added"
                                  " (an upper bound: their relative phase is not known) and the RMS values"
