@@ -257,10 +257,13 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                         f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
                         " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
                         " as the crank radius, or the rod measured between other points?")))
-        found += [Remark(key, f"{key} = {e.eccentricity:g} m exceeds half the block's smaller side ({min(L, B) / 2.0:g} m):"
-                              " the rotor would sweep beyond the block; was it typed in mm?")
-                  for i, m in enumerate(self.machines) for j, e in enumerate(m.exciters)
-                  if e.eccentricity > min(L, B) / 2.0 and (key := f"machines[{i}].exciters[{j}].eccentricity") not in judged]
+        half = min(L, B) / 2.0
+        for i, m in enumerate(self.machines):
+            for j, e in enumerate(m.exciters):
+                key = f"machines[{i}].exciters[{j}].eccentricity"
+                if e.eccentricity > half and key not in judged:
+                    found.append(Remark(key, f"{key} = {e.eccentricity:g} m exceeds half the block's smaller side"
+                                             f" ({half:g} m): the rotor would sweep beyond the block; was it typed in mm?"))
         return found + ([] if self.soil is None else stratum_remarks(self.soil, L, B))
 
     def stable_model(self):
