@@ -16,7 +16,8 @@ from tests.conftest import configs_of_kind
 
 #: Shipped block scenes and the exit code of `fcalc check` on each (docs/examples.md).
 EXPECTED_EXIT = {"block_two_machines.toml": 0, "block_fan_torsion_near_speed.toml": 1, "block_on_piles.toml": 1,
-                 "block_two_throw_compressor.toml": 0, "block_opposed_compressor.toml": 0, "block_on_isolators.toml": 0}
+                 "block_two_throw_compressor.toml": 0, "block_opposed_compressor.toml": 0, "block_on_isolators.toml": 0,
+                 "block_vibrating_table.toml": 0}
 
 
 def test_every_shipped_block_scene_is_listed():

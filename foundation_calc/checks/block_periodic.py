@@ -4,8 +4,9 @@ approximation's error.
 Every block command judges the first approximation (the averaged operator: the machines' mean mass
 and weight, their forcing harmonics; :mod:`foundation_calc.solvers.block.response`), as the crank
 scene does. For each machine with a part of angle-dependent inertia (a crank mechanism,
-``[[machines.cranks]]``) this module adds the exact T-periodic solution with that inertia
-(harmonic balance, :mod:`foundation_calc.solvers.block.periodic_inertia`) and the first
+``[[machines.cranks]]``; an exciter's rotor, ``[[machines.exciters]]``) this module adds the exact
+T-periodic solution with that inertia (harmonic balance,
+:mod:`foundation_calc.solvers.block.periodic_inertia`) and the first
 approximation's error against it: the largest relative difference of the peaks of G's and every
 point's displacement and of the rotations. Computed once per scene (not over a soil's modulus
 range). A rod barely longer than its crank may need more harmonics than the cap: the solution at

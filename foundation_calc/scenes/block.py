@@ -129,7 +129,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             raise ValueError(f"machine names must be distinct: {', '.join(repeated)}")
         for m in machines:
             if not m.parts:
-                raise ValueError(f"machine {m.name!r} needs [[machines.loads]], [machines.unbalance] or [[machines.cranks]]")
+                raise ValueError(f"machine {m.name!r} needs [[machines.loads]], [machines.unbalance], [[machines.cranks]]"
+                                 " or [[machines.exciters]]")
         return machines
 
     @field_validator("points")
@@ -213,7 +214,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
 
     def positions(self) -> dict[str, list[float]]:
         """The positions [m] from O that the scene gives, by key as written: every machine's centre
-        of mass, its loads' and unbalance's points, the checked points, and the block's centre of
+        of mass, its loads', unbalance's and exciters' points, the checked points, and the block's centre of
         mass when the block is given by its mass."""
         found = {} if self.block.cog is None else {"block.cog": self.block.cog}
         for i, m in enumerate(self.machines):
@@ -222,6 +223,7 @@ class BlockScene(Plausible, OnSoil, SceneModel):
             if m.unbalance is not None and m.unbalance.at is not None:
                 found[f"machines[{i}].unbalance.at"] = m.unbalance.at
             found |= {f"machines[{i}].cranks[{j}].crank_centre": c.crank_centre for j, c in enumerate(m.cranks)}
+            found |= {f"machines[{i}].exciters[{j}].at": e.at for j, e in enumerate(m.exciters) if e.at is not None}
         return found | {f"points[{k}].at": p.at for k, p in enumerate(self.points)}
 
     def carried_positions(self) -> dict[str, str]:
@@ -238,7 +240,9 @@ class BlockScene(Plausible, OnSoil, SceneModel):
         """The positions that are not on the block (:func:`placement`): more than
         :data:`~foundation_calc.scenes.common.LENGTH_SCALE_FACTOR` × the base's diagonal from O (mm
         typed as m), below its base or beyond its footprint (measured from a corner, or downward);
-        the table judges every other key (:func:`~foundation_calc.scenes.plausibility.findings`)."""
+        an exciter's eccentricity beyond half the block's smaller side unless the table judged it
+        (``found``); the table judges every other key (:func:`~foundation_calc.scenes.plausibility.findings`)."""
+        judged = {f.key for f in found}
         positions = self.positions()
         L, B = self.base
         codes = placement(list(positions.values()), L, B).tolist() if positions else []
@@ -253,6 +257,13 @@ class BlockScene(Plausible, OnSoil, SceneModel):
                         f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
                         " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
                         " as the crank radius, or the rod measured between other points?")))
+        half = min(L, B) / 2.0
+        for i, m in enumerate(self.machines):
+            for j, e in enumerate(m.exciters):
+                key = f"machines[{i}].exciters[{j}].eccentricity"
+                if e.eccentricity > half and key not in judged:
+                    found.append(Remark(key, f"{key} = {e.eccentricity:g} m exceeds half the block's smaller side"
+                                             f" ({half:g} m): the rotor would sweep beyond the block; was it typed in mm?"))
         return found + ([] if self.soil is None else stratum_remarks(self.soil, L, B))
 
     def stable_model(self):

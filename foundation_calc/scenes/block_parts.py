@@ -11,7 +11,7 @@ import math
 from functools import cached_property
 from typing import Annotated, ClassVar
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from foundation_calc.scenes.common import Drive, SceneModel, SpeedFields, quantity, source
 
@@ -185,8 +185,58 @@ class MachineCrank(SceneModel):
                            self.slider_mass, self.rotating_mass, self.rotating_radius, self.rotating_angle)
 
 
+class MachineExciter(SceneModel):
+    """One rotor of an unbalanced vibration exciter: a point mass off its axis, turning at the machine's speed.
+
+    Paper 001's single-shaft exciter (Bolotnik et al., :mod:`~foundation_calc.solvers.machines.exciter`).
+    A two-shaft directional exciter is two tables on parallel axes with opposite ``sense``: their
+    forces add along the line where both rotors stand at t = 0 and cancel across it."""
+
+    rotor_mass: float = quantity("m", "kg", "mass of the rotor's unbalanced part (its eccentric mass)", gt=0,
+                                 examples=[25.0])
+    eccentricity: float = quantity("l", "m", "distance from the axis to the rotor's centre of mass", gt=0,
+                                   examples=[0.05])
+    axis: Vector = quantity(
+        "e", "-", "direction of the rotor's axis (need not be a unit vector); paper 001's angles are"
+        " e/|e| = (cos δ1 sin δ2, sin δ1 sin δ2, cos δ2)", examples=[[0.0, 1.0, 0.0]],
+    )
+    at: Vector | None = quantity(
+        "ρ", "m", "a point of the rotor's axis [x, y, z] from O; default the machine's centre of mass", None,
+        examples=[[0.0, 0.3, 1.2]],
+    )
+    sense: float = quantity("σ", "-", "+1: the rotor turns positively about axis (right-hand rule), -1: against it",
+                            1.0, examples=[-1])
+    phase: float = quantity(
+        "φ0", "rad", "the rotor's angle at t = 0 about axis from t1, towards t2 = e × t1 (t1 horizontal, normal to"
+        " axis: e × z/|e × z|, or -y for a vertical axis)", 0.0, examples=[0.0],
+    )
+
+    @field_validator("axis")
+    @classmethod
+    def _axis_has_a_direction(cls, axis: list[float]) -> list[float]:
+        if math.hypot(*axis) == 0.0:
+            raise ValueError("must not be [0, 0, 0]: give the rotor's axis direction, e.g. [0, 1, 0] (shaft along y)")
+        return axis
+
+    @field_validator("sense")
+    @classmethod
+    def _one_of_two_senses(cls, sense: float) -> float:
+        if sense not in (1.0, -1.0):
+            raise ValueError("must be +1 (turning positively about axis, right-hand rule) or -1 (against it)")
+        return sense
+
+    def part(self, cog):
+        """The solver's :class:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter`, its axis
+        through ``at`` or else ``cog`` [m] (the machine's centre of mass)."""
+        from foundation_calc.solvers.machines.exciter import UnbalancedExciter, axis_angles
+
+        delta1, delta2 = axis_angles(self.axis)
+        rho = tuple(float(c) for c in (self.at or cog))
+        return UnbalancedExciter(self.rotor_mass, self.eccentricity, rho, delta1, delta2, self.phase, self.sense)
+
+
 class BlockMachine(SpeedFields):
-    """A machine on the block: its mass properties, its own speed and its loads, unbalance or crank throws."""
+    """A machine on the block: its mass properties, its own speed and its loads, unbalance, cranks or exciters."""
 
     name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
     mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])
@@ -200,6 +250,12 @@ class BlockMachine(SpeedFields):
     cranks: list[MachineCrank] = quantity(
         "-", "-", "crank mechanisms driven at the machine's speed, one per throw (cylinder): their moving parts'"
         " mean mass is added to the machine's, their inertia forces are its loads", [],
+    )
+    exciters: list[MachineExciter] = quantity(
+        "-", "-", "unbalanced vibration exciters driven at the machine's speed, one table per rotor (a vibrating"
+        " table, a screen; a two-shaft directional exciter is two rotors of opposite sense): each rotor's mean mass is"
+        " added to the machine's, its rotating force m l ω² is a load, its angle-dependent inertia is checked", [],
+        max_length=16,
     )
     drive: Drive | None = quantity(
         "-", "-", "the motor that starts this machine (fcalc runup), as a crank scene's [drive]; without it the"
@@ -240,7 +296,7 @@ class BlockMachine(SpeedFields):
 
     @property
     def periodic_parts(self) -> tuple:
-        """The parts with an angle-dependent inertia (crank mechanisms)."""
+        """The parts with an angle-dependent inertia (crank mechanisms, exciters' rotors)."""
         return tuple(part for part in self.parts if part.periodic)
 
     @property
@@ -301,9 +357,15 @@ def _cranks(machine: BlockMachine) -> list:
     return [CrankMechanism(tuple(machine.crank_throws()), machine.cog)]
 
 
+def _exciters(machine: BlockMachine) -> list:
+    """``[[machines.exciters]]`` as :class:`~foundation_calc.solvers.machines.exciter.UnbalancedExciter`,
+    one per rotor (:meth:`MachineExciter.part`)."""
+    return [exciter.part(machine.cog) for exciter in machine.exciters]
+
+
 #: Builders of a machine's parts from its keys, each machine -> list of parts: a new kind of part
 #: is its solver module and one builder here. The sheet describes the parts kind by kind, in this order.
-MACHINE_PARTS: list = [_given_loads, _unbalance, _cranks]
+MACHINE_PARTS: list = [_given_loads, _unbalance, _cranks, _exciters]
 
 
 class BlockPoint(SceneModel):

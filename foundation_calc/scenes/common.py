@@ -194,7 +194,8 @@ class Drive(SceneModel):
     )
     inertia: float = quantity(
         "J", "kg m²", "moment of inertia of the motor, couplings and shafts referred to the exciter shaft;"
-        " fcalc adds the unbalances' (platform, a block machine's [machines.unbalance]) or the crank mechanism's mean inertia", ge=0, examples=[5.0],
+        " fcalc adds the unbalances' (platform, a block machine's [machines.unbalance] and [[machines.exciters]])"
+        " or the crank mechanism's mean inertia", ge=0, examples=[5.0],
     )
 
     @model_validator(mode="after")

@@ -239,6 +239,11 @@ RANGES: dict[str, PlausibleRange] = {
         "balance quality grades", "mm/s", 0.4, 4000.0, "ISO 21940-11, Table 1", (Slip("m/s", 1e3),),
         basis="grades G 0.4 (gyroscopes, precision spindles) to G 4000 (crankshafts of slow marine diesel engines)",
     ),
+    "exciter_eccentricity": PlausibleRange(
+        "eccentricities of exciter rotors", "m", 1e-3, 1.0, _JUDGEMENT, (_MM,),
+        basis="the eccentric weights of vibratory motors and exciters sit some 1 cm to 0.3 m from their shafts"
+        " (paper 001's example 0.2 m); a rotor over 2 m across is not an exciter",
+    ),
     "platform_amplitude": PlausibleRange(
         "amplitudes of vibro-tables", "m", 1e-4, 1e-2, _JUDGEMENT, (_MM,),
         above="vibro-tables vibrate 0.1-5 mm; was it typed in mm?", basis="vibro-tables vibrate 0.1-5 mm",
@@ -380,6 +385,7 @@ KEYS: dict[str, str] = {
     "piles.modulus": "pile_modulus",
     "piles.density": "block_density",
     "machines[].unbalance.balance_grade_mm_s": "balance_grade",
+    "machines[].exciters[].eccentricity": "exciter_eccentricity",
     # limits (crank and block foundations; a platform's transient_amplitude)
     **{f"limits.{k}": "amplitude_limit" for k in ("amplitude", "amplitude_rms")},
     **{f"limits.{k}": "velocity_limit" for k in ("velocity", "velocity_rms")},
@@ -391,6 +397,7 @@ KEYS: dict[str, str] = {
     "machines[].loads[].phase": "phase",
     "machines[].cranks[].crank_angle": "phase",
     "machines[].cranks[].rotating_angle": "phase",
+    "machines[].exciters[].phase": "phase",
     "extra_exciters[].phase": "phase",
     # speeds: a crank mechanism's, a machine's given by its loads (crank [operation], [[machines]]), a platform's exciter
     **_speeds("mechanism.", "crank_speed"),

@@ -13,7 +13,7 @@ What changes with the block besides its dimensions (:func:`moved`, one rule for 
 the scene gives):
 
 - the machines stand on the block: every position at or above the block's top (machines'
-  centres of mass, load and unbalance points, checked points, a crank's axis) rises or sinks
+  centres of mass, load, unbalance and exciter points, checked points, a crank's axis) rises or sinks
   with the top, by H_new - H; positions below the top keep their height;
 - a position on or beyond an end face (|x| >= L/2, or |y| >= B/2) keeps its distance from that
   face (a point on the block's corner stays on the corner); one inside keeps its coordinates;

@@ -69,10 +69,10 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
                                 " keeps the speeds away from them."))
     rows.append(("loads", _loads(scene.machines)))
     if any(m.periodic_parts for m in scene.machines):
-        rows.append(("response", "Machine parts whose inertia depends on the shaft's angle (a crank mechanism's rods"
-                                 " and sliders): the limits judge the first approximation, their mass averaged over a"
-                                 " revolution (the averaged operator); the exact periodic solution with the"
-                                 " angle-dependent mass matrix (harmonic balance) gives its error (Accuracy)."))
+        rows.append(("response", "Machine parts whose inertia depends on the shaft's angle (see loads): the limits"
+                                 " judge the first approximation, their mass averaged over a revolution (the averaged"
+                                 " operator); the exact periodic solution with the angle-dependent mass matrix"
+                                 " (harmonic balance) gives its error (Accuracy)."))
     if len(scene.machines) > 1:
         rows.append(("machines", "Steady state of each machine solved alone; the peaks of the machines added"
                                  " (an upper bound: their relative phase is not known) and the RMS values"
@@ -99,13 +99,10 @@ def _block(scene, checks: set[str]) -> list[tuple[str, str]]:
 
 
 def _loads(machines) -> str:
-    """The loads row of a block: what forces the scene's machines, by the kinds of parts they have."""
-    kinds = [text for key, text in (
-        ("loads", "the vendor's loads as given, harmonic orders n at nω (amplitude, phase, point)"),
-        ("unbalance", "an unbalance from its balance grade, F = m_r G ω rotating normal to its axis"),
-        ("cranks", "the crank mechanisms' inertia forces, every order of the sliders' and rods' motion at the"
-                   " machine's speed ([KM] for one throw)"),
-    ) if any(getattr(m, key) for m in machines)]
+    """The loads row of a block: what forces the scene's machines, each kind of part they have in its
+    own words (:meth:`~foundation_calc.solvers.machines.part.MachinePart.assumption`), kind by kind."""
+    kinds = list(dict.fromkeys(text for kind in zip(*(m.parts_by_kind for m in machines)) for parts in kind
+                               for part in parts if (text := part.assumption()) is not None))
     said = "; ".join(kinds) if kinds else "each machine's parts' loads at their orders n, at nω"
     return f"{said[0].upper()}{said[1:]}; the forces do not depend on the block's motion."
 

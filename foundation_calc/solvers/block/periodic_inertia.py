@@ -1,4 +1,4 @@
-"""A block's machines with periodic inertia (crank mechanisms): the exact periodic steady state
+"""A block's machines with periodic inertia (crank mechanisms, exciters): the exact periodic steady state
 with their angle-dependent inertia, and the error of the first approximation.
 
 Source: Eq. (1) of :mod:`foundation_calc.solvers.rigid_body.periodic` with the block's matrices

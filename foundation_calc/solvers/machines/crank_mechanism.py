@@ -341,6 +341,11 @@ class CrankMechanism(MachinePart):
                         rows.append(LoadRow(int(n), F.tolist(), M.tolist(), phase, self.at, inertial))
         return rows
 
+    def assumption(self) -> str:
+        """The sheet's phrase for crank mechanisms."""
+        return ("the crank mechanisms' inertia forces, every order of the sliders' and rods' motion at the"
+                " machine's speed ([KM] for one throw)")
+
     def sheet_text(self, omega: float) -> tuple:
         """The throws' moving mass and mean centre of mass, and how Q_n is taken."""
         m, cog, _ = self.mass_properties()

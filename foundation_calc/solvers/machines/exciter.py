@@ -148,15 +148,46 @@ class UnbalancedExciter(MachinePart):
         """m l²: the point mass about its axis [kg m²]."""
         return self.m * self.l**2
 
+    def assumption(self) -> str:
+        """The sheet's phrase for an exciter's rotor."""
+        return ("the exciters' rotors, point masses m at the eccentricity l from their axes: the force m l ω²"
+                " rotating normal to each axis and the moment of the rotor's weight about its axis point [BC]")
+
     def sheet_text(self, omega: float) -> tuple:
-        """F = m l ω² substituted, the axis and the sense."""
-        e = self.axes()[2]
+        """F = m l ω² substituted, the axis, the sense and the angle at t = 0 with its reference t1, t2."""
+        t1, t2, e = (tuple(np.where(np.abs(v) < 1e-12, 0.0, v).tolist()) for v in self.axes())  # round-off of sin, cos
         return ("unbalanced exciter F = m l ω² = ", Number(self.m), " kg × ", Number(self.l), " m × (",
                 Number(omega), " rad/s)² = ", Number(self.m * self.l * omega * omega), " N, turning "
-                + ("positively" if self.sense > 0 else "negatively") + " about its axis e = ", Triple(tuple(e)),
-                " through ", Triple(tuple(float(x) for x in self.rho)), " m, from the angle ", Number(self.phi0),
-                " rad at t = 0; its mass is carried as a ring m l²/2 (I + e eᵀ) at the axis point, its"
-                " angle-dependent inertia by [BC]'s Eqs. (1.3), (1.7).")
+                + ("positively" if self.sense > 0 else "negatively") + " about its axis e = ", Triple(e),
+                " through ", Triple(tuple(float(x) for x in self.rho)), " m, from the angle φ0 = ", Number(self.phi0),
+                " rad at t = 0 (from t1 = ", Triple(t1), " towards t2 = ", Triple(t2), ", Eq. (1.3)); its mass is"
+                " carried as a ring m l²/2 (I + e eᵀ) at the axis point, its angle-dependent inertia by [BC]'s"
+                " Eqs. (1.3), (1.7).")
+
+
+def axis_angles(axis) -> tuple[float, float]:
+    """δ1, δ2 of Eq. (1.3) of [1]_ for an axis given as a vector e (any length, not zero).
+
+    e/|e| = (cos δ1 sin δ2, sin δ1 sin δ2, cos δ2): δ2 = arccos(e_z/|e|) ∈ [0, π] is the axis's
+    angle from the vertical z, δ1 = atan2(e_y, e_x) its azimuth about z (0 for an axis along ±z,
+    where the azimuth is free). Then t1 = (sin δ1, -cos δ1, 0) is horizontal and normal to e
+    (e × e3 / |e × e3| for an axis off the vertical; -y for one along ±z) and t2 = e × t1, the
+    directions of the rotor's eccentricity at the angles 0 and π/2 about e.
+
+    Parameters
+    ----------
+    axis : the axis direction (3,) [-]
+
+    Returns
+    -------
+    (δ1, δ2) [rad]
+
+    >>> [round(d, 12) for d in axis_angles((0.0, 0.0, 2.0))], [round(d, 12) for d in axis_angles((0.0, 1.0, 0.0))]
+    ([0.0, 0.0], [1.570796326795, 1.570796326795])
+    """
+    x, y, z = (float(c) for c in axis)
+    r = float(np.hypot(x, y))
+    return (float(np.arctan2(y, x)) if r > 0.0 else 0.0), float(np.arctan2(r, z))
 
 
 @lru_cache(maxsize=256)
@@ -208,4 +239,4 @@ def _product(a, b, kind: str) -> np.ndarray:
     return out
 
 
-__all__ = ["OFFSETS", "UnbalancedExciter", "rotor_series"]
+__all__ = ["OFFSETS", "UnbalancedExciter", "axis_angles", "rotor_series"]

@@ -28,5 +28,9 @@ class GivenLoads(MachinePart):
         """The loads as given, at any speed (module docstring)."""
         return [LoadRow(n, F, M, phase, at, False) for n, F, M, phase, at in self.loads]
 
+    def assumption(self) -> str:
+        """The sheet's phrase for given loads."""
+        return "the vendor's loads as given, harmonic orders n at nω (amplitude, phase, point)"
+
 
 __all__ = ["GivenLoads"]

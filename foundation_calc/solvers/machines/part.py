@@ -15,7 +15,8 @@ coordinates of :mod:`foundation_calc.solvers.rigid_body`):
   as Q_n, the rows whose amplitude grows as ω² marked ``inertial``;
 - the rotating inertia the machine's motor turns besides its own (:meth:`MachinePart.carried_inertia`);
 - its derivation for the calculation sheet as plain data (:meth:`MachinePart.sheet_text`): text
-  and numbers (:class:`Number`, :class:`Triple`) that the sheet formats.
+  and numbers (:class:`Number`, :class:`Triple`) that the sheet formats, and the phrase of the
+  sheet's assumptions that says how its kind forces the body (:meth:`MachinePart.assumption`).
 
 The checks, the sheets and the solvers see only this interface: a new kind of part is one module
 that subclasses :class:`MachinePart`, and the scene's builder of it.
@@ -101,6 +102,11 @@ class MachinePart:
         """The part's derivation on the calculation sheet at speed ω: strings, :class:`Number`
         and :class:`Triple` in reading order (the sheet puts the machine's name before it); None
         when the loads' table says all."""
+        return None
+
+    def assumption(self) -> str | None:
+        """How the sheet's assumptions say this kind of part forces the body (one phrase, the
+        same for every part of the kind); None when it says nothing of its own."""
         return None
 
 

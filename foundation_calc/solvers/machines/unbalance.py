@@ -65,6 +65,10 @@ class RotatingUnbalance(MachinePart):
         """m_r e², e = G/ω [kg m²]."""
         return self.rotor_mass * (self.grade_mm_s * 1e-3 / omega) ** 2
 
+    def assumption(self) -> str:
+        """The sheet's phrase for an unbalance."""
+        return "an unbalance from its balance grade, F = m_r G ω rotating normal to its axis"
+
     def sheet_text(self, omega: float) -> tuple:
         """F = m_r G ω substituted, the pair a, b and the point."""
         e, a, b = self.pair()
