@@ -31,7 +31,7 @@ def resonance(scene, *, strict: bool = False) -> Result:
         An invalid scene, or a scene of another kind.
     """
     from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.checks.registry import scene_resonances
+    from foundation_calc.checks.scene_resonance import scene_resonances
     from foundation_calc.output.resonance import resonance_document
 
     loaded = scene_of(scene, KINDS)

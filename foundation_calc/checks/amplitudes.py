@@ -5,7 +5,9 @@ its points against ``[limits]`` and a vibration code, judged by one set of rules
 (:class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport`) adds the paper's
 approximations of its mechanism; a block's (:class:`~foundation_calc.checks.block.BlockReport`)
 its six modes and every machine's harmonics. Both give ``limit_rows``, ``zone_rows``,
-``code_warnings``, ``amplitude_range``, ``soil_validity``, ``resonant`` and ``amplitude_outcome``.
+``code_warnings``, ``amplitude_range``, ``soil_validity``, ``resonant`` and ``amplitude_outcome``,
+and the ``wording`` (:class:`~foundation_calc.checks.limits.AmplitudeWording`) in which
+``fcalc check`` states them.
 """
 
 from __future__ import annotations

@@ -30,7 +30,7 @@ import numpy as np
 
 from foundation_calc.checks import codes, limits as limit_check
 from foundation_calc.checks.codes import ZoneRow, code_warnings
-from foundation_calc.checks.limits import LimitRow, amplitude_outcome
+from foundation_calc.checks.limits import AmplitudeWording, LimitRow, amplitude_outcome
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
@@ -45,6 +45,9 @@ from foundation_calc.solvers.block.response import (
 )
 
 DIRECTIONS = ("x", "y", "z")
+
+#: Why a block has no steady state to judge.
+NO_STEADY_STATE = "an order is resonant with an undamped mode: no steady state"
 
 
 @dataclass(frozen=True)
@@ -84,6 +87,12 @@ class BlockReport:
         return worst(r.outcome for r in self.office)
 
     @property
+    def wording(self) -> AmplitudeWording:
+        """How ``fcalc check`` states this report (:class:`~foundation_calc.checks.limits.AmplitudeWording`):
+        no steady state when an order is resonant, no speed of its own (each machine has one)."""
+        return AmplitudeWording(resonant=(NO_STEADY_STATE,))
+
+    @property
     def nearest(self) -> ResonanceRow:
         """The governing resonance row (the rule's governing condition)."""
         return self.resonance.governing
@@ -95,7 +104,7 @@ def amplitude_point(factor: float, report: BlockReport):
     from foundation_calc.checks.soil_range import RangePoint, worst_row_point
 
     if report.resonant:
-        return RangePoint(factor, Outcome.FAIL, "an order is resonant with an undamped mode: no steady state", float("inf"))
+        return RangePoint(factor, Outcome.FAIL, NO_STEADY_STATE, float("inf"))
     return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 

@@ -29,7 +29,7 @@ from foundation_calc.checks.crank_resonance import (
     design_frequencies,
 )
 from foundation_calc.checks.codes import ZoneRow, code_warnings, zone_outcome, zone_rows
-from foundation_calc.checks.limits import QUANTITIES, LimitRow, amplitude_outcome, limit_rows
+from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording, LimitRow, amplitude_outcome, limit_rows
 from foundation_calc.checks.outcomes import Outcome
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import design_first_approximation
@@ -203,6 +203,18 @@ class AmplitudeReport:
     @property
     def amplitude_range(self):
         return self.modulus_range
+
+    @property
+    def wording(self) -> AmplitudeWording:
+        """How ``fcalc check`` states this report (:class:`~foundation_calc.checks.limits.AmplitudeWording`):
+        the speed first, resonant with the checked approximation's nearest resonance and its margin,
+        the resonance rule's statement after the limits, itemised."""
+        approx = self.approximations[self.checked]
+        speed = ("speed", self.omega)
+        return AmplitudeWording(
+            resonant=("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state"),
+            values={"speed": speed}, statement=None if self.resonance is None else self.resonance.statement, itemised=True,
+        )
 
 
 #: Points evaluated in one array operation; bounds the memory of a scene with many points.

@@ -10,7 +10,8 @@ vibration, the mean (static) part left out (keys ``amplitude_rms``, ``velocity_r
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 from foundation_calc.checks.outcomes import Outcome, worst
 
@@ -103,3 +104,23 @@ def amplitude_outcome(resonant: bool, rows, zone_rows, others=()) -> Outcome:
     if resonant:
         return Outcome.FAIL
     return worst((*(row.outcome for row in rows), *(row.outcome for row in zone_rows), *others))
+
+
+@dataclass(frozen=True)
+class AmplitudeWording:
+    """How an amplitude report is stated as ``fcalc check``'s finding
+    (:func:`~foundation_calc.checks.registry.amplitudes_finding`), chosen by the report itself.
+
+    Attributes
+    ----------
+    resonant : the reason without a steady state, as parts (literal text, ``(quantity, SI value)``)
+    values : name -> (quantity, SI value) said before the judged ones (a crank's speed)
+    statement : the resonance rule's verdict, said after the limits; None for none
+    itemised : the crank's wording, kept as CI scripts read it: the count of values over their
+        limits, the worst zone's values, a detail line per zone and the code's warnings in the reason
+    """
+
+    resonant: tuple
+    values: Mapping[str, tuple[str, float]] = field(default_factory=dict)
+    statement: str | None = None
+    itemised: bool = False

@@ -193,5 +193,16 @@ def office_rows(scene, model) -> tuple[OfficeRow, ...]:
     return tuple(rows)
 
 
+def scene_office(scene) -> OfficeReport:
+    """The office checks of a scene of any kind with office rows, the one place they tell the kinds
+    apart: a ``block_foundation``'s (:func:`office_rows` of the model the dynamic checks use, its
+    ``stable_model``, the rows ``fcalc amplitudes`` lists too), a ``crank_foundation``'s
+    (:func:`crank_office_rows`: its machine stands over the base's centroid, no eccentricity row,
+    and no mass-ratio row). No rows: nothing for the office to judge."""
+    if scene.kind == "block_foundation":
+        return OfficeReport(office_rows(scene, scene.stable_model()))
+    return OfficeReport(crank_office_rows(scene))
+
+
 __all__ = ["OfficeReport", "OfficeRow", "bearing_pressure", "bearing_row", "bearing_rows", "crank_bearing_row", "crank_office_rows",
-           "eccentricity_rows", "mass_ratio_row", "office_rows", "settlement", "static_rows"]
+           "eccentricity_rows", "mass_ratio_row", "office_rows", "scene_office", "settlement", "static_rows"]

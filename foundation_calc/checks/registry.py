@@ -10,8 +10,10 @@ units. ``values`` names the same numbers for the JSON document.
 The functions here adapt the per-topic checks (``checks/resonance.py`` ...); they import
 those modules only when called, so ``fcalc check`` loads the physics of the kinds it meets and
 nothing else. Each finding keeps the check's report, from which the output layer writes the same
-JSON document as the single-scene command. Adding a check to a kind is one function and one entry
-in :data:`CHECKS` (and its document in ``output/check_report.py``).
+JSON document as the single-scene command. A check that several kinds run is one function for all
+of them: the kinds differ below it (``scene_resonances``, ``scene_amplitudes``, ``scene_office``),
+and it words each report as the report says, never by the scene's kind. Adding a check to a kind is
+one function and one entry in :data:`CHECKS` (and its document in ``output/check_report.py``).
 """
 
 from __future__ import annotations
@@ -95,20 +97,12 @@ def _support(row) -> str:
     return f"; {phrase}" if phrase else ""
 
 
-def scene_resonances(scene):
-    """The resonance report (:class:`~foundation_calc.checks.resonance.ResonanceReport`) of a
-    crank or block scene, with its soil's modulus range and soil validity."""
-    if scene.kind == "block_foundation":
-        from foundation_calc.checks.block import check_block
-
-        return check_block(scene).resonance
-    from foundation_calc.checks.crank_resonance import check_scene_resonances
-
-    return check_scene_resonances(scene)
-
-
 def resonance(scene) -> Finding:
-    """Every machine's orders against every mode by the resonance rule (``fcalc resonance``)."""
+    """Every machine's orders against every mode by the resonance rule (``fcalc resonance``;
+    :func:`~foundation_calc.checks.scene_resonance.scene_resonances`), worded by what the report says: a
+    plane model's one speed, or a block's conditions per machine."""
+    from foundation_calc.checks.scene_resonance import scene_resonances
+
     report = scene_resonances(scene)
     values = {} if report.per_machine else {"speed": ("speed", report.omega)}
     if report.governing is not None:
@@ -119,24 +113,22 @@ def resonance(scene) -> Finding:
     return Finding("resonance", report.outcome, reason + noted, values, report, details + notes)
 
 
-def amplitudes_finding(report, values: dict, resonant: Reason, statement: str | None = None,
-                       itemised: bool = False) -> Finding:
+def amplitudes_finding(report) -> Finding:
     """The amplitude check of every scene kind: its limit rows, code zones, code warnings and soil
     range (a report with ``limit_rows``, ``zone_rows``, ``code_warnings``, ``amplitude_range``,
-    ``soil_validity``, ``resonant`` and ``amplitude_outcome``) as a finding.
-
-    ``values``: the finding's values before the judged ones; ``resonant``: the reason without a
-    steady state; ``statement``: the resonance rule's verdict, said after the limits. ``itemised``
-    (the crank's wording, kept as CI scripts read it): the count of values over their limits, the
-    worst zone's values, a detail line per zone and the code's warnings in the reason.
+    ``soil_validity``, ``resonant``, ``amplitude_outcome`` and ``wording``) as a finding, worded as
+    the report itself says (:class:`~foundation_calc.checks.limits.AmplitudeWording`: its values
+    first, its reason without a steady state, the resonance rule's statement, itemised or not),
+    whatever the scene's kind.
     """
     from foundation_calc.checks.governing import tally
     from foundation_calc.checks.limits import display_quantity
 
-    values = dict(values)
+    wording = report.wording
+    values, itemised = dict(wording.values), wording.itemised
     rows, zones = report.limit_rows, report.zone_rows
     if report.resonant:
-        reason = resonant
+        reason = wording.resonant
     elif not rows and not zones:
         reason = ("no amplitude, velocity or acceleration limit in [limits]",)
     else:
@@ -157,8 +149,8 @@ def amplitudes_finding(report, values: dict, resonant: Reason, statement: str | 
             if itemised:
                 values |= {"velocity_rms": ("velocity", worst_zone.value), "zone_limit": ("velocity", worst_zone.limit)}
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
-        if statement is not None:
-            reason += (f"; {statement}",)
+        if wording.statement is not None:
+            reason += (f"; {wording.statement}",)
     if itemised and report.code_warnings:
         reason += ("; " + "; ".join(report.code_warnings),)
     if report.amplitude_range is not None:
@@ -177,17 +169,12 @@ def amplitudes_finding(report, values: dict, resonant: Reason, statement: str | 
     return Finding("amplitudes", report.amplitude_outcome, reason + noted, values, report, details + notes)
 
 
-def crank_amplitudes(scene) -> Finding:
-    """Steady-state peaks and RMS values of C and the scene's points against [limits], and the
-    zones of a vibration code (``fcalc amplitudes``)."""
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+def amplitudes(scene) -> Finding:
+    """Steady-state peaks and RMS values of the scene's points against [limits], and the zones of a
+    vibration code (``fcalc amplitudes``; :func:`~foundation_calc.checks.amplitudes.scene_amplitudes`)."""
+    from foundation_calc.checks.amplitudes import scene_amplitudes
 
-    report = check_scene_amplitudes(scene)
-    approx = report.approximations[report.checked]
-    speed = ("speed", report.omega)
-    resonant = ("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state",)
-    statement = None if report.resonance is None else report.resonance.statement
-    return amplitudes_finding(report, {"speed": speed}, resonant, statement, itemised=True)
+    return amplitudes_finding(scene_amplitudes(scene))
 
 
 def platform_design(scene) -> Finding:
@@ -241,34 +228,15 @@ def runup(scene) -> Finding | None:
     return Finding("runup", report.outcome, tuple(parts), values, report, details)
 
 
-def block_amplitudes(scene) -> Finding:
-    """Damped steady state of the block's points against [limits] and a vibration code (``fcalc amplitudes``)."""
-    from foundation_calc.checks.block import check_block
+def office(scene) -> Finding | None:
+    """The office checks (:func:`~foundation_calc.checks.office.scene_office`): static bearing
+    pressure and settlement against [limits], and a block's eccentricity and mass ratio (ACI 351.3R
+    rules of thumb); None (not run) for a scene without any row (a crank without either limit)."""
+    from foundation_calc.checks.office import scene_office
 
-    return amplitudes_finding(check_block(scene, periodic=True), {},
-                              ("an order is resonant with an undamped mode: no steady state",))
-
-
-def crank_office(scene) -> Finding | None:
-    """Static bearing pressure and settlement of a crank foundation against [limits]
-    bearing_pressure and settlement; None (not run) without either limit. (Its machine stands over
-    the base's centroid: no eccentricity.)"""
-    from foundation_calc.checks.office import OfficeReport, crank_office_rows
-
-    rows = crank_office_rows(scene)
-    if not rows:
+    report = scene_office(scene)
+    if not report.office:
         return None
-    report = OfficeReport(rows)
-    shown = [o for o in rows if o.outcome is report.office_outcome]
-    return Finding("office", report.office_outcome, ("; ".join(f"{o.name}: {o.text}" for o in shown),), {}, report,
-                   tuple(f"{o.outcome.value.upper()} {o.name}: {o.text} ({o.source})" for o in rows))
-
-
-def block_office(scene) -> Finding:
-    """Eccentricity, bearing pressure and mass ratio of the block (ACI 351.3R rules of thumb)."""
-    from foundation_calc.checks.block import check_block
-
-    report = check_block(scene)
     shown = [o for o in report.office if o.outcome is report.office_outcome]
     reason = ("; ".join(f"{o.name}: {o.text}" for o in shown),)
     details = tuple(f"{o.outcome.value.upper()} {o.name}: {o.text} ({o.source})" for o in report.office)
@@ -288,11 +256,13 @@ def requirements(scene) -> Finding | None:
                    tuple(f"{r.outcome.value.upper()} {r.rule}: {r.given} ({r.source})" for r in rows))
 
 
+#: The checks of a crank and of a block foundation, one function each whatever the kind.
+_FOUNDATION = {"inputs": inputs, "resonance": resonance, "amplitudes": amplitudes, "runup": runup, "office": office,
+               "requirements": requirements}
+
 #: scene kind -> {check name: function scene -> Finding or None (not run)}, in the order they are reported.
 CHECKS: dict[str, dict[str, Callable[[Any], Finding | None]]] = {
-    "crank_foundation": {"inputs": inputs, "resonance": resonance, "amplitudes": crank_amplitudes, "runup": runup,
-                         "office": crank_office, "requirements": requirements},
+    "crank_foundation": dict(_FOUNDATION),
     "platform": {"inputs": inputs, "design": platform_design, "runup": runup},
-    "block_foundation": {"inputs": inputs, "resonance": resonance, "amplitudes": block_amplitudes, "runup": runup,
-                         "office": block_office, "requirements": requirements},
+    "block_foundation": dict(_FOUNDATION),
 }

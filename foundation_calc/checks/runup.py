@@ -193,6 +193,19 @@ def _on_soil(scene, built, support_at):
     return replace(built, modes=crank_modes(built, scene_frequencies(scene)))
 
 
+def machine_structures(scene) -> tuple[list, tuple[str, ...], dict[str, float]]:
+    """The linear structures a scene of any kind runs up, as ``[(machine, structure, operating speed
+    [rad/s])]`` (a crank's or a platform's one machine, named ``""``; a block's one per machine and
+    with several machines one of them all, :func:`_block_structures`), the names of its points, and
+    machine -> the inertia its shaft carries besides the drive's own [kg m²]. The one place the
+    run-up tells the kinds' structures apart."""
+    if scene.kind == "block_foundation":
+        machines, names = _block_structures(scene)
+        return machines, names, {m.name: m.carried_inertia for m in scene.machines}
+    built, names, omega, inertia = _structure(scene)
+    return [("", built, omega)], names, {"": inertia}
+
+
 def run_times(scene) -> tuple[float | None, float | None]:
     """The scene's ``[operation] run_up_time`` and ``run_down_time`` [s] (None when not given)."""
     operation = scene.operation  # None in a crank scene without the table
@@ -258,13 +271,7 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
             " a block's machine [machines.drive]) in the scene, or --time / --down on the command line",
             field="operation.run_up_time",
         )
-    if scene.kind == "block_foundation":
-        machines, names = _block_structures(scene)
-        carried = {m.name: m.carried_inertia for m in scene.machines}
-    else:
-        built, names, omega, inertia = _structure(scene)
-        machines = [("", built, omega)]
-        carried = {"": inertia}
+    machines, names, carried = machine_structures(scene)
     # the time integration (scipy.linalg's Schur form) only for a scene that is run up: fcalc check
     # and the sheet ask judged() of every scene
     import numpy as np
@@ -332,4 +339,5 @@ def check_runup(scene, up: float | None, down: float | None) -> RunupReport:
     )
 
 
-__all__ = ["DIRECTIONS", "RUN_TITLES", "TOGETHER", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "drives", "judged", "run_times", "run_title"]
+__all__ = ["DIRECTIONS", "RUN_TITLES", "TOGETHER", "LimitRow", "RunupReport", "TorqueRow", "check_runup", "drives", "judged",
+           "machine_structures", "run_times", "run_title"]

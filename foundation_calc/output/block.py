@@ -25,7 +25,8 @@ def _header(scene, source: str) -> dict:
     return {"source": source, "kind": scene.kind, "name": scene.name}
 
 
-def _office(report: BlockReport) -> list[dict]:
+def _office(report) -> list[dict]:
+    """The rows of ``report`` (a :class:`BlockReport` or an :class:`~foundation_calc.checks.office.OfficeReport`)."""
     return [
         {"check": o.name, "value": o.value, "limit": o.limit, "unit": o.unit, "verdict": o.outcome.value,
          "source": o.source, "text": o.text}
@@ -34,8 +35,8 @@ def _office(report: BlockReport) -> list[dict]:
 
 
 def office_document(report, scene, source: str) -> dict:
-    """The office checks as a JSON document (``report``: a :class:`BlockReport` or an
-    :class:`~foundation_calc.checks.office.OfficeReport`)."""
+    """The office checks of a scene of any kind as a JSON document (``report``: its
+    :class:`~foundation_calc.checks.office.OfficeReport`, :func:`~foundation_calc.checks.office.scene_office`)."""
     return {"scene": _header(scene, source), "office": _office(report), "verdict": report.office_outcome.value}
 
 

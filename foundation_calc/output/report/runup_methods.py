@@ -23,14 +23,12 @@ LE = "[Le]"
 
 
 def runup_structures(scene) -> dict:
-    """Run key prefix ("" or ":MACHINE") -> (structure, point names, operating speed)."""
-    from foundation_calc.checks.runup import _block_structures, _structure
+    """Run key prefix ("" or ":MACHINE", as :func:`~foundation_calc.checks.runup.check_runup` keys
+    its runs) -> (structure, point names, operating speed)."""
+    from foundation_calc.checks.runup import machine_structures
 
-    if scene.kind == "block_foundation":
-        built, names = _block_structures(scene)
-        return {f":{name}": (structure, names, omega) for name, structure, omega in built}
-    structure, names, omega, _ = _structure(scene)
-    return {"": (structure, names, omega)}
+    machines, names, _ = machine_structures(scene)
+    return {f":{name}" if name else "": (structure, names, omega) for name, structure, omega in machines}
 
 
 def passage_chain(structure, names, omega: float, duration: float, direction: int, passage: dict, modes) -> Chain:
