@@ -127,6 +127,12 @@ class PhysicsError(FcalcError, ValueError):
         super().__init__(f"{field}: {self.detail}" if field else self.detail)
 
 
+class NotApplicable(PhysicsError):
+    """A paper's closed form does not apply to the design, which has an answer by another method:
+    a command that has one reports it and says why the closed form is left out (``message``); a
+    command that has none refuses the scene, as any :class:`PhysicsError`."""
+
+
 class ConvergenceError(FcalcError, ArithmeticError):
     """An iterative solver did not converge; the message says how far it got."""
 

@@ -66,7 +66,7 @@ def batch():
     values = {"foundation.block.length": np.array([c[0] for c in CANDIDATES]),
               "piles.length": np.array([c[1] for c in CANDIDATES])}
     (L, B, H), sizes = crank.block_dimensions(scene, values)
-    mech = MechanismOperator.of(scene.design(coupled=True))
+    mech = MechanismOperator.of(scene.design())
     _, (zero, *_) = judge_physics(Verdicts(), scene, L, B, H, mech, mech.harmonics, sizes=sizes)
     return zero, crank.evaluate(scene, values)
 

@@ -180,7 +180,7 @@ def test_without_the_coupling_the_runup_is_the_uncoupled_path(document, uncouple
     from foundation_calc.solvers.crank.loads import matrices
 
     scene = parse_scene(document)
-    assert not scene.design(coupled=True).coupled
+    assert not scene.design().coupled
     built, *_ = _structure(scene)
     omega = np.array([0.0, 20.0, 63.6, 193.4, 377.0])
     _, K, C = matrices(scene.block(omega))

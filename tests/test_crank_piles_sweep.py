@@ -207,7 +207,7 @@ def test_the_mechanism_operator_is_a_quadratic_in_the_speed():
     from foundation_calc.solvers.crank.averaged import mechanism_operator
     from foundation_calc.solvers.crank.batch import MechanismOperator
 
-    design = parse_scene(read_toml(CONFIG)).design(coupled=True)
+    design = parse_scene(read_toml(CONFIG)).design()
     for drive in (True, False):
         d = replace(design, drive_on_foundation=drive)
         mech = MechanismOperator.of(d, "omega")

@@ -76,7 +76,7 @@ def test_the_soft_piled_crank_stands_with_its_static_margin(soft, runner):
     support = scene.support()
     from foundation_calc.solvers.supports.plane_footing import plane
 
-    (K_x, _, K_phi), _, (K_xphi, _) = plane(support.impedance(150.0), support.label, coupled=True)
+    (K_x, _, K_phi), _, (K_xphi, _) = plane(support.impedance(150.0), support.label)
     assert K_phi - K_xphi**2 / K_x < 0.0  # the springs at frequency the root search meets
     document = fc.resonance(soft).to_dict()
     expected = static_margin(soft)
@@ -97,7 +97,7 @@ def test_a_harmonic_on_springs_past_the_dip_is_solved(soft, tmp_path):
     fast = _written(tmp_path, soft, "fast.toml", {"speed_rpm": "speed_rpm = 477.5"})
     scene = load_scene(fast)
     w = scene.speed.omega_rad_s
-    design = scene.design(3.0 * w, coupled=True)
+    design = scene.design(3.0 * w)
     assert design.c_phi * design.I1 - design.K_xphi**2 / (design.c1 * design.S) < 0.0
     M, C, K, fc_, fs = averaged_operator(design)
     Z = np.linalg.solve(K + 3j * w * C - 9.0 * w * w * M, fc_[:, 3] - 1j * fs[:, 3])

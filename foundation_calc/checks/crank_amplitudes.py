@@ -31,8 +31,9 @@ from foundation_calc.checks.crank_resonance import (
 from foundation_calc.checks.codes import ZoneRow, code_warnings, zone_outcome, zone_rows
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording, LimitRow, amplitude_outcome, limit_rows
 from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
-from foundation_calc.solvers.crank.closed_form import design_first_approximation
+from foundation_calc.solvers.crank.closed_form import COUPLED_SUPPORT, design_first_approximation
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.loads import HarmonicLoads, RigidBlock, load_conditions, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -63,8 +64,7 @@ TITLES = {
 }
 
 #: Why the paper's first approximation is left out of a design on a support coupling sway with rocking.
-FIRST_NOT_APPLICABLE = ("not applicable: the support couples sway with rocking (K_xφ, a pile group), and Eqs. (4.11)-(4.14)"
-                        " take three uncoupled springs; the averaged operator and the exact solution take the coupling")
+FIRST_NOT_APPLICABLE = f"not applicable: {COUPLED_SUPPORT}"
 
 #: Appended to the title of a mechanism's approximation when the scene's [[loads]] are added to it.
 WITH_LOADS = " + vendor loads (linear)"
@@ -160,7 +160,9 @@ class AmplitudeReport:
     #: a0 of the judged modes and orders against the soil method's fitted range
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
     soil_validity: object = None
-    #: approximation key -> why it is not computed for this design (:data:`FIRST_NOT_APPLICABLE`)
+    #: approximation key -> why it is not computed for this design (:data:`FIRST_NOT_APPLICABLE`; a
+    #: harmonic's soil where the first approximation does not apply,
+    #: :func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`)
     not_applicable: dict = field(default_factory=dict)
 
     @property
@@ -352,7 +354,7 @@ def scene_supports(scene):
         return None
     from foundation_calc.checks.support import crank_supports
 
-    design = None if scene.mechanism is None else scene.design(coupled=True)
+    design = None if scene.mechanism is None else scene.design()
     if design is not None and design.coupled:
         from foundation_calc.checks.crank_resonance import design_frequencies, scene_design_frequencies
 
@@ -366,7 +368,8 @@ def scene_supports(scene):
 
 
 def check_amplitudes(
-    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None, supports=None
+    design: CrankDesign | None, limits, points, exact: bool = False, vendor: VendorLoads | None = None, supports=None,
+    resonance: ResonanceReport | None = None,
 ) -> AmplitudeReport:
     """Amplitudes of ``design`` by every approximation asked for, and the limit rows.
 
@@ -375,6 +378,13 @@ def check_amplitudes(
     ``[[loads]]``, whose linear steady state is added to every approximation of the mechanism,
     or is the only one (``"loads"``) when ``design`` is None. ``supports``: the code's support
     class of every point and direction (:func:`scene_supports`), None for ``limits.foundation``.
+    ``resonance``: the resonance report to give, None for the design's own (a design on a
+    frequency-dependent support's springs at a harmonic is given its scene's, every mode at its own
+    frequency, :func:`~foundation_calc.checks.crank_resonance.scene_resonances_as_given`).
+    The first approximation steps aside where it does not apply
+    (:func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`: a support
+    coupling sway with rocking, a harmonic's soil whose rocking spring does not exceed P h), the
+    report saying why (``not_applicable``); the averaged operator, which is judged, applies.
 
     Raises
     ------
@@ -394,10 +404,10 @@ def check_amplitudes(
     else:
         omega = design.omega
         averaged, damping = _averaged(design, points, loads)
-        if design.coupled:
-            approximations, not_applicable = {"averaged_operator": averaged}, {"first_approximation": FIRST_NOT_APPLICABLE}
-        else:
+        try:
             approximations = {"first_approximation": _first(design, points, loads), "averaged_operator": averaged}
+        except NotApplicable as why:  # a coupled support, a harmonic's soil: the closed form steps aside
+            approximations, not_applicable = {"averaged_operator": averaged}, {"first_approximation": f"not applicable: {why.message}"}
         checked = "averaged_operator"
     if design is not None and exact and not approximations["averaged_operator"].resonant:
         import time
@@ -421,10 +431,9 @@ def check_amplitudes(
         }
     code_rows, code_warnings = _code_rows(approximations[checked], limits, omega, supports)
     detuning = getattr(limits, "detuning", DEFAULT_DETUNING)
-    if design is None:
-        resonance = check_block_resonances(vendor.block, vendor.omega, vendor.loads, detuning)
-    else:
-        resonance = check_resonances(design, detuning, None if vendor is None else vendor.loads)
+    if resonance is None:
+        resonance = (check_block_resonances(vendor.block, vendor.omega, vendor.loads, detuning) if design is None else
+                     check_resonances(design, detuning, None if vendor is None else vendor.loads))
     return AmplitudeReport(
         design=design,
         approximations=approximations,
@@ -448,10 +457,10 @@ def scene_vendor_loads(scene, soil_frequency: float = 0.0) -> VendorLoads | None
     return None if loads is None else VendorLoads(scene.block(soil_frequency), loads, scene.speed.omega_rad_s)
 
 
-def _at_soil_frequency(scene, soil_frequency: float, exact: bool, supports=None) -> AmplitudeReport:
-    design = None if scene.mechanism is None else scene.design(soil_frequency, coupled=True)
+def _at_soil_frequency(scene, soil_frequency: float, exact: bool, supports=None, resonance=None) -> AmplitudeReport:
+    design = None if scene.mechanism is None else scene.design(soil_frequency)
     return check_amplitudes(design, scene.limits, scene.points, exact=exact,
-                            vendor=scene_vendor_loads(scene, soil_frequency), supports=supports)
+                            vendor=scene_vendor_loads(scene, soil_frequency), supports=supports, resonance=resonance)
 
 
 def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
@@ -492,27 +501,36 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     On a frequency-dependent support (its ``frequency_dependent``) every harmonic n of the closed
     forms (first approximation, averaged operator, loads) is solved with the springs and dashpots
     at its own frequency n ω (:func:`splice_harmonics`; the mean, n = 0, on the static springs);
-    the exact harmonic balance, which couples the harmonics, takes them at the speed ω.
+    the exact harmonic balance, which couples the harmonics, takes them at the speed ω. Where the
+    first approximation does not apply at a harmonic n it has (n <= 3: its rocking spring K_φ(nω)
+    does not exceed P h there), it is left out with the reason (``not_applicable``), the others kept.
     """
     omega = scene.speed.omega_rad_s
     supports, dependent = scene_supports(scene), scene.support().frequency_dependent
-    base = _at_soil_frequency(scene, omega if dependent else 0.0, exact, supports)
     if not dependent:
-        return base
-    live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
-    width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
-    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False, supports) for n in range(width)]
-    approximations = dict(base.approximations)
-    for key, a in live.items():
-        if any(r.approximations[key].resonant for r in by_n):
-            continue
-        motion = splice_harmonics([r.approximations[key].motion for r in by_n])
-        approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
-    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega, supports)
+        return _at_soil_frequency(scene, 0.0, exact, supports)
     from foundation_calc.checks.crank_resonance import scene_resonances_as_given
 
+    resonance = scene_resonances_as_given(scene)  # every mode at its own frequency, not at a harmonic's
+    base = _at_soil_frequency(scene, omega, exact, supports, resonance)
+    live = {key: a for key, a in base.approximations.items() if key != "exact" and not a.resonant}
+    width = max((a.motion.cos.shape[-1] for a in live.values()), default=0)
+    by_n = [base if n == 1 else _at_soil_frequency(scene, n * omega, False, supports, resonance) for n in range(width)]
+    approximations, not_applicable = dict(base.approximations), dict(base.not_applicable)
+    for key, a in live.items():
+        used = by_n[: a.motion.cos.shape[-1]]  # the harmonics the approximation has
+        why = next((r.not_applicable[key] for r in used if key in r.not_applicable), None)
+        if why is not None:
+            del approximations[key]
+            not_applicable[key] = why
+            continue
+        if any(r.approximations[key].resonant for r in by_n if key in r.approximations):
+            continue
+        motion = splice_harmonics([r.approximations[key].motion for r in used])
+        approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
+    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega, supports)
     return replace(base, approximations=approximations, rows=_rows(approximations[base.checked], scene.limits),
-                   code_rows=code_rows, code_warnings=code_warnings, resonance=scene_resonances_as_given(scene))
+                   code_rows=code_rows, code_warnings=code_warnings, not_applicable=not_applicable)
 
 
 __all__ = [

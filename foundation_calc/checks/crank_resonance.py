@@ -224,7 +224,7 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     if scene.mechanism is None:
         return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
                                       scene_block_frequencies(scene))
-    return check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene))
+    return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
 
 
 def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
@@ -243,14 +243,14 @@ def scene_design_frequencies(scene):
     soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
     if not scene.support().frequency_dependent:
         return None
-    design = scene.design(coupled=True)
+    design = scene.design()
     static, static_averaged = design_frequencies(design)
     if design.coupled:  # the one model's modes, by rank as the block's are: one root of each
         ranked = by_static_rank(static)
-        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w, coupled=True))[1]))
+        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w))[1]))
         return found, found, static
-    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w, coupled=True))[0])
-    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w, coupled=True))[1])
+    zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
     return zero, averaged, static
 
 

@@ -326,7 +326,7 @@ def plane_blocks(scene, design: CrankDesign):
     """M, C, K (..., 3, 3) of ``design``'s block (:func:`~foundation_calc.solvers.crank.averaged.block_matrices`)
     on the ``crank_foundation`` scene's support at the frequencies given (an array [rad/s]), its
     sway-rocking coupling included (:func:`~foundation_calc.solvers.supports.plane_footing.plane`):
-    the springs and dashpots ``scene.design(frequency, coupled=True)`` takes, read for every
+    the springs and dashpots ``scene.design(frequency)`` takes, read for every
     frequency at once. The static stability in rocking is the scene's (its design at rest); a
     pile group's rocking spring at a frequency past its interaction peaks may fall below P h there
     without making the steady state any less defined."""
@@ -340,7 +340,7 @@ def plane_blocks(scene, design: CrankDesign):
         shape = np.shape(frequencies)
         (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi) = (
             tuple(np.broadcast_to(v, (np.size(frequencies),)).reshape(shape) for v in part)
-            for part in plane(support.impedance(np.ravel(frequencies)), support.label, coupled=True))
+            for part in plane(support.impedance(np.ravel(frequencies)), support.label))
         return block_matrices(replace(design, c=K_z / f.base_area, c1=K_x / f.base_area, c_phi=K_phi / f.base_second_moment,
                                       C_x=C_x, C_z=C_z, C_phi=C_phi, K_xphi=K_xphi, C_xphi=C_xphi))
 
@@ -405,12 +405,12 @@ def factored_soil_chunks(scene, values, limits, detuning, points=()):
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
 
     vendor = scene_vendor_loads(scene)
-    conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(coupled=True),
+    conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(),
                                            None if vendor is None else vendor.loads, None if vendor is None else vendor.block)
     omega = np.array([scene.speed.omega_rad_s])
     for factor in np.asarray(values, dtype=float):
         at = scene.with_modulus_factor(float(factor))
-        design = None if at.mechanism is None else at.design(coupled=True)
+        design = None if at.mechanism is None else at.design()
         part = _chunk(design, "omega", omega, limits, detuning, points, scene_vendor_loads(at), conditions, share,
                       scene_dynamic_soil(at))
         yield replace(part, variable="soil_factor", values=np.array([factor]))
@@ -424,7 +424,7 @@ def scene_sweep_chunks(scene, variable: str, values):
 
     points = [(p.name, p.horizontal, p.height) for p in scene.points]
     limits, detuning = scene.limits, scene.limits.detuning
-    design = None if scene.mechanism is None else scene.design(coupled=True)
+    design = None if scene.mechanism is None else scene.design()
     coupled = design is not None and design.coupled  # its K_xφ is recomputed from the soil, not scaled
     if variable == "soil_factor" and (coupled or scene.support().frequency_dependent):
         return factored_soil_chunks(scene, values, limits, detuning, points)
@@ -489,7 +489,7 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
         frequencies, _ = scene_block_frequencies(scene)
         return DynamicSoil(at, frequencies, frequencies)
     zero, averaged, _ = scene_design_frequencies(scene)
-    design = scene.design(coupled=True)
+    design = scene.design()
     return DynamicSoil(at, zero, averaged, plane_blocks(scene, design) if design.coupled else None)
 
 

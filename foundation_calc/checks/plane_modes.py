@@ -117,8 +117,8 @@ def scene_plane_modes(scene, frequencies: Mapping[str, float]) -> PlaneModes:
     """The modes ``frequencies`` (name -> p [rad/s]) of a ``crank_foundation`` scene: of its block
     (:func:`plane_modes`), or, on a support coupling sway with rocking, of its one model in the
     plane (:func:`coupled_plane_modes`)."""
-    if scene.mechanism is not None and scene.design(coupled=True).coupled:
-        return coupled_plane_modes(frequencies, lambda w: scene.design(w, coupled=True))
+    if scene.mechanism is not None and scene.design().coupled:
+        return coupled_plane_modes(frequencies, lambda w: scene.design(w))
     return plane_modes(frequencies, scene.block)
 
 

@@ -63,7 +63,7 @@ def _in_plane(column: SoilAt, name: str) -> PlaneAt:
     from foundation_calc.solvers.supports.base import AtO
     from foundation_calc.solvers.supports.plane_footing import plane
 
-    springs, dashpots, (K_xphi, C_xphi) = plane(AtO(column.springs, column.dashpots, column.coupling), name, True)
+    springs, dashpots, (K_xphi, C_xphi) = plane(AtO(column.springs, column.dashpots, column.coupling), name)
     values = [*springs, K_xphi, *dashpots, C_xphi]
     return PlaneAt(column, dict(zip(SPRINGS + DASHPOTS, map(float, values), strict=True)))
 

@@ -164,11 +164,11 @@ def _structure(scene):
         omega = scene.speed.omega_rad_s
         built = block_structure(scene.block(), loads, omega, horizontal, height)
         return _on_soil(scene, built, lambda w: matrices(scene.block(w))[:0:-1]), names, omega, 0.0  # (C, K)
-    design = scene.design(coupled=True)
+    design = scene.design()
     built = structure(design, horizontal, height)
     if loads is not None:
         built = with_vendor_loads(built, loads, design.omega)
-    built = _on_soil(scene, built, lambda w: block_matrices(scene.design(w, coupled=True))[1:])
+    built = _on_soil(scene, built, lambda w: block_matrices(scene.design(w))[1:])
     return built, names, design.omega, mechanism_inertia(design)
 
 

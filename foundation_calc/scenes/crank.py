@@ -418,30 +418,36 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             masses = plane_masses(self.total_mass, f.moment_of_inertia + self.total_mass * f.cog_height**2)
         return support_of(self, *(f.dimensions if base is None else base), masses)
 
-    def in_plane(self, soil_frequency=0.0, coupled: bool = False) -> tuple:
+    def in_plane(self, soil_frequency=0.0) -> tuple:
         """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ), the support's method) at O of
         :meth:`support` at ``soil_frequency`` [rad/s]
-        (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a support that couples the
-        plane's motions is a PhysicsError, but for u_x with θ_y when ``coupled``), each a float (an
-        array at an array of frequencies); raises PhysicsError (:meth:`require_stable_rocking`) for a
-        block that tips over.
+        (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: the support's coupling of
+        u_x with θ_y, a pile group's, 0 on an uncoupled support; any other coupling of the plane's
+        motions is a PhysicsError), each a float (an array at an array of frequencies); raises
+        PhysicsError (:meth:`require_stable_rocking`) for a block that tips over.
 
         Stability is judged on the support's springs at rest (ω = 0), whatever ``soil_frequency``:
         tipping over under the weight (paper (3.4)) is a statement about the static equilibrium, and
         a frequency-dependent support's springs at ω are the real part of an impedance (a pile
         group's K_x(ω) may dip near zero, making K_xφ²/K_x explode), not a static stiffness. The
         6-DOF block judges its stability on the static springs alike (:mod:`~foundation_calc.checks.block`)."""
+        *found, support = self._support_in_plane(soil_frequency)
+        return *found, support.method
+
+    def _support_in_plane(self, soil_frequency) -> tuple:
+        """:meth:`in_plane`'s springs, dashpots and coupling, then the support itself (its label
+        names it in a refusal)."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
         support = self.support()
-        springs, dashpots, coupling = plane(support.impedance(soil_frequency), support.label, coupled)
+        springs, dashpots, coupling = plane(support.impedance(soil_frequency), support.label)
         springs, dashpots, coupling = (tuple(map(_number, v)) for v in (springs, dashpots, coupling))
         at_rest = springs, coupling
         if support.frequency_dependent and _largest(abs(soil_frequency)) != 0.0:
-            static, _, static_coupling = plane(support.impedance(0.0), support.label, coupled)
+            static, _, static_coupling = plane(support.impedance(0.0), support.label)
             at_rest = tuple(map(_number, static)), tuple(map(_number, static_coupling))
         self.require_stable_rocking(at_rest[0][2], at_rest[0][0], at_rest[1][0])
-        return springs, dashpots, coupling, support.method
+        return springs, dashpots, coupling, support
 
     def soil_springs(self, method: str | None = None, omega=0.0):
         """K_z, K_x, K_φ and damping ratios (:class:`~foundation_calc.solvers.soil.springs.SoilSprings`) of
@@ -451,9 +457,9 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         scene = self if method is None else self.model_copy(update={"soil": self.soil.model_copy(update={"method": method})})
         support = scene.support()
         if not hasattr(support, "plane_springs"):  # a pile group, a registered support: no soil method's chain
-            from foundation_calc.solvers.supports.plane_footing import plane
+            from foundation_calc.solvers.supports.plane_footing import plane, require_uncoupled
 
-            plane(support.impedance(omega), support.label)  # a support that couples the plane stops here, by name
+            require_uncoupled(plane(support.impedance(omega), support.label)[2], support.label)  # stops here, by name
             raise PhysicsError(
                 f"the support {support.label} gives no soil method's springs and damping ratios in the plane, which the"
                 " crank's soil comparison derives by hand", field="soil",
@@ -504,11 +510,15 @@ class CrankScene(Plausible, OnSoil, SceneModel):
 
     def block(self, soil_frequency: float = 0.0) -> RigidBlock:
         """The block (with the whole machine's mass) on its support's springs and dashpots at O
-        (:meth:`in_plane`), for the loads; a frequency-dependent support takes them at ``soil_frequency`` [rad/s]."""
+        (:meth:`in_plane`), for the loads; a frequency-dependent support takes them at ``soil_frequency`` [rad/s].
+        The block takes three uncoupled springs: a support coupling sway with rocking (a pile group) is a
+        PhysicsError naming it (:func:`~foundation_calc.solvers.supports.plane_footing.require_uncoupled`)."""
         from foundation_calc.solvers.crank.loads import RigidBlock
+        from foundation_calc.solvers.supports.plane_footing import require_uncoupled
 
         f = self.foundation
-        (K_x, K_z, K_phi), (C_x, C_z, C_phi), _, _ = self.in_plane(soil_frequency)
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), coupling, support = self._support_in_plane(soil_frequency)
+        require_uncoupled(coupling, support.label)
         return RigidBlock(M_tot=self.total_mass, I_c=f.moment_of_inertia, h=f.cog_height, K_x=K_x, K_z=K_z,
                           K_phi=K_phi, C_x=C_x, C_z=C_z, C_phi=C_phi, g=GRAVITY)
 
@@ -523,18 +533,23 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         columns = zip(*((ld.order, ld.horizontal, ld.vertical, ld.moment, ld.phase, ld.at.horizontal, ld.at.height) for ld in self.loads))
         return HarmonicLoads(*(np.array(c, dtype=int if i == 0 else float) for i, c in enumerate(columns)))
 
-    def design(self, soil_frequency: float = 0.0, coupled: bool = False) -> CrankDesign:
+    def design(self, soil_frequency: float = 0.0) -> CrankDesign:
         """The scene's numbers as solver inputs (SI, paper's symbols, slider lumped into the rod).
 
         A frequency-dependent support (its ``frequency_dependent``) takes its springs and dashpots at
-        ``soil_frequency`` [rad/s], 0 for the static springs. With ``coupled``, a support coupling
-        u_x with θ_y (a pile group) gives its K_xφ, C_xφ to the design, for the solvers that take
-        them (the plane model's eigen-solve: the resonance check); without, it is refused.
+        ``soil_frequency`` [rad/s], 0 for the static springs. A support coupling u_x with θ_y (a pile
+        group) gives its K_xφ, C_xφ to the design, always: what takes them (the plane's one model,
+        the averaged operator, the exact solution) reads them, and the paper's closed forms, which
+        take three uncoupled springs, refuse or step aside by the design's own
+        :attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`
+        (:func:`~foundation_calc.solvers.crank.closed_form.design_first_approximation`,
+        :func:`~foundation_calc.checks.crank_resonance.design_frequencies`).
 
         The support's springs at O (:meth:`in_plane`) map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1
         (Barkan's coefficients pass through unchanged), its dashpots to C_x, C_z, C_φ. Raises
         PhysicsError naming ``mechanism`` for a machine given by its loads only, and
-        (:meth:`in_plane`) for a block that tips over or a support that couples the plane.
+        (:meth:`in_plane`) for a block that tips over or a support that couples the plane's motions
+        otherwise than u_x with θ_y.
         """
         f, s, mech = self.foundation, self.soil, self.mechanism
         if mech is None:
@@ -549,7 +564,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
             rho=mech.rod_radius_of_gyration,
             m1=mech.slider_mass,
         )
-        (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi), method = self.in_plane(soil_frequency, coupled)
+        (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi), method = self.in_plane(soil_frequency)
         if method == "coefficients":
             c, c1, c_phi = s.c_z, s.c_x, (s.c_z if s.c_phi is None else s.c_phi)
         else:

@@ -125,7 +125,7 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         return CandidateVerdicts(*(v[:0] for v in (one.volume, one.mass)),
                                  *({c: a[:0] for c, a in d.items()} for d in (one.outcome, one.utilisation, one.governing)),
                                  one.reasons, one.deferred)
-    mech = MechanismOperator.of(scene.design(coupled=True))  # the mechanism alone: any support
+    mech = MechanismOperator.of(scene.design())  # the mechanism alone: any support
     harmonics = mech.harmonics
     checks = checks_judged(scene)
 

@@ -31,7 +31,7 @@ class CandidateDesigns:
     ``sizes`` (key -> (N,), :meth:`~foundation_calc.solvers.supports.base.Sizing.sized`; the scene's
     where left out) and on the soil's stiffness data times ``factor`` (a scalar or one per candidate,
     :meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`); read in the plane
-    (:func:`~foundation_calc.solvers.supports.plane_footing.plane` with ``coupled``: a pile group's
+    (:func:`~foundation_calc.solvers.supports.plane_footing.plane`: a pile group's
     sway-rocking K_xφ, C_xφ taken, any other coupling of the plane's motions a PhysicsError naming it).
     """
 
@@ -41,7 +41,7 @@ class CandidateDesigns:
         from foundation_calc.solvers.supports.plane_footing import plane_masses
 
         f, machine = scene.foundation, scene.foundation.machine
-        self.scene, self.base = scene, scene.design(coupled=True)
+        self.scene, self.base = scene, scene.design()
         self.L, self.B, self.H, self.factor = L, B, H, factor
         old, new = tuple(getattr(f.block, k) for k in VARIED), (L, B, H)
 
@@ -69,14 +69,14 @@ class CandidateDesigns:
         """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ)) at O of every candidate's support at
         ``soil_frequency`` [rad/s] (class docstring), (N,) each: the plane's springs and dashpots and
         the support's sway-rocking coupling (a pile group's; 0 on an uncoupled support), as
-        ``fcalc check`` reads them (:meth:`~foundation_calc.scenes.crank.CrankScene.design` with
-        ``coupled``). The last frequency's are kept: the designs and the stability at one
-        frequency ask the support once."""
+        ``fcalc check`` reads them (:meth:`~foundation_calc.scenes.crank.CrankScene.design`). The
+        last frequency's are kept: the designs and the stability at one frequency ask the support
+        once."""
         from foundation_calc.solvers.supports.plane_footing import plane
 
         asked = np.array(soil_frequency, dtype=float)
         if self._last is None or self._last[0].shape != asked.shape or not np.array_equal(self._last[0], asked):
-            self._last = asked, plane(self.support.impedance(soil_frequency), self.support.label, coupled=True)
+            self._last = asked, plane(self.support.impedance(soil_frequency), self.support.label)
         return self._last[1]
 
     def at(self, soil_frequency=0.0):
@@ -90,12 +90,6 @@ class CandidateDesigns:
                        c1=K_x / self.S * ones, c_phi=K_phi / self.I1 * ones, C_x=C_x * ones, C_z=C_z * ones,
                        C_phi=C_phi * ones, a=self.a, K_xphi=K_xphi * ones, C_xphi=C_xphi * ones,
                        soil_frequency=soil_frequency)
-
-    @property
-    def coupled(self) -> bool:
-        """Whether the support couples sway with rocking at rest (a pile group's K_xφ, C_xφ): the
-        closed forms do not apply (:attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`)."""
-        return self.at(0.0).coupled
 
     def rocking_stable(self, soil_frequency=0.0) -> np.ndarray:
         """The candidates whose rocking stiffness at O on the support's springs at ``soil_frequency``
@@ -117,19 +111,6 @@ class CandidateDesigns:
         making K_xφ²/K_x explode), on which the steady state is solved and the modes are found, but
         no stability judged."""
         return self.rocking_stable(0.0)
-
-    def first_approximation_solvable(self) -> np.ndarray:
-        """The candidates whose paper's first approximation ``fcalc amplitudes`` solves at every
-        harmonic's springs: on an uncoupled frequency-dependent support, its closed forms
-        (:func:`~foundation_calc.solvers.crank.frequencies.zero_order_frequencies`) take them only
-        where c_φ I1 > P h, judged at the highest harmonic (the rocking spring falls with
-        frequency: the highest harmonic's is the softest); all True otherwise (a coupled support
-        has no first approximation)."""
-        from foundation_calc.solvers.crank.averaged import FORCING_HARMONICS
-
-        if self.support.frequency_dependent and not self.coupled:
-            return self.rocking_stable(FORCING_HARMONICS * self.base.omega)
-        return np.ones(np.shape(self.L), dtype=bool)
 
 
 def candidate_frequencies(designs: CandidateDesigns, mechanism):
@@ -446,5 +427,5 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
         judgement = _resonance(out, scene, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, frequencies, stable)
     if amplitudes:  # fcalc amplitudes judges the resonances too, and takes every harmonic's springs
         motion, resonant = _motion(scene, designs, d0, block, mech, harmonics, decoupled)
-        _amplitudes(out, scene, designs, motion, resonant, stable & designs.first_approximation_solvable())
+        _amplitudes(out, scene, designs, motion, resonant, stable)
     return given, judgement

@@ -73,7 +73,7 @@ def operators(scene, harmonics) -> list[list[Operator]]:
     for n in harmonics:
         soil_frequency = n * scene.speed.omega_rad_s if scene.support().frequency_dependent else 0.0
         if soil_frequency not in cache:
-            mechanism = None if scene.mechanism is None else averaged_operator(scene.design(soil_frequency, coupled=True))
+            mechanism = None if scene.mechanism is None else averaged_operator(scene.design(soil_frequency))
             block = None if loads is None else matrices(scene.block(soil_frequency))
             cache[soil_frequency] = (mechanism, block)
         mechanism, block = cache[soil_frequency]

@@ -47,7 +47,7 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[
     from foundation_calc.output.report.figures import sweep_factors, sweep_figure
     from foundation_calc.output.sweep_report import sweep_document
 
-    design = None if loaded.mechanism is None else loaded.design(coupled=True)
+    design = None if loaded.mechanism is None else loaded.design()
     omegas = loaded.speed.omega_rad_s * np.linspace(*sweep_factors(omega, resonances), SWEEP_POINTS)
     points = [(p.name, p.horizontal, p.height) for p in loaded.points]
     coupled = design is not None and design.coupled  # the one model, its support at each harmonic's frequency

@@ -21,7 +21,10 @@ KM = "[KM]"
 
 def first_approximation_chain(scene) -> Chain:
     """The chain m, l', μ, λ → |y1|, |y2| of the scene's mechanism (``scene.mechanism`` not None);
-    an undamped design at a resonance of the vertical mode has no y_n (the sheet says resonant)."""
+    an undamped design at a resonance of the vertical mode has no y_n (the sheet says resonant), nor
+    one at a harmonic's soil where the first approximation does not apply (the chain's title says
+    why, :func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`)."""
+    from foundation_calc.errors import NotApplicable
     from foundation_calc.solvers.crank.closed_form import design_first_approximation
 
     omega = scene.speed.omega_rad_s
@@ -38,7 +41,11 @@ def first_approximation_chain(scene) -> Chain:
             chain.given(f"C_z{at}", design.C_z, "N s/m", f"vertical base dashpot{where}")
             chain.step(f"k0{at}", f"sqrt(K_z{at}/M_tot)", "rad/s", f"{KM} (4.5)", f"vertical natural frequency{where}")
             chain.step(f"zeta_z{at}", f"C_z{at}/M_tot", "1/s", "base dashpot over the total mass", f"vertical damping coefficient{where}")
-        if bool(design_first_approximation(design).resonant):
+        try:
+            if bool(design_first_approximation(design).resonant):
+                break
+        except NotApplicable as why:
+            chain.title += f"; y{n} not applicable: {why.message}"
             break
         w = "omega" if n == 1 else f"({n}*omega)"
         chain.step(

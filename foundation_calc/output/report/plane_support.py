@@ -49,7 +49,7 @@ def by_soil_method(scene) -> bool:
 
 def in_plane(scene, omega: float) -> tuple[list[float], list[float]]:
     """([K_x, K_z, K_φ, K_xφ], [C_x, C_z, C_φ, C_xφ]) at O at ``omega`` [rad/s], as the checks take them."""
-    (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi), _ = scene.in_plane(omega, coupled=True)
+    (K_x, K_z, K_phi), (C_x, C_z, C_phi), (K_xphi, C_xphi), _ = scene.in_plane(omega)
     return [K_x, K_z, K_phi, K_xphi], [C_x, C_z, C_phi, C_xphi]
 
 
@@ -94,7 +94,7 @@ def _mode_chain(scene, omega_s: float) -> Chain:
     """k0, p1, p2 of the plane model on the springs at ``omega_s`` (module docstring)."""
     from foundation_calc.solvers.crank.averaged import averaged_operator
 
-    M = averaged_operator(scene.design(omega_s, coupled=True))[0]
+    M = averaged_operator(scene.design(omega_s))[0]
     K, _ = in_plane(scene, omega_s)
     chain = Chain("")
     chain.given("omega_s", omega_s, "rad/s", "circular frequency at which the springs are taken (a mode's own ω*)")
@@ -137,7 +137,7 @@ def plane_chains(scene, amplitudes: dict | None) -> list:
            if support.frequency_dependent else "")))
     out += _frequency_table(scene, entries)
     at = own or {MODES[0]: 0.0}  # a frequency-independent support: one column on the static springs
-    coupled = scene.design(coupled=True).coupled
+    coupled = scene.design().coupled
     title = ("Natural frequencies of the plane model about C (the centre of mass, coordinates x, y, θ), the support's"
              " coupling K_xφ included: k0 from K_z, p1 and p2 the roots of det(K̄ − p² M̄) = 0 in (x, θ)" if coupled else
              "Natural frequencies of the zero-order operator on the support's springs, [KM] (4.5)-(4.7) (K_xφ = 0)")

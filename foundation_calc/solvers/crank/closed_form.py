@@ -19,10 +19,64 @@ from foundation_calc.solvers.crank.response import PeriodicMotion
 from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
 
+#: Why the paper's first approximation does not apply on a support coupling sway with rocking.
+COUPLED_SUPPORT = ("the support couples sway with rocking (K_xφ, a pile group), and Eqs. (4.11)-(4.14) take three"
+                   " uncoupled springs; the averaged operator and the exact solution take the coupling")
+
+
+def require_first_approximation(design: CrankDesign) -> None:
+    """Raise :class:`~foundation_calc.errors.NotApplicable` where the paper's first approximation,
+    Eqs. (4.11)-(4.14), does not apply to ``design`` (fields may be arrays: any design of them):
+
+    - on a support coupling u_x with θ_y (:attr:`CrankDesign.coupled`, a pile group): the closed
+      forms take three uncoupled springs (:data:`COUPLED_SUPPORT`);
+    - on a frequency-dependent support's springs at a harmonic's frequency n ω ≠ 0 (the design's
+      ``soil_frequency``) where the rocking spring K_φ(nω) = c_φ I1 [N m/rad] does not exceed the
+      weight's overturning moment P h = M_tot g h [N m]: the closed form's p1² = c1 S (K_φ − P h)/
+      (M_tot I_c p2²) of (4.5)-(4.7) at that harmonic's soil is not positive, and the closed form
+      has no meaning there. The foundation
+      does not tip over for that: stability is judged on the springs at rest
+      (:func:`~foundation_calc.solvers.crank.frequencies.require_stable_design`), and the steady
+      state is the averaged operator's and the exact solution's, which take K(nω) as it is.
+
+    On static springs (``soil_frequency`` 0) nothing is judged here: K_φ <= P h there is a block
+    that tips over, which :func:`~foundation_calc.solvers.crank.frequencies.zero_order_frequencies`
+    refuses as such.
+    """
+    from foundation_calc.errors import NotApplicable
+
+    if design.coupled:
+        raise NotApplicable(COUPLED_SUPPORT, field="soil")
+    d = design
+    soil_frequency = np.asarray(d.soil_frequency, dtype=float)
+    if not np.any(soil_frequency != 0.0):
+        return
+    K_phi, P_h, w_soil, omega = np.broadcast_arrays(d.c_phi * d.I1, d.M_tot * d.g * d.h, soil_frequency, d.omega)
+    fails = (K_phi <= P_h) & (w_soil != 0.0)
+    if not fails.any():
+        return
+    k = np.unravel_index(np.argmax(fails), fails.shape)
+    n = w_soil[k] / omega[k]
+    at, where = f"the soil's frequency ω_s = {w_soil[k]:.4g} rad/s", "ω_s"
+    if abs(n - round(n)) < 1e-9:
+        where = f"{'' if round(n) == 1 else round(n)}ω"
+        at = f"harmonic {round(n)} (the soil at {where} = {w_soil[k]:.4g} rad/s)"
+    raise NotApplicable(
+        f"the paper's first approximation (4.11)-(4.14) does not apply at {at}: there the rocking spring"
+        f" K_φ({where}) = c_φ·I1 = {K_phi[k]:.4g} N m/rad does not exceed the weight's overturning moment"
+        f" P·h = {P_h[k]:.4g} N m, and the closed form, whose p1² (4.7) is proportional to K_φ - P·h, does not apply"
+        " at this harmonic's soil; the foundation stands (stability is judged on the springs at rest), and the"
+        " averaged operator and the exact solution still give the steady state", field="soil",
+        hint="fcalc amplitudes and fcalc check give the averaged operator's steady state at the speed")
+
+
 def design_first_approximation(design: CrankDesign) -> FirstApproximation:
     """Coefficients of the corrected first approximation of ``design`` (fields may be arrays).
 
     ``g* = g`` when the motor's reaction acts on the foundation, 0 otherwise (the paper's (3.7)).
+    Raises :class:`~foundation_calc.errors.NotApplicable` where the closed form does not apply
+    (:func:`require_first_approximation`: a support coupling sway with rocking, a harmonic's soil
+    whose rocking spring does not exceed P h), PhysicsError for a block that tips over.
 
     >>> from foundation_calc.solvers.crank.mechanism import lump_slider
     >>> d = CrankDesign(M=1e5, I_c=4.5e5, h=1.5, S=30.0, I1=90.0, c=4e7, c1=2.8e7, c_phi=4e7, C_x=0.0, C_z=0.0, C_phi=0.0,
@@ -31,6 +85,7 @@ def design_first_approximation(design: CrankDesign) -> FirstApproximation:
     >>> design_first_approximation(d).y1.real
     array([0.00040382, 0.00069391])
     """
+    require_first_approximation(design)
     d, rod = design, design.rod
     g_star = d.g if d.drive_on_foundation else 0.0
     return first_approximation(
@@ -80,4 +135,5 @@ def with_damping(design: CrankDesign, xi_z, xi_x, xi_phi) -> CrankDesign:
     return replace(d, C_x=b.C_x, C_z=b.C_z, C_phi=b.C_phi)
 
 
-__all__ = ["design_first_approximation", "first_approximation_motion", "varied", "with_damping"]
+__all__ = ["COUPLED_SUPPORT", "design_first_approximation", "first_approximation_motion", "require_first_approximation", "varied",
+           "with_damping"]

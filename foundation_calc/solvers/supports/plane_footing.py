@@ -128,18 +128,18 @@ NEGLIGIBLE = 1e-9
 SWAY_ROCKING = (0, 4)
 
 
-def plane(at, name: str, coupled: bool = False) -> tuple:
+def plane(at, name: str) -> tuple:
     """((K_x, K_z, K_φ), (C_x, C_z, C_φ), (K_xφ, C_xφ)) at O of a support's springs and dashpots
     ``at`` (:class:`~.base.AtO`), the plane's motions u_x, u_z, θ_y [N/m, N m/rad; N s/m, N m s/rad]
     and the sway-rocking coupling of u_x with θ_y [N/rad; N s/rad] (0 for an uncoupled support).
 
-    The paper's closed forms take the plane's three springs and dashpots uncoupled: unless
-    ``coupled`` (the one model's eigen-solve in the plane, which takes K_xφ, C_xφ), a support that
-    couples a motion of the plane to any other (an off-diagonal term in the rows of u_x, u_z, θ_y)
-    raises :class:`~foundation_calc.errors.PhysicsError` naming the support ``name``, never drops the
-    coupling; with ``coupled``, any coupling but u_x with θ_y does. Couplings among the motions out
-    of the plane alone (u_y, θ_x, θ_z) are not read: the crank's body and forcing leave those
-    motions at rest."""
+    The crank's plane model takes that one coupling (a pile group's); any other coupling of a
+    motion of the plane (an off-diagonal term in the rows of u_x, u_z, θ_y but u_x with θ_y)
+    raises :class:`~foundation_calc.errors.PhysicsError` naming the support ``name``, never
+    dropped. Couplings among the motions out of the plane alone (u_y, θ_x, θ_z) are not read: the
+    crank's body and forcing leave those motions at rest. What cannot take the sway-rocking
+    coupling refuses it where it is called (:func:`require_uncoupled`; a design's closed forms by
+    its own :attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`)."""
     zero = 0.0 * at.springs[..., 0]
     if at.coupling is None:
         return (tuple(at.springs[..., i] for i in PLANE), tuple(at.dashpots[..., i] for i in PLANE), (zero, zero))
@@ -148,23 +148,36 @@ def plane(at, name: str, coupled: bool = False) -> tuple:
     scale = [np.sqrt(np.abs(d[..., PLANE, None] * d[..., None, :])) for d in (at.springs, at.dashpots)]
     off = np.stack([np.where(np.abs(A[..., PLANE, :]) > NEGLIGIBLE * s, A[..., PLANE, :], 0.0)
                     for A, s in zip((K_c, C_c), scale)])
-    if coupled:  # the rows of u_x and θ_y are 0 and 2 of PLANE: their terms in the columns of θ_y and u_x
-        off[..., PLANE.index(i), j] = off[..., PLANE.index(j), i] = 0.0
+    # the rows of u_x and θ_y are 0 and 2 of PLANE: their terms in the columns of θ_y and u_x
+    off[..., PLANE.index(i), j] = off[..., PLANE.index(j), i] = 0.0
     if np.any(off != 0.0):
         from foundation_calc.errors import PhysicsError
 
-        what = ("couples the motions of the plane at O (its K or C has off-diagonal terms in the rows of u_x, u_z,"
-                " θ_y); the crank foundation's closed forms take three uncoupled springs and dashpots") if not coupled else (
-                "couples the motions of the plane at O other than u_x with θ_y (the sway-rocking a symmetric pile"
-                " group gives); the crank foundation's plane model takes that one coupling")
         raise PhysicsError(
-            f"the support {name} {what}", field="soil",
-            hint=("the crank's commands take a support's sway-rocking coupling (a pile group) by the plane's one model;"
-                  " for another coupling describe the foundation as a block_foundation scene, whose 6-DOF model"
-                  " takes a coupled support") if not coupled else
-                 "describe the foundation as a block_foundation scene, whose 6-DOF model takes a coupled support")
+            f"the support {name} couples the motions of the plane at O other than u_x with θ_y (the sway-rocking a"
+            " symmetric pile group gives); the crank foundation's plane model takes that one coupling", field="soil",
+            hint="describe the foundation as a block_foundation scene, whose 6-DOF model takes a coupled support")
     return (tuple(at.springs[..., k] for k in PLANE), tuple(at.dashpots[..., k] for k in PLANE),
             (K_c[..., i, j], C_c[..., i, j]))
 
 
-__all__ = ["PLANE", "PLANE_MODELS", "SWAY_ROCKING", "PlaneFooting", "build", "plane", "plane_dashpots", "plane_footing", "plane_masses"]
+def require_uncoupled(coupling, name: str) -> None:
+    """Raise :class:`~foundation_calc.errors.PhysicsError` naming the support ``name`` when its
+    sway-rocking coupling ``coupling`` = (K_xφ, C_xφ) [N/rad; N s/rad] (:func:`plane`'s) is not 0:
+    for what takes the plane's three springs and dashpots uncoupled (the paper's soil-method chain,
+    the rigid block under a machine given by its loads), which must refuse the coupling, never
+    drop it."""
+    if not any(np.any(np.asarray(part) != 0.0) for part in coupling):
+        return
+    from foundation_calc.errors import PhysicsError
+
+    raise PhysicsError(
+        f"the support {name} couples the motions of the plane at O (its K or C has off-diagonal terms in the rows of"
+        " u_x, u_z, θ_y); the crank foundation's closed forms take three uncoupled springs and dashpots", field="soil",
+        hint="the crank's commands take a support's sway-rocking coupling (a pile group) by the plane's one model;"
+             " for another coupling describe the foundation as a block_foundation scene, whose 6-DOF model"
+             " takes a coupled support")
+
+
+__all__ = ["PLANE", "PLANE_MODELS", "SWAY_ROCKING", "PlaneFooting", "build", "plane", "plane_dashpots", "plane_footing", "plane_masses",
+           "require_uncoupled"]
