@@ -33,9 +33,8 @@ def mechanism_configs() -> list[Path]:
 
 def crank_on_piles(path: Path) -> bool:
     """Whether ``path`` is a crank scene on [piles], whose sway-rocking coupling the paper's closed forms
-    do not take: its resonance, amplitudes, check, speed sweep and run-up are the plane model's, fcalc soil
-    shows the group in the plane (tests/test_crank_piles_soil.py), and fcalc report and design refuse it
-    (exit 3; tests/test_crank_piles.py)."""
+    do not take: every command reads the plane's one model with the group's K_xφ, C_xφ (the averaged
+    operator; tests/test_crank_piles*.py), the first approximation is listed as not applicable."""
     data = read_toml(path)
     return data.get("kind") == "crank_foundation" and "piles" in data
 
