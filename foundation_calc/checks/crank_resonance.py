@@ -71,7 +71,8 @@ def paper_margin(design: CrankDesign):
 #: Conditions listed as information beside the judged ones (the nearest first).
 SHOWN_INFORMATION = 3
 
-_MODES = ("k0", "p1", "p2")
+#: The crank foundation's modes in the plane, by name: vertical k0, sliding-rocking p1 < p2.
+MODES = ("k0", "p1", "p2")
 
 
 def _label(n: int, mode: str) -> str:
@@ -99,7 +100,7 @@ def harmonic_conditions(orders, load_orders=(), mechanism: bool = True) -> tuple
     known = {(c.harmonic, c.mode): c for c in CONDITIONS} if mechanism else {}
     conditions = []
     for n in orders:
-        for mode in _MODES:
+        for mode in MODES:
             condition = known.get((n, mode))
             if condition is None:
                 source = "loads" if n in load_orders else "harmonic" if mechanism else "speed"
@@ -227,14 +228,17 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     return check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene))
 
 
-def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+def consistent_frequencies(static: NaturalFrequencies, frequencies_at, rootless: str = "raise") -> NaturalFrequencies:
     """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
-    NaturalFrequencies on the springs taken at ω."""
+    NaturalFrequencies on the springs taken at ω; a mode without a root raises the PhysicsError
+    naming it, or with ``rootless="nan"`` (a batch of candidates) is NaN
+    (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`)."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
 
     return NaturalFrequencies(**{
-        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode))
-        for mode in _MODES
+        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode),
+                                   mode=mode, rootless=rootless)
+        for mode in MODES
     })
 
 
@@ -264,14 +268,14 @@ def by_static_rank(static: NaturalFrequencies):
 
     def ranked(found: NaturalFrequencies) -> NaturalFrequencies:
         values = np.take_along_axis(np.sort(_stacked(found), axis=-1), np.broadcast_to(rank, np.shape(_stacked(found))), -1)
-        return NaturalFrequencies(*(values[..., j] for j in range(len(_MODES))))
+        return NaturalFrequencies(*(values[..., j] for j in range(len(MODES))))
 
     return ranked
 
 
 def _stacked(found: NaturalFrequencies) -> np.ndarray:
     """k0, p1, p2 of ``found`` stacked on a last axis, (..., 3)."""
-    return np.stack(np.broadcast_arrays(*(np.asarray(getattr(found, mode), dtype=float) for mode in _MODES)), axis=-1)
+    return np.stack(np.broadcast_arrays(*(np.asarray(getattr(found, mode), dtype=float) for mode in MODES)), axis=-1)
 
 
 def scene_frequencies(scene) -> NaturalFrequencies:
