@@ -349,16 +349,18 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
 
 def rootless_reason(mode: str, low=None, high=None) -> str:
     """Why a mode has no natural frequency: ω = p(K(ω)) has no root between ``low`` and ``high``
-    [rad/s] (:func:`consistent_frequency`'s scan), or, without them, between the multiples
-    :data:`SCAN` of its static frequency (a batch's reason, the same for every candidate).
+    [rad/s] that :func:`consistent_frequency`'s scan finds (p(ω) - ω changes sign between none of
+    its :data:`SCAN` samples: a crossing narrower than their spacing, 7 %, can hide between them),
+    or, without them, between the multiples :data:`SCAN` of its static frequency (a batch's reason,
+    the same for every candidate).
 
     >>> rootless_reason("p2", 80.0, 2000.0)
-    'mode p2 has no natural frequency: ω = p(K(ω)) has no root between 80 and 2000 rad/s'
+    'mode p2 has no natural frequency: ω = p(K(ω)) has no root found between 80 and 2000 rad/s'
     """
     where = (f"{SCAN[0]:g} and {SCAN[-1]:g} × its static frequency" if low is None
              else f"{low:.4g} and {high:.4g} rad/s")
     name = "a mode" if not mode else mode if mode.startswith("mode") else f"mode {mode}"
-    return f"{name} has no natural frequency: ω = p(K(ω)) has no root between {where}"
+    return f"{name} has no natural frequency: ω = p(K(ω)) has no root found between {where}"
 
 
 #: What to change when a mode has no natural frequency (:func:`consistent_frequency`).

@@ -1,0 +1,93 @@
+"""A design candidate on a pile group whose mode has no natural frequency (ω = p(K(ω)) has no root)
+fails alone: the batch goes on and names the mode; ``fcalc check`` refuses that candidate's scene
+naming the same mode.
+
+The reproduction: configs/crank_on_piles.toml's machine at 100 rpm on an 8 m × 3 m × 0.8 m block
+over six 2 m × 1.5 m piles (their heads scaled with the plan, as a design moves them). At 8 m the
+highest mode p2 has no root; at 9 m (and the refinement's 8.6 m) every mode has one and a design
+passes.
+
+Independent reference, written here: the plane's (K(ω), M̄) assembled by hand in
+tests/test_crank_piles.py (the group's impedance at O carried to x, y, θ of C, the mechanism's mean
+mass from its kinematics), its highest natural frequency p(ω) = max sqrt|eig(K(ω), M̄)| at the
+scan's samples: p(ω) - ω keeps its sign there. (A fine grid finds a dip narrower than the scan's
+spacing at 2720-2750 rad/s, a0 = ω d/V_s = 34, far beyond the pile springs' validity, and a
+crossing at 3930 rad/s beyond the scan: hence "no root found".)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.linalg import eigvals
+
+import foundation_calc as fc
+from foundation_calc.checks.design.apply import applied_document
+from foundation_calc.scenes import parse_scene, read_toml
+from foundation_calc.solvers.soil.impedance import SCAN
+
+from tests.conftest import CONFIGS
+from tests.test_crank_piles import _mean_mass, _plane
+
+#: The rootless candidate's block length [m] and the range the batch varies [m].
+ROOTLESS_LENGTH = 8.0
+VARY = "foundation.block.length=8:9"
+
+
+@pytest.fixture(scope="module")
+def document():
+    """The reproduction (module docstring): the shipped piled crank, its block 8 × 3 × 0.8 m on
+    2 m × 1.5 m piles at 100 rpm, the base's given size left to the block."""
+    doc = read_toml(CONFIGS / "crank_on_piles.toml")
+    foundation = doc["foundation"]
+    del foundation["base_length"], foundation["base_width"]
+    foundation["block"].update(length=ROOTLESS_LENGTH, width=3.0, height=0.8)
+    doc["piles"].update(length=2.0, diameter=1.5,
+                        positions=[[x * ROOTLESS_LENGTH / 6.0, y * 3.0 / 4.0] for x, y in doc["piles"]["positions"]])
+    doc["mechanism"]["speed_rpm"] = 100
+    return doc
+
+
+@pytest.fixture(scope="module")
+def designed(document):
+    return fc.design(document, vary=[VARY], points=2)
+
+
+def _highest(scene, omega: float, M: np.ndarray, z_G: float) -> float:
+    """The highest natural frequency [rad/s] of the plane's (K(ω), M̄), assembled by hand: the
+    largest sqrt|λ| of its eigenvalues λ, as fcalc ranks the modes (``natural_modes``: a pile
+    group's springs at ω can be negative, their |λ| taken)."""
+    return float(np.max(np.sqrt(np.abs(eigvals(_plane(scene, omega, z_G)[0], M).real))))
+
+
+def test_the_rootless_mode_has_no_root_by_an_independent_scan(document):
+    """p(ω) - ω of the highest mode (p2, the highest at rest), assembled by hand, changes sign
+    between none of fcalc's scan samples (:data:`SCAN` × p(p_s), p_s its static frequency, where
+    consistent_frequency centres the scan of springs that stiffen with frequency)."""
+    scene = parse_scene(document)
+    M, z_G = _mean_mass(scene)
+    static = _highest(scene, 0.0, M, z_G)
+    grid = _highest(scene, static, M, z_G) * SCAN
+    g = np.array([_highest(scene, w, M, z_G) for w in grid]) - grid
+    assert np.all(g > 0.0) or np.all(g < 0.0), grid[np.nonzero(np.diff(np.sign(g)))[0]]
+
+
+def test_a_batch_with_a_rootless_candidate_goes_on_and_names_its_mode(designed):
+    """Main stopped the whole batch (exit 3, a PhysicsError); now the 8 m candidate fails alone and
+    the 8.6 m design passes, re-checked by fcalc check's path."""
+    found = designed.to_dict()
+    assert designed.exit_code == 0
+    assert found["best"]["values"]["foundation.block.length"] > ROOTLESS_LENGTH
+    reasons = {f["reason"]: f["count"] for f in found["cheaper_failures"] if f["check"] == "resonance"}
+    rootless = [r for r in reasons if r.startswith("mode p2 has no natural frequency: ω = p(K(ω)) has no root found")]
+    assert len(rootless) == 1 and reasons[rootless[0]] == 1, reasons
+    assert found["recheck"]
+
+
+def test_check_refuses_the_rootless_candidate_naming_the_same_mode(document):
+    """The design's candidate written out as a scene: fcalc check says the same, an invalid scene
+    (exit 3) whose message names mode p2 and the range scanned."""
+    result = fc.check(applied_document(document, {"foundation.block.length": ROOTLESS_LENGTH}))
+    assert result.exit_code == 3
+    text = str(result.to_dict())
+    assert "mode p2 has no natural frequency: ω = p(K(ω)) has no root found between" in text and "rad/s" in text
