@@ -225,36 +225,47 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     if scene.mechanism is None:
         return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
                                       scene_block_frequencies(scene))
-    return check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene))
+    several = {}
+    report = check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene, several))
+    return replace(report, several_roots=several or None)
 
 
-def consistent_frequencies(static: NaturalFrequencies, frequencies_at, rootless: str = "raise") -> NaturalFrequencies:
+def consistent_frequencies(static: NaturalFrequencies, frequencies_at, rootless: str = "raise",
+                           several: dict | None = None) -> NaturalFrequencies:
     """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
     NaturalFrequencies on the springs taken at ω; a mode without a root raises the PhysicsError
     naming it, or with ``rootless="nan"`` (a batch of candidates) is NaN
-    (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`)."""
+    (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`). ``several`` (one
+    design): receives mode -> every root [rad/s] of a mode whose scan found more than one."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
 
-    return NaturalFrequencies(**{
-        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode),
-                                   mode=mode, rootless=rootless)
-        for mode in MODES
-    })
+    found = {}
+    for mode in MODES:
+        every = [] if several is not None else None
+        found[mode] = consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode),
+                                           mode=mode, rootless=rootless, every=every)
+        if every is not None and len(every) > 1:
+            several[mode] = tuple(every)
+    return NaturalFrequencies(**found)
 
 
-def scene_design_frequencies(scene):
+def scene_design_frequencies(scene, several: dict | None = None):
     """(zero-order, averaged, static) frequencies of a scene's mechanism on a frequency-dependent
-    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
+    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil.
+    ``several``: receives mode -> every root of a mode with more than one (:func:`consistent_frequencies`;
+    the averaged operator's, which the rule judges)."""
     if not scene.support().frequency_dependent:
         return None
     design = scene.design(coupled=True)
     static, static_averaged = design_frequencies(design)
     if design.coupled:  # the one model's modes, by rank as the block's are: one root of each
         ranked = by_static_rank(static)
-        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w, coupled=True))[1]))
+        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w, coupled=True))[1]),
+                                       several=several)
         return found, found, static
     zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w, coupled=True))[0])
-    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w, coupled=True))[1])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w, coupled=True))[1],
+                                      several=several)
     return zero, averaged, static
 
 

@@ -231,7 +231,7 @@ def footing_impedance(K_z, K_x, K_phi, G, rho, nu, L, B, D, omega) -> Impedance:
     )
 
 
-def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False, mode="", rootless="raise"):
+def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False, mode="", rootless="raise", every=None):
     """The root of ω = p(K(ω)): the natural frequency of a mode whose springs depend on frequency.
 
     ``frequency_at(omega)`` returns the mode's frequency p(ω) [rad/s] on the springs taken at
@@ -275,6 +275,9 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
     mode : the mode's name in the error (``"p2"``, ``"mode 3"``)
     rootless : ``"raise"``: a mode without a root raises; ``"nan"``: its root is NaN (a batch of
         candidates, each failing alone: :func:`rootless_reason`)
+    every : a list, for one mode (a scalar ``omega_static``): when the scan of :data:`SCAN` runs, it
+        receives every root [rad/s] between its samples where p(ω) - ω changes sign, ascending
+        (the root returned among them; several: the mode has several frequencies, one chosen)
 
     Returns
     -------
@@ -314,6 +317,8 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
         lo, g_lo = np.where(pick, at(grid[..., :-1]), lo), np.where(pick, at(g[..., :-1]), g_lo)
         hi, g_hi = np.where(pick, at(grid[..., 1:]), hi), np.where(pick, at(g[..., 1:]), g_hi)
         lost &= ~found
+        if every is not None and np.ndim(omega_static) == 0 and bool(found):
+            every.extend(_roots_between(frequency_at, grid, g))
     if np.any(lost) and rootless == "raise":
         centre = float(np.max(np.where(lost, hi, 0.0)))
         raise PhysicsError(f"{rootless_reason(mode, SCAN[0] * centre, SCAN[-1] * centre)} ({SCAN[0]:g} to {SCAN[-1]:g} ×"
@@ -345,6 +350,17 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
         kept = np.where(up, 1.0, np.where(down, -1.0, kept))
         widths = [widths[-1], width]
     raise ArithmeticError(f"ω = p(K(ω)): the bracket did not close in {3 * 64} steps (a bug: it halves every three)")
+
+
+def _roots_between(frequency_at, grid, g) -> list[float]:
+    """Every root [rad/s] of p(ω) - ω between consecutive samples ``grid`` (one mode's) where its
+    values ``g`` change sign, each refined by Brent's method to round-off, ascending."""
+    from scipy.optimize import brentq
+
+    grid, g = np.ravel(grid), np.ravel(g)
+    changes = np.nonzero((g[:-1] > 0.0) != (g[1:] > 0.0))[0]
+    return [float(brentq(lambda w: float(frequency_at(w)) - w, grid[k], grid[k + 1], xtol=1e-12, rtol=1e-12))
+            for k in changes]
 
 
 def rootless_reason(mode: str, low=None, high=None) -> str:
