@@ -143,3 +143,22 @@ def test_a_mode_with_several_roots_is_said_with_every_root(several_roots_documen
     taken = resonance["result"]["natural_frequencies"]["p2"]
     assert np.min(np.abs(independent - taken)) / taken < 1e-6 and f"takes {taken:.4g} rad/s" in warned[0]
     assert min(listed) == pytest.approx(392.8, abs=0.05) and taken == pytest.approx(584.3, abs=0.05)  # the issue's
+
+
+def test_consistent_frequency_leaves_a_rootless_element_nan_and_lists_every_root():
+    """Closed forms: p = 50 + ω/2 has its root at 100 rad/s, p = 50 + 1.5 ω none (a batch of both
+    with rootless="nan": 100 and NaN, where main raised for the batch); p = ω + 100 cos(2π ω/100)
+    brackets no root from its static value (p rises past ω twice), and every root its scan lists
+    is one of ω = 25 + 50 k (1e-9 of the spacing: Brent's method to round-off)."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    batch = lambda w: np.where(np.arange(2) == 0, 50.0 + 0.5 * w, 50.0 + 1.5 * w)  # noqa: E731
+    found = consistent_frequency(batch, np.array([50.0, 50.0]), rootless="nan")
+    assert found[0] == pytest.approx(100.0, rel=1e-9) and np.isnan(found[1])
+
+    wavy = lambda w: w + 100.0 * np.cos(2.0 * np.pi * np.asarray(w) / 100.0)  # noqa: E731 - p(0) = 100, p(100) = 200, p(200) = 300
+    every = []
+    root = consistent_frequency(wavy, wavy(0.0), every=every)
+    assert len(every) > 1 and np.min(np.abs(np.array(every) - root)) < 1e-9 * root  # the root taken is one of them
+    for w in every:  # ω = p(ω) where the cosine vanishes: ω = 25 + 50 k
+        assert (w - 25.0) / 50.0 == pytest.approx(round((w - 25.0) / 50.0), abs=1e-9), every
