@@ -162,3 +162,13 @@ def test_consistent_frequency_leaves_a_rootless_element_nan_and_lists_every_root
     assert len(every) > 1 and np.min(np.abs(np.array(every) - root)) < 1e-9 * root  # the root taken is one of them
     for w in every:  # ω = p(ω) where the cosine vanishes: ω = 25 + 50 k
         assert (w - 25.0) / 50.0 == pytest.approx(round((w - 25.0) / 50.0), abs=1e-9), every
+
+
+def test_a_speed_at_the_other_root_is_said_as_resonant(several_roots_document):
+    """At 3750 rpm (ω = 392.7 rad/s) the speed sits on p2's other root 392.8 rad/s: the finding says
+    ω = p2 is as resonant there (margin |ω - 392.8|/392.8 < 0.1 %, under the 20 % band), while the
+    verdict stays the root taken's (584.3 rad/s, 33 % away): a warning, not a changed verdict."""
+    doc = {**several_roots_document, "mechanism": {**several_roots_document["mechanism"], "speed_rpm": 3750.0}}
+    resonance = next(f for f in fc.check(doc).to_dict()["checks"] if f["check"] == "resonance")
+    said = [d for d in resonance["details"] if d.startswith("WARN ω = p2 at the other root 392.8 rad/s")]
+    assert len(said) == 1 and "margin 0.0% (needs 20%)" in said[0], resonance["details"]

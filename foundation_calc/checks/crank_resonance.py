@@ -12,6 +12,7 @@ report and its words are every kind's (:mod:`~foundation_calc.checks.resonance`)
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -227,7 +228,32 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
                                       scene_block_frequencies(scene))
     several = {}
     report = check_resonances(scene.design(coupled=True), scene.limits.detuning, loads, scene_design_frequencies(scene, several))
-    return replace(report, several_roots=several or None)
+    return replace(report, several_roots=several_roots_warnings(report, several))
+
+
+def several_roots_warnings(report: ResonanceReport, several: dict) -> tuple[str, ...]:
+    """``WARN`` a line per mode of ``several`` (mode -> every root [rad/s] of ω = p(K(ω))): the
+    roots in rad/s and Hz and the one the check took; and a line per judged condition n ω on that
+    mode that the resonance rule would fail or warn against another root (its margin
+    :func:`~foundation_calc.solvers.crank.resonance.condition_margin` with that root for the mode's
+    frequency, against the condition's band): a speed near the other root is as resonant. The
+    verdict stays the root taken's."""
+    from foundation_calc.solvers.crank.resonance import condition_margin
+
+    lines = []
+    for mode, roots in several.items():
+        taken = float(getattr(report.averaged, mode))
+        listed = ", ".join(f"{w:.4g} rad/s ({w / (2.0 * math.pi):.4g} Hz)" for w in roots)
+        lines.append(f"WARN mode {mode} has {len(roots)} natural frequencies on the support's springs at frequency"
+                     f" (roots of ω = p(K(ω))): {listed}; the check takes {taken:.4g} rad/s, the root its search brackets")
+        for row in (r for r in report.rows if r.judged and r.condition.mode == mode and r.required > 0.0):
+            for root in (w for w in roots if abs(w - taken) > 1e-9 * taken):
+                other = replace(report.averaged, **{mode: root})
+                margin = float(condition_margin(report.omega, replace(report.zero_order, **{mode: root}), other, row.condition))
+                if margin < row.required:
+                    lines.append(f"WARN {row.label} at the other root {root:.4g} rad/s: margin {margin:.1%} (needs"
+                                 f" {row.required:.0%}): a speed near it is as resonant")
+    return tuple(lines)
 
 
 def consistent_frequencies(static: NaturalFrequencies, frequencies_at, rootless: str = "raise",

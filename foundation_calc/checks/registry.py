@@ -117,7 +117,7 @@ def resonance(scene) -> Finding:
     details = () if report.modulus_range is None else report.modulus_range.details()
     noted, notes = soil_notes(report.soil_validity)
     return Finding("resonance", report.outcome, reason + noted, values, report,
-                   details + notes + report.several_roots_warnings())
+                   details + notes + report.several_roots)
 
 
 def amplitudes_finding(report, values: dict, resonant: Reason, statement: str | None = None,

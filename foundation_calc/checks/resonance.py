@@ -109,8 +109,8 @@ class ResonanceReport:
     ``modulus_range``: the check over the soil's ``modulus_range``
     (:mod:`~foundation_calc.checks.soil_range`); ``soil_validity``: a0 of the judged modes and
     orders against the soil method's fitted range (:mod:`~foundation_calc.checks.soil_validity`);
-    ``several_roots``: mode -> every root [rad/s] of ω = p(K(ω)) of a mode with more than one on a
-    frequency-dependent support (the one taken among them; :meth:`several_roots_warnings`).
+    ``several_roots``: ``WARN`` lines of the modes with several roots of ω = p(K(ω)) on a
+    frequency-dependent support (:func:`~foundation_calc.checks.crank_resonance.several_roots_warnings`).
 
     The plane model's section: ``design`` (None for a machine given by its loads only),
     ``zero_order`` and ``averaged`` frequencies (the same without a mechanism), ``static`` (the
@@ -134,22 +134,7 @@ class ResonanceReport:
     modes: object = None
     total_mass: float | None = None
     cog: object = None
-    several_roots: Mapping[str, tuple[float, ...]] | None = None
-
-    def several_roots_warnings(self) -> tuple[str, ...]:
-        """``WARN`` a line per mode with several natural frequencies (:attr:`several_roots`): every
-        root in rad/s and Hz, and the one the check took."""
-        import math
-
-        lines = []
-        taken = self.averaged
-        for mode, roots in (self.several_roots or {}).items():
-            listed = ", ".join(f"{w:.4g} rad/s ({w / (2.0 * math.pi):.4g} Hz)" for w in roots)
-            chosen = getattr(taken, mode, None) if taken is not None else None
-            took = "" if chosen is None else f"; the check takes {float(chosen):.4g} rad/s, the root its search brackets"
-            lines.append(f"WARN mode {mode} has {len(roots)} natural frequencies on the support's springs at"
-                         f" frequency (roots of ω = p(K(ω))): {listed}{took}")
-        return tuple(lines)
+    several_roots: tuple[str, ...] = ()
 
     @property
     def omega(self) -> float:
