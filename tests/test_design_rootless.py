@@ -13,11 +13,17 @@ mass from its kinematics), its highest natural frequency p(ω) = max sqrt|eig(K(
 scan's samples: p(ω) - ω keeps its sign there. (A fine grid finds a dip narrower than the scan's
 spacing at 2720-2750 rad/s, a0 = ω d/V_s = 34, far beyond the pile springs' validity, and a
 crossing at 3930 rad/s beyond the scan: hence "no root found".)
+
+A block's batch has no such case among the shipped scenes' plausible sizes: its test makes one,
+a block whose springs stiffen faster than its frequencies rise. A mode with several roots: the
+shipped piled crank on a 4.5 m block (p2 = 392.8, 444.3 or 584.3 rad/s), against the same hand
+assembly on a fine grid.
 """
 
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -25,6 +31,7 @@ from scipy.linalg import eigvals
 
 import foundation_calc as fc
 from foundation_calc.checks.design.apply import applied_document
+from foundation_calc.checks.design.candidates import FAIL
 from foundation_calc.scenes import parse_scene, read_toml
 from foundation_calc.solvers.soil.impedance import SCAN
 
@@ -174,3 +181,46 @@ def test_a_speed_at_the_other_root_is_said_as_resonant(several_roots_document):
     said = [d for d in found["several_roots"] if d.startswith("WARN ω = p2 at the other root 392.8 rad/s")]
     assert len(said) == 1 and "margin 0.0% (needs 20%)" in said[0], found["several_roots"]
     assert found["verdict"] == "pass"
+
+
+def test_a_block_candidate_whose_springs_stiffen_too_fast_fails_alone():
+    """A block's batch (configs/block_fan_torsion_near_speed.toml on Gazetas' footing springs): two
+    identical blocks, the second's springs times (1 + (ω/20)⁴), so its every p(ω) rises like ω² and
+    outruns ω over the whole scan (asserted here on the scan's samples, by the eigenvalues of
+    K(ω) − λ M written out with scipy). consistent_batch raised for the batch; with rootless="nan"
+    the first block's modes are the plain batch's and the second fails resonance and amplitudes
+    alone, the reason naming a mode without a natural frequency."""
+    from scipy.linalg import eigh
+
+    from foundation_calc.checks.design.block import _built, dynamics
+    from foundation_calc.errors import PhysicsError
+    from foundation_calc.solvers.block.response import consistent_batch
+
+    doc = read_toml(CONFIGS / "block_fan_torsion_near_speed.toml")
+    doc["soil"]["method"] = "gazetas"
+    scene = parse_scene(doc)
+    L, B, H = (np.full(2, getattr(scene.block, k)) for k in ("length", "width", "height"))
+    built = _built(scene, L, B, H)
+
+    def stiffening(omega):
+        springs, dashpots, *rest = built.impedance(omega)
+        factor = np.where(np.arange(2).reshape((2,) + (1,) * (np.ndim(omega) - 1)) == 1, 1.0 + (np.asarray(omega) / 20.0) ** 4, 1.0)
+        return (springs * factor[..., None], dashpots, *rest)
+
+    one = consistent_batch(built.model, built.impedance)
+    found = consistent_batch(built.model, stiffening, "nan")
+    assert list(found.rootless) == [False, True]
+    assert np.allclose(found.frequencies[0], one.frequencies[0], rtol=1e-12)
+    with pytest.raises(PhysicsError, match="has no natural frequency: ω = p\\(K\\(ω\\)\\) has no root found between"):
+        consistent_batch(built.model, stiffening)
+
+    for w in np.outer(found.static_frequencies[1], SCAN).ravel():  # the second block: every p_j(ω) > ω on every scan
+        K, _ = built.model.soil_matrices(*stiffening(np.array([w, w])))
+        assert np.all(np.sqrt(eigh(K[1], built.model.M[1], eigvals_only=True)) > w), w
+
+    verdicts = dynamics(scene, replace(built, impedance=stiffening))
+    for check in ("resonance", "amplitudes"):
+        outcome, utilisation, governing, reasons = verdicts[check]
+        assert outcome[1] == FAIL and utilisation[1] == np.inf
+        assert reasons[governing[1]].startswith("a mode has no natural frequency"), reasons[governing[1]]
+        assert not reasons[governing[0]].startswith("a mode has no natural frequency")
