@@ -300,13 +300,13 @@ RANGE_REASON = "the soil's modulus range (a stiffness factor within it; fcalc ch
 
 def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
     """check -> (outcome, utilisation, governing, reasons) of the resonance and amplitude checks on
-    the candidates ``built`` (:class:`Built`; a block that tips over fails both); ``modes``: their
-    modes, if the caller has them already."""
+    the candidates ``built`` (:class:`Built`; a block that tips over fails both, as does one with a
+    mode without a natural frequency, :func:`~foundation_calc.solvers.block.response.consistent_batch`);
+    ``modes``: their modes, if the caller has them already."""
     from foundation_calc.solvers.block.response import batch_modes, consistent_batch
-
-    model, excitations = built.model, built.excitations
     from foundation_calc.solvers.soil.impedance import rootless_reason
 
+    model, excitations = built.model, built.excitations
     if modes is None:
         modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance, "nan")
     unstable = ~modes.stable

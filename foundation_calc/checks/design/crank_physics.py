@@ -458,8 +458,9 @@ def _rootless(frequencies) -> np.ndarray:
     root: NaN in either the zero-order or the averaged frequencies, :func:`candidate_frequencies`)."""
     from foundation_calc.checks.crank_resonance import MODES
 
-    return np.stack([np.isnan(getattr(zero, mode)) | np.isnan(getattr(averaged, mode))
-                     for zero, averaged in [frequencies] for mode in MODES], axis=-1)
+    zero, averaged = frequencies
+    return np.stack(np.broadcast_arrays(*(np.isnan(getattr(zero, mode)) | np.isnan(getattr(averaged, mode))
+                                          for mode in MODES)), axis=-1)
 
 
 def _fail_rootless(out: Verdicts, rootless: np.ndarray) -> None:
