@@ -12,6 +12,7 @@ report and its words are every kind's (:mod:`~foundation_calc.checks.resonance`)
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -71,7 +72,8 @@ def paper_margin(design: CrankDesign):
 #: Conditions listed as information beside the judged ones (the nearest first).
 SHOWN_INFORMATION = 3
 
-_MODES = ("k0", "p1", "p2")
+#: The crank foundation's modes in the plane, by name: vertical k0, sliding-rocking p1 < p2.
+MODES = ("k0", "p1", "p2")
 
 
 def _label(n: int, mode: str) -> str:
@@ -99,7 +101,7 @@ def harmonic_conditions(orders, load_orders=(), mechanism: bool = True) -> tuple
     known = {(c.harmonic, c.mode): c for c in CONDITIONS} if mechanism else {}
     conditions = []
     for n in orders:
-        for mode in _MODES:
+        for mode in MODES:
             condition = known.get((n, mode))
             if condition is None:
                 source = "loads" if n in load_orders else "harmonic" if mechanism else "speed"
@@ -224,33 +226,72 @@ def scene_resonances_as_given(scene) -> ResonanceReport:
     if scene.mechanism is None:
         return check_block_resonances(scene.block(), scene.speed.omega_rad_s, loads, scene.limits.detuning,
                                       scene_block_frequencies(scene))
-    return check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene))
+    several = {}
+    report = check_resonances(scene.design(), scene.limits.detuning, loads, scene_design_frequencies(scene, several))
+    return replace(report, several_roots=several_roots_warnings(report, several))
 
 
-def consistent_frequencies(static: NaturalFrequencies, frequencies_at) -> NaturalFrequencies:
+def several_roots_warnings(report: ResonanceReport, several: dict) -> tuple[str, ...]:
+    """``WARN`` a line per mode of ``several`` (mode -> every root [rad/s] of ω = p(K(ω))): the
+    roots in rad/s and Hz and the one the check took; and a line per judged condition n ω on that
+    mode that the resonance rule would fail or warn against another root (its margin
+    :func:`~foundation_calc.solvers.crank.resonance.condition_margin` with that root for the mode's
+    frequency, against the condition's band): a speed near the other root is as resonant. The
+    verdict stays the root taken's."""
+    from foundation_calc.solvers.crank.resonance import condition_margin
+
+    lines = []
+    for mode, roots in several.items():
+        taken = float(getattr(report.averaged, mode))
+        listed = ", ".join(f"{w:.4g} rad/s ({w / (2.0 * math.pi):.4g} Hz)" for w in roots)
+        lines.append(f"WARN mode {mode} has {len(roots)} natural frequencies on the support's springs at frequency"
+                     f" (roots of ω = p(K(ω))): {listed}; the check takes {taken:.4g} rad/s, the root its search brackets")
+        for row in (r for r in report.rows if r.judged and r.condition.mode == mode and r.required > 0.0):
+            for root in (w for w in roots if abs(w - taken) > 1e-9 * taken):
+                other = replace(report.averaged, **{mode: root})
+                margin = float(condition_margin(report.omega, replace(report.zero_order, **{mode: root}), other, row.condition))
+                if margin < row.required:
+                    lines.append(f"WARN {row.label} at the other root {root:.4g} rad/s: margin {margin:.1%} (needs"
+                                 f" {row.required:.0%}): a speed near it is as resonant")
+    return tuple(lines)
+
+
+def consistent_frequencies(static: NaturalFrequencies, frequencies_at, rootless: str = "raise",
+                           several: dict | None = None) -> NaturalFrequencies:
     """Each mode of ``static`` re-solved as ω = p(K(ω)), ``frequencies_at(ω)`` giving the
-    NaturalFrequencies on the springs taken at ω."""
+    NaturalFrequencies on the springs taken at ω; a mode without a root raises the PhysicsError
+    naming it, or with ``rootless="nan"`` (a batch of candidates) is NaN
+    (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`). ``several`` (one
+    design): receives mode -> every root [rad/s] of a mode whose scan found more than one."""
     from foundation_calc.solvers.soil.impedance import consistent_frequency
 
-    return NaturalFrequencies(**{
-        mode: consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode))
-        for mode in _MODES
-    })
+    found = {}
+    for mode in MODES:
+        every = [] if several is not None else None
+        found[mode] = consistent_frequency(lambda w, mode=mode: getattr(frequencies_at(w), mode), getattr(static, mode),
+                                           mode=mode, rootless=rootless, every=every)
+        if every is not None and len(every) > 1:
+            several[mode] = tuple(every)
+    return NaturalFrequencies(**found)
 
 
-def scene_design_frequencies(scene):
+def scene_design_frequencies(scene, several: dict | None = None):
     """(zero-order, averaged, static) frequencies of a scene's mechanism on a frequency-dependent
-    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil."""
+    soil, each mode at its own frequency (ω = p(K(ω))); None on a frequency-independent soil.
+    ``several``: receives mode -> every root of a mode with more than one (:func:`consistent_frequencies`;
+    the averaged operator's, which the rule judges)."""
     if not scene.support().frequency_dependent:
         return None
     design = scene.design()
     static, static_averaged = design_frequencies(design)
     if design.coupled:  # the one model's modes, by rank as the block's are: one root of each
         ranked = by_static_rank(static)
-        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w))[1]))
+        found = consistent_frequencies(static, lambda w: ranked(design_frequencies(scene.design(w))[1]),
+                                       several=several)
         return found, found, static
     zero = consistent_frequencies(static, lambda w: design_frequencies(scene.design(w))[0])
-    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1])
+    averaged = consistent_frequencies(static_averaged, lambda w: design_frequencies(scene.design(w))[1],
+                                      several=several)
     return zero, averaged, static
 
 
@@ -264,14 +305,14 @@ def by_static_rank(static: NaturalFrequencies):
 
     def ranked(found: NaturalFrequencies) -> NaturalFrequencies:
         values = np.take_along_axis(np.sort(_stacked(found), axis=-1), np.broadcast_to(rank, np.shape(_stacked(found))), -1)
-        return NaturalFrequencies(*(values[..., j] for j in range(len(_MODES))))
+        return NaturalFrequencies(*(values[..., j] for j in range(len(MODES))))
 
     return ranked
 
 
 def _stacked(found: NaturalFrequencies) -> np.ndarray:
     """k0, p1, p2 of ``found`` stacked on a last axis, (..., 3)."""
-    return np.stack(np.broadcast_arrays(*(np.asarray(getattr(found, mode), dtype=float) for mode in _MODES)), axis=-1)
+    return np.stack(np.broadcast_arrays(*(np.asarray(getattr(found, mode), dtype=float) for mode in MODES)), axis=-1)
 
 
 def scene_frequencies(scene) -> NaturalFrequencies:

@@ -110,7 +110,8 @@ def resonance(scene) -> Finding:
     reason = (report.text,) if report.per_machine else ("speed ", values["speed"], f", {report.text}")
     details = () if report.modulus_range is None else report.modulus_range.details()
     noted, notes = soil_notes(report.soil_validity)
-    return Finding("resonance", report.outcome, reason + noted, values, report, details + notes)
+    return Finding("resonance", report.outcome, reason + noted, values, report,
+                   details + notes + report.several_roots)
 
 
 def amplitudes_finding(report) -> Finding:

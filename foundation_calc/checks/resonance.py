@@ -108,7 +108,9 @@ class ResonanceReport:
     ``detuning``: the scene's ``[limits] detuning`` (a band, or a band per order);
     ``modulus_range``: the check over the soil's ``modulus_range``
     (:mod:`~foundation_calc.checks.soil_range`); ``soil_validity``: a0 of the judged modes and
-    orders against the soil method's fitted range (:mod:`~foundation_calc.checks.soil_validity`).
+    orders against the soil method's fitted range (:mod:`~foundation_calc.checks.soil_validity`);
+    ``several_roots``: ``WARN`` lines of the modes with several roots of ω = p(K(ω)) on a
+    frequency-dependent support (:func:`~foundation_calc.checks.crank_resonance.several_roots_warnings`).
 
     The plane model's section: ``design`` (None for a machine given by its loads only),
     ``zero_order`` and ``averaged`` frequencies (the same without a mechanism), ``static`` (the
@@ -132,6 +134,7 @@ class ResonanceReport:
     modes: object = None
     total_mass: float | None = None
     cog: object = None
+    several_roots: tuple[str, ...] = ()
 
     @property
     def omega(self) -> float:

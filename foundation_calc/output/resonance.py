@@ -120,6 +120,8 @@ def resonance_document(report: ResonanceReport, scene, source: str, command: str
     doc["modulus_range"] = None if report.modulus_range is None else report.modulus_range.document()
     notes = {"soil_validity": soil_validity_document(report.soil_validity), "warnings": scene.plausibility_warnings()}
     doc |= dict(reversed(notes.items())) if report.per_machine else notes  # each kind's recorded order
+    if report.several_roots:  # a mode with several roots of ω = p(K(ω)): said only then
+        doc["several_roots"] = list(report.several_roots)
     doc["verdict"] = report.outcome.value
     return doc
 
@@ -262,6 +264,11 @@ def print_resonance(report: ResonanceReport, scene, source: str, units: DisplayU
         out.print(f"Forcing share: |φᵀF_n|/p of the order on the mode over the machine's largest; a higher order"
                   f" under {FORCING_SHARE:.0%} is not judged (info: inside its band). The rule: docs/resonance-rule.md.")
     print_soil_validity(report.soil_validity)
+    if report.several_roots:
+        from rich.text import Text
+
+        for line in report.several_roots:
+            out.print(Text(line, style="yellow"))
     out.print(summary_line(report, strict, units))
 
 

@@ -300,21 +300,26 @@ RANGE_REASON = "the soil's modulus range (a stiffness factor within it; fcalc ch
 
 def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
     """check -> (outcome, utilisation, governing, reasons) of the resonance and amplitude checks on
-    the candidates ``built`` (:class:`Built`; a block that tips over fails both); ``modes``: their
-    modes, if the caller has them already."""
+    the candidates ``built`` (:class:`Built`; a block that tips over fails both, as does one with a
+    mode without a natural frequency, :func:`~foundation_calc.solvers.block.response.consistent_batch`);
+    ``modes``: their modes, if the caller has them already."""
     from foundation_calc.solvers.block.response import batch_modes, consistent_batch
+    from foundation_calc.solvers.soil.impedance import rootless_reason
 
     model, excitations = built.model, built.excitations
     if modes is None:
-        modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance)
+        modes = batch_modes(model) if built.impedance is None else consistent_batch(model, built.impedance, "nan")
     unstable = ~modes.stable
+    rootless = np.zeros_like(unstable) if modes.rootless is None else modes.rootless & ~unstable
     found = {}
     for check in checks:
         o, u, g, r = (_resonance(scene, modes, excitations) if check == "resonance"
                       else _amplitudes(scene, model, modes, excitations, built.points, built.impedance))
-        r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",)
-        found[check] = (np.where(unstable, FAIL, o).astype(np.int8), np.where(unstable, np.inf, u),
-                        np.where(unstable, len(r) - 1, g), r)
+        r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",
+                 f"{rootless_reason('')} (fcalc check: invalid scene)")
+        failing = unstable | rootless
+        found[check] = (np.where(failing, FAIL, o).astype(np.int8), np.where(failing, np.inf, u),
+                        np.where(unstable, len(r) - 2, np.where(rootless, len(r) - 1, g)), r)
     return found
 
 

@@ -135,8 +135,8 @@ def candidate_frequencies(designs: CandidateDesigns, mechanism):
         static = design_frequencies(static_design)
         if not designs.support.frequency_dependent:
             return static
-        return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which])
-                     for which in (0, 1))
+        return tuple(consistent_frequencies(static[which], lambda w, which=which: design_frequencies(designs.at(w))[which],
+                                            "nan") for which in (0, 1))
     M_m, _, K_m = mechanism[:3]
 
     def modes(design):
@@ -151,7 +151,7 @@ def candidate_frequencies(designs: CandidateDesigns, mechanism):
         def at(w):
             return ranked(NaturalFrequencies(*np.moveaxis(modes(designs.at(w))[1][0], -1, 0)))
 
-        static = consistent_frequencies(static, at)
+        static = consistent_frequencies(static, at, "nan")
     return static, static
 
 
@@ -421,11 +421,40 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
     d0 = designs.at(0.0)
     block = block_matrices(d0)
     decoupled, mech = mech.decoupled, mech.at(designs.a)
-    judgement = None
+    judgement, rootless = None, None
     if resonance:
         frequencies = candidate_frequencies(designs, mech)
+        rootless = _rootless(frequencies)
         judgement = _resonance(out, scene, d0, mech[0] + block[0], mech[2] + block[2], mech, harmonics, frequencies, stable)
     if amplitudes:  # fcalc amplitudes judges the resonances too, and takes every harmonic's springs
         motion, resonant = _motion(scene, designs, d0, block, mech, harmonics, decoupled)
         _amplitudes(out, scene, designs, motion, resonant, stable)
+    if rootless is not None:
+        _fail_rootless(out, rootless & stable[:, None])
     return given, judgement
+
+
+def _rootless(frequencies) -> np.ndarray:
+    """(N, 3) the candidates' modes k0, p1, p2 without a natural frequency (ω = p(K(ω)) has no
+    root: NaN in either the zero-order or the averaged frequencies, :func:`candidate_frequencies`)."""
+    from foundation_calc.checks.crank_resonance import MODES
+
+    zero, averaged = frequencies
+    return np.stack(np.broadcast_arrays(*(np.isnan(getattr(zero, mode)) | np.isnan(getattr(averaged, mode))
+                                          for mode in MODES)), axis=-1)
+
+
+def _fail_rootless(out: Verdicts, rootless: np.ndarray) -> None:
+    """Fail the resonance and amplitude checks of the candidates with a mode in ``rootless`` (N, 3)
+    (its first such mode governing, named as ``fcalc check`` names it: an invalid scene there),
+    the other candidates' verdicts kept; each check's reasons gain one text per mode."""
+    from foundation_calc.checks.crank_resonance import MODES
+    from foundation_calc.solvers.soil.impedance import rootless_reason
+
+    failing = rootless.any(axis=-1)
+    first = np.argmax(rootless, axis=-1)
+    texts = [f"{rootless_reason(mode)} (fcalc check: invalid scene)" for mode in MODES]
+    for check in [c for c in ("resonance", "amplitudes") if c in out.outcome]:
+        k = len(out.reasons[check])
+        out.put(check, np.where(failing, FAIL, out.outcome[check]), np.where(failing, np.inf, out.utilisation[check]),
+                np.where(failing, k + first, out.governing[check]), out.reasons[check] + tuple(texts))

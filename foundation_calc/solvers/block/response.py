@@ -60,7 +60,10 @@ class ModeBatch:
     :func:`consistent_batch`, on the static springs: a block that tips over, as ``fcalc check``
     judges it, :func:`consistent_modes`; a spring that turns negative at another mode's frequency,
     as a pile group's can, is no tipping); ``static_frequencies`` (..., 6) [rad/s]: on a
-    frequency-dependent soil each mode's on the static springs."""
+    frequency-dependent soil each mode's on the static springs; ``rootless`` (...): on a
+    frequency-dependent soil, a block with a mode whose ω = p(K(ω)) has no root
+    (:func:`consistent_batch` with ``rootless="nan"``; its modes are then the static springs' as a
+    stand-in, its verdicts for the caller to fail), else None."""
 
     frequencies: np.ndarray
     shapes: np.ndarray
@@ -69,6 +72,7 @@ class ModeBatch:
     squared: np.ndarray
     stable: np.ndarray
     static_frequencies: np.ndarray | None = None
+    rootless: np.ndarray | None = None
 
 
 def batch_modes(model: BlockModel) -> ModeBatch:
@@ -116,7 +120,7 @@ def _widened(model: BlockModel, n: int) -> BlockModel:
                    coupling=None if model.coupling is None else wide(model.coupling, 2))
 
 
-def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
+def consistent_batch(model: BlockModel, impedance, rootless: str = "raise") -> ModeBatch:
     """The six modes of Eq. (1) of :mod:`.model` on the soil ``impedance`` (module docstring), each
     at its own frequency, of one block or of a batch: the j-th lowest frequency p_j solves
     p = p_j(K(p)), p_j(ω) the j-th lowest on the springs at ω
@@ -130,7 +134,9 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     modes' roots are sought together (m = 6; k trial frequencies each in the scan of
     :func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`), element by element, each
     as if alone; a batch of more than :data:`~foundation_calc.solvers.soil.impedance.AT_ONCE` / 6
-    blocks one mode at a time (m = 1), so that the soil's arrays stay the batch's size."""
+    blocks one mode at a time (m = 1), so that the soil's arrays stay the batch's size.
+    ``rootless``: ``"raise"``, a mode without a root raises the PhysicsError; ``"nan"`` (a batch of
+    candidates), such a block keeps its static modes as a stand-in, marked in ``rootless``."""
     from foundation_calc.solvers.soil.impedance import AT_ONCE, consistent_frequency
 
     static = batch_modes(model)  # a block that tips over keeps p = 0, its fixed point
@@ -146,7 +152,10 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
             p = batch_modes(replace(wide, K=K, C=C)).frequencies[..., js]  # (..., ω_i, [k,] js)
             return np.moveaxis(np.diagonal(p, 0, -1 - more, -1), -1, -more)
 
-        roots[..., js] = consistent_frequency(frequencies, static.frequencies[..., js], trials=True)
+        roots[..., js] = consistent_frequency(frequencies, static.frequencies[..., js], trials=True,
+                                              mode=f"mode {js[0] + 1}" if len(js) == 1 else "", rootless=rootless)
+    lost = np.isnan(roots).any(axis=-1)
+    roots = np.where(lost[..., None], static.frequencies, roots)
 
     def alone(omega):
         K, C = model.soil_matrices(*impedance(omega))
@@ -161,7 +170,7 @@ def consistent_batch(model: BlockModel, impedance) -> ModeBatch:
     shapes = np.take_along_axis(shapes, order[..., None, :], -1)
     pairs = nearest_shapes(static.shapes, shapes, model.M)
     return ModeBatch(sort(p), shapes, sort(dominant), sort(damping), sort(squared), static.stable,
-                     np.take_along_axis(static.frequencies, pairs, -1))
+                     np.take_along_axis(static.frequencies, pairs, -1), lost if rootless == "nan" else None)
 
 
 def nearest_shapes(before: np.ndarray, after: np.ndarray, M: np.ndarray) -> np.ndarray:

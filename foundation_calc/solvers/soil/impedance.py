@@ -231,7 +231,7 @@ def footing_impedance(K_z, K_x, K_phi, G, rho, nu, L, B, D, omega) -> Impedance:
     )
 
 
-def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False):
+def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False, mode="", rootless="raise", every=None):
     """The root of ω = p(K(ω)): the natural frequency of a mode whose springs depend on frequency.
 
     ``frequency_at(omega)`` returns the mode's frequency p(ω) [rad/s] on the springs taken at
@@ -272,6 +272,12 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
     trials : True when ``frequency_at`` also takes a last axis of trial frequencies per element,
         (...) + (k,) -> (...) + (k,): the scan of :data:`SCAN` is then one call, not one per
         multiple (when it holds at most :data:`AT_ONCE` frequencies)
+    mode : the mode's name in the error (``"p2"``, ``"mode 3"``)
+    rootless : ``"raise"``: a mode without a root raises; ``"nan"``: its root is NaN (a batch of
+        candidates, each failing alone: :func:`rootless_reason`)
+    every : a list, for one mode (a scalar ``omega_static``): when the scan of :data:`SCAN` runs, it
+        receives every root [rad/s] between its samples where p(ω) - ω changes sign, ascending
+        (the root returned among them; several: the mode has several frequencies, one chosen)
 
     Returns
     -------
@@ -282,7 +288,8 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
     ------
     PhysicsError
         when ω = p(ω) has no root between 0.2 and 5 × p_s (springs that stiffen with frequency
-        faster than the mode's frequency rises).
+        faster than the mode's frequency rises), naming ``mode`` and the range scanned [rad/s];
+        with ``rootless="nan"`` never.
 
     >>> round(consistent_frequency(lambda w: 100.0 * (1.0 - 0.001 * w) ** 0.5, 100.0), 6)
     95.124922
@@ -310,12 +317,15 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
         lo, g_lo = np.where(pick, at(grid[..., :-1]), lo), np.where(pick, at(g[..., :-1]), g_lo)
         hi, g_hi = np.where(pick, at(grid[..., 1:]), hi), np.where(pick, at(g[..., 1:]), g_hi)
         lost &= ~found
-    if np.any(lost):
-        raise PhysicsError(
-            f"the natural frequency on the soil's springs p(ω) crosses ω = p(ω) nowhere between {SCAN[0]:g} and"
-            f" {SCAN[-1]:g} × its static value {np.max(np.where(lost, hi, 0.0)):.4g} rad/s: ω = p(K(ω)) has no root",
-            field="soil", hint="the soil's springs must not stiffen with frequency faster than the mode's frequency rises",
-        )
+        if every is not None and np.ndim(omega_static) == 0 and bool(found):
+            every.extend(_roots_between(frequency_at, grid, g))
+    if np.any(lost) and rootless == "raise":
+        centre = float(np.max(np.where(lost, hi, 0.0)))
+        raise PhysicsError(f"{rootless_reason(mode, SCAN[0] * centre, SCAN[-1] * centre)} ({SCAN[0]:g} to {SCAN[-1]:g} ×"
+                           f" {centre:.4g} rad/s: the mode's frequency on the soil's springs p(ω) crosses ω nowhere there)",
+                           field="soil", hint=ROOTLESS_HINT)
+    lo = np.where(lost, hi, lo)  # a rootless mode's bracket closed at once, its root NaN at the end
+    g_lo, g_hi = np.where(lost, 0.0, g_lo), np.where(lost, 0.0, g_hi)
     g_lo, g_hi = np.maximum(g_lo, 0.0), np.minimum(g_hi, 0.0)  # lo = hi for a frequency-independent mode
     kept = np.zeros(hi.shape)  # +1: lo was moved last, -1: hi was
     widths = [2.0 * (hi - lo)] * 2  # the first two steps are secant steps
@@ -323,7 +333,7 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
         width = hi - lo
         done = (width <= rtol * hi) | (g_lo == 0.0) | (g_hi == 0.0) | np.isnan(width)
         if np.all(done):
-            root = np.where(g_lo == 0.0, lo, np.where(g_hi == 0.0, hi, lo + width / 2.0))
+            root = np.where(lost, np.nan, np.where(g_lo == 0.0, lo, np.where(g_hi == 0.0, hi, lo + width / 2.0)))
             return root if root.ndim else float(root)  # a float for a float, as frequency_at gives
         slope = g_lo - g_hi  # > 0 where not done
         secant = lo + g_lo * width / np.where(done, 1.0, slope)
@@ -342,5 +352,36 @@ def consistent_frequency(frequency_at, omega_static, *, rtol=1e-10, trials=False
     raise ArithmeticError(f"ω = p(K(ω)): the bracket did not close in {3 * 64} steps (a bug: it halves every three)")
 
 
-__all__ = ["A0_FITTED", "A0_SOURCE", "AT_ONCE", "Impedance", "SCAN", "consistent_frequency", "footing_impedance", "footing_torsion",
+def _roots_between(frequency_at, grid, g) -> list[float]:
+    """Every root [rad/s] of p(ω) - ω between consecutive samples ``grid`` (one mode's) where its
+    values ``g`` change sign, each refined by Brent's method to round-off, ascending."""
+    from scipy.optimize import brentq
+
+    grid, g = np.ravel(grid), np.ravel(g)
+    changes = np.nonzero((g[:-1] > 0.0) != (g[1:] > 0.0))[0]
+    return [float(brentq(lambda w: float(frequency_at(w)) - w, grid[k], grid[k + 1], xtol=1e-12, rtol=1e-12))
+            for k in changes]
+
+
+def rootless_reason(mode: str, low=None, high=None) -> str:
+    """Why a mode has no natural frequency: ω = p(K(ω)) has no root between ``low`` and ``high``
+    [rad/s] that :func:`consistent_frequency`'s scan finds (p(ω) - ω changes sign between none of
+    its :data:`SCAN` samples: a crossing narrower than their spacing, 7 %, can hide between them),
+    or, without them, between the multiples :data:`SCAN` of its static frequency (a batch's reason,
+    the same for every candidate).
+
+    >>> rootless_reason("p2", 80.0, 2000.0)
+    'mode p2 has no natural frequency: ω = p(K(ω)) has no root found between 80 and 2000 rad/s'
+    """
+    where = (f"{SCAN[0]:g} and {SCAN[-1]:g} × its static frequency" if low is None
+             else f"{low:.4g} and {high:.4g} rad/s")
+    name = "a mode" if not mode else mode if mode.startswith("mode") else f"mode {mode}"
+    return f"{name} has no natural frequency: ω = p(K(ω)) has no root found between {where}"
+
+
+#: What to change when a mode has no natural frequency (:func:`consistent_frequency`).
+ROOTLESS_HINT = "the soil's springs must not stiffen with frequency faster than the mode's frequency rises"
+
+
+__all__ = ["A0_FITTED", "A0_SOURCE", "AT_ONCE", "Impedance", "ROOTLESS_HINT", "SCAN", "consistent_frequency", "rootless_reason", "footing_impedance", "footing_torsion",
            "rocking_radiation_coefficient", "stiffness_modifiers", "torsion_modifier", "torsion_radiation_coefficient"]

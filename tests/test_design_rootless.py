@@ -1,0 +1,225 @@
+"""A design candidate on a pile group whose mode has no natural frequency (ω = p(K(ω)) has no root)
+fails alone: the batch goes on and names the mode; ``fcalc check`` refuses that candidate's scene
+naming the same mode.
+
+The reproduction: configs/crank_on_piles.toml's machine at 100 rpm on an 8 m × 3 m × 0.8 m block
+over six 2 m × 1.5 m piles (their heads scaled with the plan, as a design moves them). At 8 m the
+highest mode p2 has no root; at 9 m (and the refinement's 8.6 m) every mode has one and a design
+passes.
+
+Independent reference, written here: the plane's (K(ω), M̄) assembled by hand in
+tests/test_crank_piles.py (the group's impedance at O carried to x, y, θ of C, the mechanism's mean
+mass from its kinematics), its highest natural frequency p(ω) = max sqrt|eig(K(ω), M̄)| at the
+scan's samples: p(ω) - ω keeps its sign there. (A fine grid finds a dip narrower than the scan's
+spacing at 2720-2750 rad/s, a0 = ω d/V_s = 34, far beyond the pile springs' validity, and a
+crossing at 3930 rad/s beyond the scan: hence "no root found".)
+
+A block's batch has no such case among the shipped scenes' plausible sizes: its test makes one,
+a block whose springs stiffen faster than its frequencies rise. A mode with several roots: the
+shipped piled crank on a 4.5 m block (p2 = 392.8, 444.3 or 584.3 rad/s), against the same hand
+assembly on a fine grid.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from scipy.linalg import eigvals
+
+import foundation_calc as fc
+from foundation_calc.checks.design.apply import applied_document
+from foundation_calc.checks.design.candidates import FAIL
+from foundation_calc.scenes import parse_scene, read_toml
+from foundation_calc.solvers.soil.impedance import SCAN
+
+from tests.conftest import CONFIGS
+from tests.test_crank_piles import _mean_mass, _plane
+
+#: The rootless candidate's block length [m] and the range the batch varies [m].
+ROOTLESS_LENGTH = 8.0
+VARY = "foundation.block.length=8:9"
+
+
+@pytest.fixture(scope="module")
+def document():
+    """The reproduction (module docstring): the shipped piled crank, its block 8 × 3 × 0.8 m on
+    2 m × 1.5 m piles at 100 rpm, the base's given size left to the block."""
+    doc = read_toml(CONFIGS / "crank_on_piles.toml")
+    foundation = doc["foundation"]
+    del foundation["base_length"], foundation["base_width"]
+    foundation["block"].update(length=ROOTLESS_LENGTH, width=3.0, height=0.8)
+    doc["piles"].update(length=2.0, diameter=1.5,
+                        positions=[[x * ROOTLESS_LENGTH / 6.0, y * 3.0 / 4.0] for x, y in doc["piles"]["positions"]])
+    doc["mechanism"]["speed_rpm"] = 100
+    return doc
+
+
+@pytest.fixture(scope="module")
+def designed(document):
+    return fc.design(document, vary=[VARY], points=2)
+
+
+def _highest(scene, omega: float, M: np.ndarray, z_G: float) -> float:
+    """The highest natural frequency [rad/s] of the plane's (K(ω), M̄), assembled by hand: the
+    largest sqrt|λ| of its eigenvalues λ, as fcalc ranks the modes (``natural_modes``: a pile
+    group's springs at ω can be negative, their |λ| taken)."""
+    return float(np.max(np.sqrt(np.abs(eigvals(_plane(scene, omega, z_G)[0], M).real))))
+
+
+def test_the_rootless_mode_has_no_root_by_an_independent_scan(document):
+    """p(ω) - ω of the highest mode (p2, the highest at rest), assembled by hand, changes sign
+    between none of fcalc's scan samples (:data:`SCAN` × p(p_s), p_s its static frequency, where
+    consistent_frequency centres the scan of springs that stiffen with frequency)."""
+    scene = parse_scene(document)
+    M, z_G = _mean_mass(scene)
+    static = _highest(scene, 0.0, M, z_G)
+    grid = _highest(scene, static, M, z_G) * SCAN
+    g = np.array([_highest(scene, w, M, z_G) for w in grid]) - grid
+    assert np.all(g > 0.0) or np.all(g < 0.0), grid[np.nonzero(np.diff(np.sign(g)))[0]]
+
+
+def test_a_batch_with_a_rootless_candidate_goes_on_and_names_its_mode(designed):
+    """Main stopped the whole batch (exit 3, a PhysicsError); now the 8 m candidate fails alone and
+    the 8.6 m design passes, re-checked by fcalc check's path."""
+    found = designed.to_dict()
+    assert designed.exit_code == 0
+    assert found["best"]["values"]["foundation.block.length"] > ROOTLESS_LENGTH
+    reasons = {f["reason"]: f["count"] for f in found["cheaper_failures"] if f["check"] == "resonance"}
+    rootless = [r for r in reasons if r.startswith("mode p2 has no natural frequency: ω = p(K(ω)) has no root found")]
+    assert len(rootless) == 1 and reasons[rootless[0]] == 1, reasons
+    assert found["recheck"]
+
+
+def test_check_refuses_the_rootless_candidate_naming_the_same_mode(document):
+    """The design's candidate written out as a scene: fcalc check says the same, an invalid scene
+    (exit 3) whose message names mode p2 and the range scanned."""
+    result = fc.check(applied_document(document, {"foundation.block.length": ROOTLESS_LENGTH}))
+    assert result.exit_code == 3
+    text = str(result.to_dict())
+    assert "mode p2 has no natural frequency: ω = p(K(ω)) has no root found between" in text and "rad/s" in text
+
+
+@pytest.fixture(scope="module")
+def several_roots_document():
+    """configs/crank_on_piles.toml with a 4.5 m block (the pile heads scaled with it): its mode p2
+    has several roots of ω = p(K(ω)) on the 16 m piles."""
+    doc = read_toml(CONFIGS / "crank_on_piles.toml")
+    foundation = doc["foundation"]
+    del foundation["base_length"], foundation["base_width"]
+    foundation["block"]["length"] = 4.5
+    doc["piles"]["positions"] = [[x * 4.5 / 6.0, y] for x, y in doc["piles"]["positions"]]
+    return doc
+
+
+def _independent_roots(scene, low: float, high: float) -> np.ndarray:
+    """Every root [rad/s] of p(ω) - ω of the highest mode, assembled by hand, between ``low`` and
+    ``high``: sign changes on 600 log-spaced samples (0.23 % apart), each refined by bisection to 1e-10."""
+    M, z_G = _mean_mass(scene)
+    g = lambda w: _highest(scene, w, M, z_G) - w  # noqa: E731
+    grid = np.geomspace(low, high, 600)
+    values = np.array([g(w) for w in grid])
+    roots = []
+    for k in np.nonzero((values[:-1] > 0.0) != (values[1:] > 0.0))[0]:
+        a, b, ga = grid[k], grid[k + 1], values[k]
+        while b - a > 1e-10 * b:
+            m = 0.5 * (a + b)
+            a, b, ga = (m, b, g(m)) if (g(m) > 0.0) == (ga > 0.0) else (a, m, ga)
+        roots.append(0.5 * (a + b))
+    return np.array(roots)
+
+
+def test_a_mode_with_several_roots_is_said_with_every_root(several_roots_document):
+    """Main took p2 = 584.3 rad/s silently; now fcalc resonance warns, naming p2 and each root
+    its scan found (rad/s and Hz), each a root of the hand-assembled operator's p(ω) = ω (1e-3: the
+    message's 4 digits; the one taken, from the JSON, 1e-6: the bisection's 1e-10 and the fixed
+    point's rtol), the one taken unchanged (tests/test_json_record.py pins it)."""
+    resonance = fc.resonance(several_roots_document).to_dict()  # check's resonance finding: the same lines, its details
+    warned = [d for d in resonance["several_roots"] if d.startswith("WARN mode p2 has")]
+    assert len(warned) == 1, resonance["several_roots"]
+    pairs = [(float(w), float(f)) for w, f in re.findall(r"([\d.]+) rad/s \(([\d.]+) Hz\)", warned[0])]
+    listed = [w for w, _ in pairs]
+    assert len(listed) >= 2 and all(w / (2.0 * np.pi) == pytest.approx(f, rel=1e-3) for w, f in pairs), warned
+    scene = parse_scene(several_roots_document)
+    independent = _independent_roots(scene, 0.5 * min(listed), 2.0 * max(listed))
+    for w in listed:
+        assert np.min(np.abs(independent - w)) / w < 1e-3, (w, independent)  # the message's 4 digits
+    taken = resonance["natural_frequencies"]["p2"]
+    assert np.min(np.abs(independent - taken)) / taken < 1e-6 and f"takes {taken:.4g} rad/s" in warned[0]
+    assert min(listed) == pytest.approx(392.8, abs=0.05) and taken == pytest.approx(584.3, abs=0.05)  # the issue's
+
+
+def test_consistent_frequency_leaves_a_rootless_element_nan_and_lists_every_root():
+    """Closed forms: p = 50 + ω/2 has its root at 100 rad/s, p = 50 + 1.5 ω none (a batch of both
+    with rootless="nan": 100 and NaN, where main raised for the batch); p = ω + 100 cos(2π ω/100)
+    brackets no root from its static value (p rises past ω twice), and every root its scan lists
+    is one of ω = 25 + 50 k (1e-9 of the spacing: Brent's method to round-off)."""
+    from foundation_calc.solvers.soil.impedance import consistent_frequency
+
+    batch = lambda w: np.where(np.arange(2) == 0, 50.0 + 0.5 * w, 50.0 + 1.5 * w)  # noqa: E731
+    found = consistent_frequency(batch, np.array([50.0, 50.0]), rootless="nan")
+    assert found[0] == pytest.approx(100.0, rel=1e-9) and np.isnan(found[1])
+
+    wavy = lambda w: w + 100.0 * np.cos(2.0 * np.pi * np.asarray(w) / 100.0)  # noqa: E731 - p(0) = 100, p(100) = 200, p(200) = 300
+    every = []
+    root = consistent_frequency(wavy, wavy(0.0), every=every)
+    assert len(every) > 1 and np.min(np.abs(np.array(every) - root)) < 1e-9 * root  # the root taken is one of them
+    for w in every:  # ω = p(ω) where the cosine vanishes: ω = 25 + 50 k
+        assert (w - 25.0) / 50.0 == pytest.approx(round((w - 25.0) / 50.0), abs=1e-9), every
+
+
+def test_a_speed_at_the_other_root_is_said_as_resonant(several_roots_document):
+    """At 3750 rpm (ω = 392.7 rad/s) the speed sits on p2's other root 392.8 rad/s: the finding says
+    ω = p2 is as resonant there (margin |ω - 392.8|/392.8 < 0.1 %, under the 20 % band), while the
+    verdict stays the root taken's (584.3 rad/s, 33 % away): a warning, not a changed verdict
+    (fcalc design's batch judges the one root taken, and its re-check must agree)."""
+    doc = {**several_roots_document, "mechanism": {**several_roots_document["mechanism"], "speed_rpm": 3750.0}}
+    found = fc.resonance(doc).to_dict()  # fcalc resonance --json: its note, said only when a mode has several roots
+    said = [d for d in found["several_roots"] if d.startswith("WARN ω = p2 at the other root 392.8 rad/s")]
+    assert len(said) == 1 and "margin 0.0% (needs 20%)" in said[0], found["several_roots"]
+    assert found["verdict"] == "pass"
+
+
+def test_a_block_candidate_whose_springs_stiffen_too_fast_fails_alone():
+    """A block's batch (configs/block_fan_torsion_near_speed.toml on Gazetas' footing springs): two
+    identical blocks, the second's springs times (1 + (ω/20)⁴), so its every p(ω) rises like ω² and
+    outruns ω over the whole scan (asserted here on the scan's samples, by the eigenvalues of
+    K(ω) − λ M written out with scipy). consistent_batch raised for the batch; with rootless="nan"
+    the first block's modes are the plain batch's and the second fails resonance and amplitudes
+    alone, the reason naming a mode without a natural frequency."""
+    from scipy.linalg import eigh
+
+    from foundation_calc.checks.design.block import _built, dynamics
+    from foundation_calc.errors import PhysicsError
+    from foundation_calc.solvers.block.response import consistent_batch
+
+    doc = read_toml(CONFIGS / "block_fan_torsion_near_speed.toml")
+    doc["soil"]["method"] = "gazetas"
+    scene = parse_scene(doc)
+    L, B, H = (np.full(2, getattr(scene.block, k)) for k in ("length", "width", "height"))
+    built = _built(scene, L, B, H)
+
+    def stiffening(omega):
+        springs, dashpots, *rest = built.impedance(omega)
+        factor = np.where(np.arange(2).reshape((2,) + (1,) * (np.ndim(omega) - 1)) == 1, 1.0 + (np.asarray(omega) / 20.0) ** 4, 1.0)
+        return (springs * factor[..., None], dashpots, *rest)
+
+    one = consistent_batch(built.model, built.impedance)
+    found = consistent_batch(built.model, stiffening, "nan")
+    assert list(found.rootless) == [False, True]
+    assert np.allclose(found.frequencies[0], one.frequencies[0], rtol=1e-12)
+    with pytest.raises(PhysicsError, match="has no natural frequency: ω = p\\(K\\(ω\\)\\) has no root found between"):
+        consistent_batch(built.model, stiffening)
+
+    for w in np.outer(found.static_frequencies[1], SCAN).ravel():  # the second block: every p_j(ω) > ω on every scan
+        K, _ = built.model.soil_matrices(*stiffening(np.array([w, w])))
+        assert np.all(np.sqrt(eigh(K[1], built.model.M[1], eigvals_only=True)) > w), w
+
+    verdicts = dynamics(scene, replace(built, impedance=stiffening))
+    for check in ("resonance", "amplitudes"):
+        outcome, utilisation, governing, reasons = verdicts[check]
+        assert outcome[1] == FAIL and utilisation[1] == np.inf
+        assert reasons[governing[1]].startswith("a mode has no natural frequency"), reasons[governing[1]]
+        assert not reasons[governing[0]].startswith("a mode has no natural frequency")
