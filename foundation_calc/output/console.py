@@ -59,6 +59,35 @@ def column_widths(table, width: int) -> tuple[list[int], list[int], int]:
     return natural, floor, width - table._extra_width - sum(table._get_padding_width(i) for i in range(len(columns)))
 
 
+def natural_width(table) -> int:
+    """The terminal cells a rich ``table`` takes with no column wrapped: its columns' natural
+    widths, borders and padding (a file's or a pipe's width, where nothing is squeezed)."""
+    natural, _, room = column_widths(table, 0)
+    return sum(natural) - room
+
+
+def two_line_width(text: str) -> int:
+    """The fewest terminal cells in which ``text`` wraps at its spaces into at most two lines.
+
+    >>> two_line_width("pass 3ω=p1 72.4%/20%"), two_line_width("fail")
+    (10, 4)
+    """
+    from rich.cells import cell_len
+
+    splits = (max(cell_len(text[:i]), cell_len(text[i + 1:])) for i, c in enumerate(text) if c == " ")
+    return min(splits, default=cell_len(text))
+
+
+def widen(table, index: int, cells: int, width: int) -> None:
+    """Give column ``index`` of a rich ``table`` at least ``cells`` terminal cells, as far as the
+    table still fits ``width`` with its other columns wrapped down to their longest words
+    (:func:`keep_words_whole`, called first): :func:`fit_columns` then narrows the others."""
+    keep_words_whole(table)
+    natural, floor, room = column_widths(table, width)
+    column = table.columns[index]
+    column.min_width = max(floor[index], min(cells, natural[index], room - (sum(floor) - floor[index])))
+
+
 def fits(table, width: int) -> bool:
     """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
     at most down to their longest words)."""
