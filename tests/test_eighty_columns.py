@@ -47,10 +47,11 @@ def _rows(lines: list[str]) -> list[list[str]]:
     rows: list[list[str]] = []
     inside = False
     for line in lines:
-        if not line.startswith("│"):
+        if "│" not in line:
             inside = False
             continue
-        first = line.split("│")[1].strip()
+        cells = line.split("│")
+        first = (cells[1] if line.startswith("│") else cells[0]).strip()  # a table with or without its edge
         if first or not inside:
             rows.append([line])
         else:
@@ -65,6 +66,7 @@ SWEEPS = [
     ("sweep", "compressor_damped_near_resonance.toml", "--speed", "100:600:6"),
     ("sweep", "vertical_compressor.toml", "--speed", "100:600:6"),
     ("sweep", "block_two_machines.toml", "--machine", "compressor", "--speed", "100:3000:5"),
+    ("sweep", "block_opposed_compressor.toml", "--speed", "100:3000:8"),  # two limits exceeded and a resonance
 ]
 
 
@@ -72,7 +74,7 @@ SWEEPS = [
 def test_a_sweep_row_takes_at_most_two_lines_at_80_columns(runner, on_terminal, args):
     """Before, the status column ("pass: resonances clear, governing 3ω = p1 at 72.4% (needs
     20%)") wrapped each row to 4 lines (frame_saw.toml) at 80 columns; now a compact status, the
-    full wording in a pipe (the same run's stdout here, unlimited width) and in the legend's pointer."""
+    full wording in a pipe (the same run's stdout here, unlimited width), as the legend says."""
     lines = on_terminal(*args)
     piped = _run(runner, *args)
     assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
@@ -80,9 +82,9 @@ def test_a_sweep_row_takes_at_most_two_lines_at_80_columns(runner, on_terminal, 
     assert len(rows) >= 5
     assert all(len(row) <= 2 for row in rows), [row for row in rows if len(row) > 2]
     legend = " ".join(lines[lines.index(next(line for line in lines if line.startswith("status: verdict"))):])
-    assert "In full: --json, --csv or a terminal" in " ".join(legend.split())
+    assert "Full words: --json, --csv or a " in " ".join(legend.split())
     assert "resonances clear, governing" in piped or "inside" in piped  # the full wording stays in a pipe
-    assert "In full:" not in piped
+    assert "Full words:" not in piped
 
 
 def test_a_sweep_in_a_pipe_keeps_its_full_status_on_one_line(runner):
@@ -94,14 +96,14 @@ def test_a_sweep_in_a_pipe_keeps_its_full_status_on_one_line(runner):
 
 
 def test_the_compact_status_keeps_every_cause_in_order():
-    """The compact status says what the full one says: the verdict, the governing condition with
-    its margin / the margin it needs, the limits exceeded."""
+    """The compact status says what the full one says: the verdict, the limits exceeded (u, v, a
+    and their RMS), the governing condition with its margin / the margin it needs."""
     from foundation_calc.checks.sweep_status import status_text
 
     assert status_text("fail", "motor: ω = mode 1 (y)", 0.309, 0.2, "clear", ["displacement", "velocity_rms"],
-                       compact=True) == "fail motor: ω=mode 1 (y) 30.9%/20%; over displacement, velocity_rms"
+                       compact=True) == "fail over u, v_rms; motor: ω=mode 1 (y) 30.9%/20%"
     assert status_text("fail", "3ω = p1", 0.157, 0.2, "fail", ["displacement"], compact=True) == \
-        "fail 3ω=p1 15.7%/20%; over displacement"
+        "fail over u; 3ω=p1 15.7%/20%"
     assert status_text("warn", "ω = p1", 0.05, 0.2, "warn", [], compact=True) == "warn ω=p1 5.0%/20%"
     assert status_text("resonant", None, 0.0, 0.0, "clear", [], compact=True) == "resonant"
 

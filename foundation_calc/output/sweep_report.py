@@ -66,13 +66,14 @@ def print_status_table(make_table, rows: list[dict], swept: str | None = None) -
         return
     compact = [status_text(row, True, swept) for row in rows]
     short = make_table("status", cells(compact))
+    short.show_edge = short.pad_edge = False  # four cells more for the words
     widen(short, -1, max(map(two_line_width, compact), default=0), out.width)  # two lines a row where the others let it
     out.print(short)
     own = f" ({escape(swept)}'s without its name)" if swept is not None else ""
     out.print(Hanging(
-        f"status: verdict, governing resonance condition{own} and its margin / the margin it needs"
-        " (docs/resonance-rule.md); over: the limits exceeded. In full: --json, --csv or a terminal"
-        f" {natural_width(table)} columns wide."
+        "status: verdict; over u, v, a: the displacement, velocity, acceleration (_rms: their RMS) over their limits;"
+        f" the governing resonance condition{own}, its margin/the margin it needs (docs/resonance-rule.md). Full"
+        f" words: --json, --csv or a {natural_width(table)}-column terminal."
     ))
 
 
