@@ -26,14 +26,22 @@ def _run(runner, *args: str) -> str:
 @pytest.fixture
 def on_terminal(runner, monkeypatch):
     """The lines of ``fcalc args`` as fcalc's own stdout console shows them on an 80-column
-    terminal (fitted tables, words kept whole): the sweeps' and the soil's modules print to it."""
-    from foundation_calc.output import console, soil, sweep_report
+    terminal (fitted tables, words kept whole): every output module prints to it (each imported
+    first, so that none keeps the test's console after it)."""
+    import importlib
+    import pkgutil
+
+    from foundation_calc import output
+    from foundation_calc.output import console
+
+    modules = [importlib.import_module(f"{output.__name__}.{m.name}") for m in pkgutil.iter_modules(output.__path__)]
+    printing = [m for m in modules if getattr(m, "stdout", None) is console.stdout]
 
     def run(*args: str) -> list[str]:
         term = console._console_class()(False, force_terminal=True, width=WIDTH, record=True, color_system=None,
                                         emoji=False)
         with monkeypatch.context() as patched:
-            for module in (console, soil, sweep_report):
+            for module in printing:
                 patched.setattr(module, "stdout", lambda: term)
             _run(runner, *args)
         return term.export_text().splitlines()
@@ -133,3 +141,12 @@ def test_fcalc_soil_s_prose_wraps_at_words_at_80_columns(runner, on_terminal, co
         paragraph = _paragraph(lines, start)
         assert len(paragraph) > 1 and cell_len(whole) > WIDTH, paragraph
         assert " ".join(paragraph).split() == whole.split()
+
+
+def test_a_table_whose_words_are_wider_than_80_columns_drops_its_frame(on_terminal):
+    """The limits table of ``fcalc amplitudes`` on compressor_vendor_loads.toml: its longest words
+    and numbers with the frame took 83 columns and ran past an 80-column terminal; without its
+    outer frame and edge padding it fits, its words whole."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    assert any(line.startswith("crankshaft") and "PASS" in line for line in lines)  # a row of the frameless table

@@ -104,12 +104,17 @@ def fit_columns(table, width: int) -> None:
     its longest word then pushes the table past the edge even where narrower columns could have
     given way. Here the columns' widths are levelled down to one cap C, the largest that fits
     (each column max(its longest word, min(its natural width, C))), so a table fits whenever its
-    words do. A table that fits as it is, or whose words alone are wider, is left alone.
+    words do. A table that fits as it is is left alone; one whose words alone are wider drops its
+    outer frame and the padding at its edges (four cells) first, and runs past the edge if its
+    words still do not fit.
     """
     columns = table.columns
     if not columns:
         return
     natural, floor, room = column_widths(table, width)
+    if sum(floor) > room and table.show_edge:
+        table.show_edge = table.pad_edge = False
+        natural, floor, room = column_widths(table, width)
     if sum(natural) <= room or sum(floor) > room:
         return
 
