@@ -6,6 +6,8 @@ made as on an 80-column terminal (small sweeps: a few seconds in all)."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from rich.cells import cell_len
 
@@ -150,3 +152,20 @@ def test_a_table_whose_words_are_wider_than_80_columns_drops_its_frame(on_termin
     lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
     assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
     assert any(line.startswith("crankshaft") and "PASS" in line for line in lines)  # a row of the frameless table
+
+
+def test_fcalc_validate_gives_each_case_two_or_three_lines_at_80_columns(on_terminal, runner):
+    """The validation record's table left its case column 17 cells at 80 columns, so a case took
+    up to 7 lines; now each case's words are a line over its numbers, each wrapped at words
+    under its start: at most 3 lines a case, none wider than 80. In a pipe it is the table."""
+    import re
+
+    lines = on_terminal("validate")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    starts = [i for i, line in enumerate(lines) if re.match(r" {0,2}\d{1,3}  \S", line)]
+    cases = len(json.loads(_run(runner, "validate", "--json"))["cases"])
+    assert [int(lines[i].split()[0]) for i in starts] == list(range(1, cases + 1))
+    ends = [*starts[1:], next(i for i, line in enumerate(lines) if line.endswith(" pass, 0 fail"))]
+    taken = [1 + len([line for line in lines[a + 1:b] if line.startswith(" " * 5)]) for a, b in zip(starts, ends)]  # headings apart
+    assert max(taken) <= 3, taken
+    assert "│" in _run(runner, "validate")  # a file or a pipe keeps the table

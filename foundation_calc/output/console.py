@@ -78,14 +78,20 @@ def two_line_width(text: str) -> int:
     return min(splits, default=cell_len(text))
 
 
+def column_room(table, index: int, width: int) -> int:
+    """The terminal cells a ``width`` console leaves column ``index`` of a rich ``table``, its
+    other columns wrapped down to their longest words (:func:`keep_words_whole`, called first)."""
+    keep_words_whole(table)
+    _, floor, room = column_widths(table, width)
+    return room - sum(floor) + floor[index]
+
+
 def widen(table, index: int, cells: int, width: int) -> None:
     """Give column ``index`` of a rich ``table`` at least ``cells`` terminal cells, as far as the
-    table still fits ``width`` with its other columns wrapped down to their longest words
-    (:func:`keep_words_whole`, called first): :func:`fit_columns` then narrows the others."""
-    keep_words_whole(table)
-    natural, floor, room = column_widths(table, width)
-    column = table.columns[index]
-    column.min_width = max(floor[index], min(cells, natural[index], room - (sum(floor) - floor[index])))
+    table still fits ``width`` (:func:`column_room`): :func:`fit_columns` then narrows the others."""
+    room = column_room(table, index, width)
+    natural, floor, _ = column_widths(table, width)
+    table.columns[index].min_width = max(floor[index], min(cells, natural[index], room))
 
 
 def fits(table, width: int) -> bool:
