@@ -169,3 +169,20 @@ def test_fcalc_validate_gives_each_case_two_or_three_lines_at_80_columns(on_term
     taken = [1 + len([line for line in lines[a + 1:b] if line.startswith(" " * 5)]) for a, b in zip(starts, ends)]  # headings apart
     assert max(taken) <= 3, taken
     assert "│" in _run(runner, "validate")  # a file or a pipe keeps the table
+
+
+def test_a_refused_option_hangs_under_error_on_a_terminal():
+    """``fcalc design --vary`` on a scene without a block: typer's usage error (exit 2) wrote its
+    230-character ``Error: ...`` line whole, and the terminal cut it inside words; now it wraps
+    under its text on a terminal and stays one line in a pipe (a real process on a pty)."""
+    from tests.test_message_width import _hangs, _on_terminal, _piped
+
+    args = ("design", str(CONFIGS / "frame_saw.toml"), "--vary", "block.length=3:8", "--points", "6")
+    piped = _piped(*args)
+    assert piped.returncode == 2
+    [line] = [line for line in piped.stderr.splitlines() if line.startswith("Error: ")]
+    assert line.startswith("Error: Invalid value for '--vary': ") and len(line) > 200
+    code, lines = _on_terminal(*args)
+    assert code == 2
+    assert lines[0].startswith("Usage: ") and lines[1].startswith("Try ")
+    _hangs(lines, "Error: ", len("Error: "), line)
