@@ -34,12 +34,15 @@ COMMANDS = {
 
 @pytest.fixture(scope="module")
 def terminal():
-    """The results console at :data:`WIDTH` columns, as on a terminal that wide."""
+    """The results console at :data:`WIDTH` columns, as on a terminal that wide (the messages'
+    console made meanwhile is dropped after, so that a later test's warnings are one line)."""
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(console, "UNLIMITED_WIDTH", WIDTH)
         console.stdout.cache_clear()
+        console.stderr.cache_clear()
         yield
     console.stdout.cache_clear()
+    console.stderr.cache_clear()
 
 
 def test_the_shipped_block_scenes_are_found():

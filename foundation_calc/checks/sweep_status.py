@@ -109,18 +109,45 @@ def row_verdicts(margins, verdict: Judgement, over_quantities: dict, resonant=No
                        over_quantities=over_quantities, status=status)
 
 
+#: The symbol of each limited quantity in a compact status: u, v, a and their RMS u_rms, v_rms, a_rms.
+SYMBOLS = {"displacement": "u", "velocity": "v", "acceleration": "a"}
+
+
+def symbol(quantity: str) -> str:
+    """A limited quantity's symbol (:data:`SYMBOLS`), peak or RMS.
+
+    >>> symbol("displacement"), symbol("acceleration_rms")
+    ('u', 'a_rms')
+    """
+    peak = quantity.removesuffix("_rms")
+    return SYMBOLS[peak] + quantity[len(peak):]
+
+
 def status_text(status: str, condition: str | None, margin: float, needed: float, resonance_status: str,
-                over_limits) -> str:
+                over_limits, compact: bool = False) -> str:
     """Why a row has its status, the failing causes first: the governing condition when the rule
     fails or warns there, every limit the row exceeds; then, when the rule is satisfied, the
     governing condition and its margin. ``condition``: the governing condition's label (None: no
     condition can decide); ``over_limits``: the limited quantities exceeded.
 
+    ``compact``: the same causes for a narrow terminal, without the words that a legend says once
+    under the table: the verdict, the limits exceeded by their symbols (:data:`SYMBOLS`), the
+    governing condition with no spaces about its "=" and its margin / the margin it needs (inside
+    its band when the first is the smaller; docs/sweep.md).
+
     >>> status_text("fail", "3ω = p1", 0.157, 0.2, "fail", ["displacement"])
     'fail: inside 3ω = p1 at 15.7% (needs 20%); over displacement limit'
     >>> status_text("fail", "motor: ω = mode 1 (y)", 0.309, 0.2, "clear", ["displacement", "velocity_rms"])
     'fail: over displacement, velocity_rms limit; resonances clear, governing motor: ω = mode 1 (y) at 30.9% (needs 20%)'
+    >>> status_text("fail", "3ω = p1", 0.309, 0.2, "clear", ["displacement", "velocity_rms"], compact=True)
+    'fail over u, v_rms; 3ω=p1 30.9%/20%'
+    >>> status_text("pass", "3ω = p1", 0.724, 0.2, "clear", [], compact=True)
+    'pass 3ω=p1 72.4%/20%'
     """
+    if compact:
+        causes = [f"over {', '.join(symbol(q) for q in over_limits)}"] if over_limits else []
+        causes += [] if condition is None else [f"{condition.replace(' = ', '=')} {margin:.1%}/{needed:.0%}"]
+        return " ".join([status, "; ".join(causes)]) if causes else status
     phrase = None if condition is None else condition_phrase(condition, margin, needed)
     causes = []
     if phrase is not None and resonance_status in ("warn", "fail"):
@@ -132,4 +159,4 @@ def status_text(status: str, condition: str | None, margin: float, needed: float
     return f"{status}: " + "; ".join(causes) if causes else status
 
 
-__all__ = ["STATUSES", "RowVerdicts", "over_limits", "row_verdicts", "status_text"]
+__all__ = ["STATUSES", "SYMBOLS", "RowVerdicts", "over_limits", "row_verdicts", "status_text", "symbol"]

@@ -24,6 +24,27 @@ from foundation_calc.errors import ExitCode, FcalcError, PhysicsError, SceneErro
 BROKEN_PIPE = 141
 
 
+class BadOption(typer.BadParameter):
+    """typer's usage error (exit 2) for an option's value that fcalc refuses: its usage, hint and
+    ``Error: ...`` as click writes them, through fcalc's message console, so that on a terminal
+    the error wraps at words under its text (``Error: `` hangs) and in a file or a pipe each line
+    stays whole (:class:`~foundation_calc.output.console.Hanging`)."""
+
+    def show(self, file=None) -> None:
+        import io
+
+        from rich.text import Text
+
+        from foundation_calc.output.console import Hanging, stderr
+
+        if file is not None:
+            super().show(file)
+            return
+        written = io.StringIO()
+        super().show(written)
+        stderr().print(Hanging(Text(written.getvalue().removesuffix("\n")), len("Error: ")))
+
+
 class Interrupted(BaseException):
     """SIGTERM (a CI runner cancelling the job) or SIGINT (Ctrl-C) arrived inside
     :func:`interruptible`; the command ends with exit code 128 + ``signum``."""
@@ -167,7 +188,7 @@ def reports_errors(command: Callable) -> Callable:
             except (typer.Exit, typer.Abort, typer.BadParameter, KeyboardInterrupt, BrokenPipeError):
                 raise  # typer prints a bad parameter as a usage error itself (exit 2)
             except UsageError as exc:  # an option's value (foundation_calc.api): typer's usage error
-                raise typer.BadParameter(str(exc), param_hint=exc.option or None) from None
+                raise BadOption(str(exc), param_hint=exc.option or None) from None
             except FcalcError as exc:
                 report_error(exc)
                 _print_error_document(command, args, kwargs, exc)

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
-from foundation_calc.output.sweep_report import STATUS_STYLE, csv_cell, csv_text, limits_document, status_text, verdict, verdict_cells
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt
+from foundation_calc.output.sweep_report import csv_cell, csv_text, limits_document, print_status_table, verdict, verdict_cells
 
 #: The largest values over G and the points a row gives, by key: (JSON/CSV name, SI unit in the CSV).
 VALUES = {"peak": ("peak", "m"), "velocity_peak": ("velocity_peak", "m_s"), "displacement_rms": ("displacement_rms", "m"),
@@ -58,16 +58,22 @@ def print_sweep(sweep, scene, source: str, units) -> None:
     from rich.table import Table
 
     amp, vel, speed = units.label("amplitude"), units.label("velocity"), units.label("speed")
-    table = Table(title=escape(f"{scene.name or source}: sweep of {sweep.machine}'s speed ({_others(sweep)}; largest over"
-                               f" G and the points): peak displacement x, y, z [{amp}], RMS velocity v [{vel}] (largest"
-                               " direction)"), title_justify="left")
-    for col in (speed, "x", "y", "z", "v", "status: governing resonance, margin; limits"):
-        table.add_column(escape(col), justify="left" if col.startswith("status") else "right")
-    for i, row in enumerate(_rows(sweep)):
-        table.add_row(fmt(units.convert("speed", row["omega"])), *(fmt(units.convert("amplitude", v), 4) for v in sweep.peak[i]),
-                      fmt(units.convert("velocity", float(sweep.velocity_rms[i].max())), 4),
-                      f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
-    stdout().print(table)
+    title = escape(f"{scene.name or source}: sweep of {sweep.machine}'s speed ({_others(sweep)}; largest over"
+                   f" G and the points): peak displacement x, y, z [{amp}], RMS velocity v [{vel}] (largest"
+                   " direction)")
+    rows = list(_rows(sweep))
+
+    def make_table(status_head: str, statuses: list[str]) -> Table:
+        table = Table(title=title, title_justify="left")
+        for col in (speed, "x", "y", "z", "v"):
+            table.add_column(escape(col), justify="right")
+        table.add_column(status_head)
+        for i, (row, status) in enumerate(zip(rows, statuses)):
+            table.add_row(fmt(units.convert("speed", row["omega"])), *(fmt(units.convert("amplitude", v), 4) for v in sweep.peak[i]),
+                          fmt(units.convert("velocity", float(sweep.velocity_rms[i].max())), 4), status)
+        return table
+
+    print_status_table(make_table, rows, sweep.machine)
 
 
 def _header() -> list[str]:

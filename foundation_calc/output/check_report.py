@@ -19,7 +19,7 @@ from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
 from foundation_calc.errors import NonFiniteError
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, json_text, stdout, with_version
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, column_room, json_text, stdout, with_version
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -93,15 +93,6 @@ def _check_table(title, rows, columns):
     return table
 
 
-def _reason_room(table, width: int) -> int:
-    """The cells a ``width`` console leaves the last column (the reasons) of ``table``."""
-    from foundation_calc.output.console import column_widths, keep_words_whole
-
-    keep_words_whole(table)
-    _, floor, room = column_widths(table, width)
-    return room - sum(floor[:-1])
-
-
 def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False, verbose: bool = False) -> None:
     """One line per scene and check (scene, check, verdict, reason), then the counts of scenes
     and of checks. An invalid scene shows its first problem (all of them with ``verbose``; they
@@ -128,7 +119,7 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
             rows.append((shown, run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", "\n".join(lines)))
     out = stdout()
     table = _check_table(Text(title), rows, ("scene", "check", "verdict", "reason"))
-    if _reason_room(table, out.width) >= REASON_WIDTH:
+    if column_room(table, -1, out.width) >= REASON_WIDTH:  # the reasons
         out.print(table)
     else:  # a narrow terminal: the scene's name over its own table leaves the reasons room
         out.print(Text(title))

@@ -59,6 +59,41 @@ def column_widths(table, width: int) -> tuple[list[int], list[int], int]:
     return natural, floor, width - table._extra_width - sum(table._get_padding_width(i) for i in range(len(columns)))
 
 
+def natural_width(table) -> int:
+    """The terminal cells a rich ``table`` takes with no column wrapped: its columns' natural
+    widths, borders and padding (a file's or a pipe's width, where nothing is squeezed)."""
+    natural, _, room = column_widths(table, 0)
+    return sum(natural) - room
+
+
+def two_line_width(text: str) -> int:
+    """The fewest terminal cells in which ``text`` wraps at its spaces into at most two lines.
+
+    >>> two_line_width("pass 3ω=p1 72.4%/20%"), two_line_width("fail")
+    (10, 4)
+    """
+    from rich.cells import cell_len
+
+    splits = (max(cell_len(text[:i]), cell_len(text[i + 1:])) for i, c in enumerate(text) if c == " ")
+    return min(splits, default=cell_len(text))
+
+
+def column_room(table, index: int, width: int) -> int:
+    """The terminal cells a ``width`` console leaves column ``index`` of a rich ``table``, its
+    other columns wrapped down to their longest words (:func:`keep_words_whole`, called first)."""
+    keep_words_whole(table)
+    _, floor, room = column_widths(table, width)
+    return room - sum(floor) + floor[index]
+
+
+def widen(table, index: int, cells: int, width: int) -> None:
+    """Give column ``index`` of a rich ``table`` at least ``cells`` terminal cells, as far as the
+    table still fits ``width`` (:func:`column_room`): :func:`fit_columns` then narrows the others."""
+    room = column_room(table, index, width)
+    natural, floor, _ = column_widths(table, width)
+    table.columns[index].min_width = max(floor[index], min(cells, natural[index], room))
+
+
 def fits(table, width: int) -> bool:
     """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
     at most down to their longest words)."""
@@ -75,12 +110,17 @@ def fit_columns(table, width: int) -> None:
     its longest word then pushes the table past the edge even where narrower columns could have
     given way. Here the columns' widths are levelled down to one cap C, the largest that fits
     (each column max(its longest word, min(its natural width, C))), so a table fits whenever its
-    words do. A table that fits as it is, or whose words alone are wider, is left alone.
+    words do. A table that fits as it is is left alone; one whose words alone are wider drops its
+    outer frame and the padding at its edges (four cells) first, and runs past the edge if its
+    words still do not fit.
     """
     columns = table.columns
     if not columns:
         return
     natural, floor, room = column_widths(table, width)
+    if sum(floor) > room and table.show_edge:
+        table.show_edge = table.pad_edge = False
+        natural, floor, room = column_widths(table, width)
     if sum(natural) <= room or sum(floor) > room:
         return
 

@@ -262,13 +262,14 @@ def _print_unevaluated(console, unevaluated: dict) -> None:
     """How many candidates could not be evaluated, by the kind of error, with an example of each."""
     from rich.markup import escape
 
+    from foundation_calc.output.console import Hanging
+
     if not unevaluated["count"]:
         return
     count = unevaluated["count"]
     console.print(f"[bold yellow]note[/]: {count} candidate{'s' * (count != 1)} could not be evaluated (left out of the search):")
     for row in unevaluated["errors"]:
-        console.print(f"  {row['error']} ({row['count']}), e.g. {_values_text(row['example'])} m: {escape(row['message'])}",
-                      soft_wrap=True)
+        console.print(Hanging(f"  {row['error']} ({row['count']}), e.g. {_values_text(row['example'])} m: {escape(row['message'])}"))
 
 
 def _print_pareto(console, document: dict, keys: list[str]) -> None:
@@ -311,7 +312,7 @@ def _short_names(keys: list[str]) -> list[str]:
 def _print_recheck(sizing: Sizing, document: dict) -> None:
     from rich.markup import escape
 
-    from foundation_calc.output.console import stderr, stdout
+    from foundation_calc.output.console import Hanging, stderr, stdout
 
     count = document["recheck"]["designs"]
     if not sizing.disagreements:
@@ -321,7 +322,7 @@ def _print_recheck(sizing: Sizing, document: dict) -> None:
                    f" check{'s' * (len(sizing.disagreements) != 1)} of {count} designs (a bug in fcalc: please report it"
                    " with the scene file):")
     for found in sizing.disagreements:
-        stderr().print(f"  {escape(found.text)}", soft_wrap=True)
+        stderr().print(Hanging(f"  {escape(found.text)}"))
 
 
 def plot_design(sizing: Sizing, path: str | Path) -> None:

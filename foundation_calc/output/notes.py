@@ -19,9 +19,9 @@ def print_soil_validity(validity) -> None:
         return
     from rich.text import Text
 
-    from foundation_calc.output.console import stdout
+    from foundation_calc.output.console import Hanging, stdout
 
-    stdout().print(Text(soil_validity_line(validity), style="yellow" if validity.warns else ""))
+    stdout().print(Hanging(Text(soil_validity_line(validity), style="yellow" if validity.warns else "")))
 
 
 def soil_validity_document(validity) -> dict | None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 from foundation_calc.checks.soil_methods import MethodResult, SoilComparison
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, Hanging, fmt, stdout
 from foundation_calc.units import hz_from_omega
 
 #: Rows of the table: (label, unit, attribute, scale from SI to the unit shown).
@@ -165,12 +165,12 @@ def print_heading(scene, source: str) -> None:
     out = stdout()
     f = scene.foundation
     L, B = f.dimensions
-    out.print(f"[bold]{escape(scene.name or source)}[/]", soft_wrap=True)
+    out.print(Hanging(f"[bold]{escape(scene.name or source)}[/]"))
     derived = "" if f.base_length is not None or f.block is not None else ", from S and I1"
-    out.print(
+    out.print(Hanging(
         f"base {fmt(L)} m × {fmt(B)} m{derived} (S = {fmt(f.base_area)} m², I1 = {fmt(f.base_second_moment)} m⁴,"
-        f" embedment {fmt(f.embedment or 0.0)} m), M_tot = {fmt(scene.total_mass, 7)} kg", soft_wrap=True,
-    )
+        f" embedment {fmt(f.embedment or 0.0)} m), M_tot = {fmt(scene.total_mass, 7)} kg"
+    ))
 
 
 def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
@@ -198,14 +198,14 @@ def print_soil_report(comparison: SoilComparison, scene, source: str) -> None:
         if r.dynamic:
             out.print(_dynamic_table(r))
     if any(r.static_frequencies for r in comparison.results):
-        out.print(
+        out.print(Hanging(
             "Frequencies of a frequency-dependent method solve ω = p(K(ω)), each mode on its springs at its own"
             " frequency; its damping ratios are taken at their mode's frequency. The other methods are"
-            " frequency-independent.", soft_wrap=True,
-        )
+            " frequency-independent."
+        ))
     print_section(section_of(scene))
     for text in comparison.findings:
-        out.print(f"[bold yellow]note[/]: {escape(text)}", soft_wrap=True)
+        out.print(Hanging(f"[bold yellow]note[/]: {escape(text)}", len("note: ")))
 
 
 #: Rows of the sample's table: (label, unit, key, scale from SI; None: rad/s to Hz).
@@ -257,7 +257,7 @@ def print_sample(drawn) -> None:
         table.add_row(label, unit, *(fmt(hz_from_omega(v) if scale is None else v * scale) for v in values))
     out.print(table)
     p = drawn.failure_probability
-    out.print(
+    out.print(Hanging(
         f"probability of failing: resonance {p['resonance']:.2%}, amplitudes {p['amplitudes']:.2%}, any check"
-        f" {p['any']:.2%} (tips over {p['tips_over']:.2%})", soft_wrap=True,
-    )
+        f" {p['any']:.2%} (tips over {p['tips_over']:.2%})"
+    ))

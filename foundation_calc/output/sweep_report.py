@@ -14,7 +14,8 @@ import numpy as np
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
 from foundation_calc.checks.resonance_rule import bands_text
 from foundation_calc.checks.sweep_status import status_text as row_status_text
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, stdout
+from foundation_calc.output.console import (JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, natural_width, stdout, two_line_width,
+                                            widen)
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
@@ -32,11 +33,48 @@ def method(report) -> str:
     return " + ".join(parts)
 
 
-def status_text(row: dict) -> str:
+#: The head of a sweep table's status column, its full wording (a file, a pipe, a wide terminal).
+STATUS_HEAD = "status: governing resonance, margin; limits"
+
+
+def status_text(row: dict, compact: bool = False, swept: str | None = None) -> str:
     """Why a point has its status (:func:`~foundation_calc.checks.sweep_status.status_text`, the
-    words of every kind's sweep), from a row of the document."""
-    return row_status_text(row["status"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
-                           row["over_limits"])
+    words of every kind's sweep), from a row of the document; ``compact``: the short form of a
+    narrow terminal, without the ``swept`` machine's name before its own conditions."""
+    condition = row["governing_condition"]
+    if compact and swept is not None and condition is not None:
+        condition = condition.removeprefix(f"{swept}: ")
+    return row_status_text(row["status"], condition, row["margin"], row["needed"], row["resonance_status"],
+                           row["over_limits"], compact)
+
+
+def print_status_table(make_table, rows: list[dict], swept: str | None = None) -> None:
+    """Print a sweep's table, built by ``make_table(status head, status cells)``, each row's status
+    in full where the table fits the console with no column wrapped (a file, a pipe, a wide
+    terminal: one line a row), else compact (:func:`status_text`) with a legend under the table,
+    so that a row takes one or two lines of an 80-column terminal (docs/sweep.md)."""
+    from rich.markup import escape
+
+    out = stdout()
+
+    def cells(texts: list[str]) -> list[str]:
+        return [f"[{STATUS_STYLE[row['status']]}]{escape(text)}[/]" for row, text in zip(rows, texts)]
+
+    table = make_table(STATUS_HEAD, cells([status_text(row) for row in rows]))
+    if natural_width(table) <= out.width:
+        out.print(table)
+        return
+    compact = [status_text(row, True, swept) for row in rows]
+    short = make_table("status", cells(compact))
+    short.show_edge = short.pad_edge = False  # four cells more for the words
+    widen(short, -1, max(map(two_line_width, compact), default=0), out.width)  # two lines a row where the others let it
+    out.print(short)
+    own = f" ({escape(swept)}'s without its name)" if swept is not None else ""
+    out.print(Hanging(
+        "status: verdict; over u, v, a: the displacement, velocity, acceleration (_rms: their RMS) over their limits;"
+        f" the governing resonance condition{own}, its margin/the margin it needs (docs/resonance-rule.md). Full"
+        f" words: --json, --csv or a {natural_width(table)}-column terminal."
+    ))
 
 
 def verdict_cells(report):
@@ -209,21 +247,10 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    out = stdout()
     speed_unit, amp_unit = units.label("speed"), units.label("amplitude")
-    title = f"{escape(name or scene_path)} — {method(report)}"
-    table = Table(title=title, title_justify="left")
-    if report.variable == "soil_factor":
-        table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
-    table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
-    for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
-        table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
-    for name in report.points:
-        table.add_column(escape(f"{name} peak h/v [{amp_unit}]"), justify="right")
-    if report.damped:
-        table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
-    table.add_column("status: governing resonance, margin; limits")
-    for row in _rows(report):
+    rows = list(_rows(report))
+    values = []
+    for row in rows:
         cells = [] if report.variable == "omega" else [fmt(row["soil_factor"], 4)]
         cells.append(fmt(units.convert("speed", row["omega"]), 6))
         if row["resonant"]:
@@ -238,9 +265,25 @@ def print_sweep(report, scene_path: str, name: str, units) -> None:
         if report.damped:
             h = row["harmonics"]
             cells.append("-" if h is None else f"{math.degrees(h['x1']['phase']):.1f} / {math.degrees(h['y1']['phase']):.1f}")
-        cells.append(f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
-        table.add_row(*cells)
-    out.print(table)
+        values.append(cells)
+
+    def make_table(status_head: str, statuses: list[str]) -> Table:
+        table = Table(title=f"{escape(name or scene_path)} — {method(report)}", title_justify="left")
+        if report.variable == "soil_factor":
+            table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
+        table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
+        for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
+            table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
+        for point in report.points:
+            table.add_column(escape(f"{point} peak h/v [{amp_unit}]"), justify="right")
+        if report.damped:
+            table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
+        table.add_column(status_head)
+        for cells, status in zip(values, statuses):
+            table.add_row(*cells, status)
+        return table
+
+    print_status_table(make_table, rows)
     _print_footer(report, units)
 
 
@@ -252,7 +295,7 @@ def _print_footer(report, units) -> None:
     out = stdout()
     speed_unit = units.label("speed")
     for key, why in not_applicable(report).items():
-        out.print(f"{key.replace('_', ' ')}: {escape(why)}", soft_wrap=True)
+        out.print(Hanging(f"{key.replace('_', ' ')}: {escape(why)}"))
     if report.critical:
         crit = Table(title="Critical speeds inside the sweep (zero-order / averaged-inertia operator)", title_justify="left")
         for col in ("condition", "source", "judged", f"zero-order [{speed_unit}]", f"averaged [{speed_unit}]"):
@@ -347,6 +390,7 @@ __all__ = [
     "plot_sweep",
     "plotted",
     "print_sweep",
+    "print_status_table",
     "print_sweep_summary",
     "sweep_csv",
     "sweep_document",

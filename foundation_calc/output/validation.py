@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, ROUNDOFF, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, ROUNDOFF, column_room, stdout, verdict_text
 from foundation_calc.validation.record import CaseResult, Value
 from foundation_calc.references import REFERENCES
 
@@ -93,11 +93,40 @@ def print_record(results: Sequence[CaseResult]) -> None:
         table.add_row(str(i), f"{escape(c.quantity)}, {escape(c.where)}", reference_text(r, "\n"),
                       value_text(r.value, scale(r), "\n"), difference_text(r), tolerance_text(r), verdict_text(verdict(r)))
     out = stdout()
-    out.print(table)
+    if column_room(table, 1, out.width) >= CASE_WIDTH:  # the case column
+        out.print(table)
+    else:
+        _print_cases(table.title, results)
     out.print(summary(results) + ("" if all(r.passed for r in results) else " (exit 1)"))
     out.print("\nSources:")
     for key in sources(results):
         out.print(f"  \\[{key}] {escape(REFERENCES[key])}")
+
+
+#: The fewest cells of a terminal line the table leaves its cases before each case takes two lines
+#: instead: its words over its numbers (:func:`_print_cases`).
+CASE_WIDTH = 40
+
+
+def _print_cases(title: str, results: Sequence[CaseResult]) -> None:
+    """The record on a terminal too narrow for its table (80 columns): each case's number and words
+    on one line, its reference, value (a row of values joined by "/"), difference, tolerance and
+    verdict on the next, indented, each wrapped at words under its start; the examples as headings."""
+    from rich.markup import escape
+
+    from foundation_calc.output.console import Hanging
+
+    out = stdout()
+    out.print(title)
+    example = None
+    for i, r in enumerate(results, 1):
+        c = r.case
+        if c.example != example:
+            example = c.example
+            out.print(Hanging(f"[bold]{escape(c.example)}[/] \\[{c.source}]"))
+        out.print(Hanging(f"{i:>3}  {escape(c.quantity)}, {escape(c.where)}", 5))
+        out.print(Hanging(f"     reference {escape(reference_text(r, '/'))}, fcalc {value_text(r.value, scale(r), '/')}, diff."
+                          f" {difference_text(r)}, tol. {tolerance_text(r)}: {verdict_text(verdict(r))}", 7))
 
 
 def _cell(text: str) -> str:

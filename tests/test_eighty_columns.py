@@ -1,0 +1,188 @@
+"""Every command reads well in an 80-column terminal: a sweep's row takes one or two lines (its
+status compact, a legend under the table), a soil's prose wraps at words under its own start, and
+no line is wider than the terminal. In a file or a pipe the output is as it was: each row one
+line with its status in full (scripts grep them). Run in-process on fcalc's own console class,
+made as on an 80-column terminal (small sweeps: a few seconds in all)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from rich.cells import cell_len
+
+from tests.conftest import CONFIGS
+
+WIDTH = 80
+
+
+def _run(runner, *args: str) -> str:
+    """stdout of ``fcalc args`` in a file or a pipe (CliRunner's stdout: unlimited width)."""
+    from foundation_calc.cli.app import app
+
+    result = runner.invoke(app, [str(CONFIGS / a) if a.endswith(".toml") else a for a in args])
+    assert result.exit_code in (0, 1), result.output
+    return result.stdout
+
+
+@pytest.fixture
+def on_terminal(runner, monkeypatch):
+    """The lines of ``fcalc args`` as fcalc's own stdout console shows them on an 80-column
+    terminal (fitted tables, words kept whole): every output module prints to it (each imported
+    first, so that none keeps the test's console after it)."""
+    import importlib
+    import pkgutil
+
+    from foundation_calc import output
+    from foundation_calc.output import console
+
+    modules = [importlib.import_module(f"{output.__name__}.{m.name}") for m in pkgutil.iter_modules(output.__path__)]
+    printing = [m for m in modules if getattr(m, "stdout", None) is console.stdout]
+
+    def run(*args: str) -> list[str]:
+        term = console._console_class()(False, force_terminal=True, width=WIDTH, record=True, color_system=None,
+                                        emoji=False)
+        with monkeypatch.context() as patched:
+            for module in printing:
+                patched.setattr(module, "stdout", lambda: term)
+            _run(runner, *args)
+        return term.export_text().splitlines()
+
+    return run
+
+
+def _rows(lines: list[str]) -> list[list[str]]:
+    """The body rows of the tables in ``lines``, each the terminal lines it takes: a row starts
+    where its first cell is not blank, its other lines leave that cell blank."""
+    rows: list[list[str]] = []
+    inside = False
+    for line in lines:
+        if "│" not in line:
+            inside = False
+            continue
+        cells = line.split("│")
+        first = (cells[1] if line.startswith("│") else cells[0]).strip()  # a table with or without its edge
+        if first or not inside:
+            rows.append([line])
+        else:
+            rows[-1].append(line)
+        inside = True
+    return rows
+
+
+SWEEPS = [
+    ("sweep", "frame_saw.toml", "--speed", "100:600:11"),
+    ("sweep", "frame_saw.toml", "--soil", "0.5:1.5:5"),
+    ("sweep", "compressor_damped_near_resonance.toml", "--speed", "100:600:6"),
+    ("sweep", "vertical_compressor.toml", "--speed", "100:600:6"),
+    ("sweep", "block_two_machines.toml", "--machine", "compressor", "--speed", "100:3000:5"),
+    ("sweep", "block_opposed_compressor.toml", "--speed", "100:3000:8"),  # two limits exceeded and a resonance
+]
+
+
+@pytest.mark.parametrize("args", SWEEPS, ids=" ".join)
+def test_a_sweep_row_takes_at_most_two_lines_at_80_columns(runner, on_terminal, args):
+    """Before, the status column ("pass: resonances clear, governing 3ω = p1 at 72.4% (needs
+    20%)") wrapped each row to 4 lines (frame_saw.toml) at 80 columns; now a compact status, the
+    full wording in a pipe (the same run's stdout here, unlimited width), as the legend says."""
+    lines = on_terminal(*args)
+    piped = _run(runner, *args)
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    rows = _rows(lines)
+    assert len(rows) >= 5
+    assert all(len(row) <= 2 for row in rows), [row for row in rows if len(row) > 2]
+    legend = " ".join(lines[lines.index(next(line for line in lines if line.startswith("status: verdict"))):])
+    assert "Full words: --json, --csv or a " in " ".join(legend.split())
+    assert "resonances clear, governing" in piped or "inside" in piped  # the full wording stays in a pipe
+    assert "Full words:" not in piped
+
+
+def test_a_sweep_in_a_pipe_keeps_its_full_status_on_one_line(runner):
+    """The same sweep through a pipe (unlimited width): one line a row, the status in its words."""
+    piped = _run(runner, "sweep", "frame_saw.toml", "--speed", "100:200:3").splitlines()
+    assert any(line.startswith("│         100 │") and "pass: resonances clear, governing 3ω = p1 at 72.4% (needs 20%)" in line
+               for line in piped), piped
+    assert all(len(row) == 1 for row in _rows(piped))
+
+
+def test_the_compact_status_keeps_every_cause_in_order():
+    """The compact status says what the full one says: the verdict, the limits exceeded (u, v, a
+    and their RMS), the governing condition with its margin / the margin it needs."""
+    from foundation_calc.checks.sweep_status import status_text
+
+    assert status_text("fail", "motor: ω = mode 1 (y)", 0.309, 0.2, "clear", ["displacement", "velocity_rms"],
+                       compact=True) == "fail over u, v_rms; motor: ω=mode 1 (y) 30.9%/20%"
+    assert status_text("fail", "3ω = p1", 0.157, 0.2, "fail", ["displacement"], compact=True) == \
+        "fail over u; 3ω=p1 15.7%/20%"
+    assert status_text("warn", "ω = p1", 0.05, 0.2, "warn", [], compact=True) == "warn ω=p1 5.0%/20%"
+    assert status_text("resonant", None, 0.0, 0.0, "clear", [], compact=True) == "resonant"
+
+
+def _paragraph(lines: list[str], start: str) -> list[str]:
+    first = next(i for i, line in enumerate(lines) if line.startswith(start))
+    rest = []
+    for line in lines[first + 1:]:
+        if not line.startswith("  ") or line.startswith("  │"):
+            break
+        rest.append(line)
+    return [lines[first], *rest]
+
+
+@pytest.mark.parametrize("config", ["compressor_medium_sand_lysmer.toml", "frame_saw.toml"])
+def test_fcalc_soil_s_prose_wraps_at_words_at_80_columns(runner, on_terminal, config):
+    """``fcalc soil`` of a crank scene on a footing printed its closing paragraph (200 characters)
+    and its notes as one line each, which the terminal cut inside words: now they wrap at words,
+    under their own text, and every line fits; in a pipe each stays one line."""
+    lines = on_terminal("soil", config)
+    piped = _run(runner, "soil", config).splitlines()
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    for start in ("Frequencies of a frequency-dependent method", "note: "):
+        if not any(line.startswith(start) for line in piped):
+            continue
+        [whole] = [line for line in piped if line.startswith(start)]
+        paragraph = _paragraph(lines, start)
+        assert len(paragraph) > 1 and cell_len(whole) > WIDTH, paragraph
+        assert " ".join(paragraph).split() == whole.split()
+
+
+def test_a_table_whose_words_are_wider_than_80_columns_drops_its_frame(on_terminal):
+    """The limits table of ``fcalc amplitudes`` on compressor_vendor_loads.toml: its longest words
+    and numbers with the frame took 83 columns and ran past an 80-column terminal; without its
+    outer frame and edge padding it fits, its words whole."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    assert any(line.startswith("crankshaft") and "PASS" in line for line in lines)  # a row of the frameless table
+
+
+def test_fcalc_validate_gives_each_case_two_or_three_lines_at_80_columns(on_terminal, runner):
+    """The validation record's table left its case column 17 cells at 80 columns, so a case took
+    up to 7 lines; now each case's words are a line over its numbers, each wrapped at words
+    under its start: at most 3 lines a case, none wider than 80. In a pipe it is the table."""
+    import re
+
+    lines = on_terminal("validate")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    starts = [i for i, line in enumerate(lines) if re.match(r" {0,2}\d{1,3}  \S", line)]
+    cases = len(json.loads(_run(runner, "validate", "--json"))["cases"])
+    assert [int(lines[i].split()[0]) for i in starts] == list(range(1, cases + 1))
+    ends = [*starts[1:], next(i for i, line in enumerate(lines) if line.endswith(" pass, 0 fail"))]
+    taken = [1 + len([line for line in lines[a + 1:b] if line.startswith(" " * 5)]) for a, b in zip(starts, ends)]  # headings apart
+    assert max(taken) <= 3, taken
+    assert "│" in _run(runner, "validate")  # a file or a pipe keeps the table
+
+
+def test_a_refused_option_hangs_under_error_on_a_terminal():
+    """``fcalc design --vary`` on a scene without a block: typer's usage error (exit 2) wrote its
+    230-character ``Error: ...`` line whole, and the terminal cut it inside words; now it wraps
+    under its text on a terminal and stays one line in a pipe (a real process on a pty)."""
+    from tests.test_message_width import _hangs, _on_terminal, _piped
+
+    args = ("design", str(CONFIGS / "frame_saw.toml"), "--vary", "block.length=3:8", "--points", "6")
+    piped = _piped(*args)
+    assert piped.returncode == 2
+    [line] = [line for line in piped.stderr.splitlines() if line.startswith("Error: ")]
+    assert line.startswith("Error: Invalid value for '--vary': ") and len(line) > 200
+    code, lines = _on_terminal(*args)
+    assert code == 2
+    assert lines[0].startswith("Usage: ") and lines[1].startswith("Try ")
+    _hangs(lines, "Error: ", len("Error: "), line)
