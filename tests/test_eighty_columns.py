@@ -77,6 +77,7 @@ SWEEPS = [
     ("sweep", "vertical_compressor.toml", "--speed", "100:600:6"),
     ("sweep", "block_two_machines.toml", "--machine", "compressor", "--speed", "100:3000:5"),
     ("sweep", "block_opposed_compressor.toml", "--speed", "100:3000:8"),  # two limits exceeded and a resonance
+    ("sweep", "block_two_machines.toml", "--soil", "0.5:2:5"),  # a block's soil sweep: the same status table
 ]
 
 

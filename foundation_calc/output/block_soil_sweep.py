@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.output.block_sweep import VALUES, plot_largest_peaks
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout
-from foundation_calc.output.sweep_report import STATUS_STYLE, csv_cell, csv_text, limits_document, status_text, verdict, verdict_cells
+from foundation_calc.output.block_sweep import VALUES, largest_values_table, plot_largest_peaks
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt
+from foundation_calc.output.sweep_report import csv_cell, csv_text, limits_document, print_status_table, verdict, verdict_cells
 
 #: What the factor scales, for titles and labels.
 FACTORED = "factor on the soil's stiffness data"
@@ -51,26 +51,17 @@ def sweep_document(sweep, scene, source: str, warnings=()) -> dict:
     }
 
 
-def _cell(units, quantity: str, value) -> str:
-    return "-" if np.isnan(value) else fmt(units.convert(quantity, float(value)), 4)
-
-
 def print_sweep(sweep, scene, source: str, units) -> None:
-    """The table of a block's soil sweep."""
+    """The table of a block's soil sweep, laid out as its speed sweep's
+    (:func:`~foundation_calc.output.block_sweep.largest_values_table`)."""
     from rich.markup import escape
-    from rich.table import Table
 
     amp, vel = units.label("amplitude"), units.label("velocity")
-    table = Table(title=escape(f"{scene.name or source}: sweep of the {FACTORED} (every machine at its own speed;"
-                               f" largest over G and the points): peak displacement x, y, z [{amp}], RMS velocity v"
-                               f" [{vel}] (largest direction)"), title_justify="left")
-    for col in ("factor", "x", "y", "z", "v", "status: governing resonance, margin; limits"):
-        table.add_column(escape(col), justify="left" if col.startswith("status") else "right")
-    for i, row in enumerate(_rows(sweep)):
-        table.add_row(fmt(row["soil_factor"]), *(_cell(units, "amplitude", v) for v in sweep.peak[i]),
-                      _cell(units, "velocity", np.max(sweep.velocity_rms[i])),
-                      f"[{STATUS_STYLE[row['status']]}]{escape(status_text(row))}[/]")
-    stdout().print(table)
+    title = escape(f"{scene.name or source}: sweep of the {FACTORED} (every machine at its own speed;"
+                   f" largest over G and the points): peak displacement x, y, z [{amp}], RMS velocity v"
+                   f" [{vel}] (largest direction)")
+    rows = list(_rows(sweep))
+    print_status_table(largest_values_table(title, "factor", [fmt(row["soil_factor"]) for row in rows], sweep, units), rows)
 
 
 def sweep_csv(sweep) -> str:

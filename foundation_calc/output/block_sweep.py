@@ -55,25 +55,38 @@ def sweep_document(sweep, scene, source: str, warnings=()) -> dict:
 def print_sweep(sweep, scene, source: str, units) -> None:
     """The table of a block sweep."""
     from rich.markup import escape
-    from rich.table import Table
 
     amp, vel, speed = units.label("amplitude"), units.label("velocity"), units.label("speed")
     title = escape(f"{scene.name or source}: sweep of {sweep.machine}'s speed ({_others(sweep)}; largest over"
                    f" G and the points): peak displacement x, y, z [{amp}], RMS velocity v [{vel}] (largest"
                    " direction)")
     rows = list(_rows(sweep))
+    speeds = [fmt(units.convert("speed", row["omega"])) for row in rows]
+    print_status_table(largest_values_table(title, speed, speeds, sweep, units), rows, sweep.machine)
+
+
+def largest_values_table(title: str, head: str, swept: list[str], sweep, units):
+    """``make_table(status head, status cells)`` of a block's sweep
+    (:func:`~foundation_calc.output.sweep_report.print_status_table`): a row per value of the swept
+    variable (``head``, its cells ``swept``), the largest peaks x, y, z and RMS velocity over G and
+    the points in ``units`` ("-" where a row is resonant), then the status."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    def cell(quantity: str, value) -> str:
+        return "-" if np.isnan(value) else fmt(units.convert(quantity, float(value)), 4)
 
     def make_table(status_head: str, statuses: list[str]) -> Table:
         table = Table(title=title, title_justify="left")
-        for col in (speed, "x", "y", "z", "v"):
+        for col in (head, "x", "y", "z", "v"):
             table.add_column(escape(col), justify="right")
         table.add_column(status_head)
-        for i, (row, status) in enumerate(zip(rows, statuses)):
-            table.add_row(fmt(units.convert("speed", row["omega"])), *(fmt(units.convert("amplitude", v), 4) for v in sweep.peak[i]),
-                          fmt(units.convert("velocity", float(sweep.velocity_rms[i].max())), 4), status)
+        for i, (first, status) in enumerate(zip(swept, statuses)):
+            table.add_row(first, *(cell("amplitude", v) for v in sweep.peak[i]),
+                          cell("velocity", np.max(sweep.velocity_rms[i])), status)
         return table
 
-    print_status_table(make_table, rows, sweep.machine)
+    return make_table
 
 
 def _header() -> list[str]:
@@ -138,4 +151,4 @@ def plot_largest_peaks(sweep, xs, path, units, marks, operating, xlabel: str, he
     save(fig, path)
 
 
-__all__ = ["plot_largest_peaks", "plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
+__all__ = ["largest_values_table", "plot_largest_peaks", "plot_sweep", "print_sweep", "sweep_csv", "sweep_document"]
