@@ -43,14 +43,14 @@ def design_frequencies(design: CrankDesign) -> tuple[NaturalFrequencies, Natural
     support coupling u_x with θ_y (a pile group) the closed forms do not apply: both are the one
     model's eigen-solve in the plane (:func:`~foundation_calc.solvers.crank.averaged.plane_frequencies`,
     one design)."""
+    at_rest = not np.any(np.asarray(design.soil_frequency) != 0.0)  # stability is judged on static springs only
     if design.coupled:
         from foundation_calc.solvers.crank.averaged import plane_frequencies
 
-        found = plane_frequencies(design)
+        found = plane_frequencies(design, at_rest)
         return found, found
     d, rod = design, design.rod
     soil_args = (d.M_tot, d.I_c, d.h, d.S, d.I1, d.c, d.c1, d.c_phi, d.g)
-    at_rest = not np.any(np.asarray(d.soil_frequency) != 0.0)  # stability is judged on static springs only
     zero = zero_order_frequencies(*soil_args, at_rest=at_rest)
     averaged = averaged_inertia_frequencies(*soil_args, rod.m, d.a, d.r, d.l, rod.l1, rod.rho, at_rest=at_rest)
     return zero, averaged

@@ -139,17 +139,17 @@ def candidate_frequencies(designs: CandidateDesigns, mechanism):
                                             "nan") for which in (0, 1))
     M_m, _, K_m = mechanism[:3]
 
-    def modes(design):
+    def modes(design, at_rest=True):
         M, _, K = block_matrices(design)
-        return M_m + M, natural_modes(M_m + M, K_m + K)
+        return M_m + M, natural_modes(M_m + M, K_m + K, at_rest)
 
     M, (natural, shapes) = modes(static_design)
     static = NaturalFrequencies(*np.moveaxis(np.take_along_axis(natural, mode_order(M, shapes), -1), -1, 0))
     if designs.support.frequency_dependent:
         ranked = by_static_rank(static)
 
-        def at(w):
-            return ranked(NaturalFrequencies(*np.moveaxis(modes(designs.at(w))[1][0], -1, 0)))
+        def at(w):  # the springs at ω: a mode with p² < 0 there is 0, no root (natural_modes)
+            return ranked(NaturalFrequencies(*np.moveaxis(modes(designs.at(w), at_rest=False)[1][0], -1, 0)))
 
         static = consistent_frequencies(static, at, "nan")
     return static, static

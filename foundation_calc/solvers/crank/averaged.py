@@ -134,15 +134,32 @@ def base_dashpot_matrix(design: CrankDesign) -> np.ndarray:
     )
 
 
-def natural_modes(M, K) -> tuple[np.ndarray, np.ndarray]:
+def natural_modes(M, K, at_rest: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """Ascending natural frequencies [rad/s] of (K, M) and their mode shapes (columns), for one
-    (3, 3) pair or stacks (..., 3, 3); a singular M gives frequencies 0 and unit shapes."""
+    (3, 3) pair or stacks (..., 3, 3); a singular M gives frequencies 0 and unit shapes.
+
+    ``at_rest``: the springs are static (the default): the frequencies are sqrt|λ| of the
+    eigenvalues λ of M⁻¹K, ascending. False for a frequency-dependent support's springs at a
+    frequency ω ≠ 0, the real part of an impedance, which may make K indefinite (a pile group's
+    K_z at ω): the modes are then ranked by the signed λ and a mode with λ < 0 is 0. Its
+    frequency there is imaginary: the springs at ω are softer than the inertia and there is no free
+    vibration at ω, so it is no root of ω = p(K(ω)); sqrt|λ| would report a real frequency that
+    does not exist and let the root search take a spurious crossing. With 0, p(ω) - ω = -ω < 0
+    there; p(ω) stays continuous in ω (λ passes through 0) and its roots ω > 0 are those of the
+    signed sqrt(λ), while the root search's first bracket end p(p_s) stays a frequency >= 0,
+    where the springs are defined; the closed forms take a tipping determinant the same way
+    (:func:`~foundation_calc.solvers.crank.frequencies.zero_order_frequencies` with ``at_rest``
+    False), and the block's modes a negative p² (:func:`~foundation_calc.solvers.block.response.batch_modes`).
+    The rank by the signed λ is the one under which each λ_j(ω) is continuous in ω (by |λ| a mode
+    whose λ crosses 0 would trade ranks with the others)."""
     try:
         squared, shapes = np.linalg.eig(np.linalg.solve(M, K))
     except np.linalg.LinAlgError:
         squared, shapes = np.zeros(np.shape(M)[:-1]), np.broadcast_to(np.eye(3), np.shape(M))
-    order = np.argsort(np.abs(squared.real), axis=-1)
-    natural = np.sqrt(np.abs(np.take_along_axis(squared.real, order, axis=-1)))
+    squared = squared.real
+    order = np.argsort(np.abs(squared) if at_rest else squared, axis=-1)
+    squared = np.take_along_axis(squared, order, axis=-1)
+    natural = np.sqrt(np.abs(squared) if at_rest else np.maximum(squared, 0.0))
     return natural, np.take_along_axis(shapes.real, order[..., None, :], axis=-1)
 
 
@@ -158,12 +175,15 @@ def mode_order(M, shapes) -> np.ndarray:
     return _ORDERS[np.argmax(vertical, axis=-1)]
 
 
-def _modes(M, K) -> tuple[np.ndarray, np.ndarray]:
+def _modes(M, K, at_rest: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """:func:`natural_modes` of one design, or :class:`PhysicsError` when double precision cannot
     resolve them (a singular mass matrix, or frequencies more than
-    1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is round-off)."""
-    natural, shapes = natural_modes(M, K)
-    if not np.all(np.isfinite(natural)) or natural[0] <= RESOLVED_FREQUENCY_RATIO * natural[-1]:
+    1/:data:`RESOLVED_FREQUENCY_RATIO` apart, where the smallest is round-off). On springs at a
+    frequency (``at_rest`` False) the modes without a positive frequency there (0) are left out of
+    that comparison: their 0 is no round-off."""
+    natural, shapes = natural_modes(M, K, at_rest)
+    resolved = natural if at_rest else natural[natural > 0.0]
+    if not np.all(np.isfinite(natural)) or (resolved.size and resolved[0] <= RESOLVED_FREQUENCY_RATIO * resolved[-1]):
         raise PhysicsError(
             f"the natural frequencies of the averaged operator ({', '.join(f'{w:.3g}' for w in natural)} rad/s)"
             f" span more than {1 / RESOLVED_FREQUENCY_RATIO:.0e}: outside the range double precision resolves;"
@@ -245,18 +265,19 @@ def averaged_operator(design: CrankDesign) -> tuple[np.ndarray, ...]:
     return (M + drive[0], C + s.D.mean(axis=0) + drive[1], K + drive[2], fc + drive[3], fs + drive[4])
 
 
-def plane_frequencies(design: CrankDesign) -> NaturalFrequencies:
+def plane_frequencies(design: CrankDesign, at_rest: bool = True) -> NaturalFrequencies:
     """k0, p1, p2 [rad/s] of the one model in the plane: the eigen-solve of :func:`averaged_operator`'s
     M̄, K̄ (the support's coupling K_xφ included), each mode named by its dominant motion as the
     closed forms name them (:func:`mode_order`: k0 the most vertical, p1 < p2 the others). The
     frequencies of a coupled support (a pile group), where (4.5)-(4.7) do not apply; on an
     uncoupled one they are :func:`~foundation_calc.solvers.crank.frequencies.averaged_inertia_frequencies`'
     to round-off. A dynamic pile group's springs at a frequency past its interaction peaks may make a
-    K̄ indefinite: a mode's |p²| then stands for it, as :func:`natural_modes` takes it (the static
+    K̄ indefinite: with ``at_rest`` False (the springs at ω ≠ 0, the root search ω = p(K(ω))) a mode
+    with p² < 0 there is 0, as :func:`natural_modes` takes it, no real frequency (the static
     stability is the scene's :meth:`~foundation_calc.scenes.crank.CrankScene.require_stable_rocking`).
     """
     M, _, K, _, _ = averaged_operator(design)
-    natural, shapes = _modes(M, K)
+    natural, shapes = _modes(M, K, at_rest)
     k0, p1, p2 = natural[mode_order(M, shapes)]
     return NaturalFrequencies(k0=float(k0), p1=float(p1), p2=float(p2))
 
