@@ -187,3 +187,77 @@ def test_a_refused_option_hangs_under_error_on_a_terminal():
     assert code == 2
     assert lines[0].startswith("Usage: ") and lines[1].startswith("Try ")
     _hangs(lines, "Error: ", len("Error: "), line)
+
+
+def _segment(lines: list[str], title: str) -> list[str]:
+    """The lines of the table titled ``title`` (its title, head and body) among ``lines``."""
+    first = next(i for i, line in enumerate(lines) if line.strip().startswith(title))  # a title left or centred
+    end = next((i for i in range(first + 1, len(lines)) if "│" not in lines[i] and "┃" not in lines[i]
+                and "━" not in lines[i] and "┏" not in lines[i]), len(lines))
+    return lines[first:end]
+
+
+CHECKED = ("frame_saw.toml", "crank_press.toml", "block_on_piles.toml")  # a fail, an office row of 300 characters
+
+
+def test_fcalc_check_gives_each_reason_the_terminal_s_width(runner, on_terminal):
+    """``fcalc check`` at 80 columns put the reasons (150-300 characters) in a 30-cell column, 4-8
+    lines a row; now, where a reason would take more than two lines of its column, each row is a
+    line (scene, check, verdict) and its reason follows, whole, across the terminal's width: at
+    most 1 + ⌈reason / 72⌉ lines a row (72: the 80 cells less the hanging indent of 6 and 2 for
+    a line broken at a word), every word of the reason in order. In a pipe: the table."""
+    lines = on_terminal("check", "--jobs", "1", *CHECKED)
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    document = json.loads(_run(runner, "check", "--jobs", "1", "--json", *CHECKED))
+    rows = [(entry["source"].rsplit("/", 1)[-1], c["check"], c["reason"]) for entry in document["scenes"] for c in entry["checks"]]
+    bound = [1 + -(-cell_len(reason) // 72) for *_, reason in rows]
+    assert len(lines) <= 3 + sum(bound), (len(lines), 3 + sum(bound))  # a title, a head, the rows, the counts
+    starts = [next(i for i, line in enumerate(lines) if line.replace("│", " ").split()[:2] == [scene, check])
+              for scene, check, _ in rows]
+    ends = [*starts[1:], next(i for i, line in enumerate(lines) if " scenes: " in line)]
+    for (scene, check, reason), most, a, b in zip(rows, bound, starts, ends):
+        assert b - a <= most, (scene, check, lines[a:b])
+        assert " ".join(lines[a + 1:b]).split() == reason.split(), (scene, check, lines[a:b])
+    piped = _run(runner, "check", "--jobs", "1", *CHECKED)
+    assert all(len(row) == 1 for row in _rows(piped.splitlines()))  # a file or a pipe: the table, a line a row
+
+
+@pytest.mark.parametrize("config", ["block_on_piles.toml", "block_fan_torsion_near_speed.toml"])
+def test_fcalc_amplitudes_office_rows_take_at_most_two_lines(runner, on_terminal, config):
+    """The office checks' rows (eccentricity, bearing pressure, mass ratio) took 3-4 lines at 80
+    columns beside a source column; now the sources are a line under the table, each named once
+    with its checks, and a row takes one or two lines. In a pipe: the table with its sources."""
+    lines = on_terminal("amplitudes", config)
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    office = _rows(_segment(lines, "Office checks"))
+    assert len(office) >= 3 and all(len(row) <= 2 for row in office), office
+    sources = " ".join(_paragraph(lines, "sources: ")).split()
+    assert " ".join(sources).count("ACI 351.3R-18, ch. 3 (rules of thumb)") == 1
+    assert "eccentricity x, eccentricity y," in " ".join(sources)
+    piped = _run(runner, "amplitudes", config)
+    assert "sources: " not in piped and "│ ACI 351.3R-18, ch. 3 (rules of thumb) │" in piped
+
+
+def test_fcalc_runup_point_column_takes_at_most_three_lines(on_terminal):
+    """The "peak of each passage" table's point column wrapped "block top edge, cylinder end" to
+    5 lines at 80 columns; now the table drops its frame and the point takes at most 3, the mode
+    ("1 (p1)") whole on its line (a 2 s run-up: a second or two)."""
+    import re
+
+    lines = on_terminal("runup", "compressor_vendor_loads.toml", "--time", "2")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    peaks = _rows(_segment(lines, "Start-up: peak of each passage"))
+    assert peaks and all(len(row) <= 3 for row in peaks), peaks
+    points = [" ".join(" ".join(line.split("│")[-1] for line in row).split()) for row in peaks]
+    assert set(points) == {"C", "block top edge, cylinder end"}, points  # words whole, in order
+    assert all(re.fullmatch(r"\d \([a-z]\d\)", row[0].split("│")[0].strip()) for row in peaks), peaks  # e.g. 1 (p1)
+
+
+def test_fcalc_design_pareto_rows_take_at_most_three_lines(on_terminal):
+    """The Pareto set of a block with three sizes varied left "governed by" 17 cells at 80 columns:
+    a row took up to 5 lines; now the numbers' headers wrap and a row takes at most 3."""
+    lines = on_terminal("design", "block_two_throw_compressor.toml", "--vary", "block.length=4:8", "--vary",
+                        "block.width=3:7", "--vary", "block.height=1:4", "--points", "3")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    pareto = _rows(_segment(lines, "Pareto set"))
+    assert len(pareto) >= 3 and all(len(row) <= 3 for row in pareto), pareto

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS, BlockReport
-from foundation_calc.output.console import fmt, fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import Hanging, fmt, fmt_scaled, natural_width, stdout, two_lines_for, verdict_text
 from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.limits import ALL_POINTS_UP_TO, code_document, limits_document, limits_table, zones_table
@@ -176,13 +176,31 @@ def print_amplitudes(report: BlockReport, scene, source: str, units: DisplayUnit
 
 
 def print_office(report: BlockReport, strict: bool = False) -> None:
-    """The office checks' table, for information: ``fcalc check`` judges them."""
+    """The office checks' table, for information: ``fcalc check`` judges them. Where the table
+    does not fit the console with no column wrapped (a narrow terminal), the sources leave it for
+    a line under it, each named once with its checks, and a result takes one or two lines."""
     from rich.markup import escape
 
-    t = _table("Office checks, for information: fcalc check judges them", ("check", "result", "source", "verdict"))
+    out = stdout()
+
+    def table(sources: bool):
+        t = _table("Office checks, for information: fcalc check judges them",
+                   ("check", "result", *(("source",) if sources else ()), "verdict"))
+        for o in report.office:
+            t.add_row(o.name, escape(o.text), *((escape(o.source),) if sources else ()), verdict_text(o.outcome.value, strict))
+        return t
+
+    whole = table(sources=True)
+    if natural_width(whole) <= out.width:  # a file, a pipe, a wide terminal
+        out.print(whole)
+        return
+    narrow = table(sources=False)
+    two_lines_for(narrow, 1, [o.text for o in report.office], out.width)
+    sources = {}
     for o in report.office:
-        t.add_row(o.name, escape(o.text), escape(o.source), verdict_text(o.outcome.value, strict))
-    stdout().print(t)
+        sources.setdefault(o.source, []).append(o.name)
+    out.print(narrow, Hanging(escape("sources: " + "; ".join(f"{', '.join(names)}: {source}" for source, names in sources.items())),
+                              len("sources: ")))
 
 
 __all__ = ["COMBINATION", "amplitudes_document", "office_document", "print_amplitudes"]

@@ -19,7 +19,8 @@ from pathlib import Path, PurePath
 
 from foundation_calc.checks.batch import CheckRun, SceneRun, exit_code
 from foundation_calc.errors import NonFiniteError
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, column_room, json_text, stdout, with_version
+from foundation_calc.output.console import (JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, column_room, json_text, stdout,
+                                            two_line_width, with_version)
 from foundation_calc.output.display_units import CONVERSIONS, DisplayUnits
 from foundation_calc.output.files import write_atomically
 
@@ -75,9 +76,9 @@ def _common_folder(sources: list[str]) -> str:
     return common if all(f == common or f.startswith(common + os.sep) for f in folders) else ""
 
 
-#: The narrowest reason column [terminal cells] beside the scene column; on a terminal that leaves
-#: less, each scene gets a table of its own under its name.
-REASON_WIDTH = 30
+#: Where a reason starts under its row on a narrow terminal [terminal cells]; its wrapped lines
+#: hang two cells further in (:class:`~foundation_calc.output.console.Hanging`).
+REASON_INDENT = 4
 
 
 def _check_table(title, rows, columns):
@@ -93,13 +94,43 @@ def _check_table(title, rows, columns):
     return table
 
 
+def reasons_fit(table, reasons: list[str], width: int) -> bool:
+    """Whether the reason column (the last) of a check ``table`` on a ``width`` console leaves
+    every line of every reason at most two lines (:func:`~foundation_calc.output.console.two_line_width`)."""
+    room = column_room(table, -1, width)
+    return all(two_line_width(line) <= room for reason in reasons for line in reason.splitlines())
+
+
+def reasons_under_rows(rows) -> list:
+    """The check rows of a narrow terminal: scene, check and verdict aligned on one line, the
+    reason under it, ``REASON_INDENT`` cells in, wrapped at words across the terminal's width."""
+    from rich.cells import cell_len
+    from rich.text import Text
+
+    heads = ("scene", "check", "verdict")
+    cells = [(Text(row[0]), Text(row[1]), Text.from_markup(row[2])) for row in rows]
+    widths = [max(cell_len(text.plain) for text in column) for column in zip(map(Text, heads), *cells)]
+
+    def line(texts) -> Text:
+        joined = Text("  ").join(text + " " * (w - cell_len(text.plain)) for text, w in zip(texts, widths))
+        joined.rstrip()
+        return joined
+
+    shown = [Hanging(line([Text(head, style="bold") for head in heads]))]
+    for texts, row in zip(cells, rows):
+        reason = "\n".join(" " * REASON_INDENT + part for part in row[3].splitlines())
+        shown += [Hanging(line(texts)), *([Hanging(Text(reason))] if reason else [])]
+    return shown
+
+
 def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool = False, verbose: bool = False) -> None:
     """One line per scene and check (scene, check, verdict, reason), then the counts of scenes
     and of checks. An invalid scene shows its first problem (all of them with ``verbose``; they
-    are also on stderr, in the JSON document and in JUnit); ``verbose`` adds each check's details."""
+    are also on stderr, in the JSON document and in JUnit); ``verbose`` adds each check's details.
+    On a terminal where the reason column would wrap a reason to more than two lines, each
+    reason is printed whole under its row instead (:func:`reasons_under_rows`; docs/ci.md)."""
     import os
 
-    from rich.table import Table
     from rich.text import Text
 
     checked = [scene for scene in scenes if not scene.skipped]
@@ -119,13 +150,10 @@ def print_check_table(scenes: list[SceneRun], units: DisplayUnits, strict: bool 
             rows.append((shown, run.check, f"[{_VERDICT_STYLE[verdict]}]{verdict.upper()}[/]", "\n".join(lines)))
     out = stdout()
     table = _check_table(Text(title), rows, ("scene", "check", "verdict", "reason"))
-    if column_room(table, -1, out.width) >= REASON_WIDTH:  # the reasons
+    if reasons_fit(table, [row[3] for row in rows], out.width):  # a file, a pipe, a wide terminal
         out.print(table)
-    else:  # a narrow terminal: the scene's name over its own table leaves the reasons room
-        out.print(Text(title))
-        for shown in dict.fromkeys(row[0] for row in rows):
-            out.print(_check_table(Text(shown, style="bold"), [row[1:] for row in rows if row[0] == shown],
-                                   ("check", "verdict", "reason")))
+    else:
+        out.print(Text(title), *reasons_under_rows(rows))
     skipped = [f"{scene.source} ({scene.skip_note})" for scene in scenes if scene.skipped]
     if skipped:
         out.print(Hanging(Text("skipped: " + ", ".join(skipped)), len("skipped: ")))

@@ -94,6 +94,15 @@ def widen(table, index: int, cells: int, width: int) -> None:
     table.columns[index].min_width = max(floor[index], min(cells, natural[index], room))
 
 
+def two_lines_for(table, index: int, texts, width: int) -> None:
+    """Fit a rich ``table`` too wide for a ``width`` console so that column ``index`` (whose cells
+    are ``texts``, plain) takes at most two lines a row where the other columns let it: the table
+    drops its outer frame and edge padding (four cells more for the words) and the column gets the
+    width of its longest text wrapped in two (:func:`two_line_width`, :func:`widen`)."""
+    table.show_edge = table.pad_edge = False
+    widen(table, index, max(map(two_line_width, texts), default=0), width)
+
+
 def fits(table, width: int) -> bool:
     """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
     at most down to their longest words)."""

@@ -8,7 +8,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from foundation_calc.checks.runup import TOGETHER, RunupReport, run_title
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, stdout, verdict_text
+from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, natural_width, stdout, two_lines_for, verdict_text
 from foundation_calc.units import speed_triplet
 
 if TYPE_CHECKING:  # the solver imports scipy: not before a run is computed
@@ -189,7 +189,11 @@ def print_runup_report(report: RunupReport, scene, source: str) -> None:
         out.print(f"Operating speed ω = {fmt(report.omega, 6)} rad/s")
     for key, r in report.runs.items():
         if r.passages:
-            out.print(*_passages_tables(key, r, report.points))
+            passages, peaks = _passages_tables(key, r, report.points)
+            if natural_width(peaks) > out.width:  # a narrow terminal: the mode whole, a point's name in two or three lines
+                peaks.columns[0].no_wrap = True
+                two_lines_for(peaks, -1, [report.points[p.point] for p in r.passages], out.width)
+            out.print(passages, peaks)
         else:
             out.print(f"{run_title(key).capitalize()} in {fmt(r.duration)} s passes no resonance that the loads drive.")
     if any(r.passages for r in report.runs.values()):  # what the passages' columns mean

@@ -14,8 +14,8 @@ import numpy as np
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
 from foundation_calc.checks.resonance_rule import bands_text
 from foundation_calc.checks.sweep_status import status_text as row_status_text
-from foundation_calc.output.console import (JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, natural_width, stdout, two_line_width,
-                                            widen)
+from foundation_calc.output.console import (JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, natural_width, stdout,
+                                            two_lines_for)
 from foundation_calc.units import hz_from_omega, rpm_from_omega
 
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
@@ -66,8 +66,7 @@ def print_status_table(make_table, rows: list[dict], swept: str | None = None) -
         return
     compact = [status_text(row, True, swept) for row in rows]
     short = make_table("status", cells(compact))
-    short.show_edge = short.pad_edge = False  # four cells more for the words
-    widen(short, -1, max(map(two_line_width, compact), default=0), out.width)  # two lines a row where the others let it
+    two_lines_for(short, -1, compact, out.width)
     out.print(short)
     own = f" ({escape(swept)}'s without its name)" if swept is not None else ""
     out.print(Hanging(
