@@ -13,7 +13,10 @@ Distributions (independent):
 
 A frequency-dependent soil (Gazetas) is sampled as the checks take it: the factor scales G (so
 V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (a bracketed root,
-the whole array at once), and each harmonic n of the response takes the springs at n ω.
+the whole array at once), and each harmonic n of the response takes the springs at n ω; a sample
+stands or tips over on its springs at rest, and where its rocking spring at one of the first
+approximation's harmonics does not exceed P h the first approximation steps aside for the
+averaged operator (:func:`_dependent_motion`), as ``fcalc amplitudes`` judges that soil.
 The sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
 
 Per sample: k0, p1, p2 (the paper's operator), the margin of the speed from the nearest of the

@@ -64,7 +64,8 @@ def sweep(
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
     Every point is computed in vectorised chunks of the corrected first approximation (on a pile
-    group, which couples sway with rocking, of the averaged operator, the support at each
+    group, which couples sway with rocking, and at the speeds where a frequency-dependent soil's
+    rocking spring at a harmonic falls to P h, of the averaged operator, the support at each
     harmonic's frequency, as amplitudes solves it there); each row
     shows the peaks of x, y (of C), θ and of the scene's [[points]] and a status that says why:
     the resonance condition that governs there (docs/resonance-rule.md) with its margin,
