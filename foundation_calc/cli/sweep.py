@@ -121,6 +121,7 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
     """Write a long sweep of a crank ``scene`` to ``csv`` chunk by chunk (memory: one chunk, and 3
     numbers a point for ``plot``), then print a summary of its statuses."""
     from collections import Counter
+    from dataclasses import replace
 
     from foundation_calc.api.options import writing
     from foundation_calc.output import sweep_report as report_out
@@ -133,6 +134,8 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
             if not first:
                 first.append(part)
                 yield report_out.csv_header(part)
+            if part.not_applicable and not first[0].not_applicable:  # a later chunk's speeds step aside: say so
+                first[0] = replace(first[0], not_applicable=part.not_applicable)
             statuses.update(map(str, part.status))
             if plot is not None:
                 kept.append(report_out.plotted(part))
