@@ -19,6 +19,19 @@ where they do not apply, and say why.
    spectrally, far below it). The mechanism's forcing F_n is the code's (not what is tested here).
 3. When only harmonics the first approximation does not have (n > 3) meet K_φ(nω) <= P h
    (V_s = 3.51 m/s: only 8ω), the first approximation is reported as usual.
+4. ``fcalc sweep --speed`` on those scenes runs (exit 0): at each speed where the first
+   approximation steps aside (V_s = 3.5: 150 rpm, whose 2ω = 31.4 rad/s lies past the 25.1 rad/s
+   where K_φ falls to P h; not 75 rpm, whose 3ω = 23.6 rad/s does not) the row's harmonics are the
+   direct solve's of item 2 at that speed (1e-9, as there), and the row at the scene's own speed is
+   ``fcalc amplitudes``' averaged operator (peaks and harmonics, 1e-12: the same operator and
+   forcing, solved for the sweep's speeds at once); the speed where it applies keeps the first
+   approximation, as amplitudes does there (1e-12). The JSON says so as on piles: ``method`` names
+   the averaged operator, ``not_applicable`` amplitudes' refusal.
+5. ``fcalc soil --sample`` on the V_s = 3.5 scene (stable at rest) is not refused as unstable in
+   rocking: a sample without scatter is the scene, its peaks of C those of the direct solve's series
+   (harmonics 0 ... 12 of item 2, the rest below 1e-12 of the peak; its peak found on 8192 phases),
+   at most 0.5 % low (the sample's 96 phases a revolution); it tips over nowhere and fails the
+   amplitudes, as the check does.
 """
 
 from __future__ import annotations
@@ -40,14 +53,16 @@ PILED = CONFIGS / "crank_on_piles.toml"
 FOOTING = CONFIGS / "compressor_medium_sand_lysmer.toml"
 
 
-def _gazetas(tmp_path, velocity: float):
-    """The medium-sand compressor on Gazetas' springs of soil with V_s = ``velocity`` [m/s], written
-    under ``tmp_path``."""
+def _gazetas(tmp_path, velocity: float, speed_rpm: float | None = None):
+    """The medium-sand compressor on Gazetas' springs of soil with V_s = ``velocity`` [m/s] (at
+    ``speed_rpm``, its own 150 rpm by default), written under ``tmp_path``."""
     import tomli_w
 
     data = read_toml(FOOTING)
     data["soil"].update(method="gazetas", shear_wave_velocity=velocity)
-    path = tmp_path / f"gazetas_{velocity}.toml"
+    if speed_rpm is not None:
+        data["mechanism"]["speed_rpm"] = speed_rpm
+    path = tmp_path / f"gazetas_{velocity}_{speed_rpm}.toml"
     path.write_text(tomli_w.dumps(data), encoding="utf-8")
     return path
 
@@ -184,3 +199,68 @@ def test_the_design_batch_judges_the_soft_soil_as_check_does(soft):
     assert "tips over" not in verdicts.reasons["amplitudes"][verdicts.governing["amplitudes"][0]]
     utilisation = max(row.ratio for row in (*result.report.rows, *result.report.code_rows))
     assert verdicts.utilisation["amplitudes"][0] == pytest.approx(utilisation, rel=1e-9)
+
+
+def _sweep_harmonic(row: dict, key: str) -> complex:
+    """The sweep row's harmonic ``key`` as cos - i sin (amplitude e^{-i phase lag})."""
+    found = row["harmonics"][key]
+    return found["amplitude"] * np.exp(-1j * found["phase"])
+
+
+@pytest.mark.parametrize("velocity, speeds, aside", [(3.0, "150:300:2", (True, True)), (3.5, "75:150:2", (False, True))],
+                         ids=["V_s=3, every speed aside", "V_s=3.5, 150 rpm aside, 75 rpm not"])
+def test_the_speed_sweep_goes_on_with_the_averaged_operator_where_the_first_approximation_steps_aside(
+        soft, tmp_path, runner, velocity, speeds, aside):
+    """Item 4 of the module docstring."""
+    import json
+
+    from foundation_calc.cli.app import app
+
+    scene, result = soft(velocity)
+    run = runner.invoke(app, ["sweep", str(_gazetas(tmp_path, velocity)), "--speed", speeds, "--json"])
+    assert run.exit_code == 0, run.output
+    document = json.loads(run.stdout)
+    assert "averaged operator" in document["method"]
+    assert document["not_applicable"]["first_approximation"].startswith("not applicable: the paper's first approximation")
+    rows = {round(row["omega"] * 30.0 / np.pi, 6): row for row in document["points"]}
+    for (rpm, row), stepped_aside in zip(rows.items(), aside):
+        path = _gazetas(tmp_path, velocity, rpm)
+        if not stepped_aside:  # the first approximation, as amplitudes gives it at that speed
+            first = fc.amplitudes(path).to_dict()
+            assert "not_applicable" not in first
+            found = first["approximations"]["first_approximation"]["harmonics"]
+            for key in ("y1", "y2", "x1", "theta1"):
+                assert _sweep_harmonic(row, key) == pytest.approx(found[key]["cos"] - 1j * found[key]["sin"], rel=1e-12)
+            continue
+        at = load_scene(path)
+        for n in (1, 2, 3):
+            expected = _averaged_by_hand(at, n)
+            for i, dof in enumerate(("x", "y", "theta")):
+                if f"{dof}{n}" in row["harmonics"]:
+                    assert _sweep_harmonic(row, f"{dof}{n}") == pytest.approx(expected[i], rel=1e-9,
+                                                                              abs=1e-9 * np.abs(expected).max())
+    own = rows[150.0]  # the scene's speed: fcalc amplitudes' averaged operator
+    averaged = result.to_dict()["approximations"]["averaged_operator"]
+    for key, dof in (("x_peak", "x"), ("y_peak", "y"), ("theta_peak", "theta")):
+        assert own[key] == pytest.approx(averaged["peaks"][dof]["displacement"], rel=1e-12)
+    for key in own["harmonics"]:
+        found = averaged["harmonics"][key]
+        assert _sweep_harmonic(own, key) == pytest.approx(found["cos"] - 1j * found["sin"], rel=1e-12,
+                                                          abs=1e-12 * abs(_sweep_harmonic(own, "y1")))
+    assert own["status"] == "fail" and own["over_limits"] == ["displacement"]  # as amplitudes judges it
+
+
+def test_the_soil_sample_does_not_refuse_a_scene_standing_at_rest(soft):
+    """Item 5 of the module docstring."""
+    from foundation_calc.checks.soil_sample import sample_scene
+
+    scene, result = soft(3.5)
+    drawn = sample_scene(scene, 4, 1e-12)
+    Z = np.stack([_averaged_by_hand(scene, n) for n in range(13)], axis=-1)  # (3, 13)
+    phase = np.linspace(0.0, 2.0 * np.pi, 8192, endpoint=False)
+    series = np.real(Z @ np.exp(1j * np.outer(np.arange(13), phase)))
+    for key, i in (("peak_horizontal_C", 0), ("peak_vertical_C", 1)):
+        peak = float(np.abs(series[i]).max())
+        assert peak * (1 - 0.0049) <= drawn.percentiles[key][1] <= peak * (1 + 1e-9)
+    assert drawn.failure_probability["tips_over"] == 0.0
+    assert drawn.failure_probability["amplitudes"] == 1.0 and result.verdict == "fail"

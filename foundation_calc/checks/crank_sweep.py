@@ -33,7 +33,7 @@ recomputes the group from the factored soil data, as a frequency-dependent soil'
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -41,7 +41,7 @@ from foundation_calc.checks.crank_resonance import design_frequencies, judge_con
 from foundation_calc.checks.limits import QUANTITIES, limited_quantities
 from foundation_calc.checks.resonance_rule import judge, required_detuning
 from foundation_calc.checks.sweep_status import STATUSES, RowVerdicts, over_limits, row_verdicts
-from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.closed_form import first_approximation_motion, soft_at_harmonic, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.resonance import CONDITIONS, critical_speed
@@ -56,6 +56,9 @@ CHUNK = 4096
 
 #: Harmonics of the first approximation reported per point (dof, n).
 HARMONICS = (("y", 1), ("y", 2), ("x", 1), ("x", 3), ("theta", 1), ("theta", 3))
+
+#: The highest harmonic of the first approximation's series (4.11)-(4.14).
+FIRST_APPROXIMATION_HARMONICS = 3
 
 
 @dataclass(frozen=True)
@@ -80,8 +83,9 @@ class DynamicSoil:
     frequencies ``soil_frequency`` [rad/s] (an array, one per point; either part None when the
     scene has none); ``zero``, ``averaged``: the natural frequencies that solve ω = p(K(ω))
     (:func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`); ``blocks``: the
-    block's M, C, K on the support at an array of frequencies (:func:`plane_blocks`), for a design
-    whose support couples sway with rocking (None otherwise)."""
+    block's M, C, K on the support at an array of frequencies (:func:`plane_blocks`) for the
+    averaged operator: the whole sweep on a support that couples sway with rocking, the speeds where
+    the first approximation steps aside on the others (None for a machine given by its loads)."""
 
     at: object
     zero: object
@@ -117,6 +121,10 @@ class SweepReport:
     critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
     coupled : the support couples sway with rocking: the peaks are the averaged operator's, the
         paper's first approximation does not apply
+    not_applicable : approximation key -> why it is left out, as ``fcalc amplitudes`` words it:
+        the first approximation on a coupled support (every point), or at the points of a
+        frequency-dependent soil whose rocking spring at one of its harmonics does not exceed P h
+        (:func:`frequency_consistent_motion`: the averaged operator there); empty otherwise
     """
 
     variable: str
@@ -138,6 +146,7 @@ class SweepReport:
     detuning: float | dict
     conditions: tuple = CONDITIONS
     coupled: bool = False
+    not_applicable: dict = field(default_factory=dict)
 
     @property
     def amplitude_limit(self) -> float | None:
@@ -227,17 +236,21 @@ def _at_harmonics(static, width: int, solve):
 def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share, dynamic=None) -> SweepReport:
     """One chunk of :func:`sweep_chunks` (``critical`` left empty: the caller sets it)."""
     motion = resonant = None
+    not_applicable = {}
     coupled = design is not None and design.coupled
     if coupled:
+        from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
+
         motion, resonant = coupled_motion(design, values, _static_blocks(design) if dynamic is None else dynamic.blocks)
         zero, averaged = design_frequencies(design) if dynamic is None else (dynamic.zero, dynamic.averaged)
         omega = values
+        not_applicable = {"first_approximation": FIRST_NOT_APPLICABLE}
     elif design is not None:
         batch = varied(design, **{variable: values})
-        motion, resonant = first_approximation_motion(batch)
-        if dynamic is not None:
-            motion, resonant = _at_harmonics((motion, resonant), motion.cos.shape[-1], lambda n: first_approximation_motion(
-                varied(dynamic.at(n * values)[0], omega=values)))
+        if dynamic is None:
+            motion, resonant = first_approximation_motion(batch)
+        else:
+            motion, resonant, not_applicable = frequency_consistent_motion(design, values, dynamic)
         resonant = np.asarray(resonant, dtype=bool)
         zero, averaged = design_frequencies(batch) if dynamic is None else (dynamic.zero, dynamic.averaged)
         omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
@@ -284,7 +297,62 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
         detuning=detuning,
         conditions=tuple(conditions),
         coupled=coupled,
+        not_applicable=not_applicable,
     )
+
+
+def frequency_consistent_motion(design: CrankDesign, omega, dynamic: DynamicSoil):
+    """The mechanism's steady state at each speed of ``omega`` [rad/s] (n,) on a frequency-dependent
+    soil that does not couple sway with rocking, where it has none (bool (n,)), and why the first
+    approximation is left out ({} where it is not), as ``fcalc amplitudes`` solves each speed:
+
+    - the corrected first approximation, each harmonic n = 1 ... 3 on the springs and dashpots at
+      n ω (:func:`_at_harmonics`), the mean on the static springs;
+    - at the speeds where it steps aside, the rocking spring at one of its harmonics' soil not
+      exceeding P h (:func:`~foundation_calc.solvers.crank.closed_form.soft_at_harmonic`; the
+      block stands at rest), the averaged operator with the exact forcing, each harmonic n at n ω
+      (:func:`coupled_motion` on ``dynamic.blocks``), which ``fcalc amplitudes`` judges there;
+      ``not_applicable`` then holds the first approximation's refusal at the first such speed
+      (:func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`, in
+      amplitudes' words).
+
+    The two series are laid side by side (:func:`side_by_side`)."""
+    from foundation_calc.errors import NotApplicable
+    from foundation_calc.solvers.crank.closed_form import require_first_approximation
+
+    omega = np.asarray(omega, dtype=float)
+    aside, why = np.zeros(omega.shape, dtype=bool), {}
+    for n in range(1, FIRST_APPROXIMATION_HARMONICS + 1):
+        soft = soft_at_harmonic(dynamic.at(n * omega)[0])
+        if soft.any() and not why:
+            try:
+                first = omega[soft][:1]
+                require_first_approximation(varied(dynamic.at(n * first)[0], omega=first))
+            except NotApplicable as refused:
+                why = {"first_approximation": f"not applicable: {refused.message}"}
+        aside |= soft
+    parts = []
+    if not aside.all():
+        w = omega[~aside]
+        static = first_approximation_motion(varied(design, omega=w))
+        parts.append((~aside, *_at_harmonics(static, static[0].cos.shape[-1], lambda n: first_approximation_motion(
+            varied(dynamic.at(n * w)[0], omega=w)))))
+    if aside.any():
+        parts.append((aside, *coupled_motion(design, omega[aside], dynamic.blocks)))
+    return (*side_by_side(omega, parts), why)
+
+
+def side_by_side(omega, parts) -> tuple[PeriodicMotion, np.ndarray]:
+    """One motion at the speeds ``omega`` [rad/s] (n,) of ``parts``, each (where: bool (n,), the
+    motion of those points, their ``resonant``), the series of the shorter padded with zero
+    harmonics; and where it is resonant (bool (n,))."""
+    width = max(motion.cos.shape[-1] for _, motion, _ in parts)
+    cos, sin = np.zeros(omega.shape + (3, width)), np.zeros(omega.shape + (3, width))
+    resonant = np.zeros(omega.shape, dtype=bool)
+    for where, motion, stuck in parts:
+        K = motion.cos.shape[-1]
+        cos[where, :, :K], sin[where, :, :K], resonant[where] = motion.cos, motion.sin, stuck
+    return PeriodicMotion(omega, cos, sin), resonant
 
 
 def coupled_motion(design: CrankDesign, omega, blocks):
@@ -444,6 +512,7 @@ def joined(parts: list[SweepReport]) -> SweepReport:
         points={k: join([p.points[k] for p in parts]) for k in first.points},
         over_quantities={k: join([p.over_quantities[k] for p in parts]) for k in first.over_quantities},
         harmonics={k: join([p.harmonics[k] for p in parts]) for k in first.harmonics},
+        not_applicable=next((p.not_applicable for p in parts if p.not_applicable), {}),
     )
 
 
@@ -490,9 +559,9 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
         return DynamicSoil(at, frequencies, frequencies)
     zero, averaged, _ = scene_design_frequencies(scene)
     design = scene.design()
-    return DynamicSoil(at, zero, averaged, plane_blocks(scene, design) if design.coupled else None)
+    return DynamicSoil(at, zero, averaged, plane_blocks(scene, design))
 
 
 __all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "coupled_motion",
-           "factored_soil_chunks", "joined", "plane_blocks", "scene_dynamic_soil", "scene_sweep_chunks", "sweep",
-           "sweep_chunks"]
+           "factored_soil_chunks", "frequency_consistent_motion", "joined", "plane_blocks", "scene_dynamic_soil",
+           "scene_sweep_chunks", "side_by_side", "sweep", "sweep_chunks"]

@@ -13,7 +13,10 @@ Distributions (independent):
 
 A frequency-dependent soil (Gazetas) is sampled as the checks take it: the factor scales G (so
 V_s by sqrt F and every a0 with it), every mode of every sample solves ω = p(K(ω)) (a bracketed root,
-the whole array at once), and each harmonic n of the response takes the springs at n ω.
+the whole array at once), and each harmonic n of the response takes the springs at n ω; a sample
+stands or tips over on its springs at rest, and where its rocking spring at one of the first
+approximation's harmonics does not exceed P h the first approximation steps aside for the
+averaged operator (:func:`_dependent_motion`), as ``fcalc amplitudes`` judges that soil.
 The sample is of the crank mechanism's response; a scene's ``[[loads]]`` are not part of it.
 
 Per sample: k0, p1, p2 (the paper's operator), the margin of the speed from the nearest of the
@@ -36,7 +39,7 @@ import numpy as np
 
 from foundation_calc.checks.crank_amplitudes import splice_harmonics
 from foundation_calc.checks.crank_resonance import design_frequencies
-from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
+from foundation_calc.solvers.crank.closed_form import first_approximation_motion, soft_at_harmonic, varied
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, rocking_stability_margin
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin
 from foundation_calc.solvers.soil.impedance import consistent_frequency
@@ -99,37 +102,63 @@ def sampled_peaks(cos: np.ndarray, sin: np.ndarray) -> tuple[np.ndarray, np.ndar
     return out[:, 0], out[:, 1]
 
 
-def _designs_at(scene, speed: np.ndarray):
-    """``at(soil_frequency, factor)``: the scene's design as arrays, speed ω × ``speed``, soil
+def _designs_at(scene):
+    """``at(soil_frequency, factor, speed)``: the scene's design as arrays, speed ω × ``speed``, soil
     stiffness × ``factor``, a frequency-dependent soil's springs and dashpots taken at
-    ``soil_frequency`` [rad/s] (arrays alike)."""
+    ``soil_frequency`` [rad/s] (arrays alike), which the design carries (its ``soil_frequency``:
+    stability is judged at rest, and the first approximation steps aside where a harmonic's
+    rocking spring does not exceed P h, as the checks take that soil)."""
     base = scene.design()
-    omega = base.omega * speed
     if not scene.support().frequency_dependent:
-        return lambda soil_frequency, factor: varied(base, omega=omega, soil_factor=factor)
+        return lambda soil_frequency, factor, speed: varied(base, omega=base.omega * speed, soil_factor=factor)
     from foundation_calc.solvers.soil.dashpots import dashpots_from_ratios
 
     f = scene.foundation
     h, I_c, M_rod = f.cog_height, f.moment_of_inertia, base.M_tot  # the dashpots' body as scene.design takes it
 
-    def at(soil_frequency, factor):  # the scene's own method (and stratum) on the soil × factor
+    def at(soil_frequency, factor, speed):  # the scene's own method (and stratum) on the soil × factor
         k = scene.with_modulus_factor(factor).soil_springs(omega=soil_frequency)
         c = dashpots_from_ratios(k.xi_z, k.xi_x, k.xi_phi, k.K_z, k.K_x, k.K_phi, M_rod, I_c + M_rod * h * h)
-        return replace(base, omega=omega, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
-                       c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi)
+        return replace(base, omega=base.omega * speed, c=k.K_z / f.base_area, c1=k.K_x / f.base_area,
+                       c_phi=k.K_phi / f.base_second_moment, C_x=c.C_x, C_z=c.C_z, C_phi=c.C_phi,
+                       soil_frequency=np.asarray(soil_frequency, dtype=float))
 
     return at
 
 
-def _consistent(at, factor, which: int) -> NaturalFrequencies:
+def _consistent(at, factor, speed, which: int) -> NaturalFrequencies:
     """k0, p1, p2 of every sample, each on the springs at its own frequency (ω = p(K(ω)));
     ``which`` 0: the paper's operator, 1: the averaged inertia."""
-    static = design_frequencies(at(0.0, factor))[which]
+    static = design_frequencies(at(0.0, factor, speed))[which]
     return NaturalFrequencies(**{
-        mode: consistent_frequency(lambda w, mode=mode: getattr(design_frequencies(at(w, factor))[which], mode),
+        mode: consistent_frequency(lambda w, mode=mode: getattr(design_frequencies(at(w, factor, speed))[which], mode),
                                    getattr(static, mode))
         for mode in ("k0", "p1", "p2")
     })
+
+
+def _dependent_motion(scene, at, factor, speed):
+    """The mechanism's steady state of every sample on a frequency-dependent soil, and where it is
+    resonant, as ``fcalc amplitudes`` takes that soil: the first approximation, each harmonic n at
+    n ω (the mean on the static springs); a sample where it steps aside (the rocking spring at one
+    of its harmonics' soil does not exceed P h, :func:`~foundation_calc.solvers.crank.closed_form.soft_at_harmonic`)
+    gets the averaged operator with the exact forcing, each harmonic n at n ω
+    (:func:`~foundation_calc.checks.crank_sweep.coupled_motion`), which the check judges there."""
+    from foundation_calc.checks.crank_sweep import FIRST_APPROXIMATION_HARMONICS, coupled_motion, side_by_side
+    from foundation_calc.solvers.crank.averaged import block_matrices
+
+    omega = at(0.0, factor, speed).omega
+    harmonics = range(1, FIRST_APPROXIMATION_HARMONICS + 1)
+    aside = np.logical_or.reduce([soft_at_harmonic(at(k * omega, factor, speed)) for k in harmonics])
+    parts = []
+    if not aside.all():
+        f, s, w = factor[~aside], speed[~aside], omega[~aside]
+        motions = [first_approximation_motion(at(k * w, f, s)) for k in (0, *harmonics)]
+        parts.append((~aside, splice_harmonics([m for m, _ in motions]), motions[1][1]))
+    if aside.any():
+        f, s, w = factor[aside], speed[aside], omega[aside]
+        parts.append((aside, *coupled_motion(scene.design(), w, lambda frequencies: block_matrices(at(frequencies, f, s)))))
+    return side_by_side(omega, parts)
 
 
 def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
@@ -137,16 +166,15 @@ def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed
     rng = np.random.default_rng(seed)
     factor = lognormal_factors(rng, n, cov_modulus)
     speed = np.maximum(1.0 + cov_speed * rng.normal(size=n), 1e-3) if cov_speed > 0.0 else np.ones(n)
-    at = _designs_at(scene, speed)
-    d = at(0.0, factor)
-    stable = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h) > 0.0
+    at = _designs_at(scene)
+    d = at(0.0, factor, speed)
+    stable = rocking_stability_margin(d.c_phi, d.I1, d.M_tot * d.g, d.h) > 0.0  # at rest, as the checks judge it
     safe = np.where(stable, factor, 1.0)  # a tipping sample is counted, never solved
-    static = at(0.0, safe)
+    static = at(0.0, safe, speed)
     omega = static.omega
     if scene.support().frequency_dependent:
-        zero, averaged = _consistent(at, safe, 0), _consistent(at, safe, 1)
-        motions = [first_approximation_motion(at(k * omega, safe)) for k in range(4)]
-        motion, resonant = splice_harmonics([m for m, _ in motions]), motions[1][1]
+        zero, averaged = _consistent(at, safe, speed, 0), _consistent(at, safe, speed, 1)
+        motion, resonant = _dependent_motion(scene, at, safe, speed)
     else:
         zero, averaged = design_frequencies(static)
         motion, resonant = first_approximation_motion(static)

@@ -64,7 +64,8 @@ def sweep(
     """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
 
     Every point is computed in vectorised chunks of the corrected first approximation (on a pile
-    group, which couples sway with rocking, of the averaged operator, the support at each
+    group, which couples sway with rocking, and at the speeds where a frequency-dependent soil's
+    rocking spring at a harmonic falls to P h, of the averaged operator, the support at each
     harmonic's frequency, as amplitudes solves it there); each row
     shows the peaks of x, y (of C), θ and of the scene's [[points]] and a status that says why:
     the resonance condition that governs there (docs/resonance-rule.md) with its margin,
@@ -120,6 +121,7 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
     """Write a long sweep of a crank ``scene`` to ``csv`` chunk by chunk (memory: one chunk, and 3
     numbers a point for ``plot``), then print a summary of its statuses."""
     from collections import Counter
+    from dataclasses import replace
 
     from foundation_calc.api.options import writing
     from foundation_calc.output import sweep_report as report_out
@@ -132,6 +134,8 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
             if not first:
                 first.append(part)
                 yield report_out.csv_header(part)
+            if part.not_applicable and not first[0].not_applicable:  # a later chunk's speeds step aside: say so
+                first[0] = replace(first[0], not_applicable=part.not_applicable)
             statuses.update(map(str, part.status))
             if plot is not None:
                 kept.append(report_out.plotted(part))

@@ -21,6 +21,10 @@ from foundation_calc.units import hz_from_omega, rpm_from_omega
 METHOD = "corrected first approximation (Krichever & Makarov (4.11)-(4.14))"
 #: The mechanism's method on a support coupling sway with rocking, where the first approximation does not apply.
 COUPLED_METHOD = "averaged operator, exact forcing (the plane's one model, the support's sway-rocking coupling K_xφ, C_xφ)"
+#: The mechanism's method on a frequency-dependent soil where, at some speeds, a harmonic's rocking spring
+#: does not exceed P h and the first approximation steps aside.
+STEPPED_ASIDE_METHOD = (f"{METHOD}; at the speeds where it does not apply (a harmonic's rocking spring K_φ(nω) <= P·h),"
+                        " averaged operator, exact forcing")
 LOADS_METHOD = "vendor loads, linear steady state"
 STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
 
@@ -28,7 +32,7 @@ STATUS_STYLE = {**OUTCOME_STYLE, "resonant": "bold magenta"}
 def method(report) -> str:
     """What computed the sweep's amplitudes: the mechanism's closed form, the loads' steady state or both."""
     sources = {c.source for c in report.conditions}
-    mechanism = COUPLED_METHOD if report.coupled else METHOD
+    mechanism = COUPLED_METHOD if report.coupled else STEPPED_ASIDE_METHOD if report.not_applicable else METHOD
     parts = ([mechanism] if sources - {"loads"} else []) + ([LOADS_METHOD] if "loads" in sources else [])
     return " + ".join(parts)
 
@@ -98,13 +102,10 @@ def verdict_cells(report):
 
 
 def not_applicable(report) -> dict:
-    """The approximations a crank sweep leaves out and why: the paper's first approximation on a
-    support coupling sway with rocking (as ``fcalc amplitudes`` words it); empty otherwise."""
-    if not report.coupled:
-        return {}
-    from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
-
-    return {"first_approximation": FIRST_NOT_APPLICABLE}
+    """The approximations a crank sweep leaves out and why, as ``fcalc amplitudes`` words it: the
+    paper's first approximation on a support coupling sway with rocking, or at the speeds where a
+    harmonic's rocking spring does not exceed P h; empty otherwise."""
+    return dict(getattr(report, "not_applicable", {}))
 
 
 def limits_document(limits: dict, detuning) -> dict:
@@ -153,7 +154,7 @@ def sweep_document(report, scene_path: str, name: str, warnings: Iterable[str] =
         "scene": scene_path,
         "name": name,
         "method": method(report),
-        **({"not_applicable": not_applicable(report)} if report.coupled else {}),
+        **({"not_applicable": not_applicable(report)} if not_applicable(report) else {}),
         "variable": report.variable,
         "limits": limits_document({key: report.limits.get(quantity) for quantity, key in (QUANTITIES | RMS_QUANTITIES).items()},
                                   report.detuning),

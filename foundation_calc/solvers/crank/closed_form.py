@@ -48,13 +48,11 @@ def require_first_approximation(design: CrankDesign) -> None:
     if design.coupled:
         raise NotApplicable(COUPLED_SUPPORT, field="soil")
     d = design
-    soil_frequency = np.asarray(d.soil_frequency, dtype=float)
-    if not np.any(soil_frequency != 0.0):
-        return
-    K_phi, P_h, w_soil, omega = np.broadcast_arrays(d.c_phi * d.I1, d.M_tot * d.g * d.h, soil_frequency, d.omega)
-    fails = (K_phi <= P_h) & (w_soil != 0.0)
+    fails = soft_at_harmonic(d)
     if not fails.any():
         return
+    K_phi, P_h, w_soil, omega, fails = np.broadcast_arrays(d.c_phi * d.I1, d.M_tot * d.g * d.h, d.soil_frequency, d.omega,
+                                                           fails)
     k = np.unravel_index(np.argmax(fails), fails.shape)
     n = w_soil[k] / omega[k]
     at, where = f"the soil's frequency ω_s = {w_soil[k]:.4g} rad/s", "ω_s"
@@ -68,6 +66,16 @@ def require_first_approximation(design: CrankDesign) -> None:
         " at this harmonic's soil; the foundation stands (stability is judged on the springs at rest), and the"
         " averaged operator and the exact solution still give the steady state", field="soil",
         hint="fcalc amplitudes and fcalc check give the averaged operator's steady state at the speed")
+
+
+def soft_at_harmonic(design: CrankDesign) -> np.ndarray:
+    """Where (bool, the shape of ``design``'s fields) the first approximation steps aside on a
+    frequency-dependent support's springs at a harmonic's frequency (the design's ``soil_frequency``
+    ≠ 0): the rocking spring K_φ = c_φ I1 [N m/rad] there does not exceed P h = M_tot g h [N m]
+    (:func:`require_first_approximation`). False everywhere on static springs."""
+    d = design
+    K_phi, P_h, w_soil = np.broadcast_arrays(d.c_phi * d.I1, d.M_tot * d.g * d.h, np.asarray(d.soil_frequency, dtype=float))
+    return (K_phi <= P_h) & (w_soil != 0.0)
 
 
 def design_first_approximation(design: CrankDesign) -> FirstApproximation:
@@ -135,5 +143,5 @@ def with_damping(design: CrankDesign, xi_z, xi_x, xi_phi) -> CrankDesign:
     return replace(d, C_x=b.C_x, C_z=b.C_z, C_phi=b.C_phi)
 
 
-__all__ = ["COUPLED_SUPPORT", "design_first_approximation", "first_approximation_motion", "require_first_approximation", "varied",
-           "with_damping"]
+__all__ = ["COUPLED_SUPPORT", "design_first_approximation", "first_approximation_motion", "require_first_approximation",
+           "soft_at_harmonic", "varied", "with_damping"]
