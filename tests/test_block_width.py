@@ -93,6 +93,7 @@ def test_a_crank_design_fits_80_columns(terminal, runner, config):
                                  "--points", "3"])
     assert result.exit_code in (0, 1), result.output
     assert "Pareto set" in result.stdout
+    assert "[m³]" in result.stdout and "[t]" in result.stdout  # the headers' units are text, not markup
     wide = [line for line in result.stdout.splitlines() if cell_len(line) > WIDTH]
     assert not wide, f"{len(wide)} lines wider than {WIDTH}:\n" + "\n".join(wide[:8])
     assert "…" not in result.stdout

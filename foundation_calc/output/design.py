@@ -275,6 +275,7 @@ def _print_unevaluated(console, unevaluated: dict) -> None:
 def _print_pareto(console, document: dict, keys: list[str]) -> None:
     """The Pareto set, a row a design; where it does not fit ``console`` with no column wrapped (a
     narrow terminal), "governed by" gets two lines' width and the numbers' headers wrap."""
+    from rich.markup import escape
     from rich.table import Table
 
     from foundation_calc.output.console import natural_width, two_lines_for
@@ -283,13 +284,13 @@ def _print_pareto(console, document: dict, keys: list[str]) -> None:
     title = f"Pareto set: volume against worst margin ({shown} of {size} designs)"
     table = Table(title=title, show_edge=False)
     for header in (*[name + " [m]" for name in _short_names(keys)], "volume [m³]", "mass [t]", "worst margin", "governed by"):
-        table.add_column(header, justify="right" if header != "governed by" else "left", overflow="fold")
+        table.add_column(escape(header), justify="right" if header != "governed by" else "left", overflow="fold")
     governed = []
     for design in document["pareto"]:
         top = max(design["checks"].items(), key=lambda item: -math.inf if item[1]["utilisation"] is None else item[1]["utilisation"])
         governed.append(f"{top[0]}: {top[1]['governing']}")
         table.add_row(*[f"{v:.3f}" for v in design["values"].values()], f"{design['volume']:.4g}", f"{design['mass'] / 1e3:.4g}",
-                      _number(design["worst_margin"]), governed[-1])
+                      _number(design["worst_margin"]), escape(governed[-1]))
     if natural_width(table) > console.width:
         two_lines_for(table, -1, governed, console.width)
     console.print(table)
