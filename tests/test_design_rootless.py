@@ -17,8 +17,16 @@ mass from its kinematics): read as sqrt|λ| its highest frequency p(ω) − ω k
 scan's samples (the former verdict), while each frequency fcalc reports is sqrt of a positive
 eigenvalue of (K(p), M̄), p2 the highest.
 
-A block's batch has no such case among the shipped scenes' plausible sizes: its test makes one,
-a block whose springs stiffen faster than its frequencies rise. A mode with several roots: the
+A truly rootless crank candidate: the shipped supports give none among plausible sizes, so a
+support registered here (the sway-rocking toy of tests/test_crank_support_design.py, its springs
+times (1 + (ω/ω0)⁴), ω0 = 950 rad/s) makes one. A mode whose frequency on the constant springs is
+p0 then has p(ω)² ≈ p0² (1 + (ω/ω0)⁴), which meets ω² only where p0 <= ω0/√2 = 672 rad/s: the 3 m
+block's highest mode (p0 = 742 rad/s) has no root, the longer blocks' have. The batch fails that
+candidate alone, naming p2, and fcalc check refuses its scene naming p2; the proof of "no root" is
+independent: det(K(ω) − ω² M̄) of the hand assembly on a fine grid over the search's range
+changes sign only at the two other modes' crossings, and the highest eigenvalue stays above ω².
+A block's batch has no such case among the shipped scenes' plausible sizes either: its test makes
+one, a block whose springs stiffen faster than its frequencies rise. A mode with several roots: the
 shipped piled crank on a 4.5 m block (p2 = 392.8, 444.3 or 584.3 rad/s), against the same hand
 assembly on a fine grid.
 """
@@ -37,9 +45,13 @@ from foundation_calc.checks.design.apply import applied_document
 from foundation_calc.checks.design.candidates import FAIL
 from foundation_calc.scenes import parse_scene, read_toml
 from foundation_calc.solvers.soil.impedance import SCAN
+from foundation_calc.solvers.supports import register, unregister
+from foundation_calc.solvers.supports.base import AtO
 
 from tests.conftest import CONFIGS
 from tests.test_crank_piles import _mean_mass, _plane
+from tests.test_crank_support_design import SWAY, COUPLINGS, Toy, _document
+from tests.test_support_design import C_REF
 
 #: The former rootless candidate's block length [m] and the range the batch varies [m].
 ROOTLESS_LENGTH = 8.0
@@ -247,3 +259,103 @@ def test_a_block_candidate_whose_springs_stiffen_too_fast_fails_alone():
         assert outcome[1] == FAIL and utilisation[1] == np.inf
         assert reasons[governing[1]].startswith("a mode has no natural frequency"), reasons[governing[1]]
         assert not reasons[governing[0]].startswith("a mode has no natural frequency")
+
+
+#: The stiffening support's ω0 [rad/s] (module docstring) and the name of the scene it takes.
+CORNER = 950.0
+STIFFENING = "stiffening toy crank"
+
+#: The stiffening scene's block lengths the batch varies [m]: the shortest, 3 m, is rootless.
+STIFFENING_VARY = "foundation.block.length=3:8"
+
+
+class Stiffening(Toy):
+    """The sway-rocking toy's springs at O (coupling included) times (1 + (ω/:data:`CORNER`)⁴), its
+    dashpots as they are: springs that stiffen with frequency faster than a high mode's frequency rises."""
+
+    frequency_dependent = True
+
+    def impedance(self, omega) -> AtO:
+        at = super().impedance(omega)
+        factor = (1.0 + (np.asarray(omega, dtype=float) / CORNER) ** 4)[..., None]
+        return AtO(at.springs * factor, at.dashpots, (at.coupling[0] * factor[..., None], at.coupling[1]))
+
+
+def _stiffening_builder(scene, L, B, masses):
+    if scene.name != STIFFENING:
+        return None
+    return Stiffening(np.asarray(scene.soil.c_z, dtype=float) / C_REF, coupled=COUPLINGS[SWAY])
+
+
+@pytest.fixture(scope="module")
+def stiffening():
+    """The compressor's crank scene on the stiffening support (registered while the module's tests
+    run), the base's size left to the block."""
+    doc = _document(STIFFENING)
+    del doc["foundation"]["base_length"], doc["foundation"]["base_width"]
+    register(_stiffening_builder)
+    yield doc
+    unregister(_stiffening_builder)
+
+
+@pytest.fixture(scope="module")
+def stiffening_designed(stiffening):
+    return fc.design(stiffening, vary=[STIFFENING_VARY], points=3)
+
+
+def _length(document, length: float) -> dict:
+    return applied_document(document, {"foundation.block.length": length})
+
+
+def test_a_truly_rootless_crank_candidate_fails_alone(stiffening, stiffening_designed):
+    """The batch goes on (exit 0): the 3 m block, the cheapest on the grid, fails resonance alone
+    for p2 without a natural frequency, and the best is a longer block that the re-check (fcalc
+    check's path on the best's written scene) judges as the batch did; fcalc check refuses the 3 m
+    block's scene (exit 3) naming the same mode."""
+    found = stiffening_designed.to_dict()
+    assert stiffening_designed.exit_code == 0, found
+    failures = found["cheaper_failures"]
+    assert [(f["check"], f["count"]) for f in failures] == [("resonance", 1)], failures
+    assert failures[0]["reason"].startswith("mode p2 has no natural frequency"), failures
+    assert found["best"]["values"]["foundation.block.length"] > 3.0
+    assert found["recheck"]["agree"] and found["recheck"]["designs"] >= 1, found["recheck"]
+    refused = fc.check(_length(stiffening, 3.0))
+    assert refused.exit_code == 3
+    assert "mode p2 has no natural frequency" in str(refused.to_dict())
+
+
+def _crossings(scene, grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Where det(K(ω) − ω² M̄) of the hand assembly (K(ω) the registered support's at ω carried to
+    x, y, θ of C, M̄ the mechanism's mean mass) changes sign between neighbours of ``grid`` [rad/s],
+    and the highest eigenvalue λ of (K(ω), M̄) minus ω² at each sample [rad²/s²]."""
+    M, z_G = _mean_mass(scene)
+    det, top = [], []
+    for w in grid:
+        K = _plane(scene, w, z_G)[0]
+        det.append(np.linalg.det(K - w * w * M))
+        top.append(np.max(eigvals(K, M).real) - w * w)
+    det = np.array(det)
+    return grid[1:][np.sign(det[1:]) != np.sign(det[:-1])], np.array(top)
+
+
+def test_the_rootless_candidate_has_no_root_by_brute_force(stiffening, stiffening_designed):
+    """Independent of fcalc's root search: on 1200 log-spaced ω from 20 to 2e4 rad/s (0.58 % apart;
+    the search's range, 0.2 to 5 × p(p_s) = 174 to 4349 rad/s, inside), det(K(ω) − ω² M̄) of the
+    3 m block changes sign four times, twice for each of the two lower modes (p0 < ω0/√2: a root
+    near p0 and one near ω0²/p0), and the highest eigenvalue stays above ω² everywhere: its mode
+    crosses nowhere. The best block's det changes sign six times: there the highest mode has its
+    roots, one of them fcalc's p2."""
+    grid = np.geomspace(20.0, 2.0e4, 1200)
+    scene = parse_scene(_length(stiffening, 3.0))
+    M, z_G = _mean_mass(scene)
+    p_s = np.sqrt(np.max(eigvals(_plane(scene, 0.0, z_G)[0], M).real))
+    p_ps = np.sqrt(np.max(eigvals(_plane(scene, p_s, z_G)[0], M).real))
+    assert grid[0] < 0.2 * p_ps and 5.0 * p_ps < grid[-1], p_ps
+    crossings, top = _crossings(scene, grid)
+    assert len(crossings) == 4 and np.all(top > 0.0), (crossings, top.min())
+    best = stiffening_designed.to_dict()["best"]["values"]["foundation.block.length"]
+    best_scene = parse_scene(_length(stiffening, best))
+    crossings, top = _crossings(best_scene, grid)
+    assert len(crossings) == 6 and np.any(top < 0.0), crossings
+    p2 = fc.resonance(_length(stiffening, best)).to_dict()["natural_frequencies"]["p2"]
+    assert np.min(np.abs(crossings - p2)) / p2 < 0.006, (p2, crossings)  # the grid's spacing
