@@ -16,7 +16,9 @@ holds the plane: the modes are those of the one model the resonance check solves
 with the coupling, by its solver (:func:`~foundation_calc.solvers.crank.averaged.natural_modes`),
 each mode on the springs at its own frequency p_j, where it is the eigenvector whose eigenvalue is
 p_j² (the mode of that rank there, as the resonance check names it), mass-normalised on M̄
-(:func:`coupled_plane_modes`).
+(:func:`coupled_plane_modes`). The frequencies there are read as the root search reads them
+(``at_rest`` False at p_j ≠ 0): a negative eigenvalue of K̄(p_j) is no real frequency (0), so its
+mode is never taken for p_j, where sqrt|λ| would offer it when |λ| is near p_j².
 """
 
 from __future__ import annotations
@@ -106,7 +108,7 @@ def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -
     def mode_at(p):
         d = design_at(p)
         M, _, K, _, _ = averaged_operator(d)
-        natural, vectors = natural_modes(M, K)
+        natural, vectors = natural_modes(M, K, at_rest=p == 0.0)  # the springs at p: signed, as the root search
         v = vectors[:, int(np.argmin(np.abs(natural - p)))]
         return v / math.sqrt(float(v @ M @ v)), (float(d.c1 * d.S), float(d.c * d.S), float(d.c_phi * d.I1)), float(d.h)
 
