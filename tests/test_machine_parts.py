@@ -57,6 +57,9 @@ class ToyCouple(MachinePart):
     def sheet_text(self, omega):
         return ("toy couple C = b ω² = ", Number(COUPLE_ARM * omega ** 2), " N m")
 
+    def assumption(self):
+        return "the toy's couple about z, growing as ω²"
+
 
 def _toy(machine) -> list:
     """The builder a new module would register: here every machine named "toy" carries one."""
@@ -162,4 +165,6 @@ def test_a_toy_part_runs_through_every_command(toy_scene, tmp_path):
 
     sheet = tmp_path / "toy.md"
     fc.report(toy_scene, output=sheet)
-    assert "toy: toy couple C = b ω² = " in sheet.read_text(encoding="utf-8")
+    text = sheet.read_text(encoding="utf-8")
+    assert "toy: toy couple C = b ω² = " in text
+    assert "The toy's couple about z, growing as ω²" in text  # the sheet's assumptions say what the part says of itself
