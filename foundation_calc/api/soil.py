@@ -33,9 +33,9 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
     -------
     Result
         ``to_dict()`` is the document of ``fcalc soil --json`` (its ``sample`` null without one);
-        ``report`` is (the methods compared, a crank's support's springs in the plane on a support
-        that is no footing (:class:`~foundation_calc.checks.plane_soil.PlaneSoil`: a pile group), or
-        a block's springs and their columns by frequency; the sample or None).
+        ``report`` is (the methods compared, or the support's springs and dashpots at the
+        frequencies of a block or of a crank on a support that is no footing (a pile group),
+        :class:`~foundation_calc.checks.soil_support.SupportSoil`; the sample or None).
 
     Raises
     ------
@@ -54,28 +54,21 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
         within(keyword, value, *RANGES[keyword])
     loaded = scene_of(scene, KINDS)
     model, drawn = loaded.model, None
-    if loaded.kind == "block_foundation":
-        from foundation_calc.checks.block_soil import soil_at_frequencies
-        from foundation_calc.output.block_soil import soil_document
+    if loaded.kind == "block_foundation" or not compares_methods(model):  # a block, or a crank on a pile group
+        from foundation_calc.checks.soil_support import support_soil
+        from foundation_calc.output.soil_support import soil_document
 
+        block = loaded.kind == "block_foundation"
         if sample:
-            from foundation_calc.checks.block_sample import sample_block
-
-            if speed_cov:
+            if block and speed_cov:
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
-            _scales_with_the_soil(model, "block")
-            drawn = sample_block(model, sample, modulus_cov, seed)
-        springs = model.model()
-        columns = soil_at_frequencies(model, springs)
-        report, document = (springs, columns), soil_document(springs, model, loaded.source, columns)
-    elif not compares_methods(model):  # a pile group: its own springs and dashpots in the plane
-        from foundation_calc.checks.plane_soil import plane_soil
-        from foundation_calc.output.plane_soil import soil_document
+            _scales_with_the_soil(model, "block" if block else "crank foundation")
+        if sample and block:
+            from foundation_calc.checks.block_sample import sample_block
 
-        if sample:
-            _scales_with_the_soil(model, "crank foundation")
-        report = plane_soil(model)
+            drawn = sample_block(model, sample, modulus_cov, seed)
+        report = support_soil(model)
         document = soil_document(report, model, loaded.source)
     else:
         from foundation_calc.checks.soil_methods import compare_soil_methods

@@ -235,7 +235,7 @@ def _frequency_range(scene, results) -> list[str]:
 def compares_methods(scene) -> bool:
     """Whether a crank scene stands on the footing whose soil methods are compared: its support gives
     a soil method's chain in the plane (``plane_springs``); a pile group replaces the footing and
-    ``fcalc soil`` shows its own springs (:mod:`foundation_calc.checks.plane_soil`)."""
+    ``fcalc soil`` shows its own springs (:mod:`foundation_calc.checks.soil_support`)."""
     return hasattr(scene.support(), "plane_springs")
 
 

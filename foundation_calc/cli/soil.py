@@ -59,16 +59,12 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
         print_json(result.document)
         raise typer.Exit(result.exit_code)
     report, drawn = result.report
-    if loaded.kind == "block_foundation":
-        from foundation_calc.output.block_soil import print_soil
-
-        print_soil(report[0], loaded.model, loaded.source, report[1])
-    elif isinstance(report, soil_out.SoilComparison):
+    if isinstance(report, soil_out.SoilComparison):
         soil_out.print_soil_report(report, loaded.model, loaded.source)
-    else:  # a crank on a support that is no footing (a pile group)
-        from foundation_calc.output.plane_soil import print_plane_soil
+    else:  # a block, or a crank on a support that is no footing (a pile group)
+        from foundation_calc.output.soil_support import print_support_soil
 
-        print_plane_soil(report, loaded.model, loaded.source)
+        print_support_soil(report, loaded.model, loaded.source)
     if drawn is not None:
         soil_out.print_sample(drawn)
     raise typer.Exit(result.exit_code)
