@@ -111,9 +111,9 @@ def test_an_invalid_scene_raises_scene_error_with_the_documents_problems(runner,
 
 def test_a_command_refuses_a_scene_of_another_kind_as_it_does_on_the_command_line(runner):
     path = CONFIGS / "platform_paper_example.toml"
-    code, document = _cli(runner, "resonance", str(path))
+    code, document = _cli(runner, "design", str(path), "--vary", "block.length=2:4")
     with pytest.raises(fc.SceneError) as raised:
-        fc.resonance(fc.load(str(path)))
+        fc.design(fc.load(str(path)), vary=["block.length=2:4"])
     assert code == 3 and raised.value.problems == document["problems"]
     assert raised.value.problems[0].field == "kind"
 

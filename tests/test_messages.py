@@ -44,7 +44,7 @@ def test_a_missing_table_lists_the_keys_it_needs(runner, tmp_path):
 @pytest.mark.parametrize(
     ("command", "config", "hint"),
     [
-        ("resonance", "platform_paper_example.toml", "use fcalc platform"),
+        ("design", "platform_paper_example.toml", "use fcalc platform or fcalc resonance"),
         ("platform", "frame_saw.toml", "use fcalc resonance or fcalc amplitudes or fcalc sweep"),
     ],
 )

@@ -14,7 +14,8 @@ def amplitudes(scene, *, exact: bool = False) -> Result:
     Parameters
     ----------
     scene : Scene, path or mapping
-        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`).
+        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`),
+        or a ``platform`` read as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`).
     exact : bool
         ``--exact``: a crank scene's [mechanism] also by the exact periodic solution (harmonic
         balance), which then judges the limits; no effect on loads, whose steady state is exact.
@@ -33,7 +34,7 @@ def amplitudes(scene, *, exact: bool = False) -> Result:
     from foundation_calc.checks.outcomes import exit_code
     from foundation_calc.output.amplitudes import amplitudes_document
 
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     report = scene_amplitudes(loaded.model, exact=exact)
     document = amplitudes_document(report, loaded.model, loaded.source)
     return command_result("amplitudes", document, exit_code(report.amplitude_outcome), loaded, report)

@@ -15,7 +15,8 @@ def resonance(scene, *, strict: bool = False) -> Result:
     Parameters
     ----------
     scene : Scene, path or mapping
-        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`).
+        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`),
+        or a ``platform`` read as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`).
     strict : bool
         ``--strict``: a warning (an extra resonance, a plausibility warning) fails (exit code 1).
 
@@ -34,7 +35,7 @@ def resonance(scene, *, strict: bool = False) -> Result:
     from foundation_calc.checks.scene_resonance import scene_resonances
     from foundation_calc.output.resonance import resonance_document
 
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     model = loaded.model
     report = scene_resonances(model)
     code = exit_code(report.outcome, strict, bool(model.plausibility_warnings()))

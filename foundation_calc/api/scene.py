@@ -6,7 +6,7 @@ from __future__ import annotations
 import copy
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -83,17 +83,26 @@ def load(scene: str | os.PathLike | Mapping | Scene, *, source: str | None = Non
     return scene_of(scene, source=source)
 
 
-def scene_of(scene, expect: str | tuple[str, ...] | None = None, source: str | None = None) -> Scene:
+def scene_of(scene, expect: str | tuple[str, ...] | None = None, source: str | None = None,
+             platform_as_block: bool = False) -> Scene:
     """:func:`load` for a command that takes the kinds ``expect`` (None: any): a scene of another
     kind is a :class:`~foundation_calc.errors.SceneError` naming the commands that take it; a file
-    of another kind is refused before it is validated, as the commands refuse it."""
+    of another kind is refused before it is validated, as the commands refuse it. With
+    ``platform_as_block`` (a command of the one rigid body) a ``platform`` scene is taken too, read
+    as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`)."""
     from foundation_calc.scenes.loading import expect_kind, parse_scene_as_written
 
+    if platform_as_block:
+        expect = ((expect,) if isinstance(expect, str) else tuple(expect)) + ("platform",)
     if isinstance(scene, Scene):
         expect_kind(scene.kind, expect, scene.source)
+        if platform_as_block and scene.kind == "platform":
+            return replace(scene, model=scene.model.as_block(scene.source))
         return scene
     document, source, path = read(scene, source)
     model, written = parse_scene_as_written(document, source, expect)  # it converts into a new document
+    if platform_as_block and model.kind == "platform":
+        model = model.as_block(source)
     return Scene(model, source, document, path, written)
 
 

@@ -19,7 +19,8 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
     Parameters
     ----------
     scene : Scene, path or mapping
-        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`).
+        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`),
+        or a ``platform`` read as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`).
     sample : int
         ``--sample``: draws of the soil's stiffness (lognormal factor, median 1) [-]; 0: none.
     modulus_cov : float
@@ -52,7 +53,7 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
 
     for keyword, value in (("sample", sample), ("modulus_cov", modulus_cov), ("speed_cov", speed_cov), ("seed", seed)):
         within(keyword, value, *RANGES[keyword])
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     model, drawn = loaded.model, None
     if loaded.kind == "block_foundation" or not compares_methods(model):  # a block, or a crank on a pile group
         from foundation_calc.checks.soil_support import support_soil

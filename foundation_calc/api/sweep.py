@@ -94,7 +94,7 @@ def plan(scene, speed: str | float | None = None, soil: str | float | None = Non
     else:
         lo, hi, n, unit = parse_range(str(soil), "--soil")
         variable, values = "soil_factor", np.linspace(lo, hi, n)
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     if loaded.kind != "block_foundation":
         if machine is not None or alone:
             raise UsageError("--machine and --alone choose among the machines of a block_foundation scene",
@@ -151,7 +151,8 @@ def sweep(scene, *, speed: str | float | None = None, soil: str | float | None =
     Parameters
     ----------
     scene : Scene, path or mapping
-        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`).
+        A ``crank_foundation`` or ``block_foundation`` scene (:func:`~foundation_calc.api.scene.load`),
+        or a ``platform`` read as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`).
     speed : str or float, optional
         ``--speed``: ``"FROM:TO[:N][UNIT]"``, N points (default 101) in rpm unless a unit follows
         (rpm, rad/s, hz), e.g. ``"100:600:251"`` or ``"10:60rad/s"``; one value is one point.

@@ -8,10 +8,10 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.kinds import RIGID_BODY_SCENE, scene_argument
 from foundation_calc.cli.units import UnitsOpt
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 ExactOpt = Annotated[
     bool,
@@ -46,7 +46,7 @@ def amplitudes(
     from foundation_calc.api.scene import scene_of
 
     shown = display_units(units)
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     warn_implausible(loaded.model)
     if exact and loaded.kind != "block_foundation" and loaded.model.mechanism is None:
         from foundation_calc.output.console import stderr

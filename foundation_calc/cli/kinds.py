@@ -24,6 +24,11 @@ KindArg = Annotated[
 ]
 
 
+#: The SCENE help of the commands of the one rigid body (resonance, amplitudes, sweep, soil).
+RIGID_BODY_SCENE = ("Scene file (TOML) of kind crank_foundation or block_foundation, or a platform (read as a block on"
+                    " its designed isolators).")
+
+
 def scene_argument(help: str, metavar: str = "SCENE") -> Any:
     """A typer argument naming scene files. fcalc reads them itself, so an unreadable file is an
     invalid scene (exit 3, with the reason), not a usage error of typer's (exit 2)."""

@@ -8,10 +8,10 @@ from typing import Annotated
 import typer
 
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.kinds import RIGID_BODY_SCENE, scene_argument
 from foundation_calc.cli.units import UnitsOpt
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (extra resonances) as failures.")]
 
@@ -29,7 +29,7 @@ def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False,
     from foundation_calc.api.scene import scene_of
 
     shown = display_units(units)
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     warn_implausible(loaded.model)
     result = resonance(loaded, strict=strict)
     if json:

@@ -10,9 +10,9 @@ import typer
 
 from foundation_calc.api.soil import RANGES
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.kinds import RIGID_BODY_SCENE, scene_argument
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 SampleOpt = Annotated[int, typer.Option(
     "--sample", min=RANGES["sample"][0], max=RANGES["sample"][1], metavar="N",
@@ -50,7 +50,7 @@ def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_
     from foundation_calc.api.soil import soil
     from foundation_calc.output import soil as soil_out
 
-    loaded = scene_of(scene, KINDS)
+    loaded = scene_of(scene, KINDS, platform_as_block=True)
     warn_implausible(loaded.model)
     result = soil(loaded, sample=sample, modulus_cov=modulus_cov, speed_cov=speed_cov, seed=seed)
     if json:

@@ -9,10 +9,10 @@ from typing import Annotated, Optional
 import typer
 
 from foundation_calc.cli.guard import reports_errors, warn_implausible
-from foundation_calc.cli.kinds import scene_argument
+from foundation_calc.cli.kinds import RIGID_BODY_SCENE, scene_argument
 from foundation_calc.cli.units import UnitsOpt
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 SpeedOpt = Annotated[
     Optional[str],
     typer.Option("--speed", metavar="FROM:TO[:N][UNIT]", show_default=False,

@@ -16,7 +16,7 @@ KINDS: dict[str, str] = {
 #: scene kind -> the single-scene commands that take it (for messages that point the way).
 KIND_COMMANDS: dict[str, tuple[str, ...]] = {
     "crank_foundation": ("resonance", "amplitudes", "sweep", "soil"),
-    "platform": ("platform",),
+    "platform": ("platform", "resonance", "amplitudes", "sweep", "soil", "runup", "check", "report"),
     "block_foundation": ("resonance", "amplitudes", "sweep", "runup", "soil", "check", "report"),
 }
 

@@ -277,3 +277,11 @@ class PlatformScene(Plausible, SceneModel):
         return PlatformModel(
             self.inertia, self.isolators.loss_factor, self.product_height, extra, self.isolators.damping_ratio
         )
+
+    def as_block(self, source: str = "<scene>"):
+        """This platform read as a validated ``block_foundation`` on its designed isolators with its
+        exciters as a machine's (:func:`~foundation_calc.scenes.platform_block.platform_as_block`),
+        ``source`` naming it in an error."""
+        from foundation_calc.scenes.platform_block import platform_as_block
+
+        return platform_as_block(self, source)

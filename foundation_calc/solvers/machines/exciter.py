@@ -190,6 +190,32 @@ def axis_angles(axis) -> tuple[float, float]:
     return (float(np.arctan2(y, x)) if r > 0.0 else 0.0), float(np.arctan2(r, z))
 
 
+def phase_from_angles(delta1: float, delta2: float) -> float:
+    """ψ [rad]: what to add to a rotor's angle φ0 at t = 0 given with the axis angles δ1, δ2 of
+    Eq. (1.3) of [1]_ so that the rotor on the axis vector e of those angles, whose angles
+    :func:`axis_angles` takes from e alone, stands where it stood: the turn about e from that
+    t1' to the paper's t1 = (sin δ1, -cos δ1, 0), ψ = atan2(t1·t2', t1·t1').
+
+    The vector fixes δ1 = 0 on a vertical axis (ψ = δ1 for δ2 = 0) and keeps δ2 within [0, π]
+    (ψ = π for δ2 < 0, which reverses t1 and t2).
+
+    Parameters
+    ----------
+    delta1, delta2 : the axis angles of Eq. (1.3) [rad]
+
+    Returns
+    -------
+    ψ [rad], within (-π, π]
+
+    >>> [round(phase_from_angles(*d), 12) + 0.0 for d in ((0.3, 0.0), (0.3, 1.0), (0.3, -1.0))]
+    [0.3, 0.0, 3.14159265359]
+    """
+    paper = UnbalancedExciter(0.0, 0.0, (0.0, 0.0, 0.0), delta1, delta2, 0.0)
+    t1, _, e = paper.axes()
+    t1v, t2v, _ = UnbalancedExciter(0.0, 0.0, (0.0, 0.0, 0.0), *axis_angles(e), 0.0).axes()
+    return float(np.arctan2(t1 @ t2v, t1 @ t1v))
+
+
 @lru_cache(maxsize=256)
 def rotor_series(part: UnbalancedExciter, omega: float, g: float) -> dict:
     """The Fourier coefficients of one exciter's parts of (1)-(4) (module docstring) at the offsets
@@ -239,4 +265,4 @@ def _product(a, b, kind: str) -> np.ndarray:
     return out
 
 
-__all__ = ["OFFSETS", "UnbalancedExciter", "axis_angles", "rotor_series"]
+__all__ = ["OFFSETS", "UnbalancedExciter", "axis_angles", "phase_from_angles", "rotor_series"]
