@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from foundation_calc.checks import crank_sweep
+from foundation_calc.checks.sweep import crank as crank_sweep
 from foundation_calc.solvers.crank import sweep as crank_engine
 from foundation_calc.cli.app import app
 from tests.conftest import CONFIGS

@@ -1,4 +1,7 @@
-"""Sweep of a crank foundation's speed or soil stiffness: closed-form amplitudes, resonances, limits.
+"""Sweep of a crank foundation's speed or soil stiffness: closed-form amplitudes, resonances, limits,
+as the one report of every kind's sweep (:class:`~foundation_calc.checks.sweep.report.SweepReport`;
+its columns ``omega``, ``peaks``, ``points``, ``harmonics``, its setup ``damped``, ``coupled``,
+``not_applicable``), the motion from the crank's engine (:mod:`foundation_calc.solvers.crank.sweep`).
 
 One call of the corrected first approximation on arrays (no Python object per point) gives the
 peaks of x, y and θ at every point; the margins of every resonance condition come from the same
@@ -11,7 +14,7 @@ On a frequency-dependent soil (Gazetas', Pais & Kausel's impedance) a speed swee
 frequency-consistent, as ``fcalc amplitudes`` at each speed: every harmonic n ≥ 1 of every speed
 is solved with the soil's springs and dashpots at n ω (one batched first approximation and loads
 solve per harmonic over the whole chunk of speeds, harmonics spliced as
-:func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics` does; the mean on the static
+:func:`~foundation_calc.solvers.crank.response.splice_harmonics` does; the mean on the static
 springs), and the resonance margins are to the natural frequencies that solve ω = p(K(ω)), which
 do not depend on the speed (:class:`DynamicSoil`). A soil sweep on such a soil multiplies the soil's
 stiffness data (G, or V_s by the square root) by the factor and recomputes everything from them
@@ -33,14 +36,15 @@ recomputes the group from the factored soil data, as a frequency-dependent soil'
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
 from foundation_calc.checks.limits import QUANTITIES, limited_quantities
 from foundation_calc.checks.resonance_rule import judge, required_detuning
-from foundation_calc.checks.sweep_status import STATUSES, RowVerdicts, over_limits, row_verdicts
+from foundation_calc.checks.sweep.report import SweepReport, joined
+from foundation_calc.checks.sweep.status import over_limits, row_verdicts
 from foundation_calc.solvers.crank import sweep as engine
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
 from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
@@ -85,78 +89,6 @@ class DynamicSoil:
     zero: object
     averaged: object
     blocks: object = None
-
-
-@dataclass(frozen=True)
-class SweepReport:
-    """Amplitudes and verdicts along a sweep (arrays of length n).
-
-    Attributes
-    ----------
-    variable : ``"omega"`` or ``"soil_factor"``
-    values : the swept values [rad/s or -]
-    omega : crank speed at each point [rad/s]
-    peaks : (n, 3) peak |x| [m], |y| [m], |θ| [rad]; 0 where ``resonant``
-    resonant : no periodic solution of the first approximation (margin < 1e-6)
-    margin : margin of the governing condition [-]
-    governing : index into ``conditions`` of the condition that governs each point's resonance
-        verdict (:mod:`~foundation_calc.checks.resonance_rule`); ``margin`` is its margin and
-        ``needed`` the margin it needs [-]; ``resonance_status`` the rule's verdict per point
-        (``clear``, ``information``, ``warn``, ``fail``)
-    conditions : the resonance conditions checked: the mechanism's
-        (:data:`~foundation_calc.solvers.crank.resonance.CONDITIONS`), then those of the loads
-    points : scene point name -> (n, 2) peak horizontal and vertical displacement [m]
-    over_quantities : limited quantity -> where a peak or RMS value of C (x, y) or of a point
-        exceeds its limit (:mod:`~foundation_calc.checks.limits`; ``over_limit``: any of them)
-    status : one of :data:`STATUSES` per point
-    harmonics : "y1", "x1", ... (:data:`HARMONICS`) -> complex coefficient cos - i sin per point
-        [m or rad]: amplitude ``abs``, phase lag φ = -``angle`` of q_n = A cos(nωt - φ)
-    damped : the design has base dashpots
-    critical : critical speeds inside the swept range (speed sweeps; empty for soil sweeps)
-    coupled : the support couples sway with rocking: the peaks are the averaged operator's, the
-        paper's first approximation does not apply
-    not_applicable : approximation key -> why it is left out, as ``fcalc amplitudes`` words it:
-        the first approximation on a coupled support (every point), or at the points of a
-        frequency-dependent soil whose rocking spring at one of its harmonics does not exceed P h
-        (:func:`~foundation_calc.solvers.crank.sweep.frequency_consistent_motion`: the averaged operator there); empty otherwise
-    """
-
-    variable: str
-    values: np.ndarray
-    omega: np.ndarray
-    peaks: np.ndarray
-    resonant: np.ndarray
-    margin: np.ndarray
-    governing: np.ndarray
-    needed: np.ndarray
-    resonance_status: np.ndarray
-    points: dict
-    over_quantities: dict
-    status: np.ndarray
-    harmonics: dict
-    damped: bool
-    critical: tuple[CriticalSpeed, ...]
-    limits: dict
-    detuning: float | dict
-    conditions: tuple = CONDITIONS
-    coupled: bool = False
-    not_applicable: dict = field(default_factory=dict)
-
-    @property
-    def amplitude_limit(self) -> float | None:
-        """The displacement limit [m], or None."""
-        return self.limits.get("displacement")
-
-    @property
-    def over_limit(self) -> np.ndarray:
-        """Where a point exceeds any limit (bool (n,))."""
-        return self.rows.over_limit
-
-    @property
-    def rows(self) -> RowVerdicts:
-        """The rows' verdicts as every kind's sweep gives them."""
-        return RowVerdicts(governing=self.governing, margin=self.margin, needed=self.needed,
-                           resonance_status=self.resonance_status, over_quantities=self.over_quantities, status=self.status)
 
 
 def _located(motion, omega, points, limits: dict):
@@ -219,28 +151,18 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
     margins = np.broadcast_to(margins, values.shape + (len(conditions),))
     limited = limited_quantities(limits)
     located, over_quantities = _located(motion, omega, points, limited)
-    rows = row_verdicts(margins, verdict, over_quantities, resonant)
     return SweepReport(
         variable=variable,
         values=values,
-        omega=omega,
-        peaks=peaks,
         resonant=np.asarray(resonant, dtype=bool),
-        margin=rows.margin,
-        governing=rows.governing,
-        resonance_status=rows.resonance_status,
-        needed=rows.needed,
-        points=located,
-        over_quantities=over_quantities,
-        status=rows.status,
-        harmonics={f"{dof}{n}": _complex(*motion.coefficient(dof, n)) for dof, n in HARMONICS},
-        damped=any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
-        critical=(),
+        rows=row_verdicts(margins, verdict, over_quantities, resonant),
+        conditions=tuple(conditions),
         limits=limited,
         detuning=detuning,
-        conditions=tuple(conditions),
-        coupled=coupled,
-        not_applicable=not_applicable,
+        columns={"omega": omega, "peaks": peaks, "points": located,
+                 "harmonics": {f"{dof}{n}": _complex(*motion.coefficient(dof, n)) for dof, n in HARMONICS}},
+        setup={"damped": any(float(np.max(getattr(d, key))) > 0.0 for d in dashpotted for key in ("C_x", "C_z", "C_phi")),
+               "coupled": coupled, "not_applicable": not_applicable},
     )
 
 
@@ -329,26 +251,6 @@ def scene_sweep_chunks(scene, variable: str, values):
     return sweep_chunks(design, variable, values, limits, detuning, points, scene_vendor_loads(scene), dynamic=dynamic)
 
 
-def joined(parts: list[SweepReport]) -> SweepReport:
-    """One report of the chunks ``parts`` (their point arrays joined end to end)."""
-    first = parts[0]
-    if len(parts) == 1:
-        return first
-    join = np.concatenate
-    return replace(
-        first,
-        **{name: join([getattr(p, name) for p in parts]) for name in _POINT_ARRAYS},
-        points={k: join([p.points[k] for p in parts]) for k in first.points},
-        over_quantities={k: join([p.over_quantities[k] for p in parts]) for k in first.over_quantities},
-        harmonics={k: join([p.harmonics[k] for p in parts]) for k in first.harmonics},
-        not_applicable=next((p.not_applicable for p in parts if p.not_applicable), {}),
-    )
-
-
-#: The fields of :class:`SweepReport` that hold one value per point.
-_POINT_ARRAYS = ("values", "omega", "peaks", "resonant", "margin", "governing", "needed", "resonance_status", "status")
-
-
 def sweep(
     design: CrankDesign | None, variable: str, values, limits, detuning, points=(), vendor=None, dynamic=None
 ) -> SweepReport:
@@ -392,5 +294,5 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
                                                             scene.foundation.base_second_moment, design))
 
 
-__all__ = ["HARMONICS", "STATUSES", "VARIABLES", "CriticalSpeed", "DynamicSoil", "SweepReport", "factored_soil_chunks",
-           "joined", "scene_dynamic_soil", "scene_sweep_chunks", "sweep", "sweep_chunks"]
+__all__ = ["HARMONICS", "VARIABLES", "CriticalSpeed", "DynamicSoil", "factored_soil_chunks", "scene_dynamic_soil",
+           "scene_sweep_chunks", "sweep", "sweep_chunks"]
