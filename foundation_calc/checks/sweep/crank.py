@@ -46,11 +46,9 @@ from foundation_calc.checks.resonance_rule import judge, required_detuning
 from foundation_calc.checks.sweep.report import SweepReport, joined
 from foundation_calc.checks.sweep.status import over_limits, row_verdicts
 from foundation_calc.solvers.crank import sweep as engine
-from foundation_calc.solvers.crank.closed_form import first_approximation_motion, varied
-from foundation_calc.solvers.crank.loads import block_frequencies, loads_response
+from foundation_calc.solvers.crank.loads import block_frequencies
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.crank.resonance import CONDITIONS, critical_speed
-from foundation_calc.solvers.crank.response import PeriodicMotion, superpose
+from foundation_calc.solvers.crank.resonance import critical_speed
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -109,42 +107,20 @@ def _complex(cos, sin):
 
 def _chunk(design, variable: str, values, limits, detuning, points, vendor, conditions, share, dynamic=None) -> SweepReport:
     """One chunk of :func:`sweep_chunks` (``critical`` left empty: the caller sets it)."""
-    motion = resonant = None
-    not_applicable = {}
     coupled = design is not None and design.coupled
+    found = engine.sweep_motion(design, variable, values, vendor, None if dynamic is None else dynamic.at,
+                                None if dynamic is None else dynamic.blocks)
+    motion, resonant, omega, not_applicable = found.motion, found.resonant, found.omega, found.why
     if coupled:
         from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
 
-        motion, resonant = engine.coupled_motion(design, values, engine.static_blocks(design) if dynamic is None else dynamic.blocks)
-        zero, averaged = design_frequencies(design) if dynamic is None else (dynamic.zero, dynamic.averaged)
-        omega = values
         not_applicable = {"first_approximation": FIRST_NOT_APPLICABLE}
-    elif design is not None:
-        batch = varied(design, **{variable: values})
-        if dynamic is None:
-            motion, resonant = first_approximation_motion(batch)
-        else:
-            motion, resonant, not_applicable = engine.frequency_consistent_motion(
-                design, values, lambda frequencies: dynamic.at(frequencies)[0], dynamic.blocks)
-        resonant = np.asarray(resonant, dtype=bool)
-        zero, averaged = design_frequencies(batch) if dynamic is None else (dynamic.zero, dynamic.averaged)
-        omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
-    if vendor is not None:
-        block = engine.varied_block(vendor.block, values) if variable == "soil_factor" else vendor.block
-        omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
-        res = loads_response(block, omega, vendor.loads)
-        loads_motion, stuck = res.motion, res.resonant
-        if dynamic is not None:
-            def solve(n):
-                found = loads_response(dynamic.at(n * values)[1].block, omega, vendor.loads)
-                return found.motion, found.resonant
-
-            loads_motion, stuck = engine.at_harmonics((loads_motion, stuck), loads_motion.cos.shape[-1], solve)
-        if design is None:
-            zero = averaged = block_frequencies(block) if dynamic is None else dynamic.zero
-        loads_motion = PeriodicMotion(omega, np.nan_to_num(loads_motion.cos), np.nan_to_num(loads_motion.sin))
-        motion = loads_motion if motion is None else superpose(motion, loads_motion)
-        resonant = stuck if resonant is None else resonant | stuck
+    if dynamic is not None:
+        zero, averaged = dynamic.zero, dynamic.averaged
+    elif design is None:
+        zero = averaged = block_frequencies(found.block)
+    else:
+        zero, averaged = design_frequencies(design if coupled else found.batch)
     dashpotted = [d for d in (design, None if vendor is None else vendor.block) if d is not None]
     peaks = engine.chunked_peaks(motion.cos, motion.sin)  # displacement only: (n, 3)
     margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)

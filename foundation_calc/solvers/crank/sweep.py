@@ -8,19 +8,21 @@ Python object per point): the engine of ``fcalc sweep`` for the plane crank scen
 - on a support that couples sway with rocking, and where the first approximation steps aside, the
   averaged operator with the exact forcing, each harmonic n on the support at n ω, one batched
   3 × 3 solve per harmonic over the speeds (:func:`coupled_motion`);
+- a scene's ``[[loads]]``: their linear steady state added (:func:`sweep_motion`);
 - the peaks of C and of the scene's points, and the largest peak or RMS value of every limited
   quantity (:func:`located`), in chunks of :data:`CHUNK` points so that memory stays bounded.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, soft_at_harmonic, varied
+from foundation_calc.solvers.crank.loads import loads_response
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.crank.response import PeriodicMotion, point_series, splice_harmonics
+from foundation_calc.solvers.crank.response import PeriodicMotion, point_series, splice_harmonics, superpose
 from foundation_calc.solvers.numerics.trig_series import derivative, peak, rms
 
 #: Points whose peaks are found together: peak() holds ~64 × 4 × 8 bytes per series and sample.
@@ -85,6 +87,76 @@ def at_harmonics(static, width: int, solve):
         motions.append(motion)
         resonant = resonant | np.asarray(stuck, dtype=bool)
     return splice_harmonics(motions), resonant
+
+
+@dataclass(frozen=True)
+class SweepMotion:
+    """The steady state along (a chunk of) a sweep of n points.
+
+    Attributes
+    ----------
+    motion : the periodic motion of C at every point (x, y [m], θ [rad])
+    resonant : (n,) no periodic solution there
+    omega : (n,) the speed at each point [rad/s]
+    why : approximation key -> why it is left out at some points ({} where none is)
+    batch : the mechanism's design at every point (None: no mechanism, or a support coupling sway
+        with rocking, whose design does not vary along a speed sweep)
+    block : the loads' block at every point (None: no loads)
+    """
+
+    motion: PeriodicMotion
+    resonant: np.ndarray
+    omega: np.ndarray
+    why: dict
+    batch: CrankDesign | None = None
+    block: object = None
+
+
+def sweep_motion(design: CrankDesign | None, variable: str, values, vendor=None, soil_at=None, blocks=None) -> SweepMotion:
+    """The crank foundation's steady state at every point of a sweep of ``variable`` (``"omega"``
+    [rad/s] or ``"soil_factor"`` [-]) over ``values`` (n,):
+
+    - the mechanism of ``design`` (None: none): on a support coupling sway with rocking the
+      averaged operator with the exact forcing (:func:`coupled_motion`); else the corrected first
+      approximation at every point at once, on a frequency-dependent soil each harmonic at n ω
+      (:func:`frequency_consistent_motion`);
+    - ``vendor``: the scene's loads (``block``, ``loads``, ``omega`` [rad/s]), their linear steady
+      state (:func:`~foundation_calc.solvers.crank.loads.loads_response`) added, on the block × the
+      soil factor (:func:`varied_block`) or, on a frequency-dependent soil, each harmonic at n ω.
+
+    ``soil_at(frequencies)``: (design, vendor loads) on a frequency-dependent soil's springs and
+    dashpots at an array of frequencies [rad/s] (None: the soil does not depend on frequency);
+    ``blocks``: the block's M, C, K on the support at an array of frequencies (:func:`plane_blocks`;
+    None: the design's own at every frequency, :func:`static_blocks`)."""
+    motion = resonant = batch = block = None
+    why = {}
+    if design is not None and design.coupled:
+        motion, resonant = coupled_motion(design, values, static_blocks(design) if blocks is None else blocks)
+        omega = values
+    elif design is not None:
+        batch = varied(design, **{variable: values})
+        if soil_at is None:
+            motion, resonant = first_approximation_motion(batch)
+        else:
+            motion, resonant, why = frequency_consistent_motion(design, values, lambda frequencies: soil_at(frequencies)[0],
+                                                                blocks)
+        resonant = np.asarray(resonant, dtype=bool)
+        omega = np.broadcast_to(np.asarray(batch.omega, dtype=float), values.shape)
+    if vendor is not None:
+        block = varied_block(vendor.block, values) if variable == "soil_factor" else vendor.block
+        omega = values if variable == "omega" else np.full(values.shape, vendor.omega)
+        res = loads_response(block, omega, vendor.loads)
+        loads_motion, stuck = res.motion, res.resonant
+        if soil_at is not None:
+            def solve(n):
+                found = loads_response(soil_at(n * values)[1].block, omega, vendor.loads)
+                return found.motion, found.resonant
+
+            loads_motion, stuck = at_harmonics((loads_motion, stuck), loads_motion.cos.shape[-1], solve)
+        loads_motion = PeriodicMotion(omega, np.nan_to_num(loads_motion.cos), np.nan_to_num(loads_motion.sin))
+        motion = loads_motion if motion is None else superpose(motion, loads_motion)
+        resonant = stuck if resonant is None else resonant | stuck
+    return SweepMotion(motion, np.asarray(resonant, dtype=bool), omega, why, batch, block)
 
 
 def frequency_consistent_motion(design: CrankDesign, omega, design_at, blocks):
@@ -201,5 +273,5 @@ def plane_blocks(support, base_area: float, base_second_moment: float, design: C
     return at
 
 
-__all__ = ["CHUNK", "FIRST_APPROXIMATION_HARMONICS", "at_harmonics", "chunked_peaks", "coupled_motion",
-           "frequency_consistent_motion", "located", "plane_blocks", "side_by_side", "static_blocks", "varied_block"]
+__all__ = ["CHUNK", "FIRST_APPROXIMATION_HARMONICS", "SweepMotion", "at_harmonics", "chunked_peaks", "coupled_motion",
+           "frequency_consistent_motion", "located", "plane_blocks", "side_by_side", "static_blocks", "sweep_motion", "varied_block"]
