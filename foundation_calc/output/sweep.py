@@ -6,8 +6,8 @@ Every kind's rows carry the same verdict cells (:func:`verdict_cells`, worded by
 what differs by kind is data the one layout reads: a crank scene's rows the peaks of C in x, y,
 θ, of its points and, damped, the harmonics, with the method that computed them; a block's the
 largest peak and RMS values over G and its points in x, y, z along a machine's speed or a factor
-on its soil (:data:`VALUES`). Resonant points of an undamped crank
-sweep carry no amplitude (empty / null)."""
+on its soil (:data:`VALUES`). Resonant points of an undamped crank sweep carry no amplitude
+(empty / null)."""
 
 from __future__ import annotations
 
@@ -326,10 +326,28 @@ def print_sweep(report, scene, source: str, units) -> None:
         _print_largest(report, scene, source, units)
 
 
+def _print_table(title: str, heads: list[str], cells: list[list[str]], rows: list[dict], swept: str | None = None) -> None:
+    """Print the table of every kind's sweep (:func:`print_status_table`): a column per head
+    (right-justified), a row per row's ``cells``, then the status of each of ``rows`` (the
+    document's rows, ``swept``: the swept machine's name)."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    def make_table(status_head: str, statuses: list[str]) -> Table:
+        table = Table(title=title, title_justify="left")
+        for head in heads:
+            table.add_column(escape(head), justify="right")
+        table.add_column(status_head)
+        for row, status in zip(cells, statuses):
+            table.add_row(*row, status)
+        return table
+
+    print_status_table(make_table, rows, swept)
+
+
 def _print_plane(report, scene_path: str, name: str, units) -> None:
     """A crank scene's sweep as a rich table; speeds and amplitudes in the chosen display units."""
     from rich.markup import escape
-    from rich.table import Table
 
     speed_unit, amp_unit = units.label("speed"), units.label("amplitude")
     rows = list(_plane_rows(report))
@@ -351,23 +369,11 @@ def _print_plane(report, scene_path: str, name: str, units) -> None:
             cells.append("-" if h is None else f"{math.degrees(h['x1']['phase']):.1f} / {math.degrees(h['y1']['phase']):.1f}")
         values.append(cells)
 
-    def make_table(status_head: str, statuses: list[str]) -> Table:
-        table = Table(title=f"{escape(name or scene_path)} — {method(report)}", title_justify="left")
-        if report.variable == "soil_factor":
-            table.add_column("soil factor (c_z, c_x, c_phi)", justify="right")
-        table.add_column(escape(f"speed [{speed_unit}]"), justify="right")
-        for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")):
-            table.add_column(escape(f"{dof} peak [{unit}]"), justify="right")
-        for point in report.columns["points"]:
-            table.add_column(escape(f"{point} peak h/v [{amp_unit}]"), justify="right")
-        if report.setup["damped"]:
-            table.add_column(escape("phase lag x1 / y1 [°]"), justify="right")
-        table.add_column(status_head)
-        for cells, status in zip(values, statuses):
-            table.add_row(*cells, status)
-        return table
-
-    print_status_table(make_table, rows)
+    heads = ["soil factor (c_z, c_x, c_phi)"] if report.variable == "soil_factor" else []
+    heads += [f"speed [{speed_unit}]", *(f"{dof} peak [{unit}]" for dof, unit in (("x", amp_unit), ("y", amp_unit), ("θ", "rad")))]
+    heads += [f"{point} peak h/v [{amp_unit}]" for point in report.columns["points"]]
+    heads += ["phase lag x1 / y1 [°]"] if report.setup["damped"] else []
+    _print_table(f"{escape(name or scene_path)} — {method(report)}", heads, values, rows)
     _print_footer(report, units)
 
 
@@ -411,7 +417,6 @@ def _print_largest(report, scene, source: str, units) -> None:
     z and RMS velocity over G and the points in ``units`` ("-" where a row is resonant), then the
     status."""
     from rich.markup import escape
-    from rich.table import Table
 
     amp, vel = units.label("amplitude"), units.label("velocity")
     rows = list(_largest_rows(report))
@@ -428,17 +433,9 @@ def _print_largest(report, scene, source: str, units) -> None:
     def cell(quantity: str, value) -> str:
         return "-" if np.isnan(value) else fmt(units.convert(quantity, float(value)), 4)
 
-    def make_table(status_head: str, statuses: list[str]) -> Table:
-        table = Table(title=title, title_justify="left")
-        for col in (head, "x", "y", "z", "v"):
-            table.add_column(escape(col), justify="right")
-        table.add_column(status_head)
-        for i, (first, status) in enumerate(zip(cells, statuses)):
-            table.add_row(first, *(cell("amplitude", v) for v in report.columns["peak"][i]),
-                          cell("velocity", np.max(report.columns["velocity_rms"][i])), status)
-        return table
-
-    print_status_table(make_table, rows, swept)
+    values = [[first, *(cell("amplitude", v) for v in report.columns["peak"][i]),
+               cell("velocity", np.max(report.columns["velocity_rms"][i]))] for i, first in enumerate(cells)]
+    _print_table(title, [head, "x", "y", "z", "v"], values, rows, swept)
 
 
 def others(report) -> str:
