@@ -209,14 +209,14 @@ def _largest_head(report, scene, source: str) -> dict:
     }
 
 
-def _plane(report) -> bool:
+def of_plane(report) -> bool:
     """The report is a crank scene's (the peaks of C, its points and harmonics), not a block's."""
     return "peaks" in report.columns
 
 
 def rows_of(report):
     """The rows of a sweep of any kind, one dict a row (SI units), by its kind's columns."""
-    return _plane_rows(report) if _plane(report) else _largest_rows(report)
+    return _plane_rows(report) if of_plane(report) else _largest_rows(report)
 
 
 def sweep_document(report, scene, source: str) -> dict:
@@ -224,7 +224,7 @@ def sweep_document(report, scene, source: str) -> dict:
     return {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "sweep",
-        **(_plane_head if _plane(report) else _largest_head)(report, scene, source),
+        **(_plane_head if of_plane(report) else _largest_head)(report, scene, source),
         "points": list(rows_of(report)),
         "warnings": list(scene.plausibility_warnings()),
         "verdict": verdict(report.rows.status),
@@ -240,13 +240,23 @@ def _plane_columns(report) -> list:
     columns += [("speed_hz", lambda r: hz_from_omega(r["omega"])), ("speed_rpm", lambda r: rpm_from_omega(r["omega"])),
                 ("x_peak_m", lambda r: r["x_peak"]), ("y_peak_m", lambda r: r["y_peak"]),
                 ("theta_peak_rad", lambda r: r["theta_peak"])]
-    for key in report.columns["harmonics"]:
-        for head, part in (("amplitude", "amplitude"), ("phase_rad", "phase")):
-            columns.append((f"{key}_{head}", lambda r, key=key, part=part: None if r["harmonics"] is None else r["harmonics"][key][part]))
-    for name in report.columns["points"]:
-        for d in ("horizontal", "vertical"):
-            columns.append((f"{name}_{d}_peak_m", lambda r, name=name, d=d: None if r["points"][name] is None else r["points"][name][d]))
+    columns += [(f"{key}_{head}", _nested("harmonics", key, part)) for key in report.columns["harmonics"]
+                for head, part in (("amplitude", "amplitude"), ("phase_rad", "phase"))]
+    columns += [(f"{name}_{d}_peak_m", _nested("points", name, d)) for name in report.columns["points"]
+                for d in ("horizontal", "vertical")]
     return columns + [("resonant", lambda r: r["resonant"])]
+
+
+def _nested(group: str, key: str, part: str):
+    """The cell of a row's ``row[group][key][part]``, None where the row has no ``row[group]`` (a
+    resonant row's harmonics) or no ``row[group][key]`` (its points)."""
+
+    def cell(row: dict):
+        found = row[group]
+        found = None if found is None else found[key]
+        return None if found is None else found[part]
+
+    return cell
 
 
 def _largest_columns(report) -> list:
@@ -263,7 +273,7 @@ def _largest_columns(report) -> list:
 
 def _csv_columns(report) -> list:
     """(CSV head, cell of a row) of every column of a sweep of any kind: its kind's, then the verdict's."""
-    kind = _plane_columns(report) if _plane(report) else _largest_columns(report)
+    kind = _plane_columns(report) if of_plane(report) else _largest_columns(report)
     return kind + [(key, lambda r, key=key: r[key]) for key in VERDICT_COLUMNS]
 
 
@@ -320,7 +330,7 @@ def verdict(statuses) -> str:
 
 def print_sweep(report, scene, source: str, units) -> None:
     """The sweep's table, speeds and amplitudes in ``units``."""
-    if _plane(report):
+    if of_plane(report):
         _print_plane(report, source, scene.name, units)
     else:
         _print_largest(report, scene, source, units)
@@ -443,6 +453,6 @@ def others(report) -> str:
     return "the others left out" if report.setup["alone"] else "the others at their own"
 
 
-__all__ = ["FACTORED", "VALUES", "csv_cell", "csv_header", "csv_rows", "csv_text", "limits_document", "method", "others",
-           "print_status_table", "print_sweep", "print_sweep_summary", "rows_of", "status_text", "sweep_csv",
+__all__ = ["FACTORED", "VALUES", "csv_cell", "csv_header", "csv_rows", "csv_text", "limits_document", "method", "of_plane",
+           "others", "print_status_table", "print_sweep", "print_sweep_summary", "rows_of", "status_text", "sweep_csv",
            "sweep_document", "verdict", "verdict_cells"]

@@ -9,13 +9,13 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.resonance_rule import bands_text
-from foundation_calc.output.sweep import FACTORED, method, others
+from foundation_calc.output.sweep import FACTORED, method, of_plane, others
 
 
 def plot_sweep(report, scene, path, units, name: str) -> None:
     """The sweep's plot: peaks against the swept variable, the limits, the operating point and the
     critical speeds with their detuning bands."""
-    if "peaks" in report.columns:
+    if of_plane(report):
         _plot_plane(report, path, units, name, scene.speed.omega_rad_s)
     elif report.variable == "soil_factor":
         _plot_soil(report, path, units, name)
