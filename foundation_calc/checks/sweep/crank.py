@@ -130,7 +130,7 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
     return SweepReport(
         variable=variable,
         values=values,
-        resonant=np.asarray(resonant, dtype=bool),
+        resonant=resonant,
         rows=row_verdicts(margins, verdict, over_quantities, resonant),
         conditions=tuple(conditions),
         limits=limited,
