@@ -81,15 +81,15 @@ def test_without_acceleration_limits_the_block_adds_no_rows_and_a_loose_limit_pa
 
 def test_a_sweep_at_the_scene_speed_gives_the_scene_accelerations():
     """The batched sweep (solvers/block/sweep.py) against the per-scene steady state, to round-off."""
-    from foundation_calc.checks.block_sweep import sweep_block
+    from foundation_calc.checks.sweep.block import sweep_block
 
     scene = parse_scene(_document(acceleration=0.02), "two")
     report = check_block(scene)
     for swept in (0, 1):
         omega = scene.excitations()[swept].omega
         sweep = sweep_block(scene, swept, np.array([0.5 * omega, omega]))
-        np.testing.assert_allclose(sweep.acceleration_peak[1], report.motion.acceleration_peak.max(axis=0), rtol=1e-12)
-        np.testing.assert_allclose(sweep.acceleration_rms[1], report.motion.acceleration_rms.max(axis=0), rtol=1e-12)
+        np.testing.assert_allclose(sweep.columns["acceleration_peak"][1], report.motion.acceleration_peak.max(axis=0), rtol=1e-12)
+        np.testing.assert_allclose(sweep.columns["acceleration_rms"][1], report.motion.acceleration_rms.max(axis=0), rtol=1e-12)
         assert bool(sweep.rows.over_quantities["acceleration"][1])  # 0.0221 > 0.02 at the scene's speeds
     assert sweep.limits == {"displacement": 5.0e-5, "acceleration": 0.02, "velocity_rms": 2.8e-3}
 

@@ -181,11 +181,11 @@ def test_each_row_names_the_modes_as_they_are_at_its_factor(runner, tmp_path):
     springs do not scale alike); each row's conditions carry the labels `fcalc resonance` gives the
     scene written with V_s × sqrt(f), not the first row's."""
     from foundation_calc.api.scene import load
-    from foundation_calc.checks.block_soil_sweep import sweep_block_soil
+    from foundation_calc.checks.sweep.block import sweep_block_soil
 
     document = _piles()
     sweep = sweep_block_soil(load(CONFIGS / "block_on_piles.toml").model, [0.5, 2.0])
-    labels = [[c.label for c in rows] for rows in sweep.row_conditions]
+    labels = [[c.label for c in rows] for rows in sweep.conditions]
     assert labels[0] != labels[1]
     for f, found in zip((0.5, 2.0), labels):
         path = _write(tmp_path, f"piles_{f}", _factored(document, f))

@@ -109,7 +109,7 @@ def test_a_sweep_in_a_pipe_keeps_its_full_status_on_one_line(runner):
 def test_the_compact_status_keeps_every_cause_in_order():
     """The compact status says what the full one says: the verdict, the limits exceeded (u, v, a
     and their RMS), the governing condition with its margin / the margin it needs."""
-    from foundation_calc.checks.sweep_status import status_text
+    from foundation_calc.checks.sweep.status import status_text
 
     assert status_text("fail", "motor: ω = mode 1 (y)", 0.309, 0.2, "clear", ["displacement", "velocity_rms"],
                        compact=True) == "fail over u, v_rms; motor: ω=mode 1 (y) 30.9%/20%"

@@ -148,7 +148,7 @@ def test_sweep_points_among_many_have_the_peaks_they_have_alone(frame_saw):
     """fcalc sweep evaluates its points together; each must come out as if it were alone."""
     from types import SimpleNamespace
 
-    from foundation_calc.checks.crank_sweep import sweep
+    from foundation_calc.checks.sweep.crank import sweep
     from foundation_calc.scenes.crank import CrankScene
 
     design = CrankScene.model_validate(frame_saw).design()
@@ -159,9 +159,9 @@ def test_sweep_points_among_many_have_the_peaks_they_have_alone(frame_saw):
     over = np.zeros(speeds.shape, dtype=bool)
     for point in points:
         alone = sweep(design, "omega", speeds, limits, 0.2, [point])
-        np.testing.assert_allclose(together.points[point[0]], alone.points[point[0]], rtol=1e-14, atol=0)
-        over |= alone.over_quantities["velocity"]
-    np.testing.assert_array_equal(together.over_quantities["velocity"], over)
+        np.testing.assert_allclose(together.columns["points"][point[0]], alone.columns["points"][point[0]], rtol=1e-14, atol=0)
+        over |= alone.rows.over_quantities["velocity"]
+    np.testing.assert_array_equal(together.rows.over_quantities["velocity"], over)
     assert over.any() and not over.all()
 
 

@@ -168,7 +168,7 @@ def test_fcalc_sweep_s_limits_line_wraps_at_80_columns(runner, monkeypatch):
     """The sweep's closing line of limits and detuning (110 characters for frame_saw.toml) wrapped
     only where the terminal cut it: it wraps at words, under its own text."""
     from foundation_calc.cli.app import app
-    from foundation_calc.output import sweep_report
+    from foundation_calc.output import sweep as sweep_report
 
     term = _recording_terminal()
     monkeypatch.setattr(sweep_report, "stdout", lambda: term)

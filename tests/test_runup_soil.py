@@ -357,7 +357,8 @@ def test_crank_soil_sweep_recomputes_the_dynamic_soil_at_each_factor():
     1.3 and judged 3ω = p2 failing there (now ω = p1, passing)."""
     from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
     from foundation_calc.checks.crank_resonance import scene_resonances_as_given
-    from foundation_calc.checks.crank_sweep import joined, scene_sweep_chunks
+    from foundation_calc.checks.sweep.crank import scene_sweep_chunks
+    from foundation_calc.checks.sweep.report import joined
 
     scene = _crank_scene("compressor_medium_sand_lysmer.toml")
     factors = np.array([1.3])
@@ -366,8 +367,8 @@ def test_crank_soil_sweep_recomputes_the_dynamic_soil_at_each_factor():
     for k, factor in enumerate(factors):
         at = scene.with_modulus_factor(float(factor))
         expected = check_scene_amplitudes(at).approximations["first_approximation"].peaks.displacement
-        np.testing.assert_allclose(report.peaks[k], expected, rtol=1e-9)
-        assert report.margin[k] == pytest.approx(scene_resonances_as_given(at).governing.margin, rel=1e-9)
+        np.testing.assert_allclose(report.columns["peaks"][k], expected, rtol=1e-9)
+        assert report.rows.margin[k] == pytest.approx(scene_resonances_as_given(at).governing.margin, rel=1e-9)
 
 
 def test_the_sheets_passages_use_the_resonance_checks_modes():

@@ -17,7 +17,7 @@ import tomli_w
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from foundation_calc.checks.crank_sweep import sweep
+from foundation_calc.checks.sweep.crank import sweep
 from foundation_calc.cli.app import app
 from foundation_calc.errors import PhysicsError, SceneError
 from foundation_calc.scenes import parse_scene
@@ -35,9 +35,9 @@ OFFSETS = np.array([0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-4, -1e-4, 1
 
 
 def _check_sweep(report):
-    assert np.all(np.isfinite(report.peaks)) and np.all(report.peaks >= 0)
-    assert np.all(np.isfinite(report.margin)) and np.all(report.margin >= 0)
-    assert np.all(report.peaks[report.resonant] == 0)
+    assert np.all(np.isfinite(report.columns["peaks"])) and np.all(report.columns["peaks"] >= 0)
+    assert np.all(np.isfinite(report.rows.margin)) and np.all(report.rows.margin >= 0)
+    assert np.all(report.columns["peaks"][report.resonant] == 0)
 
 
 @pytest.mark.parametrize("critical", ["zero_order", "averaged"])
@@ -49,10 +49,10 @@ def test_speeds_near_every_resonance(frame_saw, condition, critical):
     report = sweep(design, "omega", omegas, None, 0.2)
     _check_sweep(report)
     if condition.source == "paper":  # judged: it governs this close (an extra one may be information)
-        assert np.all(report.margin <= np.abs(OFFSETS) * (1 + 1e-6) + 1e-15)
+        assert np.all(report.rows.margin <= np.abs(OFFSETS) * (1 + 1e-6) + 1e-15)
     # an extra condition decides only when its forcing share reaches 1 % (docs/resonance-rule.md)
     expected = {"paper": {"fail", "resonant"}, "extra": {"pass", "warn", "fail", "resonant"}}[condition.source]
-    assert set(report.status) <= expected
+    assert set(report.rows.status) <= expected
     if condition.source == "paper" and critical == "zero_order":
         # the first approximation's own denominators vanish here: no periodic solution
         clear = np.abs(np.abs(OFFSETS) - RESONANT_MARGIN) > 1e-7  # not at the threshold itself
@@ -101,7 +101,7 @@ def test_mu_and_lambda_limits_give_finite_amplitudes(frame_saw, mu, lam):
     design = parse_scene(frame_saw).design()
     report = sweep(design, "omega", np.geomspace(1e-3, 1e4, 121), 2e-4, 0.2)
     _check_sweep(report)
-    peaks = report.peaks[~report.resonant]
+    peaks = report.columns["peaks"][~report.resonant]
     # the amplitude is proportional to μ (μ → 0 leaves a motionless foundation, not 0/0)
     assert np.all(peaks <= 1e4 * mu * design.r + 1e-300)
 
@@ -113,7 +113,7 @@ def test_nearly_equal_p1_p2(frame_saw):
     assert crit["ω = p1"].zero_order == pytest.approx(crit["ω = p2"].zero_order, rel=1e-4)
     report = sweep(design, "omega", crit["ω = p1"].zero_order * (1 + OFFSETS), None, 0.2)
     _check_sweep(report)
-    assert report.resonant[0] and set(report.status) <= {"fail", "resonant"}
+    assert report.resonant[0] and set(report.rows.status) <= {"fail", "resonant"}
 
 
 @pytest.mark.parametrize("reserve", [1e-4, 1e-8, 1e-12])

@@ -9,7 +9,7 @@ import json
 import numpy as np
 import pytest
 
-from foundation_calc.checks.crank_sweep import sweep
+from foundation_calc.checks.sweep.crank import sweep
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import load_scene
 from foundation_calc.solvers.crank.closed_form import design_first_approximation, varied
@@ -38,12 +38,12 @@ def test_vectorised_sweep_equals_scalar_calls():
     soil = sweep(design, "soil_factor", factors, None, 0.2)
     for i, w in enumerate(omegas):
         one = design_first_approximation(varied(design, omega=float(w)))
-        assert abs(report.peaks[i, 1]) >= abs(one.y1) - abs(one.y2) - 1e-30  # peak bounds the harmonics
-        assert report.peaks[i, 1] <= abs(one.y1) + abs(one.y2) + 1e-30
+        assert abs(report.columns["peaks"][i, 1]) >= abs(one.y1) - abs(one.y2) - 1e-30  # peak bounds the harmonics
+        assert report.columns["peaks"][i, 1] <= abs(one.y1) + abs(one.y2) + 1e-30
     for i, f in enumerate(factors):
         one = sweep(varied(design, soil_factor=float(f)), "omega", [design.omega], None, 0.2)
-        assert soil.peaks[i] == pytest.approx(one.peaks[0], rel=1e-13)
-        assert soil.status[i] == one.status[0]
+        assert soil.columns["peaks"][i] == pytest.approx(one.columns["peaks"][0], rel=1e-13)
+        assert soil.rows.status[i] == one.rows.status[0]
 
 
 def test_table_csv_and_units(runner, tmp_path):

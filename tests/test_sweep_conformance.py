@@ -1,6 +1,6 @@
 """`fcalc sweep` of every scene kind that sweeps (crank and block foundations) through one path:
 each row names the governing judged condition and every limit it exceeds
-(:mod:`foundation_calc.checks.sweep_status`), the row at the scene's own speed says what `fcalc
+(:mod:`foundation_calc.checks.sweep.status`), the row at the scene's own speed says what `fcalc
 check` says, unjudged conditions draw no band, and the plot's title stays inside the picture."""
 
 from __future__ import annotations
@@ -79,7 +79,7 @@ def test_the_row_at_the_scenes_speed_says_what_check_says(runner, tmp_path, conf
 
 
 def _status_words(row) -> str:
-    from foundation_calc.checks.sweep_status import status_text
+    from foundation_calc.checks.sweep.status import status_text
 
     text = status_text(row["status"], row["governing_condition"], row["margin"], row["needed"], row["resonance_status"],
                        row["over_limits"])

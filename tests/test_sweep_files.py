@@ -10,7 +10,8 @@ import json
 
 import pytest
 
-from foundation_calc.checks import crank_sweep
+from foundation_calc.checks.sweep import crank as crank_sweep
+from foundation_calc.solvers.crank import sweep as crank_engine
 from foundation_calc.cli.app import app
 from tests.conftest import CONFIGS
 
@@ -45,7 +46,7 @@ def test_long_csv_streams_chunk_by_chunk_and_matches_one_piece(runner, tmp_path,
         sizes.append(len(values))
         return chunk(design, variable, values, *args)
 
-    monkeypatch.setattr(crank_sweep, "CHUNK", 97)
+    monkeypatch.setattr(crank_engine, "CHUNK", 97)
     monkeypatch.setattr(crank_sweep, "_chunk", recording)
     parts = tmp_path / "parts.csv"
     result = runner.invoke(app, ["sweep", str(SAW), "--speed", "100:600:1500", "--csv", str(parts)])

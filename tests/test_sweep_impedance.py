@@ -8,7 +8,7 @@ import pytest
 
 from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes, scene_vendor_loads
 from foundation_calc.checks.crank_resonance import check_scene_resonances
-from foundation_calc.checks.crank_sweep import HARMONICS, scene_dynamic_soil, sweep
+from foundation_calc.checks.sweep.crank import HARMONICS, scene_dynamic_soil, sweep
 from foundation_calc.scenes import parse_scene
 from tests.conftest import CONFIGS, read_toml
 
@@ -45,10 +45,10 @@ def test_a_speed_sweep_is_fcalc_amplitudes_and_resonance_at_each_speed(config, s
         for dof, n in HARMONICS:
             cos, sin = motion.coefficient(dof, n)
             expected = complex(cos - 1j * sin)
-            assert found.harmonics[f"{dof}{n}"][i] == pytest.approx(expected, rel=1e-9, abs=1e-12 * abs(motion.cos).max())
-            moved = max(moved, abs(static.harmonics[f"{dof}{n}"][i] - expected) / abs(motion.cos).max())
+            assert found.columns["harmonics"][f"{dof}{n}"][i] == pytest.approx(expected, rel=1e-9, abs=1e-12 * abs(motion.cos).max())
+            moved = max(moved, abs(static.columns["harmonics"][f"{dof}{n}"][i] - expected) / abs(motion.cos).max())
         resonance = check_scene_resonances(alone)
-        assert found.margin[i] == pytest.approx(resonance.governing.margin, rel=1e-9)
+        assert found.rows.margin[i] == pytest.approx(resonance.governing.margin, rel=1e-9)
     assert moved > 0.01
 
 
@@ -76,4 +76,4 @@ def test_the_loads_sweep_on_gazetas_soil_against_the_block_foundation():
         for dof, n in HARMONICS:
             if n in orders:
                 scale = np.abs(expected[dof]).max()
-                assert abs(found.harmonics[f"{dof}{n}"][i] - expected[dof][orders.index(n)]) <= 1e-10 * scale
+                assert abs(found.columns["harmonics"][f"{dof}{n}"][i] - expected[dof][orders.index(n)]) <= 1e-10 * scale

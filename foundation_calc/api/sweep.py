@@ -101,7 +101,7 @@ def plan(scene, speed: str | float | None = None, soil: str | float | None = Non
                              "'--machine'" if machine is not None else "'--alone'")
         return Plan(loaded, variable, values, unit)
     if variable != "omega":
-        from foundation_calc.checks.block_soil_sweep import refusal
+        from foundation_calc.checks.sweep.block import refusal
 
         if machine is not None or alone:
             raise UsageError("--machine and --alone choose the machine whose speed is swept; a soil sweep runs every"
@@ -123,7 +123,7 @@ def plan(scene, speed: str | float | None = None, soil: str | float | None = Non
 
 def chunks(planned: Plan):
     """The sweep of a crank scene's :class:`Plan` in chunks (memory: one chunk at a time)."""
-    from foundation_calc.checks.crank_sweep import scene_sweep_chunks
+    from foundation_calc.checks.sweep.crank import scene_sweep_chunks
 
     return scene_sweep_chunks(planned.scene.model, planned.variable, planned.values)
 

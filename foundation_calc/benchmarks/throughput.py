@@ -97,7 +97,7 @@ def sweep_throughput(design: CrankDesign, designs: int = 1_000_000, scalar_desig
     """``fcalc sweep``'s computation (first approximation, peaks, every margin, status, a
     displacement limit) over ``designs`` speeds ±30 % around the design's in one call, against
     one call per speed."""
-    from foundation_calc.checks.crank_sweep import sweep
+    from foundation_calc.checks.sweep.crank import sweep
 
     speeds = perturbed_designs(design, designs).omega
     limits = SimpleNamespace(amplitude=1.0e-4)

@@ -47,6 +47,7 @@ from foundation_calc.solvers.crank.response import (
     point_peaks,
     point_rms,
     relative_error,
+    splice_harmonics,
     superpose,
 )
 
@@ -461,19 +462,6 @@ def _at_soil_frequency(scene, soil_frequency: float, exact: bool, supports=None,
     design = None if scene.mechanism is None else scene.design(soil_frequency)
     return check_amplitudes(design, scene.limits, scene.points, exact=exact,
                             vendor=scene_vendor_loads(scene, soil_frequency), supports=supports, resonance=resonance)
-
-
-def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
-    """Harmonic n of ``motions[n]``: the steady state of a foundation whose springs depend on
-    frequency, each harmonic solved with the springs at its own frequency n ω (the system is
-    linear in the base's impedance, harmonic by harmonic). ``motions[1]`` gives ω."""
-    width = max(m.cos.shape[-1] for m in motions)
-    shape = np.broadcast_shapes(*(m.cos.shape[:-1] for m in motions)) + (width,)
-    cos, sin = np.zeros(shape), np.zeros(shape)
-    for n, m in enumerate(motions):
-        if n < m.cos.shape[-1]:
-            cos[..., n], sin[..., n] = m.cos[..., n], m.sin[..., n]
-    return PeriodicMotion(motions[1].omega, cos, sin)
 
 
 def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:

@@ -143,8 +143,8 @@ def _dependent_motion(scene, at, factor, speed):
     n ω (the mean on the static springs); a sample where it steps aside (the rocking spring at one
     of its harmonics' soil does not exceed P h, :func:`~foundation_calc.solvers.crank.closed_form.soft_at_harmonic`)
     gets the averaged operator with the exact forcing, each harmonic n at n ω
-    (:func:`~foundation_calc.checks.crank_sweep.coupled_motion`), which the check judges there."""
-    from foundation_calc.checks.crank_sweep import FIRST_APPROXIMATION_HARMONICS, coupled_motion, side_by_side
+    (:func:`~foundation_calc.solvers.crank.sweep.coupled_motion`), which the check judges there."""
+    from foundation_calc.solvers.crank.sweep import FIRST_APPROXIMATION_HARMONICS, coupled_motion, side_by_side
     from foundation_calc.solvers.crank.averaged import block_matrices
 
     omega = at(0.0, factor, speed).omega

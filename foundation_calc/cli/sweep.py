@@ -107,8 +107,10 @@ def sweep(
         with writing(csv, "--csv"):
             write_chunks_atomically(csv, (out.sweep_csv(result.report),))
     if plot is not None:
+        from foundation_calc.output.sweep_plot import plot_sweep
+
         with writing(plot, "--plot"):
-            out.plot_sweep(result.report, loaded.model, plot, shown, name)
+            plot_sweep(result.report, loaded.model, plot, shown, name)
     if json:
         from foundation_calc.output.console import print_json
 
@@ -124,8 +126,9 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
     from dataclasses import replace
 
     from foundation_calc.api.options import writing
-    from foundation_calc.output import sweep_report as report_out
+    from foundation_calc.output import sweep as report_out
     from foundation_calc.output.files import write_chunks_atomically
+    from foundation_calc.output.sweep_plot import joined_plot, plot_sweep, plotted
 
     statuses, kept, first = Counter(), [], []
 
@@ -134,17 +137,16 @@ def _stream_csv(chunks, csv: Path, plot, scene, shown, name: str, count: int) ->
             if not first:
                 first.append(part)
                 yield report_out.csv_header(part)
-            if part.not_applicable and not first[0].not_applicable:  # a later chunk's speeds step aside: say so
-                first[0] = replace(first[0], not_applicable=part.not_applicable)
-            statuses.update(map(str, part.status))
+            if part.setup["not_applicable"] and not first[0].setup["not_applicable"]:  # a later chunk's speeds step aside
+                first[0] = replace(first[0], setup={**first[0].setup, "not_applicable": part.setup["not_applicable"]})
+            statuses.update(map(str, part.rows.status))
             if plot is not None:
-                kept.append(report_out.plotted(part))
+                kept.append(plotted(part))
             yield report_out.csv_rows(part)
 
     with writing(csv, "--csv"):
         write_chunks_atomically(csv, texts())
     if plot is not None:
         with writing(plot, "--plot"):
-            report_out.plot_sweep(report_out.joined_plot(first[0], kept), plot, shown, name,
-                                  report_out.operating(scene, first[0].variable))
+            plot_sweep(joined_plot(first[0], kept), scene, plot, shown, name)
     report_out.print_sweep_summary(count, statuses, first[0], str(csv), shown)

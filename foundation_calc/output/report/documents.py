@@ -43,9 +43,9 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[
     import numpy as np
 
     from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
-    from foundation_calc.checks.crank_sweep import scene_dynamic_soil, sweep
+    from foundation_calc.checks.sweep.crank import scene_dynamic_soil, sweep
     from foundation_calc.output.report.figures import sweep_factors, sweep_figure
-    from foundation_calc.output.sweep_report import sweep_document
+    from foundation_calc.output.sweep import sweep_document
 
     design = None if loaded.mechanism is None else loaded.design()
     omegas = loaded.speed.omega_rad_s * np.linspace(*sweep_factors(omega, resonances), SWEEP_POINTS)
@@ -53,7 +53,7 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[
     coupled = design is not None and design.coupled  # the one model, its support at each harmonic's frequency
     swept = sweep(design, "omega", omegas, loaded.limits, loaded.limits.detuning, points, scene_vendor_loads(loaded),
                   scene_dynamic_soil(loaded) if coupled else None)
-    return sweep_figure(sweep_series(sweep_document(swept, "", loaded.name)), omega, units)
+    return sweep_figure(sweep_series(sweep_document(swept, loaded, "")), omega, units)
 
 
 def exact_amplitudes(loaded) -> dict | None:

@@ -100,15 +100,15 @@ def block_sweep_figures(loaded, units: DisplayUnits, resonance: dict) -> tuple[F
 
     import numpy as np
 
-    from foundation_calc.checks.block_sweep import sweep_block
-    from foundation_calc.output.block_sweep import plot_sweep
+    from foundation_calc.checks.sweep.block import sweep_block
+    from foundation_calc.output.sweep_plot import plot_sweep
     figures = []
     for k, (name, speed) in enumerate(resonance["machines"].items()):
         own = [r for r in resonance["resonances"] if r["machine"] == name]
         sweep = sweep_block(loaded, k, speed["omega"] * np.linspace(*sweep_factors(speed["omega"], own), BLOCK_SWEEP_POINTS))
         with tempfile.TemporaryDirectory(prefix="fcalc-sweep-") as folder:
             path = Path(folder) / "sweep.svg"
-            plot_sweep(sweep, path, units, loaded.name or "block")
+            plot_sweep(sweep, loaded, path, units, loaded.name or "block")
             svg = path.read_text(encoding="utf-8")
         caption = (
             f"Sweep of {name}'s speed, the other machines at their own: the largest peak displacement over G and"

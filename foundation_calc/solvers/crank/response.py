@@ -168,6 +168,19 @@ def superpose(a: PeriodicMotion, b: PeriodicMotion) -> PeriodicMotion:
     return PeriodicMotion(a.omega, padded(a.cos) + padded(b.cos), padded(a.sin) + padded(b.sin))
 
 
+def splice_harmonics(motions: list[PeriodicMotion]) -> PeriodicMotion:
+    """Harmonic n of ``motions[n]``: the steady state of a foundation whose springs depend on
+    frequency, each harmonic solved with the springs at its own frequency n ω (the system is
+    linear in the base's impedance, harmonic by harmonic). ``motions[1]`` gives ω."""
+    width = max(m.cos.shape[-1] for m in motions)
+    shape = np.broadcast_shapes(*(m.cos.shape[:-1] for m in motions)) + (width,)
+    cos, sin = np.zeros(shape), np.zeros(shape)
+    for n, m in enumerate(motions):
+        if n < m.cos.shape[-1]:
+            cos[..., n], sin[..., n] = m.cos[..., n], m.sin[..., n]
+    return PeriodicMotion(motions[1].omega, cos, sin)
+
+
 def relative_error(approx, exact):
     """|approx - exact| / |exact| [-] (arrays or complex); 0 where both are 0."""
     diff = np.abs(np.asarray(approx) - np.asarray(exact))
@@ -190,5 +203,6 @@ __all__ = [
     "theta_minus_sine",
     "relative_error",
     "rms_values",
+    "splice_harmonics",
     "superpose",
 ]
