@@ -28,9 +28,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks import codes, limits as limit_check
-from foundation_calc.checks.codes import ZoneRow, code_warnings
-from foundation_calc.checks.limits import AmplitudeWording, LimitRow, amplitude_outcome
+from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
+from foundation_calc.checks.codes import ZoneRow
+from foundation_calc.checks.limits import AmplitudeWording, LimitRow
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
@@ -51,8 +51,10 @@ NO_STEADY_STATE = "an order is resonant with an undamped mode: no steady state"
 
 
 @dataclass(frozen=True)
-class BlockReport:
-    """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene."""
+class BlockReport(AmplitudeVerdict):
+    """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene: its
+    amplitudes' common part (:mod:`~foundation_calc.checks.amplitudes`) judged on the machines'
+    combined motion, and its modes, resonances and office checks."""
 
     modes: BlockModes
     speeds: dict
@@ -76,11 +78,6 @@ class BlockReport:
     #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
     #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
     periodic: tuple = ()
-
-    @property
-    def amplitude_outcome(self) -> Outcome:
-        ranged = () if self.amplitude_range is None else (self.amplitude_range.outcome,)
-        return amplitude_outcome(self.resonant, self.limit_rows, self.zone_rows, ranged)
 
     @property
     def office_outcome(self) -> Outcome:
@@ -117,18 +114,6 @@ LIMITED_VALUES = {
     "acceleration": "acceleration_peak",
     "acceleration_rms": "acceleration_rms",
 }
-
-
-def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
-    """Each limited quantity of G and every point along x, y, z
-    (:func:`~foundation_calc.checks.limits.limit_rows`)."""
-    return limit_check.limit_rows(motion.names, DIRECTIONS, lambda quantity: getattr(motion, LIMITED_VALUES[quantity]), limits)
-
-
-def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
-    """The code zone of G and every point (:func:`~foundation_calc.checks.codes.zone_rows`; ``supports``:
-    point name -> (x, y, z) classes, :func:`~foundation_calc.checks.support.block_supports`)."""
-    return codes.zone_rows(motion.names, DIRECTIONS, motion.velocity_rms, motion.displacement_rms, limits, supports)
 
 
 #: [scene, its report, the report with the machines' periodic solution (None until asked)]
@@ -221,15 +206,18 @@ def check_block_as_given(scene) -> BlockReport:
         from foundation_calc.checks.support import block_supports
 
         supports = block_supports(scene, modes, model.cog)
+    values = None if motion is None else (lambda quantity: getattr(motion, LIMITED_VALUES[quantity]))
+    judged = judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
+                   [(exc.name, exc.omega) for exc in excitations], supports)
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
         resonance=resonance,
         resonant=stuck,
         motion=motion,
-        limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits, supports),
-        code_warnings=code_warnings(limits, [(exc.name, exc.omega) for exc in excitations]),
+        limit_rows=judged.limit_rows,
+        zone_rows=judged.zone_rows,
+        code_warnings=judged.code_warnings,
         office=office_rows(scene, model),
         total_mass=model.mass,
         cog=model.cog,
@@ -237,5 +225,4 @@ def check_block_as_given(scene) -> BlockReport:
 
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
-           "check_block_as_given", "condition_label", "limit_rows", "scene_impedance",
-           "scene_modes", "zone_rows"]
+           "check_block_as_given", "condition_label", "scene_impedance", "scene_modes"]

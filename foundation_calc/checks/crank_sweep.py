@@ -11,7 +11,7 @@ On a frequency-dependent soil (Gazetas', Pais & Kausel's impedance) a speed swee
 frequency-consistent, as ``fcalc amplitudes`` at each speed: every harmonic n ≥ 1 of every speed
 is solved with the soil's springs and dashpots at n ω (one batched first approximation and loads
 solve per harmonic over the whole chunk of speeds, harmonics spliced as
-:func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics` does; the mean on the static
+:func:`~foundation_calc.solvers.crank.response.splice_harmonics` does; the mean on the static
 springs), and the resonance margins are to the natural frequencies that solve ω = p(K(ω)), which
 do not depend on the speed (:class:`DynamicSoil`). A soil sweep on such a soil multiplies the soil's
 stiffness data (G, or V_s by the square root) by the factor and recomputes everything from them
@@ -21,7 +21,7 @@ and ``fcalc resonance`` of the scene with that soil. On a frequency-independent 
 multiplies the springs by the factor and the dashpots by its square root.
 
 On a support that couples sway with rocking (a pile group's K_xφ, C_xφ at O) the paper's closed
-forms do not apply ("not applicable", :data:`~foundation_calc.checks.crank_amplitudes.FIRST_NOT_APPLICABLE`):
+forms do not apply ("not applicable", :data:`~foundation_calc.checks.approximations.FIRST_NOT_APPLICABLE`):
 the peaks are the plane's one model's, the averaged operator with the exact forcing as ``fcalc
 amplitudes`` solves it there, each harmonic n at n ω on the support's springs and dashpots at n ω,
 for every speed at once (:func:`coupled_motion`: the mechanism's part, a polynomial of degree 2
@@ -223,7 +223,7 @@ def _varied_block(block, variable: str, values):
 def _at_harmonics(static, width: int, solve):
     """The motion whose harmonic n ≥ 1 is that of ``solve(n)`` (a (motion, resonant) pair on the
     springs at n ω) and whose mean is ``static``'s; and where any of them is resonant."""
-    from foundation_calc.checks.crank_amplitudes import splice_harmonics
+    from foundation_calc.solvers.crank.response import splice_harmonics
 
     motions, resonant = [static[0]], np.asarray(static[1], dtype=bool)
     for n in range(1, width):
@@ -239,7 +239,7 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
     not_applicable = {}
     coupled = design is not None and design.coupled
     if coupled:
-        from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
+        from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
 
         motion, resonant = coupled_motion(design, values, _static_blocks(design) if dynamic is None else dynamic.blocks)
         zero, averaged = design_frequencies(design) if dynamic is None else (dynamic.zero, dynamic.averaged)
@@ -470,7 +470,7 @@ def factored_soil_chunks(scene, values, limits, detuning, points=()):
     ω = p(K(ω)) (:func:`scene_dynamic_soil`). ``limits``, ``detuning``, ``points`` as
     :func:`sweep` takes them; the conditions and their forcing shares are the scene's as given,
     as :func:`sweep_chunks` takes them."""
-    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+    from foundation_calc.checks.approximations import scene_vendor_loads
 
     vendor = scene_vendor_loads(scene)
     conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(),
@@ -488,7 +488,7 @@ def scene_sweep_chunks(scene, variable: str, values):
     """The chunks of a sweep of a ``crank_foundation`` scene (:func:`sweep_chunks`) of ``variable``
     over ``values``, with its [limits], [[points]] and [[loads]]: frequency-consistent on a
     frequency-dependent soil (module docstring)."""
-    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+    from foundation_calc.checks.approximations import scene_vendor_loads
 
     points = [(p.name, p.horizontal, p.height) for p in scene.points]
     limits, detuning = scene.limits, scene.limits.detuning
@@ -530,7 +530,7 @@ def sweep(
     ``points``: (name, horizontal, height) [m] of body points relative to C, as the scene's
     ``[[points]]``; their peaks come from the same series (rigid-body motion, exact in θ).
     ``vendor``: the scene's ``[[loads]]``
-    (:class:`~foundation_calc.checks.crank_amplitudes.VendorLoads`), whose linear steady state
+    (:class:`~foundation_calc.checks.approximations.VendorLoads`), whose linear steady state
     is added to the mechanism's, or is the whole motion when ``design`` is None; their
     conditions n ω = k0, p1, p2 join the mechanism's. ``dynamic``: a frequency-dependent soil
     (:class:`DynamicSoil`, :func:`scene_dynamic_soil`). Computed in chunks (:func:`sweep_chunks`).
@@ -548,7 +548,7 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
     on the others."""
     if not scene.support().frequency_dependent:
         return None
-    from foundation_calc.checks.crank_amplitudes import scene_vendor_loads
+    from foundation_calc.checks.approximations import scene_vendor_loads
     from foundation_calc.checks.crank_resonance import scene_block_frequencies, scene_design_frequencies
 
     def at(soil_frequency):

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from foundation_calc.checks.block_soil import SoilAt, support_at
 
 #: The harmonics n of the speed tabled: the mechanism's forcing of the first approximation, whose
-#: vertical motion runs to 4 ω (:data:`~foundation_calc.checks.crank_amplitudes.HARMONICS`); the
+#: vertical motion runs to 4 ω (:data:`~foundation_calc.checks.approximations.HARMONICS`); the
 #: amplitudes take harmonic n on the springs at n ω.
 ORDERS = (1, 2, 3, 4)
 

@@ -131,7 +131,7 @@ def worst_row_point(factor: float, outcome: Outcome, rows) -> RangePoint:
 
 
 def amplitude_point(factor: float, report) -> RangePoint:
-    """A crank :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport` at one factor."""
+    """A crank :class:`~foundation_calc.checks.approximations.AmplitudeReport` at one factor."""
     if report.resonant:
         approx = report.approximations[report.checked]
         return RangePoint(factor, report.outcome, f"resonant ({approx.nearest}): no steady state", math.inf)
@@ -142,7 +142,7 @@ def amplitudes_over_range(scene, check, crossings=(), point=amplitude_point) -> 
     """``check(scene)`` at :data:`AMPLITUDE_GRID_POINTS` factors of the scene's
     ``soil.modulus_range`` and at the resonance ``crossings`` [(factor, condition)], where the
     steady state peaks; ``point(factor, report)`` reads each report (default: a crank
-    :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport`)."""
+    :class:`~foundation_calc.checks.approximations.AmplitudeReport`)."""
     low, high = scene.soil.modulus_range
     factors = sorted({*modulus_factors(low, high, AMPLITUDE_GRID_POINTS), *(f for f, _ in crossings)})
     return ModulusRangeResult(

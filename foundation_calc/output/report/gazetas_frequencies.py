@@ -2,7 +2,7 @@
 at each mode's own frequency.
 
 On a frequency-dependent soil (``soil.method = "gazetas"``) the amplitudes solve harmonic n with
-the springs and dashpots at n ω (:func:`~foundation_calc.checks.crank_amplitudes.splice_harmonics`),
+the springs and dashpots at n ω (:func:`~foundation_calc.solvers.crank.response.splice_harmonics`),
 and the resonance check takes every mode at the root of ω = p(K(ω))
 (:func:`~foundation_calc.solvers.soil.impedance.consistent_frequency`, bracketed between the
 static value p_s and p(p_s)). The sheet shows both as columns of one chain
