@@ -33,7 +33,6 @@ from foundation_calc.checks.crank_resonance import (
 from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
 from foundation_calc.checks.codes import ZoneRow
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording, LimitRow
-from foundation_calc.checks.outcomes import Outcome
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import COUPLED_SUPPORT, design_first_approximation
@@ -186,19 +185,10 @@ class AmplitudeReport(AmplitudeVerdict):
     def resonant(self) -> bool:
         return self.approximations[self.checked].resonant
 
-    # the names the soil's range (:func:`~foundation_calc.checks.soil_range.amplitude_point`) reads
-
     @property
-    def outcome(self) -> Outcome:
-        return self.amplitude_outcome
-
-    @property
-    def rows(self) -> tuple[LimitRow, ...]:
-        return self.limit_rows
-
-    @property
-    def code_rows(self) -> tuple[ZoneRow, ...]:
-        return self.zone_rows
+    def no_steady_state(self) -> str:
+        """Why there is no steady state to judge (when ``resonant``): the checked approximation's nearest resonance."""
+        return f"resonant ({self.approximations[self.checked].nearest}): no steady state"
 
     @property
     def wording(self) -> AmplitudeWording:

@@ -90,19 +90,14 @@ class BlockReport(AmplitudeVerdict):
         return AmplitudeWording(resonant=(NO_STEADY_STATE,))
 
     @property
+    def no_steady_state(self) -> str:
+        """Why there is no steady state to judge (when ``resonant``)."""
+        return NO_STEADY_STATE
+
+    @property
     def nearest(self) -> ResonanceRow:
         """The governing resonance row (the rule's governing condition)."""
         return self.resonance.governing
-
-
-def amplitude_point(factor: float, report: BlockReport):
-    """The amplitude check of ``report`` (the soil as given at ``factor``) as a
-    :class:`~foundation_calc.checks.soil_range.RangePoint`."""
-    from foundation_calc.checks.soil_range import RangePoint, worst_row_point
-
-    if report.resonant:
-        return RangePoint(factor, Outcome.FAIL, NO_STEADY_STATE, float("inf"))
-    return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 
 #: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
@@ -172,7 +167,7 @@ def _check_block(scene) -> BlockReport:
 
     resonance = resonances_over_range(scene, at_factor, lambda f, r: resonance_point(f, r.resonance),
                                       lambda r: r.resonance.offsets())
-    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings, amplitude_point)
+    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings)
     return replace(report, resonance=replace(report.resonance, modulus_range=resonance), amplitude_range=amplitude)
 
 
@@ -224,5 +219,5 @@ def check_block_as_given(scene) -> BlockReport:
     )
 
 
-__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
+__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block",
            "check_block_as_given", "condition_label", "scene_impedance", "scene_modes"]
