@@ -58,12 +58,24 @@ def judge(names, directions, values: Callable | None, limits, speeds, supports=N
 
 
 class AmplitudeVerdict:
-    """The verdict of an amplitude report of any kind, from its ``resonant``, ``limit_rows``,
-    ``zone_rows``, ``code_warnings`` and ``amplitude_range`` (the check over the soil's
+    """The common part of an amplitude report of any kind: its :class:`Judgement` (``judgement``)
+    and the verdict from it, ``resonant`` and ``amplitude_range`` (the check over the soil's
     ``modulus_range``, None without one)."""
 
     #: whether a code's warnings (its speed or power ranges) make the verdict warn
     WARNINGS_WARN: ClassVar[bool] = False
+
+    @property
+    def limit_rows(self) -> tuple[LimitRow, ...]:
+        return self.judgement.limit_rows
+
+    @property
+    def zone_rows(self) -> tuple[ZoneRow, ...]:
+        return self.judgement.zone_rows
+
+    @property
+    def code_warnings(self) -> tuple[str, ...]:
+        return self.judgement.code_warnings
 
     @property
     def amplitude_outcome(self) -> Outcome:

@@ -30,9 +30,8 @@ from foundation_calc.checks.crank_resonance import (
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
-from foundation_calc.checks.codes import ZoneRow
-from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording, LimitRow
+from foundation_calc.checks.amplitudes import AmplitudeVerdict, Judgement, judge
+from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import COUPLED_SUPPORT, design_first_approximation
@@ -150,12 +149,10 @@ class AmplitudeReport(AmplitudeVerdict):
     design: CrankDesign | None
     approximations: dict
     checked: str
-    limit_rows: tuple[LimitRow, ...]
+    judgement: Judgement
     exact_info: ExactInfo | None
     errors: dict | None
     damping: Damping | None = None
-    zone_rows: tuple[ZoneRow, ...] = ()
-    code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
     resonance: ResonanceReport | None = None
     #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
@@ -282,17 +279,16 @@ def _stacked(by_point: dict, quantity: str) -> np.ndarray:
     return np.array([getattr(values, quantity) for values in by_point.values()])
 
 
-def _judged(approx: Approximation, limits, omega: float, supports=None) -> dict:
-    """The limit rows, zone rows and code warnings of C and every point of ``approx`` as the
-    report's fields (:func:`~foundation_calc.checks.amplitudes.judge`; ``supports``: point name ->
-    (horizontal, vertical) :class:`~foundation_calc.checks.support.SupportClass`, as
-    :func:`scene_supports` gives them; None: the scene's ``limits.foundation`` everywhere)."""
+def _judged(approx: Approximation, limits, omega: float, supports=None) -> Judgement:
+    """The limit rows, zone rows and code warnings of C and every point of ``approx``
+    (:func:`~foundation_calc.checks.amplitudes.judge`; ``supports``: point name -> (horizontal,
+    vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports` gives
+    them; None: the scene's ``limits.foundation`` everywhere)."""
 
     def values(quantity):
         return _stacked(approx.rms, quantity[:-4]) if quantity.endswith("_rms") else _stacked(approx.points, quantity)
 
-    judged = judge(list(approx.points), DIRECTIONS, None if approx.resonant else values, limits, [(None, omega)], supports)
-    return {"limit_rows": judged.limit_rows, "zone_rows": judged.zone_rows, "code_warnings": judged.code_warnings}
+    return judge(list(approx.points), DIRECTIONS, None if approx.resonant else values, limits, [(None, omega)], supports)
 
 
 def scene_supports(scene):
@@ -394,7 +390,7 @@ def check_amplitudes(
         vendor=vendor,
         resonance=resonance,
         not_applicable=not_applicable,
-        **_judged(approximations[checked], limits, omega, supports),
+        judgement=_judged(approximations[checked], limits, omega, supports),
     )
 
 
@@ -464,7 +460,7 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
         motion = splice_harmonics([r.approximations[key].motion for r in used])
         approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
     return replace(base, approximations=approximations, not_applicable=not_applicable,
-                   **_judged(approximations[base.checked], scene.limits, omega, supports))
+                   judgement=_judged(approximations[base.checked], scene.limits, omega, supports))
 
 
 __all__ = [
@@ -473,9 +469,7 @@ __all__ = [
     "AmplitudeReport",
     "Approximation",
     "Damping",
-    "LimitRow",
     "VendorLoads",
-    "ZoneRow",
     "check_amplitudes",
     "check_scene_amplitudes",
     "scene_supports",

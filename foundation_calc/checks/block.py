@@ -28,9 +28,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
-from foundation_calc.checks.codes import ZoneRow
-from foundation_calc.checks.limits import AmplitudeWording, LimitRow
+from foundation_calc.checks.amplitudes import AmplitudeVerdict, Judgement, judge
+from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
 from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
@@ -63,9 +62,7 @@ class BlockReport(AmplitudeVerdict):
     resonance: ResonanceReport
     resonant: bool
     motion: PointMotion | None
-    limit_rows: tuple[LimitRow, ...]
-    zone_rows: tuple[ZoneRow, ...]
-    code_warnings: tuple[str, ...]
+    judgement: Judgement
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
@@ -202,22 +199,19 @@ def check_block_as_given(scene) -> BlockReport:
 
         supports = block_supports(scene, modes, model.cog)
     values = None if motion is None else (lambda quantity: getattr(motion, LIMITED_VALUES[quantity]))
-    judged = judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
-                   [(exc.name, exc.omega) for exc in excitations], supports)
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
         resonance=resonance,
         resonant=stuck,
         motion=motion,
-        limit_rows=judged.limit_rows,
-        zone_rows=judged.zone_rows,
-        code_warnings=judged.code_warnings,
+        judgement=judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
+                        [(exc.name, exc.omega) for exc in excitations], supports),
         office=office_rows(scene, model),
         total_mass=model.mass,
         cog=model.cog,
     )
 
 
-__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "check_block",
+__all__ = ["LIMITED_VALUES", "BlockReport", "ResonanceRow", "check_block",
            "check_block_as_given", "condition_label", "scene_impedance", "scene_modes"]
