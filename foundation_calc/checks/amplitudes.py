@@ -57,10 +57,23 @@ def judge(names, directions, values: Callable | None, limits, speeds, supports=N
     return Judgement(limit_rows(names, directions, values, limits), zones, warnings)
 
 
+@dataclass(frozen=True, kw_only=True)
 class AmplitudeVerdict:
-    """The common part of an amplitude report of any kind: its :class:`Judgement` (``judgement``)
-    and the verdict from it, ``resonant`` and ``amplitude_range`` (the check over the soil's
-    ``modulus_range``, None without one)."""
+    """The common part of an amplitude report of any kind, and the verdict from it with the kind's
+    ``resonant`` (no steady state to judge)."""
+
+    #: the limit rows, zone rows and code warnings (:func:`judge`)
+    judgement: Judgement
+    #: the resonance rule's report beside the amplitudes (a block's: every order of every machine
+    #: against every mode, with the check over the soil's ``modulus_range`` and the soil model's
+    #: validity once they are known)
+    resonance: object = None
+    #: the amplitude check over the soil's ``modulus_range``
+    #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
+    amplitude_range: object = None
+    #: a0 of the judged modes and orders against the soil method's fitted range
+    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
+    soil_validity: object = None
 
     #: whether a code's warnings (its speed or power ranges) make the verdict warn
     WARNINGS_WARN: ClassVar[bool] = False

@@ -149,17 +149,10 @@ class AmplitudeReport(AmplitudeVerdict):
     design: CrankDesign | None
     approximations: dict
     checked: str
-    judgement: Judgement
     exact_info: ExactInfo | None
     errors: dict | None
     damping: Damping | None = None
     vendor: VendorLoads | None = None
-    resonance: ResonanceReport | None = None
-    #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
-    amplitude_range: object = None
-    #: a0 of the judged modes and orders against the soil method's fitted range
-    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
-    soil_validity: object = None
     #: approximation key -> why it is not computed for this design (:data:`FIRST_NOT_APPLICABLE`; a
     #: harmonic's soil where the first approximation does not apply,
     #: :func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`)

@@ -28,11 +28,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.amplitudes import AmplitudeVerdict, Judgement, judge
+from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
 from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
+from foundation_calc.checks.resonance import ResonanceRow, condition_label, modes_resonances
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
@@ -57,21 +57,11 @@ class BlockReport(AmplitudeVerdict):
 
     modes: BlockModes
     speeds: dict
-    #: every order of every machine against every mode, judged by the rule (with the check over
-    #: the soil's ``modulus_range`` and the soil model's validity, once they are known)
-    resonance: ResonanceReport
     resonant: bool
     motion: PointMotion | None
-    judgement: Judgement
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
-    #: the amplitude check over the soil's ``modulus_range``
-    #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
-    amplitude_range: object = None
-    #: a0 of the judged modes and orders against the soil method's fitted range
-    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
-    soil_validity: object = None
     #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
     #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
     periodic: tuple = ()
