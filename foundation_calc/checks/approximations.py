@@ -1,6 +1,6 @@
 """A crank mechanism's section of the amplitude check (``fcalc amplitudes`` of a crank scene): the
 approximations of its foundation's periodic steady state, judged by the rules of every kind
-(:func:`~foundation_calc.checks.amplitudes.judge`).
+(:func:`~foundation_calc.checks.amplitude_report.judge`).
 
 Three approximations of the same periodic steady state are computed for one design:
 
@@ -30,7 +30,7 @@ from foundation_calc.checks.crank_resonance import (
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.amplitudes import AmplitudeVerdict, Judgement, judge
+from foundation_calc.checks.amplitude_report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
@@ -274,7 +274,7 @@ def _stacked(by_point: dict, quantity: str) -> np.ndarray:
 
 def _judged(approx: Approximation, limits, omega: float, supports=None) -> Judgement:
     """The limit rows, zone rows and code warnings of C and every point of ``approx``
-    (:func:`~foundation_calc.checks.amplitudes.judge`; ``supports``: point name -> (horizontal,
+    (:func:`~foundation_calc.checks.amplitude_report.judge`; ``supports``: point name -> (horizontal,
     vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports` gives
     them; None: the scene's ``limits.foundation`` everywhere)."""
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.amplitudes import AmplitudeVerdict, judge
+from foundation_calc.checks.amplitude_report import AmplitudeVerdict, judge
 from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
