@@ -6,10 +6,8 @@ range, the soil model's validity and the verdict (:mod:`~foundation_calc.output.
 :mod:`~foundation_calc.output.notes`). What a kind shows of its motion is its sections module's:
 a crank scene's approximations of C in x, y, θ (:mod:`~foundation_calc.output.approximations`), a
 block's modes and every machine's harmonics of G and its points in x, y, z
-(:mod:`~foundation_calc.output.machine_harmonics`). A sections module gives ``DIRECTIONS`` (its
-points' directions), ``CODE_DIRECTIONS`` (:func:`~foundation_calc.output.limits.code_document`'s),
-``document_parts``, ``print_motion``, ``limits_title``, ``print_after_zones``, ``warning``,
-``print_notes`` and ``verdict_line``.
+(:mod:`~foundation_calc.output.machine_harmonics`). A sections module gives every name of
+:data:`SECTIONS`.
 """
 
 from __future__ import annotations
@@ -17,6 +15,14 @@ from __future__ import annotations
 from foundation_calc.output.console import stdout
 from foundation_calc.output.limits import code_document, limits_document, limits_table, summarised, zones_table
 from foundation_calc.output.notes import print_soil_validity, print_supports, soil_validity_document
+
+
+#: What a kind's sections module gives: its points' directions, the code document's per-direction
+#: values (:func:`~foundation_calc.output.limits.code_document`), its parts of the JSON document,
+#: its heading and motion, the limits table's title, what follows the zones, a code's warning, what
+#: follows the warnings, the verdict line.
+SECTIONS = ("DIRECTIONS", "CODE_DIRECTIONS", "document_parts", "print_motion", "limits_title", "print_after_zones",
+            "warning", "print_notes", "verdict_line")
 
 
 def _sections(scene):
@@ -73,4 +79,4 @@ def print_amplitudes(report, scene, source: str, units, all_points: bool = False
     out.print(kind.verdict_line(report, strict))
 
 
-__all__ = ["amplitudes_document", "print_amplitudes"]
+__all__ = ["SECTIONS", "amplitudes_document", "print_amplitudes"]
