@@ -24,13 +24,13 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from foundation_calc.checks.amplitude_report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.crank_resonance import (
     ResonanceReport,
     check_block_resonances,
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.amplitude_report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response

@@ -15,8 +15,8 @@ from foundation_calc.checks.approximations import HARMONICS, QUANTITIES, Amplitu
 from foundation_calc.checks.governing import governing_points, tally
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, Hanging, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.resonance import rule_document
 from foundation_calc.output.limits import EVERY_ROW, summarised
+from foundation_calc.output.resonance import rule_document
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
