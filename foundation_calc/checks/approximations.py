@@ -142,7 +142,7 @@ class Damping:
 
 @dataclass(frozen=True)
 class AmplitudeReport(AmplitudeVerdict):
-    """A crank scene's amplitude report: the common part (:mod:`~foundation_calc.checks.amplitudes`)
+    """A crank scene's amplitude report: the common part (:mod:`~foundation_calc.checks.amplitude_report`)
     judged on the ``checked`` approximation, and the approximations themselves. ``design`` is None
     for a machine given by its loads only (``vendor`` then holds them)."""
 

@@ -52,7 +52,7 @@ NO_STEADY_STATE = "an order is resonant with an undamped mode: no steady state"
 @dataclass(frozen=True)
 class BlockReport(AmplitudeVerdict):
     """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene: its
-    amplitudes' common part (:mod:`~foundation_calc.checks.amplitudes`) judged on the machines'
+    amplitudes' common part (:mod:`~foundation_calc.checks.amplitude_report`) judged on the machines'
     combined motion, and its modes, resonances and office checks."""
 
     modes: BlockModes
