@@ -44,3 +44,16 @@ def test_a_block_zone_table_shows_the_velocity_along_each_axis(runner):
     # the velocities the JSON gives for G, independently of the zone rows (its points part)
     cells = [cell.strip() for cell in row.split("│")[2:5]]
     assert cells == [fmt(doc["points"]["G"]["velocity_rms"][axis]) for axis in "xyz"]
+
+
+def test_every_kinds_sections_give_what_the_one_amplitude_layer_reads():
+    """output/amplitudes.py writes every kind's document and tables around the same judged part and
+    reads a kind's sections by the names of ``SECTIONS``: each kind's module gives all of them (a
+    hook missing would fail only on that kind's scenes, at run time)."""
+    from foundation_calc.output.amplitudes import SECTIONS, _sections
+    from foundation_calc.scenes import parse_scene
+
+    for config in ("frame_saw.toml", "block_two_machines.toml"):
+        module = _sections(parse_scene(read_toml(CONFIGS / config)))
+        missing = [name for name in SECTIONS if not hasattr(module, name)]
+        assert not missing, (module.__name__, missing)

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.checks.codes import CODES, TABLES, ZONES, application_warnings, code_zone, displacement_zone, zone
-from foundation_calc.checks.crank_amplitudes import zone_outcome
+from foundation_calc.checks.codes import zone_outcome
 from foundation_calc.cli.app import app
 from foundation_calc.scenes.crank import CODE_NAMES
 from foundation_calc.solvers.crank.response import rms_values

@@ -107,7 +107,7 @@ def test_the_piled_designs_closed_forms_step_aside_by_name():
     """The first approximation refuses the coupled design itself (NotApplicable, a PhysicsError: exit
     3 where nothing else applies), in the words fcalc amplitudes prints for it; the rigid block under
     vendor loads refuses the support by its name."""
-    from foundation_calc.checks.crank_amplitudes import FIRST_NOT_APPLICABLE
+    from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
     from foundation_calc.errors import NotApplicable, PhysicsError
     from foundation_calc.solvers.crank.closed_form import design_first_approximation
 
@@ -197,7 +197,7 @@ def test_the_design_batch_judges_the_soft_soil_as_check_does(soft):
     verdicts = evaluate(scene, {f"foundation.block.{k}": np.array([getattr(b, k)]) for k in ("length", "width", "height")})
     assert result.verdict == "fail" and verdicts.outcome["amplitudes"][0] == FAIL
     assert "tips over" not in verdicts.reasons["amplitudes"][verdicts.governing["amplitudes"][0]]
-    utilisation = max(row.ratio for row in (*result.report.rows, *result.report.code_rows))
+    utilisation = max(row.ratio for row in (*result.report.limit_rows, *result.report.zone_rows))
     assert verdicts.utilisation["amplitudes"][0] == pytest.approx(utilisation, rel=1e-9)
 
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import tomli_w
 
-from foundation_calc.output.crank_amplitudes import ALL_POINTS_UP_TO
+from foundation_calc.output.limits import ALL_POINTS_UP_TO
 from foundation_calc.scenes import read_toml
 from tests.conftest import CONFIGS, on_terminal
 

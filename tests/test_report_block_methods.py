@@ -22,7 +22,7 @@ BLOCK = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "block
 
 def _amplitudes(scene) -> dict:
     from foundation_calc.checks.block import check_block
-    from foundation_calc.output.block import amplitudes_document
+    from foundation_calc.output.amplitudes import amplitudes_document
 
     return amplitudes_document(check_block(scene), scene, "")
 

@@ -151,7 +151,7 @@ def test_crank_steady_peaks_are_the_amplitudes_checks():
     run-up against `fcalc amplitudes`' averaged operator, each harmonic on K(nω): 1e-4 (the run-up's
     sampling, 5e-5, and the rod's weight at its mean height, which the averaged operator of
     `amplitudes` keeps and the resonance check's leaves out: 4e-6)."""
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.approximations import check_scene_amplitudes
 
     amplitudes = check_scene_amplitudes(_crank_scene("compressor_medium_sand_lysmer.toml"))
     expected = amplitudes.approximations[amplitudes.checked].points["C"].displacement
@@ -355,7 +355,7 @@ def test_crank_soil_sweep_recomputes_the_dynamic_soil_at_each_factor():
     springs at n ω; 1e-9), and the governing margin is `fcalc resonance`'s there (the modes at
     their own frequencies). Scaling the static springs instead, as before, put x 9 % low at factor
     1.3 and judged 3ω = p2 failing there (now ω = p1, passing)."""
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.approximations import check_scene_amplitudes
     from foundation_calc.checks.crank_resonance import scene_resonances_as_given
     from foundation_calc.checks.sweep.crank import scene_sweep_chunks
     from foundation_calc.checks.sweep.report import joined

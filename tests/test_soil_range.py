@@ -120,7 +120,7 @@ def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
     ``fcalc resonance`` (the frequency-consistent ones on Gazetas' soil, rel 1e-7: the fixed
     points' tolerance) and its peaks of C those of the first approximation in ``fcalc amplitudes``
     (at most 0.5 % low: 96 phases a revolution against Newton's peak)."""
-    from foundation_calc.checks.crank_amplitudes import check_scene_amplitudes
+    from foundation_calc.checks.approximations import check_scene_amplitudes
     from foundation_calc.checks.crank_resonance import check_scene_resonances
     from foundation_calc.checks.soil_sample import sample_scene
 

@@ -28,12 +28,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks import codes, limits as limit_check
-from foundation_calc.checks.codes import ZoneRow, code_warnings
-from foundation_calc.checks.limits import AmplitudeWording, LimitRow, amplitude_outcome
+from foundation_calc.checks.amplitude_report import AmplitudeVerdict, judge
+from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.checks.resonance import ResonanceReport, ResonanceRow, condition_label, modes_resonances
+from foundation_calc.checks.resonance import ResonanceRow, condition_label, modes_resonances
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,
@@ -51,36 +50,21 @@ NO_STEADY_STATE = "an order is resonant with an undamped mode: no steady state"
 
 
 @dataclass(frozen=True)
-class BlockReport:
-    """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene."""
+class BlockReport(AmplitudeVerdict):
+    """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene: its
+    amplitudes' common part (:mod:`~foundation_calc.checks.amplitude_report`) judged on the machines'
+    combined motion, and its modes, resonances and office checks."""
 
     modes: BlockModes
     speeds: dict
-    #: every order of every machine against every mode, judged by the rule (with the check over
-    #: the soil's ``modulus_range`` and the soil model's validity, once they are known)
-    resonance: ResonanceReport
     resonant: bool
     motion: PointMotion | None
-    limit_rows: tuple[LimitRow, ...]
-    zone_rows: tuple[ZoneRow, ...]
-    code_warnings: tuple[str, ...]
     office: tuple[OfficeRow, ...]
     total_mass: float
     cog: np.ndarray
-    #: the amplitude check over the soil's ``modulus_range``
-    #: (:class:`~foundation_calc.checks.soil_range.ModulusRangeResult`), if the scene gives one
-    amplitude_range: object = None
-    #: a0 of the judged modes and orders against the soil method's fitted range
-    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`)
-    soil_validity: object = None
     #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
     #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
     periodic: tuple = ()
-
-    @property
-    def amplitude_outcome(self) -> Outcome:
-        ranged = () if self.amplitude_range is None else (self.amplitude_range.outcome,)
-        return amplitude_outcome(self.resonant, self.limit_rows, self.zone_rows, ranged)
 
     @property
     def office_outcome(self) -> Outcome:
@@ -93,19 +77,14 @@ class BlockReport:
         return AmplitudeWording(resonant=(NO_STEADY_STATE,))
 
     @property
+    def no_steady_state(self) -> str:
+        """Why there is no steady state to judge (when ``resonant``)."""
+        return NO_STEADY_STATE
+
+    @property
     def nearest(self) -> ResonanceRow:
         """The governing resonance row (the rule's governing condition)."""
         return self.resonance.governing
-
-
-def amplitude_point(factor: float, report: BlockReport):
-    """The amplitude check of ``report`` (the soil as given at ``factor``) as a
-    :class:`~foundation_calc.checks.soil_range.RangePoint`."""
-    from foundation_calc.checks.soil_range import RangePoint, worst_row_point
-
-    if report.resonant:
-        return RangePoint(factor, Outcome.FAIL, NO_STEADY_STATE, float("inf"))
-    return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 
 #: Limited quantity -> the :class:`~foundation_calc.solvers.block.response.PointMotion` field that holds it.
@@ -117,18 +96,6 @@ LIMITED_VALUES = {
     "acceleration": "acceleration_peak",
     "acceleration_rms": "acceleration_rms",
 }
-
-
-def limit_rows(motion: PointMotion, limits) -> tuple[LimitRow, ...]:
-    """Each limited quantity of G and every point along x, y, z
-    (:func:`~foundation_calc.checks.limits.limit_rows`)."""
-    return limit_check.limit_rows(motion.names, DIRECTIONS, lambda quantity: getattr(motion, LIMITED_VALUES[quantity]), limits)
-
-
-def zone_rows(motion: PointMotion, limits, supports) -> tuple[ZoneRow, ...]:
-    """The code zone of G and every point (:func:`~foundation_calc.checks.codes.zone_rows`; ``supports``:
-    point name -> (x, y, z) classes, :func:`~foundation_calc.checks.support.block_supports`)."""
-    return codes.zone_rows(motion.names, DIRECTIONS, motion.velocity_rms, motion.displacement_rms, limits, supports)
 
 
 #: [scene, its report, the report with the machines' periodic solution (None until asked)]
@@ -187,7 +154,7 @@ def _check_block(scene) -> BlockReport:
 
     resonance = resonances_over_range(scene, at_factor, lambda f, r: resonance_point(f, r.resonance),
                                       lambda r: r.resonance.offsets())
-    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings, amplitude_point)
+    amplitude = amplitudes_over_range(scene, at_factor, resonance.crossings)
     return replace(report, resonance=replace(report.resonance, modulus_range=resonance), amplitude_range=amplitude)
 
 
@@ -221,21 +188,20 @@ def check_block_as_given(scene) -> BlockReport:
         from foundation_calc.checks.support import block_supports
 
         supports = block_supports(scene, modes, model.cog)
+    values = None if motion is None else (lambda quantity: getattr(motion, LIMITED_VALUES[quantity]))
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
         resonance=resonance,
         resonant=stuck,
         motion=motion,
-        limit_rows=() if motion is None else limit_rows(motion, limits),
-        zone_rows=() if motion is None else zone_rows(motion, limits, supports),
-        code_warnings=code_warnings(limits, [(exc.name, exc.omega) for exc in excitations]),
+        judgement=judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
+                        [(exc.name, exc.omega) for exc in excitations], supports),
         office=office_rows(scene, model),
         total_mass=model.mass,
         cog=model.cog,
     )
 
 
-__all__ = ["LIMITED_VALUES", "BlockReport", "LimitRow", "ResonanceRow", "ZoneRow", "amplitude_point", "check_block",
-           "check_block_as_given", "condition_label", "limit_rows", "scene_impedance",
-           "scene_modes", "zone_rows"]
+__all__ = ["LIMITED_VALUES", "BlockReport", "ResonanceRow", "check_block",
+           "check_block_as_given", "condition_label", "scene_impedance", "scene_modes"]

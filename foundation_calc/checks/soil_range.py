@@ -131,18 +131,18 @@ def worst_row_point(factor: float, outcome: Outcome, rows) -> RangePoint:
 
 
 def amplitude_point(factor: float, report) -> RangePoint:
-    """A crank :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport` at one factor."""
+    """An amplitude report of any kind (:mod:`~foundation_calc.checks.amplitudes`) at one factor:
+    without a steady state a failure that says why, else its governing limit or zone row."""
     if report.resonant:
-        approx = report.approximations[report.checked]
-        return RangePoint(factor, report.outcome, f"resonant ({approx.nearest}): no steady state", math.inf)
-    return worst_row_point(factor, report.outcome, [*report.rows, *report.code_rows])
+        return RangePoint(factor, Outcome.FAIL, report.no_steady_state, math.inf)
+    return worst_row_point(factor, report.amplitude_outcome, [*report.limit_rows, *report.zone_rows])
 
 
 def amplitudes_over_range(scene, check, crossings=(), point=amplitude_point) -> ModulusRangeResult:
     """``check(scene)`` at :data:`AMPLITUDE_GRID_POINTS` factors of the scene's
     ``soil.modulus_range`` and at the resonance ``crossings`` [(factor, condition)], where the
-    steady state peaks; ``point(factor, report)`` reads each report (default: a crank
-    :class:`~foundation_calc.checks.crank_amplitudes.AmplitudeReport`)."""
+    steady state peaks; ``point(factor, report)`` reads each report (default: an amplitude report of
+    any kind, :func:`amplitude_point`)."""
     low, high = scene.soil.modulus_range
     factors = sorted({*modulus_factors(low, high, AMPLITUDE_GRID_POINTS), *(f for f, _ in crossings)})
     return ModulusRangeResult(

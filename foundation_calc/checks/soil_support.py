@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: The harmonics n of a crank's speed tabled: the mechanism's forcing of the first approximation,
-#: whose vertical motion runs to 4 ω (:data:`~foundation_calc.checks.crank_amplitudes.HARMONICS`);
+#: whose vertical motion runs to 4 ω (:data:`~foundation_calc.checks.approximations.HARMONICS`);
 #: the amplitudes take harmonic n on the springs at n ω.
 ORDERS = (1, 2, 3, 4)
 

@@ -14,6 +14,13 @@ from foundation_calc.output.notes import point_support_document, support_documen
 #: show the governing points and the largest value/limit ratios (every row with --all-points or --json).
 ALL_POINTS_UP_TO = 12
 
+
+def summarised(points: int, all_points: bool = False) -> bool:
+    """Whether the tables of a scene with ``points`` points (C or G not counted) show the governing
+    points and the largest value/limit ratios rather than every row (``all_points``: every row)."""
+    return not all_points and points > ALL_POINTS_UP_TO
+
+
 #: Limit rows shown for a scene with many points: the largest ratios (and each quantity's largest).
 WORST_ROWS = 10
 
@@ -118,4 +125,5 @@ def zones_table(rows, units, directions, strict: bool = False):
     return values, zones
 
 
-__all__ = ["ALL_POINTS_UP_TO", "EVERY_ROW", "WORST_ROWS", "code_document", "limits_document", "limits_table", "zones_table"]
+__all__ = ["ALL_POINTS_UP_TO", "EVERY_ROW", "WORST_ROWS", "code_document", "limits_document", "limits_table", "summarised",
+           "zones_table"]

@@ -139,7 +139,7 @@ def _resonance(scene, modes, excitations):
 
 def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
-    (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
+    (:func:`~foundation_calc.checks.amplitude_report.judge`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
     from foundation_calc.checks.limits import exceeds, limited_quantities

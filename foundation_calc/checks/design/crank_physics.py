@@ -235,7 +235,7 @@ def _motion(scene, designs, d0, block, mech, harmonics, decoupled):
 
 def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
-    :func:`~foundation_calc.checks.crank_amplitudes.check_amplitudes` judges them."""
+    :func:`~foundation_calc.checks.approximations.check_amplitudes` judges them."""
     from foundation_calc.checks.codes import TABLES, ZONES, application_warnings, code_zone_index
     from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.solvers.crank.response import DIRECTIONS, point_series

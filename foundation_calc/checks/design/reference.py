@@ -57,10 +57,8 @@ def _resonance(report) -> tuple[float, str]:
 def _amplitudes(report) -> tuple[float, str]:
     if report.resonant:
         return math.inf, "resonant: no steady state"
-    limits = getattr(report, "limit_rows", None)
-    rows = [(row.ratio, f"{row.quantity} at {row.point} ({row.direction})") for row in (report.rows if limits is None else limits)]
-    zones = getattr(report, "zone_rows", None)
-    rows += [(row.ratio, f"{row.table.title} at {row.point}") for row in (report.code_rows if zones is None else zones)]
+    rows = [(row.ratio, f"{row.quantity} at {row.point} ({row.direction})") for row in report.limit_rows]
+    rows += [(row.ratio, f"{row.table.title} at {row.point}") for row in report.zone_rows]
     return max(rows, default=(math.nan, "no limit"))
 
 

@@ -7,7 +7,7 @@ coefficients of x [m], y [m] and θ [rad] for the harmonics n = 0 ... K of the c
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -188,9 +188,34 @@ def relative_error(approx, exact):
     return np.where(size == 0.0, np.where(diff == 0.0, 0.0, 1.0), diff / np.where(size == 0.0, 1.0, size))
 
 
+#: Points evaluated in one array operation; bounds the memory of a scene with many points.
+POINT_CHUNK = 1024
+
+
+def located(motion: PeriodicMotion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
+    """Peaks and RMS values of C and of every point (objects with ``name``, ``horizontal``,
+    ``height`` [m]), each a point's (horizontal, vertical) values (:func:`point_peaks`,
+    :func:`point_rms`), all points of a chunk of :data:`POINT_CHUNK` in one array operation."""
+    names = ["C", *(p.name for p in points)]
+    horizontal = np.array([0.0, *(p.horizontal for p in points)])
+    height = np.array([0.0, *(p.height for p in points)])
+    chunks = [
+        (point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]),
+         point_rms(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]))
+        for i in range(0, len(names), POINT_CHUNK)
+    ]
+    peaks = {f.name: np.concatenate([getattr(pk, f.name) for pk, _ in chunks]) for f in fields(Peaks)}
+    rms = {f.name: np.concatenate([getattr(rm, f.name) for _, rm in chunks]) for f in fields(Rms)}
+    return (
+        {name: Peaks(**{q: values[i] for q, values in peaks.items()}) for i, name in enumerate(names)},
+        {name: Rms(**{q: values[i] for q, values in rms.items()}) for i, name in enumerate(names)},
+    )
+
+
 __all__ = [
     "DIRECTIONS",
     "DOFS",
+    "POINT_CHUNK",
     "PeriodicMotion",
     "Peaks",
     "Rms",
@@ -203,6 +228,7 @@ __all__ = [
     "theta_minus_sine",
     "relative_error",
     "rms_values",
+    "located",
     "splice_harmonics",
     "superpose",
 ]

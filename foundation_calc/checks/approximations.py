@@ -1,4 +1,6 @@
-"""Forced amplitudes of a crank-mechanism foundation and their check against the scene's limits.
+"""A crank mechanism's section of the amplitude check (``fcalc amplitudes`` of a crank scene): the
+approximations of its foundation's periodic steady state, judged by the rules of every kind
+(:func:`~foundation_calc.checks.amplitude_report.judge`).
 
 Three approximations of the same periodic steady state are computed for one design:
 
@@ -18,19 +20,18 @@ is the rule's (:mod:`~foundation_calc.checks.resonance_rule`), reported beside t
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from foundation_calc.checks.amplitude_report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.crank_resonance import (
     ResonanceReport,
     check_block_resonances,
     check_resonances,
     design_frequencies,
 )
-from foundation_calc.checks.codes import ZoneRow, code_warnings, zone_outcome, zone_rows
-from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording, LimitRow, amplitude_outcome, limit_rows
-from foundation_calc.checks.outcomes import Outcome
+from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import COUPLED_SUPPORT, design_first_approximation
@@ -42,10 +43,8 @@ from foundation_calc.solvers.crank.response import (
     DOFS,
     PeriodicMotion,
     Peaks,
-    Rms,
+    located,
     motion_peaks,
-    point_peaks,
-    point_rms,
     relative_error,
     splice_harmonics,
     superpose,
@@ -142,29 +141,25 @@ class Damping:
 
 
 @dataclass(frozen=True)
-class AmplitudeReport:
-    """``design`` is None for a machine given by its loads only (``vendor`` then holds them)."""
+class AmplitudeReport(AmplitudeVerdict):
+    """A crank scene's amplitude report: the common part (:mod:`~foundation_calc.checks.amplitude_report`)
+    judged on the ``checked`` approximation, and the approximations themselves. ``design`` is None
+    for a machine given by its loads only (``vendor`` then holds them)."""
 
     design: CrankDesign | None
     approximations: dict
     checked: str
-    rows: tuple[LimitRow, ...]
     exact_info: ExactInfo | None
     errors: dict | None
     damping: Damping | None = None
-    code_rows: tuple[ZoneRow, ...] = ()
-    code_warnings: tuple[str, ...] = ()
     vendor: VendorLoads | None = None
-    resonance: ResonanceReport | None = None
-    #: the check over the soil's ``modulus_range`` (:mod:`foundation_calc.checks.soil_range`), if given
-    modulus_range: object = None
-    #: a0 of the judged modes and orders against the soil method's fitted range
-    #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
-    soil_validity: object = None
     #: approximation key -> why it is not computed for this design (:data:`FIRST_NOT_APPLICABLE`; a
     #: harmonic's soil where the first approximation does not apply,
     #: :func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`)
     not_applicable: dict = field(default_factory=dict)
+
+    #: a code's warnings warn (the crank's verdict as CI scripts read it)
+    WARNINGS_WARN = True
 
     @property
     def omega(self) -> float:
@@ -181,31 +176,9 @@ class AmplitudeReport:
         return self.approximations[self.checked].resonant
 
     @property
-    def outcome(self) -> Outcome:
-        """:func:`~foundation_calc.checks.limits.amplitude_outcome` of the checked approximation;
-        a code's warnings warn."""
-        noted = (Outcome.WARN,) if self.code_warnings else ()
-        ranged = () if self.modulus_range is None else (self.modulus_range.outcome,)
-        return amplitude_outcome(self.resonant, self.rows, self.code_rows, (*noted, *ranged))
-
-    # the names a block's report gives the same things, so that one finding and one document
-    # serve both kinds
-
-    @property
-    def amplitude_outcome(self) -> Outcome:
-        return self.outcome
-
-    @property
-    def limit_rows(self) -> tuple[LimitRow, ...]:
-        return self.rows
-
-    @property
-    def zone_rows(self) -> tuple[ZoneRow, ...]:
-        return self.code_rows
-
-    @property
-    def amplitude_range(self):
-        return self.modulus_range
+    def no_steady_state(self) -> str:
+        """Why there is no steady state to judge (when ``resonant``): the checked approximation's nearest resonance."""
+        return f"resonant ({self.approximations[self.checked].nearest}): no steady state"
 
     @property
     def wording(self) -> AmplitudeWording:
@@ -218,28 +191,6 @@ class AmplitudeReport:
             resonant=("speed ", speed, f" is resonant ({approx.nearest}, margin {approx.margin:.2%}): no steady state"),
             values={"speed": speed}, statement=None if self.resonance is None else self.resonance.statement, itemised=True,
         )
-
-
-#: Points evaluated in one array operation; bounds the memory of a scene with many points.
-POINT_CHUNK = 1024
-
-
-def _located(motion, points) -> tuple[dict[str, Peaks], dict[str, Rms]]:
-    """Peaks and RMS values of C and of every point, all points of a chunk in one array operation."""
-    names = ["C", *(p.name for p in points)]
-    horizontal = np.array([0.0, *(p.horizontal for p in points)])
-    height = np.array([0.0, *(p.height for p in points)])
-    chunks = [
-        (point_peaks(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]),
-         point_rms(motion, horizontal[i : i + POINT_CHUNK], height[i : i + POINT_CHUNK]))
-        for i in range(0, len(names), POINT_CHUNK)
-    ]
-    peaks = {f.name: np.concatenate([getattr(pk, f.name) for pk, _ in chunks]) for f in fields(Peaks)}
-    rms = {f.name: np.concatenate([getattr(rm, f.name) for _, rm in chunks]) for f in fields(Rms)}
-    return (
-        {name: Peaks(**{q: values[i] for q, values in peaks.items()}) for i, name in enumerate(names)},
-        {name: Rms(**{q: values[i] for q, values in rms.items()}) for i, name in enumerate(names)},
-    )
 
 
 @dataclass(frozen=True)
@@ -269,7 +220,7 @@ def _approximation(key, motion, resonant, margin, nearest, points, loads: _Loads
     with_loads = loads is not None
     if resonant:
         return Approximation(key, None, True, margin, nearest, None, {}, {}, with_loads)
-    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *_located(motion, points), with_loads)
+    return Approximation(key, motion, False, margin, nearest, motion_peaks(motion), *located(motion, points), with_loads)
 
 
 def _first(design: CrankDesign, points, loads=None) -> Approximation:
@@ -321,28 +272,16 @@ def _stacked(by_point: dict, quantity: str) -> np.ndarray:
     return np.array([getattr(values, quantity) for values in by_point.values()])
 
 
-def _rows(approx: Approximation, limits) -> tuple[LimitRow, ...]:
-    """The limit rows of C and every point (:func:`~foundation_calc.checks.limits.limit_rows`)."""
-    if approx.resonant:
-        return ()
+def _judged(approx: Approximation, limits, omega: float, supports=None) -> Judgement:
+    """The limit rows, zone rows and code warnings of C and every point of ``approx``
+    (:func:`~foundation_calc.checks.amplitude_report.judge`; ``supports``: point name -> (horizontal,
+    vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports` gives
+    them; None: the scene's ``limits.foundation`` everywhere)."""
 
     def values(quantity):
         return _stacked(approx.rms, quantity[:-4]) if quantity.endswith("_rms") else _stacked(approx.points, quantity)
 
-    return limit_rows(list(approx.points), DIRECTIONS, values, limits)
-
-
-def _code_rows(approx: Approximation, limits, omega: float, supports=None) -> tuple[tuple[ZoneRow, ...], tuple[str, ...]]:
-    """Zone of every point's RMS velocity and RMS displacement in the scene's code table
-    (:func:`~foundation_calc.checks.codes.zone_rows`; ``supports``: point name -> (horizontal,
-    vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports`
-    gives them; None: the scene's ``limits.foundation`` everywhere), and why the code may not apply."""
-    notes = code_warnings(limits, [(None, omega)])
-    if approx.resonant:
-        return (), notes
-    rows = zone_rows(list(approx.rms), DIRECTIONS, _stacked(approx.rms, "velocity"), _stacked(approx.rms, "displacement"),
-                     limits, supports)
-    return rows, notes
+    return judge(list(approx.points), DIRECTIONS, None if approx.resonant else values, limits, [(None, omega)], supports)
 
 
 def scene_supports(scene):
@@ -430,7 +369,6 @@ def check_amplitudes(
             key: _errors(approximations[key], approximations["exact"])
             for key in ("first_approximation", "averaged_operator") if key in approximations
         }
-    code_rows, code_warnings = _code_rows(approximations[checked], limits, omega, supports)
     detuning = getattr(limits, "detuning", DEFAULT_DETUNING)
     if resonance is None:
         resonance = (check_block_resonances(vendor.block, vendor.omega, vendor.loads, detuning) if design is None else
@@ -439,15 +377,13 @@ def check_amplitudes(
         design=design,
         approximations=approximations,
         checked=checked,
-        rows=_rows(approximations[checked], limits),
         exact_info=info,
         errors=errors,
         damping=damping,
-        code_rows=code_rows,
-        code_warnings=code_warnings,
         vendor=vendor,
         resonance=resonance,
         not_applicable=not_applicable,
+        judgement=_judged(approximations[checked], limits, omega, supports),
     )
 
 
@@ -480,7 +416,7 @@ def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     from foundation_calc.checks.soil_range import amplitudes_over_range
 
     crossings = check_scene_resonances(scene).modulus_range.crossings
-    return replace(report, modulus_range=amplitudes_over_range(scene, _scene_amplitudes, crossings))
+    return replace(report, amplitude_range=amplitudes_over_range(scene, _scene_amplitudes, crossings))
 
 
 def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
@@ -516,9 +452,8 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
             continue
         motion = splice_harmonics([r.approximations[key].motion for r in used])
         approximations[key] = _approximation(key, motion, False, a.margin, a.nearest, scene.points)
-    code_rows, code_warnings = _code_rows(approximations[base.checked], scene.limits, omega, supports)
-    return replace(base, approximations=approximations, rows=_rows(approximations[base.checked], scene.limits),
-                   code_rows=code_rows, code_warnings=code_warnings, not_applicable=not_applicable)
+    return replace(base, approximations=approximations, not_applicable=not_applicable,
+                   judgement=_judged(approximations[base.checked], scene.limits, omega, supports))
 
 
 __all__ = [
@@ -527,13 +462,9 @@ __all__ = [
     "AmplitudeReport",
     "Approximation",
     "Damping",
-    "LimitRow",
     "VendorLoads",
-    "ZoneRow",
     "check_amplitudes",
     "check_scene_amplitudes",
     "scene_supports",
     "scene_vendor_loads",
-    "splice_harmonics",
-    "zone_outcome",
 ]

@@ -1,4 +1,7 @@
-"""Report of ``fcalc amplitudes``: rich tables and the JSON document (SI units: m, rad, s)."""
+"""A crank mechanism's sections of ``fcalc amplitudes`` (:mod:`~foundation_calc.output.amplitudes`
+writes the rest): its heading, its approximations of C in x, y, θ (the paper's first
+approximation, the averaged operator, the exact solution with the closed forms' errors), their
+harmonics and the points' peaks (SI units in JSON: m, rad, s)."""
 
 from __future__ import annotations
 
@@ -8,20 +11,12 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from foundation_calc.checks.crank_amplitudes import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.approximations import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally
-from foundation_calc.output.resonance import rule_document
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, Hanging, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.output.limits import (
-    ALL_POINTS_UP_TO,
-    EVERY_ROW,
-    code_document,
-    limits_document,
-    limits_table,
-    zones_table,
-)
-from foundation_calc.output.notes import print_soil_validity, print_supports, soil_validity_document
+from foundation_calc.output.limits import EVERY_ROW, summarised
+from foundation_calc.output.resonance import rule_document
 from foundation_calc.solvers.crank.first_approximation import RESONANT_MARGIN
 from foundation_calc.solvers.crank.response import DIRECTIONS, DOFS
 from foundation_calc.units import rpm_from_omega, speed_triplet
@@ -89,8 +84,16 @@ def loads_document(vendor) -> dict:
     }
 
 
-def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
-    """The JSON document of ``fcalc amplitudes`` (every number SI)."""
+#: The code document's per-direction values: the governing table's boundaries and each point's RMS
+#: velocity and displacement by these names.
+CODE_DIRECTIONS = DIRECTIONS
+
+
+def document_parts(report: AmplitudeReport, scene, source: str) -> tuple[dict, dict, dict, dict]:
+    """The crank's parts of the JSON document, around the common keys: its speed, mass ratios,
+    loads, damping and approximations; the resonance rule's verdict; nothing before the verdict;
+    the exact solver's record and the closed forms' errors after it."""
+    
     d = report.design
     shown = 5 if report.vendor is None else max(5, int(report.vendor.loads.order.max()) + 1)
     derived = (
@@ -98,7 +101,7 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         if d is None
         else {"mu": d.mu, "lambda": d.lam, "total_mass": d.M_tot, "moving_mass": d.rod.m}
     )
-    doc = {
+    head = {
         "schema_version": JSON_SCHEMA_VERSION,
         "command": "amplitudes",
         "scene": {"source": source, "kind": scene.kind, "name": scene.name},
@@ -119,17 +122,12 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
         "checked_with": report.checked,
         "approximations": {key: _approximation_document(a, shown) for key, a in report.approximations.items()},
         **({"not_applicable": dict(report.not_applicable)} if report.not_applicable else {}),
-        "limits": limits_document(report.rows),
-        "code": code_document(scene.limits, report.code_rows, report.code_warnings, DIRECTIONS),
-        "resonance_rule": None if report.resonance is None else rule_document(report.resonance),
-        "modulus_range": None if report.modulus_range is None else report.modulus_range.document(),
-        "soil_validity": soil_validity_document(report.soil_validity),
-        "warnings": scene.plausibility_warnings(),
-        "verdict": report.outcome.value,
     }
+    judged = {"resonance_rule": None if report.resonance is None else rule_document(report.resonance)}
+    solver = {}
     if report.exact_info is not None:
         info = report.exact_info
-        doc["exact_solver"] = {
+        solver["exact_solver"] = {
             "harmonics": info.harmonics,
             "newton_iterations": info.newton_iterations,
             "harmonic_change": info.harmonic_change,
@@ -138,8 +136,8 @@ def amplitudes_document(report: AmplitudeReport, scene, source: str) -> dict:
             "converged": info.capped is None,
             "note": info.capped,
         }
-        doc["errors"] = report.errors
-    return doc
+        solver["errors"] = report.errors
+    return head, judged, {}, solver
 
 
 def _table_harmonics(report: AmplitudeReport) -> tuple[tuple[str, int], ...]:
@@ -236,15 +234,11 @@ def _damped_harmonics_table(report: AmplitudeReport, units: DisplayUnits) -> Tab
     return table
 
 
-def _summarised(report: AmplitudeReport, all_points: bool) -> bool:
-    return not all_points and len(report.approximations[report.checked].points) - 1 > ALL_POINTS_UP_TO
-
-
 def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool = False) -> Table:
     approx = report.approximations[report.checked]
     title = f"Peaks over one revolution ({approx.title})"
     shown = list(approx.points)
-    if _summarised(report, all_points):
+    if summarised(len(approx.points) - 1, all_points):
         shown = ["C", *governing_points(approx.points)]
         title += (
             f": C and the {len(shown) - 1} points with the largest peaks,"
@@ -268,39 +262,40 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool
     return table
 
 
-def summary_line(report: AmplitudeReport) -> str:
+def verdict_line(report: AmplitudeReport, strict: bool) -> str:
+    """The verdict with the largest value/limit ratio, the count of values over their limits, the
+    worst zone, the resonance rule's statement and the soil's modulus range (the crank's summary,
+    as CI scripts read it)."""
     approx = report.approximations[report.checked]
     if report.resonant:
         where = "exactly at the speed" if approx.margin == 0 else f"{approx.margin:.3g} (relative) from the speed"
         return f"{verdict_text('fail')}: resonant — {approx.nearest} is {where}; no steady state without damping"
-    if not report.rows and not report.code_rows:
+    if not report.limit_rows and not report.zone_rows:
         return f"{verdict_text('pass')}: no amplitude, velocity or acceleration limit in \\[limits]"
     parts = []
-    if report.rows:
-        top = max(report.rows, key=lambda r: r.ratio)
+    if report.limit_rows:
+        top = max(report.limit_rows, key=lambda r: r.ratio)
         parts.append(f"largest value/limit {top.ratio:.3f} ({escape(top.point)}, {top.direction} {top.quantity})")
-        count = tally(report.rows)
+        count = tally(report.limit_rows)
         if count.failed_rows:
             parts.append(
                 f"{count.failed_rows} of {count.rows} values over their limits,"
                 f" at {count.failed_points} of {count.points} points (C included)"
             )
-    if report.code_rows:
-        top = max(report.code_rows, key=lambda r: r.ratio)
+    if report.zone_rows:
+        top = max(report.zone_rows, key=lambda r: r.ratio)
         parts.append(f"worst zone at {escape(top.point)}: {escape(top.verdict_text)}")
     if report.resonance is not None:
         parts.append(escape(report.resonance.statement) + (" (damped response)" if report.damped else ""))
-    if report.modulus_range is not None:
-        parts.append(escape(report.modulus_range.text))
-    return f"{verdict_text(report.outcome.value)}: " + "; ".join(parts)
+    if report.amplitude_range is not None:
+        parts.append(escape(report.amplitude_range.text))
+    return f"{verdict_text(report.amplitude_outcome.value)}: " + "; ".join(parts)
 
 
-def print_amplitudes_report(
-    report: AmplitudeReport, scene, source: str, units: DisplayUnits = DisplayUnits(), all_points: bool = False
-) -> None:
-    """Print the tables of ``fcalc amplitudes`` (numbers in ``units``; JSON stays SI): every point
-    and limit row, or with more than :data:`ALL_POINTS_UP_TO` points (and not ``all_points``)
-    the governing points and the largest value/limit ratios."""
+def print_motion(report: AmplitudeReport, scene, source: str, units: DisplayUnits, all_points: bool) -> bool:
+    """The heading (speed, μ, λ), each approximation's title, the resonance rule's statement, the
+    damping and the exact solver's record, then the harmonics and (with a steady state) the points'
+    peaks; True: the limits follow."""
     d, w = report.design, report.omega
     out = stdout()
     machine = "machine given by its loads" if d is None else f"μ = {fmt(d.mu, 4)}, λ = {fmt(d.lam, 4)}"
@@ -334,13 +329,26 @@ def print_amplitudes_report(
     out.print(_harmonics_table(report, units))
     if not report.resonant:
         out.print(_points_table(report, units, all_points))
-    if report.rows:
-        title = f"Limits (checked with: {report.approximations[report.checked].title})"
-        out.print(limits_table(report.rows, units, title, _summarised(report, all_points)))
-    if report.code_rows:
-        out.print(*zones_table(report.code_rows, units, DIRECTIONS))
-        print_supports(report.code_rows)
-    for warning in report.code_warnings:
-        out.print(Text(f"warning: {warning}", style="yellow"))
-    print_soil_validity(report.soil_validity)
-    out.print(summary_line(report))
+    return True
+
+
+def limits_title(report: AmplitudeReport) -> str:
+    """The limits table's title: the approximation that is judged."""
+    return f"Limits (checked with: {report.approximations[report.checked].title})"
+
+
+def print_after_zones(report: AmplitudeReport, units: DisplayUnits) -> None:
+    """Nothing between the zones and the code's warnings."""
+
+
+def warning(text: str) -> Text:
+    """A code's warning as the crank states it."""
+    return Text(f"warning: {text}", style="yellow")
+
+
+def print_notes(report: AmplitudeReport, strict: bool) -> None:
+    """Nothing after the code's warnings (the soil's range is in the verdict line)."""
+
+
+__all__ = ["CODE_DIRECTIONS", "DIRECTIONS", "document_parts", "limits_title", "loads_document", "print_after_zones",
+           "print_motion", "print_notes", "verdict_line", "warning"]
