@@ -110,29 +110,44 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     return out
 
 
+def _crank_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.damped_response import damped_response_blocks
+
+    return crank_chains(scene, documents.get("amplitudes")), damped_response_blocks(scene, documents.get("amplitudes"))
+
+
+def _platform_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.platform_methods import verification_blocks
+
+    return [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
+
+
+def _block_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
+
+    return [], block_sections_blocks(scene, documents.get("amplitudes"), units or POINT_UNITS)
+
+
+#: Each scene kind's hand calculations: the check documents it cannot go without, and the maker
+#: (scene, documents, units) -> (chains, the kind's own solve as sheet blocks).
+KIND_METHODS = {
+    "crank_foundation": (set(), _crank_methods),
+    "platform": ({"design"}, _platform_methods),
+    "block_foundation": (set(), _block_methods),
+}
+
+
 def methods_section(scene, documents: dict, units=None):
-    """The hand calculations and nomenclature of the scene (None for a kind without chains here);
-    ``units``: the sheet's (:class:`~foundation_calc.output.display_units.DisplayUnits`), in which a
-    block's points are shown (by default µm and mm/s)."""
+    """The hand calculations and nomenclature of the scene (None for a kind without chains here,
+    :data:`KIND_METHODS`); ``units``: the sheet's (:class:`~foundation_calc.output.display_units.DisplayUnits`),
+    in which a block's points are shown (by default µm and mm/s)."""
     from foundation_calc.output.report.handcalc import nomenclature_table
     from foundation_calc.output.report.model import Section
 
-    response: tuple = ()
-    if scene.kind == "crank_foundation":
-        from foundation_calc.output.report.damped_response import damped_response_blocks
-
-        chains = crank_chains(scene, documents.get("amplitudes"))
-        response = damped_response_blocks(scene, documents.get("amplitudes"))
-    elif scene.kind == "platform" and "design" in documents:
-        from foundation_calc.output.report.platform_methods import verification_blocks
-
-        chains, response = [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
-    elif scene.kind == "block_foundation":
-        from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
-
-        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"), units or POINT_UNITS)
-    else:
+    needs, parts = KIND_METHODS.get(scene.kind, (None, None))
+    if parts is None or not needs <= documents.keys():
         return None
+    chains, response = parts(scene, documents, units)
     runup = []
     if "runup" in documents:
         from foundation_calc.output.report.runup_methods import runup_columns
