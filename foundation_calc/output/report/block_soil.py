@@ -6,8 +6,9 @@ sliding y, rocking about x, B in the plane) and torsion about z, then each dashp
 C_i = 2 ξ_i √(K_i m_i) (m_i the total mass, or the moment of inertia J_x, J_y, J_z about the axis
 through O; :meth:`~foundation_calc.scenes.block.BlockScene.soil_impedance`). The chains print
 each formula with its values (Lysmer's analogs with Reissner-Sagoci's torsion, Barkan's
-coefficients, SP 26.13330, Gazetas' and Pais & Kausel's static springs through the crank's own
-chains of :mod:`~foundation_calc.output.report.soil_methods`); on a frequency-dependent soil a
+coefficients, SP 26.13330: the formulas of :mod:`~foundation_calc.output.report.soil_methods`
+that the crank's plane chains print too; Gazetas' and Pais & Kausel's static springs through the
+crank's own chains, once per plane); on a frequency-dependent soil a
 table gives the six springs and dashpots each order n of each machine was solved with, K(nω) and
 C(nω) of the solver, with the chain at every such frequency. ``tests/test_report_block_soil.py``
 recomputes the printed springs from the printed inputs and one order's response from the printed
