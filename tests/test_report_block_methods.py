@@ -105,7 +105,7 @@ def test_a_frequency_dependent_block_soil_takes_each_order_and_mode_at_its_frequ
 def test_each_matrix_column_is_in_one_notation():
     """A column of one matrix holds one quantity: its entries are all plain or all a.bc·10ⁿ (the
     sheet's number format), not "213624" above "1.052·10⁶" (M of block_two_machines, column θ_y)."""
-    from foundation_calc.output.report.block_methods import matrix_table
+    from foundation_calc.output.report.harmonic_solve import matrix_table
 
     scene = load_scene(CONFIGS / "block_two_machines.toml")
     model = scene.model()

@@ -24,17 +24,12 @@ import numpy as np
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.report.block_soil import block_soil_blocks, order_springs_table, orders_of
 from foundation_calc.output.report.handcalc import Definitions
+from foundation_calc.output.report.harmonic_solve import (BODY, harmonic_table, matrix_table, point_columns,
+                                                          points_table, solve_harmonic)
 from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure, one_notation, phased
+from foundation_calc.output.report.numbers import figure
 
-COORDINATES = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
 DIRECTIONS = ("x", "y", "z")
-#: Units of a row's entries: translations (N/m, N) then rotations (N, N m/rad) for K, and so on.
-ROW_UNITS = {
-    "M": ("kg, kg m", "kg, kg m", "kg, kg m", "kg m, kg m²", "kg m, kg m²", "kg m, kg m²"),
-    "K": ("N/m, N", "N/m, N", "N/m, N", "N, N m/rad", "N, N m/rad", "N, N m/rad"),
-    "C": ("N s/m, N s", "N s/m, N s", "N s/m, N s", "N s, N m s/rad", "N s, N m s/rad", "N s, N m s/rad"),
-}
 
 
 @dataclass(frozen=True)
@@ -85,7 +80,7 @@ def block_solve(model, excitations, impedance=None, own=None) -> BlockSolve:
         Z = []
         for n, q in zip(exc.orders, exc.Q):
             K, C = matrices(n * exc.omega)
-            Z.append(np.linalg.solve(K - (n * exc.omega) ** 2 * model.M + 1j * n * exc.omega * C, q))
+            Z.append(solve_harmonic(model.M, C, K, q, n * exc.omega))
         responses.append(np.array(Z).reshape(len(exc.orders), 6))
     return BlockSolve(p, zeta, tuple(e.name for e in excitations), tuple(e.omega for e in excitations),
                       tuple(e.orders for e in excitations), tuple(e.Q for e in excitations), tuple(responses))
@@ -124,20 +119,6 @@ def _rates(solve: BlockSolve, points, count: int) -> list[tuple[np.ndarray, np.n
     return found
 
 
-def matrix_table(title: str, matrices, coordinates, units: dict) -> Table:
-    """Matrices (``matrices``: (name, array) pairs) row by row with their numbers, each row's
-    entries' units from ``units[name]``; round-off below 1e-9 of a matrix's largest entry is 0,
-    and each column of the table, every matrix's rows in it, is in one notation
-    (:func:`~.numbers.one_notation`)."""
-    scales = [np.abs(matrix).max() or None for _, matrix in matrices]
-    shown = [one_notation([float(v) for _, matrix in matrices for v in matrix[:, j]], 4,
-                          [scale for scale, (_, matrix) in zip(scales, matrices) for _ in matrix[:, j]])
-             for j in range(len(coordinates))]
-    rows = [(f"{key}, row {coordinate}", *(entries[m * len(coordinates) + i] for entries in shown), units[key][i])
-            for m, (key, _) in enumerate(matrices) for i, coordinate in enumerate(coordinates)]
-    return table(title, ("row", *coordinates, "units"), rows, (False, *(True,) * len(coordinates), False))
-
-
 #: Titles of the tables a judged number's chain cites.
 MODES_TITLE = "Modes: K v = p² M v (eigen-solve of M⁻¹K), ζ = vᵀ C v / (2 p vᵀ M v)"
 RESPONSE_TITLE = "Z = (K − Ω² M + i Ω C)⁻¹ Q_n ([m], [rad]) as magnitude ∠ phase lag φ"
@@ -146,7 +127,7 @@ MATRICES_TITLE = "Matrices of Eq. (1) about O (order u_x, u_y, u_z, θ_x, θ_y, 
 
 def _matrices(model) -> Table:
     return matrix_table(MATRICES_TITLE,
-                        (("M", model.M), ("K", model.K), ("C", model.C)), COORDINATES, ROW_UNITS)
+                        (("M", model.M), ("K", model.K), ("C", model.C)), BODY.names, BODY.row_units)
 
 
 def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
@@ -157,32 +138,17 @@ def _modes(solve: BlockSolve, dominant: list[str]) -> Table:
 
 
 def _harmonics(solve: BlockSolve) -> tuple[Table, Table]:
-    labels, loads, amplitudes = [], [], []
+    labels, speeds, loads, amplitudes = [], [], [], []
     for name, omega, orders, Q, Z in zip(solve.machines, solve.omegas, solve.orders, solve.loads, solve.responses):
         for h, n in enumerate(orders):
-            labels.append((name, str(int(n)), n * omega))
+            labels.append((name, str(int(n))))
+            speeds.append(n * omega)
             loads.append(Q[h])
             amplitudes.append(Z[h])
-    loads, amplitudes = np.array(loads), np.array(amplitudes)
-    omega_col = column([w for *_, w in labels], 4)
-
-    def cells(values, digits):
-        """Each coordinate's column: magnitude in one notation, with its phase lag."""
-        size = np.abs(values)
-        shown = [column(list(size[:, j]), digits, size[:, j].max() or None) for j in range(6)]
-        return [[phased(shown[j][k], complex(values[k, j])) for k in range(len(values))] for j in range(6)]
-
-    q_cols, z_cols = cells(loads, 4), cells(amplitudes, 3)
     head = ("machine", "n", "Ω = nω [rad/s]")
-    forcing = table("Generalised loads about O: Q_n (F [N], M + r_F × F [N m]) as magnitude ∠ phase lag φ,"
-                    " each entry |Q| cos(Ωt − φ)",
-                    (*head, "F_x", "F_y", "F_z", "M_x", "M_y", "M_z"),
-                    [(m, n, omega_col[k], *(c[k] for c in q_cols)) for k, (m, n, _) in enumerate(labels)],
-                    (False, False, *(True,) * 7))
-    response = table(RESPONSE_TITLE,
-                     (*head, *COORDINATES),
-                     [(m, n, omega_col[k], *(c[k] for c in z_cols)) for k, (m, n, _) in enumerate(labels)],
-                     (False, False, *(True,) * 7))
+    forcing = harmonic_table("Generalised loads about O: Q_n (F [N], M + r_F × F [N m]) as magnitude ∠ phase lag φ,"
+                             " each entry |Q| cos(Ωt − φ)", (*head, *BODY.forcing), labels, speeds, [(np.array(loads), 4)])
+    response = harmonic_table(RESPONSE_TITLE, (*head, *BODY.response), labels, speeds, [(np.array(amplitudes), 3)])
     return forcing, response
 
 
@@ -253,22 +219,8 @@ def _points(solve: BlockSolve, names, points, accelerations: bool, units: Displa
         values += [(a, "acceleration") for a in acceleration_values(solve, points)]
         head += [f"peak acceleration [{units.acceleration}]", f"a_rms [{units.acceleration}]"]
         title += "; a_rms = √(Σ |(nω)² u_P,n|²/2)"
-    cols = _one_notation_per_quantity([([units.convert(quantity, float(x)) for x in v.ravel()], quantity) for v, quantity in values])
-    rows = [(*label, *(c[k] for c in cols)) for k, label in enumerate(labels)]
-    return table(title, tuple(head), rows, (False, False, *[True] * len(values)))
-
-
-def _one_notation_per_quantity(columns: list[tuple[list[float], str]]) -> list[list[str]]:
-    """Each column's values at 3 figures, the columns of one quantity (a peak and an r.m.s.
-    velocity) in one notation together (:func:`~.numbers.column`)."""
-    shown: dict[str, list[str]] = {}
-    for quantity in dict.fromkeys(q for _, q in columns):
-        shown[quantity] = column([x for values, q in columns if q == quantity for x in values], 3)
-    out, used = [], dict.fromkeys(shown, 0)
-    for values, quantity in columns:
-        out.append(shown[quantity][used[quantity]:used[quantity] + len(values)])
-        used[quantity] += len(values)
-    return out
+    cols = point_columns([([units.convert(quantity, float(x)) for x in v.ravel()], quantity) for v, quantity in values])
+    return points_table(title, head, labels, cols)
 
 
 #: Units of the Points table when the caller names none: those the sheet showed before it took its
@@ -340,5 +292,5 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
     return tuple(blocks)
 
 
-__all__ = ["POINT_UNITS", "BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "matrix_table", "modes_of",
+__all__ = ["POINT_UNITS", "BlockSolve", "acceleration_values", "block_sections_blocks", "block_solve", "modes_of",
            "point_values"]

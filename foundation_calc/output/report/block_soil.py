@@ -6,8 +6,9 @@ sliding y, rocking about x, B in the plane) and torsion about z, then each dashp
 C_i = 2 ξ_i √(K_i m_i) (m_i the total mass, or the moment of inertia J_x, J_y, J_z about the axis
 through O; :meth:`~foundation_calc.scenes.block.BlockScene.soil_impedance`). The chains print
 each formula with its values (Lysmer's analogs with Reissner-Sagoci's torsion, Barkan's
-coefficients, SP 26.13330, Gazetas' and Pais & Kausel's static springs through the crank's own
-chains of :mod:`~foundation_calc.output.report.soil_methods`); on a frequency-dependent soil a
+coefficients, SP 26.13330: the formulas of :mod:`~foundation_calc.output.report.soil_methods`
+that the crank's plane chains print too; Gazetas' and Pais & Kausel's static springs through the
+crank's own chains, once per plane); on a frequency-dependent soil a
 table gives the six springs and dashpots each order n of each machine was solved with, K(nω) and
 C(nω) of the solver, with the chain at every such frequency. ``tests/test_report_block_soil.py``
 recomputes the printed springs from the printed inputs and one order's response from the printed
@@ -23,8 +24,9 @@ import numpy as np
 from foundation_calc.output.report.handcalc import SYMBOLS, Chain, Columns
 from foundation_calc.output.report.model import Paragraph, Table, table
 from foundation_calc.output.report.numbers import column
+from foundation_calc.output.report.soil_methods import (DASHPOT, LYSMER_RADII, RHW, SP26_FORMULAS, dashpot, lysmer_ratio,
+                                                        lysmer_spring, sp26_givens)
 
-RHW = "[RHW] ch. 10; [DR] ch. 5"
 BA = "[KM] (3.2)-(3.4); [Ba]"
 SP26 = "[SP26]"
 PK = "[PK]; [NIST] Table 2-3a"
@@ -63,7 +65,7 @@ def _springs(chain: Chain, formulas: tuple[str, ...], sources: tuple[str, ...]) 
 def _dashpots(chain: Chain) -> None:
     """C_i = 2 ξ_i √(K_i m_i) of every motion, as the solver makes them."""
     for C, xi, K, m, unit, motion in zip(DASHPOTS, RATIOS, SPRINGS, MASSES, UNITS_C, MEANINGS):
-        chain.step(C, f"2*{xi}*sqrt({K}*{m})", unit, "[RHW] ch. 10, C = 2 ξ √(K m)", f"dashpot at O: {motion.replace(' spring', '')}")
+        dashpot(chain, C, xi, K, m, unit, DASHPOT, f"dashpot at O: {motion.replace(' spring', '')}")
 
 
 def _half_space(chain: Chain, footing) -> None:
@@ -84,24 +86,21 @@ def lysmer_chain(footing, model) -> Chain:
     chain = Chain("Block soil springs and dashpots at O: Lysmer's, Hall's and Reissner-Sagoci's analogs (soil.method = \"lysmer\")")
     _givens(chain, footing, model)
     _half_space(chain, footing)
-    chain.step("r0", "sqrt(B*L/pi)", "m", RHW, "radius of the circle of the base's area")
-    chain.step("r0y", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about y")
-    chain.step("r0x", "(L*B**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment about x")
-    chain.step("r0t", "(L*B*(L**2 + B**2)/(6*pi))**0.25", "m", RHW, "radius of the circle of the base's polar second moment")
-    _springs(chain, ("32*(1 - nu)*G*r0/(7 - 8*nu)", "K_x", "4*G*r0/(1 - nu)", "8*G*r0x**3/(3*(1 - nu))",
-                     "8*G*r0y**3/(3*(1 - nu))", "16*G*r0t**3/3"),
-             tuple(f"{RHW} ({who})" for who in ("Hall", "Hall", "Lysmer", "Hall", "Hall", "Reissner-Sagoci")))
-    chain.step("B_x", "(7 - 8*nu)*M/(32*(1 - nu)*rho*r0**3)", "-", RHW, "sliding mass ratio")
-    chain.step("xi_x", "0.2875/sqrt(B_x) + xi_m", "-", RHW, "sliding damping ratio along x (radiation + material)")
+    for r, radius, about in (("r0", "area", "area"), ("r0y", "about y", "second moment about y"),
+                             ("r0x", "about x", "second moment about x"), ("r0t", "polar", "polar second moment")):
+        chain.step(r, LYSMER_RADII[radius], "m", RHW, f"radius of the circle of the base's {about}")
+    lysmer_spring(chain, "sliding", "K_x", "r0", MEANINGS[0])
+    chain.step("K_y", "K_x", "N/m", f"{RHW} (Hall)", MEANINGS[1])
+    for motion, K, r, meaning in zip(("vertical", "rocking", "rocking", "torsion"), SPRINGS[2:], ("r0", "r0x", "r0y", "r0t"),
+                                     MEANINGS[2:]):
+        lysmer_spring(chain, motion, K, r, meaning)
+    lysmer_ratio(chain, "sliding", "B_x", "xi_x", "r0", "M", ("sliding mass ratio", "sliding damping ratio along x (radiation + material)"))
     chain.step("xi_y", "xi_x", "-", RHW, "sliding damping ratio along y")
-    chain.step("B_z", "(1 - nu)*M/(4*rho*r0**3)", "-", RHW, "vertical mass ratio")
-    chain.step("xi_z", "0.425/sqrt(B_z) + xi_m", "-", RHW, "vertical damping ratio (radiation + material)")
-    chain.step("B_rx", "3*(1 - nu)*J_x/(8*rho*r0x**5)", "-", RHW, "rocking inertia ratio about x")
-    chain.step("xi_rx", "0.15/((1 + B_rx)*sqrt(B_rx)) + xi_m", "-", RHW, "rocking damping ratio about x")
-    chain.step("B_ry", "3*(1 - nu)*J_y/(8*rho*r0y**5)", "-", RHW, "rocking inertia ratio about y")
-    chain.step("xi_ry", "0.15/((1 + B_ry)*sqrt(B_ry)) + xi_m", "-", RHW, "rocking damping ratio about y")
-    chain.step("B_t", "J_z/(rho*r0t**5)", "-", RHW, "torsional inertia ratio")
-    chain.step("xi_rz", "0.5/(1 + 2*B_t) + xi_m", "-", RHW, "torsional damping ratio (radiation + material)")
+    lysmer_ratio(chain, "vertical", "B_z", "xi_z", "r0", "M", ("vertical mass ratio", "vertical damping ratio (radiation + material)"))
+    for axis in "xy":
+        lysmer_ratio(chain, "rocking", f"B_r{axis}", f"xi_r{axis}", f"r0{axis}", f"J_{axis}",
+                     (f"rocking inertia ratio about {axis}", f"rocking damping ratio about {axis}"))
+    lysmer_ratio(chain, "torsion", "B_t", "xi_rz", "r0t", "J_z", ("torsional inertia ratio", "torsional damping ratio (radiation + material)"))
     _dashpots(chain)
     return chain
 
@@ -145,7 +144,6 @@ def coefficients_chain(footing, model) -> Chain:
 
 def sp26_chain(footing, model) -> Chain:
     """SP 26.13330's springs and damping in both planes, torsion by SNiP 2.02.05-87 (``planes``)."""
-    from foundation_calc.output.report.soil_methods import sp26_givens
     from foundation_calc.solvers.supports.footing_springs import SP26_TORSION
 
     chain = Chain("Block soil springs and dashpots at O by SP 26.13330 (soil.method = \"sp26\")")
@@ -154,15 +152,16 @@ def sp26_chain(footing, model) -> Chain:
     chain.given("k_psi", SP26_TORSION[0], "-", "ratio C_ψ/C_z (SNiP 2.02.05-87)")
     chain.given("k_xi", SP26_TORSION[1], "-", "ratio ξ_ψ/ξ_z (SNiP 2.02.05-87)")
     _base(chain, SP26)
-    chain.step("c_zsp", "b_sp*E*(1 + sqrt(A10/A))", "N/m³", SP26, "coefficient of elastic uniform compression")
-    _springs(chain, ("0.7*c_zsp*A", "0.7*c_zsp*A", "c_zsp*A", "2*c_zsp*I_x", "2*c_zsp*I_y", "k_psi*c_zsp*(I_x + I_y)"),
+    chain.step("c_zsp", SP26_FORMULAS["c_z"], "N/m³", SP26, "coefficient of elastic uniform compression")
+    sliding, vertical = SP26_FORMULAS["sliding"].format(c="c_zsp"), SP26_FORMULAS["vertical"].format(c="c_zsp")
+    _springs(chain, (sliding, sliding, vertical, *(SP26_FORMULAS["rocking"].format(c="c_zsp", I=I) for I in ("I_x", "I_y")),
+                     "k_psi*c_zsp*(I_x + I_y)"),
              (f"{SP26}, C_x = 0.7 C_z",) * 2 + (SP26,) + (f"{SP26}, C_φ = 2 C_z",) * 2 + ("SNiP 2.02.05-87, C_ψ = C_z",))
-    chain.step("p_m", "M*g/A/1000", "kPa", SP26, "mean static pressure under the base")
-    chain.step("xi_z", "2/sqrt(p_m)", "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
-    chain.step("xi_x", "0.6*xi_z", "-", SP26, "sliding damping ratio along x")
-    chain.step("xi_y", "0.6*xi_z", "-", SP26, "sliding damping ratio along y")
-    chain.step("xi_rx", "0.5*xi_z", "-", SP26, "rocking damping ratio about x")
-    chain.step("xi_ry", "0.5*xi_z", "-", SP26, "rocking damping ratio about y")
+    chain.step("p_m", SP26_FORMULAS["p_m"].format(m="M"), "kPa", SP26, "mean static pressure under the base")
+    chain.step("xi_z", SP26_FORMULAS["xi_z"], "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
+    for xi, formula, meaning in (("xi_x", "xi_sliding", "sliding damping ratio along x"), ("xi_y", "xi_sliding", "sliding damping ratio along y"),
+                                 ("xi_rx", "xi_rocking", "rocking damping ratio about x"), ("xi_ry", "xi_rocking", "rocking damping ratio about y")):
+        chain.step(xi, SP26_FORMULAS[formula], "-", SP26, meaning)
     chain.step("xi_rz", "k_xi*xi_z", "-", "SNiP 2.02.05-87, ξ_ψ = 0.3 ξ_z", "torsional damping ratio")
     _dashpots(chain)
     return chain
@@ -218,7 +217,7 @@ def _torsion_at(chain: Chain, static: Chain, omega: float) -> None:
     chain.step("K_rzw", "k_t*K_rz", "N m/rad", PK, "torsional spring at n ω")
     chain.step("C_t", "rho*V_s*J_t*c_t", "N m s/rad", PK, "torsional radiation dashpot at n ω")
     chain.step("xi_rzw", "C_t/(2*sqrt(K_rzw*J_z)) + xi_m", "-", PK, "torsional damping ratio at n ω (radiation + material)")
-    chain.step("C_rzw", "2*xi_rzw*sqrt(K_rzw*J_z)", "N m s/rad", "[RHW] ch. 10, C = 2 ξ √(K m)", "torsional dashpot at O at n ω")
+    dashpot(chain, "C_rzw", "xi_rzw", "K_rzw", "J_z", "N m s/rad", DASHPOT, "torsional dashpot at O at n ω")
 
 
 def orders_of(scene, own=None) -> list[tuple[str, str, str, float]]:
@@ -257,9 +256,9 @@ def gazetas_blocks(footing, model, orders) -> list:
                 chain = Chain("")
                 gazetas_at(chain, _plane(footing, model, across), static, omega, "circular frequency n ω of the order, or a mode's own ω*", name="omega_s")
                 if not across:
-                    chain.step("C_zw", "2*xi_zw*sqrt(K_zw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "vertical dashpot at O at n ω")
-                chain.step(C_h, "2*xi_xw*sqrt(K_xw*M_tot)", "N s/m", "[RHW] ch. 10, C = 2 ξ √(K m)", "sliding dashpot at O at n ω")
-                chain.step(C_r, "2*xi_phiw*sqrt(K_phiw*I_0)", "N m s/rad", "[RHW] ch. 10, C = 2 ξ √(K m)", "rocking dashpot at O at n ω")
+                    dashpot(chain, "C_zw", "xi_zw", "K_zw", "M_tot", "N s/m", DASHPOT, "vertical dashpot at O at n ω")
+                dashpot(chain, C_h, "xi_xw", "K_xw", "M_tot", "N s/m", DASHPOT, "sliding dashpot at O at n ω")
+                dashpot(chain, C_r, "xi_phiw", "K_phiw", "I_0", "N m s/rad", DASHPOT, "rocking dashpot at O at n ω")
                 chains.append(chain)
             axis = "y" if across else "x"
             out.append(Columns(f"Plane of {axis} at each order's n ω and each mode's ω* (the chain above's springs; [PK] modifiers, [Ga] dashpots)",

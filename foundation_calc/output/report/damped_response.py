@@ -25,8 +25,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.output.report.model import Paragraph, Table, table
-from foundation_calc.output.report.numbers import column, figure, phased
+from foundation_calc.output.report.harmonic_solve import (PLANE, harmonic_table, matrix_table, point_columns,
+                                                          points_table, solve_harmonic)
+from foundation_calc.output.report.model import Paragraph, Table
+from foundation_calc.output.report.numbers import column
 
 #: Significant figures of the matrices, forcing and harmonics.
 DIGITS = 4
@@ -34,16 +36,6 @@ DIGITS = 4
 #: A harmonic is listed on the sheet when a coordinate's magnitude reaches this fraction of that
 #: coordinate's largest harmonic in the checked response [-]; the rest add less than this.
 SOLVED_FRACTION = 1e-3
-
-#: Units of the matrix entries, row by row (order x, y, θ), of M, C and K.
-UNITS = {
-    "M": ("kg, kg, kg m", "kg, kg, kg m", "kg m, kg m, kg m²"),
-    "C": ("N s/m, N s/m, N s", "N s/m, N s/m, N s", "N s, N s, N m s"),
-    "K": ("N/m, N/m, N", "N/m, N/m, N", "N, N, N m"),
-}
-DOF = ("x", "y", "θ")
-FORCE_UNITS = ("N", "N", "N m")
-DOF_UNITS = ("m", "m", "rad")
 
 
 @dataclass(frozen=True)
@@ -58,7 +50,7 @@ class Operator:
 
     def solve(self, w: float) -> np.ndarray:
         """Z_n of (K − w² M + i w C) Z_n = F_n at the harmonic's frequency ``w`` = n ω [rad/s]."""
-        return np.linalg.solve(self.stiffness - w * w * self.mass + 1j * w * self.damping, self.forcing)
+        return solve_harmonic(self.mass, self.damping, self.stiffness, self.forcing, w)
 
 
 def operators(scene, harmonics) -> list[list[Operator]]:
@@ -143,39 +135,27 @@ def damped_solve(scene) -> DampedSolve:
 
 def _matrix_table(op: Operator, title: str) -> Table:
     """M, C, K of one operator (a bar over a mechanism's averaged ones), each column of the table in
-    one notation (:func:`~foundation_calc.output.report.block_methods.matrix_table`)."""
-    from foundation_calc.output.report.block_methods import matrix_table
-
+    one notation (:func:`~foundation_calc.output.report.harmonic_solve.matrix_table`)."""
     bar = "\u0304" if op.source.startswith("mechanism") else ""
     named = [(f"{key}{bar}", matrix) for key, matrix in (("M", op.mass), ("C", op.damping), ("K", op.stiffness))]
-    return matrix_table(title, named, DOF, {f"{key}{bar}": units for key, units in UNITS.items()})
+    return matrix_table(title, named, PLANE.names, {f"{key}{bar}": units for key, units in PLANE.row_units.items()})
 
 
 def _harmonics_table(solve: DampedSolve, shown: list[int]) -> Table:
     many = len(solve.by_harmonic[0]) > 1
-    rows, raw = [], []
+    raw = []
     for i, n in enumerate(solve.harmonics):
         if n not in shown:
             continue
         entries = [(op.source, op.forcing, z) for op, z in zip(solve.by_harmonic[i], solve.responses[i])]
         if many:
             entries.append(("sum", sum(e[1] for e in entries), solve.total(i)))
-        for source, F, Z in entries:
-            raw.append((n, source if many else "", F, Z))
-    scale_F = [max(abs(r[2][j]) for r in raw) or None for j in range(3)]
-    scale_Z = [max(abs(r[3][j]) for r in raw) or None for j in range(3)]
-    cols_F = [column([abs(r[2][j]) for r in raw], DIGITS, scale_F[j]) for j in range(3)]
-    cols_Z = [column([abs(r[3][j]) for r in raw], DIGITS, scale_Z[j]) for j in range(3)]
-    speeds = column([n * solve.omega for n, *_ in raw], DIGITS)
-    for k, (n, source, F, Z) in enumerate(raw):
-        row = (str(n), speeds[k], *(phased(cols_F[j][k], complex(F[j])) for j in range(3)),
-               *(phased(cols_Z[j][k], complex(Z[j])) for j in range(3)))
-        rows.append(row if not many else (row[0], source, *row[1:]))
-    head = ("n", "nω [rad/s]", "F_x [N]", "F_y [N]", "M_θ [N m]", "x_n [m]", "y_n [m]", "θ_n [rad]")
-    if many:
-        head = ("n", "source", *head[1:])
-    return table("Each harmonic: forcing F_n and Z_n = (K − n²ω² M + i nω C)⁻¹ F_n (magnitude ∠ phase lag φ: each entry is A cos(nωt − φ))",
-                 head, rows, (False,) * (2 if many else 1) + (True,) * 7)
+        raw += [(n, source, F, Z) for source, F, Z in entries]
+    labels = [(str(n), source) if many else (str(n),) for n, source, *_ in raw]
+    head = ("n", *(("source",) if many else ()), "nω [rad/s]", *PLANE.forcing, *PLANE.response)
+    return harmonic_table("Each harmonic: forcing F_n and Z_n = (K − n²ω² M + i nω C)⁻¹ F_n (magnitude ∠ phase lag φ: each entry is A cos(nωt − φ))",
+                          head, labels, [n * solve.omega for n, *_ in raw],
+                          [(np.array([F for *_, F, _ in raw]), DIGITS), (np.array([Z for *_, Z in raw]), DIGITS)])
 
 
 def _peaks_table(solve: DampedSolve, scene, amplitudes: dict) -> Table:
@@ -198,12 +178,12 @@ def _peaks_table(solve: DampedSolve, scene, amplitudes: dict) -> Table:
             if first is not None:
                 other = first[name][direction]["displacement"]
                 columns[3].append(abs(other - values[0]) / values[0] if values[0] else 0.0)
-    texts = [column(c, 3) for c in columns[:3]] + ([column(columns[3], 2, 1.0)] if first is not None else [])
-    rows = [(*label, *(t[k] for t in texts)) for k, label in enumerate(labels)]
+    texts = point_columns([(c, q) for c, q in zip(columns[:3], ("displacement", "velocity", "acceleration"))])
+    texts += [column(columns[3], 2, 1.0)] if first is not None else []
     head = ("point", "direction", "displacement [m]", "velocity [m/s]", "acceleration [m/s²]")
     head += ("spread to first approx.",) if first is not None else ()
-    return table("Peaks over one revolution from the sheet's Z_n: max over t of |Σ_n Re(Z_n e^{i nωt})| at C and each point",
-                 head, rows, (False, False) + (True,) * (len(head) - 2))
+    return points_table("Peaks over one revolution from the sheet's Z_n: max over t of |Σ_n Re(Z_n e^{i nωt})| at C and each point",
+                        head, labels, texts)
 
 
 def _terms():

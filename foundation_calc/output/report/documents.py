@@ -85,27 +85,46 @@ def unbracketed(loaded) -> bool:
     return soil is not None and getattr(soil, "modulus_range", None) is None
 
 
+def _platform_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
+    from foundation_calc.output.report.figures import platform_modes_figure
+
+    plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
+    return platform_sections(documents, units, plots)
+
+
+def _block_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
+    from foundation_calc.output.report.block_accuracy import block_accuracy_section
+
+    plots = ()
+    if figures:
+        from foundation_calc.output.report.figures import block_sweep_figures
+
+        plots = (Section("Plots", block_sweep_figures(loaded, units, documents["resonance"])),)
+    return (*plots, block_accuracy_section(loaded, documents.get("amplitudes", {}).get("periodic_inertia")))
+
+
+def _crank_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
+    resonance = documents["resonance"]
+    plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()
+    return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)
+
+
+#: Each scene kind's own sections besides its checks: the check documents they read, and their
+#: maker (loaded scene, documents, units, --exact, figures) -> sections.
+KIND_SECTIONS = {
+    "platform": ({"design"}, _platform_sections),
+    "block_foundation": ({"resonance"}, _block_sections),
+    "crank_foundation": ({"resonance", "amplitudes"}, _crank_sections),
+}
+
+
 def _kind_sections(loaded, documents: dict, units: DisplayUnits, exact: bool, figures: bool) -> tuple[Section, ...]:
-    """What a scene kind shows besides its checks (nothing for a kind without its own sections)."""
-    if loaded.kind == "platform" and "design" in documents:
-        from foundation_calc.output.report.figures import platform_modes_figure
-
-        plots = (platform_modes_figure(documents["design"], loaded.limits.detuning, units),) if figures else ()
-        return platform_sections(documents, units, plots)
-    if loaded.kind == "block_foundation" and "resonance" in documents:
-        from foundation_calc.output.report.block_accuracy import block_accuracy_section
-
-        plots = ()
-        if figures:
-            from foundation_calc.output.report.figures import block_sweep_figures
-
-            plots = (Section("Plots", block_sweep_figures(loaded, units, documents["resonance"])),)
-        return (*plots, block_accuracy_section(loaded, documents.get("amplitudes", {}).get("periodic_inertia")))
-    if loaded.kind == "crank_foundation" and {"resonance", "amplitudes"} <= documents.keys():
-        resonance = documents["resonance"]
-        plots = (sweep_figure_of(loaded, units, operating_speed(resonance), resonance["resonances"]),) if figures else ()
-        return crank_sections(documents, plots, units, exact_amplitudes(loaded) if exact else None)
-    return ()
+    """What a scene kind shows besides its checks (:data:`KIND_SECTIONS`; nothing for a kind
+    without its own sections, or when a document they read is missing)."""
+    needs, sections = KIND_SECTIONS.get(loaded.kind, (None, None))
+    if sections is None or not needs <= documents.keys():
+        return ()
+    return sections(loaded, documents, units, exact, figures)
 
 
 def scene_sheet(path: Path, command: str, units: DisplayUnits, exact: bool = False, figures: bool = True,

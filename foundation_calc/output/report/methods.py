@@ -12,11 +12,10 @@ from __future__ import annotations
 from foundation_calc.output.report.crank_frequencies import KM, frequency_givens, frequency_steps
 from foundation_calc.output.report.handcalc import Chain
 from foundation_calc.output.report.platform_methods import platform_chain
-from foundation_calc.output.report.soil_methods import gazetas_chains, soil_givens, sp26_springs_chain
+from foundation_calc.output.report.soil_methods import (LYSMER_RADII, RHW, dashpot, gazetas_chains, lysmer_ratio, lysmer_spring,
+                                                        soil_givens, sp26_springs_chain)
 from foundation_calc.output.report.stratum import stratum_blocks
 from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS
-
-RHW = "[RHW] ch. 10; [DR] ch. 5"
 
 
 def _coefficient_springs(scene) -> Chain:
@@ -37,17 +36,15 @@ def _coefficient_springs(scene) -> Chain:
 def _lysmer_springs(scene) -> Chain:
     chain = Chain("Soil springs and radiation damping: Lysmer's and Hall's analogs (soil.method = \"lysmer\")")
     soil_givens(chain, scene)
-    chain.step("r0", "sqrt(B*L/pi)", "m", RHW, "radius of the circle of the base's area")
-    chain.step("r0psi", "(B*L**3/(3*pi))**0.25", "m", RHW, "radius of the circle of the base's second moment")
-    chain.step("K_z", "4*G*r0/(1 - nu)", "N/m", f"{RHW} (Lysmer)", "vertical base spring")
-    chain.step("B_z", "(1 - nu)*M_tot/(4*rho*r0**3)", "-", RHW, "vertical mass ratio")
-    chain.step("xi_z", "0.425/sqrt(B_z) + xi_m", "-", RHW, "vertical damping ratio (radiation + material)")
-    chain.step("K_x", "32*(1 - nu)*G*r0/(7 - 8*nu)", "N/m", f"{RHW} (Hall)", "horizontal base spring")
-    chain.step("B_x", "(7 - 8*nu)*M_tot/(32*(1 - nu)*rho*r0**3)", "-", RHW, "horizontal mass ratio")
-    chain.step("xi_x", "0.2875/sqrt(B_x) + xi_m", "-", RHW, "horizontal damping ratio (radiation + material)")
-    chain.step("K_phi", "8*G*r0psi**3/(3*(1 - nu))", "N m/rad", f"{RHW} (Hall)", "rocking base spring")
-    chain.step("B_phi", "3*(1 - nu)*I_0/(8*rho*r0psi**5)", "-", RHW, "rocking inertia ratio")
-    chain.step("xi_phi", "0.15/((1 + B_phi)*sqrt(B_phi)) + xi_m", "-", RHW, "rocking damping ratio (radiation + material)")
+    chain.step("r0", LYSMER_RADII["area"], "m", RHW, "radius of the circle of the base's area")
+    chain.step("r0psi", LYSMER_RADII["about y"], "m", RHW, "radius of the circle of the base's second moment")
+    for motion, K, B, xi, r, m, meanings in (
+        ("vertical", "K_z", "B_z", "xi_z", "r0", "M_tot", ("vertical base spring", "vertical mass ratio", "vertical damping ratio")),
+        ("sliding", "K_x", "B_x", "xi_x", "r0", "M_tot", ("horizontal base spring", "horizontal mass ratio", "horizontal damping ratio")),
+        ("rocking", "K_phi", "B_phi", "xi_phi", "r0psi", "I_0", ("rocking base spring", "rocking inertia ratio", "rocking damping ratio")),
+    ):
+        lysmer_spring(chain, motion, K, r, meanings[0])
+        lysmer_ratio(chain, motion, B, xi, r, m, (meanings[1], f"{meanings[2]} (radiation + material)"))
     return chain
 
 
@@ -72,9 +69,9 @@ def _dashpots(scene, springs) -> Chain:
         ("xi_z", "vertical damping ratio", "-"), ("xi_x", "horizontal damping ratio", "-"), ("xi_phi", "rocking damping ratio", "-"),
     ):
         chain.given(name, float(getattr(springs, name)), unit, meaning)
-    chain.step("C_z", "2*xi_z*sqrt(K_z*M_tot)", "N s/m", RHW, "vertical dashpot")
-    chain.step("C_x", "2*xi_x*sqrt(K_x*M_tot)", "N s/m", RHW, "horizontal dashpot at the base")
-    chain.step("C_phi", "2*xi_phi*sqrt(K_phi*I_0)", "N m s/rad", RHW, "rocking dashpot")
+    dashpot(chain, "C_z", "xi_z", "K_z", "M_tot", "N s/m", RHW, "vertical dashpot")
+    dashpot(chain, "C_x", "xi_x", "K_x", "M_tot", "N s/m", RHW, "horizontal dashpot at the base")
+    dashpot(chain, "C_phi", "xi_phi", "K_phi", "I_0", "N m s/rad", RHW, "rocking dashpot")
     return chain
 
 
@@ -113,29 +110,44 @@ def crank_chains(scene, amplitudes: dict | None = None) -> list:
     return out
 
 
+def _crank_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.damped_response import damped_response_blocks
+
+    return crank_chains(scene, documents.get("amplitudes")), damped_response_blocks(scene, documents.get("amplitudes"))
+
+
+def _platform_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.platform_methods import verification_blocks
+
+    return [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
+
+
+def _block_methods(scene, documents: dict, units) -> tuple[list, tuple]:
+    from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
+
+    return [], block_sections_blocks(scene, documents.get("amplitudes"), units or POINT_UNITS)
+
+
+#: Each scene kind's hand calculations: the check documents it cannot go without, and the maker
+#: (scene, documents, units) -> (chains, the kind's own solve as sheet blocks).
+KIND_METHODS = {
+    "crank_foundation": (set(), _crank_methods),
+    "platform": ({"design"}, _platform_methods),
+    "block_foundation": (set(), _block_methods),
+}
+
+
 def methods_section(scene, documents: dict, units=None):
-    """The hand calculations and nomenclature of the scene (None for a kind without chains here);
-    ``units``: the sheet's (:class:`~foundation_calc.output.display_units.DisplayUnits`), in which a
-    block's points are shown (by default µm and mm/s)."""
+    """The hand calculations and nomenclature of the scene (None for a kind without chains here,
+    :data:`KIND_METHODS`); ``units``: the sheet's (:class:`~foundation_calc.output.display_units.DisplayUnits`),
+    in which a block's points are shown (by default µm and mm/s)."""
     from foundation_calc.output.report.handcalc import nomenclature_table
     from foundation_calc.output.report.model import Section
 
-    response: tuple = ()
-    if scene.kind == "crank_foundation":
-        from foundation_calc.output.report.damped_response import damped_response_blocks
-
-        chains = crank_chains(scene, documents.get("amplitudes"))
-        response = damped_response_blocks(scene, documents.get("amplitudes"))
-    elif scene.kind == "platform" and "design" in documents:
-        from foundation_calc.output.report.platform_methods import verification_blocks
-
-        chains, response = [platform_chain(documents["design"])], verification_blocks(scene, documents["design"])
-    elif scene.kind == "block_foundation":
-        from foundation_calc.output.report.block_methods import POINT_UNITS, block_sections_blocks
-
-        chains, response = [], block_sections_blocks(scene, documents.get("amplitudes"), units or POINT_UNITS)
-    else:
+    needs, parts = KIND_METHODS.get(scene.kind, (None, None))
+    if parts is None or not needs <= documents.keys():
         return None
+    chains, response = parts(scene, documents, units)
     runup = []
     if "runup" in documents:
         from foundation_calc.output.report.runup_methods import runup_columns

@@ -79,8 +79,9 @@ def verification_blocks(scene, doc: dict) -> tuple:
     sheet (K₀ v = p² M₀ v) and the forcing's harmonics: what the harmonic balance starts from."""
     import numpy as np
 
-    from foundation_calc.output.report.block_methods import matrix_table, modes_of
+    from foundation_calc.output.report.block_methods import modes_of
     from foundation_calc.output.report.handcalc import Definitions
+    from foundation_calc.output.report.harmonic_solve import matrix_table
     from foundation_calc.output.report.model import Paragraph, table
     from foundation_calc.output.report.numbers import column, figure
 

@@ -14,12 +14,75 @@ from __future__ import annotations
 from foundation_calc.output.report.handcalc import SYMBOLS, Chain
 from foundation_calc.solvers.constants import GRAVITY
 
+RHW = "[RHW] ch. 10; [DR] ch. 5"
+#: The source of C = 2 ξ √(K m) of a block's dashpot at O.
+DASHPOT = "[RHW] ch. 10, C = 2 ξ √(K m)"
 GA = "[Ga] Table 1"
 GA2 = "[Ga] Table 2 (d = D)"
 SP26 = "[SP26]"
 PK = "[PK]; [NIST] Table 2-3a"
 PK2 = "[PK]; [NIST] Table 2-2a"
 PK2B = "[PK]; [NIST] Table 2-2b (d = D)"
+
+
+def dashpot(chain: Chain, C: str, xi: str, K: str, m: str, unit: str, source: str, meaning: str) -> float:
+    """Add the dashpot ``C`` = 2 ξ √(K m) of one motion to ``chain`` from its damping ratio ``xi``,
+    spring ``K`` and mass (or moment of inertia) ``m`` ([RHW] ch. 10), the form every soil method's
+    chain and the solvers use (:func:`~foundation_calc.solvers.supports.plane_footing.plane_dashpots`)."""
+    return chain.step(C, f"2*{xi}*sqrt({K}*{m})", unit, source, meaning)
+
+
+#: Lysmer's and Hall's analogs ([RHW] ch. 10, :func:`~foundation_calc.solvers.soil.lysmer.lysmer_springs`)
+#: and Reissner-Sagoci's torsion (:func:`~foundation_calc.solvers.soil.torsion.lysmer_torsion`), each
+#: motion as (who, spring, mass ratio, damping ratio): ``{r}`` the radius of the circle of the base's
+#: area (or of its second moment about the motion's axis), ``{m}`` the mass (or moment of inertia
+#: about that axis), ``{B}`` the mass ratio's symbol. The crank takes the plane's three motions once,
+#: the block each plane's and the torsion.
+LYSMER = {
+    "vertical": ("Lysmer", "4*G*{r}/(1 - nu)", "(1 - nu)*{m}/(4*rho*{r}**3)", "0.425/sqrt({B}) + xi_m"),
+    "sliding": ("Hall", "32*(1 - nu)*G*{r}/(7 - 8*nu)", "(7 - 8*nu)*{m}/(32*(1 - nu)*rho*{r}**3)", "0.2875/sqrt({B}) + xi_m"),
+    "rocking": ("Hall", "8*G*{r}**3/(3*(1 - nu))", "3*(1 - nu)*{m}/(8*rho*{r}**5)", "0.15/((1 + {B})*sqrt({B})) + xi_m"),
+    "torsion": ("Reissner-Sagoci", "16*G*{r}**3/3", "{m}/(rho*{r}**5)", "0.5/(1 + 2*{B}) + xi_m"),
+}
+
+#: Radii of the circles of the base's area and of its second moments, L along x, B along y ([RHW] ch. 10).
+LYSMER_RADII = {
+    "area": "sqrt(B*L/pi)",
+    "about y": "(B*L**3/(3*pi))**0.25",
+    "about x": "(L*B**3/(3*pi))**0.25",
+    "polar": "(L*B*(L**2 + B**2)/(6*pi))**0.25",
+}
+
+
+def lysmer_spring(chain: Chain, motion: str, K: str, r: str, meaning: str) -> float:
+    """Add the spring ``K`` of ``motion`` (:data:`LYSMER`) on the radius ``r``."""
+    who, spring, *_ = LYSMER[motion]
+    return chain.step(K, spring.format(r=r), "N m/rad" if motion in ("rocking", "torsion") else "N/m", f"{RHW} ({who})",
+                      meaning)
+
+
+def lysmer_ratio(chain: Chain, motion: str, B: str, xi: str, r: str, m: str, meanings: tuple[str, str]) -> float:
+    """Add the mass (or inertia) ratio ``B`` and the damping ratio ``xi`` (radiation + material ξ_m) of
+    ``motion`` (:data:`LYSMER`) on the radius ``r`` and the mass or moment of inertia ``m``."""
+    *_, ratio, damping = LYSMER[motion]
+    chain.step(B, ratio.format(r=r, m=m), "-", RHW, meanings[0])
+    return chain.step(xi, damping.format(B=B), "-", RHW, meanings[1])
+
+
+#: SP 26.13330's coefficient of elastic uniform compression from the deformation modulus, the
+#: springs as its multiples (C_x = 0.7 C_z, C_φ = 2 C_z) and the damping ratios from the mean
+#: static pressure p_m [kPa] ([SP26]; :mod:`foundation_calc.solvers.soil.sp26`); ``{c}`` the
+#: coefficient's symbol, ``{m}`` the total mass's.
+SP26_FORMULAS = {
+    "c_z": "b_sp*E*(1 + sqrt(A10/A))",
+    "sliding": "0.7*{c}*A",
+    "vertical": "{c}*A",
+    "rocking": "2*{c}*{I}",
+    "p_m": "{m}*g/A/1000",
+    "xi_z": "2/sqrt(p_m)",
+    "xi_sliding": "0.6*xi_z",
+    "xi_rocking": "0.5*xi_z",
+}
 
 
 def soil_givens(chain: Chain, scene) -> None:
@@ -200,14 +263,14 @@ def sp26_springs_chain(scene) -> Chain:
     chain.given("A", f.base_area, "m²", "area of the base")
     chain.given("I1", f.base_second_moment, "m⁴", "second moment of the base area about its axis normal to the plane")
     chain.given("M_tot", scene.total_mass, "kg", "total vibrating mass")
-    chain.step("C_z", "b_sp*E*(1 + sqrt(A10/A))", "N/m³", SP26, "coefficient of elastic uniform compression")
-    chain.step("K_z", "C_z*A", "N/m", SP26, "vertical base spring")
-    chain.step("K_x", "0.7*C_z*A", "N/m", f"{SP26}, C_x = 0.7 C_z", "horizontal base spring")
-    chain.step("K_phi", "2*C_z*I1", "N m/rad", f"{SP26}, C_φ = 2 C_z", "rocking base spring")
-    chain.step("p_m", "M_tot*g/A/1000", "kPa", SP26, "mean static pressure under the base")
-    chain.step("xi_z", "2/sqrt(p_m)", "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
-    chain.step("xi_x", "0.6*xi_z", "-", SP26, "horizontal damping ratio")
-    chain.step("xi_phi", "0.5*xi_z", "-", SP26, "rocking damping ratio")
+    chain.step("C_z", SP26_FORMULAS["c_z"], "N/m³", SP26, "coefficient of elastic uniform compression")
+    chain.step("K_z", SP26_FORMULAS["vertical"].format(c="C_z"), "N/m", SP26, "vertical base spring")
+    chain.step("K_x", SP26_FORMULAS["sliding"].format(c="C_z"), "N/m", f"{SP26}, C_x = 0.7 C_z", "horizontal base spring")
+    chain.step("K_phi", SP26_FORMULAS["rocking"].format(c="C_z", I="I1"), "N m/rad", f"{SP26}, C_φ = 2 C_z", "rocking base spring")
+    chain.step("p_m", SP26_FORMULAS["p_m"].format(m="M_tot"), "kPa", SP26, "mean static pressure under the base")
+    chain.step("xi_z", SP26_FORMULAS["xi_z"], "-", f"{SP26} (p_m in kPa)", "vertical damping ratio")
+    chain.step("xi_x", SP26_FORMULAS["xi_sliding"], "-", SP26, "horizontal damping ratio")
+    chain.step("xi_phi", SP26_FORMULAS["xi_rocking"], "-", SP26, "rocking damping ratio")
     return chain
 
 
@@ -218,5 +281,6 @@ def gazetas_chains(scene) -> list[Chain]:
     return [static, gazetas_dynamic_chain(scene, static)]
 
 
-__all__ = ["gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "pais_kausel_springs_chain",
-           "soil_givens", "sp26_givens", "sp26_springs_chain"]
+__all__ = ["DASHPOT", "LYSMER", "LYSMER_RADII", "RHW", "SP26_FORMULAS", "dashpot", "gazetas_at", "gazetas_chains", "gazetas_dynamic_chain", "gazetas_springs_chain", "pais_kausel_springs_chain",
+           "lysmer_ratio", "lysmer_spring", "soil_givens", "sp26_givens",
+           "sp26_springs_chain"]
