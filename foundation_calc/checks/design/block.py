@@ -1,5 +1,5 @@
-"""The checks of a ``block_foundation`` scene (``CHECKS["block_foundation"]``) over a batch of
-candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
+"""The block engine of the one batch checker (:mod:`.batch`): the checks of a ``block_foundation``
+scene (``CHECKS["block_foundation"]``) over a batch of candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
 on stacks of matrices instead of one.
 
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
@@ -52,7 +52,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -78,25 +78,12 @@ _STATUS_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
 _CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
 
 
-def _candidates(scene, sizing, batch: Batch):
-    """((L, B, H) of every candidate, (N,) each [m]; the support's sizes, key -> (N,)): the scene's
-    values where not varied (:func:`~.supported.candidate_values`); ``sizing``, the support's sizing hooks."""
-    from foundation_calc.checks.design.supported import candidate_values
-
+def _dimensions(scene, batch: Batch):
+    """(the block's keys :data:`VARIABLE_KEYS` -> the scene's values; the batch). Raises ValueError
+    for a block given by its mass."""
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}
-    return candidate_values(batch, given, sizing.sizes, "block_foundation")
-
-
-def _block_body(L, B, H, rho):
-    """Mass [kg], centre of mass (N, 3) [m] and central inertia tensor (N, 3, 3) [kg m²] of each
-    candidate block of density ρ [kg/m³] (:attr:`~foundation_calc.scenes.block_parts.BlockBody.mass_properties`)."""
-    from foundation_calc.solvers.rigid_body.inertia import block_inertia, diagonal_matrices
-
-    m = L * B * H * rho
-    cog = np.stack([np.zeros_like(H), np.zeros_like(H), H / 2.0], axis=-1)
-    return m, cog, diagonal_matrices(np.stack(block_inertia(m, L, B, H), axis=-1))
+    return {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}, batch
 
 
 def _placing(scene, L, B, H):
@@ -269,7 +256,8 @@ def _inputs(scene, sizing, sizes, L, B, H):
 
 def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     """Every check of ``fcalc check`` (module docstring) on every candidate of ``batch``
-    (:data:`VARIABLE_KEYS` -> (N,) values in SI units).
+    (:data:`VARIABLE_KEYS` -> (N,) values in SI units), by the one batch checker
+    (:func:`~foundation_calc.checks.design.batch.evaluate`) with this kind's engine.
 
     Raises
     ------
@@ -281,17 +269,12 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: the batch scales them so,
         :mod:`.block_range`; a pile group's, EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
-    from foundation_calc.checks.design.supported import refuse_unjudged
+    from foundation_calc.checks.design.batch import Engine, evaluate as checked
 
-    refuse_unjudged(scene, scene.support())
-    n = len(next(iter(batch.values()))) if batch else 1
-    return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
-                     n, PIECE)
-
-
-def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
-    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
-        return _evaluate_piece(scene, batch)
+    engine = Engine(kind="block_foundation", piece=PIECE, runup="not evaluated for a batch: " + NOT_EVALUATED["runup"],
+                    dimensions=_dimensions, refuse=lambda scene: None, density=lambda scene: scene.block.density,
+                    prepare=lambda scene: None, judge=_judge)
+    return checked(scene, batch, engine)
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
@@ -340,9 +323,10 @@ class Built:
 
 def _built(scene, L, B, H) -> Built:
     """The candidate blocks L × B × H [m] on ``scene`` (:class:`Built`)."""
+    from foundation_calc.solvers.block.batch_design import block_bodies
     from foundation_calc.solvers.block.model import excitation
 
-    block = _block_body(L, B, H, scene.block.density)
+    block = block_bodies(L, B, H, scene.block.density)
     place = _placing(scene, L, B, H)
     cogs = [place(m.cog) for m in scene.machines]
     model = scene.model(base=(L, B), block=block, machine_cogs=cogs)
@@ -358,39 +342,23 @@ def _built(scene, L, B, H) -> Built:
     return Built(model, excitations, points, impedance, block[0])
 
 
-def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
-    from foundation_calc.checks.design.supported import with_scene_check
-    from foundation_calc.checks.runup import judged
-    from foundation_calc.solvers.supports.base import sizing
+def _judge(scene, _, support, L, B, H, sizes) -> dict:
+    """check -> (outcome, utilisation, governing, reasons) of the resonance, amplitude, inputs and
+    office checks of the blocks (L, B, H) on ``support`` at their ``sizes`` (key -> (N,))."""
+    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
+        scene = support.sized(scene, sizes)  # every candidate on its support at its own sizes
+        inputs = _inputs(scene, support, sizes, L, B, H)
+        built = _built(scene, L, B, H)
+        found = dynamics(scene, built)
+        if getattr(scene.soil, "modulus_range", None) is not None:
+            from foundation_calc.checks.design.block_range import judged
+            from foundation_calc.checks.design.modulus_range import over_range
 
-    support = sizing(scene.support())
-    (L, B, H), sizes = _candidates(scene, support, batch)
-    scene = support.sized(scene, sizes)  # every candidate on its support at its own sizes
-    built = _built(scene, L, B, H)
-    model, m_b = built.model, built.block_mass
-    found = {"inputs": _inputs(scene, support, sizes, L, B, H)}
-    outcome, utilisation, governing, reasons = {}, {}, {}, {}
-    moving = dynamics(scene, built)
-    if getattr(scene.soil, "modulus_range", None) is not None:
-        from foundation_calc.checks.design.block_range import over_range
-
-        ranged = over_range(scene, (L, B, H), {check: found[0] for check, found in moving.items()}, _built, dynamics)
-        for check, worse in ranged.items():
-            o, u, g, r = moving[check]
-            moving[check] = (worse, u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
-    for check, (o, u, g, r) in moving.items():
-        outcome[check], utilisation[check], governing[check], reasons[check] = o, u, g, r
-    o, g, r = found["inputs"]
-    outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
-    if judged(scene):
-        outcome["runup"], utilisation["runup"], governing["runup"], reasons["runup"] = not_evaluated(
-            len(L), "not evaluated for a batch: " + NOT_EVALUATED["runup"])
-    o, u, g, r = _office(scene, model, L, B, m_b)
-    outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
-    order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    with_scene_check(support.size_errors(sizes, L, B), outcome, utilisation, governing, reasons, order)
-    return ordered(L * B * H + support.concrete(sizes), np.asarray(m_b, dtype=float), outcome, utilisation, governing,
-                   reasons, order, (c for c in order if c in NOT_EVALUATED))
+            found = over_range(scene, found, judged(scene, (L, B, H), _built, dynamics), RANGE_REASON)
+        o, g, r = inputs
+        found["inputs"] = (o, np.full(len(L), np.nan), g, r)
+        found["office"] = _office(scene, built.model, L, B, built.block_mass)
+    return found
 
 
 __all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]
