@@ -75,8 +75,6 @@ NOT_EVALUATED = {
 #: Outcome code of each status of :mod:`~foundation_calc.checks.resonance_rule` (clear, information, warn, fail).
 _STATUS_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
 
-_CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
-
 
 def _dimensions(scene, batch: Batch):
     """(the block's keys :data:`VARIABLE_KEYS` -> the scene's values; the batch). Raises ValueError
@@ -128,7 +126,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.block.limit_rows`, :func:`~foundation_calc.checks.block.zone_rows`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
-    from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
+    from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity
 
@@ -160,15 +158,10 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             ratios.append(ratio)
             failed |= exceeds(largest, limit)
             reasons += [f"{quantity} {r}" for r in rows]
-        if limits.code is not None:
-            table = TABLES[limits.code, limits.machine_group, limits.foundation]
-            highest = ZONES.index(limits.acceptable_zone or "B")
-            top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
-            top_x = motion.displacement_rms.max(axis=-1)  # the more restrictive of the two decides
-            index, by_x = code_zone_index(top, top_x, table)
-            verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
-            worst = verdicts[index].max(axis=-1)
-            ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
+        if limits.code is not None:  # each point's largest direction, (N, P)
+            table, zone, ratio = code_zones(limits, motion.velocity_rms.max(axis=-1), motion.displacement_rms.max(axis=-1))
+            worst = zone.max(axis=-1)
+            ratios.append(ratio)
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")

@@ -150,7 +150,8 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
 def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
     :func:`~foundation_calc.checks.crank_amplitudes.check_amplitudes` judges them."""
-    from foundation_calc.checks.codes import TABLES, ZONES, application_warnings, code_zone_index
+    from foundation_calc.checks.codes import application_warnings
+    from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.solvers.crank.batch_design import statistics
     from foundation_calc.solvers.crank.response import DIRECTIONS, point_series
@@ -175,21 +176,13 @@ def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
                 reasons.append(f"{quantity} at {name} ({direction})")
     warned = False
     if limits.code is not None:
-        table = TABLES[limits.code, limits.machine_group, limits.foundation]
+        table, zone, ratio = code_zones(limits, statistic["velocity_rms"].max(axis=-1).T,  # (points, N): the larger
+                                        statistic["displacement_rms"].max(axis=-1).T)  # direction governs
         power = None if limits.machine_power is None else limits.machine_power / 1e3
         warned = bool(application_warnings(table, rpm_from_omega(motion.omega), power))
-        highest = ZONES.index(limits.acceptable_zone or "B")
-        velocity = statistic["velocity_rms"].max(axis=-1).T  # (points, N): the larger direction governs
-        displacement = statistic["displacement_rms"].max(axis=-1).T
-        zone, by_displacement = code_zone_index(velocity, displacement, table)  # the more restrictive decides
-        acceptable = limits.acceptable_zone
-        by_zone = np.array([PASS, WARN, FAIL, FAIL] if acceptable is None else
-                           [PASS if z <= ZONES.index(acceptable) else FAIL for z in range(4)])
-        ratio = np.where(by_displacement, displacement / table.displacement_boundaries[highest],
-                         velocity / table.boundaries[highest])
         for i, name in enumerate(names):
             ratios.append(ratio[i])
-            fails.append(by_zone[zone[i]])
+            fails.append(zone[i])
             reasons.append(f"{table.title} zone at {name}")
     n = len(resonant)
     if ratios:
