@@ -217,17 +217,14 @@ def _inputs(scene, sizing, sizes, L, B, H):
     or any finding of the scene that does not depend on the candidate (the soil, the machines, the
     limits)."""
     from foundation_calc.checks.design.apply import moved_positions
-    from foundation_calc.checks.design.supported import sizes_outside
+    from foundation_calc.checks.design.supported import fixed_findings, sizes_outside
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
-    from foundation_calc.scenes.stratum import shallow, stratum_remarks
+    from foundation_calc.scenes.stratum import shallow
 
     positions = scene.positions()
     warned = sizing.size_warnings(sizes, L, B)
-    judged = {*VARIABLE_KEYS, *sizes, *warned.keys}  # findings under these keys are each candidate's
-    on_base = {str(r) for r in stratum_remarks(scene.soil, *scene.base)}  # the scene's own base's, judged per candidate below
-    fixed = any(f.key not in positions and f.key not in judged and str(f) not in on_base
-                for f in scene.plausibility_findings())
+    fixed = bool(fixed_findings(scene, scene.base, lambda key: key in positions or key in VARIABLE_KEYS, sizes, warned))
     outside = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         outside |= RANGES[KEYS[key]].outside(values)

@@ -218,16 +218,13 @@ def judge_inputs(out: Verdicts, scene, designs, warned, sizes):
     model judges them; the support's ``sizes`` (key -> (N,)) against their plausible ranges and
     the support's own warnings of them (``warned``, its
     :meth:`~foundation_calc.solvers.supports.base.Sizing.size_warnings`: governing 1 + its index)."""
-    from foundation_calc.checks.design.supported import sizes_outside
+    from foundation_calc.checks.design.supported import fixed_findings, sizes_outside
     from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR
     from foundation_calc.scenes.plausibility import RANGES
-    from foundation_calc.scenes.stratum import shallow, stratum_remarks
+    from foundation_calc.scenes.stratum import shallow
 
     f, mech = scene.foundation, scene.mechanism
-    on_base = {str(x) for x in stratum_remarks(scene.soil, *f.dimensions)}  # the scene's own base's
-    judged = {*sizes, *warned.keys}  # findings under these keys are each candidate's
-    fixed = [x for x in scene.plausibility_findings()
-             if not _block_dependent(x.key) and x.key not in judged and str(x) not in on_base]
+    fixed = fixed_findings(scene, f.dimensions, _block_dependent, sizes, warned)
 
     def outside(values, name):
         return RANGES[name].outside(values)
