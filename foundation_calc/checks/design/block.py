@@ -52,7 +52,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts
+from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, Batch, CandidateVerdicts, largest_ratio
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -71,9 +71,6 @@ NOT_EVALUATED = {
              " at the factors between them where a critical speed crosses a machine's speed (their amplitude peak);"
              " the re-check of the chosen designs judges those",
 }
-
-#: Outcome code of each status of :mod:`~foundation_calc.checks.resonance_rule` (clear, information, warn, fail).
-_STATUS_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
 
 
 def _dimensions(scene, batch: Batch):
@@ -113,7 +110,7 @@ def _resonance(scene, modes, excitations):
     rows = np.arange(len(margin))
     governing = verdict.governing
     utilisation = verdict.needed[rows, governing] / margin[rows, governing]
-    outcome = _STATUS_OUTCOME[verdict.worst]
+    outcome = RULE_OUTCOME[verdict.worst]
     motion = modes.dominant[rows, np.array([j - 1 for _, _, j in labels])[governing]]
     reasons = tuple(
         condition_label(SimpleNamespace(machine=name, order=n, mode=j, motion=m))
@@ -165,11 +162,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")
-    if ratios:
-        ratio = np.concatenate(ratios, axis=-1)
-        governing, utilisation = np.argmax(ratio, axis=-1), ratio.max(axis=-1)
-    else:
-        governing, utilisation = np.zeros(n, dtype=int), np.full(n, np.nan)
+    utilisation, governing = largest_ratio(ratios, n)
     outcome = np.where(stuck, FAIL, worst).astype(np.int8)
     governing = np.where(stuck, len(reasons) - 1, governing)
     return outcome, np.where(stuck, np.inf, utilisation), governing, tuple(reasons)
@@ -201,9 +194,8 @@ def _office(scene, model, L, B, m_b):
     ratios.append(limits.mass_ratio / mu)
     outcomes.append(np.where(mu < limits.mass_ratio, WARN, PASS))
     reasons.append("mass ratio")
-    ratio = np.stack(ratios, axis=-1)
     outcome = np.max(np.stack(outcomes, axis=-1), axis=-1).astype(np.int8)
-    return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
+    return outcome, *largest_ratio(ratios, len(L)), tuple(reasons)
 
 
 def _inputs(scene, sizing, sizes, L, B, H):

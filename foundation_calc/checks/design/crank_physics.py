@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN
+from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, largest_ratio
 
 #: The scene keys a candidate may vary, by their short names.
 VARIED = ("length", "width", "height")
@@ -115,7 +115,7 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
     never the verdict: its margin is inf, its status clear."""
     from foundation_calc.checks.crank_resonance import forcing_shares, harmonic_conditions, judge_conditions
-    from foundation_calc.checks.resonance_rule import FAIL as RULE_FAIL, FORCING_SHARE, WARN as RULE_WARN, Judgement
+    from foundation_calc.checks.resonance_rule import FORCING_SHARE, Judgement
 
     _, _, _, fc, fs = mech
     conditions = harmonic_conditions(range(1, harmonics + 1))
@@ -127,7 +127,7 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, [conditions[i] for i in kept], shares[:, kept],
                                            scene.limits.detuning)
     worst = verdict.worst
-    outcome = np.select([worst >= RULE_FAIL, worst == RULE_WARN], [FAIL, WARN], PASS)
+    outcome = RULE_OUTCOME[worst]
     g = np.maximum(verdict.governing, 0)[:, None]
     margin = np.take_along_axis(margins, g, -1)[:, 0]
     needed = np.take_along_axis(verdict.needed, g, -1)[:, 0]
@@ -185,13 +185,8 @@ def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
             fails.append(zone[i])
             reasons.append(f"{table.title} zone at {name}")
     n = len(resonant)
-    if ratios:
-        ratio = np.stack(ratios)
-        outcome = np.stack(fails).max(axis=0)
-        governing = np.argmax(ratio, axis=0)
-        utilisation = ratio.max(axis=0)
-    else:
-        outcome, governing, utilisation = np.zeros(n, int), np.zeros(n, int), np.full(n, np.nan)
+    outcome = np.stack(fails).max(axis=0) if fails else np.zeros(n, int)
+    utilisation, governing = largest_ratio(ratios, n)
     if warned:
         outcome = np.maximum(outcome, WARN)
     k = len(reasons)
