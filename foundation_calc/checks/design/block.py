@@ -52,7 +52,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, Batch, CandidateVerdicts, largest_ratio
+from foundation_calc.checks.design.candidates import (FAIL, PASS, RULE_OUTCOME, WARN, Batch, CandidateVerdicts, failing,
+                                                      largest_ratio)
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -162,10 +163,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")
-    utilisation, governing = largest_ratio(ratios, n)
-    outcome = np.where(stuck, FAIL, worst).astype(np.int8)
-    governing = np.where(stuck, len(reasons) - 1, governing)
-    return outcome, np.where(stuck, np.inf, utilisation), governing, tuple(reasons)
+    return *failing(stuck, worst, *largest_ratio(ratios, n), len(reasons) - 1), tuple(reasons)
 
 
 def _office(scene, model, L, B, m_b):
@@ -282,9 +280,7 @@ def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
                       else _amplitudes(scene, model, modes, excitations, built.points, built.impedance))
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",
                  f"{rootless_reason('')} (fcalc check: invalid scene)")
-        failing = unstable | rootless
-        found[check] = (np.where(failing, FAIL, o).astype(np.int8), np.where(failing, np.inf, u),
-                        np.where(unstable, len(r) - 2, np.where(rootless, len(r) - 1, g)), r)
+        found[check] = (*failing(unstable | rootless, o, u, g, np.where(unstable, len(r) - 2, len(r) - 1)), r)
     return found
 
 

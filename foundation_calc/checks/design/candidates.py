@@ -101,6 +101,14 @@ def largest_ratio(ratios: Sequence[np.ndarray], n: int) -> tuple[np.ndarray, np.
     return ratio.max(axis=-1), np.argmax(ratio, axis=-1)
 
 
+def failing(mask, outcome, utilisation, governing, reason) -> tuple:
+    """A check's (outcome, utilisation, governing) of every candidate with those in ``mask`` (N,)
+    failing it: outcome :data:`FAIL`, utilisation inf, governing ``reason`` (an index of the check's
+    reasons, or one per candidate); the others' verdicts kept."""
+    return (np.where(mask, FAIL, outcome).astype(np.int8), np.where(mask, np.inf, utilisation),
+            np.where(mask, reason, governing))
+
+
 def in_pieces(
     judge: Callable[[int, int], CandidateVerdicts], count: int, size: int, workers: int = WORKERS
 ) -> CandidateVerdicts:

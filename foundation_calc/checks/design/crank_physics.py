@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, largest_ratio
+from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, failing, largest_ratio
 
 #: The scene keys a candidate may vary, by their short names.
 VARIED = ("length", "width", "height")
@@ -133,9 +133,8 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     needed = np.take_along_axis(verdict.needed, g, -1)[:, 0]
     utilisation = np.where(margin > 0.0, needed / np.where(margin > 0.0, margin, 1.0), np.inf)
     utilisation = np.where(verdict.governing >= 0, utilisation, np.nan)
-    unstable = len(conditions)
-    out.put("resonance", np.where(stable, outcome, FAIL), np.where(stable, utilisation, np.inf),
-            np.where(stable, kept[g[:, 0]], unstable), [c.label for c in conditions] + [_UNSTABLE])
+    out.put("resonance", *failing(~stable, outcome, utilisation, kept[g[:, 0]], len(conditions)),
+            [c.label for c in conditions] + [_UNSTABLE])
 
     def widened(values, fill):  # the kept conditions' columns among every condition's
         full = np.full(values.shape[:-1] + (len(conditions),), fill, dtype=values.dtype)
@@ -191,10 +190,7 @@ def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
         outcome = np.maximum(outcome, WARN)
     k = len(reasons)
     reasons += ["resonant with an undamped mode: no steady state", _UNSTABLE]
-    outcome = np.where(resonant | ~stable, FAIL, outcome)
-    utilisation = np.where(resonant | ~stable, np.inf, utilisation)
-    governing = np.where(~stable, k + 1, np.where(resonant, k, governing))
-    out.put("amplitudes", outcome, utilisation, governing, reasons)
+    out.put("amplitudes", *failing(resonant | ~stable, outcome, utilisation, governing, np.where(stable, k, k + 1)), reasons)
 
 
 def judge_office(out: Verdicts, scene, designs):
@@ -309,10 +305,9 @@ def _fail_rootless(out: Verdicts, rootless: np.ndarray) -> None:
     from foundation_calc.checks.crank_resonance import MODES
     from foundation_calc.solvers.soil.impedance import rootless_reason
 
-    failing = rootless.any(axis=-1)
     first = np.argmax(rootless, axis=-1)
     texts = [f"{rootless_reason(mode)} (fcalc check: invalid scene)" for mode in MODES]
     for check in [c for c in ("resonance", "amplitudes") if c in out.outcome]:
         k = len(out.reasons[check])
-        out.put(check, np.where(failing, FAIL, out.outcome[check]), np.where(failing, np.inf, out.utilisation[check]),
-                np.where(failing, k + first, out.governing[check]), out.reasons[check] + tuple(texts))
+        out.put(check, *failing(rootless.any(axis=-1), out.outcome[check], out.utilisation[check], out.governing[check],
+                                k + first), out.reasons[check] + tuple(texts))
