@@ -308,3 +308,34 @@ def test_a_table_title_wraps_at_the_terminal_s_width_not_the_table_s(on_terminal
     lines = on_terminal("amplitudes", "frame_saw.toml")
     title = "Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)"
     assert title in [line.rstrip() for line in lines], [line for line in lines if line.startswith("Harmonics")]
+
+
+def test_a_table_wider_than_80_columns_in_its_words_splits_repeating_its_first_column(runner, on_terminal):
+    """``fcalc amplitudes --exact`` on frame_saw.toml: the harmonics table (values and errors of
+    three methods) took 88 columns even frameless and ran past the terminal; now it is two tables
+    that fit, each with the harmonic column, every column once, every row in each. A pipe keeps one."""
+    lines = on_terminal("amplitudes", "--exact", "frame_saw.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    heads = [i for i, line in enumerate(lines) if line.replace("┃", " ").split()[:1] == ["harmonic"]]
+    assert len(heads) == 2, heads
+    head_words = " ".join(" ".join(lines[i - 1:i + 1]) for i in heads).replace("┃", " ").split()
+    for name in ("first", "approximation", "averaged", "operator", "exact", "error,"):
+        assert name in head_words, (name, head_words)
+    for i in heads:
+        body = [line.replace("│", " ").split()[0] for line in lines[i + 2:i + 12]]
+        assert body == ["y1", "y2", "y3", "y4", "x1", "x2", "x3", "theta1", "theta2", "theta3"], lines[i:i + 12]
+    piped = _run(runner, "amplitudes", "--exact", "frame_saw.toml")
+    assert sum(line.startswith("┃ harmonic ") for line in piped.splitlines()) == 1
+
+
+def test_a_sweep_of_two_points_and_phases_fits_80_columns_without_a_lone_slash(on_terminal):
+    """compressor_vendor_loads.toml's sweep (x, y, θ, two points' h/v pairs, the phase lags, the
+    status) took 92 columns and broke each "4.985e-05 / 4.489e-06" into three lines, the slash
+    alone on the middle one; now the table splits in two, each with the speed, whose columns
+    leave a pair one line, or two with the slash after the first value."""
+    lines = on_terminal("sweep", "compressor_vendor_loads.toml", "--speed", "200:900:8")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    cells = [cell.strip() for line in lines if "│" in line for cell in line.split("│")]
+    assert "/" not in cells and not any(cell.startswith("/") for cell in cells), [c for c in cells if c.startswith("/")]
+    speeds = [line.split("│")[0].strip() for line in lines if "│" in line and line.split("│")[0].strip()]
+    assert speeds == [str(s) for s in range(200, 1000, 100)] * 2, speeds

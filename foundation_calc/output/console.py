@@ -130,6 +130,39 @@ def fits(table, width: int) -> bool:
     return sum(floor) <= room
 
 
+def split_to_fit(table, width: int) -> list:
+    """A rich ``table`` whose words do not fit ``width`` terminal cells even without its frame, as
+    tables that do, one under the other: each repeats the first column (what names the rows: a
+    harmonic, a speed) and takes as many of the next columns, in order, as fit; the first keeps the
+    title. A table that fits (any table in a file or a pipe) is returned alone, as it is."""
+    from copy import copy
+
+    columns = table.columns
+
+    def part(indices: list[int]):
+        piece = copy(table)
+        piece.columns = [copy(columns[i]) for i in indices]
+        return piece
+
+    if len(columns) < 3 or fits(frameless(table), width):
+        return [table]
+    groups, current = [], [0]
+    for i in range(1, len(columns)):
+        if len(current) > 1 and not fits(frameless(part([*current, i])), width):
+            groups.append(current)
+            current = [0]
+        current.append(i)
+    groups.append(current)
+    size = -(-(len(columns) - 1) // len(groups))  # as many parts, as even as they fit
+    even = [[0, *range(start, min(start + size, len(columns)))] for start in range(1, len(columns), size)]
+    if len(even) == len(groups) and all(fits(frameless(part(indices)), width) for indices in even):
+        groups = even
+    parts = [part(indices) for indices in groups]
+    for piece in parts[1:]:
+        piece.title = None
+    return parts
+
+
 def fit_columns(table, width: int) -> None:
     """Cap the widest columns of a rich ``table`` so that it fits ``width`` terminal cells, each
     column at least as wide as its longest word (:func:`keep_words_whole`, called first).
@@ -222,6 +255,7 @@ def _console_class():
             super().__init__(highlight=False, **kwargs)
 
         def print(self, *objects, **kwargs):
+            objects = [part for item in objects for part in (split_to_fit(item, self.width) if isinstance(item, Table) else [item])]
             for item in objects:
                 if isinstance(item, Table):
                     keep_words_whole(item)
