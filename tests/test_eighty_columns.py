@@ -339,3 +339,23 @@ def test_a_sweep_of_two_points_and_phases_fits_80_columns_without_a_lone_slash(o
     assert "/" not in cells and not any(cell.startswith("/") for cell in cells), [c for c in cells if c.startswith("/")]
     speeds = [line.split("│")[0].strip() for line in lines if "│" in line and line.split("│")[0].strip()]
     assert speeds == [str(s) for s in range(200, 1000, 100)] * 2, speeds
+
+
+def test_fcalc_amplitudes_support_class_lines_wrap_under_their_own_text(runner, on_terminal):
+    """The support class of compressor_vendor_loads.toml's points (3 lines of 78-110 cells) wrapped
+    at column 0 on an 80-column terminal, "< 1.25 × 25 Hz = 31.25 Hz" starting a line under an
+    indented item; now each line wraps at words under its own text, the same words in order, and
+    stays one line in a pipe."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    piped = _run(runner, "amplitudes", "compressor_vendor_loads.toml").splitlines()
+    first = next(i for i, line in enumerate(lines) if line.startswith("Support class"))
+    end = next(i for i, line in enumerate(lines) if line.startswith("soil model"))
+    block = lines[first:end]
+    assert all(cell_len(line) <= WIDTH for line in block), block
+    assert all(line.startswith("  ") for line in block[1:]), block
+    start = next(i for i, line in enumerate(piped) if line.startswith("Support class"))
+    whole = piped[start:start + 4]
+    assert " ".join(block).split() == " ".join(whole).split(), (block, whole)
+    starts = [next(k for k, line in enumerate(block) if line.startswith(item[:30])) for item in whole[1:]]
+    for a, b in zip(starts, [*starts[1:], len(block)]):  # each item's own lines: the first, then its wraps under it
+        assert len(block[a]) - len(block[a].lstrip()) == 2 and all(line.startswith("    ") for line in block[a + 1:b]), block[a:b]
