@@ -313,7 +313,8 @@ def test_a_table_title_wraps_at_the_terminal_s_width_not_the_table_s(on_terminal
 def test_a_table_wider_than_80_columns_in_its_words_splits_repeating_its_first_column(runner, on_terminal):
     """``fcalc amplitudes --exact`` on frame_saw.toml: the harmonics table (values and errors of
     three methods) took 88 columns even frameless and ran past the terminal; now it is two tables
-    that fit, each with the harmonic column, every column once, every row in each. A pipe keeps one."""
+    that fit, each with the harmonic column (the values, then the errors: not four columns and
+    one), every column once, every row in each. A pipe keeps one."""
     lines = on_terminal("amplitudes", "--exact", "frame_saw.toml")
     assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
     heads = [i for i, line in enumerate(lines) if line.replace("┃", " ").split()[:1] == ["harmonic"]]
@@ -321,6 +322,8 @@ def test_a_table_wider_than_80_columns_in_its_words_splits_repeating_its_first_c
     head_words = " ".join(" ".join(lines[i - 1:i + 1]) for i in heads).replace("┃", " ").split()
     for name in ("first", "approximation", "averaged", "operator", "exact", "error,"):
         assert name in head_words, (name, head_words)
+    errors = [" ".join(lines[i - 1:i + 1]).count("error,") for i in heads]
+    assert errors == [0, 2], errors  # as even as fits: the three methods' values, then their two errors
     for i in heads:
         body = [line.replace("│", " ").split()[0] for line in lines[i + 2:i + 12]]
         assert body == ["y1", "y2", "y3", "y4", "x1", "x2", "x3", "theta1", "theta2", "theta3"], lines[i:i + 12]

@@ -133,8 +133,9 @@ def fits(table, width: int) -> bool:
 def split_to_fit(table, width: int) -> list:
     """A rich ``table`` whose words do not fit ``width`` terminal cells even without its frame, as
     tables that do, one under the other: each repeats the first column (what names the rows: a
-    harmonic, a speed) and takes as many of the next columns, in order, as fit; the first keeps the
-    title. A table that fits (any table in a file or a pipe) is returned alone, as it is."""
+    harmonic, a speed) with the next columns in order, as few tables as fit (filled greedily) and
+    their columns as even in number as still fit; the first keeps the title. A table that fits is
+    returned alone, as it is."""
     from copy import copy
 
     columns = table.columns
@@ -255,7 +256,9 @@ def _console_class():
             super().__init__(highlight=False, **kwargs)
 
         def print(self, *objects, **kwargs):
-            objects = [part for item in objects for part in (split_to_fit(item, self.width) if isinstance(item, Table) else [item])]
+            if not self.piped:  # a file or a pipe: every table whole, at its natural width
+                objects = [part for item in objects
+                           for part in (split_to_fit(item, self.width) if isinstance(item, Table) else [item])]
             for item in objects:
                 if isinstance(item, Table):
                     keep_words_whole(item)
