@@ -190,10 +190,13 @@ def test_a_refused_option_hangs_under_error_on_a_terminal():
 
 
 def _segment(lines: list[str], title: str) -> list[str]:
-    """The lines of the table titled ``title`` (its title, head and body) among ``lines``."""
+    """The lines of the table titled ``title`` (its title on one line or more, head and body) among ``lines``."""
+    def framed(line: str) -> bool:
+        return any(mark in line for mark in "│┃━┏")
+
     first = next(i for i, line in enumerate(lines) if line.strip().startswith(title))  # a title left or centred
-    end = next((i for i in range(first + 1, len(lines)) if "│" not in lines[i] and "┃" not in lines[i]
-                and "━" not in lines[i] and "┏" not in lines[i]), len(lines))
+    head = next(i for i in range(first + 1, len(lines)) if framed(lines[i]))
+    end = next((i for i in range(head, len(lines)) if not framed(lines[i])), len(lines))
     return lines[first:end]
 
 
@@ -261,3 +264,101 @@ def test_fcalc_design_pareto_rows_take_at_most_three_lines(on_terminal):
     assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
     pareto = _rows(_segment(lines, "Pareto set"))
     assert len(pareto) >= 3 and all(len(row) <= 3 for row in pareto), pareto
+
+
+def test_fcalc_amplitudes_limit_rows_keep_their_unit_on_their_line(on_terminal):
+    """frame_saw.toml's Limits table was one cell wider than 80 columns, so rich wrapped every
+    quantity: "displacement" on a line, "[m]" alone under it (2 rows, 4 lines); now the quantity
+    and its unit are one cell that never wraps, the table drops its frame to fit: a row a line."""
+    lines = on_terminal("amplitudes", "frame_saw.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    limits = _rows(_segment(lines, "Limits (checked with:"))
+    assert len(limits) == 2 and all(len(row) == 1 for row in limits), limits
+    assert all("│ displacement [m] │" in row[0] for row in limits), limits
+
+
+def test_fcalc_amplitudes_limits_put_their_units_in_the_title_where_they_do_not_fit(runner, on_terminal):
+    """compressor_vendor_loads.toml's Limits table does not fit 80 columns even without its frame
+    with "displacement [m]" whole (its points' longest words take the room): the unit goes into the
+    title, once, and no cell holds a unit alone; in a pipe the units stay beside the quantities."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    segment = _segment(lines, "Limits (checked with:")
+    assert " ".join(" ".join(segment[:2]).split()).endswith("Z = F) — displacement [m]"), segment[:2]
+    body = [line.split("│") for line in segment if "│" in line]  # frameless: point, along, quantity, ...
+    starts = [cells for cells in body if cells[1].strip()]  # a row's first line names its direction
+    assert len(starts) == 6 and all(cells[2].strip() == "displacement" for cells in starts), segment
+    assert all(cells[2].strip() in ("displacement", "") for cells in body), segment  # no unit alone
+    piped = _run(runner, "amplitudes", "compressor_vendor_loads.toml")
+    assert "│ displacement [m] │" in piped and "— displacement [m]" not in piped
+
+
+def test_fcalc_amplitudes_rocking_peaks_keep_their_unit_beside_the_number(on_terminal):
+    """The rocking row of the peaks table ("0.00017921 rad/s") broke its unit onto a line of its
+    own at 80 columns (compressor_vendor_loads.toml): now a number and its unit stay one line."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    peaks = _rows(_segment(lines, "Peaks over one revolution"))
+    [rocking] = [row for row in peaks if "rocking θ" in row[0]]
+    assert len(rocking) == 1 and "rad/s │" in rocking[0] and rocking[0].rstrip().endswith("rad/s²"), rocking
+
+
+def test_a_table_title_wraps_at_the_terminal_s_width_not_the_table_s(on_terminal):
+    """The crank's harmonics table (58 cells) wrapped its 71-cell title at its own width, two
+    lines; now a left-justified title wraps at the terminal's: one line at 80 columns."""
+    lines = on_terminal("amplitudes", "frame_saw.toml")
+    title = "Harmonics (signed coefficient of cos nωt for y, of sin nωt for x and θ)"
+    assert title in [line.rstrip() for line in lines], [line for line in lines if line.startswith("Harmonics")]
+
+
+def test_a_table_wider_than_80_columns_in_its_words_splits_repeating_its_first_column(runner, on_terminal):
+    """``fcalc amplitudes --exact`` on frame_saw.toml: the harmonics table (values and errors of
+    three methods) took 88 columns even frameless and ran past the terminal; now it is two tables
+    that fit, each with the harmonic column (the values, then the errors: not four columns and
+    one), every column once, every row in each. A pipe keeps one."""
+    lines = on_terminal("amplitudes", "--exact", "frame_saw.toml")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    heads = [i for i, line in enumerate(lines) if line.replace("┃", " ").split()[:1] == ["harmonic"]]
+    assert len(heads) == 2, heads
+    head_words = " ".join(" ".join(lines[i - 1:i + 1]) for i in heads).replace("┃", " ").split()
+    for name in ("first", "approximation", "averaged", "operator", "exact", "error,"):
+        assert name in head_words, (name, head_words)
+    errors = [" ".join(lines[i - 1:i + 1]).count("error,") for i in heads]
+    assert errors == [0, 2], errors  # as even as fits: the three methods' values, then their two errors
+    for i in heads:
+        body = [line.replace("│", " ").split()[0] for line in lines[i + 2:i + 12]]
+        assert body == ["y1", "y2", "y3", "y4", "x1", "x2", "x3", "theta1", "theta2", "theta3"], lines[i:i + 12]
+    piped = _run(runner, "amplitudes", "--exact", "frame_saw.toml")
+    assert sum(line.startswith("┃ harmonic ") for line in piped.splitlines()) == 1
+
+
+def test_a_sweep_of_two_points_and_phases_fits_80_columns_without_a_lone_slash(on_terminal):
+    """compressor_vendor_loads.toml's sweep (x, y, θ, two points' h/v pairs, the phase lags, the
+    status) took 92 columns and broke each "4.985e-05 / 4.489e-06" into three lines, the slash
+    alone on the middle one; now the table splits in two, each with the speed, whose columns
+    leave a pair one line, or two with the slash after the first value."""
+    lines = on_terminal("sweep", "compressor_vendor_loads.toml", "--speed", "200:900:8")
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    cells = [cell.strip() for line in lines if "│" in line for cell in line.split("│")]
+    assert "/" not in cells and not any(cell.startswith("/") for cell in cells), [c for c in cells if c.startswith("/")]
+    speeds = [line.split("│")[0].strip() for line in lines if "│" in line and line.split("│")[0].strip()]
+    assert speeds == [str(s) for s in range(200, 1000, 100)] * 2, speeds
+
+
+def test_fcalc_amplitudes_support_class_lines_wrap_under_their_own_text(runner, on_terminal):
+    """The support class of compressor_vendor_loads.toml's points (3 lines of 78-110 cells) wrapped
+    at column 0 on an 80-column terminal, "< 1.25 × 25 Hz = 31.25 Hz" starting a line under an
+    indented item; now each line wraps at words under its own text, the same words in order, and
+    stays one line in a pipe."""
+    lines = on_terminal("amplitudes", "compressor_vendor_loads.toml")
+    piped = _run(runner, "amplitudes", "compressor_vendor_loads.toml").splitlines()
+    first = next(i for i, line in enumerate(lines) if line.startswith("Support class"))
+    end = next(i for i, line in enumerate(lines) if line.startswith("soil model"))
+    block = lines[first:end]
+    assert all(cell_len(line) <= WIDTH for line in block), block
+    assert all(line.startswith("  ") for line in block[1:]), block
+    start = next(i for i, line in enumerate(piped) if line.startswith("Support class"))
+    whole = piped[start:start + 4]
+    assert " ".join(block).split() == " ".join(whole).split(), (block, whole)
+    starts = [next(k for k, line in enumerate(block) if line.startswith(item[:30])) for item in whole[1:]]
+    for a, b in zip(starts, [*starts[1:], len(block)]):  # each item's own lines: the first, then its wraps under it
+        assert len(block[a]) - len(block[a].lstrip()) == 2 and all(line.startswith("    ") for line in block[a + 1:b]), block[a:b]

@@ -67,7 +67,7 @@ def print_amplitudes(report, scene, source: str, units, all_points: bool = False
         return
     if report.limit_rows:
         out.print(limits_table(report.limit_rows, units, kind.limits_title(report),
-                               summarised(len(scene.points), all_points), strict))
+                               summarised(len(scene.points), all_points), strict, None if out.piped else out.width))
     if report.zone_rows:
         out.print(*zones_table(report.zone_rows, units, kind.DIRECTIONS, strict))
         print_supports(report.zone_rows)

@@ -258,7 +258,8 @@ def _points_table(report: AmplitudeReport, units: DisplayUnits, all_points: bool
             )
     for i, dof in enumerate(DOFS):
         if dof == "theta":
-            table.add_row("C", "rocking θ", *(fmt(float(getattr(approx.peaks, q)[i])) + f" rad{RATE_UNITS[q]}" for q in QUANTITIES))
+            table.add_row("C", "rocking θ", *(Text(fmt(float(getattr(approx.peaks, q)[i])) + f" rad{RATE_UNITS[q]}", no_wrap=True)
+                                              for q in QUANTITIES))  # a number with its unit: one line
     return table
 
 

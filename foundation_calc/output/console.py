@@ -24,15 +24,24 @@ def keep_words_whole(table) -> None:
 
     When a table is wider than the terminal, rich narrows its columns and cuts what does not fit
     with "…". With this floor the text columns wrap between words and a number (one word) is
-    never cut at any width; a table that cannot fit runs past the right edge instead.
+    never cut at any width; a table that cannot fit runs past the right edge instead. A cell
+    that is a rich ``Text`` with ``no_wrap`` (a number with its unit, a quantity with its unit)
+    counts as one word: it keeps its line whole.
     """
     from rich.cells import cell_len
 
     for column in table.columns:
         cells = (column.header, *column.cells)
-        plain = map(_plain_text, cells)
-        longest = max((cell_len(word) for text in plain for word in text.split()), default=0)
+        longest = max((cell_len(word) for cell in cells for word in _words(cell)), default=0)
         column.min_width = max(column.min_width or 0, longest)
+
+
+def _words(cell) -> list[str]:
+    """The words a cell may wrap between: its whole text for a rich ``Text`` with ``no_wrap``."""
+    from rich.text import Text
+
+    text = _plain_text(cell)
+    return [text] if isinstance(cell, Text) and cell.no_wrap else text.split()
 
 
 def _plain_text(cell) -> str:
@@ -103,12 +112,56 @@ def two_lines_for(table, index: int, texts, width: int) -> None:
     widen(table, index, max(map(two_line_width, texts), default=0), width)
 
 
+def frameless(table):
+    """A copy of a rich ``table`` without its outer frame and edge padding (as :func:`fit_columns`
+    prints a table whose words do not fit with them)."""
+    from copy import copy
+
+    bare = copy(table)
+    bare.show_edge = bare.pad_edge = False
+    return bare
+
+
 def fits(table, width: int) -> bool:
     """Whether a rich ``table`` fits ``width`` terminal cells with no word cut (its columns wrapped
     at most down to their longest words)."""
     keep_words_whole(table)
     _, floor, room = column_widths(table, width)
     return sum(floor) <= room
+
+
+def split_to_fit(table, width: int) -> list:
+    """A rich ``table`` whose words do not fit ``width`` terminal cells even without its frame, as
+    tables that do, one under the other: each repeats the first column (what names the rows: a
+    harmonic, a speed) with the next columns in order, as few tables as fit (filled greedily) and
+    their columns as even in number as still fit; the first keeps the title. A table that fits is
+    returned alone, as it is."""
+    from copy import copy
+
+    columns = table.columns
+
+    def part(indices: list[int]):
+        piece = copy(table)
+        piece.columns = [copy(columns[i]) for i in indices]
+        return piece
+
+    if len(columns) < 3 or fits(frameless(table), width):
+        return [table]
+    groups, current = [], [0]
+    for i in range(1, len(columns)):
+        if len(current) > 1 and not fits(frameless(part([*current, i])), width):
+            groups.append(current)
+            current = [0]
+        current.append(i)
+    groups.append(current)
+    size = -(-(len(columns) - 1) // len(groups))  # as many parts, as even as they fit
+    even = [[0, *range(start, min(start + size, len(columns)))] for start in range(1, len(columns), size)]
+    if len(even) == len(groups) and all(fits(frameless(part(indices)), width) for indices in even):
+        groups = even
+    parts = [part(indices) for indices in groups]
+    for piece in parts[1:]:
+        piece.title = None
+    return parts
 
 
 def fit_columns(table, width: int) -> None:
@@ -149,6 +202,25 @@ def fit_columns(table, width: int) -> None:
             column.max_width = cap
 
 
+def title_apart(console, table):
+    """A rich ``table`` whose title is left-justified, as its title above a copy of it without
+    one: the title then wraps at the ``console``'s width, at words, where rich wraps it at the
+    table's own (a 58-cell table's 80-cell title took two lines of 58 on an 80-column terminal).
+    Another table is returned as it is."""
+    from copy import copy
+
+    from rich.console import Group
+    from rich.style import Style
+
+    if not table.title or table.title_justify != "left":
+        return table
+    style = Style.pick_first(table.title_style, "table.title")
+    title = console.render_str(table.title, style=style, highlight=False) if isinstance(table.title, str) else table.title
+    untitled = copy(table)
+    untitled.title = None
+    return Group(title, untitled)
+
+
 #: Spaces and tabs ending a line, with any style codes among them (kept) [regular expression].
 _TRAILING_SPACE = r"(?:[ \t]|\x1b\[[0-9;]*m)+$"
 
@@ -184,13 +256,16 @@ def _console_class():
             super().__init__(highlight=False, **kwargs)
 
         def print(self, *objects, **kwargs):
+            if not self.piped:  # a file or a pipe: every table whole, at its natural width
+                objects = [part for item in objects
+                           for part in (split_to_fit(item, self.width) if isinstance(item, Table) else [item])]
             for item in objects:
                 if isinstance(item, Table):
                     keep_words_whole(item)
                     fit_columns(item, self.width)
             kwargs.setdefault("crop", False)  # a line wider than the terminal wraps, never loses its end
             if not self.piped:
-                super().print(*objects, **kwargs)
+                super().print(*(title_apart(self, o) if isinstance(o, Table) else o for o in objects), **kwargs)
                 return
             with self.capture() as captured:
                 super().print(*objects, **kwargs)

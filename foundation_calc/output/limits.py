@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from foundation_calc.checks.governing import worst_rows
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.console import fmt, verdict_text
+from foundation_calc.output.console import fits, fmt, frameless, verdict_text
 from foundation_calc.output.notes import point_support_document, support_document
 
 #: Points besides C or G up to which the tables list every point and limit row; with more, they
@@ -70,24 +70,39 @@ def _zone_document(row, directions) -> dict:
     }
 
 
-def limits_table(rows, units, title: str, summarised: bool = False, strict: bool = False):
-    """The limit rows as a table (numbers in ``units``, each quantity's unit beside its name; ratio:
-    the row's value/limit); ``summarised``: only the
-    :data:`WORST_ROWS` largest value/limit ratios and the largest of each quantity."""
-    from rich.table import Table
-    from rich.text import Text
+def limits_table(rows, units, title: str, summarised: bool = False, strict: bool = False, width: int | None = None):
+    """The limit rows as a table (numbers in ``units``, each quantity's unit beside its name, never
+    wrapped apart from it; ratio: the row's value/limit); ``summarised``: only the
+    :data:`WORST_ROWS` largest value/limit ratios and the largest of each quantity. ``width``: the
+    terminal's [cells] (None in a file or a pipe); where the table does not fit it even without
+    its frame, the units go into the title, each quantity's once, and the quantities stand alone."""
+    from rich.markup import escape
 
     if summarised:
         shown = worst_rows(rows, WORST_ROWS)
         title += (f": {len(shown)} of {len(rows)} rows, the {WORST_ROWS} largest value/limit ratios and the"
                   f" largest of each quantity ({EVERY_ROW})")
         rows = shown
+    labels = {row.quantity: units.label(display_quantity(row.quantity)) for row in rows}
+    table = _limit_rows(rows, units, title, strict, labels)
+    if width is None or fits(frameless(table), width):
+        return table
+    return _limit_rows(rows, units, title + escape(" — " + ", ".join(f"{q} [{u}]" for q, u in labels.items())), strict)
+
+
+def _limit_rows(rows, units, title: str, strict: bool, labels: dict | None = None):
+    """The table of :func:`limits_table`: each quantity with its unit from ``labels`` (one line),
+    or alone without them."""
+    from rich.table import Table
+    from rich.text import Text
+
     table = Table(title=title, title_justify="left")
     for col in ("point", "along", "quantity", "value", "limit", "ratio", "verdict"):
         table.add_column(col, justify="right" if col in ("value", "limit", "ratio") else "left")
     for row in rows:  # the unit with the quantity, so that the numbers' columns stay narrow (80 columns)
         quantity = display_quantity(row.quantity)
-        table.add_row(Text(row.point), row.direction, Text(f"{row.quantity} [{units.label(quantity)}]"),
+        named = Text(row.quantity if labels is None else f"{row.quantity} [{labels[row.quantity]}]", no_wrap=True)
+        table.add_row(Text(row.point), row.direction, named,
                       fmt(units.convert(quantity, row.value)), fmt(units.convert(quantity, row.limit)),
                       f"{row.ratio:.3f}", verdict_text(row.outcome.value, strict))
     return table

@@ -47,12 +47,13 @@ def support_lines(rows) -> list[str]:
 
 
 def print_supports(rows) -> None:
+    """The support class lines (:func:`support_lines`), each wrapped at words under its own text."""
     from rich.text import Text
 
-    from foundation_calc.output.console import stdout
+    from foundation_calc.output.console import Hanging, stdout
 
     for line in support_lines(rows):
-        stdout().print(Text(line))
+        stdout().print(Hanging(Text(line)))
 
 
 def support_document(limits, rows) -> dict:
