@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.block import DIRECTIONS
-from foundation_calc.output.console import fmt, fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import fmt_scaled, stdout, verdict_text
 from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.units import speed_triplet
@@ -120,15 +120,24 @@ def print_motion(report, scene, source: str, units: DisplayUnits, all_points: bo
                                     (f"RMS velocity [{units.label('velocity')}]", "velocity", motion.velocity_rms)):
         t = _table(title, ("point", "x", "y", "z"), ("x", "y", "z"))  # one table each: 80 columns
         for i, p in enumerate(motion.names):
-            t.add_row(escape(p), *(fmt(units.convert(quantity, v), 4) for v in values[i]))
+            t.add_row(escape(p), *_cells(values[i], values, quantity, units, 4))
         out.print(t)
     return True
 
 
+def _cells(row, table, quantity: str, units: DisplayUnits, digits: int) -> list[str]:
+    """The cells of one row of a table of ``quantity`` in ``units``; a value below
+    :data:`~foundation_calc.output.console.ROUNDOFF` of the table's largest is the solver's round-off
+    and prints as ``0`` (:func:`fmt_scaled`), as a motion the machines do not drive."""
+    scale = units.convert(quantity, float(np.max(np.abs(table), initial=0.0)))
+    return [fmt_scaled(units.convert(quantity, v), scale, digits) for v in row]
+
+
 def _phasor(value: complex, scale: float, units: DisplayUnits) -> str:
-    """An amplitude and its phase, ``"3.543e-05 ∠28°"``; ``"0"`` for the solver's round-off (:func:`fmt_scaled`)."""
+    """An amplitude and its phase, ``"3.543e-05 ∠28°"``; ``"0"`` for the solver's round-off
+    (:func:`fmt_scaled`); a phase that rounds to zero is ``0°``, never ``-0°``."""
     shown = fmt_scaled(units.convert("amplitude", abs(value)), units.convert("amplitude", scale), 4)
-    return shown if shown == "0" else f"{shown} ∠{np.degrees(np.angle(value)):.0f}°"
+    return shown if shown == "0" else f"{shown} ∠{round(float(np.degrees(np.angle(value)))) + 0}°"
 
 
 def limits_title(report) -> str:
@@ -150,7 +159,7 @@ def print_after_zones(report, units: DisplayUnits) -> None:
         for i, p in enumerate(report.motion.names):
             for solution, peaks in (("exact", c.exact_peak), ("first", c.first_peak)):
                 t.add_row(escape(p) if solution == "exact" else "", solution,
-                          *(fmt(units.convert("amplitude", v), 5) for v in peaks[i]))
+                          *_cells(peaks[i], c.exact_peak, "amplitude", units, 5))
         stdout().print(t)
         capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
                   f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
