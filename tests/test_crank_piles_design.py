@@ -58,14 +58,17 @@ def _candidate_document(document, length, piles):
 def batch():
     """The batch's frequencies (k0, p1, p2 by name, (N,) each) and verdicts of :data:`CANDIDATES`."""
     from foundation_calc.checks.design import crank
+    from foundation_calc.checks.design.apply import sizing_of
     from foundation_calc.checks.design.crank_physics import Verdicts, judge_physics
+    from foundation_calc.checks.design.supported import candidate_values
     from foundation_calc.scenes import parse_scene
     from foundation_calc.solvers.crank.batch import MechanismOperator
 
     scene = parse_scene(_document(), str(CONFIG))
     values = {"foundation.block.length": np.array([c[0] for c in CANDIDATES]),
               "piles.length": np.array([c[1] for c in CANDIDATES])}
-    (L, B, H), sizes = crank.block_dimensions(scene, values)
+    given = {f"foundation.block.{k}": getattr(scene.foundation.block, k) for k in ("length", "width", "height")}
+    (L, B, H), sizes = candidate_values(values, given, sizing_of(scene).sizes, "crank_foundation")
     mech = MechanismOperator.of(scene.design())
     _, (zero, *_) = judge_physics(Verdicts(), scene, L, B, H, mech, mech.harmonics, sizes=sizes)
     return zero, crank.evaluate(scene, values)

@@ -191,6 +191,18 @@ def test_a_batch_in_pieces_keeps_its_deferred_checks(monkeypatch):
         assert np.array_equal(whole.utilisation[check], pieces.utilisation[check], equal_nan=True)
 
 
+def test_an_empty_batch_gives_empty_verdicts_of_the_same_checks():
+    """A batch of no candidates (a search's empty remainder) is judged as the crank's is: every
+    check of a batch of one, with its reasons, and arrays of length 0 (it raised a ValueError
+    from a reshape of the empty stacks)."""
+    scene = parse_scene(_document(TWO), "two")
+    one = evaluate(scene, {key: values[:1] for key, values in _candidates(scene, 1, seed=1).items()})
+    empty = evaluate(scene, {key: values[:0] for key, values in _candidates(scene, 1, seed=1).items()})
+    assert list(empty.outcome) == list(one.outcome) and empty.reasons == one.reasons and empty.deferred == one.deferred
+    assert len(empty.volume) == len(empty.mass) == 0
+    assert all(len(a) == 0 and a.dtype == one.outcome[c].dtype for c, a in empty.outcome.items())
+
+
 def test_inputs_warn_where_a_point_is_far_for_a_small_base():
     document = _document(TWO)
     document["points"][0]["at"] = [1.5, 0.3, 45.0]  # far above the block's top: it rises with the top

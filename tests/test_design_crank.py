@@ -25,7 +25,7 @@ import pytest
 from foundation_calc.checks.batch import run_checks
 from foundation_calc.checks.design.candidates import EVALUATORS, FAIL, PASS, WARN
 from foundation_calc.checks.design.crank import NOT_EVALUATED, evaluate, sample_batch
-from foundation_calc.checks.design.crank_range import OVER_RANGE
+from foundation_calc.checks.design.modulus_range import OVER_RANGE
 from foundation_calc.scenes import parse_scene, read_toml
 from foundation_calc.scenes.soil import SOIL_METHODS
 from tests.conftest import CONFIGS
@@ -172,13 +172,13 @@ def test_registered_for_the_kind():
 def test_the_decoupled_solve_is_the_full_one_without_round_off_couplings():
     """Every shipped mechanism's averaged operator leaves y apart from x and θ to round-off; the
     2 × 2 + 1 solves then equal the 3 × 3 ones (Cramer's rule, against numpy's LAPACK solve too)."""
-    from foundation_calc.checks.design.crank import CandidateDesigns
+    from foundation_calc.checks.design.crank_physics import candidate_designs
     from foundation_calc.solvers.crank.averaged import block_matrices
     from foundation_calc.solvers.crank.batch import MechanismOperator, harmonic_response
 
     scene = parse_scene(_variant("coefficients"))
     batch = sample_batch(scene, 50, seed=2)
-    designs = CandidateDesigns(scene, *(batch[f"foundation.block.{k}"] for k in ("length", "width", "height")))
+    designs = candidate_designs(scene, *(batch[f"foundation.block.{k}"] for k in ("length", "width", "height")))
     operator = MechanismOperator.of(scene.design())
     assert operator.decoupled
     M_m, C_m, K_m, fc, fs = operator.at(designs.a)

@@ -1,5 +1,5 @@
-"""The checks of a ``block_foundation`` scene (``CHECKS["block_foundation"]``) over a batch of
-candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
+"""The block engine of the one batch checker (:mod:`.batch`): the checks of a ``block_foundation``
+scene (``CHECKS["block_foundation"]``) over a batch of candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
 on stacks of matrices instead of one.
 
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
@@ -52,7 +52,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, in_pieces, not_evaluated, ordered
+from foundation_calc.checks.design.candidates import (FAIL, PASS, RULE_OUTCOME, WARN, Batch, CandidateVerdicts, failing,
+                                                      largest_ratio)
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -72,31 +73,13 @@ NOT_EVALUATED = {
              " the re-check of the chosen designs judges those",
 }
 
-#: Outcome code of each status of :mod:`~foundation_calc.checks.resonance_rule` (clear, information, warn, fail).
-_STATUS_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
 
-_CODES = {"pass": PASS, "warn": WARN, "fail": FAIL}
-
-
-def _candidates(scene, sizing, batch: Batch):
-    """((L, B, H) of every candidate, (N,) each [m]; the support's sizes, key -> (N,)): the scene's
-    values where not varied (:func:`~.supported.candidate_values`); ``sizing``, the support's sizing hooks."""
-    from foundation_calc.checks.design.supported import candidate_values
-
+def _dimensions(scene, batch: Batch):
+    """(the block's keys :data:`VARIABLE_KEYS` -> the scene's values; the batch). Raises ValueError
+    for a block given by its mass."""
     if scene.block.height is None:
         raise ValueError("the block's dimensions vary only for a block given by length, width, height and density (not by mass)")
-    given = {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}
-    return candidate_values(batch, given, sizing.sizes, "block_foundation")
-
-
-def _block_body(L, B, H, rho):
-    """Mass [kg], centre of mass (N, 3) [m] and central inertia tensor (N, 3, 3) [kg m²] of each
-    candidate block of density ρ [kg/m³] (:attr:`~foundation_calc.scenes.block_parts.BlockBody.mass_properties`)."""
-    from foundation_calc.solvers.rigid_body.inertia import block_inertia, diagonal_matrices
-
-    m = L * B * H * rho
-    cog = np.stack([np.zeros_like(H), np.zeros_like(H), H / 2.0], axis=-1)
-    return m, cog, diagonal_matrices(np.stack(block_inertia(m, L, B, H), axis=-1))
+    return {key: getattr(scene.block, key.split(".")[1]) for key in VARIABLE_KEYS}, batch
 
 
 def _placing(scene, L, B, H):
@@ -128,7 +111,7 @@ def _resonance(scene, modes, excitations):
     rows = np.arange(len(margin))
     governing = verdict.governing
     utilisation = verdict.needed[rows, governing] / margin[rows, governing]
-    outcome = _STATUS_OUTCOME[verdict.worst]
+    outcome = RULE_OUTCOME[verdict.worst]
     motion = modes.dominant[rows, np.array([j - 1 for _, _, j in labels])[governing]]
     reasons = tuple(
         condition_label(SimpleNamespace(machine=name, order=n, mode=j, motion=m))
@@ -141,7 +124,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.amplitude_report.judge`)."""
     from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
-    from foundation_calc.checks.codes import TABLES, ZONES, code_zone_index, zone_verdicts
+    from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity
 
@@ -173,26 +156,14 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             ratios.append(ratio)
             failed |= exceeds(largest, limit)
             reasons += [f"{quantity} {r}" for r in rows]
-        if limits.code is not None:
-            table = TABLES[limits.code, limits.machine_group, limits.foundation]
-            highest = ZONES.index(limits.acceptable_zone or "B")
-            top = motion.velocity_rms.max(axis=-1)  # (N, P): each point's largest direction
-            top_x = motion.displacement_rms.max(axis=-1)  # the more restrictive of the two decides
-            index, by_x = code_zone_index(top, top_x, table)
-            verdicts = np.array([_CODES[v.value] for v in zone_verdicts(limits.acceptable_zone)], dtype=np.int8)
-            worst = verdicts[index].max(axis=-1)
-            ratios.append(np.where(by_x, top_x / table.displacement_boundaries[highest], top / table.boundaries[highest]))
+        if limits.code is not None:  # each point's largest direction, (N, P)
+            table, zone, ratio = code_zones(limits, motion.velocity_rms.max(axis=-1), motion.displacement_rms.max(axis=-1))
+            worst = zone.max(axis=-1)
+            ratios.append(ratio)
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
     reasons.append("an order is resonant with an undamped mode: no steady state")
-    if ratios:
-        ratio = np.concatenate(ratios, axis=-1)
-        governing, utilisation = np.argmax(ratio, axis=-1), ratio.max(axis=-1)
-    else:
-        governing, utilisation = np.zeros(n, dtype=int), np.full(n, np.nan)
-    outcome = np.where(stuck, FAIL, worst).astype(np.int8)
-    governing = np.where(stuck, len(reasons) - 1, governing)
-    return outcome, np.where(stuck, np.inf, utilisation), governing, tuple(reasons)
+    return *failing(stuck, worst, *largest_ratio(ratios, n), len(reasons) - 1), tuple(reasons)
 
 
 def _office(scene, model, L, B, m_b):
@@ -221,9 +192,8 @@ def _office(scene, model, L, B, m_b):
     ratios.append(limits.mass_ratio / mu)
     outcomes.append(np.where(mu < limits.mass_ratio, WARN, PASS))
     reasons.append("mass ratio")
-    ratio = np.stack(ratios, axis=-1)
     outcome = np.max(np.stack(outcomes, axis=-1), axis=-1).astype(np.int8)
-    return outcome, ratio.max(axis=-1), np.argmax(ratio, axis=-1), tuple(reasons)
+    return outcome, *largest_ratio(ratios, len(L)), tuple(reasons)
 
 
 def _inputs(scene, sizing, sizes, L, B, H):
@@ -237,17 +207,14 @@ def _inputs(scene, sizing, sizes, L, B, H):
     or any finding of the scene that does not depend on the candidate (the soil, the machines, the
     limits)."""
     from foundation_calc.checks.design.apply import moved_positions
-    from foundation_calc.checks.design.supported import sizes_outside
+    from foundation_calc.checks.design.supported import fixed_findings, sizes_outside
     from foundation_calc.scenes.block import placement
     from foundation_calc.scenes.plausibility import KEYS, RANGES
-    from foundation_calc.scenes.stratum import shallow, stratum_remarks
+    from foundation_calc.scenes.stratum import shallow
 
     positions = scene.positions()
     warned = sizing.size_warnings(sizes, L, B)
-    judged = {*VARIABLE_KEYS, *sizes, *warned.keys}  # findings under these keys are each candidate's
-    on_base = {str(r) for r in stratum_remarks(scene.soil, *scene.base)}  # the scene's own base's, judged per candidate below
-    fixed = any(f.key not in positions and f.key not in judged and str(f) not in on_base
-                for f in scene.plausibility_findings())
+    fixed = bool(fixed_findings(scene, scene.base, lambda key: key in positions or key in VARIABLE_KEYS, sizes, warned))
     outside = np.zeros(L.shape, dtype=bool)
     for key, values in zip(VARIABLE_KEYS, (L, B, H)):
         outside |= RANGES[KEYS[key]].outside(values)
@@ -269,7 +236,8 @@ def _inputs(scene, sizing, sizes, L, B, H):
 
 def evaluate(scene, batch: Batch) -> CandidateVerdicts:
     """Every check of ``fcalc check`` (module docstring) on every candidate of ``batch``
-    (:data:`VARIABLE_KEYS` -> (N,) values in SI units).
+    (:data:`VARIABLE_KEYS` -> (N,) values in SI units), by the one batch checker
+    (:func:`~foundation_calc.checks.design.batch.evaluate`) with this kind's engine.
 
     Raises
     ------
@@ -281,17 +249,12 @@ def evaluate(scene, batch: Batch) -> CandidateVerdicts:
         (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: the batch scales them so,
         :mod:`.block_range`; a pile group's, EN 1998-5 Table C.1, K ∝ E_s^(1 - n)).
     """
-    from foundation_calc.checks.design.supported import refuse_unjudged
+    from foundation_calc.checks.design.batch import Engine, evaluate as checked
 
-    refuse_unjudged(scene, scene.support())
-    n = len(next(iter(batch.values()))) if batch else 1
-    return in_pieces(lambda start, stop: _evaluate(scene, {key: values[start:stop] for key, values in batch.items()}),
-                     n, PIECE)
-
-
-def _evaluate(scene, batch: Batch) -> CandidateVerdicts:
-    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
-        return _evaluate_piece(scene, batch)
+    engine = Engine(kind="block_foundation", piece=PIECE, runup="not evaluated for a batch: " + NOT_EVALUATED["runup"],
+                    dimensions=_dimensions, refuse=lambda scene: None, density=lambda scene: scene.block.density,
+                    prepare=lambda scene: None, judge=_judge)
+    return checked(scene, batch, engine)
 
 
 #: What governs a check whose outcome the soil's modulus range makes worse than the data as given.
@@ -317,9 +280,7 @@ def dynamics(scene, built, checks=("resonance", "amplitudes"), modes=None):
                       else _amplitudes(scene, model, modes, excitations, built.points, built.impedance))
         r = r + ("the block tips over or is unrestrained (a squared natural frequency is not positive)",
                  f"{rootless_reason('')} (fcalc check: invalid scene)")
-        failing = unstable | rootless
-        found[check] = (np.where(failing, FAIL, o).astype(np.int8), np.where(failing, np.inf, u),
-                        np.where(unstable, len(r) - 2, np.where(rootless, len(r) - 1, g)), r)
+        found[check] = (*failing(unstable | rootless, o, u, g, np.where(unstable, len(r) - 2, len(r) - 1)), r)
     return found
 
 
@@ -340,9 +301,10 @@ class Built:
 
 def _built(scene, L, B, H) -> Built:
     """The candidate blocks L × B × H [m] on ``scene`` (:class:`Built`)."""
+    from foundation_calc.solvers.block.batch_design import block_bodies
     from foundation_calc.solvers.block.model import excitation
 
-    block = _block_body(L, B, H, scene.block.density)
+    block = block_bodies(L, B, H, scene.block.density)
     place = _placing(scene, L, B, H)
     cogs = [place(m.cog) for m in scene.machines]
     model = scene.model(base=(L, B), block=block, machine_cogs=cogs)
@@ -358,39 +320,23 @@ def _built(scene, L, B, H) -> Built:
     return Built(model, excitations, points, impedance, block[0])
 
 
-def _evaluate_piece(scene, batch: Batch) -> CandidateVerdicts:
-    from foundation_calc.checks.design.supported import with_scene_check
-    from foundation_calc.checks.runup import judged
-    from foundation_calc.solvers.supports.base import sizing
+def _judge(scene, _, support, L, B, H, sizes) -> dict:
+    """check -> (outcome, utilisation, governing, reasons) of the resonance, amplitude, inputs and
+    office checks of the blocks (L, B, H) on ``support`` at their ``sizes`` (key -> (N,))."""
+    with np.errstate(divide="ignore", invalid="ignore"):  # a block that tips over has p = 0: judged below
+        scene = support.sized(scene, sizes)  # every candidate on its support at its own sizes
+        inputs = _inputs(scene, support, sizes, L, B, H)
+        built = _built(scene, L, B, H)
+        found = dynamics(scene, built)
+        if getattr(scene.soil, "modulus_range", None) is not None:
+            from foundation_calc.checks.design.block_range import judged
+            from foundation_calc.checks.design.modulus_range import over_range
 
-    support = sizing(scene.support())
-    (L, B, H), sizes = _candidates(scene, support, batch)
-    scene = support.sized(scene, sizes)  # every candidate on its support at its own sizes
-    built = _built(scene, L, B, H)
-    model, m_b = built.model, built.block_mass
-    found = {"inputs": _inputs(scene, support, sizes, L, B, H)}
-    outcome, utilisation, governing, reasons = {}, {}, {}, {}
-    moving = dynamics(scene, built)
-    if getattr(scene.soil, "modulus_range", None) is not None:
-        from foundation_calc.checks.design.block_range import over_range
-
-        ranged = over_range(scene, (L, B, H), {check: found[0] for check, found in moving.items()}, _built, dynamics)
-        for check, worse in ranged.items():
-            o, u, g, r = moving[check]
-            moving[check] = (worse, u, np.where(worse > o, len(r), g), r + (RANGE_REASON,))
-    for check, (o, u, g, r) in moving.items():
-        outcome[check], utilisation[check], governing[check], reasons[check] = o, u, g, r
-    o, g, r = found["inputs"]
-    outcome["inputs"], utilisation["inputs"], governing["inputs"], reasons["inputs"] = o, np.full(len(L), np.nan), g, r
-    if judged(scene):
-        outcome["runup"], utilisation["runup"], governing["runup"], reasons["runup"] = not_evaluated(
-            len(L), "not evaluated for a batch: " + NOT_EVALUATED["runup"])
-    o, u, g, r = _office(scene, model, L, B, m_b)
-    outcome["office"], utilisation["office"], governing["office"], reasons["office"] = o, u, g, r
-    order = [c for c in ("inputs", "resonance", "amplitudes", "runup", "office") if c in outcome]  # as fcalc check reports them
-    with_scene_check(support.size_errors(sizes, L, B), outcome, utilisation, governing, reasons, order)
-    return ordered(L * B * H + support.concrete(sizes), np.asarray(m_b, dtype=float), outcome, utilisation, governing,
-                   reasons, order, (c for c in order if c in NOT_EVALUATED))
+            found = over_range(scene, found, judged(scene, (L, B, H), _built, dynamics), RANGE_REASON)
+        o, g, r = inputs
+        found["inputs"] = (o, np.full(len(L), np.nan), g, r)
+        found["office"] = _office(scene, built.model, L, B, built.block_mass)
+    return found
 
 
 __all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]

@@ -1,5 +1,5 @@
-"""The soil's modulus range (``[soil] modulus_range``) over a batch of candidate blocks: the
-resonance and amplitude checks at the stiffness factors where ``fcalc check`` evaluates them
+"""The block's engine of the one modulus-range checker (:mod:`.modulus_range`): the soil's modulus
+range (``[soil] modulus_range``) over a batch of candidate blocks: the resonance and amplitude checks at the stiffness factors where ``fcalc check`` evaluates them
 (:mod:`~foundation_calc.checks.soil_range`): the resonances at the factors of its grid, the
 amplitudes at those of its coarser grid, and both at every factor where a critical speed
 p_j / n crosses a machine's speed and the resonance rule judges that condition there.
@@ -95,46 +95,39 @@ def crossings(scene, model, excitations, low, high):
                 yield f, inside & modes.stable & verdict.judged[:, 0], at
 
 
-def over_range(scene, dimensions, given, built, dynamics) -> dict[str, np.ndarray]:
-    """check -> (N,) the worst outcome of the resonance and amplitude checks over the soil as
-    ``given`` (check -> (N,) outcomes) and over the scene's ``soil.modulus_range`` (module
-    docstring), for candidates ``dimensions`` (L, B, H (N,) each [m]). A candidate that already
-    fails a check is not evaluated again for it. ``built(scene, L, B, H)`` (the candidates on a
-    scene's soil) and ``dynamics(scene, built, checks)`` are the evaluator's
-    (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent support Eq. (1) does not
-    hold: there the crossings are not added (:data:`~foundation_calc.checks.design.block.NOT_EVALUATED`)."""
-    from foundation_calc.checks.soil_range import AMPLITUDE_GRID_POINTS, modulus_factors
-
-    from foundation_calc.checks.design.candidates import FAIL
-
+def judged(scene, dimensions, built, dynamics):
+    """The block's engine of :func:`~foundation_calc.checks.design.modulus_range.over_range` for the
+    candidates ``dimensions`` (L, B, H (N,) each [m]): a generator of the elements (candidate, factor)
+    it judges, first at the crossings of Eq. (1) (module docstring: in closed form, where the crank's
+    engine bisects), then factor by factor of the grids on the factored scene, as ``fcalc check``
+    builds it; a candidate that already fails a check is not judged again for it (``open``).
+    ``built(scene, L, B, H)`` (the candidates on a scene's soil) and ``dynamics(scene, built, checks)``
+    are the evaluator's (:mod:`~foundation_calc.checks.design.block`). On a frequency-dependent
+    support Eq. (1) does not hold: there the crossings are not added
+    (:data:`~foundation_calc.checks.design.block.NOT_EVALUATED`)."""
     low, high = scene.soil.modulus_range
-    worst = {check: np.array(outcome, dtype=np.int8) for check, outcome in given.items()}
+    checks = ("resonance", "amplitudes")
 
-    def judge_at(on, checks, evaluate):
-        active = np.flatnonzero(np.any([worst[check] < FAIL for check in checks], axis=0))
-        if len(active):
-            for check, outcome in evaluate(on, active).items():
-                worst[check][active] = np.maximum(worst[check][active], outcome)
+    def judged_at(on, candidates, active, checks):
+        for check, (outcome, utilisation, governing, reasons) in dynamics(on, candidates, checks).items():
+            yield check, active, outcome, utilisation, governing, reasons
 
-    def crossed(on, active):
-        candidates = built(on, *(d[active] for d in dimensions))
-        found = {check: np.zeros(len(active), dtype=np.int8) for check in worst}
-        for _, valid, at in crossings(on, candidates.model, candidates.excitations, low, high):
-            for check, (outcome, *_) in dynamics(on, replace(candidates, model=at), tuple(worst)).items():
-                found[check] = np.where(valid, np.maximum(found[check], outcome), found[check])
-        return found
+    def elements(grids, open):
+        active = open(checks)
+        if not scene.support().frequency_dependent and len(active):  # first where the range is most likely to fail
+            candidates = built(scene, *(d[active] for d in dimensions))
+            for _, valid, at in crossings(scene, candidates.model, candidates.excitations, low, high):
+                for check, who, *verdicts, reasons in judged_at(scene, replace(candidates, model=at), active, checks):
+                    yield (check, who[valid], *(v[valid] for v in verdicts), reasons)
+        grid = {check: set(factors) for check, factors in grids.items()}
+        for factor in sorted(grid["resonance"] | grid["amplitudes"]):
+            at_factor = tuple(check for check in checks if factor in grid[check])
+            active = open(at_factor)
+            if len(active):
+                on = scene.with_modulus_factor(factor)
+                yield from judged_at(on, built(on, *(d[active] for d in dimensions)), active, at_factor)
 
-    if not scene.support().frequency_dependent:
-        judge_at(scene, tuple(worst), crossed)  # first where the range is most likely to fail
-    grids = {"resonance": set(modulus_factors(low, high)), "amplitudes": set(modulus_factors(low, high, AMPLITUDE_GRID_POINTS))}
-    for factor in sorted(grids["resonance"] | grids["amplitudes"]):
-        checks = tuple(check for check in worst if factor in grids[check])
-
-        def at_factor(on, active, checks=checks):
-            return {check: found[0] for check, found in dynamics(on, built(on, *(d[active] for d in dimensions)), checks).items()}
-
-        judge_at(scene.with_modulus_factor(factor), checks, at_factor)
-    return worst
+    return elements
 
 
-__all__ = ["crossings", "on_factors", "over_range", "scaled", "scaled_impedance"]
+__all__ = ["crossings", "judged", "on_factors", "scaled", "scaled_impedance"]

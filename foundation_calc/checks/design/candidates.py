@@ -24,6 +24,10 @@ import numpy as np
 #: Outcome codes of :attr:`CandidateVerdicts.outcome`, in rising severity.
 PASS, WARN, FAIL = 0, 1, 2
 
+#: Outcome code of each status of :mod:`~foundation_calc.checks.resonance_rule` (clear, information,
+#: warn, fail), as ``fcalc check`` reports a resonance: information passes.
+RULE_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
+
 #: scene kind -> module whose ``evaluate(scene, batch)`` returns :class:`CandidateVerdicts`.
 EVALUATORS: dict[str, str] = {
     "block_foundation": "foundation_calc.checks.design.block",
@@ -85,6 +89,24 @@ def not_evaluated(n: int, reason: str) -> tuple:
     """(outcome, utilisation, governing, reasons) of a check a batch of ``n`` does not evaluate and
     leaves to the full path (its re-check of the chosen designs): PASS, NaN, ``reason``."""
     return np.full(n, PASS, dtype=np.int8), np.full(n, np.nan), np.zeros(n, dtype=np.intp), (reason,)
+
+
+def largest_ratio(ratios: Sequence[np.ndarray], n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(utilisation, governing) of ``n`` candidates from the ``ratios`` of a check's rows ((N,) or
+    (N, rows) each, in the order of the check's reasons): the largest ratio [-] and the index of its
+    row (the first of equals); NaN and 0 for a check with no row."""
+    if not ratios:
+        return np.full(n, np.nan), np.zeros(n, dtype=int)
+    ratio = np.concatenate([r if np.ndim(r) == 2 else np.reshape(r, (-1, 1)) for r in ratios], axis=-1)
+    return ratio.max(axis=-1), np.argmax(ratio, axis=-1)
+
+
+def failing(mask, outcome, utilisation, governing, reason) -> tuple:
+    """A check's (outcome, utilisation, governing) of every candidate with those in ``mask`` (N,)
+    failing it: outcome :data:`FAIL`, utilisation inf, governing ``reason`` (an index of the check's
+    reasons, or one per candidate); the others' verdicts kept."""
+    return (np.where(mask, FAIL, outcome).astype(np.int8), np.where(mask, np.inf, utilisation),
+            np.where(mask, reason, governing))
 
 
 def in_pieces(

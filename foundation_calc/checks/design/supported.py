@@ -60,6 +60,21 @@ def sizes_outside(sizes: dict, shape) -> np.ndarray:
     return outside
 
 
+def fixed_findings(scene, base, candidate_key, sizes: dict, warned) -> list:
+    """The scene's plausibility findings that no candidate changes (the soil's, the machines', the
+    limits'): not under a key each candidate's scene judges anew (``candidate_key(key)`` true: the
+    block's dimensions, the positions that move with it, ...; the support's ``sizes`` and the keys of
+    its own warnings of them, ``warned``: :meth:`~foundation_calc.solvers.supports.base.Sizing.size_warnings`),
+    nor a stratum remark on the scene's own ``base`` (L, B) [m], which each candidate's base is judged
+    by instead (:func:`~foundation_calc.scenes.stratum.shallow`)."""
+    from foundation_calc.scenes.stratum import stratum_remarks
+
+    on_base = {str(remark) for remark in stratum_remarks(scene.soil, *base)}
+    judged = {*sizes, *warned.keys}
+    return [finding for finding in scene.plausibility_findings()
+            if not candidate_key(finding.key) and finding.key not in judged and str(finding) not in on_base]
+
+
 def with_scene_check(refused, outcome: dict, utilisation: dict, governing: dict, reasons: dict, order: list) -> None:
     """Add the ``scene`` check to the verdicts (check -> (N,) each; ``order`` the checks' names):
     a candidate whose sizes make a scene ``fcalc check`` refuses (``refused``, the support's
@@ -77,4 +92,4 @@ def with_scene_check(refused, outcome: dict, utilisation: dict, governing: dict,
     order.append("scene")
 
 
-__all__ = ["OVER_RANGE", "candidate_values", "refuse_unjudged", "sizes_outside", "with_scene_check"]
+__all__ = ["OVER_RANGE", "candidate_values", "fixed_findings", "refuse_unjudged", "sizes_outside", "with_scene_check"]
