@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from foundation_calc.checks.crank_resonance import by_static_rank, consistent_frequencies, design_frequencies
+from foundation_calc.solvers.crank.natural import by_static_rank, consistent_frequencies, design_frequencies
 from foundation_calc.solvers.crank.averaged import averaged_operator, natural_modes
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 

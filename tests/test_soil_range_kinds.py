@@ -57,7 +57,7 @@ def test_one_batch_of_factors_is_the_factored_scenes(method):
 
 
 def _crank_fails(scene):
-    from foundation_calc.checks.crank_resonance import check_scene_resonances
+    from foundation_calc.checks.scene_resonance import check_scene_resonances
 
     return lambda f: check_scene_resonances(scene.with_modulus_factor(f)).outcome.value == "fail"
 

@@ -6,19 +6,25 @@ resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`, docs/reson
 in one call over every condition of the scene, whose governing index names the governing row.
 The scene kinds differ only in which sections of :class:`ResonanceReport` have content:
 
-- a crank-mechanism foundation (:mod:`~foundation_calc.checks.crank_resonance`): the paper's
-  plane model (``design``, its zero-order and averaged-inertia frequencies k0, p1, p2, the rocking
+- a crank-mechanism foundation (:func:`check_resonances`, :func:`check_block_resonances`): the
+  paper's plane model (``design``, its zero-order and averaged-inertia frequencies k0, p1, p2, the rocking
   stability margin); each row has both estimates of its critical speed and its margin is to the
   nearer one; the paper's conditions are judged whatever their forcing share;
-- a block foundation (:mod:`~foundation_calc.checks.block`): the six modes (``modes``), the
-  block's mass and centre of mass; the rows name their machine and the mode's dominant motion.
+- a block foundation (:mod:`~foundation_calc.checks.block`, :func:`modes_resonances`): the six
+  modes (``modes``), the block's mass and centre of mass; the rows name their machine and the
+  mode's dominant motion.
+
+The plane model's frequencies, conditions and forcing shares are computed in
+:mod:`~foundation_calc.solvers.crank.natural` and :mod:`~foundation_calc.solvers.crank.resonance`;
+a scene is read in :mod:`~foundation_calc.checks.scene_resonance`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import SimpleNamespace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -33,6 +39,9 @@ from foundation_calc.checks.resonance_rule import (
     required_detuning,
 )
 from foundation_calc.checks.resonance_rule import outcome as rule_outcome
+
+if TYPE_CHECKING:
+    from foundation_calc.solvers.crank.mechanism import CrankDesign
 
 
 @dataclass(frozen=True)
@@ -110,7 +119,7 @@ class ResonanceReport:
     (:mod:`~foundation_calc.checks.soil_range`); ``soil_validity``: a0 of the judged modes and
     orders against the soil method's fitted range (:mod:`~foundation_calc.checks.soil_validity`);
     ``several_roots``: ``WARN`` lines of the modes with several roots of ω = p(K(ω)) on a
-    frequency-dependent support (:func:`~foundation_calc.checks.crank_resonance.several_roots_warnings`).
+    frequency-dependent support (:func:`~foundation_calc.checks.scene_resonance.several_roots_warnings`).
 
     The plane model's section: ``design`` (None for a machine given by its loads only),
     ``zero_order`` and ``averaged`` frequencies (the same without a mechanism), ``static`` (the
@@ -251,4 +260,91 @@ def modes_resonances(modes, excitations, detuning) -> ResonanceReport:
     )
 
 
-__all__ = ["ResonanceReport", "ResonanceRow", "condition_label", "judged_rows", "modes_resonances"]
+#: Conditions listed as information beside the judged ones (the nearest first).
+SHOWN_INFORMATION = 3
+
+
+def judge_conditions(omega, zero, averaged, conditions, share, detuning):
+    """The rule (:func:`~foundation_calc.checks.resonance_rule.judge`) on ``conditions`` at the
+    speeds ``omega`` [rad/s] (a scalar or an array (S,)): margins (..., C), judgement, bands."""
+    from foundation_calc.solvers.crank.resonance import condition_margin
+
+    margins = np.stack(
+        np.broadcast_arrays(*(np.asarray(condition_margin(omega, zero, averaged, c), dtype=float) for c in conditions)),
+        axis=-1,
+    )
+    orders = np.array([c.harmonic for c in conditions])
+    required = required_detuning(detuning, orders)
+    source = np.array([c.source == "paper" for c in conditions])
+    return margins, judge(margins, orders, share, required, source), required
+
+
+def _plane_report(design, zero, averaged, stability, omega, conditions, share, detuning) -> ResonanceReport:
+    """The plane model's report: every condition judged (:func:`judge_conditions`), its critical
+    speeds of both operators, the harmonics not judged listed up to :data:`SHOWN_INFORMATION`."""
+    from foundation_calc.solvers.crank.resonance import critical_speed
+
+    margins, verdict, required = judge_conditions(omega, zero, averaged, conditions, share, detuning)
+    critical = [critical_speed(getattr(zero, c.mode), c.harmonic) for c in conditions]
+    averaged_critical = [critical_speed(getattr(averaged, c.mode), c.harmonic) for c in conditions]
+    rows, governing = judged_rows(conditions, critical, averaged_critical, margins, share, required, verdict)
+    information = sorted((row for row in rows if row.information and row.condition.source == "harmonic"), key=lambda r: r.margin)
+    listed = {id(row) for row in information[:SHOWN_INFORMATION]}
+    shown = tuple(
+        row for row in rows
+        if row.condition.source != "harmonic" or row.judged or row.status > INFORMATION or id(row) in listed
+    )
+    return ResonanceReport(
+        rows=shown, governing=governing, speeds={"": omega}, detuning=detuning, conditions_checked=len(rows),
+        design=design, zero_order=zero, averaged=averaged, stability_margin=stability,
+    )
+
+
+def check_resonances(design: CrankDesign, detuning, loads=None, frequencies=None) -> ResonanceReport:
+    """Natural frequencies of ``design`` and every resonance condition of its forcing (and of
+    ``loads``, :class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`), judged by the rule
+    (:mod:`~foundation_calc.checks.resonance_rule`). ``detuning``: a band [-] or order -> band.
+    ``frequencies`` = (zero-order, averaged, static) replaces the design's own (a
+    frequency-dependent soil,
+    :func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`)."""
+    from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, stability_arguments
+    from foundation_calc.solvers.crank.natural import design_frequencies
+    from foundation_calc.solvers.crank.resonance import machine_conditions
+
+    d = design
+    zero, averaged = design_frequencies(design)
+    static = None
+    if frequencies is not None:
+        zero, averaged, static = frequencies
+    stability = rocking_stability_margin(*stability_arguments(d))
+    conditions, share = machine_conditions(design, loads)
+    return replace(_plane_report(design, zero, averaged, stability, d.omega, conditions, share, detuning), static=static)
+
+
+def check_block_resonances(block, omega: float, loads, detuning, frequencies=None) -> ResonanceReport:
+    """Resonances of a machine given by its loads only: n ω of every order n of ``loads`` (and
+    ω itself) against the natural frequencies of the block (``RigidBlock``) at ``omega`` [rad/s];
+    ``frequencies`` = (frequencies, static) replaces the block's own (a frequency-dependent soil)."""
+    from foundation_calc.solvers.crank.frequencies import rocking_stability_margin
+    from foundation_calc.solvers.crank.loads import block_frequencies
+    from foundation_calc.solvers.crank.resonance import machine_conditions
+
+    freqs, static = block_frequencies(block), None
+    if frequencies is not None:
+        freqs, static = frequencies
+    stability = rocking_stability_margin(block.K_phi, 1.0, block.M_tot * block.g, block.h)
+    conditions, share = machine_conditions(None, loads, block)
+    return replace(_plane_report(None, freqs, freqs, stability, omega, conditions, share, detuning), static=static)
+
+
+__all__ = [
+    "SHOWN_INFORMATION",
+    "ResonanceReport",
+    "ResonanceRow",
+    "check_block_resonances",
+    "check_resonances",
+    "condition_label",
+    "judge_conditions",
+    "judged_rows",
+    "modes_resonances",
+]

@@ -37,9 +37,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies
 from foundation_calc.solvers.crank.closed_form import first_approximation_motion, soft_at_harmonic, varied
 from foundation_calc.solvers.crank.frequencies import NaturalFrequencies, rocking_stability_margin
+from foundation_calc.solvers.crank.natural import design_frequencies
 from foundation_calc.solvers.crank.resonance import CONDITIONS, condition_margin
 from foundation_calc.solvers.crank.response import splice_harmonics
 from foundation_calc.solvers.soil.impedance import consistent_frequency

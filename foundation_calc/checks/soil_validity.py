@@ -308,7 +308,7 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
     :func:`soil_validity` takes it."""
     if not fitted_range(method).applies:
         return soil_validity(method, V_s, {}, ())
-    from foundation_calc.checks.plane_modes import plane_modes
+    from foundation_calc.solvers.crank.modes import plane_modes
 
     judged = plane_judged(plane_modes(frequencies, block_at), speeds)
     return soil_validity(method, V_s, characteristic_lengths(method, L, B), judged, stratum)
@@ -316,10 +316,10 @@ def plane_validity(method: str, V_s, L: float, B: float, frequencies: Mapping[st
 
 def plane_judged(modes, speeds: Mapping[str, float]) -> list[JudgedFrequency]:
     """The plane model's judged frequencies: each of ``modes``
-    (:class:`~foundation_calc.checks.plane_modes.PlaneModes`) with the base motions whose direct
+    (:class:`~foundation_calc.solvers.crank.modes.PlaneModes`) with the base motions whose direct
     springs hold at least :data:`MOTION_SHARE` of its strain energy in them (:func:`spring_shares`),
     and ``speeds`` (name -> ω [rad/s]) with every motion."""
-    from foundation_calc.checks.plane_modes import BASE_MOTIONS
+    from foundation_calc.solvers.crank.modes import BASE_MOTIONS
 
     shares = spring_shares(modes.springs, modes.base_motion())
     judged = mode_frequencies(modes.labels, modes.frequencies, shares, BASE_MOTIONS)
@@ -355,9 +355,9 @@ def crank_validity(scene, report) -> SoilValidity:
     the range its support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`;
     the plane's horizontal, vertical and rocking motions are the support's x, z and ry). On a support
     coupling the plane (a pile group) the modes are the one model's the resonance check solves
-    (:func:`~foundation_calc.checks.plane_modes.scene_plane_modes`), each judged with the motions
+    (:func:`~foundation_calc.checks.scene_frequencies.scene_plane_modes`), each judged with the motions
     whose direct springs K_x, K_z, K_φ at O it strains."""
-    from foundation_calc.checks.plane_modes import scene_plane_modes
+    from foundation_calc.checks.scene_frequencies import scene_plane_modes
 
     support = scene.support()
     declared = support.validity()

@@ -543,7 +543,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         take three uncoupled springs, refuse or step aside by the design's own
         :attr:`~foundation_calc.solvers.crank.mechanism.CrankDesign.coupled`
         (:func:`~foundation_calc.solvers.crank.closed_form.design_first_approximation`,
-        :func:`~foundation_calc.checks.crank_resonance.design_frequencies`).
+        :func:`~foundation_calc.solvers.crank.natural.design_frequencies`).
 
         The support's springs at O (:meth:`in_plane`) map to c = K_z/S, c1 = K_x/S, c_φ = K_φ/I1
         (Barkan's coefficients pass through unchanged), its dashpots to C_x, C_z, C_φ. Raises

@@ -65,7 +65,7 @@ def candidate_frequencies(designs, mechanism):
     (:func:`~foundation_calc.solvers.crank.averaged.mode_order`) on the static springs and followed
     by its rank at frequency (:func:`~foundation_calc.checks.crank_resonance.by_static_rank`), as
     ``fcalc resonance`` takes them."""
-    from foundation_calc.checks.crank_resonance import by_static_rank, consistent_frequencies, design_frequencies
+    from foundation_calc.solvers.crank.natural import by_static_rank, consistent_frequencies, design_frequencies
     from foundation_calc.solvers.crank.averaged import block_matrices, mode_order, natural_modes
     from foundation_calc.solvers.crank.frequencies import NaturalFrequencies
 
@@ -114,7 +114,8 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     Only the conditions that can decide somewhere in the batch are judged (a source's, order 1,
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
     never the verdict: its margin is inf, its status clear."""
-    from foundation_calc.checks.crank_resonance import forcing_shares, harmonic_conditions, judge_conditions
+    from foundation_calc.checks.resonance import judge_conditions
+    from foundation_calc.solvers.crank.resonance import forcing_shares, harmonic_conditions
     from foundation_calc.checks.resonance_rule import FORCING_SHARE, Judgement
 
     _, _, _, fc, fs = mech
@@ -291,7 +292,7 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
 def _rootless(frequencies) -> np.ndarray:
     """(N, 3) the candidates' modes k0, p1, p2 without a natural frequency (ω = p(K(ω)) has no
     root: NaN in either the zero-order or the averaged frequencies, :func:`candidate_frequencies`)."""
-    from foundation_calc.checks.crank_resonance import MODES
+    from foundation_calc.solvers.crank.natural import MODES
 
     zero, averaged = frequencies
     return np.stack(np.broadcast_arrays(*(np.isnan(getattr(zero, mode)) | np.isnan(getattr(averaged, mode))
@@ -302,7 +303,7 @@ def _fail_rootless(out: Verdicts, rootless: np.ndarray) -> None:
     """Fail the resonance and amplitude checks of the candidates with a mode in ``rootless`` (N, 3)
     (its first such mode governing, named as ``fcalc check`` names it: an invalid scene there),
     the other candidates' verdicts kept; each check's reasons gain one text per mode."""
-    from foundation_calc.checks.crank_resonance import MODES
+    from foundation_calc.solvers.crank.natural import MODES
     from foundation_calc.solvers.soil.impedance import rootless_reason
 
     first = np.argmax(rootless, axis=-1)

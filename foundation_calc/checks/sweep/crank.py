@@ -40,15 +40,16 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.crank_resonance import design_frequencies, judge_conditions, machine_conditions
 from foundation_calc.checks.limits import QUANTITIES, limited_quantities
+from foundation_calc.checks.resonance import judge_conditions
 from foundation_calc.checks.resonance_rule import judge, required_detuning
 from foundation_calc.checks.sweep.report import SweepReport, joined
 from foundation_calc.checks.sweep.status import over_limits, row_verdicts
 from foundation_calc.solvers.crank import sweep as engine
 from foundation_calc.solvers.crank.loads import block_frequencies
 from foundation_calc.solvers.crank.mechanism import CrankDesign
-from foundation_calc.solvers.crank.resonance import critical_speed
+from foundation_calc.solvers.crank.natural import design_frequencies
+from foundation_calc.solvers.crank.resonance import critical_speed, machine_conditions
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -78,7 +79,7 @@ class DynamicSoil:
     ``at(soil_frequency)``: (design, vendor loads) with the springs and dashpots taken at the
     frequencies ``soil_frequency`` [rad/s] (an array, one per point; either part None when the
     scene has none); ``zero``, ``averaged``: the natural frequencies that solve ω = p(K(ω))
-    (:func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`); ``blocks``: the
+    (:func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`); ``blocks``: the
     block's M, C, K on the support at an array of frequencies (:func:`~foundation_calc.solvers.crank.sweep.plane_blocks`) for the
     averaged operator: the whole sweep on a support that couples sway with rocking, the speeds where
     the first approximation steps aside on the others (None for a machine given by its loads)."""
@@ -167,7 +168,7 @@ def sweep_chunks(
     """:func:`sweep` in chunks of ``chunk`` points, one :class:`SweepReport` each, so that a long
     sweep's memory is bounded by a chunk (the conditions' margins are (points × conditions)
     arrays). The conditions and their forcing shares are the scene's, at its own speed and soil
-    (:func:`~foundation_calc.checks.crank_resonance.machine_conditions`): which conditions are
+    (:func:`~foundation_calc.solvers.crank.resonance.machine_conditions`): which conditions are
     judged does not change along a sweep, and the row at the scene's speed is ``fcalc check``'s.
     ``dynamic``: a frequency-dependent soil, for a speed sweep (module docstring)."""
     if dynamic is not None and variable != "omega":
@@ -256,7 +257,7 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
     if not scene.support().frequency_dependent:
         return None
     from foundation_calc.checks.approximations import scene_vendor_loads
-    from foundation_calc.checks.crank_resonance import scene_block_frequencies, scene_design_frequencies
+    from foundation_calc.checks.scene_frequencies import scene_block_frequencies, scene_design_frequencies
 
     def at(soil_frequency):
         return (None if scene.mechanism is None else scene.design(soil_frequency)), scene_vendor_loads(scene, soil_frequency)

@@ -115,13 +115,4 @@ def coupled_plane_modes(frequencies: Mapping[str, float], design_at: Callable) -
     return _modes(frequencies, mode_at)
 
 
-def scene_plane_modes(scene, frequencies: Mapping[str, float]) -> PlaneModes:
-    """The modes ``frequencies`` (name -> p [rad/s]) of a ``crank_foundation`` scene: of its block
-    (:func:`plane_modes`), or, on a support coupling sway with rocking, of its one model in the
-    plane (:func:`coupled_plane_modes`)."""
-    if scene.mechanism is not None and scene.design().coupled:
-        return coupled_plane_modes(frequencies, lambda w: scene.design(w))
-    return plane_modes(frequencies, scene.block)
-
-
-__all__ = ["BASE_MOTIONS", "PlaneModes", "coupled_plane_modes", "plane_modes", "scene_plane_modes"]
+__all__ = ["BASE_MOTIONS", "PlaneModes", "coupled_plane_modes", "plane_modes"]
