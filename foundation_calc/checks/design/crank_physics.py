@@ -3,7 +3,7 @@ amplitudes against the limits and the code's zones, the plausibility warnings an
 pressure, in array operations over the batch (what :mod:`.crank` judges per piece and
 :mod:`.crank_range` over the soil's modulus range). The candidates' mass, springs, steady state and
 statistics are computed by :mod:`~foundation_calc.solvers.crank.batch_design`; their natural
-frequencies here, by the closed forms of :mod:`~foundation_calc.checks.crank_resonance` that
+frequencies here, by the closed forms of :mod:`~foundation_calc.solvers.crank.natural` that
 ``fcalc check`` takes."""
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ def candidate_designs(scene, L, B, H, factor=1.0, sizes=None):
 
 def candidate_frequencies(designs, mechanism):
     """(zero-order, averaged) of every candidate: k0, p1, p2, each mode at its own frequency on a
-    frequency-dependent soil (as :func:`~foundation_calc.checks.crank_resonance.scene_design_frequencies`;
+    frequency-dependent soil (as :func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`;
     the stability is judged at rest, :meth:`~foundation_calc.solvers.crank.batch_design.CandidateDesigns.stable`;
     ``designs``: :func:`candidate_designs`).
     ``mechanism``: the mechanism's M̄, C̄, K̄ (..., 3, 3) at the candidates' distances ``a``
@@ -63,7 +63,7 @@ def candidate_frequencies(designs, mechanism):
     the one model's, the eigen-solve of the averaged operator M̄, K̄ (mechanism and
     :func:`~foundation_calc.solvers.crank.averaged.block_matrices`) stacked over the candidates, each mode named by its dominant motion
     (:func:`~foundation_calc.solvers.crank.averaged.mode_order`) on the static springs and followed
-    by its rank at frequency (:func:`~foundation_calc.checks.crank_resonance.by_static_rank`), as
+    by its rank at frequency (:func:`~foundation_calc.solvers.crank.natural.by_static_rank`), as
     ``fcalc resonance`` takes them."""
     from foundation_calc.solvers.crank.natural import by_static_rank, consistent_frequencies, design_frequencies
     from foundation_calc.solvers.crank.averaged import block_matrices, mode_order, natural_modes
@@ -106,7 +106,7 @@ class Verdicts:
 
 
 def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, stable):
-    """The resonance rule on every candidate, as :func:`~foundation_calc.checks.crank_resonance.check_resonances`
+    """The resonance rule on every candidate, as :func:`~foundation_calc.checks.resonance.check_resonances`
     judges one design; returns (zero-order frequencies, margins, judgement, conditions), the
     arrays over every condition n ω = k0, p1, p2 of harmonics 1 ... ``harmonics``; ``frequencies``:
     the candidates' (zero-order, averaged) k0, p1, p2 (:func:`candidate_frequencies`).
