@@ -47,7 +47,7 @@ def test_a_block_zone_table_shows_the_velocity_along_each_axis(runner):
 
 
 def test_every_kinds_sections_give_what_the_one_amplitude_layer_reads():
-    """output/amplitudes.py writes every kind's document and tables around the same judged part and
+    """output/amplitudes/ writes every kind's document and tables around the same judged part and
     reads a kind's sections by the names of ``SECTIONS``: each kind's module gives all of them (a
     hook missing would fail only on that kind's scenes, at run time)."""
     from foundation_calc.output.amplitudes import SECTIONS, _sections

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from foundation_calc.checks.block import check_block
+from foundation_calc.checks.amplitudes.machines import check_block
 from foundation_calc.scenes import parse_scene
 
 CONFIGS = "configs"

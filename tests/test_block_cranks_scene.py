@@ -168,7 +168,7 @@ def test_a_rod_barely_longer_than_its_crank_warns_and_the_exact_solution_states_
     crank["rod_length"], crank["rod_cog_to_crank_pin"] = 0.1105, 0.05
     scene = parse_scene(two_throw)
     assert any("machines[0].cranks[0]: λ = crank_radius/rod_length = 0.995" in w for w in scene.plausibility_warnings())
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.solvers.rigid_body import periodic
 
     monkeypatch.setattr(periodic, "MAX_HARMONICS", 16)  # the cap, reached sooner: the same path, faster

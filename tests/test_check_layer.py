@@ -83,7 +83,7 @@ def test_a_crank_given_by_its_block_states_its_scene_office_rows(path):
 
 @pytest.mark.parametrize("name", ["block_two_machines", "block_on_isolators", "block_on_piles"])
 def test_a_blocks_office_finding_is_its_scene_office_rows(name):
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
 
     scene = load_scene(CONFIGS / f"{name}.toml")
     finding = CHECKS["block_foundation"]["office"](scene)

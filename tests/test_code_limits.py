@@ -248,7 +248,7 @@ def test_the_design_evaluator_judges_the_displacement_as_check_does(tmp_path):
     """``fcalc design``'s vectorised block evaluator against ``fcalc check``'s path, candidate by
     candidate, on the slow fan block (where the displacement decides): same
     outcome, same utilisation to 1e-9 (round-off of batched against single solves)."""
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.checks.design.block import evaluate
     from foundation_calc.checks.registry import CHECKS
     from foundation_calc.scenes import load_scene

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import foundation_calc.checks.block as block_checks
+import foundation_calc.checks.amplitudes.machines as block_checks
 import foundation_calc.solvers.soil.impedance as impedance_module
 from foundation_calc.scenes.loading import load_scene
 from foundation_calc.solvers.block.response import consistent_batch

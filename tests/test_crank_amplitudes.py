@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foundation_calc.checks.approximations import check_amplitudes
+from foundation_calc.checks.amplitudes.approximations import check_amplitudes
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.exact import exact_periodic_solution
 from foundation_calc.solvers.crank.first_approximation import first_approximation

@@ -107,7 +107,7 @@ def test_the_piled_designs_closed_forms_step_aside_by_name():
     """The first approximation refuses the coupled design itself (NotApplicable, a PhysicsError: exit
     3 where nothing else applies), in the words fcalc amplitudes prints for it; the rigid block under
     vendor loads refuses the support by its name."""
-    from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
+    from foundation_calc.checks.amplitudes.approximations import FIRST_NOT_APPLICABLE
     from foundation_calc.errors import NotApplicable, PhysicsError
     from foundation_calc.solvers.crank.closed_form import design_first_approximation
 

@@ -192,7 +192,7 @@ def test_no_soil_method_on_the_piled_sheet(written, index):
 def test_the_sheet_says_what_the_piles_change(written, printed):
     """The damped line names C_xφ; the first approximation is not applicable, with its reason; the
     methods state the group's springs at O and the plane's, at rest and at each mode's ω*."""
-    from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
+    from foundation_calc.checks.amplitudes.approximations import FIRST_NOT_APPLICABLE
 
     md = re.sub(r"\\(.)", r"\1", written[0])
     assert "C_xφ = " in next(line for line in md.splitlines() if line.startswith("Damped: base dashpots"))

@@ -17,8 +17,8 @@ import tomllib
 import numpy as np
 import pytest
 
-from foundation_calc.checks import block as scalar
-from foundation_calc.checks.block import condition_label
+from foundation_calc.checks.amplitudes import machines as scalar
+from foundation_calc.checks.amplitudes.machines import condition_label
 
 from foundation_calc.checks.design.apply import apply
 from foundation_calc.checks.design.block import NOT_EVALUATED, VARIABLE_KEYS, evaluate

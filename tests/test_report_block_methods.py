@@ -21,7 +21,7 @@ BLOCK = sorted(p for p in CONFIGS.glob("*.toml") if load_scene(p).kind == "block
 
 
 def _amplitudes(scene) -> dict:
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.output.amplitudes import amplitudes_document
 
     return amplitudes_document(check_block(scene), scene, "")

@@ -18,7 +18,7 @@ TOLERANCE = 1e-9
 
 
 def test_rms_velocity_and_zone_of_every_point_are_the_checks():
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.output.amplitudes import amplitudes_document
     from foundation_calc.output.report.code_zone import DIRECTIONS, code_zone_blocks, velocity_terms
     from foundation_calc.output.report.damped_response import damped_solve

@@ -22,7 +22,7 @@ DAMPED = ["compressor_damped_near_resonance.toml", "compressor_vendor_loads.toml
 
 
 def _amplitudes(scene) -> dict:
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.output.amplitudes import amplitudes_document
 
     return amplitudes_document(check_scene_amplitudes(scene), scene, "")

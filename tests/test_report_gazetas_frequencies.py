@@ -23,7 +23,7 @@ def _close(a: float, b: float) -> bool:
 
 
 def _amplitudes(scene) -> dict:
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.output.amplitudes import amplitudes_document
 
     return amplitudes_document(check_scene_amplitudes(scene), scene, "")

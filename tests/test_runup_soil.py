@@ -82,7 +82,7 @@ def test_runup_passes_the_modes_resonance_reports(runner, tmp_path, method):
     resonance (rel 1e-12: the same function computes both); the run-up's mode shapes are the
     resonance check's. The static springs put the modes 1.5 % (sliding) to 14 % (rocking)
     higher and number torsion and rocking the other way round."""
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.checks.runup import _block_structures
 
     path = tmp_path / f"{method}.toml"
@@ -140,7 +140,7 @@ def test_block_steady_peaks_are_the_amplitudes_checks(method):
     """Every point's steady peak along x, y, z in the run-up (the machines' peaks added) against
     `fcalc amplitudes`' (each order on K(nω), C(nω)): within the run-up's sampling, 5e-5. On the
     static springs they were up to 17 % apart on this scene."""
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
 
     expected = check_block(_block(method)).motion.peak  # (P, 3), G first
     np.testing.assert_allclose(_block_runup(method).steady_directions, expected, rtol=SAMPLED)
@@ -151,7 +151,7 @@ def test_crank_steady_peaks_are_the_amplitudes_checks():
     run-up against `fcalc amplitudes`' averaged operator, each harmonic on K(nω): 1e-4 (the run-up's
     sampling, 5e-5, and the rod's weight at its mean height, which the averaged operator of
     `amplitudes` keeps and the resonance check's leaves out: 4e-6)."""
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
 
     amplitudes = check_scene_amplitudes(_crank_scene("compressor_medium_sand_lysmer.toml"))
     expected = amplitudes.approximations[amplitudes.checked].points["C"].displacement
@@ -355,7 +355,7 @@ def test_crank_soil_sweep_recomputes_the_dynamic_soil_at_each_factor():
     springs at n ω; 1e-9), and the governing margin is `fcalc resonance`'s there (the modes at
     their own frequencies). Scaling the static springs instead, as before, put x 9 % low at factor
     1.3 and judged 3ω = p2 failing there (now ω = p1, passing)."""
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.checks.scene_resonance import scene_resonances_as_given
     from foundation_calc.checks.sweep.crank import scene_sweep_chunks
     from foundation_calc.checks.sweep.report import joined
@@ -375,7 +375,7 @@ def test_the_sheets_passages_use_the_resonance_checks_modes():
     """The calculation sheet's run-up columns (its own eigen-solve, K and C at each mode's own
     frequency) give each passage's ω_i, ζ and peaks as the run-up check does (1e-8: the fixed
     point ω = p(K(ω)) is solved to 1e-10), the modes the sheet's modes table shows."""
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.output.report.runup_methods import runup_columns
     from foundation_calc.output.runup import runup_document
 

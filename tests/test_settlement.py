@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from foundation_calc.checks.block import check_block
+from foundation_calc.checks.amplitudes.machines import check_block
 from foundation_calc.checks.registry import CHECKS
 from foundation_calc.scenes import parse_scene
 

@@ -208,7 +208,7 @@ def test_each_harmonic_of_the_loads_on_its_own_springs_against_a_direct_solve():
     """The vendor loads' steady state on Gazetas' soil: harmonic n of the spliced motion equals
     the complex solve [K(nω) - (nω)² M + i nω C(nω)] q = Q_n with the block's matrices built at
     n ω (Eq. (2) of the loads module) - and differs from the springs at the speed alone."""
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.solvers.crank.loads import matrices
 
     document = read_toml(CONFIGS / "compressor_vendor_loads.toml")

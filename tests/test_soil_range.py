@@ -120,7 +120,7 @@ def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
     ``fcalc resonance`` (the frequency-consistent ones on Gazetas' soil, rel 1e-7: the fixed
     points' tolerance) and its peaks of C those of the first approximation in ``fcalc amplitudes``
     (at most 0.5 % low: 96 phases a revolution against Newton's peak)."""
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.checks.scene_resonance import check_scene_resonances
     from foundation_calc.checks.soil_sample import sample_scene
 
@@ -169,7 +169,7 @@ def test_a_block_that_passes_as_given_fails_where_a_mode_crosses_the_speed_insid
     5 %); the amplitude range's worst ratio against the largest of a scan of 150 factors, which it
     must not under-state by more than 1e-3 (the damped peak lies off the undamped crossing by about
     ζ5² = 3e-4)."""
-    from foundation_calc.checks.block import check_block, check_block_as_given
+    from foundation_calc.checks.amplitudes.machines import check_block, check_block_as_given
 
     scene = parse_scene(_block_on_springs([0.7, 1.4], crossing_factor=0.8))
     omega = scene.machines[0].omega_rad_s

@@ -120,7 +120,7 @@ def test_a_block_sample_without_scatter_is_the_checks_own_numbers(config, soil, 
     `fcalc check` (on Gazetas' soil each at its own frequency: rel 1e-6, the fixed points'
     tolerance), its resonance utilisation the governing condition's needed over its margin, its
     amplitude utilisation the largest limit or zone ratio (rel 1e-9 elsewhere: round-off)."""
-    from foundation_calc.checks.block import check_block_as_given
+    from foundation_calc.checks.amplitudes.machines import check_block_as_given
     from foundation_calc.checks.block_sample import MODES, sample_block
     from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 

@@ -1,6 +1,6 @@
 """Run time of a block foundation: one scene's whole computation, and a sweep of 10⁴ speeds.
 
-Measured on each block scene given: :func:`~foundation_calc.checks.block.check_block` (model,
+Measured on each block scene given: :func:`~foundation_calc.checks.amplitudes.machines.check_block` (model,
 modes, resonance margins, steady state of every machine at G and every point, peaks, RMS, limits,
 zones, office checks), and :func:`~foundation_calc.solvers.block.sweep.speed_sweep` of its first
 machine over 10⁴ speeds from 0.2 to 2 times its own. Targets: 10 ms and 1 s. Wall time (median)
@@ -40,7 +40,7 @@ def _cpu_per_call(fn, calls: int) -> float:
 
 def benchmark_block(source: str, scene, min_time: float) -> BlockTiming:
     """Time ``scene``'s check and a sweep of its first machine's speed (module docstring)."""
-    from foundation_calc.checks.block import check_block
+    from foundation_calc.checks.amplitudes.machines import check_block
     from foundation_calc.solvers.block.response import block_modes
     from foundation_calc.solvers.block.sweep import speed_sweep
 

@@ -10,7 +10,7 @@ The scene kinds differ only in which sections of :class:`ResonanceReport` have c
   paper's plane model (``design``, its zero-order and averaged-inertia frequencies k0, p1, p2, the rocking
   stability margin); each row has both estimates of its critical speed and its margin is to the
   nearer one; the paper's conditions are judged whatever their forcing share;
-- a block foundation (:mod:`~foundation_calc.checks.block`, :func:`modes_resonances`): the six
+- a block foundation (:mod:`~foundation_calc.checks.amplitudes.machines`, :func:`modes_resonances`): the six
   modes (``modes``), the block's mass and centre of mass; the rows name their machine and the
   mode's dominant motion.
 

@@ -128,9 +128,9 @@ def _block_structures(scene):
     """One structure per machine of a block scene as (name, structure, speed [rad/s]), and with
     several machines one of them all started together (name :data:`TOGETHER`, the fastest
     machine's speed); the names of the points (G first). Each is the block with the scene's modes,
-    the resonance check's (:func:`~foundation_calc.checks.block.scene_modes`; a PhysicsError
+    the resonance check's (:func:`~foundation_calc.checks.amplitudes.machines.scene_modes`; a PhysicsError
     naming the soil when the block is unstable)."""
-    from foundation_calc.checks.block import scene_modes
+    from foundation_calc.checks.amplitudes.machines import scene_modes
     from foundation_calc.solvers.block.runup import machine_structure, machines_structure
 
     model = scene.stable_model()  # a PhysicsError naming the likely culprit when the block tips over

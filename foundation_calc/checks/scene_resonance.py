@@ -16,10 +16,10 @@ from foundation_calc.checks.resonance import ResonanceReport, check_block_resona
 
 def scene_resonances(scene):
     """The resonance report of a crank or block scene, with its soil's modulus range and soil
-    validity: a block's six modes (:func:`~foundation_calc.checks.block.check_block`), the plane
+    validity: a block's six modes (:func:`~foundation_calc.checks.amplitudes.machines.check_block`), the plane
     model's (:func:`check_scene_resonances`)."""
     if scene.kind == "block_foundation":
-        from foundation_calc.checks.block import check_block
+        from foundation_calc.checks.amplitudes.machines import check_block
 
         return check_block(scene).resonance
     return check_scene_resonances(scene)

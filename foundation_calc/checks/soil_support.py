@@ -9,7 +9,7 @@ six springs and dashpots at O at any frequency; a scene kind reads them as its m
 the frequencies its commands take (:data:`KINDS`):
 
 - a block: the six by motion, at every machine's speed and at each of its six modes
-  (:func:`~foundation_calc.checks.block.scene_modes`, the resonance check's), only when the
+  (:func:`~foundation_calc.checks.amplitudes.machines.scene_modes`, the resonance check's), only when the
   support's springs depend on frequency (otherwise they are the same at every frequency);
 - a crank: their projection on the plane u_x, u_z, θ_y with the sway-rocking coupling
   (:func:`~foundation_calc.solvers.supports.plane_footing.plane`), at the speed's harmonics of
@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: The harmonics n of a crank's speed tabled: the mechanism's forcing of the first approximation,
-#: whose vertical motion runs to 4 ω (:data:`~foundation_calc.checks.approximations.HARMONICS`);
+#: whose vertical motion runs to 4 ω (:data:`~foundation_calc.checks.amplitudes.approximations.HARMONICS`);
 #: the amplitudes take harmonic n on the springs at n ω.
 ORDERS = (1, 2, 3, 4)
 
@@ -129,7 +129,7 @@ def _block(scene) -> SupportSoil:
     speeds = {m.name: m.omega_rad_s for m in scene.machines}
     columns = ()
     if support.frequency_dependent:
-        from foundation_calc.checks.block import scene_modes
+        from foundation_calc.checks.amplitudes.machines import scene_modes
 
         modes, _ = scene_modes(scene, body)
         entries = [("static", "", None, 0.0), *(("speed", name, None, w) for name, w in speeds.items())]

@@ -376,7 +376,7 @@ def crank_validity(scene, report) -> SoilValidity:
 def block_validity(scene, report) -> SoilValidity:
     """The soil model's validity of a ``block_foundation`` scene at its six modes (with the
     motions each strains) and every machine's orders the rule judges (``report``: a
-    :class:`~foundation_calc.checks.block.BlockReport`), against the range its support declares
+    :class:`~foundation_calc.checks.amplitudes.machines.BlockReport`), against the range its support declares
     (:meth:`~foundation_calc.solvers.supports.base.Support.validity`)."""
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
 

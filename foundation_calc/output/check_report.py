@@ -192,7 +192,7 @@ def result_document(check: str, report, scene) -> dict:
 
         document = amplitudes_document(report, scene, "")
     elif check == "office":
-        from foundation_calc.output.office import office_document
+        from foundation_calc.output.amplitudes.office import office_document
 
         document = office_document(report, scene, "")
     else:

@@ -430,7 +430,7 @@ class CrankScene(Plausible, OnSoil, SceneModel):
         tipping over under the weight (paper (3.4)) is a statement about the static equilibrium, and
         a frequency-dependent support's springs at ω are the real part of an impedance (a pile
         group's K_x(ω) may dip near zero, making K_xφ²/K_x explode), not a static stiffness. The
-        6-DOF block judges its stability on the static springs alike (:mod:`~foundation_calc.checks.block`)."""
+        6-DOF block judges its stability on the static springs alike (:mod:`~foundation_calc.checks.amplitudes.machines`)."""
         *found, support = self._support_in_plane(soil_frequency)
         return *found, support.method
 

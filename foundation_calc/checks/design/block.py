@@ -1,5 +1,5 @@
 """The block engine of the one batch checker (:mod:`.batch`): the checks of a ``block_foundation``
-scene (``CHECKS["block_foundation"]``) over a batch of candidate blocks at once: the same equations as :func:`~foundation_calc.checks.block.check_block`,
+scene (``CHECKS["block_foundation"]``) over a batch of candidate blocks at once: the same equations as :func:`~foundation_calc.checks.amplitudes.machines.check_block`,
 on stacks of matrices instead of one.
 
 A candidate varies the block's length, width or height (:data:`VARIABLE_KEYS`, a block given by
@@ -92,8 +92,8 @@ def _placing(scene, L, B, H):
 
 def _resonance(scene, modes, excitations):
     """Outcome, utilisation, governing index and reasons of the ``resonance`` check
-    (:func:`~foundation_calc.checks.block.resonance_rows` and ``BlockReport.nearest``)."""
-    from foundation_calc.checks.block import condition_label
+    (:func:`~foundation_calc.checks.amplitudes.machines.resonance_rows` and ``BlockReport.nearest``)."""
+    from foundation_calc.checks.amplitudes.machines import condition_label
     from foundation_calc.checks.resonance_rule import judge, required_detuning
     from foundation_calc.solvers.block.response import resonances
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
@@ -122,8 +122,8 @@ def _resonance(scene, modes, excitations):
 
 def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
-    (:func:`~foundation_calc.checks.amplitude_report.judge`)."""
-    from foundation_calc.checks.block import DIRECTIONS, LIMITED_VALUES
+    (:func:`~foundation_calc.checks.amplitudes.report.judge`)."""
+    from foundation_calc.checks.amplitudes.machines import DIRECTIONS, LIMITED_VALUES
     from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity

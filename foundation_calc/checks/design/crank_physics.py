@@ -149,7 +149,7 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
 
 def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
-    :func:`~foundation_calc.checks.approximations.check_amplitudes` judges them."""
+    :func:`~foundation_calc.checks.amplitudes.approximations.check_amplitudes` judges them."""
     from foundation_calc.checks.codes import application_warnings
     from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import limited_quantities

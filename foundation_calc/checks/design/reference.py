@@ -44,7 +44,7 @@ def _resonance(report) -> tuple[float, str]:
     from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 
     if hasattr(report, "nearest"):  # a block foundation
-        from foundation_calc.checks.block import condition_label
+        from foundation_calc.checks.amplitudes.machines import condition_label
 
         row = report.nearest
         return _ratio(max(row.required, RESONANCE_FAIL_MARGIN), row.margin), condition_label(row)

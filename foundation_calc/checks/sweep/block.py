@@ -2,7 +2,7 @@
 machine's speed (:func:`sweep_block`) or of a factor on the soil's stiffness data, every machine at
 its own speed (:func:`sweep_block_soil`); both give the one report of every kind's sweep
 (:class:`~foundation_calc.checks.sweep.report.SweepReport`), their columns the largest peak and
-RMS values over G and the points along x, y, z (:data:`~foundation_calc.checks.block.LIMITED_VALUES`).
+RMS values over G and the points along x, y, z (:data:`~foundation_calc.checks.amplitudes.machines.LIMITED_VALUES`).
 
 **A machine's speed.** One machine's speed is swept (:func:`~foundation_calc.solvers.block.sweep.speed_sweep`); the
 others run at their own speeds, or are left out (``alone``: they stand still, their mass stays
@@ -14,7 +14,7 @@ on the block). At every speed:
   condition's forcing share is the scene's (at its own speeds), so which conditions are judged
   does not change along the sweep, and the row at the scene's speed is ``fcalc check``'s;
 - the limits ``fcalc check`` judges for a block (peak and RMS displacement and velocity of G and
-  every point, each direction; :data:`~foundation_calc.checks.block.LIMITED_VALUES`);
+  every point, each direction; :data:`~foundation_calc.checks.amplitudes.machines.LIMITED_VALUES`);
 - the row's governing condition, status and the words for it by
   :mod:`~foundation_calc.checks.sweep.status`, which the crank foundation's sweep uses too.
 
@@ -29,7 +29,7 @@ over such a range. At each factor f the scene's soil is replaced by its stiffnes
 (:meth:`~foundation_calc.scenes.soil.OnSoil.with_modulus_factor`, the same factored soil ``fcalc
 check`` judges over ``[soil] modulus_range``: G or V_s², E, Barkan's c_z, c_x, c_phi, c_psi, or
 given springs × f with their dashpots × sqrt(f)), and every spring and dashpot is recomputed from
-it; the row is :func:`~foundation_calc.checks.block.check_block_as_given` of that scene:
+it; the row is :func:`~foundation_calc.checks.amplitudes.machines.check_block_as_given` of that scene:
 
 - on a frequency-dependent soil (Gazetas, Pais & Kausel, a stratum, a pile group) each mode at its
   own frequency and each order n of each machine on the springs and dashpots at n ω;
@@ -42,7 +42,7 @@ it; the row is :func:`~foundation_calc.checks.block.check_block_as_given` of tha
   check over ``modulus_range`` judges at that factor); the mode numbers and dominant motions in the
   labels are those at the row's factor;
 - the limits ``fcalc check`` judges for a block, of the largest peak and RMS values over G and the
-  points (:data:`~foundation_calc.checks.block.LIMITED_VALUES`); a row whose order meets an
+  points (:data:`~foundation_calc.checks.amplitudes.machines.LIMITED_VALUES`); a row whose order meets an
   undamped mode has no steady state (status ``resonant``, its values NaN).
 
 Isolators are no soil: a block on ``[[isolators]]`` has no soil to factor
@@ -78,7 +78,7 @@ class SweepCondition:
 def _conditions(modes, excitations):
     """Every order of every machine against every mode: (margins at the machines' own speeds
     (C,), orders (C,), shares (C,), labels), machine by machine as ``excitations`` lists them."""
-    from foundation_calc.checks.block import condition_label
+    from foundation_calc.checks.amplitudes.machines import condition_label
     from foundation_calc.solvers.block.response import resonances
 
     margins, orders, shares, found = [], [], [], []
@@ -95,7 +95,7 @@ def _conditions(modes, excitations):
 
 @dataclass(frozen=True)
 class _Row:
-    """What :func:`~foundation_calc.checks.block.condition_label` reads of a condition."""
+    """What :func:`~foundation_calc.checks.amplitudes.machines.condition_label` reads of a condition."""
 
     machine: str
     order: int
@@ -105,11 +105,11 @@ class _Row:
 
 def _report(scene, variable: str, values, resonant, largest: dict, margins, verdict, conditions: tuple, **kind) -> SweepReport:
     """The report of a block's sweep over ``values`` of ``variable``: ``largest``: the largest peak
-    and RMS values over G and the points, key of :data:`~foundation_calc.checks.block.LIMITED_VALUES`
+    and RMS values over G and the points, key of :data:`~foundation_calc.checks.amplitudes.machines.LIMITED_VALUES`
     -> (N, 3) [SI]; the ``margins`` (N, C) [-] of the ``conditions`` and the rule's ``verdict`` of
     them; the limits ``fcalc check`` judges for a block; ``kind``: the other fields of
     :class:`~foundation_calc.checks.sweep.report.SweepReport` (``setup``, ``critical``, ``per_row``)."""
-    from foundation_calc.checks.block import LIMITED_VALUES
+    from foundation_calc.checks.amplitudes.machines import LIMITED_VALUES
     from foundation_calc.checks.limits import limited_quantities
 
     limits = limited_quantities(scene.limits)
@@ -132,7 +132,7 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> SweepReport:
     over the speeds ``omega`` [rad/s] (module docstring); ``alone``: leave the other machines out.
     The report's ``critical``: the swept machine's conditions that can decide a row, whose
     critical speed lies inside the range (:class:`SweepCondition`)."""
-    from foundation_calc.checks.block import LIMITED_VALUES, scene_modes
+    from foundation_calc.checks.amplitudes.machines import LIMITED_VALUES, scene_modes
     from foundation_calc.checks.resonance_rule import required_detuning
     from foundation_calc.solvers.block.sweep import speed_sweep
 
@@ -184,7 +184,7 @@ def sweep_block_soil(scene, factors) -> SweepReport:
         a factor so small that the block tips over (its rocking spring at O no stiffer than the
         weight's overturning moment): the scene's message, naming the factor.
     """
-    from foundation_calc.checks.block import LIMITED_VALUES
+    from foundation_calc.checks.amplitudes.machines import LIMITED_VALUES
 
     if (why := refusal(scene)) is not None:
         raise ValueError(why)
@@ -205,9 +205,9 @@ def sweep_block_soil(scene, factors) -> SweepReport:
 
 
 def _at_factor(scene, factor: float):
-    """:func:`~foundation_calc.checks.block.check_block_as_given` of ``scene`` on its soil × ``factor``;
+    """:func:`~foundation_calc.checks.amplitudes.machines.check_block_as_given` of ``scene`` on its soil × ``factor``;
     a block that tips over there says at which factor."""
-    from foundation_calc.checks.block import check_block_as_given
+    from foundation_calc.checks.amplitudes.machines import check_block_as_given
     from foundation_calc.errors import PhysicsError
 
     try:

@@ -24,7 +24,7 @@ and ``fcalc resonance`` of the scene with that soil. On a frequency-independent 
 multiplies the springs by the factor and the dashpots by its square root.
 
 On a support that couples sway with rocking (a pile group's K_xφ, C_xφ at O) the paper's closed
-forms do not apply ("not applicable", :data:`~foundation_calc.checks.approximations.FIRST_NOT_APPLICABLE`):
+forms do not apply ("not applicable", :data:`~foundation_calc.checks.amplitudes.approximations.FIRST_NOT_APPLICABLE`):
 the peaks are the plane's one model's, the averaged operator with the exact forcing as ``fcalc
 amplitudes`` solves it there, each harmonic n at n ω on the support's springs and dashpots at n ω,
 for every speed at once (:func:`~foundation_calc.solvers.crank.sweep.coupled_motion`: the mechanism's part, a polynomial of degree 2
@@ -113,7 +113,7 @@ def _chunk(design, variable: str, values, limits, detuning, points, vendor, cond
                                 None if dynamic is None else dynamic.blocks)
     motion, resonant, omega, not_applicable = found.motion, found.resonant, found.omega, found.why
     if coupled:
-        from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
+        from foundation_calc.checks.amplitudes.approximations import FIRST_NOT_APPLICABLE
 
         not_applicable = {"first_approximation": FIRST_NOT_APPLICABLE}
     if dynamic is not None:
@@ -198,7 +198,7 @@ def factored_soil_chunks(scene, values, limits, detuning, points=()):
     ω = p(K(ω)) (:func:`scene_dynamic_soil`). ``limits``, ``detuning``, ``points`` as
     :func:`sweep` takes them; the conditions and their forcing shares are the scene's as given,
     as :func:`sweep_chunks` takes them."""
-    from foundation_calc.checks.approximations import scene_vendor_loads
+    from foundation_calc.checks.amplitudes.approximations import scene_vendor_loads
 
     vendor = scene_vendor_loads(scene)
     conditions, share = machine_conditions(None if scene.mechanism is None else scene.design(),
@@ -216,7 +216,7 @@ def scene_sweep_chunks(scene, variable: str, values):
     """The chunks of a sweep of a ``crank_foundation`` scene (:func:`sweep_chunks`) of ``variable``
     over ``values``, with its [limits], [[points]] and [[loads]]: frequency-consistent on a
     frequency-dependent soil (module docstring)."""
-    from foundation_calc.checks.approximations import scene_vendor_loads
+    from foundation_calc.checks.amplitudes.approximations import scene_vendor_loads
 
     points = [(p.name, p.horizontal, p.height) for p in scene.points]
     limits, detuning = scene.limits, scene.limits.detuning
@@ -238,7 +238,7 @@ def sweep(
     ``points``: (name, horizontal, height) [m] of body points relative to C, as the scene's
     ``[[points]]``; their peaks come from the same series (rigid-body motion, exact in θ).
     ``vendor``: the scene's ``[[loads]]``
-    (:class:`~foundation_calc.checks.approximations.VendorLoads`), whose linear steady state
+    (:class:`~foundation_calc.checks.amplitudes.approximations.VendorLoads`), whose linear steady state
     is added to the mechanism's, or is the whole motion when ``design`` is None; their
     conditions n ω = k0, p1, p2 join the mechanism's. ``dynamic``: a frequency-dependent soil
     (:class:`DynamicSoil`, :func:`scene_dynamic_soil`). Computed in chunks (:func:`sweep_chunks`).
@@ -256,7 +256,7 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
     on the others."""
     if not scene.support().frequency_dependent:
         return None
-    from foundation_calc.checks.approximations import scene_vendor_loads
+    from foundation_calc.checks.amplitudes.approximations import scene_vendor_loads
     from foundation_calc.checks.scene_frequencies import scene_block_frequencies, scene_design_frequencies
 
     def at(soil_frequency):

@@ -33,7 +33,7 @@ class SweepReport:
     detuning : the scene's band, or bands by order
     columns : the kind's values per row, name -> (N, ...) array or a dict of such arrays (a crank
         scene: ``omega``, ``peaks``, ``points``, ``harmonics``; a block: the largest peak and RMS
-        values over G and its points, :data:`~foundation_calc.checks.block.LIMITED_VALUES`)
+        values over G and its points, :data:`~foundation_calc.checks.amplitudes.machines.LIMITED_VALUES`)
     setup : the kind's facts about the whole sweep (a crank scene: ``damped``, ``coupled``,
         ``not_applicable``; a block's speed sweep: ``machine``, ``alone``, ``speed``; its soil
         sweep: ``speeds``)

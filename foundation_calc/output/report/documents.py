@@ -42,7 +42,7 @@ def sweep_figure_of(loaded, units: DisplayUnits, omega: float, resonances: list[
     harmonic's frequency, as ``fcalc sweep`` gives them."""
     import numpy as np
 
-    from foundation_calc.checks.approximations import scene_vendor_loads
+    from foundation_calc.checks.amplitudes.approximations import scene_vendor_loads
     from foundation_calc.checks.sweep.crank import scene_dynamic_soil, sweep
     from foundation_calc.output.report.figures import sweep_factors, sweep_figure
     from foundation_calc.output.sweep import sweep_document
@@ -61,7 +61,7 @@ def exact_amplitudes(loaded) -> dict | None:
     accuracy statement; None for a machine given by its loads (already exact)."""
     if loaded.kind != "crank_foundation" or loaded.mechanism is None:
         return None
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
     from foundation_calc.output.amplitudes import amplitudes_document
 
     return amplitudes_document(check_scene_amplitudes(loaded, exact=True), loaded, "")

@@ -59,8 +59,8 @@ def first_approximation_chain(scene) -> Chain:
 def forcing_chain(scene) -> Chain:
     """The mechanism's forcing to leading order in λ without the first approximation's amplitudes,
     which do not apply on a support coupling sway with rocking
-    (:data:`~foundation_calc.checks.approximations.FIRST_NOT_APPLICABLE`)."""
-    from foundation_calc.checks.approximations import FIRST_NOT_APPLICABLE
+    (:data:`~foundation_calc.checks.amplitudes.approximations.FIRST_NOT_APPLICABLE`)."""
+    from foundation_calc.checks.amplitudes.approximations import FIRST_NOT_APPLICABLE
 
     chain = Chain(f"The mechanism's forcing to leading order in λ; the first approximation (4.14) is {FIRST_NOT_APPLICABLE}")
     _mechanism_steps(chain, scene)

@@ -8,7 +8,7 @@ from foundation_calc.output.console import titled_table as _table
 
 
 def office_rows_document(report) -> list[dict]:
-    """The rows of ``report`` (a :class:`~foundation_calc.checks.block.BlockReport` or an
+    """The rows of ``report`` (a :class:`~foundation_calc.checks.amplitudes.machines.BlockReport` or an
     :class:`~foundation_calc.checks.office.OfficeReport`)."""
     return [
         {"check": o.name, "value": o.value, "limit": o.limit, "unit": o.unit, "verdict": o.outcome.value,

@@ -11,7 +11,7 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from foundation_calc.checks.approximations import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
+from foundation_calc.checks.amplitudes.approximations import HARMONICS, QUANTITIES, AmplitudeReport, Approximation
 from foundation_calc.checks.governing import governing_points, tally
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, Hanging, fmt, fmt_scaled, stdout, verdict_text
 from foundation_calc.output.display_units import DisplayUnits

@@ -4,9 +4,9 @@ Every kind's document and tables are written here around the same judged part: t
 the code's zones and their supports, the code's warnings, the amplitudes over the soil's modulus
 range, the soil model's validity and the verdict (:mod:`~foundation_calc.output.limits`,
 :mod:`~foundation_calc.output.notes`). What a kind shows of its motion is its sections module's:
-a crank scene's approximations of C in x, y, θ (:mod:`~foundation_calc.output.approximations`), a
+a crank scene's approximations of C in x, y, θ (:mod:`~foundation_calc.output.amplitudes.approximations`), a
 block's modes and every machine's harmonics of G and its points in x, y, z
-(:mod:`~foundation_calc.output.machine_harmonics`). A sections module gives every name of
+(:mod:`~foundation_calc.output.amplitudes.machines`). A sections module gives every name of
 :data:`SECTIONS`.
 """
 
@@ -28,10 +28,10 @@ SECTIONS = ("DIRECTIONS", "CODE_DIRECTIONS", "document_parts", "print_motion", "
 def _sections(scene):
     """The sections module of ``scene``'s kind."""
     if scene.kind == "block_foundation":
-        from foundation_calc.output import machine_harmonics
+        from foundation_calc.output.amplitudes import machines
 
-        return machine_harmonics
-    from foundation_calc.output import approximations
+        return machines
+    from foundation_calc.output.amplitudes import approximations
 
     return approximations
 

@@ -3,14 +3,14 @@ its points against ``[limits]`` and a vibration code, judged by one set of rules
 
 Every kind's report is assembled from what its motion gives: the names of its points (the centre
 of mass first), their directions and their peaks and RMS values per direction as arrays (points,
-directions) [m, m/s, m/s²]; :func:`~foundation_calc.checks.amplitude_report.judge` turns them into
+directions) [m, m/s, m/s²]; :func:`~foundation_calc.checks.amplitudes.report.judge` turns them into
 the limit rows (:func:`~foundation_calc.checks.limits.limit_rows`), the code's zone rows
 (:func:`~foundation_calc.checks.codes.zone_rows`) and the code's warnings
 (:func:`~foundation_calc.checks.codes.code_warnings`), and
-:class:`~foundation_calc.checks.amplitude_report.AmplitudeVerdict` gives every report the same
+:class:`~foundation_calc.checks.amplitudes.report.AmplitudeVerdict` gives every report the same
 verdict (:func:`~foundation_calc.checks.limits.amplitude_outcome`). A kind adds its own sections as
-data: a crank scene's report (:class:`~foundation_calc.checks.approximations.AmplitudeReport`) the
-paper's approximations of its mechanism, a block's (:class:`~foundation_calc.checks.block.BlockReport`)
+data: a crank scene's report (:class:`~foundation_calc.checks.amplitudes.approximations.AmplitudeReport`) the
+paper's approximations of its mechanism, a block's (:class:`~foundation_calc.checks.amplitudes.machines.BlockReport`)
 its six modes, every machine's harmonics and its machines' periodic inertia. Both give
 ``limit_rows``, ``zone_rows``, ``code_warnings``, ``amplitude_range``, ``soil_validity``,
 ``resonant`` and ``amplitude_outcome``, and the ``wording``
@@ -25,10 +25,10 @@ def scene_amplitudes(scene, exact: bool = False):
     solution, which then judges the limits (a block's machines with periodic inertia always get
     theirs beside the first approximation that is judged)."""
     if scene.kind == "block_foundation":
-        from foundation_calc.checks.block import check_block
+        from foundation_calc.checks.amplitudes.machines import check_block
 
         return check_block(scene, periodic=True)
-    from foundation_calc.checks.approximations import check_scene_amplitudes
+    from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
 
     return check_scene_amplitudes(scene, exact=exact)
 

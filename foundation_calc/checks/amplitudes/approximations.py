@@ -1,6 +1,6 @@
 """A crank mechanism's section of the amplitude check (``fcalc amplitudes`` of a crank scene): the
 approximations of its foundation's periodic steady state, judged by the rules of every kind
-(:func:`~foundation_calc.checks.amplitude_report.judge`).
+(:func:`~foundation_calc.checks.amplitudes.report.judge`).
 
 Three approximations of the same periodic steady state are computed for one design:
 
@@ -24,7 +24,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from foundation_calc.checks.amplitude_report import AmplitudeVerdict, Judgement, judge
+from foundation_calc.checks.amplitudes.report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
 from foundation_calc.checks.resonance import ResonanceReport, check_block_resonances, check_resonances
 from foundation_calc.errors import NotApplicable
@@ -138,7 +138,7 @@ class Damping:
 
 @dataclass(frozen=True)
 class AmplitudeReport(AmplitudeVerdict):
-    """A crank scene's amplitude report: the common part (:mod:`~foundation_calc.checks.amplitude_report`)
+    """A crank scene's amplitude report: the common part (:mod:`~foundation_calc.checks.amplitudes.report`)
     judged on the ``checked`` approximation, and the approximations themselves. ``design`` is None
     for a machine given by its loads only (``vendor`` then holds them)."""
 
@@ -270,7 +270,7 @@ def _stacked(by_point: dict, quantity: str) -> np.ndarray:
 
 def _judged(approx: Approximation, limits, omega: float, supports=None) -> Judgement:
     """The limit rows, zone rows and code warnings of C and every point of ``approx``
-    (:func:`~foundation_calc.checks.amplitude_report.judge`; ``supports``: point name -> (horizontal,
+    (:func:`~foundation_calc.checks.amplitudes.report.judge`; ``supports``: point name -> (horizontal,
     vertical) :class:`~foundation_calc.checks.support.SupportClass`, as :func:`scene_supports` gives
     them; None: the scene's ``limits.foundation`` everywhere)."""
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.block import DIRECTIONS
+from foundation_calc.checks.amplitudes.machines import DIRECTIONS
 from foundation_calc.output.console import fmt_scaled, stdout, verdict_text
 from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
@@ -34,7 +34,7 @@ def document_parts(report, scene, source: str) -> tuple[dict, dict, dict, dict]:
     """The block's parts of the JSON document, around the common keys: the resonance document's
     (modes, resonances, the soil's notes) with the machines' harmonics and the points' peaks; the
     office checks' rows for information (``fcalc check`` judges them); the periodic inertia."""
-    from foundation_calc.output.office import office_rows_document
+    from foundation_calc.output.amplitudes.office import office_rows_document
     from foundation_calc.output.resonance import resonance_document
 
     head = resonance_document(report.resonance, scene, source, "amplitudes")
@@ -178,7 +178,7 @@ def print_notes(report, strict: bool) -> None:
     """The amplitudes over the soil's modulus range, and the office checks for information."""
     from rich.markup import escape
 
-    from foundation_calc.output.office import print_office
+    from foundation_calc.output.amplitudes.office import print_office
 
     if report.amplitude_range is not None:
         stdout().print(f"Amplitudes {escape(report.amplitude_range.text)}")

@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from foundation_calc.checks.amplitude_report import AmplitudeVerdict, judge
+from foundation_calc.checks.amplitudes.report import AmplitudeVerdict, judge
 from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
@@ -52,7 +52,7 @@ NO_STEADY_STATE = "an order is resonant with an undamped mode: no steady state"
 @dataclass(frozen=True)
 class BlockReport(AmplitudeVerdict):
     """Everything ``fcalc resonance``, ``amplitudes`` and ``check`` say about a block scene: its
-    amplitudes' common part (:mod:`~foundation_calc.checks.amplitude_report`) judged on the machines'
+    amplitudes' common part (:mod:`~foundation_calc.checks.amplitudes.report`) judged on the machines'
     combined motion, and its modes, resonances and office checks."""
 
     modes: BlockModes
@@ -108,7 +108,7 @@ def check_block(scene, periodic: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
     that range (module docstring); with ``periodic`` the exact periodic solution of the machines with
-    periodic inertia and the first approximation's error (:mod:`~foundation_calc.checks.block_periodic`). The
+    periodic inertia and the first approximation's error (:mod:`~foundation_calc.checks.amplitudes.periodic`). The
     same scene object asked again gets the same report."""
     if not _LAST or _LAST[0] is not scene:
         _LAST[:] = [scene, _check_block(scene), None]
@@ -125,7 +125,7 @@ def _with_periodic(scene, report: BlockReport) -> BlockReport:
 
     if report.motion is None:
         return report
-    from foundation_calc.checks.block_periodic import periodic_errors
+    from foundation_calc.checks.amplitudes.periodic import periodic_errors
 
     return replace(report, periodic=periodic_errors(scene, scene.stable_model(), scene_impedance(scene)))
 
