@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.checks.amplitudes.machines import check_block
-from foundation_calc.checks.scene_frequencies import scene_block_frequencies
+from foundation_calc.checks.resonance.frequencies import scene_block_frequencies
 from foundation_calc.scenes import load_scene, parse_scene
 from foundation_calc.solvers.block.response import complex_amplitudes, point_motion
 from foundation_calc.solvers.crank.loads import loads_response

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 import tomli_w
 
-from foundation_calc.checks.resonance_rule import condition_phrase
+from foundation_calc.checks.resonance.rule import condition_phrase
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
 from tests.conftest import CONFIGS

@@ -70,7 +70,7 @@ def test_wrong_kind_exits_3(runner, tmp_path):
 
 
 def test_internal_error_exits_4_without_traceback(runner, monkeypatch):
-    import foundation_calc.checks.scene_resonance as mod
+    import foundation_calc.checks.resonance as mod
 
     def boom(*args, **kwargs):
         raise ZeroDivisionError("simulated")

@@ -180,7 +180,7 @@ def test_loads_rows_join_the_resonance_check_with_the_verdict_rule():
     k0 = float(np.sqrt(SOIL["c_z"] * BLOCK["base_area"] / BLOCK["mass"]))
     vertical_only = [{"order": 1, "vertical": 1.0e3}]
     scene = parse_scene(loads_scene(k0 * 1.1, loads=[{"order": 1, "horizontal": 1.0e3}]), "h")
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
 
     rows = {r.condition.label: r for r in check_scene_resonances(scene).rows}
     assert rows["ω = k0"].outcome.value == "warn"  # a horizontal load does not drive k0: warns in the band

@@ -20,7 +20,7 @@ from scipy.linalg import eig
 
 import foundation_calc as fc
 from foundation_calc.checks.amplitudes.approximations import scene_supports
-from foundation_calc.checks.scene_frequencies import scene_plane_modes
+from foundation_calc.checks.resonance.frequencies import scene_plane_modes
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import parse_scene, read_toml
 

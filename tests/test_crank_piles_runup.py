@@ -175,7 +175,7 @@ def test_without_the_coupling_the_runup_is_the_uncoupled_path(document, uncouple
     three uncoupled springs and dashpots (the scene's RigidBlock, solvers/crank/loads.py) at every
     frequency, and its modes the closed forms' averaged-inertia k0, p1, p2 (1e-12: the same numbers
     by another assembly)."""
-    from foundation_calc.checks.scene_frequencies import scene_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_frequencies
     from foundation_calc.checks.runup import _structure
     from foundation_calc.solvers.crank.loads import matrices
 

@@ -41,7 +41,7 @@ def _pais_kausel_scene(length: float, width: float, embedment: float):
 @pytest.mark.parametrize("base", [(6.0, 4.0, 1.5, "gazetas"), (4.0, 6.0, 0.0, "gazetas"), (6.0, 4.0, 1.5, "pais_kausel")],
                          ids=["long-embedded", "short-surface", "pais-kausel"])
 def test_each_harmonic_and_each_mode_at_its_own_frequency(base):
-    from foundation_calc.checks.scene_frequencies import scene_design_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_design_frequencies
     from foundation_calc.output.report.gazetas_frequencies import gazetas_frequency_columns, shown_harmonics
     from foundation_calc.output.report.soil_methods import gazetas_chains
 

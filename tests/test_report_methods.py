@@ -26,7 +26,7 @@ def _close(a: float, b: float) -> bool:
 
 @pytest.mark.parametrize("path", CRANK, ids=lambda p: p.stem)
 def test_crank_chains_end_in_the_solvers_numbers(path):
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
 
     scene = load_scene(path)
     chains = {c.title.split(" ")[0]: c.values for c in crank_chains(scene)}

@@ -1,4 +1,4 @@
-"""One resonance layer for every scene kind (checks/resonance.py, output/resonance.py).
+"""One resonance layer for every scene kind (checks/resonance/, output/resonance.py).
 
 The crank scene and the block judge their conditions through one report: the same check in
 ``fcalc check``, the same report type from ``fc.resonance``, and a governing condition that is
@@ -14,7 +14,7 @@ import pytest
 
 import foundation_calc as fc
 from foundation_calc.checks.registry import CHECKS
-from foundation_calc.checks.resonance import ResonanceReport
+from foundation_calc.checks.resonance.report import ResonanceReport
 from tests.conftest import configs_of_kind
 
 SEVERITY = {"pass": 0, "warn": 1, "fail": 2}

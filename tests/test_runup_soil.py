@@ -122,7 +122,7 @@ def test_crank_runup_passes_the_averaged_frequencies_resonance_reports(scene):
     frequency on Gazetas' soil, ascending and named (rel 1e-12). Before, its modes were those of
     its own linearisation: on the static springs there 88.4 / 139.7 rad/s where resonance has
     83.7 / 119.4, and 4e-6 apart even on a frequency-independent soil (the rod's weight)."""
-    from foundation_calc.checks.scene_resonance import scene_resonances_as_given
+    from foundation_calc.checks.resonance import scene_resonances_as_given
     from foundation_calc.checks.runup import check_runup
 
     scene, report = scene()
@@ -356,7 +356,7 @@ def test_crank_soil_sweep_recomputes_the_dynamic_soil_at_each_factor():
     their own frequencies). Scaling the static springs instead, as before, put x 9 % low at factor
     1.3 and judged 3ω = p2 failing there (now ω = p1, passing)."""
     from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
-    from foundation_calc.checks.scene_resonance import scene_resonances_as_given
+    from foundation_calc.checks.resonance import scene_resonances_as_given
     from foundation_calc.checks.sweep.crank import scene_sweep_chunks
     from foundation_calc.checks.sweep.report import joined
 

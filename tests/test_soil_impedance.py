@@ -191,7 +191,7 @@ def test_torsion_modifier_of_a_square_against_the_torsional_cone(a0):
 def test_resonance_check_uses_each_modes_own_frequency():
     """``fcalc resonance`` on Gazetas' soil: critical speeds from the frequency-consistent p1, p2,
     k0, each below its static value; the static ones reported beside."""
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
 
     document = read_toml(CONFIGS / "compressor_medium_sand_lysmer.toml")
     document["soil"]["method"] = "gazetas"

@@ -61,7 +61,7 @@ def test_a_resonance_crossed_between_the_grid_points_fails_the_range():
     """Both ends of [0.6, 1.5] are more than 5 % from 3ω = p1, but p1 passes 3ω inside: the
     crossing factor (p1 = 3ω, margin 0) is found and fails the check. Its factor against a
     bisection of the eigen-solved p1 (rel 1e-7: Brent's tolerance against bisection's)."""
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
 
     document = _frame_saw([0.6, 1.5])
     document["limits"]["detuning"] = 0.05
@@ -121,7 +121,7 @@ def test_a_sample_without_scatter_is_the_checks_own_numbers(config):
     points' tolerance) and its peaks of C those of the first approximation in ``fcalc amplitudes``
     (at most 0.5 % low: 96 phases a revolution against Newton's peak)."""
     from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
     from foundation_calc.checks.soil_sample import sample_scene
 
     document = read_toml(CONFIGS / config)

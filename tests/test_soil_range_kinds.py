@@ -57,13 +57,13 @@ def test_one_batch_of_factors_is_the_factored_scenes(method):
 
 
 def _crank_fails(scene):
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
 
     return lambda f: check_scene_resonances(scene.with_modulus_factor(f)).outcome.value == "fail"
 
 
 def _block_fails(scene):
-    from foundation_calc.checks.resonance import modes_resonances
+    from foundation_calc.checks.resonance.report import modes_resonances
     from foundation_calc.solvers.block.response import block_modes
 
     def fails(f):

@@ -16,7 +16,7 @@ import tomli_w
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foundation_calc.checks.resonance import check_resonances
+from foundation_calc.checks.resonance.report import check_resonances
 from foundation_calc.cli.app import app
 from foundation_calc.errors import PhysicsError, SceneError
 from foundation_calc.scenes import parse_scene

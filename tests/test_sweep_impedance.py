@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes, scene_vendor_loads
-from foundation_calc.checks.scene_resonance import check_scene_resonances
+from foundation_calc.checks.resonance import check_scene_resonances
 from foundation_calc.checks.sweep.crank import HARMONICS, scene_dynamic_soil, sweep
 from foundation_calc.scenes import parse_scene
 from tests.conftest import CONFIGS, read_toml

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from foundation_calc.benchmarks.throughput import perturbed_designs
-from foundation_calc.checks.resonance import check_resonances
+from foundation_calc.checks.resonance.report import check_resonances
 from foundation_calc.solvers.crank.natural import design_frequencies
 from foundation_calc.solvers.crank.resonance import paper_margin
 from foundation_calc.scenes import load_scene

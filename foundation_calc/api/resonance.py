@@ -24,7 +24,7 @@ def resonance(scene, *, strict: bool = False) -> Result:
     -------
     Result
         ``to_dict()`` is the document of ``fcalc resonance --json``; ``report`` the checks'
-        resonance report (:class:`~foundation_calc.checks.resonance.ResonanceReport`).
+        resonance report (:class:`~foundation_calc.checks.resonance.report.ResonanceReport`).
 
     Raises
     ------
@@ -32,7 +32,7 @@ def resonance(scene, *, strict: bool = False) -> Result:
         An invalid scene, or a scene of another kind.
     """
     from foundation_calc.checks.outcomes import exit_code
-    from foundation_calc.checks.scene_resonance import scene_resonances
+    from foundation_calc.checks.resonance import scene_resonances
     from foundation_calc.output.resonance import resonance_document
 
     loaded = scene_of(scene, KINDS, platform_as_block=True)

@@ -10,7 +10,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from foundation_calc.benchmarks.measure import measure
-from foundation_calc.checks.resonance import check_resonances
+from foundation_calc.checks.resonance.report import check_resonances
 from foundation_calc.solvers.crank.resonance import paper_margin
 from foundation_calc.solvers.crank.closed_form import design_first_approximation, with_damping
 from foundation_calc.solvers.crank.mechanism import CrankDesign

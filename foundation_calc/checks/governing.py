@@ -2,7 +2,7 @@
 
 A scene may list hundreds of points; an engineer signing the foundation wants the worst of them
 and the number that fail, not every row. These functions pick them from a computed
-approximation (``checks/approximations.py``); the tables show the selection, JSON every row.
+approximation (``checks/amplitudes/approximations.py``); the tables show the selection, JSON every row.
 """
 
 from __future__ import annotations

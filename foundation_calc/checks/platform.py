@@ -6,7 +6,7 @@ Impossible designs never get here (the design raises PhysicsError, exit 3). What
   ``limits.exciter_height_ratio`` × ζ above it (the paper's 2.6 m is "highly undesirable");
 - regime margin: FAIL when ω is within ``limits.detuning`` of the translational resonance
   sqrt(c0 / M_Σ), the mode the exciter drives (the verdict rule of
-  :mod:`~foundation_calc.checks.resonance_rule`), with the amplitude u that restores
+  :mod:`~foundation_calc.checks.resonance.rule`), with the amplitude u that restores
   the margin (Eq. (3.14));
 - natural frequencies: the six 6-DOF modes by the same rule: a translation inside the band
   fails, any mode within 5 % fails, another mode inside the band warns;
@@ -20,8 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.checks.resonance_rule import judge
-from foundation_calc.checks.resonance_rule import outcome as rule_outcome
+from foundation_calc.checks.resonance.rule import judge
+from foundation_calc.checks.resonance.rule import outcome as rule_outcome
 from foundation_calc.solvers.platform.design import PlatformDesign, amplitude_for_margin
 from foundation_calc.solvers.platform.dynamics import Modes, natural_frequencies
 from foundation_calc.solvers.platform.verification import (

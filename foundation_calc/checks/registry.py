@@ -7,7 +7,7 @@ interpreted) and ``(quantity, SI value)`` pairs that the output layer shows in t
 so tables can show speeds in rpm or amplitudes in mm without any check knowing about display
 units. ``values`` names the same numbers for the JSON document.
 
-The functions here adapt the per-topic checks (``checks/resonance.py`` ...); they import
+The functions here adapt the per-topic checks (``checks/resonance/`` ...); they import
 those modules only when called, so ``fcalc check`` loads the physics of the kinds it meets and
 nothing else. Each finding keeps the check's report, from which the output layer writes the same
 JSON document as the single-scene command. A check that several kinds run is one function for all
@@ -99,9 +99,9 @@ def _support(row) -> str:
 
 def resonance(scene) -> Finding:
     """Every machine's orders against every mode by the resonance rule (``fcalc resonance``;
-    :func:`~foundation_calc.checks.scene_resonance.scene_resonances`), worded by what the report says: a
+    :func:`~foundation_calc.checks.resonance.scene_resonances`), worded by what the report says: a
     plane model's one speed, or a block's conditions per machine."""
-    from foundation_calc.checks.scene_resonance import scene_resonances
+    from foundation_calc.checks.resonance import scene_resonances
 
     report = scene_resonances(scene)
     values = {} if report.per_machine else {"speed": ("speed", report.omega)}

@@ -174,12 +174,12 @@ def _structure(scene):
 
 def _on_soil(scene, built, support_at):
     """A crank foundation's structure ``built`` with its scene's modes, the resonance check's
-    averaged-inertia k0, p1, p2 (:func:`~foundation_calc.checks.scene_frequencies.scene_frequencies`,
+    averaged-inertia k0, p1, p2 (:func:`~foundation_calc.checks.resonance.frequencies.scene_frequencies`,
     :func:`~foundation_calc.solvers.crank.runup.crank_modes`), and on a frequency-dependent support
     its damping and stiffness at any frequency: ``support_at(ω)``, the support's (C, K) there in the
     crank's x, y, θ (a pile group's sway-rocking K_xφ, C_xφ with the rest, as the block's run-up
     takes its support's whole 6 × 6 at the harmonic's frequency), in place of the static ones."""
-    from foundation_calc.checks.scene_frequencies import scene_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_frequencies
     from foundation_calc.solvers.crank.runup import crank_modes
 
     if scene.support().frequency_dependent:

@@ -106,7 +106,7 @@ def modulus_factors(low: float, high: float, n: int = GRID_POINTS) -> list[float
 
 
 def resonance_point(factor: float, report) -> RangePoint:
-    """A :class:`~foundation_calc.checks.resonance.ResonanceReport` at one factor: its governing
+    """A :class:`~foundation_calc.checks.resonance.report.ResonanceReport` at one factor: its governing
     condition, severity needed/margin."""
     g = report.governing
     if g is None:
@@ -116,7 +116,7 @@ def resonance_point(factor: float, report) -> RangePoint:
 
 def resonance_offsets(report) -> dict[str, tuple[float, bool]]:
     """Condition -> (its critical speed less its machine's speed [rad/s], judged by the rule) of a
-    :class:`~foundation_calc.checks.resonance.ResonanceReport`."""
+    :class:`~foundation_calc.checks.resonance.report.ResonanceReport`."""
     return report.offsets()
 
 
@@ -157,7 +157,7 @@ def resonances_over_range(scene, check, point=resonance_point, offsets=resonance
     where a critical speed crosses the operating speed (module docstring). ``point(factor,
     report)`` reads a report's verdict, ``offsets(report)`` its conditions (condition ->
     (critical speed less operating speed [rad/s], judged)); the defaults read a
-    :class:`~foundation_calc.checks.resonance.ResonanceReport`."""
+    :class:`~foundation_calc.checks.resonance.report.ResonanceReport`."""
     from scipy.optimize import brentq
 
     low, high = scene.soil.modulus_range

@@ -14,7 +14,7 @@ the frequencies its commands take (:data:`KINDS`):
 - a crank: their projection on the plane u_x, u_z, θ_y with the sway-rocking coupling
   (:func:`~foundation_calc.solvers.supports.plane_footing.plane`), at the speed's harmonics of
   :data:`ORDERS` and at k0, p1, p2 of the plane's one model as ``fcalc resonance`` solves them
-  (:func:`~foundation_calc.checks.scene_resonance.scene_resonances_as_given`), with those
+  (:func:`~foundation_calc.checks.resonance.scene_resonances_as_given`), with those
   frequencies on the springs at rest and the support's validity there.
 """
 
@@ -142,7 +142,7 @@ def _block(scene) -> SupportSoil:
 def _crank(scene) -> SupportSoil:
     """A crank scene's :class:`SupportSoil` (module docstring); PhysicsError for a machine given by
     its loads only, whose plane model is the paper's uncoupled block."""
-    from foundation_calc.checks.scene_resonance import scene_resonances_as_given
+    from foundation_calc.checks.resonance import scene_resonances_as_given
     from foundation_calc.checks.soil_validity import crank_validity
     from foundation_calc.solvers.crank.resonance import MODE_NAMES
 

@@ -336,7 +336,7 @@ def declared_range(support) -> tuple[FittedRange, StratumCutoffs | None]:
 
 def judged_orders(rows) -> list[int]:
     """The orders n the resonance rule judges on any mode (``rows``:
-    :class:`~foundation_calc.checks.resonance.ResonanceRow`), and 1 (the speed) always, ascending."""
+    :class:`~foundation_calc.checks.resonance.report.ResonanceRow`), and 1 (the speed) always, ascending."""
     orders = {1}
     for row in rows:
         if row.judged:
@@ -350,14 +350,14 @@ def _order_label(n: int) -> str:
 
 def crank_validity(scene, report) -> SoilValidity:
     """The soil model's validity of a ``crank_foundation`` scene at the modes k0, p1, p2 of its
-    resonance ``report`` (:class:`~foundation_calc.checks.resonance.ResonanceReport`, on a
+    resonance ``report`` (:class:`~foundation_calc.checks.resonance.report.ResonanceReport`, on a
     frequency-dependent support each at its own frequency) and every order the rule judges, against
     the range its support declares (:meth:`~foundation_calc.solvers.supports.base.Support.validity`;
     the plane's horizontal, vertical and rocking motions are the support's x, z and ry). On a support
     coupling the plane (a pile group) the modes are the one model's the resonance check solves
-    (:func:`~foundation_calc.checks.scene_frequencies.scene_plane_modes`), each judged with the motions
+    (:func:`~foundation_calc.checks.resonance.frequencies.scene_plane_modes`), each judged with the motions
     whose direct springs K_x, K_z, K_φ at O it strains."""
-    from foundation_calc.checks.scene_frequencies import scene_plane_modes
+    from foundation_calc.checks.resonance.frequencies import scene_plane_modes
 
     support = scene.support()
     declared = support.validity()

@@ -136,8 +136,8 @@ def crank_supports(scene, frequencies) -> dict[str, tuple[SupportClass, ...]]:
     (:class:`~foundation_calc.solvers.crank.frequencies.NaturalFrequencies`, rad/s; on a
     frequency-dependent soil each at its own frequency; on a support coupling sway with rocking, a
     pile group, the one model's modes the resonance check reports:
-    :func:`~foundation_calc.checks.scene_frequencies.scene_plane_modes`); the main excitation is the speed."""
-    from foundation_calc.checks.scene_frequencies import scene_plane_modes
+    :func:`~foundation_calc.checks.resonance.frequencies.scene_plane_modes`); the main excitation is the speed."""
+    from foundation_calc.checks.resonance.frequencies import scene_plane_modes
 
     modes = scene_plane_modes(scene, {m: float(getattr(frequencies, m)) for m in ("k0", "p1", "p2")})
     excitation = scene.speed.omega_rad_s

@@ -1,6 +1,6 @@
 """Report of ``fcalc resonance`` for every scene kind: the JSON document and the tables (SI units).
 
-One :class:`~foundation_calc.checks.resonance.ResonanceReport`, one document and one set of
+One :class:`~foundation_calc.checks.resonance.report.ResonanceReport`, one document and one set of
 tables; the kinds differ only in which sections have content. A crank-mechanism foundation (the
 paper's plane model) shows its derived quantities (μ, λ, ρ1, κ), the paper's closed-form k0, p1,
 p2 beside the averaged-inertia ones and each condition's two critical speeds; a block foundation
@@ -15,8 +15,8 @@ from collections.abc import Mapping
 import numpy as np
 
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
-from foundation_calc.checks.resonance import ResonanceReport
-from foundation_calc.checks.resonance_rule import FORCING_SHARE, INFORMATION, bands_text
+from foundation_calc.checks.resonance.report import ResonanceReport
+from foundation_calc.checks.resonance.rule import FORCING_SHARE, INFORMATION, bands_text
 from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, titled_table, verdict_text
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import print_soil_validity, soil_validity_document
@@ -206,7 +206,7 @@ def _print_plane(report: ResonanceReport, scene, source: str, units: DisplayUnit
 def _status(row, strict: bool) -> str:
     """A block's condition as the rule takes it: ``info`` for a higher order under the forcing
     share inside its band, ``not judged`` for one outside it, else its verdict (rules 1-4 of
-    :mod:`~foundation_calc.checks.resonance_rule`: the speed itself always decides)."""
+    :mod:`~foundation_calc.checks.resonance.rule`: the speed itself always decides)."""
     if row.information:
         return "info"
     return verdict_text(row.outcome.value, strict) if row.judged or row.order == 1 else "not judged"

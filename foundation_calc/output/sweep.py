@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES, RMS_QUANTITIES, display_quantity
-from foundation_calc.checks.resonance_rule import bands_text
+from foundation_calc.checks.resonance.rule import bands_text
 from foundation_calc.checks.sweep.status import status_text as row_status_text
 from foundation_calc.output.console import (JSON_SCHEMA_VERSION, OUTCOME_STYLE, Hanging, fmt, natural_width, stdout,
                                             two_lines_for)

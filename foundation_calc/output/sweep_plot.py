@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.resonance_rule import bands_text
+from foundation_calc.checks.resonance.rule import bands_text
 from foundation_calc.output.sweep import FACTORED, method, of_plane, others
 
 

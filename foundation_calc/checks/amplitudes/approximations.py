@@ -15,7 +15,7 @@ for the centre of mass C and every point of the scene, horizontally and vertical
 dashpots every approximation is finite at and through every resonance and is judged on its
 amplitudes; an undamped speed within a hair of a resonance of the checked approximation fails as
 "resonant" with its margin. The resonance verdict itself (which condition governs, its margin)
-is the rule's (:mod:`~foundation_calc.checks.resonance_rule`), reported beside the amplitudes.
+is the rule's (:mod:`~foundation_calc.checks.resonance.rule`), reported beside the amplitudes.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ import numpy as np
 
 from foundation_calc.checks.amplitudes.report import AmplitudeVerdict, Judgement, judge
 from foundation_calc.checks.limits import QUANTITIES, AmplitudeWording
-from foundation_calc.checks.resonance import ResonanceReport, check_block_resonances, check_resonances
+from foundation_calc.checks.resonance.report import ResonanceReport, check_block_resonances, check_resonances
 from foundation_calc.errors import NotApplicable
 from foundation_calc.solvers.crank.averaged import averaged_response
 from foundation_calc.solvers.crank.closed_form import COUPLED_SUPPORT, design_first_approximation
@@ -292,12 +292,12 @@ def scene_supports(scene):
 
     design = None if scene.mechanism is None else scene.design()
     if design is not None and design.coupled:
-        from foundation_calc.checks.scene_frequencies import scene_design_frequencies
+        from foundation_calc.checks.resonance.frequencies import scene_design_frequencies
         from foundation_calc.solvers.crank.natural import design_frequencies
 
         consistent = scene_design_frequencies(scene)
         return crank_supports(scene, design_frequencies(design)[1] if consistent is None else consistent[1])
-    from foundation_calc.checks.scene_frequencies import scene_block_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_block_frequencies
     from foundation_calc.solvers.crank.loads import block_frequencies
 
     consistent = scene_block_frequencies(scene)
@@ -317,7 +317,7 @@ def check_amplitudes(
     class of every point and direction (:func:`scene_supports`), None for ``limits.foundation``.
     ``resonance``: the resonance report to give, None for the design's own (a design on a
     frequency-dependent support's springs at a harmonic is given its scene's, every mode at its own
-    frequency, :func:`~foundation_calc.checks.scene_resonance.scene_resonances_as_given`).
+    frequency, :func:`~foundation_calc.checks.resonance.scene_resonances_as_given`).
     The first approximation steps aside where it does not apply
     (:func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`: a support
     coupling sway with rocking, a harmonic's soil whose rocking spring does not exceed P h), the
@@ -409,7 +409,7 @@ def check_scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     report = replace(report, soil_validity=crank_validity(scene, report.resonance))
     if scene.soil.modulus_range is None:
         return report
-    from foundation_calc.checks.scene_resonance import check_scene_resonances
+    from foundation_calc.checks.resonance import check_scene_resonances
     from foundation_calc.checks.soil_range import amplitudes_over_range
 
     crossings = check_scene_resonances(scene).modulus_range.crossings
@@ -430,7 +430,7 @@ def _scene_amplitudes(scene, exact: bool = False) -> AmplitudeReport:
     supports, dependent = scene_supports(scene), scene.support().frequency_dependent
     if not dependent:
         return _at_soil_frequency(scene, 0.0, exact, supports)
-    from foundation_calc.checks.scene_resonance import scene_resonances_as_given
+    from foundation_calc.checks.resonance import scene_resonances_as_given
 
     resonance = scene_resonances_as_given(scene)  # every mode at its own frequency, not at a harmonic's
     base = _at_soil_frequency(scene, omega, exact, supports, resonance)

@@ -3,7 +3,7 @@ the damped steady state against [limits] and a vibration code, and the office ch
 
 Resonances: each order n of each machine against each of the six modes, margin
 |n ω - p_j| / p_j, judged by the resonance rule of every kind
-(:func:`~foundation_calc.checks.resonance_rule.judge`) with the forcing share of the order on the
+(:func:`~foundation_calc.checks.resonance.rule.judge`) with the forcing share of the order on the
 mode (|φ_jᵀ Q_n| / p_j over its largest value for the machine); no condition is the source's own.
 
 Soil's modulus range (``[soil] modulus_range``): both checks also over the range, by the machinery
@@ -32,7 +32,7 @@ from foundation_calc.checks.amplitudes.report import AmplitudeVerdict, judge
 from foundation_calc.checks.limits import AmplitudeWording
 from foundation_calc.checks.office import OfficeRow, office_rows
 from foundation_calc.checks.outcomes import Outcome, worst
-from foundation_calc.checks.resonance import ResonanceRow, condition_label, modes_resonances
+from foundation_calc.checks.resonance.report import ResonanceRow, condition_label, modes_resonances
 from foundation_calc.solvers.block.response import (
     BlockModes,
     PointMotion,

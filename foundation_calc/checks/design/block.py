@@ -19,7 +19,7 @@ an end face follow the face), as ``fcalc check`` sees the scene of
   each at its own frequency (:func:`~foundation_calc.solvers.block.response.consistent_batch`),
   and each order's steady state with the springs and dashpots at n ω;
 - ``resonance``: every order of every machine against every mode, forcing shares, judged by
-  the resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`) over all the
+  the resonance rule (:func:`~foundation_calc.checks.resonance.rule.judge`) over all the
   conditions of the candidate; the governing condition is the one ``fcalc check`` names;
 - ``amplitudes``: the damped steady state per machine and order by one batched complex solve,
   peaks (machines' peaks added) and RMS values (root-sum-square) of G and the points against
@@ -94,7 +94,7 @@ def _resonance(scene, modes, excitations):
     """Outcome, utilisation, governing index and reasons of the ``resonance`` check
     (:func:`~foundation_calc.checks.amplitudes.machines.resonance_rows` and ``BlockReport.nearest``)."""
     from foundation_calc.checks.amplitudes.machines import condition_label
-    from foundation_calc.checks.resonance_rule import judge, required_detuning
+    from foundation_calc.checks.resonance.rule import judge, required_detuning
     from foundation_calc.solvers.block.response import resonances
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
 

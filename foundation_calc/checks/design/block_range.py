@@ -70,7 +70,7 @@ def crossings(scene, model, excitations, low, high):
     """Yield (factor (N,), valid (N,), scaled model): for every machine, order and root of Eq. (1),
     the factor where a critical speed crosses the machine's speed, valid where it lies within
     (low, high), the block is stable there and the rule judges the condition (1 elsewhere)."""
-    from foundation_calc.checks.resonance_rule import judge, required_detuning
+    from foundation_calc.checks.resonance.rule import judge, required_detuning
     from foundation_calc.solvers.block.response import batch_modes, resonances
     from foundation_calc.solvers.rigid_body.inertia import diagonal_matrices
 

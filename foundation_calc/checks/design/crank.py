@@ -17,7 +17,7 @@ L × B); everything else is the scene's. Per candidate, in array operations over
   own frequency, ω = p(K(ω)), on a frequency-dependent soil; on a coupled support both are the
   averaged operator's eigen-solve stacked over the candidates, as ``fcalc resonance`` takes them),
   the forcing shares of the mechanism's harmonics on the averaged operator, and the resonance rule
-  (:func:`~foundation_calc.checks.resonance.judge_conditions`), as one design's check;
+  (:func:`~foundation_calc.checks.resonance.report.judge_conditions`), as one design's check;
 - **amplitudes**: the averaged-operator steady state (:mod:`~foundation_calc.solvers.crank.batch`),
   the peaks and RMS values of C and every point (:func:`~foundation_calc.solvers.crank.response.point_series`,
   :func:`~foundation_calc.solvers.numerics.trig_series.peak`) against ``[limits]`` and a code's zones;

@@ -53,7 +53,7 @@ def candidate_designs(scene, L, B, H, factor=1.0, sizes=None):
 
 def candidate_frequencies(designs, mechanism):
     """(zero-order, averaged) of every candidate: k0, p1, p2, each mode at its own frequency on a
-    frequency-dependent soil (as :func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`;
+    frequency-dependent soil (as :func:`~foundation_calc.checks.resonance.frequencies.scene_design_frequencies`;
     the stability is judged at rest, :meth:`~foundation_calc.solvers.crank.batch_design.CandidateDesigns.stable`;
     ``designs``: :func:`candidate_designs`).
     ``mechanism``: the mechanism's M̄, C̄, K̄ (..., 3, 3) at the candidates' distances ``a``
@@ -106,7 +106,7 @@ class Verdicts:
 
 
 def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, stable):
-    """The resonance rule on every candidate, as :func:`~foundation_calc.checks.resonance.check_resonances`
+    """The resonance rule on every candidate, as :func:`~foundation_calc.checks.resonance.report.check_resonances`
     judges one design; returns (zero-order frequencies, margins, judgement, conditions), the
     arrays over every condition n ω = k0, p1, p2 of harmonics 1 ... ``harmonics``; ``frequencies``:
     the candidates' (zero-order, averaged) k0, p1, p2 (:func:`candidate_frequencies`).
@@ -114,9 +114,9 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     Only the conditions that can decide somewhere in the batch are judged (a source's, order 1,
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
     never the verdict: its margin is inf, its status clear."""
-    from foundation_calc.checks.resonance import judge_conditions
+    from foundation_calc.checks.resonance.report import judge_conditions
     from foundation_calc.solvers.crank.resonance import forcing_shares, harmonic_conditions
-    from foundation_calc.checks.resonance_rule import FORCING_SHARE, Judgement
+    from foundation_calc.checks.resonance.rule import FORCING_SHARE, Judgement
 
     _, _, _, fc, fs = mech
     conditions = harmonic_conditions(range(1, harmonics + 1))
@@ -257,7 +257,7 @@ def judge_physics(out: Verdicts, scene, L, B, H, mech, harmonics, factor=1.0, re
     """The resonance and amplitude checks of blocks (L, B, H) on their support at ``sizes`` (key ->
     (N,); None: the scene's) on the soil × ``factor`` into ``out``; returns the blocks' designs and
     the resonance judgement (zero-order frequencies, margins,
-    :class:`~foundation_calc.checks.resonance_rule.Judgement`, conditions)."""
+    :class:`~foundation_calc.checks.resonance.rule.Judgement`, conditions)."""
     from foundation_calc.solvers.crank.averaged import block_matrices
     from foundation_calc.solvers.crank.batch_design import steady_state
 

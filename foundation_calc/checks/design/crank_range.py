@@ -68,7 +68,7 @@ def _crossings(scene, L, B, H, sizes, grid, zero, judged, status, conditions, st
     factors (module docstring), found by bisection in log(factor); ``mech`` the
     :class:`~foundation_calc.solvers.crank.batch.MechanismOperator`."""
     from foundation_calc.checks.design.crank_physics import candidate_designs, candidate_frequencies
-    from foundation_calc.checks.resonance_rule import INFORMATION
+    from foundation_calc.checks.resonance.rule import INFORMATION
 
     n, f = len(L), len(grid)
     modes = {"k0": 0, "p1": 1, "p2": 2}

@@ -8,8 +8,8 @@ RMS values over G and the points along x, y, z (:data:`~foundation_calc.checks.a
 others run at their own speeds, or are left out (``alone``: they stand still, their mass stays
 on the block). At every speed:
 
-- the resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`) over every order of
-  every running machine against every mode, as :func:`~foundation_calc.checks.resonance.modes_resonances`
+- the resonance rule (:func:`~foundation_calc.checks.resonance.rule.judge`) over every order of
+  every running machine against every mode, as :func:`~foundation_calc.checks.resonance.report.modes_resonances`
   judges them: the swept machine's margins move with the speed, the others' stay; each
   condition's forcing share is the scene's (at its own speeds), so which conditions are judged
   does not change along the sweep, and the row at the scene's speed is ``fcalc check``'s;
@@ -37,7 +37,7 @@ it; the row is :func:`~foundation_calc.checks.amplitudes.machines.check_block_as
   not scale with one factor) is recomputed from the factored soil around the piles, as the crank
   foundation's soil sweep recomputes its group;
 - the resonance rule over every order of every machine against every mode with the forcing shares
-  of the modes at that factor (:func:`~foundation_calc.checks.resonance.modes_resonances`), so the
+  of the modes at that factor (:func:`~foundation_calc.checks.resonance.report.modes_resonances`), so the
   row's governing condition and verdict are ``fcalc resonance``'s of the factored scene (what the
   check over ``modulus_range`` judges at that factor); the mode numbers and dominant motions in the
   labels are those at the row's factor;
@@ -120,9 +120,9 @@ def _report(scene, variable: str, values, resonant, largest: dict, margins, verd
 
 
 def _judged(margins, orders, shares, required):
-    """The resonance rule's verdict of a block's conditions (:func:`~foundation_calc.checks.resonance_rule.judge`;
+    """The resonance rule's verdict of a block's conditions (:func:`~foundation_calc.checks.resonance.rule.judge`;
     none is the paper's)."""
-    from foundation_calc.checks.resonance_rule import judge
+    from foundation_calc.checks.resonance.rule import judge
 
     return judge(margins, orders, shares, required, np.zeros(np.shape(orders), dtype=bool))
 
@@ -133,7 +133,7 @@ def sweep_block(scene, swept: int, omega, alone: bool = False) -> SweepReport:
     The report's ``critical``: the swept machine's conditions that can decide a row, whose
     critical speed lies inside the range (:class:`SweepCondition`)."""
     from foundation_calc.checks.amplitudes.machines import LIMITED_VALUES, scene_modes
-    from foundation_calc.checks.resonance_rule import required_detuning
+    from foundation_calc.checks.resonance.rule import required_detuning
     from foundation_calc.solvers.block.sweep import speed_sweep
 
     omega = np.asarray(omega, dtype=float)

@@ -41,8 +41,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from foundation_calc.checks.limits import QUANTITIES, limited_quantities
-from foundation_calc.checks.resonance import judge_conditions
-from foundation_calc.checks.resonance_rule import judge, required_detuning
+from foundation_calc.checks.resonance.report import judge_conditions
+from foundation_calc.checks.resonance.rule import judge, required_detuning
 from foundation_calc.checks.sweep.report import SweepReport, joined
 from foundation_calc.checks.sweep.status import over_limits, row_verdicts
 from foundation_calc.solvers.crank import sweep as engine
@@ -79,7 +79,7 @@ class DynamicSoil:
     ``at(soil_frequency)``: (design, vendor loads) with the springs and dashpots taken at the
     frequencies ``soil_frequency`` [rad/s] (an array, one per point; either part None when the
     scene has none); ``zero``, ``averaged``: the natural frequencies that solve ω = p(K(ω))
-    (:func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`); ``blocks``: the
+    (:func:`~foundation_calc.checks.resonance.frequencies.scene_design_frequencies`); ``blocks``: the
     block's M, C, K on the support at an array of frequencies (:func:`~foundation_calc.solvers.crank.sweep.plane_blocks`) for the
     averaged operator: the whole sweep on a support that couples sway with rocking, the speeds where
     the first approximation steps aside on the others (None for a machine given by its loads)."""
@@ -257,7 +257,7 @@ def scene_dynamic_soil(scene) -> DynamicSoil | None:
     if not scene.support().frequency_dependent:
         return None
     from foundation_calc.checks.amplitudes.approximations import scene_vendor_loads
-    from foundation_calc.checks.scene_frequencies import scene_block_frequencies, scene_design_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_block_frequencies, scene_design_frequencies
 
     def at(soil_frequency):
         return (None if scene.mechanism is None else scene.design(soil_frequency)), scene_vendor_loads(scene, soil_frequency)

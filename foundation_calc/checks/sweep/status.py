@@ -3,7 +3,7 @@ by the resonance rule (docs/resonance-rule.md), its margin and the margin it nee
 limit the row exceeds, the row's status, and the words that say why.
 
 A kind's sweep gives the margins of its conditions at every row and the rule's
-:class:`~foundation_calc.checks.resonance_rule.Judgement` of them, and which limited quantities
+:class:`~foundation_calc.checks.resonance.rule.Judgement` of them, and which limited quantities
 exceed their limits; :func:`row_verdicts` reads the rest and :func:`status_text` names it. A
 condition the rule does not judge (a harmonic whose forcing share is under 1 %) never governs a
 row, however near its critical speed lies.
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from foundation_calc.checks.resonance_rule import FAIL, STATUS_NAMES, WARN, Judgement, condition_phrase
+from foundation_calc.checks.resonance.rule import FAIL, STATUS_NAMES, WARN, Judgement, condition_phrase
 
 #: Status of a row, worst last ("resonant": no steady state there).
 STATUSES = ("pass", "warn", "fail", "resonant")
@@ -80,12 +80,12 @@ def over_limits(largest: dict, limits: dict) -> dict:
 
 def row_verdicts(margins, verdict: Judgement, over_quantities: dict, resonant=None) -> RowVerdicts:
     """Each row's governing condition and status from the ``margins`` of its conditions (n, C) [-]
-    and the rule's ``verdict`` of them (:func:`~foundation_calc.checks.resonance_rule.judge`, rows
+    and the rule's ``verdict`` of them (:func:`~foundation_calc.checks.resonance.rule.judge`, rows
     on the leading axis); ``over_quantities``: limited quantity -> bool (n,); ``resonant``: rows
     with no steady state (bool (n,), default none). A row fails where the rule fails or a limit is
     exceeded, warns where the rule warns.
 
-    >>> from foundation_calc.checks.resonance_rule import judge
+    >>> from foundation_calc.checks.resonance.rule import judge
     >>> m = np.array([[0.05, 0.3], [0.5, 0.3]])  # the order-2 condition's share is 0.001: not judged
     >>> v = row_verdicts(m, judge(m, [2, 1], [0.001, 1.0], [0.2, 0.2], [False, False]), {"displacement": np.array([False, True])})
     >>> v.governing.tolist(), v.status.tolist(), v.resonance_status.tolist()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import io
 
 from foundation_calc.output.display_units import DisplayUnits
-from foundation_calc.checks.resonance_rule import bands_text
+from foundation_calc.checks.resonance.rule import bands_text
 from foundation_calc.output.plots import LABEL_BOX, mark_resonances, new_figure
 from foundation_calc.output.report.contents import SweepSeries
 from foundation_calc.output.report.model import Figure

@@ -67,7 +67,7 @@ def mode_columns(scene, static: Chain, consistent: dict[str, float], footer=None
 
 def consistent_frequencies(scene) -> tuple[dict[str, float], dict[str, float]]:
     """(static, at its own frequency) k0, p1, p2 [rad/s] as the resonance check takes them."""
-    from foundation_calc.checks.scene_frequencies import scene_block_frequencies, scene_design_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_block_frequencies, scene_design_frequencies
 
     if scene.mechanism is None:
         own, static = scene_block_frequencies(scene)

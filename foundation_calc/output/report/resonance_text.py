@@ -1,6 +1,6 @@
 """The resonance rule as a sheet states it: the definitions that make its margins reproducible.
 
-Source: docs/resonance-rule.md (:mod:`~foundation_calc.checks.resonance_rule`,
+Source: docs/resonance-rule.md (:mod:`~foundation_calc.checks.resonance.rule`,
 :func:`~foundation_calc.solvers.crank.resonance.condition_margin`). A condition n ω = p has the
 critical speed ω_c = p/n and the margin |ω − ω_c|/ω_c = |nω − p|/p (relative to the natural
 frequency, not to the speed); a crank foundation has two estimates of p (the paper's zero-order
@@ -12,7 +12,7 @@ condition's margin with its numbers substituted.
 from __future__ import annotations
 
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
-from foundation_calc.checks.resonance_rule import FORCING_SHARE
+from foundation_calc.checks.resonance.rule import FORCING_SHARE
 from foundation_calc.output.report.numbers import figure, percent
 
 

@@ -10,7 +10,7 @@ is the square root of twice the static strain energy of mode j under harmonic n.
 not depend on how the coordinates are scaled (metres and radians alike), and at resonance the
 mode's amplitude grows from it by the same factor 1/(2 ζ_j) whatever n is: w_nj compares the
 harmonics and the modes of one machine on one footing. The resonance rule uses the share
-w_nj / max w (``checks/resonance_rule.py``).
+w_nj / max w (``checks/resonance/rule.py``).
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 and its words, one copy for every scene kind.
 
 Every order n of every machine against every mode, margin |n ω - p_j| / p_j, is judged by the
-resonance rule (:func:`~foundation_calc.checks.resonance_rule.judge`, docs/resonance-rule.md)
+resonance rule (:func:`~foundation_calc.checks.resonance.rule.judge`, docs/resonance-rule.md)
 in one call over every condition of the scene, whose governing index names the governing row.
 The scene kinds differ only in which sections of :class:`ResonanceReport` have content:
 
@@ -16,7 +16,7 @@ The scene kinds differ only in which sections of :class:`ResonanceReport` have c
 
 The plane model's frequencies, conditions and forcing shares are computed in
 :mod:`~foundation_calc.solvers.crank.natural` and :mod:`~foundation_calc.solvers.crank.resonance`;
-a scene is read in :mod:`~foundation_calc.checks.scene_resonance`.
+a scene is read in :mod:`~foundation_calc.checks.resonance`.
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN, Outcome, worst
-from foundation_calc.checks.resonance_rule import (
+from foundation_calc.checks.resonance.rule import (
     FORCING_SHARE,
     INFORMATION,
     STATUS_NAMES,
@@ -38,7 +38,7 @@ from foundation_calc.checks.resonance_rule import (
     judge,
     required_detuning,
 )
-from foundation_calc.checks.resonance_rule import outcome as rule_outcome
+from foundation_calc.checks.resonance.rule import outcome as rule_outcome
 
 if TYPE_CHECKING:
     from foundation_calc.solvers.crank.mechanism import CrankDesign
@@ -55,7 +55,7 @@ class ResonanceRow:
     ``critical_averaged`` with the mechanism's averaged inertia (the block: the same);
     ``margin`` [-]; ``required``: the band of its order [-] (0: none); ``share``: the forcing share
     [-]; ``judged``: it can fail the design; ``status``: code of
-    :mod:`~foundation_calc.checks.resonance_rule`; ``machine`` and ``motion``: the block's machine
+    :mod:`~foundation_calc.checks.resonance.rule`; ``machine`` and ``motion``: the block's machine
     and the mode's dominant motion (empty on the plane model).
     """
 
@@ -119,7 +119,7 @@ class ResonanceReport:
     (:mod:`~foundation_calc.checks.soil_range`); ``soil_validity``: a0 of the judged modes and
     orders against the soil method's fitted range (:mod:`~foundation_calc.checks.soil_validity`);
     ``several_roots``: ``WARN`` lines of the modes with several roots of ω = p(K(ω)) on a
-    frequency-dependent support (:func:`~foundation_calc.checks.scene_resonance.several_roots_warnings`).
+    frequency-dependent support (:func:`~foundation_calc.checks.resonance.several_roots_warnings`).
 
     The plane model's section: ``design`` (None for a machine given by its loads only),
     ``zero_order`` and ``averaged`` frequencies (the same without a mechanism), ``static`` (the
@@ -206,7 +206,7 @@ class ResonanceReport:
 def judged_rows(conditions, critical, critical_averaged, margin, share, required, verdict, machines=None, motions=None):
     """The rows of every condition of a scene and its governing row (None when no condition can
     decide), from the rule's ``verdict`` on them all in one call
-    (:func:`~foundation_calc.checks.resonance_rule.judge`).
+    (:func:`~foundation_calc.checks.resonance.rule.judge`).
 
     ``conditions``: a label, order and mode each (C,); ``critical``, ``critical_averaged`` [rad/s],
     ``margin``, ``share``, ``required`` [-]: (C,); ``machines``, ``motions``: the block's machine
@@ -265,7 +265,7 @@ SHOWN_INFORMATION = 3
 
 
 def judge_conditions(omega, zero, averaged, conditions, share, detuning):
-    """The rule (:func:`~foundation_calc.checks.resonance_rule.judge`) on ``conditions`` at the
+    """The rule (:func:`~foundation_calc.checks.resonance.rule.judge`) on ``conditions`` at the
     speeds ``omega`` [rad/s] (a scalar or an array (S,)): margins (..., C), judgement, bands."""
     from foundation_calc.solvers.crank.resonance import condition_margin
 
@@ -303,10 +303,10 @@ def _plane_report(design, zero, averaged, stability, omega, conditions, share, d
 def check_resonances(design: CrankDesign, detuning, loads=None, frequencies=None) -> ResonanceReport:
     """Natural frequencies of ``design`` and every resonance condition of its forcing (and of
     ``loads``, :class:`~foundation_calc.solvers.crank.loads.HarmonicLoads`), judged by the rule
-    (:mod:`~foundation_calc.checks.resonance_rule`). ``detuning``: a band [-] or order -> band.
+    (:mod:`~foundation_calc.checks.resonance.rule`). ``detuning``: a band [-] or order -> band.
     ``frequencies`` = (zero-order, averaged, static) replaces the design's own (a
     frequency-dependent soil,
-    :func:`~foundation_calc.checks.scene_frequencies.scene_design_frequencies`)."""
+    :func:`~foundation_calc.checks.resonance.frequencies.scene_design_frequencies`)."""
     from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, stability_arguments
     from foundation_calc.solvers.crank.natural import design_frequencies
     from foundation_calc.solvers.crank.resonance import machine_conditions

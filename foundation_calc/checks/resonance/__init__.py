@@ -1,8 +1,8 @@
 """The resonance check of a scene of any kind (``fcalc resonance``): one report,
-:class:`~foundation_calc.checks.resonance.ResonanceReport`, judged by the one rule, whose
-sections the kinds fill differently (:mod:`~foundation_calc.checks.resonance`). The one place the
+:class:`~foundation_calc.checks.resonance.report.ResonanceReport`, judged by the one rule, whose
+sections the kinds fill differently (:mod:`~foundation_calc.checks.resonance.report`). The one place the
 resonance check tells the kinds apart: a block's six modes, or the plane model's scene read into
-its design or block (:mod:`~foundation_calc.checks.scene_frequencies`), with the soil's modulus
+its design or block (:mod:`~foundation_calc.checks.resonance.frequencies`), with the soil's modulus
 range and the soil model's validity.
 """
 
@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from foundation_calc.checks.resonance import ResonanceReport, check_block_resonances, check_resonances
+from foundation_calc.checks.resonance.report import ResonanceReport, check_block_resonances, check_resonances
 
 
 def scene_resonances(scene):
@@ -43,7 +43,7 @@ def check_scene_resonances(scene) -> ResonanceReport:
 def scene_resonances_as_given(scene) -> ResonanceReport:
     """The resonance report of a scene with its soil data as given (no ``modulus_range``); on a
     frequency-dependent soil every mode at its own frequency."""
-    from foundation_calc.checks.scene_frequencies import scene_block_frequencies, scene_design_frequencies
+    from foundation_calc.checks.resonance.frequencies import scene_block_frequencies, scene_design_frequencies
 
     loads = scene.harmonic_loads()
     if scene.mechanism is None:
