@@ -75,10 +75,6 @@ def _block_fails(scene):
 
 
 def _sample(scene, n, cov, seed):
-    if scene.kind == "block_foundation":
-        from foundation_calc.checks.block_sample import sample_block
-
-        return sample_block(scene, n, cov, seed)
     from foundation_calc.checks.soil_sample import sample_scene
 
     return sample_scene(scene, n, cov, seed=seed)
@@ -121,11 +117,12 @@ def test_a_block_sample_without_scatter_is_the_checks_own_numbers(config, soil, 
     tolerance), its resonance utilisation the governing condition's needed over its margin, its
     amplitude utilisation the largest limit or zone ratio (rel 1e-9 elsewhere: round-off)."""
     from foundation_calc.checks.amplitudes.machines import check_block_as_given
-    from foundation_calc.checks.block_sample import MODES, sample_block
+    from foundation_calc.checks.soil_sample import sample_scene
+    from foundation_calc.checks.soil_sample.block import MODES
     from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 
     scene = _block(soil, config)
-    drawn = sample_block(scene, 8, 1e-12)
+    drawn = sample_scene(scene, 8, 1e-12)
     report = check_block_as_given(scene)
     for key, p in zip(MODES, report.modes.frequencies):
         assert drawn.percentiles[key][1] == pytest.approx(p, rel=rel)

@@ -10,7 +10,7 @@ import pytest
 from foundation_calc.benchmarks.throughput import perturbed_designs
 from foundation_calc.checks.resonance.report import check_resonances
 from foundation_calc.solvers.crank.natural import design_frequencies
-from foundation_calc.solvers.crank.resonance import paper_margin
+from foundation_calc.solvers.crank.machine_conditions import paper_margin
 from foundation_calc.scenes import load_scene
 from tests.conftest import closed_form_configs
 

@@ -55,20 +55,17 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
         within(keyword, value, *RANGES[keyword])
     loaded = scene_of(scene, KINDS, platform_as_block=True)
     model, drawn = loaded.model, None
-    if loaded.kind == "block_foundation" or not compares_methods(model):  # a block, or a crank on a pile group
+    block = loaded.kind == "block_foundation"
+    sampled = block or compares_methods(model)  # a crank on a support that is no footing is not sampled
+    if not sampled or block:  # a block, or a crank on a pile group
         from foundation_calc.checks.soil_support import support_soil
         from foundation_calc.output.soil_support import soil_document
 
-        block = loaded.kind == "block_foundation"
         if sample:
             if block and speed_cov:
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
             _scales_with_the_soil(model, "block" if block else "crank foundation")
-        if sample and block:
-            from foundation_calc.checks.block_sample import sample_block
-
-            drawn = sample_block(model, sample, modulus_cov, seed)
         report = support_soil(model)
         document = soil_document(report, model, loaded.source)
     else:
@@ -79,11 +76,11 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
         if sample and model.mechanism is None:
             raise UsageError("samples the crank mechanism's closed forms; this scene gives the machine by its [[loads]] only",
                              "'--sample'")
-        if sample:
-            from foundation_calc.checks.soil_sample import sample_scene
-
-            drawn = sample_scene(model, sample, modulus_cov, speed_cov, seed)
         document = soil_document(report, model, loaded.source)
+    if sample and sampled:
+        from foundation_calc.checks.soil_sample import sample_scene
+
+        drawn = sample_scene(model, sample, modulus_cov, speed_cov, seed)
     return command_result("soil", document | {"sample": sample_document(drawn)}, 0, loaded, (report, drawn))
 
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from foundation_calc.benchmarks.measure import measure
 from foundation_calc.checks.resonance.report import check_resonances
-from foundation_calc.solvers.crank.resonance import paper_margin
+from foundation_calc.solvers.crank.machine_conditions import paper_margin
 from foundation_calc.solvers.crank.closed_form import design_first_approximation, with_damping
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 

@@ -289,7 +289,7 @@ class Built:
     """Candidate blocks on a scene's soil: their model (stacks), every machine's loads, the points
     (N, P, 3) [m] (or (P, 3), the same on every block), the soil's impedance ω -> (springs,
     dashpots) of a frequency-dependent soil (else None) and the blocks' masses [kg]; :func:`dynamics`
-    reads the first four (a sample of one block's soil, :mod:`~foundation_calc.checks.block_sample`,
+    reads the first four (a sample of one block's soil, :mod:`~foundation_calc.checks.soil_sample.block`,
     gives no other)."""
 
     model: object

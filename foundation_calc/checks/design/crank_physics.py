@@ -115,7 +115,7 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
     never the verdict: its margin is inf, its status clear."""
     from foundation_calc.checks.resonance.report import judge_conditions
-    from foundation_calc.solvers.crank.resonance import forcing_shares, harmonic_conditions
+    from foundation_calc.solvers.crank.machine_conditions import forcing_shares, harmonic_conditions
     from foundation_calc.checks.resonance.rule import FORCING_SHARE, Judgement
 
     _, _, _, fc, fs = mech

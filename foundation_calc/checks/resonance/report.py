@@ -309,7 +309,7 @@ def check_resonances(design: CrankDesign, detuning, loads=None, frequencies=None
     :func:`~foundation_calc.checks.resonance.frequencies.scene_design_frequencies`)."""
     from foundation_calc.solvers.crank.frequencies import rocking_stability_margin, stability_arguments
     from foundation_calc.solvers.crank.natural import design_frequencies
-    from foundation_calc.solvers.crank.resonance import machine_conditions
+    from foundation_calc.solvers.crank.machine_conditions import machine_conditions
 
     d = design
     zero, averaged = design_frequencies(design)
@@ -327,7 +327,7 @@ def check_block_resonances(block, omega: float, loads, detuning, frequencies=Non
     ``frequencies`` = (frequencies, static) replaces the block's own (a frequency-dependent soil)."""
     from foundation_calc.solvers.crank.frequencies import rocking_stability_margin
     from foundation_calc.solvers.crank.loads import block_frequencies
-    from foundation_calc.solvers.crank.resonance import machine_conditions
+    from foundation_calc.solvers.crank.machine_conditions import machine_conditions
 
     freqs, static = block_frequencies(block), None
     if frequencies is not None:

@@ -49,7 +49,8 @@ from foundation_calc.solvers.crank import sweep as engine
 from foundation_calc.solvers.crank.loads import block_frequencies
 from foundation_calc.solvers.crank.mechanism import CrankDesign
 from foundation_calc.solvers.crank.natural import design_frequencies
-from foundation_calc.solvers.crank.resonance import critical_speed, machine_conditions
+from foundation_calc.solvers.crank.machine_conditions import machine_conditions
+from foundation_calc.solvers.crank.resonance import critical_speed
 
 #: What a sweep can vary: the crank speed [rad/s] or a factor [-] on both soil coefficients.
 VARIABLES = ("omega", "soil_factor")
@@ -168,7 +169,7 @@ def sweep_chunks(
     """:func:`sweep` in chunks of ``chunk`` points, one :class:`SweepReport` each, so that a long
     sweep's memory is bounded by a chunk (the conditions' margins are (points × conditions)
     arrays). The conditions and their forcing shares are the scene's, at its own speed and soil
-    (:func:`~foundation_calc.solvers.crank.resonance.machine_conditions`): which conditions are
+    (:func:`~foundation_calc.solvers.crank.machine_conditions.machine_conditions`): which conditions are
     judged does not change along a sweep, and the row at the scene's speed is ``fcalc check``'s.
     ``dynamic``: a frequency-dependent soil, for a speed sweep (module docstring)."""
     if dynamic is not None and variable != "omega":

@@ -1,12 +1,6 @@
-"""The uncertain soil under a block foundation as a distribution (``fcalc soil SCENE --sample N``):
-percentiles of the six natural frequencies and of the checks' utilisations, and the probability
-that each check fails.
-
-The stiffness factor F is drawn as for a crank foundation
-(:func:`~foundation_calc.checks.soil_sample.lognormal_factors`: lognormal, median 1, coefficient of
-variation ``cov_modulus``) and reported through the same summary
-(:func:`~foundation_calc.checks.soil_sample.summary`). Each sample is the scene's own block on its
-soil with the stiffness data × F, built in one array operation by Eqs. (1) and (2) of
+"""The engine of a ``block_foundation`` scene's sample (:mod:`~foundation_calc.checks.soil_sample`):
+the six natural frequencies and the checks' utilisations of the scene's own block on its soil with
+the stiffness data × F, built in one array operation by Eqs. (1) and (2) of
 :mod:`~foundation_calc.checks.design.block_range` (springs × F, dashpots × sqrt F; a
 frequency-dependent soil at ω / sqrt F), and judged by the batch evaluator of ``fcalc design``
 (:func:`~foundation_calc.checks.design.block.dynamics`): the resonance rule over every order of
@@ -23,8 +17,6 @@ Above 1 the check fails.
 from __future__ import annotations
 
 import numpy as np
-
-from foundation_calc.checks.soil_sample import SoilSample, lognormal_factors, summary
 
 #: Keys of the six natural frequencies in the sample's percentiles [rad/s], lowest first.
 MODES = tuple(f"mode{j}" for j in range(1, 7))
@@ -53,13 +45,13 @@ def _piece(scene, factor) -> dict[str, np.ndarray]:
     return taken
 
 
-def sample_block(scene, n: int, cov_modulus: float, seed: int = 0) -> SoilSample:
-    """Sample a ``block_foundation`` scene's soil ``n`` times (module docstring), in pieces of the
-    evaluator's size (:data:`~foundation_calc.checks.design.block.PIECE`) so that memory stays bounded."""
+def engine(scene, factor, _speed):
+    """The sampled frequencies and utilisations and the outcomes of the samples ``factor`` (n,)
+    (:data:`~foundation_calc.checks.soil_sample.ENGINES`; the machines keep their speeds), in pieces
+    of the evaluator's size (:data:`~foundation_calc.checks.design.block.PIECE`) so that memory stays bounded."""
     from foundation_calc.checks.design.block import PIECE
 
-    factor = lognormal_factors(np.random.default_rng(seed), n, cov_modulus)
-    pieces = [_piece(scene, factor[i : i + PIECE]) for i in range(0, n, PIECE)]
+    pieces = [_piece(scene, factor[i : i + PIECE]) for i in range(0, len(factor), PIECE)]
     taken = {key: np.concatenate([p[key] for p in pieces]) for key in pieces[0]}
     stable = taken.pop("stable")
     fails = {check: taken.pop(f"fails_{check}") for check in ("resonance", "amplitudes")}
@@ -68,8 +60,7 @@ def sample_block(scene, n: int, cov_modulus: float, seed: int = 0) -> SoilSample
     ok = stable.copy()  # percentiles over the samples that stand and have a steady state
     for key in ("resonance_utilisation", "amplitude_utilisation"):
         ok &= ~np.isinf(taken.get(key, 0.0))
-    return summary(SoilSample(n, cov_modulus, 0.0, seed, {}, {}), {"modulus_factor": factor, **taken}, ok, ~stable,
-                   fails["resonance"], fails["amplitudes"])
+    return taken, ok, ~stable, fails["resonance"], fails["amplitudes"]
 
 
-__all__ = ["MODES", "sample_block"]
+__all__ = ["MODES", "engine"]
