@@ -28,15 +28,15 @@ def _run(runner, *args: str) -> str:
 @pytest.fixture
 def on_terminal(runner, monkeypatch):
     """The lines of ``fcalc args`` as fcalc's own stdout console shows them on an 80-column
-    terminal (fitted tables, words kept whole): every output module prints to it (each imported
-    first, so that none keeps the test's console after it)."""
+    terminal (fitted tables, words kept whole): every output module, in subpackages too, prints to
+    it (each imported first, so that none keeps the test's console after it)."""
     import importlib
     import pkgutil
 
     from foundation_calc import output
     from foundation_calc.output import console
 
-    modules = [importlib.import_module(f"{output.__name__}.{m.name}") for m in pkgutil.iter_modules(output.__path__)]
+    modules = [importlib.import_module(m.name) for m in pkgutil.walk_packages(output.__path__, f"{output.__name__}.")]
     printing = [m for m in modules if getattr(m, "stdout", None) is console.stdout]
 
     def run(*args: str) -> list[str]:
