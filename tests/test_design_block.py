@@ -241,3 +241,18 @@ def test_over_the_soils_modulus_range_the_batch_agrees_with_fcalc_check():
         if scalar.check_block_as_given(one).amplitude_outcome.value == "pass" and report.amplitude_outcome.value == "fail":
             by_range.append(i)
     assert len(by_range) >= 2  # the range, not the data as given, decides there
+
+
+def test_a_machine_outside_the_codes_group_warns_the_amplitudes_in_the_batch_as_in_fcalc_check():
+    """ISO 10816-3's group 2 is 15 kW < P <= 300 kW: at 500 kW its zones may not apply, and
+    the amplitude check warns, for a block as for a crank scene (a block passed, saying only
+    "note:"); the batch judges each candidate as fcalc check does."""
+    document = _document(FAN, machine_power=500e3)
+    scene = parse_scene(document, "fan at 500 kW")
+    batch = _candidates(scene, 6, seed=3)
+    verdicts = evaluate(scene, batch)
+    for i in range(6):
+        finding = CHECKS["block_foundation"]["amplitudes"](_one(document, batch, i))
+        said = "".join(part for part in finding.reason if isinstance(part, str))
+        assert finding.outcome.value == "warn" and "machine_power = 500 kW is outside group 2" in said
+        assert verdicts.outcome["amplitudes"][i] == CODES["warn"]

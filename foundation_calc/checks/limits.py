@@ -117,7 +117,7 @@ class AmplitudeWording:
     values : name -> (quantity, SI value) said before the judged ones (a crank's speed)
     statement : the resonance rule's verdict, said after the limits; None for none
     itemised : the crank's wording, kept as CI scripts read it: the count of values over their
-        limits, the worst zone's values, a detail line per zone and the code's warnings in the reason
+        limits, the worst zone's values and a detail line per zone
     """
 
     resonant: tuple

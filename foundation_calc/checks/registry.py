@@ -152,7 +152,7 @@ def amplitudes_finding(report) -> Finding:
             reason += ("; " if reason else "", f"{worst_zone.point}: {worst_zone.verdict_text}{_support(worst_zone)}")
         if wording.statement is not None:
             reason += (f"; {wording.statement}",)
-    if itemised and report.code_warnings:
+    if report.code_warnings:  # why the verdict warns, for every kind
         reason += ("; " + "; ".join(report.code_warnings),)
     if report.amplitude_range is not None:
         reason += (f"; {report.amplitude_range.text}",)

@@ -154,9 +154,6 @@ class AmplitudeReport(AmplitudeVerdict):
     #: :func:`~foundation_calc.solvers.crank.closed_form.require_first_approximation`)
     not_applicable: dict = field(default_factory=dict)
 
-    #: a code's warnings warn (the crank's verdict as CI scripts read it)
-    WARNINGS_WARN = True
-
     @property
     def omega(self) -> float:
         """The speed [rad/s]."""

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import ClassVar
 
 from foundation_calc.checks.codes import ZoneRow, code_warnings, zone_rows
 from foundation_calc.checks.limits import LimitRow, amplitude_outcome, limit_rows
@@ -61,9 +60,6 @@ class AmplitudeVerdict:
     #: (:class:`~foundation_calc.checks.soil_validity.SoilValidity`; a scene's report only)
     soil_validity: object = None
 
-    #: whether a code's warnings (its speed or power ranges) make the verdict warn
-    WARNINGS_WARN: ClassVar[bool] = False
-
     @property
     def limit_rows(self) -> tuple[LimitRow, ...]:
         return self.judgement.limit_rows
@@ -79,8 +75,9 @@ class AmplitudeVerdict:
     @property
     def amplitude_outcome(self) -> Outcome:
         """:func:`~foundation_calc.checks.limits.amplitude_outcome` of the rows, the code's
-        warnings (where they warn) and the soil's modulus range."""
-        noted = (Outcome.WARN,) if self.WARNINGS_WARN and self.code_warnings else ()
+        warnings (a machine's speed or power outside the code's group: its zones may not apply, the
+        verdict warns) and the soil's modulus range."""
+        noted = (Outcome.WARN,) if self.code_warnings else ()
         ranged = () if self.amplitude_range is None else (self.amplitude_range.outcome,)
         return amplitude_outcome(self.resonant, self.limit_rows, self.zone_rows, (*noted, *ranged))
 

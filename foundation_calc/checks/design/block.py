@@ -124,6 +124,7 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
     (:func:`~foundation_calc.checks.amplitudes.report.judge`)."""
     from foundation_calc.checks.amplitudes.machines import DIRECTIONS, LIMITED_VALUES
+    from foundation_calc.checks.codes import code_warnings
     from foundation_calc.checks.design.code_zones import code_zones
     from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity
@@ -162,6 +163,8 @@ def _amplitudes(scene, model, modes, excitations, points, impedance=None):
             ratios.append(ratio)
             reasons += [f"{table.title} zone at {p}" for p in names]
         worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
+    if code_warnings(limits, [(exc.name, exc.omega) for exc in excitations]):  # the code may not apply: warns
+        worst = np.maximum(worst, WARN).astype(np.int8)
     reasons.append("an order is resonant with an undamped mode: no steady state")
     return *failing(stuck, worst, *largest_ratio(ratios, n), len(reasons) - 1), tuple(reasons)
 

@@ -19,10 +19,10 @@ from foundation_calc.output.notes import print_soil_validity, print_supports, so
 
 #: What a kind's sections module gives: its points' directions, the code document's per-direction
 #: values (:func:`~foundation_calc.output.limits.code_document`), its parts of the JSON document,
-#: its heading and motion, the limits table's title, what follows the zones, a code's warning, what
-#: follows the warnings, the verdict line.
+#: its heading and motion, the limits table's title, what follows the zones, what follows the
+#: code's warnings, the verdict line.
 SECTIONS = ("DIRECTIONS", "CODE_DIRECTIONS", "document_parts", "print_motion", "limits_title", "print_after_zones",
-            "warning", "print_notes", "verdict_line")
+            "print_notes", "verdict_line")
 
 
 def _sections(scene):
@@ -72,8 +72,10 @@ def print_amplitudes(report, scene, source: str, units, all_points: bool = False
         out.print(*zones_table(report.zone_rows, units, kind.DIRECTIONS, strict))
         print_supports(report.zone_rows)
     kind.print_after_zones(report, units)
-    for warning in report.code_warnings:
-        out.print(kind.warning(warning))
+    from rich.text import Text
+
+    for warning in report.code_warnings:  # a machine's speed or power outside the code's group: the verdict warns
+        out.print(Text(f"warning: {warning}", style="yellow"))
     kind.print_notes(report, strict)
     print_soil_validity(report.soil_validity)
     out.print(kind.verdict_line(report, strict))

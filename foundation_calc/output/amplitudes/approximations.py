@@ -342,11 +342,6 @@ def print_after_zones(report: AmplitudeReport, units: DisplayUnits) -> None:
     """Nothing between the zones and the code's warnings."""
 
 
-def warning(text: str) -> Text:
-    """A code's warning as the crank states it."""
-    return Text(f"warning: {text}", style="yellow")
-
-
 def print_notes(report: AmplitudeReport, strict: bool) -> None:
     """Nothing after the code's warnings (the soil's range is in the verdict line)."""
 

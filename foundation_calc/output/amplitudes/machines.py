@@ -167,13 +167,6 @@ def print_after_zones(report, units: DisplayUnits) -> None:
                        f" peaks from the exact solution's){capped}; the limits judge the first approximation")
 
 
-def warning(text: str) -> str:
-    """A code's warning as the block states it."""
-    from rich.markup import escape
-
-    return f"note: {escape(text)}"
-
-
 def print_notes(report, strict: bool) -> None:
     """The amplitudes over the soil's modulus range, and the office checks for information."""
     from rich.markup import escape
