@@ -15,10 +15,10 @@ from foundation_calc.scenes.block_isolators import BlockIsolator, Isolation, iso
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
 from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.block_soil import BlockSoil
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, RunTimes, SceneModel, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, RunTimes, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
-from foundation_calc.scenes.project import Project, Requirements, SheetOptions
+from foundation_calc.scenes.project import SceneHeader, SheetOptions
 from foundation_calc.scenes.soil import FREQUENCY_DEPENDENT_METHODS, OnSoil
 from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
 
@@ -80,20 +80,10 @@ class BlockOperation(RunTimes):
     in the same time, as the platform's and crank foundation's [operation] tables give them."""
 
 
-class BlockScene(Plausible, OnSoil, SceneModel):
+class BlockScene(Plausible, OnSoil, SceneHeader):
     """A scene of kind ``block_foundation``."""
 
     kind: Literal["block_foundation"] = quantity("-", "-", 'scene kind, always "block_foundation"')
-    schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
-    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
-    project: Project | None = quantity(
-        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
-        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
-    )
-    require: Requirements | None = quantity(
-        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
-        " for every scene under it", None
-    )
     block: BlockBody
     machines: list[BlockMachine] = quantity("-", "-", "the machines on the block, each with its own speed", min_length=1)
     soil: BlockSoil | None = quantity(

@@ -14,7 +14,6 @@ from pydantic import ValidationInfo, field_validator, model_validator
 from foundation_calc.errors import PhysicsError
 from foundation_calc.scenes.common import (
     LENGTH_SCALE_FACTOR,
-    SCENE_SCHEMA_VERSION,
     Drive,
     LimitSources,
     RunTimes,
@@ -29,7 +28,7 @@ from foundation_calc.scenes.foundation import Foundation
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, judge
 from foundation_calc.scenes.soil import OnSoil, Soil
 from foundation_calc.scenes.stratum import stratum_error, stratum_remarks
-from foundation_calc.scenes.project import Project, Requirements, SheetOptions
+from foundation_calc.scenes.project import SceneHeader, SheetOptions
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.crank.mechanism import CrankDesign, lump_slider
 
@@ -249,22 +248,10 @@ def _largest(x) -> float:
     return float(x.max()) if getattr(x, "ndim", 0) else float(x)
 
 
-class CrankScene(Plausible, OnSoil, SceneModel):
+class CrankScene(Plausible, OnSoil, SceneHeader):
     """A scene of kind ``crank_foundation``."""
 
     kind: Literal["crank_foundation"] = quantity("-", "-", 'scene kind, always "crank_foundation"')
-    schema_version: Literal[1] = quantity(
-        "-", "-", "version of the scene format", SCENE_SCHEMA_VERSION
-    )
-    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
-    project: Project | None = quantity(
-        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
-        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
-    )
-    require: Requirements | None = quantity(
-        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
-        " for every scene under it", None
-    )
     foundation: Foundation
     soil: Soil
     piles: BlockPiles | None = quantity(

@@ -16,9 +16,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, SCENE_SCHEMA_VERSION, Drive, LimitSources, SceneModel, SpeedFields, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, Drive, LimitSources, SceneModel, SpeedFields, quantity
 from foundation_calc.scenes.plausibility import Plausible, Remark
-from foundation_calc.scenes.project import Project, Requirements
+from foundation_calc.scenes.project import SceneHeader
 from foundation_calc.solvers.constants import GRAVITY
 from foundation_calc.solvers.platform.design import (
     REGIME_SIGN,
@@ -163,20 +163,10 @@ OPTION_ADVICE = {"operation.omega": "use --rpm {value:g}", "operation.speed_rpm"
                  "operation.frequency_hz": "use --rpm {value:g}"}
 
 
-class PlatformScene(Plausible, SceneModel):
+class PlatformScene(Plausible, SceneHeader):
     """A scene of kind ``platform``."""
 
     kind: Literal["platform"] = quantity("-", "-", 'scene kind, always "platform"')
-    schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
-    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
-    project: Project | None = quantity(
-        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
-        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
-    )
-    require: Requirements | None = quantity(
-        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
-        " for every scene under it", None
-    )
     platform: Platform
     exciter: Exciter
     operation: Operation

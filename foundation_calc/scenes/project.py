@@ -19,7 +19,7 @@ from typing import Any, Literal
 from pydantic import Field, model_validator
 
 from foundation_calc.errors import SceneError
-from foundation_calc.scenes.common import SceneModel
+from foundation_calc.scenes.common import SCENE_SCHEMA_VERSION, SceneModel, quantity
 
 #: Name of the office defaults file.
 OFFICE_FILE = "fcalc.toml"
@@ -153,3 +153,20 @@ def with_office_defaults(document: dict[str, Any], scene_path: str | Path) -> di
         elif given:  # a rule either file sets is in force
             merged[table] = {**own, **{key: True for key, value in given.items() if value}}
     return merged
+
+
+class SceneHeader(SceneModel):
+    """The keys every scene kind opens with: its kind (each kind's model narrows it to its own
+    name), the format's version, its name, its ``[project]`` and its ``[require]``."""
+
+    kind: str = quantity("-", "-", "scene kind")
+    schema_version: Literal[1] = quantity("-", "-", "version of the scene format", SCENE_SCHEMA_VERSION)
+    name: str = quantity("-", "-", "free text shown in reports", "", max_length=200)
+    project: Project | None = quantity(
+        "-", "-", "title block of the calculation sheet (job, calculation number, revision, sign-off);"
+        " fcalc.toml in the scene's folder or a parent gives the office defaults", None
+    )
+    require: Requirements | None = quantity(
+        "-", "-", "rules of the office the scene must meet (soil_bracketing); fcalc.toml [require] sets them"
+        " for every scene under it", None
+    )
