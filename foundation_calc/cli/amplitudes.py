@@ -28,17 +28,21 @@ AllPointsOpt = Annotated[
 def amplitudes(
     scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None, all_points: AllPointsOpt = False
 ) -> None:
-    """Steady-state amplitudes per harmonic, peaks of C and of the scene's [[points]], and limits.
+    """Steady-state amplitudes per machine and harmonic, peaks and RMS values at the centre of mass
+    and the scene's [[points]], against the limits.
 
-    Always shows the paper's corrected first approximation and the closed form with the averaged
-    operator; --exact adds the exact periodic solution, checks the limits with it and reports the
-    closed forms' relative errors. With soil.damping every method gives finite amplitudes and
-    phases at and through every resonance. A machine given by its [[loads]] adds (or alone gives)
-    the block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits]
-    key, when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped
-    scene's speed is resonant. It judges the amplitudes alone, on a block_foundation too: a
-    block's office checks (bearing pressure, eccentricity, mass ratio) are listed for
-    information, and fcalc check judges them.
+    A block_foundation (or a platform, read as a block): the six modes, each machine's orders at
+    G and every point, their peaks and RMS values; a machine with angle-dependent inertia (crank
+    throws, exciters) adds its exact periodic solution by harmonic balance and the first
+    approximation's error against it. A crank_foundation: the paper's corrected first
+    approximation and the closed form with the averaged operator, at C and the points; --exact
+    adds the exact periodic solution, checks the limits with it and reports the closed forms'
+    relative errors; a machine given by its [[loads]] adds (or alone gives) the block's linear
+    steady state. With soil damping every method gives finite amplitudes and phases at and
+    through every resonance. Fails (exit 1) when a peak or RMS value exceeds its [limits] key,
+    when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped scene's
+    speed is resonant. It judges the amplitudes alone: a block's office checks (bearing pressure,
+    eccentricity, mass ratio) are listed for information, and fcalc check judges them.
     """
     from foundation_calc.api.amplitudes import amplitudes
     from foundation_calc.api.options import display_units

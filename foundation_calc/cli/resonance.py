@@ -18,11 +18,15 @@ StrictOpt = Annotated[bool, typer.Option("--strict", help="Treat warnings (extra
 
 @reports_errors
 def resonance(scene: SceneArg, json: JsonOpt = False, strict: StrictOpt = False, units: UnitsOpt = None) -> None:
-    """Natural frequencies k0, p1, p2 and the margin of the crank speed from every resonance.
+    """Natural frequencies of the foundation and the margin of every machine's speed from each.
 
-    Checks the paper's conditions ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2 (fail inside the
-    [limits] detuning band, default 20 %) and the extra ones 4ω = k0, 2ω = p1,p2 (warn); with
-    [[loads]], n ω = k0, p1, p2 for every order n of the loads.
+    A block_foundation (or a platform, read as a block on its isolators): the six modes of the
+    rigid body on its supports, each named by its dominant motion, and every order n of every
+    machine against every mode; a crank_foundation: the paper's k0, p1, p2 and its conditions
+    ω = k0, 2ω = k0, ω = p1,p2, 3ω = p1,p2, with the extra ones 4ω = k0, 2ω = p1,p2 and, with
+    [[loads]], n ω = k0, p1, p2 for every order n of the loads. One rule judges every kind
+    (docs/resonance-rule.md): a condition the source names, or whose order forces its mode with a
+    share of at least 1 %, fails inside the [limits] detuning band (default 20 %) of its order.
     """
     from foundation_calc.api.options import display_units
     from foundation_calc.api.resonance import KINDS, resonance

@@ -30,19 +30,21 @@ SeedOpt = Annotated[int, typer.Option("--seed", min=RANGES["seed"][0], help="See
 @reports_errors
 def soil(scene: SceneArg, json: JsonOpt = False, sample: SampleOpt = 0, modulus_cov: ModulusCovOpt = 0.3,
          speed_cov: SpeedCovOpt = 0.0, seed: SeedOpt = 0) -> None:
-    """Soil springs and damping of every method the scene's [soil] data allow, side by side.
+    """The support's springs and dashpots at O, every soil method the scene's data allow side by side.
 
-    A crank scene on [piles] shows the pile group instead: its springs and dashpots in the plane at
-    O (K_x, K_z, K_φ, K_xφ; C_x, C_z, C_φ, C_xφ) at rest, at the speed's harmonics and at each mode's
-    own frequency, the natural frequencies k0, p1, p2 of fcalc resonance, and the piles' own table.
-
-    K_z, K_x [N/m] and K_φ [N m/rad]; the equivalent c_z, c_x, c_phi [N/m³]; damping ratios [-]
-    and base dashpots; uncoupled vertical, horizontal and rocking frequencies and the coupled
-    k0, p1, p2 (tables in Hz, JSON in rad/s). The scene's method is marked with *. Warns when a
-    modulus looks static where a dynamic one is meant (or the reverse) and when methods differ
-    by more than a factor of 2. With --sample N, the soil's stiffness is sampled (lognormal, median
-    1, --modulus-cov) and the percentiles of k0, p1, p2, of the resonance margin and of the peak
-    displacements of C are reported with the probability that each check fails. It judges
+    A block_foundation (or a platform, read as a block on its isolators): the six springs and
+    dashpots at O (x, y, z, rx, ry, rz) of its support, with damping ratios and uncoupled
+    frequencies, at rest and at the machines' orders where the method depends on frequency; on
+    [piles], the group's and the piles' own tables. A crank_foundation: K_z, K_x [N/m] and K_φ
+    [N m/rad] of every method, the equivalent c_z, c_x, c_phi [N/m³], damping ratios [-] and
+    base dashpots, the uncoupled vertical, horizontal and rocking frequencies and the coupled
+    k0, p1, p2 (tables in Hz, JSON in rad/s); on [piles], the pile group's springs and dashpots
+    in the plane at O (K_x, K_z, K_φ, K_xφ; C_x, C_z, C_φ, C_xφ) at rest, at the speed's harmonics
+    and at each mode's own frequency. The scene's method is marked with *. Warns when a modulus
+    looks static where a dynamic one is meant (or the reverse) and when methods differ by more
+    than a factor of 2. With --sample N, the soil's stiffness is sampled (lognormal, median 1,
+    --modulus-cov) and the percentiles of the natural frequencies, of the resonance margin and of
+    the peak displacements are reported with the probability that each check fails. It judges
     nothing: exit 0 for any valid scene.
     """
     from foundation_calc.api.resonance import KINDS

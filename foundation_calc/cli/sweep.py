@@ -16,8 +16,9 @@ SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 SpeedOpt = Annotated[
     Optional[str],
     typer.Option("--speed", metavar="FROM:TO[:N][UNIT]", show_default=False,
-                 help="Sweep the crank speed: N points (default 101) from FROM to TO, in rpm unless a unit"
-                 " follows (rpm, rad/s, hz), e.g. 100:600:251 or 10:60rad/s; one value is one point."),
+                 help="Sweep the speed (a crank scene's crank, a block's --machine): N points (default 101) from FROM"
+                 " to TO, in rpm unless a unit follows (rpm, rad/s, hz), e.g. 100:600:251 or 10:60rad/s; one value is"
+                 " one point."),
 ]
 SoilOpt = Annotated[
     Optional[str],
@@ -61,22 +62,23 @@ def sweep(
     machine: MachineOpt = None,
     alone: AloneOpt = False,
 ) -> None:
-    """Closed-form amplitudes of a crank foundation along a speed or soil sweep, resonances marked.
+    """Amplitudes and resonance margins along a sweep of a machine's speed or of the soil's
+    stiffness, resonances marked.
 
-    Every point is computed in vectorised chunks of the corrected first approximation (on a pile
-    group, which couples sway with rocking, and at the speeds where a frequency-dependent soil's
-    rocking spring at a harmonic falls to P h, of the averaged operator, the support at each
-    harmonic's frequency, as amplitudes solves it there); each row
-    shows the peaks of x, y (of C), θ and of the scene's [[points]] and a status that says why:
-    the resonance condition that governs there (docs/resonance-rule.md) with its margin,
-    and every limit exceeded. Statuses: resonant (no periodic solution), fail (a judged condition
-    inside its band, or a peak or RMS limit exceeded), warn, pass. A scene's [[loads]] add their
-    linear steady state and their resonance conditions. A long sweep written with --csv is
-    streamed and summarised. A block_foundation scene sweeps one machine's speed (--machine; the
+    Each row is fcalc amplitudes and resonance at that speed or soil factor, computed in
+    vectorised chunks, with the peaks at the centre of mass and the scene's [[points]] and a
+    status that says why: the resonance condition that governs there (docs/resonance-rule.md)
+    with its margin, and every limit exceeded. Statuses: resonant (no periodic solution), fail (a
+    judged condition inside its band, or a peak or RMS limit exceeded), warn, pass. A
+    block_foundation (or a platform, read as a block) sweeps one machine's speed (--machine; the
     others at their own, or left out with --alone), or the factor on its soil with every machine
-    at its own speed (each row fcalc amplitudes and resonance of the block on that soil), its rows
-    judged and worded the same way. A
-    sweep is a picture, not a check: it exits 0 unless the scene or the options are invalid.
+    at its own speed. A crank_foundation sweeps its crank speed by the corrected first
+    approximation (on a pile group, which couples sway with rocking, and at the speeds where a
+    frequency-dependent soil's rocking spring at a harmonic falls to P h, by the averaged
+    operator, the support at each harmonic's frequency, as amplitudes solves it there), the peaks
+    of x, y (of C) and θ; its [[loads]] add their linear steady state and their resonance
+    conditions. A long sweep written with --csv is streamed and summarised. A sweep is a picture,
+    not a check: it exits 0 unless the scene or the options are invalid.
     """
     from foundation_calc.api.options import display_units, plot_path, writable_path, writing
     from foundation_calc.api.sweep import chunks, plan, swept
