@@ -24,6 +24,17 @@ AllPointsOpt = Annotated[
 ]
 
 
+def _exact_note(loaded) -> str | None:
+    """Why --exact changes nothing on ``loaded`` (a scene without periodic inertia), None where it applies."""
+    if loaded.kind != "block_foundation":
+        return None if loaded.model.mechanism is not None else (
+            "a [mechanism]; the loads' steady state is already exact for the linear model")
+    if any(machine.periodic_parts for machine in loaded.model.machines):
+        return None
+    return ("a machine's periodic inertia ([[machines.cranks]], [[machines.exciters]]); the machines' steady state"
+            " is already exact for the linear model")
+
+
 @reports_errors
 def amplitudes(
     scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None, all_points: AllPointsOpt = False
@@ -32,8 +43,10 @@ def amplitudes(
 
     Always shows the paper's corrected first approximation and the closed form with the averaged
     operator; --exact adds the exact periodic solution, checks the limits with it and reports the
-    closed forms' relative errors. With soil.damping every method gives finite amplitudes and
-    phases at and through every resonance. A machine given by its [[loads]] adds (or alone gives)
+    closed forms' relative errors. On a block, --exact judges the limits with the exact periodic
+    solution of every machine with cranks or exciters (always shown beside the first
+    approximation). With soil.damping every method gives finite amplitudes and phases at and
+    through every resonance. A machine given by its [[loads]] adds (or alone gives)
     the block's linear steady state. Fails (exit 1) when a peak or RMS value exceeds its [limits]
     key, when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped
     scene's speed is resonant. It judges the amplitudes alone, on a block_foundation too: a
@@ -48,10 +61,11 @@ def amplitudes(
     shown = display_units(units)
     loaded = scene_of(scene, KINDS, platform_as_block=True)
     warn_implausible(loaded.model)
-    if exact and loaded.kind != "block_foundation" and loaded.model.mechanism is None:
+    note = None if not exact else _exact_note(loaded)
+    if note is not None:
         from foundation_calc.output.console import stderr
 
-        stderr().print("note: --exact applies to a [mechanism]; the loads' steady state is already exact for the linear model")
+        stderr().print(f"note: --exact applies to {note}")
     result = amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json
