@@ -63,9 +63,11 @@ def amplitudes(
     warn_implausible(loaded.model)
     note = None if not exact else _exact_note(loaded)
     if note is not None:
+        from rich.markup import escape
+
         from foundation_calc.output.console import stderr
 
-        stderr().print(f"note: --exact applies to {note}")
+        stderr().print(f"note: --exact applies to {escape(note)}")  # its [section] names are no markup
     result = amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json
