@@ -18,7 +18,9 @@ def amplitudes(scene, *, exact: bool = False) -> Result:
         or a ``platform`` read as its block on its isolators (:meth:`~foundation_calc.scenes.platform.PlatformScene.as_block`).
     exact : bool
         ``--exact``: a crank scene's [mechanism] also by the exact periodic solution (harmonic
-        balance), which then judges the limits; no effect on loads, whose steady state is exact.
+        balance), which then judges the limits; a block's machines with periodic inertia (cranks,
+        exciters) judged by their exact periodic solution in place of their first approximation; no
+        effect on loads, whose steady state is exact.
 
     Returns
     -------

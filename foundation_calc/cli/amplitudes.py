@@ -24,6 +24,17 @@ AllPointsOpt = Annotated[
 ]
 
 
+def _exact_note(loaded) -> str | None:
+    """Why --exact changes nothing on ``loaded`` (a scene without periodic inertia), None where it applies."""
+    if loaded.kind != "block_foundation":
+        return None if loaded.model.mechanism is not None else (
+            "a [mechanism]; the loads' steady state is already exact for the linear model")
+    if any(machine.periodic_parts for machine in loaded.model.machines):
+        return None
+    return ("a machine's periodic inertia ([[machines.cranks]], [[machines.exciters]]); the machines' steady state"
+            " is already exact for the linear model")
+
+
 @reports_errors
 def amplitudes(
     scene: SceneArg, exact: ExactOpt = False, json: JsonOpt = False, units: UnitsOpt = None, all_points: AllPointsOpt = False
@@ -34,11 +45,11 @@ def amplitudes(
     A block_foundation (or a platform, read as a block): the six modes, each machine's orders at
     G and every point, their peaks and RMS values; a machine with angle-dependent inertia (crank
     throws, exciters) adds its exact periodic solution by harmonic balance and the first
-    approximation's error against it. A crank_foundation: the paper's corrected first
-    approximation and the closed form with the averaged operator, at C and the points; --exact
-    adds the exact periodic solution, checks the limits with it and reports the closed forms'
-    relative errors; a machine given by its [[loads]] adds (or alone gives) the block's linear
-    steady state. With soil damping every method gives finite amplitudes and phases at and
+    approximation's error against it; --exact judges the limits with that solution. A
+    crank_foundation: the paper's corrected first approximation and the closed form with the
+    averaged operator, at C and the points; --exact adds the exact periodic solution, checks the
+    limits with it and reports the closed forms' relative errors; a machine given by its [[loads]]
+    adds (or alone gives) the block's linear steady state. With soil damping every method gives finite amplitudes and phases at and
     through every resonance. Fails (exit 1) when a peak or RMS value exceeds its [limits] key,
     when a point is in zone C or D of [limits] code (ISO 10816-3), or when an undamped scene's
     speed is resonant. It judges the amplitudes alone: a block's office checks (bearing pressure,
@@ -52,10 +63,13 @@ def amplitudes(
     shown = display_units(units)
     loaded = scene_of(scene, KINDS, platform_as_block=True)
     warn_implausible(loaded.model)
-    if exact and loaded.kind != "block_foundation" and loaded.model.mechanism is None:
+    note = None if not exact else _exact_note(loaded)
+    if note is not None:
+        from rich.markup import escape
+
         from foundation_calc.output.console import stderr
 
-        stderr().print("note: --exact applies to a [mechanism]; the loads' steady state is already exact for the linear model")
+        stderr().print(f"note: --exact applies to {escape(note)}")  # its [section] names are no markup
     result = amplitudes(loaded, exact=exact)
     if json:
         from foundation_calc.output.console import print_json

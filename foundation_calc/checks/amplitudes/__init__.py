@@ -22,12 +22,13 @@ from __future__ import annotations
 
 def scene_amplitudes(scene, exact: bool = False):
     """The amplitude report of ``scene``; ``exact``: a crank's mechanism also by the exact periodic
-    solution, which then judges the limits (a block's machines with periodic inertia always get
-    theirs beside the first approximation that is judged)."""
+    solution, which then judges the limits; a block's machines with periodic inertia always get
+    theirs beside the first approximation, and ``exact`` judges the limits with it in place of
+    those machines' first approximation."""
     if scene.kind == "block_foundation":
         from foundation_calc.checks.amplitudes.machines import check_block
 
-        return check_block(scene, periodic=True)
+        return check_block(scene, periodic=True, exact=exact)
     from foundation_calc.checks.amplitudes.approximations import check_scene_amplitudes
 
     return check_scene_amplitudes(scene, exact=exact)

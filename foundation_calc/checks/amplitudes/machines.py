@@ -65,6 +65,10 @@ class BlockReport(AmplitudeVerdict):
     #: per machine with periodic inertia (cranks), the exact periodic solution's peaks and the first
     #: approximation's error (:class:`~foundation_calc.solvers.block.periodic_inertia.FirstApproximationError`)
     periodic: tuple = ()
+    #: the solution that ``motion`` holds and the limits judge, by the crank report's names:
+    #: ``"first_approximation"``, or ``"exact"`` (``fcalc amplitudes --exact``: every machine with
+    #: periodic inertia by its exact periodic solution)
+    checked: str = "first_approximation"
 
     @property
     def office_outcome(self) -> Outcome:
@@ -98,36 +102,43 @@ LIMITED_VALUES = {
 }
 
 
-#: [scene, its report, the report with the machines' periodic solution (None until asked)]
-#: of the last scene :func:`check_block` judged: ``fcalc check`` asks for the same scene's report
-#: three times (resonance, amplitudes, office findings), and a scene is frozen.
+#: [scene, its report, the report with the machines' periodic solution, the report judged with it
+#: (None until asked)] of the last scene :func:`check_block` judged: ``fcalc check`` asks for the
+#: same scene's report three times (resonance, amplitudes, office findings), and a scene is frozen.
 _LAST: list = []
 
 
-def check_block(scene, periodic: bool = False) -> BlockReport:
+def check_block(scene, periodic: bool = False, exact: bool = False) -> BlockReport:
     """Modes, resonance margins, steady state, limits, code zones and office checks of a
     ``block_foundation`` scene; with ``soil.modulus_range`` the resonances and amplitudes also over
     that range (module docstring); with ``periodic`` the exact periodic solution of the machines with
-    periodic inertia and the first approximation's error (:mod:`~foundation_calc.checks.amplitudes.periodic`). The
-    same scene object asked again gets the same report."""
+    periodic inertia and the first approximation's error (:mod:`~foundation_calc.checks.amplitudes.periodic`);
+    with ``exact`` also the limits, the code's zones and the verdict judged with that solution in
+    place of those machines' first approximation (the soil's modulus range keeps the first
+    approximation, as a crank scene's does). The same scene object asked again gets the same report."""
     if not _LAST or _LAST[0] is not scene:
-        _LAST[:] = [scene, _check_block(scene), None]
-    if not periodic:
+        _LAST[:] = [scene, _check_block(scene), None, None]
+    if not (periodic or exact):
         return _LAST[1]
     if _LAST[2] is None:
-        _LAST[2] = _with_periodic(scene, _LAST[1])
-    return _LAST[2]
+        _LAST[2:] = _with_periodic(scene, _LAST[1])
+    return _LAST[3] if exact else _LAST[2]
 
 
-def _with_periodic(scene, report: BlockReport) -> BlockReport:
-    """``report`` with its machines' exact periodic solution (:func:`check_block`'s ``periodic``)."""
-    from dataclasses import replace
+def _with_periodic(scene, report: BlockReport) -> tuple[BlockReport, BlockReport]:
+    """``report`` with its machines' exact periodic solution (:func:`check_block`'s ``periodic``),
+    and that report judged with it (``exact``; the same report without a machine with periodic
+    inertia or without a steady state)."""
+    if report.motion is None or not any(m.periodic_parts for m in scene.machines):
+        return report, report
+    from foundation_calc.checks.amplitudes.periodic import exact_motion, periodic_errors, periodic_solutions
 
-    if report.motion is None:
-        return report
-    from foundation_calc.checks.amplitudes.periodic import periodic_errors
-
-    return replace(report, periodic=periodic_errors(scene, scene.stable_model(), scene_impedance(scene)))
+    model, impedance = scene.stable_model(), scene_impedance(scene)
+    solutions = periodic_solutions(scene, model, impedance)
+    shown = replace(report, periodic=periodic_errors(scene, model, impedance, solutions))
+    motion = exact_motion(scene, model, impedance, solutions)
+    judged = _judged(scene, report.modes, model.cog, scene.excitations(), motion)
+    return shown, replace(shown, motion=motion, judgement=judged, checked="exact")
 
 
 def _check_block(scene) -> BlockReport:
@@ -182,25 +193,32 @@ def check_block_as_given(scene) -> BlockReport:
     stuck = any(resonant(modes, resonances(modes, exc)) for exc in excitations)
     motion = None if stuck else point_motion(model, excitations, [p.name for p in scene.points], [p.at for p in scene.points],
                                              impedance=impedance)
-    limits = scene.limits
-    supports = None
-    if limits.code is not None:
-        from foundation_calc.checks.support import block_supports
-
-        supports = block_supports(scene, modes, model.cog)
-    values = None if motion is None else (lambda quantity: getattr(motion, LIMITED_VALUES[quantity]))
     return BlockReport(
         modes=modes,
         speeds={exc.name: exc.omega for exc in excitations},
         resonance=resonance,
         resonant=stuck,
         motion=motion,
-        judgement=judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
-                        [(exc.name, exc.omega) for exc in excitations], supports),
+        judgement=_judged(scene, modes, model.cog, excitations, motion),
         office=office_rows(scene, model),
         total_mass=model.mass,
         cog=model.cog,
     )
+
+
+def _judged(scene, modes: BlockModes, cog, excitations, motion: PointMotion | None):
+    """The limit rows, the code's zone rows and warnings of ``motion`` (None: no steady state) of a
+    block scene with its ``modes`` and centre of mass ``cog`` [m]
+    (:func:`~foundation_calc.checks.amplitudes.report.judge`)."""
+    limits = scene.limits
+    supports = None
+    if limits.code is not None:
+        from foundation_calc.checks.support import block_supports
+
+        supports = block_supports(scene, modes, cog)
+    values = None if motion is None else (lambda quantity: getattr(motion, LIMITED_VALUES[quantity]))
+    return judge(None if motion is None else motion.names, DIRECTIONS, values, limits,
+                 [(exc.name, exc.omega) for exc in excitations], supports)
 
 
 __all__ = ["LIMITED_VALUES", "BlockReport", "ResonanceRow", "check_block",

@@ -25,9 +25,24 @@ COMBINATION = (
 #: The rotations of the block about x, y, z.
 ROTATIONS = ("rx", "ry", "rz")
 
-#: How the block's machines with periodic inertia are solved, in the JSON and under the table.
-PERIODIC_METHOD = ("exact periodic solution with the angle-dependent inertia of the machine's parts (harmonic"
-                   " balance); the limits judge the first approximation (averaged operator)")
+#: How the block's machines with periodic inertia are solved.
+PERIODIC_SOLUTION = "exact periodic solution with the angle-dependent inertia of the machine's parts (harmonic balance)"
+
+#: What judges the limits, by the report's ``checked`` (``--exact``: ``"exact"``), as said after the
+#: periodic inertia's table and in its JSON ``method``.
+JUDGED_BY = {"first_approximation": "the limits judge the first approximation",
+             "exact": "the limits judge the exact periodic solution"}
+
+#: The JSON ``method`` of a machine with periodic inertia when the first approximation is judged.
+PERIODIC_METHOD = f"{PERIODIC_SOLUTION}; {JUDGED_BY['first_approximation']} (averaged operator)"
+
+
+def periodic_method(report) -> str:
+    """The JSON ``method`` of ``report``'s machines with periodic inertia: how they are solved and
+    what judges the limits (:data:`JUDGED_BY`)."""
+    if report.checked == "first_approximation":
+        return PERIODIC_METHOD
+    return f"{PERIODIC_SOLUTION}; {JUDGED_BY[report.checked]}"
 
 
 def document_parts(report, scene, source: str) -> tuple[dict, dict, dict, dict]:
@@ -42,6 +57,8 @@ def document_parts(report, scene, source: str) -> tuple[dict, dict, dict, dict]:
     motion = report.motion
     head["resonant"] = report.resonant
     head["combination"] = COMBINATION
+    if report.checked != "first_approximation":  # --exact: which solution judges, as a crank's document says it
+        head["checked_with"] = report.checked
     if motion is not None:
         head["harmonics"] = _harmonics_document(motion)
         head["points"] = {
@@ -52,7 +69,7 @@ def document_parts(report, scene, source: str) -> tuple[dict, dict, dict, dict]:
         head["rotation_peak"] = dict(zip(ROTATIONS, map(float, motion.rotation_peak)))
     names = () if motion is None else motion.names
     return (head, {"office": office_rows_document(report)},
-            {"periodic_inertia": [_periodic_document(c, names) for c in report.periodic]}, {})
+            {"periodic_inertia": [_periodic_document(c, names, periodic_method(report)) for c in report.periodic]}, {})
 
 
 #: A point's JSON keys and the :class:`~foundation_calc.solvers.block.response.PointMotion` fields they read.
@@ -77,12 +94,13 @@ def _harmonics_document(motion) -> list[dict]:
     return harmonics
 
 
-def _periodic_document(c, names) -> dict:
-    """One machine's exact peaks, first-approximation peaks and error (JSON)."""
+def _periodic_document(c, names, method: str) -> dict:
+    """One machine's exact peaks, first-approximation peaks and error (JSON); ``method``: how it is
+    solved and what judges the limits (:func:`periodic_method`)."""
     def points(peaks):
         return {p: dict(zip(DIRECTIONS, map(float, peaks[i]))) for i, p in enumerate(names)}
 
-    return {"machine": c.name, "method": PERIODIC_METHOD, "harmonics": c.harmonics,
+    return {"machine": c.name, "method": method, "harmonics": c.harmonics,
             "first_approximation_error": c.error, "harmonic_change": c.harmonic_change,
             "exact": {"displacement_peak": points(c.exact_peak), "rotation_peak": dict(zip(ROTATIONS, map(float, c.rotation_exact)))},
             "first_approximation": {"displacement_peak": points(c.first_peak),
@@ -164,7 +182,7 @@ def print_after_zones(report, units: DisplayUnits) -> None:
         capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
                   f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
         stdout().print(f"{escape(c.name)}: first approximation's error {c.error:.2g} (largest relative difference of the"
-                       f" peaks from the exact solution's){capped}; the limits judge the first approximation")
+                       f" peaks from the exact solution's){capped}; {JUDGED_BY[report.checked]}")
 
 
 def print_notes(report, strict: bool) -> None:
@@ -183,5 +201,5 @@ def verdict_line(report, strict: bool) -> str:
     return f"{verdict_text(report.amplitude_outcome.value, strict)}: amplitudes"
 
 
-__all__ = ["CODE_DIRECTIONS", "COMBINATION", "DIRECTIONS", "PERIODIC_METHOD", "document_parts",
-           "limits_title", "print_after_zones", "print_motion", "print_notes", "verdict_line", "warning"]
+__all__ = ["CODE_DIRECTIONS", "COMBINATION", "DIRECTIONS", "JUDGED_BY", "PERIODIC_METHOD", "PERIODIC_SOLUTION", "document_parts",
+           "limits_title", "periodic_method", "print_after_zones", "print_motion", "print_notes", "verdict_line", "warning"]

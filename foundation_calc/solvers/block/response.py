@@ -364,11 +364,15 @@ def largest_peak(parts) -> tuple[np.ndarray, np.ndarray]:
 PEAKS = frozenset({"peak", "velocity_peak", "acceleration_peak", "rotation_peak"})
 
 
-def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, impedance=None) -> PointMotion:
+def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, impedance=None, given=None) -> PointMotion:
     """Steady motion of G and of ``points`` (P, 3) [m] from O under every machine (module
     docstring: peaks add, RMS values add as root-sum-square), of one block or of a batch (stacks
     in ``model``, and points (..., P, 3) where they move with the block); ``peaks``: the peaks of
-    :data:`PEAKS` to search (the others are None); on the soil ``impedance`` if given."""
+    :data:`PEAKS` to search (the others are None); on the soil ``impedance`` if given.
+    ``given``: per machine, in ``excitations``' order, None for its first approximation
+    (:func:`complex_amplitudes`) or its own harmonics (Z (..., H, 6) [m, rad], orders (H,)) at its
+    speed, e.g. the exact periodic solution of its periodic inertia
+    (:func:`~foundation_calc.solvers.block.periodic_inertia.exact_response`)."""
     cog = np.asarray(model.cog)
     fixed = np.asarray(points, dtype=float)
     fixed = fixed if fixed.ndim >= 2 else fixed.reshape(-1, 3)  # (P, 3), or (..., P, 3) for a batch
@@ -379,8 +383,11 @@ def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, imp
     disp, rot = [], []
     vsq = usq = asq = np.zeros(at.shape)
     found = {name: 0.0 for name in peaks}
-    for exc in excitations:
-        Z = complex_amplitudes(model, exc, impedance=impedance)  # (..., H, 6)
+    given = (None,) * len(excitations) if given is None else given
+    excitations = [exc if own is None else replace(exc, orders=np.asarray(own[1]), Q=None, Q_inertial=None)
+                   for exc, own in zip(excitations, given)]  # a machine's given harmonics: its orders, no loads
+    for exc, own in zip(excitations, given):
+        Z = complex_amplitudes(model, exc, impedance=impedance) if own is None else np.asarray(own[0])  # (..., H, 6)
         U = np.einsum("...pij,...hj->...pih", T, Z)  # (..., P, 3, H)
         V, A = velocity(U, exc), acceleration(U, exc)
         R = np.swapaxes(Z[..., 3:], -1, -2)  # (..., 3, H)
