@@ -115,16 +115,18 @@ def test_the_amplitudes_table_shows_the_exact_solution(runner):
 
 
 def test_the_steady_state_table_names_its_unit_and_prints_round_off_as_zero(runner):
-    """The vertical two-throw machine is symmetric about x = 0: its x motion at 2ω is round-off
-    (1e-22 m beside 3.5e-5 m at ω) and prints 0 without a phase; the title says the unit [m]
-    (once read as markup and dropped). The JSON keeps the computed numbers."""
+    """The vertical two-throw machine's odd orders above the first force the plane x-z only (its
+    throws' x forces and moments about y): G's y motion at 3ω, what the block's products of inertia
+    and the crankshaft's mean gyroscopic coupling (θ_x with θ_z) carry into y, is 2e-18 m beside
+    3.5e-5 m at ω, below the table's round-off, and prints 0 without a phase; the title says the
+    unit [m] (once read as markup and dropped). The JSON keeps the computed numbers."""
     text = runner.invoke(app, ["amplitudes", str(TWO_THROW)], env={"COLUMNS": "200"}).stdout
     assert "amplitude [m] and phase [°]" in text
     table = text[text.index("amplitude [m] and phase"):]
     table = table[: table.index("└")]
     rows = [[c.strip() for c in line.split("│")[1:-1]] for line in table.splitlines() if line.startswith("│")]
-    order_2_at_g = next(r for r in rows if r[:3] == ["compressor", "2", "G"])
-    assert order_2_at_g[3] == "0" and "∠" in order_2_at_g[4]
+    order_3_at_g = next(r for r in rows if r[:3] == ["compressor", "3", "G"])
+    assert order_3_at_g[4] == "0" and "∠" in order_3_at_g[3]
     assert not any("e-2" in cell for row in rows for cell in row), "a value of 1e-20 m is the solver's noise"
 
 
@@ -159,6 +161,9 @@ def test_the_sheet_says_what_the_cranks_add_and_how_far_the_first_approximation_
     text = sheet.read_text()
     assert "2 crank throws" in text and "moving mass 450.0 kg" in text
     assert "the first approximation judged here differs from it by at most" in text
+    # C as solved: the dashpots and the crankshaft's mean gyroscopic coupling, its entries named
+    assert "plus the machines' mean gyroscopic coupling D̄ at their speeds" in text
+    assert "= -85.27 N m s/rad" in text and "| C, row θ\\_x | 0 | 0 | 0 | 1.600·10⁷ | 0 | -8.527·10¹ |" in text
 
 
 def test_a_rod_barely_longer_than_its_crank_warns_and_the_exact_solution_states_its_truncation(two_throw, monkeypatch):

@@ -210,10 +210,11 @@ def _with_exciter(machine) -> list:
 
 
 def _direct_block(omega):
-    """Complex amplitude of q at ω from (K - ω² M + iω C) Z = Q, written out: the block, the
+    """Complex amplitude of q at ω from (K - ω² M + iω (C + D̄)) Z = Q, written out: the block, the
     machine's frame and the rotor as a ring m l²/2 (I + e eᵀ) about ρ; the rotating force
     m ω² L and the weight's moment -g m L × e3 of L = l (t1 cos θ + t2 sin θ), θ = σωt + φ0,
-    as Re(Q e^{iωt})."""
+    as Re(Q e^{iωt}); the rotor's angular momentum relative to the block, h = σ ω m l² e, as the
+    gyroscopic coupling D̄ = -[h]× of the rotations (Euler's J θ'' + θ' × h)."""
     L_, B_, H_, rho = BLOCK
     m_b = L_ * B_ * H_ * rho
     p = EXCITER
@@ -233,7 +234,10 @@ def _direct_block(omega):
     L_hat = phasor if p.sense > 0 else phasor.conj()
     F, Mw = p.m * omega**2 * L_hat, -G * p.m * np.cross(L_hat, E3)
     Q = np.concatenate([F, Mw + np.cross(p.rho, F)])
-    return np.linalg.solve(K - omega**2 * M + 1j * omega * np.diag(DASHPOTS), Q), M
+    h = p.sense * omega * p.m * p.l**2 * e
+    C = np.diag(DASHPOTS).astype(float)
+    C[3:, 3:] -= np.array([[0.0, -h[2], h[1]], [h[2], 0.0, -h[0]], [-h[1], h[0], 0.0]])
+    return np.linalg.solve(K - omega**2 * M + 1j * omega * C, Q), M
 
 
 def test_an_exciter_part_on_a_block_runs_through_the_machine_interface(monkeypatch, tmp_path):

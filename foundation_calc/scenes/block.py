@@ -333,7 +333,8 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
     def model(self, base=None, block=None, machine_cogs=None):
         """The block with every machine on its support's springs and dashpots at O
         (:func:`~foundation_calc.solvers.block.model.block_model`), a frequency-dependent
-        support's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency).
+        support's taken at ω = 0 (:meth:`soil_impedance` gives them at any frequency), and the
+        machines' mean gyroscopic coupling in C (:meth:`gyroscopic`).
 
         ``base`` (L, B) [m] and ``block`` (mass [kg], centre of mass (..., 3) [m], central inertia
         tensor (..., 3, 3) [kg m²]) replace the scene's own, as arrays over a batch of candidate
@@ -345,10 +346,17 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         L, B = self.base if base is None else base
         at = self.support(base, block, machine_cogs).impedance(0.0)
         return block_model(*self._bodies(block, machine_cogs), at.springs, GRAVITY, (L * L + B * B) ** 0.5,
-                           dashpots=at.dashpots, coupling=at.coupling)
+                           dashpots=at.dashpots, coupling=at.coupling, gyroscopic=self.gyroscopic())
+
+    def gyroscopic(self):
+        """The machines' mean gyroscopic coupling Σ D̄ at their speeds (6, 6) [kg/s, ..., kg m²/s]
+        (:attr:`~foundation_calc.scenes.block_parts.BlockMachine.gyroscopic`), which :meth:`model`
+        adds to C; None when no machine has one."""
+        found = [m.gyroscopic for m in self.machines if m.gyroscopic is not None]
+        return sum(found) if found else None
 
     def excitations(self):
         """Every machine's loads at its speed (:class:`~foundation_calc.solvers.block.model.Excitation`)."""
         from foundation_calc.solvers.block.model import excitation
 
-        return [excitation(m.name, m.omega_rad_s, m.load_rows()) for m in self.machines]
+        return [excitation(m.name, m.omega_rad_s, m.load_rows(), m.gyroscopic) for m in self.machines]

@@ -299,6 +299,24 @@ class BlockMachine(SpeedFields):
         """The parts with an angle-dependent inertia (crank mechanisms, exciters' rotors)."""
         return tuple(part for part in self.parts if part.periodic)
 
+    @cached_property
+    def gyroscopic(self):
+        """Its parts' mean gyroscopic coupling D̄ at its speed, summed (6, 6) [kg/s, ..., kg m²/s]
+        (:meth:`~foundation_calc.solvers.machines.part.MachinePart.gyroscopic`); None when no part
+        has periodic inertia, or their D̄ cancel (two rotors of a directional exciter): its skew part
+        (the symmetric part is the mean of a time derivative, round-off), entries below 1e-12 of the
+        largest of the parts' D̄ their round-off."""
+        import numpy as np
+
+        each = [part.gyroscopic(self.omega_rad_s) for part in self.periodic_parts]
+        if not each:
+            return None
+        total = sum(each)
+        total = (total - total.T) / 2.0
+        scale = max(float(np.abs(D).max()) for D in each)
+        total = np.where(np.abs(total) > 1e-12 * scale, total, 0.0)
+        return total if np.any(total) else None
+
     @property
     def carried_inertia(self) -> float:
         """What the motor turns besides its [drive] inertia (the platform's m l²): its parts' (an

@@ -182,6 +182,19 @@ def _machine_parts(scene, periodic) -> list[Paragraph]:
     return out
 
 
+def _gyroscopic_text(D) -> str:
+    """What C holds besides the dashpots: the machines' mean gyroscopic coupling D̄ (the mean over a
+    revolution of their Coriolis matrix D(ωt), skew-symmetric), its entries named; "" without."""
+    if D is None:
+        return ""
+    names = ("u_x", "u_y", "u_z", "θ_x", "θ_y", "θ_z")
+    pairs = [f"D̄({names[i]}, {names[j]}) = −D̄({names[j]}, {names[i]}) = {figure(float(D[i, j]), 4)}"
+             f" {'N m s/rad' if i >= 3 else 'N s'}" for i in range(6) for j in range(i + 1, 6) if D[i, j] != 0.0]
+    return (", plus the machines' mean gyroscopic coupling D̄ at their speeds (the mean over a revolution of"
+            " their crank mechanisms' and rotors' Coriolis matrix D(ωt), skew-symmetric: −[h]× of their mean"
+            " angular momentum h; it does no work and leaves ζ as it is): " + ", ".join(pairs))
+
+
 def vec_m(v) -> str:
     """A vector as printed: (x, y, z), 4 figures, no −0."""
     return "(" + ", ".join(figure(float(c) + 0.0, 4) for c in v) + ")"
@@ -246,7 +259,7 @@ def block_sections_blocks(scene, amplitudes: dict | None, units: DisplayUnits) -
         "Rigid block in six degrees of freedom about O (centre of the base at base level, x along the length, y along"
         " the width, z up): M q'' + C q' + K q = Σ_machines Σ_n Re(Q_n e^{i nωt}). M: every body by parallel axes;"
         f" K: {springs[0]} less the weight's tilt W z_G about x and y ([KM] (3.4)'s −P h); C: the dashpots at"
-        f" {springs[1]}; Q_n: each load (F, M + r_F × F) e^{{iφ}}.")]
+        f" {springs[1]}{_gyroscopic_text(model.gyroscopic)}; Q_n: each load (F, M + r_F × F) e^{{iφ}}.")]
     from foundation_calc.output.report.stratum import stratum_blocks
 
     stratum = stratum_blocks(getattr(support, "soil", None), *scene.base, True, amplitudes)  # a footing's stratum

@@ -13,10 +13,18 @@ of motion about the static equilibrium, linear::
                                    m_i = M_Σ for a translation and the moment of inertia about the
                                    axis through O for a rotation (ACI 351.3R-18, 4.5; Richart, Hall
                                    & Woods 1970, ch. 10)
+        + Σ_machines D̄            the machines' mean gyroscopic coupling at their speeds: the mean
+                                   over a revolution of D(φ) of Eq. (1) of
+                                   :mod:`foundation_calc.solvers.rigid_body.periodic`
+                                   (:meth:`~foundation_calc.solvers.machines.part.MachinePart.gyroscopic`),
+                                   part of the averaged operator as the mean mass is of M
     Q_n = Σ_loads of order n (F, M + r_F × F) e^{iφ}        a load F, M at r_F carried to O
 
 The weight's term makes the rocking modes of a tall block softer (Krichever & Makarov (3.4), the
-crank foundation's −P h).
+crank foundation's −P h). D̄ is skew-symmetric (-[h]× in the rotations, h a machine's mean angular
+momentum relative to the block: a multi-throw crankshaft's and rods', a single exciter rotor's): it
+does no work, leaves the modes and their damping ratios as they are, and couples the two rotations
+normal to h in the steady state; it grows as its machine's speed (:meth:`Excitation.damping_change`).
 """
 
 from __future__ import annotations
@@ -43,6 +51,7 @@ class BlockModel:
     springs : the six springs at O [N/m, N m/rad]
     coupling : the off-diagonal springs at O of a coupled support (a pile group's sway-rocking),
         (..., 6, 6), zero on the diagonal; None for six uncoupled springs
+    gyroscopic : Σ D̄ of the machines at their speeds (6, 6), in C (module docstring); None for none
 
     A batch of designs (``fcalc design``) holds stacks: M, K, C (..., 6, 6), mass and size (...),
     cog (..., 3), J_G (..., 3, 3), springs (..., 6).
@@ -57,11 +66,12 @@ class BlockModel:
     size: float | np.ndarray
     springs: np.ndarray
     coupling: np.ndarray | None = None
+    gyroscopic: np.ndarray | None = None
 
     @property
     def damped(self) -> bool:
-        """True when a dashpot acts."""
-        return bool(np.any(self.C != 0.0))
+        """True when a dashpot acts (C's symmetric part: the gyroscopic coupling dissipates nothing)."""
+        return bool(np.any(self.C + np.swapaxes(self.C, -1, -2) != 0.0))
 
     def soil_matrices(self, springs, dashpots, coupled=None, coupled_dashpots=None) -> tuple[np.ndarray, np.ndarray]:
         """K and C of Eq. (1) with the springs and dashpots at O replaced by ``springs`` and
@@ -69,7 +79,8 @@ class BlockModel:
         frequency), shaped batch + extra + (6,): the model's batch axes first (none for one
         block), then any further axes (the frequencies of several orders); K, C batch + extra + (6, 6).
         ``coupled``, ``coupled_dashpots``: a coupled support's off-diagonal springs and dashpots
-        there, batch + extra + (6, 6) (replacing :attr:`coupling`)."""
+        there, batch + extra + (6, 6) (replacing :attr:`coupling`). C keeps the machines' mean
+        gyroscopic coupling (:attr:`gyroscopic`), which is not the support's."""
         springs = np.asarray(springs, dtype=float)
         extra = springs.ndim - np.ndim(self.springs)
         batch = np.ndim(self.springs) - 1
@@ -77,6 +88,8 @@ class BlockModel:
         own = np.expand_dims(self.springs, axes)
         K = np.expand_dims(self.K, axes) + diagonal_matrices(springs - own)
         C = diagonal_matrices(np.broadcast_to(dashpots, springs.shape))
+        if self.gyroscopic is not None:
+            C = C + self.gyroscopic
         if coupled is None:
             return K, C
         return K + coupled - np.expand_dims(self.coupling, axes), C + coupled_dashpots
@@ -93,6 +106,8 @@ class Excitation:
     orders : distinct orders n, ascending, shape (H,)
     Q : complex amplitudes (F, M about O) of order n at the speed ω, shape (H, 6) [N, N m]
     Q_inertial : the part of Q that grows as the speed squared (unbalances), shape (H, 6)
+    gyroscopic : the machine's mean gyroscopic coupling D̄ at the speed ω (6, 6) [kg/s, ..., kg m²/s],
+        which the block's C holds (:class:`BlockModel`); None for none
     """
 
     name: str
@@ -100,6 +115,15 @@ class Excitation:
     orders: np.ndarray
     Q: np.ndarray
     Q_inertial: np.ndarray
+    gyroscopic: np.ndarray | None = None
+
+    def damping_change(self, omega):
+        """What the block's C gains when this machine runs at the speeds ``omega`` [rad/s] (any
+        shape) instead of ω: D̄ (ω'/ω - 1) (D̄ grows as the speed), shape omega.shape + (6, 6); 0 without D̄."""
+        if self.gyroscopic is None:
+            return 0.0
+        ratio = np.asarray(omega, dtype=float) / self.omega - 1.0
+        return ratio[..., None, None] * self.gyroscopic
 
     def loads_at(self, omega) -> np.ndarray:
         """Q at the speeds ``omega`` [rad/s] (any shape): Q + Q_inertial ((ω/ω_0)² - 1), shape
@@ -108,7 +132,8 @@ class Excitation:
         return self.Q + ratio[..., None, None] * self.Q_inertial
 
 
-def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None, coupling=None) -> BlockModel:
+def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=None, coupling=None,
+                gyroscopic=None) -> BlockModel:
     """Assemble Eq. (1).
 
     Parameters
@@ -121,6 +146,9 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
     ratios : (6,) damping ratios of the uncoupled motions [-] (instead of ``dashpots``), or None
     coupling : (K_c, C_c) off-diagonal springs and dashpots at O of a coupled support, (..., 6, 6)
         each, added to K and C; or None
+    gyroscopic : (6, 6) the machines' mean gyroscopic coupling Σ D̄ at their speeds
+        [kg/s, ..., kg m²/s], added to C (the same for every block of a batch: D̄ does not change
+        when a machine moves along the body); or None
 
     A batch of designs: a body given as a stack (:func:`~foundation_calc.solvers.rigid_body.inertia.bodies_mass_matrix`),
     springs, ratios (..., 6) and size (...) give the stacks of :class:`BlockModel`.
@@ -139,15 +167,19 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
     if coupling is not None:
         K_c, C_c = coupling
         K, C = K + K_c, C + C_c
+    if gyroscopic is not None:
+        gyroscopic = np.asarray(gyroscopic, dtype=float)
+        C = C + gyroscopic
     C = np.broadcast_to(C, K.shape)
     size = float(size) if np.ndim(size) == 0 else np.asarray(size, dtype=float)
-    return BlockModel(M, K, C, mass, cog, J_G, size, springs, K_c)
+    return BlockModel(M, K, C, mass, cog, J_G, size, springs, K_c, gyroscopic)
 
 
-def excitation(name, omega, rows) -> Excitation:
+def excitation(name, omega, rows, gyroscopic=None) -> Excitation:
     """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
     phase [rad], point [m], inertial) each; loads of one order add. A point may be a batch
-    (..., 3) (the machine on each of a batch of candidate blocks): Q is then (..., H, 6)."""
+    (..., 3) (the machine on each of a batch of candidate blocks): Q is then (..., H, 6).
+    ``gyroscopic``: the machine's mean gyroscopic coupling D̄ at ω (6, 6), or None."""
     orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
     batch = np.broadcast_shapes(*(np.shape(r[4])[:-1] for r in rows))
     Q = np.zeros(batch + (len(orders), 6), dtype=complex)
@@ -157,7 +189,8 @@ def excitation(name, omega, rows) -> Excitation:
         Q[..., np.searchsorted(orders, n), :] += q
         if inertial:
             Q_inertial[..., np.searchsorted(orders, n), :] += q
-    return Excitation(str(name), float(omega), orders, Q, Q_inertial)
+    return Excitation(str(name), float(omega), orders, Q, Q_inertial,
+                      None if gyroscopic is None else np.asarray(gyroscopic, dtype=float))
 
 
 __all__ = ["BlockModel", "Excitation", "block_model", "excitation"]

@@ -2,12 +2,14 @@
 with their angle-dependent inertia, and the error of the first approximation.
 
 Source: Eq. (1) of :mod:`foundation_calc.solvers.rigid_body.periodic` with the block's matrices
-(:mod:`.model`: the parts' mean mass and weight are in M and K already, as bodies) and one
-machine's periodic terms (the sum over its parts with periodic inertia of their M(φ), D(φ), S(φ),
+(:mod:`.model`: the parts' mean mass and weight are in M and K already, as bodies, and their mean
+gyroscopic coupling D̄ in C) and one machine's periodic terms (the sum over its parts with periodic
+inertia of their M(φ), D(φ), S(φ),
 :meth:`~foundation_calc.solvers.machines.part.MachinePart.periodic_inertia`, e.g. Eqs. (1)-(3) of
-:mod:`foundation_calc.solvers.machines.crank_mechanism`, less the means of M and S); its loads Q_n
-are the machine's whole excitation (every part's harmonics, all at its speed). Machines at other speeds keep their mean inertia only (their
-periodic terms would make the system quasi-periodic), and act on the first approximation alone.
+:mod:`foundation_calc.solvers.machines.crank_mechanism`, less the means of M and S and less the D̄ that C holds); its loads Q_n
+are the machine's whole excitation (every part's harmonics, all at its speed). Machines at other speeds keep their mean inertia
+and mean gyroscopic coupling only (their periodic terms would make the system quasi-periodic), and act on the first
+approximation alone.
 
 The first approximation is :func:`~foundation_calc.solvers.block.response.complex_amplitudes`
 (the averaged operator). Its error, as the crank scene reports it, is the difference of the peaks
@@ -37,6 +39,8 @@ def exact_response(model: BlockModel, exc: Excitation, parts, g, impedance=None)
     inertia (:class:`~foundation_calc.solvers.machines.part.MachinePart`, e.g. a
     :class:`~foundation_calc.solvers.machines.crank_mechanism.CrankMechanism`) turn at its speed
     (module docstring); g [m/s²]; on the soil ``impedance`` (Ω -> springs, dashpots at O) if given.
+    D(φ) less the machine's mean gyroscopic coupling ``exc.gyroscopic``, which the model's C holds
+    (:class:`~foundation_calc.solvers.block.model.Excitation`; D whole when it has none).
 
     Raises
     ------
@@ -46,7 +50,7 @@ def exact_response(model: BlockModel, exc: Excitation, parts, g, impedance=None)
 
     def periodic(N):
         M, D, S = (sum(terms) for terms in zip(*(part.periodic_inertia(exc.omega, g, N) for part in parts)))
-        return M - M.mean(axis=0), D, S - S.mean(axis=0)
+        return M - M.mean(axis=0), D if exc.gyroscopic is None else D - exc.gyroscopic, S - S.mean(axis=0)
 
     soil = None if impedance is None else (lambda W: model.soil_matrices(*impedance(W)))
     return periodic_solution(exc.omega, model.M, model.K, model.C, periodic, dense_loads(exc), soil)

@@ -82,7 +82,8 @@ def batch_modes(model: BlockModel) -> ModeBatch:
     dominant = dominant_motions(shapes, model.mass, model.cog, np.diagonal(model.J_G, 0, -2, -1))
     stable = p2[..., 0] > 1e-12 * p2[..., -1]
     p = np.sqrt(np.maximum(p2, 0.0))
-    modal_c = np.sum(shapes * (model.C @ shapes), axis=-2)
+    dissipative = (model.C + np.swapaxes(model.C, -1, -2)) / 2.0  # φᵀ C φ of C's symmetric part: a gyroscopic D̄ adds none
+    modal_c = np.sum(shapes * (dissipative @ shapes), axis=-2)
     return ModeBatch(p, shapes, dominant, modal_c / (2.0 * np.where(p > 0.0, p, np.inf)), p2, stable)
 
 
@@ -240,19 +241,30 @@ def complex_amplitudes(model: BlockModel, exc: Excitation, omega=None, impedance
     machine's speed or at the speeds ``omega`` (any shape) [rad/s] (an unbalance's load grows as
     ω², :meth:`~foundation_calc.solvers.block.model.Excitation.loads_at`); at the machine's speed
     the block may be a batch (stacks (..., 6, 6) give (..., H, 6)); on the soil ``impedance``
-    (module docstring) each order with K(nω), C(nω)."""
+    (module docstring) each order with K(nω), C(nω). C holds the machines' mean gyroscopic
+    coupling at their speeds (:class:`~foundation_calc.solvers.block.model.BlockModel`); at the
+    speeds ``omega`` this machine's grows with them
+    (:meth:`~foundation_calc.solvers.block.model.Excitation.damping_change`)."""
     if impedance is not None:
         speeds = np.asarray(exc.omega if omega is None else omega, dtype=float)
         Omega = np.broadcast_to(speeds[..., None] * exc.orders, np.shape(model.K)[:-2] + speeds.shape + exc.orders.shape)
         K, C = model.soil_matrices(*impedance(Omega))
         batch = np.ndim(model.M) - 2
         M = np.expand_dims(model.M, tuple(range(batch, Omega.ndim)))
-        return harmonic_response(K, C, M, exc.Q if omega is None else exc.loads_at(speeds), Omega)
+        if omega is None:
+            return harmonic_response(K, C, M, exc.Q, Omega)
+        return harmonic_response(K, C + _per_order(exc.damping_change(speeds)), M, exc.loads_at(speeds), Omega)
     if omega is None:
         K, C, M = (np.asarray(A)[..., None, :, :] for A in (model.K, model.C, model.M))
         return harmonic_response(K, C, M, exc.Q, exc.omega * exc.orders)
     omega = np.asarray(omega, dtype=float)
-    return harmonic_response(model.K, model.C, model.M, exc.loads_at(omega), omega[..., None] * exc.orders)
+    C = model.C + _per_order(exc.damping_change(omega))
+    return harmonic_response(model.K, C, model.M, exc.loads_at(omega), omega[..., None] * exc.orders)
+
+
+def _per_order(change):
+    """A change of C at each speed, speeds + (6, 6), with an axis for the orders: speeds + (1, 6, 6)."""
+    return np.expand_dims(change, -3) if np.ndim(change) else change
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,10 @@
 """One machine of a block foundation as a linear structure for start-up and run-down.
 
 The block's Eq. (1) of :mod:`.model` (M, C, K about O: the rigid-body core's mass matrix, the
-springs with the weight's tilt, the dashpots or the uncoupled damping ratios as dashpots) under
+springs with the weight's tilt, the dashpots or the uncoupled damping ratios as dashpots, and the
+machines' mean gyroscopic coupling at their operating speeds, kept there through the ramp: it
+grows as the speed, does no work, and at the operating speed the steady state is then
+``fcalc amplitudes``') under
 one machine's loads. As for a crank machine given by its vendor's loads, every load of the
 machine acts as an unbalance while the speed changes: its amplitude grows as Q_n (Ω/ω)², Q_n the
 generalised force of order n at the machine's operating speed ω (an unbalance's exactly, a

@@ -39,7 +39,9 @@ W z_G about x and y; the rotation's off-diagonal terms m g r_x θ_x θ_z of the 
 left out there and here). The time average of (1) is the mean mass properties; of (3) the weight
 tilt of the mean positions (the inertia terms average to zero); (4) without its mean is the
 forcing on a fixed body at constant ω (its mean is static). The mean of (2) is the mechanism's
-mean gyroscopic coupling (zero for a plane throw's own plane).
+mean gyroscopic coupling (zero for a plane throw's own plane; two throws at different angles on
+one shaft give the rotations normal to it a skew coupling ∝ ω), which the block's averaged
+operator keeps in its C (:meth:`CrankMechanism.gyroscopic`).
 
 References
 ----------
@@ -325,6 +327,12 @@ class CrankMechanism(MachinePart):
         """Eqs. (1)-(3) at N phases (:func:`mechanism_samples`)."""
         s = mechanism_samples(self.throws, omega, g, N)
         return s.M, s.D, s.S
+
+    def gyroscopic(self, omega: float) -> np.ndarray:
+        """The mean of Eq. (2) over a revolution on the throws' own sampling (:func:`samples_for`):
+        -[h]× in the rotations, h = Σ m mean(r × r') the moving parts' mean angular momentum
+        relative to the body [N m s]; 0 in the u-rows (r' has no mean)."""
+        return mechanism_samples(self.throws, omega, 0.0).D.mean(axis=0)
 
     def load_rows(self, omega: float, g: float) -> list[LoadRow]:
         """The forcing harmonics Q_n (Eq. (4), :func:`forcing_harmonics`) as loads at :attr:`at`:

@@ -26,8 +26,11 @@ the form of :mod:`foundation_calc.solvers.platform.dynamics`), per rotor::
 (4) is a force m ω² L(t) rotating at ω through ρ (inertial, ∝ ω²) and the moment -g m L × e3 of
 the rotor's weight about its axis point (not inertial): two loads of order 1 a quarter period
 apart for each. The last term of (3) is the weight's tilt of the rotor's mean position
-(:func:`~foundation_calc.solvers.rigid_body.kinematics.weight_tilt`); the rest of (3) and all of
-(2) and (4) average to zero over a revolution. These differ from the crank mechanism's Lagrange
+(:func:`~foundation_calc.solvers.rigid_body.kinematics.weight_tilt`); the rest of (3) and (4)
+average to zero over a revolution, and (2) to the rotor's gyroscopic coupling
+-2m mean(L' Lᵀ) = -σ ω m l² (t2 t1ᵀ - t1 t2ᵀ) = -[σ ω m l² e]× in the rotations (its angular
+momentum about its axis; two rotors of opposite sense cancel it), which the block's averaged
+operator keeps in its C (:meth:`~foundation_calc.solvers.machines.part.MachinePart.gyroscopic`). These differ from the crank mechanism's Lagrange
 form (:mod:`.crank_mechanism`, rotation-vector coordinates) by terms of second order in the
 motion: the inertia moment's stiffness -m [S × L'']× here against -½ m [r × r'']× there (the
 Lagrange equations are these multiplied by the rotation's Jacobian), and the weight's off-diagonal

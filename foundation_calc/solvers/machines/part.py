@@ -9,7 +9,10 @@ coordinates of :mod:`foundation_calc.solvers.rigid_body`):
   mass matrix as one more body (None: the part adds no mass);
 - its periodic inertia M(φ), D(φ), S(φ), φ = ωt, sampled over one revolution
   (:meth:`MachinePart.periodic_inertia`; only parts with :attr:`MachinePart.periodic`), which the
-  exact periodic solution takes (:mod:`foundation_calc.solvers.block.periodic_inertia`);
+  exact periodic solution takes (:mod:`foundation_calc.solvers.block.periodic_inertia`), and
+  the mean of its D(φ) over a revolution, the part's mean gyroscopic coupling D̄
+  (:meth:`MachinePart.gyroscopic`), which the block's averaged operator keeps in its C as it keeps
+  the mean mass in M;
 - its forcing harmonics at the speed as loads at points (:meth:`MachinePart.load_rows`, each
   :class:`LoadRow`), which :func:`~foundation_calc.solvers.block.model.excitation` carries to O
   as Q_n, the rows whose amplitude grows as ω² marked ``inertial``;
@@ -33,6 +36,10 @@ from dataclasses import dataclass
 from typing import ClassVar, NamedTuple
 
 import numpy as np
+
+
+#: Phases per revolution on which :meth:`MachinePart.gyroscopic` averages D(φ).
+GYROSCOPIC_SAMPLES = 64
 
 
 class LoadRow(NamedTuple):
@@ -90,6 +97,21 @@ class MachinePart:
         ω [rad/s], gravity g [m/s²] (means included); None without periodic inertia."""
         return None
 
+    def gyroscopic(self, omega: float) -> np.ndarray | None:
+        """D̄, the mean over a revolution of the part's D(φ) at speed ω [rad/s] (:meth:`periodic_inertia`),
+        (6, 6) [kg/s, kg m/s; kg m/s, kg m²/s]; None without periodic inertia. D(φ) does not depend on
+        gravity; its mean is taken on :data:`GYROSCOPIC_SAMPLES` phases, exact for a D(φ) whose
+        Fourier series ends below that order (an exciter's ends at 2; a crank mechanism takes its
+        own sampling). D̄ is skew-symmetric, -[h]× in the rotations, h the part's mean angular
+        momentum relative to the body (it grows as ω, and a shift of the part along the body leaves it).
+
+        >>> MachinePart().gyroscopic(10.0) is None
+        True
+        """
+        if not self.periodic:
+            return None
+        return self.periodic_inertia(omega, 0.0, GYROSCOPIC_SAMPLES)[1].mean(axis=0)
+
     def load_rows(self, omega: float, g: float) -> list[LoadRow]:
         """The part's forcing at speed ω [rad/s], gravity g [m/s²], as loads at points."""
         raise NotImplementedError
@@ -110,4 +132,4 @@ class MachinePart:
         return None
 
 
-__all__ = ["LoadRow", "MachinePart", "Number", "Triple"]
+__all__ = ["GYROSCOPIC_SAMPLES", "LoadRow", "MachinePart", "Number", "Triple"]

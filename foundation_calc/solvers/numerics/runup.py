@@ -139,9 +139,10 @@ class Structure:
     def damped(self) -> bool:
         """True when any damping coefficient is non-zero, at rest or, on a frequency-dependent
         support, at a mode's own frequency (:attr:`Modes.damping`: a hysteretic loss factor's
-        dashpots η K/|ω| vanish from C at rest only)."""
+        dashpots η K/|ω| vanish from C at rest only); of C its symmetric part (a skew-symmetric
+        gyroscopic coupling dissipates nothing)."""
         modal = self.at_frequency is not None and self.modes is not None and np.any(self.modes.damping > 0.0)
-        return bool(np.any(self.damping != 0.0) or modal)
+        return bool(np.any(self.damping + np.swapaxes(self.damping, -1, -2) != 0.0) or modal)
 
 
 @dataclass(frozen=True)

@@ -17,8 +17,9 @@ one linear solve of 6(2H + 1) unknowns, exact for the truncated series. H = 8, 1
 until the solution changes by less than :data:`HARMONIC_TOLERANCE` relative to each coordinate's
 largest harmonic (or :data:`FLOOR` of the largest of all; the coefficients of a crank mechanism fall geometrically with n).
 
-The first approximation drops ΔM, D, ΔS (the averaged operator: mean mass and weight); each
-order then solves alone, (K - (nω)² M + i nω C) Z_n = Q_n
+The first approximation drops ΔM, D, ΔS (the averaged operator: mean mass and weight, and with
+the block's C the mean of D, :mod:`foundation_calc.solvers.block.model`, so that D here is then
+D(φ) less its mean); each order then solves alone, (K - (nω)² M + i nω C) Z_n = Q_n
 (:func:`~foundation_calc.solvers.rigid_body.harmonic.harmonic_response`).
 """
 
