@@ -52,8 +52,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import (FAIL, PASS, RULE_OUTCOME, WARN, Batch, CandidateVerdicts, failing,
-                                                      largest_ratio)
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, Batch, CandidateVerdicts, failing, largest_ratio
 
 #: The scene keys a candidate may vary [m].
 VARIABLE_KEYS = ("block.length", "block.width", "block.height")
@@ -94,6 +93,7 @@ def _resonance(scene, modes, excitations):
     """Outcome, utilisation, governing index and reasons of the ``resonance`` check
     (:func:`~foundation_calc.checks.amplitudes.machines.resonance_rows` and ``BlockReport.nearest``)."""
     from foundation_calc.checks.amplitudes.machines import condition_label
+    from foundation_calc.checks.resonance.batch import governing_verdicts
     from foundation_calc.checks.resonance.rule import judge, required_detuning
     from foundation_calc.solvers.block.response import resonances
     from foundation_calc.solvers.rigid_body.modes import MOTIONS
@@ -108,65 +108,48 @@ def _resonance(scene, modes, excitations):
     margin, share, order = np.concatenate(margins, -1), np.concatenate(shares, -1), np.concatenate(orders)
     required = required_detuning(scene.limits.detuning, order)
     verdict = judge(margin, order, share, required, np.zeros(order.shape, dtype=bool))
-    rows = np.arange(len(margin))
     governing = verdict.governing
-    utilisation = verdict.needed[rows, governing] / margin[rows, governing]
-    outcome = RULE_OUTCOME[verdict.worst]
-    motion = modes.dominant[rows, np.array([j - 1 for _, _, j in labels])[governing]]
+    motion = modes.dominant[np.arange(len(margin)), np.array([j - 1 for _, _, j in labels])[governing]]
     reasons = tuple(
         condition_label(SimpleNamespace(machine=name, order=n, mode=j, motion=m))
         for name, n, j in labels for m in MOTIONS
     )
-    return outcome, utilisation, governing * len(MOTIONS) + motion, reasons
+    return *governing_verdicts(verdict, margin), governing * len(MOTIONS) + motion, reasons
 
 
 def _amplitudes(scene, model, modes, excitations, points, impedance=None):
     """Outcome, utilisation, governing index and reasons of the ``amplitudes`` check
-    (:func:`~foundation_calc.checks.amplitudes.report.judge`)."""
+    (:func:`~foundation_calc.checks.amplitudes.report.judge`), by the one batch judge
+    (:func:`~foundation_calc.checks.amplitudes.batch.judge_batch`): a peak is the exact largest of
+    the machines' combined motion over every point and direction, at its row alone (the other rows
+    cannot govern: -inf); an RMS value, every row's."""
+    from foundation_calc.checks.amplitudes.batch import judge_batch
     from foundation_calc.checks.amplitudes.machines import DIRECTIONS, LIMITED_VALUES
-    from foundation_calc.checks.codes import code_warnings
-    from foundation_calc.checks.design.code_zones import code_zones
-    from foundation_calc.checks.limits import exceeds, limited_quantities
     from foundation_calc.solvers.block.response import acceleration, largest_peak, point_motion, resonances, resonant, velocity
 
-    limits = scene.limits
     n = len(model.M)
     stuck = np.zeros(n, dtype=bool)
     for exc in excitations:
         stuck |= resonant(modes, resonances(modes, exc))
-    quantities = limited_quantities(limits)
     # the peak fields of PointMotion -> the series of a machine's displacement amplitudes U whose peak each holds
     rates = {"peak": lambda U, exc: U, "velocity_peak": velocity, "acceleration_peak": acceleration}
     names = ["G"] + [p.name for p in scene.points]
-    ratios, failed, reasons = [], np.zeros(n, dtype=bool), []
-    worst = np.zeros(n, dtype=np.int8)
-    if quantities or limits.code is not None:
-        motion = point_motion(model, excitations, names[1:], points, frozenset(), impedance=impedance)
-        rows = [f"at {p} ({d})" for p in names for d in DIRECTIONS]
-        for quantity, limit in quantities.items():
-            field = LIMITED_VALUES[quantity]
-            if field in rates:  # the largest peak of every point and direction, found exactly
-                parts = [(rates[field](U, exc), exc.orders) for U, exc in zip(motion.displacement, excitations)]
-                largest, row = largest_peak([(Z.reshape(n, -1, Z.shape[-1]), orders) for Z, orders in parts])
-            else:
-                values = getattr(motion, field).reshape(n, -1)  # (N, P·3)
-                row = np.argmax(values, axis=-1)
-                largest = values[np.arange(n), row]
-            ratio = np.full((n, len(rows)), -np.inf)
-            ratio[np.arange(n), row] = largest / limit  # the other rows cannot govern
-            ratios.append(ratio)
-            failed |= exceeds(largest, limit)
-            reasons += [f"{quantity} {r}" for r in rows]
-        if limits.code is not None:  # each point's largest direction, (N, P)
-            table, zone, ratio = code_zones(limits, motion.velocity_rms.max(axis=-1), motion.displacement_rms.max(axis=-1))
-            worst = zone.max(axis=-1)
-            ratios.append(ratio)
-            reasons += [f"{table.title} zone at {p}" for p in names]
-        worst = np.maximum(worst, np.where(failed, FAIL, PASS).astype(np.int8))
-    if code_warnings(limits, [(exc.name, exc.omega) for exc in excitations]):  # the code may not apply: warns
-        worst = np.maximum(worst, WARN).astype(np.int8)
-    reasons.append("an order is resonant with an undamped mode: no steady state")
-    return *failing(stuck, worst, *largest_ratio(ratios, n), len(reasons) - 1), tuple(reasons)
+    motion = []  # the points' motion, solved once when first asked
+
+    def values(quantity):
+        if not motion:
+            motion.append(point_motion(model, excitations, names[1:], points, frozenset(), impedance=impedance))
+        field = LIMITED_VALUES[quantity]
+        if field not in rates:
+            return getattr(motion[0], field)  # (N, points, 3)
+        parts = [(rates[field](U, exc), exc.orders) for U, exc in zip(motion[0].displacement, excitations)]
+        largest, row = largest_peak([(Z.reshape(n, -1, Z.shape[-1]), orders) for Z, orders in parts])
+        found = np.full((n, len(names) * len(DIRECTIONS)), -np.inf)
+        found[np.arange(n), row] = largest
+        return found.reshape(n, len(names), len(DIRECTIONS))
+
+    return judge_batch(names, DIRECTIONS, values, scene.limits, [(exc.name, exc.omega) for exc in excitations],
+                       [(stuck, "an order is resonant with an undamped mode: no steady state")])
 
 
 def _office(scene, model, L, B, m_b):

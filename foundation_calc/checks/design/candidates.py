@@ -24,10 +24,6 @@ import numpy as np
 #: Outcome codes of :attr:`CandidateVerdicts.outcome`, in rising severity.
 PASS, WARN, FAIL = 0, 1, 2
 
-#: Outcome code of each status of :mod:`~foundation_calc.checks.resonance.rule` (clear, information,
-#: warn, fail), as ``fcalc check`` reports a resonance: information passes.
-RULE_OUTCOME = np.array([PASS, PASS, WARN, FAIL], dtype=np.int8)
-
 #: scene kind -> module whose ``evaluate(scene, batch)`` returns :class:`CandidateVerdicts`.
 EVALUATORS: dict[str, str] = {
     "block_foundation": "foundation_calc.checks.design.block",

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from foundation_calc.checks.design.candidates import FAIL, PASS, RULE_OUTCOME, WARN, failing, largest_ratio
+from foundation_calc.checks.design.candidates import FAIL, PASS, WARN, failing
 
 #: The scene keys a candidate may vary, by their short names.
 VARIED = ("length", "width", "height")
@@ -114,6 +114,7 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     Only the conditions that can decide somewhere in the batch are judged (a source's, order 1,
     or a forcing share of at least 1 % on some candidate); every other one is information at most,
     never the verdict: its margin is inf, its status clear."""
+    from foundation_calc.checks.resonance.batch import governing_verdicts
     from foundation_calc.checks.resonance.report import judge_conditions
     from foundation_calc.solvers.crank.machine_conditions import forcing_shares, harmonic_conditions
     from foundation_calc.checks.resonance.rule import FORCING_SHARE, Judgement
@@ -127,14 +128,8 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
     zero, averaged = frequencies
     margins, verdict, _ = judge_conditions(d0.omega, zero, averaged, [conditions[i] for i in kept], shares[:, kept],
                                            scene.limits.detuning)
-    worst = verdict.worst
-    outcome = RULE_OUTCOME[worst]
-    g = np.maximum(verdict.governing, 0)[:, None]
-    margin = np.take_along_axis(margins, g, -1)[:, 0]
-    needed = np.take_along_axis(verdict.needed, g, -1)[:, 0]
-    utilisation = np.where(margin > 0.0, needed / np.where(margin > 0.0, margin, 1.0), np.inf)
-    utilisation = np.where(verdict.governing >= 0, utilisation, np.nan)
-    out.put("resonance", *failing(~stable, outcome, utilisation, kept[g[:, 0]], len(conditions)),
+    governing = kept[np.maximum(verdict.governing, 0)]
+    out.put("resonance", *failing(~stable, *governing_verdicts(verdict, margins), governing, len(conditions)),
             [c.label for c in conditions] + [_UNSTABLE])
 
     def widened(values, fill):  # the kept conditions' columns among every condition's
@@ -143,55 +138,30 @@ def _resonance(out: Verdicts, scene, d0, M, K, mech, harmonics, frequencies, sta
         return full
 
     judgement = Judgement(judged=widened(verdict.judged, False), status=widened(verdict.status, 0),
-                          needed=widened(verdict.needed, np.inf), governing=kept[g[:, 0]])
+                          needed=widened(verdict.needed, np.inf), governing=governing)
     return zero, widened(margins, np.inf), judgement, conditions
 
 
 def _amplitudes(out: Verdicts, scene, designs, motion, resonant, stable):
     """Peaks and RMS values of C and every point against [limits] and the code's zones, as
-    :func:`~foundation_calc.checks.amplitudes.approximations.check_amplitudes` judges them."""
-    from foundation_calc.checks.codes import application_warnings
-    from foundation_calc.checks.design.code_zones import code_zones
+    :func:`~foundation_calc.checks.amplitudes.approximations.check_amplitudes` judges them (by the
+    one batch judge, :func:`~foundation_calc.checks.amplitudes.batch.judge_batch`)."""
+    from foundation_calc.checks.amplitudes.batch import judge_batch
     from foundation_calc.checks.limits import limited_quantities
     from foundation_calc.solvers.crank.batch_design import statistics
     from foundation_calc.solvers.crank.response import DIRECTIONS, point_series
-    from foundation_calc.units import rpm_from_omega
 
     limits, points = scene.limits, scene.points
-    names = ["C", *(p.name for p in points)]
     limited = limited_quantities(limits)
     wanted = set(limited) | ({"velocity_rms", "displacement_rms"} if limits.code is not None else set())
     series = [(motion.cos[:, None, :2, :], motion.sin[:, None, :2, :])]  # C: x and y themselves
     if points:
         cos, sin = point_series(motion, designs.points_u, designs.points_H)  # (points, N, 2, 2K + 1)
         series.append((np.moveaxis(cos, 0, 1), np.moveaxis(sin, 0, 1)))
-    statistic = statistics(wanted, limited, series, motion.omega)
-    ratios, fails, reasons = [], [], []
-    for quantity, limit in limited.items():
-        values = statistic[quantity]  # (N, points, 2)
-        for i, name in enumerate(names):
-            for j, direction in enumerate(DIRECTIONS):
-                ratios.append(values[:, i, j] / limit)
-                fails.append(np.where(values[:, i, j] > limit, FAIL, PASS))
-                reasons.append(f"{quantity} at {name} ({direction})")
-    warned = False
-    if limits.code is not None:
-        table, zone, ratio = code_zones(limits, statistic["velocity_rms"].max(axis=-1).T,  # (points, N): the larger
-                                        statistic["displacement_rms"].max(axis=-1).T)  # direction governs
-        power = None if limits.machine_power is None else limits.machine_power / 1e3
-        warned = bool(application_warnings(table, rpm_from_omega(motion.omega), power))
-        for i, name in enumerate(names):
-            ratios.append(ratio[i])
-            fails.append(zone[i])
-            reasons.append(f"{table.title} zone at {name}")
-    n = len(resonant)
-    outcome = np.stack(fails).max(axis=0) if fails else np.zeros(n, int)
-    utilisation, governing = largest_ratio(ratios, n)
-    if warned:
-        outcome = np.maximum(outcome, WARN)
-    k = len(reasons)
-    reasons += ["resonant with an undamped mode: no steady state", _UNSTABLE]
-    out.put("amplitudes", *failing(resonant | ~stable, outcome, utilisation, governing, np.where(stable, k, k + 1)), reasons)
+    statistic = statistics(wanted, limited, series, motion.omega)  # quantity -> (N, points, 2)
+    out.put("amplitudes", *judge_batch(["C", *(p.name for p in points)], DIRECTIONS, statistic.__getitem__, limits,
+                                       [(None, motion.omega)],
+                                       [(resonant, "resonant with an undamped mode: no steady state"), (~stable, _UNSTABLE)]))
 
 
 def judge_office(out: Verdicts, scene, designs):
