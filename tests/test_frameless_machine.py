@@ -17,6 +17,7 @@ import scipy.linalg
 
 import foundation_calc as fc
 from foundation_calc.cli.app import app
+from tests.test_machine_parts import _body
 
 L, B, H, RHO = 4.0, 2.0, 0.6, 2400.0
 SPRINGS = [6.0e7, 6.0e7, 9.0e7, 4.0e8, 8.0e8, 5.0e8]
@@ -56,27 +57,11 @@ dashpot = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
 """
 
 
-def _skew(r):
-    return np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
-
-
-def _body(m, r, J):
-    """The 6×6 mass matrix about O of a body m at r, central inertia tensor J: kinetic energy
-    ½ m |u' - [r]× θ'|² + ½ θ'ᵀ J θ'."""
-    r = np.asarray(r, dtype=float)
-    M = np.zeros((6, 6))
-    M[:3, :3] = m * np.eye(3)
-    M[:3, 3:] = -m * _skew(r)
-    M[3:, :3] = m * _skew(r)
-    M[3:, 3:] = m * (r @ r * np.eye(3) - np.outer(r, r)) + J
-    return M
-
-
 def _hand_mass_matrix():
+    """The block and the two rotors about O (:func:`tests.test_machine_parts._body`), no frame."""
     m_b = L * B * H * RHO
-    block = _body(m_b, [0.0, 0.0, H / 2.0], np.diag(m_b / 12.0 * np.array([B * B + H * H, L * L + H * H, L * L + B * B])))
-    e = np.array([0.0, 1.0, 0.0])
-    ring = 0.5 * ROTOR_MASS * ECCENTRICITY**2 * (np.eye(3) + np.outer(e, e))
+    block = _body(m_b, [0.0, 0.0, H / 2.0], m_b / 12.0 * np.array([B * B + H * H, L * L + H * H, L * L + B * B]))
+    ring = 0.5 * ROTOR_MASS * ECCENTRICITY**2 * np.array([1.0, 2.0, 1.0])  # m l²/2 (I + e eᵀ), e = y
     return block + sum(_body(ROTOR_MASS, at, ring) for at in ROTORS)
 
 
