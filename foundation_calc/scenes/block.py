@@ -145,7 +145,8 @@ class BlockScene(Plausible, OnSoil, SceneModel):
 
     @model_validator(mode="after")
     def _frames(self):
-        """A machine of parts alone (``mass = 0``) only where :meth:`~foundation_calc.scenes.block_parts.BlockMachine.frameless_error` allows it."""
+        """A machine of parts alone (``mass = 0``) only where
+        :meth:`~foundation_calc.scenes.block_parts.BlockMachine.frameless_error` allows it."""
         for i, m in enumerate(self.machines):
             if (error := m.frameless_error(f"machines[{i}]")) is not None:
                 raise ValueError(error)
@@ -311,14 +312,15 @@ class BlockScene(Plausible, OnSoil, SceneModel):
 
     def _bodies(self, block=None, machine_cogs=None):
         """(masses, cogs, central inertias) of the block, every machine's frame (none for a machine
-        of parts alone, ``mass = 0``) and every machine's parts with mass (their time-averaged mass properties, moved with their machine; ``block`` and
-        ``machine_cogs`` as :meth:`model` takes them)."""
+        of parts alone, ``mass = 0``) and every machine's parts with mass (their time-averaged mass
+        properties, moved with their machine; ``block`` and ``machine_cogs`` as :meth:`model` takes them)."""
         import numpy as np
 
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
-        framed = [(m, cog) for m, cog in zip(self.machines, cogs) if m.mass > 0.0]  # a machine of parts alone has no frame body
-        masses, centres, inertias = [m_b] + [m.mass for m, _ in framed], [r_b] + [c for _, c in framed], [J_b] + [m.inertia for m, _ in framed]
+        framed = [(m, cog) for m, cog in zip(self.machines, cogs) if m.mass > 0.0]  # parts alone: no frame body
+        masses, centres, inertias = ([m_b] + [m.mass for m, _ in framed], [r_b] + [c for _, c in framed],
+                                     [J_b] + [m.inertia for m, _ in framed])
         for machine, cog in zip(self.machines, cogs):
             for mass, centre, inertia in machine.bodies():
                 masses.append(mass)

@@ -68,8 +68,8 @@ def _rotors(scene, design, shift) -> dict[float, list[dict]]:
 def block_document(scene, design) -> dict:
     """The ``block_foundation`` document of a platform scene (module docstring) and its ``design``
     (:class:`~foundation_calc.solvers.platform.design.PlatformDesign`): its body as the block, the
-    exciters' machines of parts alone (``mass = 0``: their housings are part of the body); the isolators the
-    design chooses ((3.8)-(3.21)) at the corners O1..O4; the rotors by speed, one machine per multiple of the speed
+    exciters' machines of parts alone (``mass = 0``: their housings are part of the body); the
+    isolators the design chooses ((3.8)-(3.21)) at the corners O1..O4; the rotors by speed, one machine per multiple of the speed
     (:func:`_rotors`); the isolators' loss factor η and their dashpots 2 D c_ij/ω as the time
     constant β = 2 D/ω; the detuning and transient amplitude as limits; the run times and drive;
     the points O1 and the product box's eight corners (those ``fcalc platform`` verifies)."""
