@@ -183,6 +183,21 @@ def test_design_refuses_a_block_on_isolators_by_name(runner):
     assert "isolators" in result.stderr and "not sized by fcalc design" in result.stderr
 
 
+def test_the_design_batch_refuses_a_block_on_isolators_as_the_command_does(runner):
+    """The batch checker itself (:func:`foundation_calc.checks.design.block.evaluate`, what
+    ``fc.design`` runs) refuses the scene with the command's error, not a numpy broadcast error."""
+    from foundation_calc.checks.design.block import evaluate
+
+    said = runner.invoke(app, ["design", str(ISOLATED), "--vary", "block.length=2:4"]).stderr
+    with pytest.raises(fc.PhysicsError) as batch:
+        evaluate(load_scene(ISOLATED), {"block.length": np.array([2.4, 2.6])})
+    with pytest.raises(fc.PhysicsError) as api:
+        fc.design(ISOLATED, vary=["block.length=2:4"])
+    for raised in (batch.value, api.value):
+        assert raised.exit_code == 3 and [p.field for p in raised.problems] == ["isolators"]
+        assert " ".join(str(raised).split()) in " ".join(said.split())
+
+
 def _moved(**changes):
     """The shipped isolators with each isolator's keys changed: index -> keys, or "all" -> keys."""
     isolators = copy.deepcopy(SHIPPED["isolators"])

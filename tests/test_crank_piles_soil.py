@@ -177,3 +177,20 @@ def test_exit_codes(runner, tmp_path):
     run = runner.invoke(app, ["soil", str(CONFIG), "--sample", "10"])
     assert run.exit_code == 2 and "not sampled" in run.stderr and "[piles]" in run.stderr
     assert "Traceback" not in run.output
+
+
+@pytest.mark.parametrize("config", [CONFIG, CONFIG.parent / "block_on_piles.toml"], ids=["crank", "block"])
+def test_a_sample_on_piles_is_refused_by_the_api_and_its_engine_as_by_the_command(runner, config):
+    """One refusal, an FcalcError with the command's exit code 2, from ``fc.soil`` and from the
+    sampling engine called on its own (:func:`~foundation_calc.checks.soil_sample.sample_scene`),
+    where a bare numpy ValueError came; its message is the command's."""
+    from foundation_calc.checks.soil_sample import sample_scene
+
+    said = " ".join(runner.invoke(app, ["soil", str(config), "--sample", "10"]).stderr.split())
+    with pytest.raises(fc.UsageError) as api:
+        fc.soil(config, sample=10)
+    with pytest.raises(fc.UsageError) as engine:
+        sample_scene(fc.load(config).model, 10, 0.3)
+    for raised in (api.value, engine.value):
+        assert raised.exit_code == 2 and "sample" in raised.option
+        assert "not sampled" in str(raised) and " ".join(str(raised).split()) in said

@@ -362,3 +362,35 @@ def test_fcalc_amplitudes_support_class_lines_wrap_under_their_own_text(runner, 
     starts = [next(k for k, line in enumerate(block) if line.startswith(item[:30])) for item in whole[1:]]
     for a, b in zip(starts, [*starts[1:], len(block)]):  # each item's own lines: the first, then its wraps under it
         assert len(block[a]) - len(block[a].lstrip()) == 2 and all(line.startswith("    ") for line in block[a + 1:b]), block[a:b]
+
+
+#: Block scenes at 80 columns, a command each, and the names and short phrases of its tables
+#: (machines, points, modes' dominant motions, a status) that broke between their words.
+WHOLE_NAMES = [
+    (("resonance", "block_opposed_compressor.toml"), ("opposed compressor", "sliding y (with rocking)", "not judged")),
+    (("amplitudes", "block_opposed_compressor.toml"), ("opposed compressor", "cylinder head, +x", "block top corner")),
+    (("resonance", "block_on_piles.toml"), ("sliding y (with rocking)", "sliding x (with rocking)")),
+    (("resonance", "block_two_machines.toml"), ("not judged",)),
+]
+
+
+@pytest.mark.parametrize(("args", "names"), WHOLE_NAMES, ids=[" ".join(args) for args, _ in WHOLE_NAMES])
+def test_a_block_table_keeps_its_names_whole_at_80_columns(runner, on_terminal, args, names):
+    """A machine ("opposed compressor"), a point ("cylinder head, +x"), a mode's dominant motion
+    ("sliding y (with rocking)") or a status ("not judged") broke between its words inside a table
+    row at 80 columns, though the table fits otherwise: its frame dropped, its headers wrapped, or
+    (a machine too long beside its columns) a table per machine under its name. Now no cell of a
+    table line holds only a name's first words ("opposed" over "compressor"), and no line is wider
+    than 80; in a pipe the tables are as they were, the machine in its column."""
+    lines = on_terminal(*args)
+    piped = _run(runner, *args).splitlines()
+    assert all(cell_len(line) <= WIDTH for line in lines), [line for line in lines if cell_len(line) > WIDTH]
+    for shown in (lines, piped):
+        cells = {cell.strip() for line in shown if "│" in line for cell in line.split("│")}
+        for name in names:
+            words = name.split()
+            broken = [" ".join(words[:k]) for k in range(1, len(words)) if " ".join(words[:k]) in cells]
+            assert not broken, (name, broken)
+            assert any(name in line for line in shown), name
+    machines = [line for line in piped if line.startswith("┃ machine ")]
+    assert len(machines) == ("Steady state" in "".join(piped)) + ("Resonances:" in "".join(piped)), machines

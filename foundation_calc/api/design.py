@@ -50,11 +50,14 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     ------
     SceneError
         An invalid scene, or a scene of another kind.
+    PhysicsError
+        A block on a support no design sizes a block on (``[[isolators]]``; field ``isolators``).
     UsageError
         A bad range or option.
     """
     from foundation_calc.checks.design.apply import VaryError, given_dimensions, variable
     from foundation_calc.checks.design.grid import grid, parse_range
+    from foundation_calc.checks.design.supported import refuse_unsized
     from foundation_calc.errors import UsageError
     from foundation_calc.scenes.unit_strings import with_unit_strings_converted
 
@@ -63,7 +66,7 @@ def design(scene, *, vary=(), step: float | None = None, points: int | None = No
     if write is not None and loaded.path is None:
         raise UsageError("writes the design into the scene's own file: give the scene as a file", "'--write'")
     document = with_unit_strings_converted(loaded.kind, loaded.document, loaded.source)[0]  # numbers to vary, not "6000 mm"
-    _refuse_unsized(loaded.model)
+    refuse_unsized(loaded.model.support())
     failed = _failed_requirements(loaded.model)
     if failed:
         return Result("design", {}, 1, "fail", loaded, failed)
@@ -99,17 +102,6 @@ def _options(write, step: float | None, points: int | None, margin: float | None
         raise UsageError(f"a range needs at least 2 points (got {points})", "'--points'")
     if write is not None:
         writable_path(Path(write), "--write")
-
-
-def _refuse_unsized(scene) -> None:
-    """Raise PhysicsError (exit 3) naming the support of ``scene`` that a design cannot size a block
-    on (:func:`~foundation_calc.solvers.supports.base.unsized`)."""
-    from foundation_calc.errors import PhysicsError
-    from foundation_calc.solvers.supports.base import unsized
-
-    found = unsized(scene.support())
-    if found is not None:
-        raise PhysicsError(found[1], field=found[0])
 
 
 def _failed_requirements(loaded) -> list:

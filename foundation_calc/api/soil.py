@@ -58,6 +58,7 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
     block = loaded.kind == "block_foundation"
     sampled = block or compares_methods(model)  # a crank on a support that is no footing is not sampled
     if not sampled or block:  # a block, or a crank on a pile group
+        from foundation_calc.checks.soil_sample import refuse_unscaled
         from foundation_calc.checks.soil_support import support_soil
         from foundation_calc.output.soil_support import soil_document
 
@@ -65,7 +66,7 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
             if block and speed_cov:
                 raise UsageError("a block's machines keep their speeds in the sample (a crank scene's speed is sampled)",
                                  "'--speed-cov'")
-            _scales_with_the_soil(model, "block" if block else "crank foundation")
+            refuse_unscaled(model)
         report = support_soil(model)
         document = soil_document(report, model, loaded.source)
     else:
@@ -83,13 +84,3 @@ def soil(scene, *, sample: int = 0, modulus_cov: float = 0.3, speed_cov: float =
         drawn = sample_scene(model, sample, modulus_cov, speed_cov, seed)
     return command_result("soil", document | {"sample": sample_document(drawn)}, 0, loaded, (report, drawn))
 
-
-def _scales_with_the_soil(model, noun: str) -> None:
-    """Raise UsageError on ``--sample`` when the scene's support's springs do not scale with one
-    factor on the soil's modulus (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`:
-    a pile group), ``noun`` naming the foundation."""
-    from foundation_calc.errors import UsageError
-
-    if (unscaled := model.support().unscaled) is not None:
-        raise UsageError(f"not sampled, a {noun} on {unscaled}; give soil.modulus_range and fcalc check judges the range",
-                         "'--sample'")

@@ -164,6 +164,50 @@ def split_to_fit(table, width: int) -> list:
     return parts
 
 
+def whole_if_fits(table, width: int, names, columns=None, rows=None, title=None):
+    """A copy of a rich ``table`` (of its ``columns``, ``rows`` and ``title`` where given) whose
+    columns headed ``names`` keep each cell on one line (``no_wrap``: names and short phrases, a
+    machine, a point, "not judged"), if it fits ``width`` terminal cells so (its frame dropped,
+    its other columns wrapped at words, :func:`fit_columns`); else None."""
+    from copy import copy
+
+    piece = copy(table)
+    piece.columns = [copy(c) for c in (table.columns if columns is None else columns)]
+    piece.rows = table.rows if rows is None else rows
+    piece.title = table.title if title is None else title
+    for column in piece.columns:
+        column.no_wrap = column.no_wrap or column.header in names
+    return piece if fits(frameless(piece), width) else None
+
+
+def names_whole(table, width: int, names, grouped: bool = False) -> list:
+    """A rich ``table`` as the tables to print on a ``width`` console with the cells of its columns
+    headed ``names`` each on one line: the table so where it fits (:func:`whole_if_fits`); else,
+    if ``grouped`` (its first column names runs of rows, a machine on each of its rows), one table
+    per run without that column, the run's name as its title (under the table's own for the
+    first), where each fits so; else the table as it is, its names wrapped at words. In a file or
+    a pipe (unlimited width) that is the table, its lines unchanged."""
+    from copy import copy
+    from itertools import groupby
+
+    whole = whole_if_fits(table, width, names)
+    if whole is not None:
+        return [whole]
+    if grouped and len(table.columns) > 1:
+        pieces, start = [], 0
+        for name, run in groupby(table.columns[0]._cells):
+            stop = start + len(list(run))
+            columns = [copy(c) for c in table.columns[1:]]
+            for column in columns:
+                column._cells = column._cells[start:stop]
+            pieces.append(whole_if_fits(table, width, names, columns, table.rows[start:stop],
+                                        f"{table.title}\n{name}" if not pieces else name))
+            start = stop
+        if all(piece is not None for piece in pieces):
+            return pieces
+    return [table]
+
+
 def fit_columns(table, width: int) -> None:
     """Cap the widest columns of a rich ``table`` so that it fits ``width`` terminal cells, each
     column at least as wide as its longest word (:func:`keep_words_whole`, called first).

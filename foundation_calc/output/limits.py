@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from foundation_calc.checks.governing import worst_rows
 from foundation_calc.checks.limits import display_quantity
-from foundation_calc.output.console import fits, fmt, frameless, verdict_text
+from foundation_calc.output.console import fits, fmt, frameless, verdict_text, whole_if_fits
 from foundation_calc.output.notes import point_support_document, support_document
 
 #: Points besides C or G up to which the tables list every point and limit row; with more, they
@@ -74,8 +74,10 @@ def limits_table(rows, units, title: str, summarised: bool = False, strict: bool
     """The limit rows as a table (numbers in ``units``, each quantity's unit beside its name, never
     wrapped apart from it; ratio: the row's value/limit); ``summarised``: only the
     :data:`WORST_ROWS` largest value/limit ratios and the largest of each quantity. ``width``: the
-    terminal's [cells] (None in a file or a pipe); where the table does not fit it even without
-    its frame, the units go into the title, each quantity's once, and the quantities stand alone."""
+    terminal's [cells] (None in a file or a pipe): the points' names whole where the table fits so
+    (:func:`~foundation_calc.output.console.whole_if_fits`), with the units beside the quantities
+    or else in the title; where it does not fit even with the names wrapped and without its frame,
+    the units go into the title, each quantity's once, and the quantities stand alone."""
     from rich.markup import escape
 
     if summarised:
@@ -85,9 +87,13 @@ def limits_table(rows, units, title: str, summarised: bool = False, strict: bool
         rows = shown
     labels = {row.quantity: units.label(display_quantity(row.quantity)) for row in rows}
     table = _limit_rows(rows, units, title, strict, labels)
-    if width is None or fits(frameless(table), width):
+    if width is None:
         return table
-    return _limit_rows(rows, units, title + escape(" — " + ", ".join(f"{q} [{u}]" for q, u in labels.items())), strict)
+    bare = _limit_rows(rows, units, title + escape(" — " + ", ".join(f"{q} [{u}]" for q, u in labels.items())), strict)
+    for candidate in (table, bare):  # the points' names whole where the table fits so
+        if (whole := whole_if_fits(candidate, width, ("point",))) is not None:
+            return whole
+    return table if fits(frameless(table), width) else bare
 
 
 def _limit_rows(rows, units, title: str, strict: bool, labels: dict | None = None):

@@ -17,7 +17,9 @@ import numpy as np
 from foundation_calc.checks.outcomes import RESONANCE_FAIL_MARGIN
 from foundation_calc.checks.resonance.report import ResonanceReport
 from foundation_calc.checks.resonance.rule import FORCING_SHARE, INFORMATION, bands_text
-from foundation_calc.output.console import JSON_SCHEMA_VERSION, fmt, fmt_scaled, stdout, titled_table, verdict_text
+from foundation_calc.output.console import (
+    JSON_SCHEMA_VERSION, fmt, fmt_scaled, names_whole, stdout, titled_table, verdict_text,
+)
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.output.notes import print_soil_validity, soil_validity_document
 from foundation_calc.solvers.crank.frequencies import stability_margin_formula
@@ -160,7 +162,8 @@ def print_modes(modes, units: DisplayUnits) -> None:
     for j, p in enumerate(modes.frequencies):
         t.add_row(str(j + 1), MOTION_NAMES[modes.dominant[j]], fmt(p / (2 * np.pi)), fmt(units.convert("speed", p)),
                   fmt(modes.damping[j], 3), *(() if modes.static is None else (fmt(units.convert("speed", modes.static[j])),)))
-    stdout().print(t)
+    out = stdout()
+    out.print(*names_whole(t, out.width, ("dominant motion",)))
 
 
 def _print_plane(report: ResonanceReport, scene, source: str, units: DisplayUnits) -> None:
@@ -253,7 +256,8 @@ def print_resonance(report: ResonanceReport, scene, source: str, units: DisplayU
         print_modes(report.modes, units)
     else:
         _print_plane(report, scene, source, units)
-    out.print(_conditions_table(report, units, strict))
+    table = _conditions_table(report, units, strict)
+    out.print(*(names_whole(table, out.width, ("machine", "mode", "status"), grouped=True) if report.per_machine else [table]))
     if not report.per_machine:
         out.print(
             f"* governs. Judged: the paper's conditions and every harmonic whose forcing share reaches"

@@ -134,6 +134,15 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         return points
 
     @model_validator(mode="after")
+    def _frames(self):
+        """A machine of parts alone (``mass = 0``) only where
+        :meth:`~foundation_calc.scenes.block_parts.BlockMachine.frameless_error` allows it."""
+        for i, m in enumerate(self.machines):
+            if (error := m.frameless_error(f"machines[{i}]")) is not None:
+                raise ValueError(error)
+        return self
+
+    @model_validator(mode="after")
     def _soil_or_isolators(self):
         """One support: ``[soil]`` (with ``[piles]`` if any), or ``[[isolators]]`` with ``[isolation]``
         that carry the block (:func:`~foundation_calc.scenes.block_isolators.isolators_error`)."""
@@ -292,14 +301,16 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         raise culprit_error(text, culprits, key, f"stiffen {key}, or {lower}")
 
     def _bodies(self, block=None, machine_cogs=None):
-        """(masses, cogs, central inertias) of the block, every machine and every machine's parts
-        with mass (their time-averaged mass properties, moved with their machine; ``block`` and
-        ``machine_cogs`` as :meth:`model` takes them)."""
+        """(masses, cogs, central inertias) of the block, every machine's frame (none for a machine
+        of parts alone, ``mass = 0``) and every machine's parts with mass (their time-averaged mass
+        properties, moved with their machine; ``block`` and ``machine_cogs`` as :meth:`model` takes them)."""
         import numpy as np
 
         m_b, r_b, J_b = self.block.mass_properties if block is None else block
         cogs = [m.cog for m in self.machines] if machine_cogs is None else list(machine_cogs)
-        masses, centres, inertias = [m_b] + [m.mass for m in self.machines], [r_b] + cogs, [J_b] + [m.inertia for m in self.machines]
+        framed = [(m, cog) for m, cog in zip(self.machines, cogs) if m.mass > 0.0]  # parts alone: no frame body
+        masses, centres, inertias = ([m_b] + [m.mass for m, _ in framed], [r_b] + [c for _, c in framed],
+                                     [J_b] + [m.inertia for m, _ in framed])
         for machine, cog in zip(self.machines, cogs):
             for mass, centre, inertia in machine.bodies():
                 masses.append(mass)

@@ -239,7 +239,10 @@ class BlockMachine(SpeedFields):
     """A machine on the block: its mass properties, its own speed and its loads, unbalance, cranks or exciters."""
 
     name: str = quantity("-", "-", "label shown in reports", min_length=1, max_length=80, examples=["compressor"])
-    mass: float = quantity("m_m", "kg", "machine mass", gt=0, examples=[12.0e3])
+    mass: float = quantity(
+        "m_m", "kg", "machine mass, its frame's without its parts' (rotors, rods, sliders); 0 for a machine of parts"
+        " alone (exciters' rotors, crank throws' moving masses) with no frame of its own", ge=0, examples=[12.0e3],
+    )
     cog: Vector = quantity("r_m", "m", "machine's centre of mass [x, y, z] from O", examples=[[0.5, 0.0, 2.8]])
     inertia: Vector = quantity(
         "J_m", "kg m²", "moments of inertia about its own centre of mass, axes along x, y, z; default 0 (a point mass)",
@@ -334,6 +337,24 @@ class BlockMachine(SpeedFields):
     def total_mass(self) -> float:
         """The machine's mass with its parts' (a crank's rods, sliders, rotating masses) [kg]."""
         return self.mass + sum(body[0] for body in self.bodies())
+
+    def frameless_error(self, key: str) -> str | None:
+        """Why the machine, ``key`` in the scene (``machines[1]``), cannot be left without a frame,
+        or None: ``mass = 0`` is a machine of parts alone (a platform's exciters, whose housing is
+        the platform), which needs parts with mass (exciters' rotors, crank throws' rods, sliders
+        and rotating masses; given loads and an unbalance carry none, so a machine of those alone
+        would have no mass for the mass ratio or the plausibility checks to judge) and no moment of
+        inertia of its own (no frame to carry it)."""
+        if self.mass > 0.0:
+            return None
+        if self.total_mass <= 0.0:
+            return (f"{key}.mass = 0 kg, and its parts carry no mass: only a machine whose exciters' rotors or crank"
+                    " throws' moving masses carry mass may leave out its frame (given loads and an unbalance have none);"
+                    f" give {key}.mass > 0 kg, the machine's frame, casing and rotors")
+        if any(j > 0.0 for j in self.inertia):
+            return (f"{key}.inertia = {list(self.inertia)} kg m² needs {key}.mass > 0 kg: a machine of parts alone"
+                    " (mass = 0) has no frame to carry a moment of inertia; remove inertia or give the frame's mass")
+        return None
 
     def bodies(self) -> list:
         """Its parts' time-averaged mass properties, (mass [kg], centre of mass [m] (3,), central

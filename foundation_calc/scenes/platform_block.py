@@ -21,11 +21,6 @@ from foundation_calc.scenes.common import MAGNITUDE_RANGE, quantity
 #: What the name of a platform read as a block adds to the platform's (the commands' headers show it).
 READ_AS_BLOCK = "the platform read as a block on its isolators"
 
-#: Share of the platform's mass M given to the exciters' machine as its own (a block's machine has
-#: a mass; the exciter's housing is part of M): at the platform's centre of mass, without inertia, so
-#: that block and machine together are the platform's body to round-off [-].
-FRAME_SHARE = 1e-9
-
 #: The name of the machine that carries the rotors turning at the operating speed.
 MAIN_MACHINE = "exciter"
 
@@ -72,9 +67,9 @@ def _rotors(scene, design, shift) -> dict[float, list[dict]]:
 
 def block_document(scene, design) -> dict:
     """The ``block_foundation`` document of a platform scene (module docstring) and its ``design``
-    (:class:`~foundation_calc.solvers.platform.design.PlatformDesign`): its body as the block, less
-    :data:`FRAME_SHARE` of M for the exciters' machine at the same centre of mass; the isolators the
-    design chooses ((3.8)-(3.21)) at the corners O1..O4; the rotors by speed, one machine per multiple of the speed
+    (:class:`~foundation_calc.solvers.platform.design.PlatformDesign`): its body as the block, the
+    exciters' machines of parts alone (``mass = 0``: their housings are part of the body); the
+    isolators the design chooses ((3.8)-(3.21)) at the corners O1..O4; the rotors by speed, one machine per multiple of the speed
     (:func:`_rotors`); the isolators' loss factor η and their dashpots 2 D c_ij/ω as the time
     constant β = 2 D/ω; the detuning and transient amplitude as limits; the run times and drive;
     the points O1 and the product box's eight corners (those ``fcalc platform`` verifies)."""
@@ -84,9 +79,8 @@ def block_document(scene, design) -> dict:
     omega = scene.operation.omega_rad_s
     shift = (d.A / 2.0, d.B / 2.0, 0.0)
     cog = _at(p.cog, shift)
-    frame = FRAME_SHARE * p.mass
     corners = ((0.0, 0.0, 0.0), (d.A, 0.0, 0.0), (d.A, d.B, 0.0), (0.0, d.B, 0.0))
-    machines = [{"name": MAIN_MACHINE if ratio == 1.0 else f"exciters at {ratio:g} ω", "mass": frame, "cog": cog,
+    machines = [{"name": MAIN_MACHINE if ratio == 1.0 else f"exciters at {ratio:g} ω", "mass": 0.0, "cog": cog,
                  "omega": ratio * omega, "exciters": rotors}
                 for ratio, rotors in _rotors(scene, d, shift).items()]
     if scene.drive is not None:
@@ -98,7 +92,7 @@ def block_document(scene, design) -> dict:
     document = {
         "kind": "block_foundation",
         "name": f"{scene.name} ({READ_AS_BLOCK})" if scene.name else READ_AS_BLOCK,
-        "block": {"length": d.A, "width": d.B, "mass": p.mass - frame, "cog": cog, "inertia": list(scene.inertia)},
+        "block": {"length": d.A, "width": d.B, "mass": p.mass, "cog": cog, "inertia": list(scene.inertia)},
         "machines": machines,
         "isolators": [{"position": _at(r, shift), "stiffness": [float(c) for c in k]}
                       for r, k in zip(corners, d.stiffness)],
@@ -137,4 +131,4 @@ def platform_as_block(scene, source: str = "<scene>") -> PlatformAsBlock:
     return block
 
 
-__all__ = ["FRAME_SHARE", "MAIN_MACHINE", "READ_AS_BLOCK", "PlatformAsBlock", "block_document", "platform_as_block"]
+__all__ = ["MAIN_MACHINE", "READ_AS_BLOCK", "PlatformAsBlock", "block_document", "platform_as_block"]

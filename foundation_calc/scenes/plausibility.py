@@ -62,6 +62,7 @@ class PlausibleRange:
     magnitude: bool = False
     slip_beyond: float = 10.0  #: suggest a slip only when the value is this factor outside
     basis: str = ""  #: what the source says, for the documentation
+    zero_allowed: bool = False  #: 0 means something of its own (a machine of parts alone) and is not judged
 
     def span(self) -> str:
         """The range as text: ``1100 to 2500 kg/m³``, ``±6.2832 rad``."""
@@ -77,7 +78,7 @@ class PlausibleRange:
 
     def judge(self, key: str, value: float) -> "Implausible | None":
         """The finding for ``key = value`` (key as the user wrote it), or None inside the range."""
-        return Implausible(key, value, self) if self.outside(value) else None
+        return Implausible(key, value, self) if self.outside(value) and not (self.zero_allowed and value == 0) else None
 
     def in_unit(self, unit: str, per_unit: float, slips: tuple[Slip, ...]) -> "PlausibleRange":
         """The same range for a value given in ``unit``, one of which is ``per_unit`` of this
@@ -228,7 +229,8 @@ RANGES: dict[str, PlausibleRange] = {
     "machine_mass": PlausibleRange(
         "masses of machines on foundations", "kg", 100.0, 5e6, _JUDGEMENT, (Slip("t", 1e3),), slip_beyond=1.0,
         basis="a pump of 100 kg to a turbine-generator set of 5000 t; a machine lighter than 100 kg has no block"
-        " of its own, so a lighter mass was probably typed in t",
+        " of its own, so a lighter mass was probably typed in t; 0, a machine of parts alone (exciters' rotors, crank"
+        " throws) with no frame of its own, is not judged", zero_allowed=True,
     ),
     "radius_of_gyration": PlausibleRange(
         "radii of gyration k = sqrt(J/m) about the centre of mass", "m", 0.1, 30.0, _JUDGEMENT,

@@ -58,14 +58,16 @@ def evaluate(scene, batch: Batch, engine: Engine) -> CandidateVerdicts:
     """Every check of ``fcalc check`` on every candidate of ``batch`` (module docstring): the block's
     dimensions and the sizes of its support's own (:class:`~foundation_calc.solvers.supports.base.Sizing`).
 
-    Raises ValueError for a key that cannot vary; NotImplementedError for what the batch leaves to
-    the full path (:func:`~.supported.refuse_unjudged`, the engine's ``refuse``)."""
-    from foundation_calc.checks.design.supported import candidate_values, refuse_unjudged, with_scene_check
+    Raises PhysicsError (exit 3) for a support no design sizes a block on (:func:`~.supported.refuse_unsized`:
+    the isolators), as ``fcalc design`` does; ValueError for a key that cannot vary; NotImplementedError
+    for what the batch leaves to the full path (:func:`~.supported.refuse_unjudged`, the engine's ``refuse``)."""
+    from foundation_calc.checks.design.supported import candidate_values, refuse_unjudged, refuse_unsized, with_scene_check
     from foundation_calc.checks.runup import judged
     from foundation_calc.solvers.supports.base import sizing
 
-    engine.refuse(scene)
     support = scene.support()
+    refuse_unsized(support)
+    engine.refuse(scene)
     refuse_unjudged(scene, support)
     support = sizing(support)
     given, batch = engine.dimensions(scene, batch)

@@ -18,6 +18,18 @@ from foundation_calc.checks.design.candidates import FAIL, PASS, Batch
 OVER_RANGE = "over soil.modulus_range the batch scales the support's springs by one factor, which does not hold for"
 
 
+def refuse_unsized(support) -> None:
+    """Raise PhysicsError (exit 3) naming the key of a ``support`` that ``fcalc design`` cannot size
+    a block on (:func:`~foundation_calc.solvers.supports.base.unsized`: the isolators, whose places
+    and springs a resized block does not carry along)."""
+    from foundation_calc.errors import PhysicsError
+    from foundation_calc.solvers.supports.base import unsized
+
+    found = unsized(support)
+    if found is not None:
+        raise PhysicsError(found[1], field=found[0])
+
+
 def refuse_unjudged(scene, support) -> None:
     """Raise NotImplementedError for what the batch leaves to the full path: the soil's modulus
     range on a ``support`` whose springs do not scale with one factor
@@ -92,4 +104,4 @@ def with_scene_check(refused, outcome: dict, utilisation: dict, governing: dict,
     order.append("scene")
 
 
-__all__ = ["OVER_RANGE", "candidate_values", "fixed_findings", "refuse_unjudged", "sizes_outside", "with_scene_check"]
+__all__ = ["OVER_RANGE", "candidate_values", "fixed_findings", "refuse_unjudged", "refuse_unsized", "sizes_outside", "with_scene_check"]

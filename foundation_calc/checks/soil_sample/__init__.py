@@ -66,8 +66,27 @@ def lognormal_factors(rng: np.random.Generator, n: int, cov: float) -> np.ndarra
     return np.exp(rng.normal(0.0, math.sqrt(math.log1p(cov * cov)), n))
 
 
+#: Scene kind -> the foundation as :func:`refuse_unscaled` names it.
+NOUNS = {"crank_foundation": "crank foundation", "block_foundation": "block"}
+
+
+def refuse_unscaled(scene) -> None:
+    """Raise UsageError on ``--sample`` (exit 2) when the support of ``scene`` has springs that do
+    not scale with one factor on the soil's modulus, which the sample draws
+    (:attr:`~foundation_calc.solvers.supports.base.Support.unscaled`: a pile group, EN 1998-5
+    Table C.1, K ∝ E_s^(1 - n))."""
+    from foundation_calc.errors import UsageError
+
+    if (unscaled := scene.support().unscaled) is not None:
+        raise UsageError(f"not sampled, a {NOUNS[scene.kind]} on {unscaled}; give soil.modulus_range and fcalc check"
+                         " judges the range", "'--sample'")
+
+
 def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:
-    """Sample ``scene``'s soil ``n`` times (module docstring) by its kind's engine (:data:`ENGINES`)."""
+    """Sample ``scene``'s soil ``n`` times (module docstring) by its kind's engine (:data:`ENGINES`).
+
+    Raises UsageError for a support the sample cannot scale (:func:`refuse_unscaled`)."""
+    refuse_unscaled(scene)
     rng = np.random.default_rng(seed)
     factor = lognormal_factors(rng, n, cov_modulus)
     speed = np.maximum(1.0 + cov_speed * rng.normal(size=n), 1e-3) if cov_speed > 0.0 else np.ones(n)
@@ -91,4 +110,4 @@ def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed
     )
 
 
-__all__ = ["ENGINES", "PERCENTILES", "SoilSample", "lognormal_factors", "sample_scene"]
+__all__ = ["ENGINES", "NOUNS", "PERCENTILES", "SoilSample", "lognormal_factors", "refuse_unscaled", "sample_scene"]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from foundation_calc.checks.amplitudes.machines import DIRECTIONS
-from foundation_calc.output.console import fmt_scaled, stdout, verdict_text
+from foundation_calc.output.console import fmt_scaled, names_whole, stdout, verdict_text
 from foundation_calc.output.console import titled_table as _table
 from foundation_calc.output.display_units import DisplayUnits
 from foundation_calc.units import speed_triplet
@@ -131,7 +131,7 @@ def print_motion(report, scene, source: str, units: DisplayUnits, all_points: bo
             for i, p in enumerate(motion.names):
                 cells = [_phasor(U[i, d, k], scale, units) for d in range(3)]
                 h.add_row(escape(name), str(n), escape(p), *cells)
-    out.print(h)
+    out.print(*names_whole(h, out.width, ("machine", "point"), grouped=True))
     if len(motion.machines) > 1:
         out.print(COMBINATION[0].upper() + COMBINATION[1:] + ".")
     for title, quantity, values in ((f"Peak displacement [{amp}]", "amplitude", motion.peak),
@@ -139,7 +139,7 @@ def print_motion(report, scene, source: str, units: DisplayUnits, all_points: bo
         t = _table(title, ("point", "x", "y", "z"), ("x", "y", "z"))  # one table each: 80 columns
         for i, p in enumerate(motion.names):
             t.add_row(escape(p), *_cells(values[i], values, quantity, units, 4))
-        out.print(t)
+        out.print(*names_whole(t, out.width, ("point",)))
     return True
 
 
@@ -178,7 +178,8 @@ def print_after_zones(report, units: DisplayUnits) -> None:
             for solution, peaks in (("exact", c.exact_peak), ("first", c.first_peak)):
                 t.add_row(escape(p) if solution == "exact" else "", solution,
                           *_cells(peaks[i], c.exact_peak, "amplitude", units, 5))
-        stdout().print(t)
+        out = stdout()
+        out.print(*names_whole(t, out.width, ("point",)))
         capped = (f"; the exact solution reached the cap of {c.harmonics} harmonics, its own error"
                   f" {c.harmonic_change:.2g}" if c.harmonic_change > HARMONIC_TOLERANCE else "")
         stdout().print(f"{escape(c.name)}: first approximation's error {c.error:.2g} (largest relative difference of the"
