@@ -15,7 +15,8 @@ SceneArg = Annotated[Path, scene_argument(RIGID_BODY_SCENE)]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON document (SI units) instead of tables.")]
 ExactOpt = Annotated[
     bool,
-    typer.Option("--exact", help="Also solve the exact equations (harmonic balance) and report the closed forms' errors."),
+    typer.Option("--exact", help="Judge the limits with the exact periodic solution (harmonic balance): a block's"
+                 " machines with periodic inertia, a crank scene's mechanism (with the closed forms' errors)."),
 ]
 AllPointsOpt = Annotated[
     bool,

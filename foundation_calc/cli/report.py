@@ -20,7 +20,8 @@ OutputOpt = Annotated[
     typer.Option("-o", "--output", metavar="FILE", help="FILE.pdf, FILE.html or FILE.md; default: the scene's name with .pdf."),
 ]
 ExactOpt = Annotated[
-    bool, typer.Option("--exact", help="Crank scenes: also solve the exact equations and state the closed forms' errors.")
+    bool, typer.Option("--exact", help="Crank scenes: also solve the exact equations and state the closed forms' errors"
+                       " (a block's sheet always states how exact its numbers are).")
 ]
 ValidationOpt = Annotated[
     bool, typer.Option("--validation", help="Append the validation record (the cases of fcalc validate) to the sheet.")
