@@ -11,7 +11,7 @@ def schema(kind: KindArg) -> None:
     """Print the JSON Schema (draft 2020-12) of scene files of KIND on stdout.
 
     Save it next to your scenes and point the editor at it, e.g. with a first line
-    `#:schema ./crank_foundation.schema.json` (taplo / Even Better TOML); see docs/commands.md.
+    `#:schema ./block_foundation.schema.json` (taplo / Even Better TOML); see docs/commands.md.
     """
     from foundation_calc.output.console import print_json
     from foundation_calc.scenes.schema import scene_schema
