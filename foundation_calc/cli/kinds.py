@@ -25,7 +25,7 @@ KindArg = Annotated[
 
 
 #: The SCENE help of the commands of the one rigid body (resonance, amplitudes, sweep, soil).
-RIGID_BODY_SCENE = ("Scene file (TOML) of kind crank_foundation or block_foundation, or a platform (read as a block on"
+RIGID_BODY_SCENE = ("Scene file (TOML) of kind block_foundation or crank_foundation, or a platform (read as a block on"
                     " its designed isolators).")
 
 

@@ -14,7 +14,7 @@ from foundation_calc.cli.kinds import scene_argument
 from foundation_calc.cli.guard import print_warnings, reports_errors
 from foundation_calc.cli.units import UnitsOpt
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML): crank_foundation, platform or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML): block_foundation, crank_foundation or platform.")]
 OutputOpt = Annotated[
     Optional[Path],
     typer.Option("-o", "--output", metavar="FILE", help="FILE.pdf, FILE.html or FILE.md; default: the scene's name with .pdf."),

@@ -12,7 +12,7 @@ from foundation_calc.api.runup import SHORTEST_TIME
 from foundation_calc.cli.guard import reports_errors, warn_implausible
 from foundation_calc.cli.kinds import scene_argument
 
-SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind crank_foundation, platform or block_foundation.")]
+SceneArg = Annotated[Path, scene_argument("Scene file (TOML) of kind block_foundation, crank_foundation or platform.")]
 TimeOpt = Annotated[
     Optional[float],
     typer.Option("--time", min=SHORTEST_TIME, help="Run-up time [s] from rest to the operating speed; overrides [operation] run_up_time.", show_default=False),
