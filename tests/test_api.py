@@ -199,4 +199,4 @@ def test_the_python_api_page_runs(monkeypatch, capsys):
     monkeypatch.chdir(ROOT)
     for block in blocks:
         exec(compile(block, "docs/python-api.md", "exec"), {})  # noqa: S102 - the page's own example
-    assert "foundation.mass - must be > 0" in capsys.readouterr().out
+    assert "machines.0.mass - must be >= 0" in capsys.readouterr().out
