@@ -11,6 +11,8 @@ well-conditioned pair, measured 1e-15).
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 import scipy.linalg
@@ -107,6 +109,10 @@ def test_a_machine_without_mass_anywhere_is_refused_by_its_key(runner, tmp_path,
     assert result.exit_code == 3, result.stdout + result.stderr
     assert key in result.stderr and why in result.stderr and "kg" in result.stderr
     assert "Traceback" not in result.stderr
+    # a script reads the key at fault from the problem's field, not from its sentence
+    checked = runner.invoke(app, ["check", str(path), "--json"])
+    (problem,) = json.loads(checked.stdout)["scenes"][0]["checks"][0]["problems"]
+    assert problem["field"] == key.replace("[", ".").replace("]", "").removesuffix(" = 0 kg")
 
 
 def test_the_platform_read_as_a_block_is_its_body_exactly():

@@ -15,7 +15,7 @@ from foundation_calc.scenes.block_isolators import BlockIsolator, Isolation, iso
 from foundation_calc.scenes.block_parts import BlockBody, BlockMachine, BlockPoint
 from foundation_calc.scenes.block_piles import BlockPiles, PiledSoil, piled
 from foundation_calc.scenes.block_soil import BlockSoil
-from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, RunTimes, quantity
+from foundation_calc.scenes.common import LENGTH_SCALE_FACTOR, KeyProblem, RunTimes, quantity
 from foundation_calc.scenes.crank import Limits
 from foundation_calc.scenes.plausibility import Plausible, Remark, culprit_error, key_pattern
 from foundation_calc.scenes.project import SceneHeader, SheetOptions
@@ -139,7 +139,7 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         :meth:`~foundation_calc.scenes.block_parts.BlockMachine.frameless_error` allows it."""
         for i, m in enumerate(self.machines):
             if (error := m.frameless_error(f"machines[{i}]")) is not None:
-                raise ValueError(error)
+                raise KeyProblem(f"machines.{i}.{error[0]}", error[1])
         return self
 
     @model_validator(mode="after")

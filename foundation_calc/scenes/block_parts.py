@@ -338,9 +338,9 @@ class BlockMachine(SpeedFields):
         """The machine's mass with its parts' (a crank's rods, sliders, rotating masses) [kg]."""
         return self.mass + sum(body[0] for body in self.bodies())
 
-    def frameless_error(self, key: str) -> str | None:
+    def frameless_error(self, key: str) -> tuple[str, str] | None:
         """Why the machine, ``key`` in the scene (``machines[1]``), cannot be left without a frame,
-        or None: ``mass = 0`` is a machine of parts alone (a platform's exciters, whose housing is
+        as (its key at fault, ``mass`` or ``inertia``; the sentence), or None: ``mass = 0`` is a machine of parts alone (a platform's exciters, whose housing is
         the platform), which needs parts with mass (exciters' rotors, crank throws' rods, sliders
         and rotating masses; given loads and an unbalance carry none, so a machine of those alone
         would have no mass for the mass ratio or the plausibility checks to judge) and no moment of
@@ -348,11 +348,11 @@ class BlockMachine(SpeedFields):
         if self.mass > 0.0:
             return None
         if self.total_mass <= 0.0:
-            return (f"{key}.mass = 0 kg, and its parts carry no mass: only a machine whose exciters' rotors or crank"
+            return "mass", (f"{key}.mass = 0 kg, and its parts carry no mass: only a machine whose exciters' rotors or crank"
                     " throws' moving masses carry mass may leave out its frame (given loads and an unbalance have none);"
                     f" give {key}.mass > 0 kg, the machine's frame, casing and rotors")
         if any(j > 0.0 for j in self.inertia):
-            return (f"{key}.inertia = {list(self.inertia)} kg m² needs {key}.mass > 0 kg: a machine of parts alone"
+            return "inertia", (f"{key}.inertia = {list(self.inertia)} kg m² needs {key}.mass > 0 kg: a machine of parts alone"
                     " (mass = 0) has no frame to carry a moment of inertia; remove inertia or give the frame's mass")
         return None
 

@@ -22,6 +22,16 @@ SCENE_SCHEMA_VERSION = 1
 MAGNITUDE_RANGE = (1e-15, 1e15)
 
 
+class KeyProblem(ValueError):
+    """A validator's problem with one key below the model that raises it (a table's rule that names
+    its key, e.g. ``machines.1.mass``): the scene's error then names that key, not the table."""
+
+    def __init__(self, key: str, message: str):
+        super().__init__(message)
+        #: the key's dotted path from the model that raises it ("machines.1.mass")
+        self.key = key
+
+
 class SceneModel(BaseModel):
     """Base of all scene models: unknown keys, NaN, inf and strings-for-numbers are rejected.
 

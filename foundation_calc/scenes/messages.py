@@ -14,6 +14,8 @@ from typing import Any
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
+from foundation_calc.scenes.common import KeyProblem
+
 _BOUND_SYMBOLS = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
 
 
@@ -99,6 +101,9 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
     problems = []
     for err in exc.errors(include_url=False):
         loc = tuple(err["loc"])
+        problem = (err.get("ctx") or {}).get("error")
+        if isinstance(problem, KeyProblem):  # a table's rule about one of its keys: that key
+            loc += tuple(int(p) if p.isdigit() else p for p in problem.key.split("."))
         path = ".".join(str(p) for p in loc)
         kind = err["type"]
         if kind == "extra_forbidden":
