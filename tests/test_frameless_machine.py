@@ -20,6 +20,7 @@ import scipy.linalg
 import foundation_calc as fc
 from foundation_calc.cli.app import app
 from tests.test_machine_parts import _body
+from tests.conftest import CONFIGS
 
 L, B, H, RHO = 4.0, 2.0, 0.6, 2400.0
 SPRINGS = [6.0e7, 6.0e7, 9.0e7, 4.0e8, 8.0e8, 5.0e8]
@@ -117,9 +118,26 @@ def test_a_machine_without_mass_anywhere_is_refused_by_its_key(runner, tmp_path,
 
 def test_the_platform_read_as_a_block_is_its_body_exactly():
     """No share of the platform's mass is left to the exciters' machine: the block is its body."""
-    from tests.test_platform_as_block import CONFIGS
-
     platform = fc.load(CONFIGS / "platform_paper_example.toml").model
     block = platform.as_block()
     assert block.block.mass == platform.platform.mass
     assert [m.mass for m in block.machines] == [0.0] * len(block.machines)
+
+
+@pytest.mark.parametrize(("cut", "added", "field"), [
+    ("[soil]", "", "soil"),  # no support at all
+    ("", "\n[isolation]\ndamping_ratio = 0.05\n", "isolation"),  # damping of isolators on soil
+], ids=["no support", "isolation on soil"])
+def test_a_rule_about_one_table_names_that_table_as_the_field(runner, tmp_path, cut, added, field):
+    """A rule of the whole scene about one of its tables names it in ``check --json``'s problem."""
+    text = (CONFIGS / "block_two_machines.toml").read_text(encoding="utf-8")
+    if cut:
+        start = text.index(cut)
+        end = text.index("\n[", start + 1)
+        text = text[:start] + text[end + 1:]
+    path = tmp_path / "scene.toml"
+    path.write_text(text + added, encoding="utf-8")
+    result = runner.invoke(app, ["check", str(path), "--json"])
+    assert result.exit_code == 3, result.stdout
+    (problem,) = json.loads(result.stdout)["scenes"][0]["checks"][0]["problems"]
+    assert problem["field"] == field, problem

@@ -148,19 +148,19 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         that carry the block (:func:`~foundation_calc.scenes.block_isolators.isolators_error`)."""
         if not self.isolators:
             if self.soil is None:
-                raise ValueError("give [soil] (the soil under the block) or [[isolators]] with [isolation]"
+                raise KeyProblem("soil", "give [soil] (the soil under the block) or [[isolators]] with [isolation]"
                                  " (spring isolators under it)")
             if self.isolation is not None:
-                raise ValueError("[isolation] is the damping of [[isolators]]: give the isolators, or remove it")
+                raise KeyProblem("isolation", "[isolation] is the damping of [[isolators]]: give the isolators, or remove it")
             return self
         if self.soil is not None or self.piles is not None:
             given = "[soil]" if self.piles is None else "[soil] and [piles]"
-            raise ValueError(f"give [[isolators]] or {given}, not both: the block stands on one support")
+            raise KeyProblem("isolators", f"give [[isolators]] or {given}, not both: the block stands on one support")
         if self.isolation is None:
-            raise ValueError("[[isolators]] need [isolation] with loss_factor [-] or damping_ratio [-] (η = 2 ξ),"
+            raise KeyProblem("isolation", "[[isolators]] need [isolation] with loss_factor [-] or damping_ratio [-] (η = 2 ξ),"
                              " and/or time_constant [s]; give damping_ratio = 0 for undamped springs")
         if self.block.embedment:
-            raise ValueError(f"block.embedment = {self.block.embedment:g} m: a block on [[isolators]] is not"
+            raise KeyProblem("block.embedment", f"block.embedment = {self.block.embedment:g} m: a block on [[isolators]] is not"
                              " embedded in soil; remove the key")
         if (error := isolators_error(self.isolators, *self.isolated_weight())) is not None:
             raise ValueError(error)
@@ -183,7 +183,8 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
         if self.soil is None:
             return self
         if self.block.embedment and self.soil.method_used not in FREQUENCY_DEPENDENT_METHODS:
-            raise ValueError(
+            raise KeyProblem(
+                "block.embedment",
                 f"block.embedment = {self.block.embedment:g} m is taken by soil methods 'gazetas' and 'pais_kausel'"
                 f" only; method {self.soil.method_used!r} takes the base as a surface footing (remove the key, or"
                 " choose one of those methods)"

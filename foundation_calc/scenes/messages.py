@@ -118,7 +118,8 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
         table = _missing_table(info) if kind == "missing" else ""
         if table:
             details.append(table)
-        elif info is not None:
+        elif info is not None and not (isinstance(problem, KeyProblem) and (info.description or "").startswith("- [-]: ")):
+            # (a rule's sentence about a table already says what the table is)
             rng = allowed_range(info)
             if rng and kind not in ("greater_than", "greater_than_equal", "less_than", "less_than_equal"):
                 details.append(f"allowed {rng}")
