@@ -144,7 +144,7 @@ def _newton_euler(scene, loaded=True):
         uO, duO = u + np.cross(th, arm), du + np.cross(dth, arm)
         F = -k[:3] * uO - c[:3] * duO
         Mo = np.cross(arm, F) - k[3:] * th - c[3:] * dth + W * G[2] * np.array([th[0], th[1], 0.0])
-        for w, (n, f, mom, phase, at, _) in loads:
+        for w, (n, f, mom, phase, at, *_) in loads:
             a = math.cos(n * w * t + phase)
             Fl = a * np.asarray(f)
             F = F + Fl

@@ -294,7 +294,7 @@ def _built(scene, L, B, H) -> Built:
     place = _placing(scene, L, B, H)
     cogs = [place(m.cog) for m in scene.machines]
     model = scene.model(base=(L, B), block=block, machine_cogs=cogs)
-    excitations = [excitation(m.name, m.omega_rad_s, [(*row[:4], place(row[4]), row[5]) for row in m.load_rows()])
+    excitations = [excitation(m.name, m.omega_rad_s, [row._replace(at=place(row.at)) for row in m.load_rows()])
                    for m in scene.machines]
     points = np.stack([place(p.at) for p in scene.points], axis=-2) if scene.points else np.zeros((0, 3))
     impedance = None

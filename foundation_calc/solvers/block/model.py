@@ -33,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from foundation_calc.solvers.machines.part import LoadRow
 from foundation_calc.solvers.rigid_body.inertia import bodies_mass_matrix, centre_of_mass, diagonal_matrices
 from foundation_calc.solvers.rigid_body.kinematics import load_at, weight_tilt
 
@@ -105,7 +106,12 @@ class Excitation:
     omega : its speed ω [rad/s]
     orders : distinct orders n, ascending, shape (H,)
     Q : complex amplitudes (F, M about O) of order n at the speed ω, shape (H, 6) [N, N m]
-    Q_inertial : the part of Q that grows as the speed squared (unbalances), shape (H, 6)
+    Q_inertial : the part of Q that grows as the speed squared in a speed sweep (unbalances, the
+        parts' inertia forces), shape (H, 6)
+    Q_weight : the part of Q of the moving weight (a crank mechanism's, an exciter rotor's), the
+        same at every speed in every command, shape (H, 6); the rest of Q (Q - Q_weight: inertia
+        forces, unbalances and a vendor's loads) grows as the speed squared in a start-up
+        (:mod:`~foundation_calc.solvers.block.runup`)
     gyroscopic : the machine's mean gyroscopic coupling D̄ at the speed ω (6, 6) [kg/s, ..., kg m²/s],
         which the block's C holds (:class:`BlockModel`); None for none
     """
@@ -115,6 +121,7 @@ class Excitation:
     orders: np.ndarray
     Q: np.ndarray
     Q_inertial: np.ndarray
+    Q_weight: np.ndarray
     gyroscopic: np.ndarray | None = None
 
     def damping_change(self, omega):
@@ -177,19 +184,24 @@ def block_model(masses, cogs, inertias, springs, g, size, dashpots=None, ratios=
 
 def excitation(name, omega, rows, gyroscopic=None) -> Excitation:
     """A machine's :class:`Excitation` from its loads ``rows``: (order, force [N], moment [N m],
-    phase [rad], point [m], inertial) each; loads of one order add. A point may be a batch
-    (..., 3) (the machine on each of a batch of candidate blocks): Q is then (..., H, 6).
+    phase [rad], point [m], inertial[, weight]) each (:class:`~foundation_calc.solvers.machines.part.LoadRow`;
+    weight False when left out); loads of one order add. A point may be a batch (..., 3) (the
+    machine on each of a batch of candidate blocks): Q is then (..., H, 6).
     ``gyroscopic``: the machine's mean gyroscopic coupling D̄ at ω (6, 6), or None."""
-    orders = np.array(sorted({int(r[0]) for r in rows}), dtype=int)
-    batch = np.broadcast_shapes(*(np.shape(r[4])[:-1] for r in rows))
+    rows = [LoadRow(*row) for row in rows]
+    orders = np.array(sorted({int(r.order) for r in rows}), dtype=int)
+    batch = np.broadcast_shapes(*(np.shape(r.at)[:-1] for r in rows))
     Q = np.zeros(batch + (len(orders), 6), dtype=complex)
-    Q_inertial = np.zeros_like(Q)
-    for n, F, Mo, phase, at, inertial in rows:
-        q = load_at(at, np.asarray(F, dtype=float), np.asarray(Mo, dtype=float)) * np.exp(1j * phase)
-        Q[..., np.searchsorted(orders, n), :] += q
-        if inertial:
-            Q_inertial[..., np.searchsorted(orders, n), :] += q
-    return Excitation(str(name), float(omega), orders, Q, Q_inertial,
+    Q_inertial, Q_weight = np.zeros_like(Q), np.zeros_like(Q)
+    for row in rows:
+        q = load_at(row.at, np.asarray(row.force, dtype=float), np.asarray(row.moment, dtype=float)) * np.exp(1j * row.phase)
+        h = np.searchsorted(orders, row.order)
+        Q[..., h, :] += q
+        if row.inertial:
+            Q_inertial[..., h, :] += q
+        if row.weight:
+            Q_weight[..., h, :] += q
+    return Excitation(str(name), float(omega), orders, Q, Q_inertial, Q_weight,
                       None if gyroscopic is None else np.asarray(gyroscopic, dtype=float))
 
 

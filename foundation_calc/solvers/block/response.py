@@ -396,7 +396,7 @@ def point_motion(model: BlockModel, excitations, names, points, peaks=PEAKS, imp
     vsq = usq = asq = np.zeros(at.shape)
     found = {name: 0.0 for name in peaks}
     given = (None,) * len(excitations) if given is None else given
-    excitations = [exc if own is None else replace(exc, orders=np.asarray(own[1]), Q=None, Q_inertial=None)
+    excitations = [exc if own is None else replace(exc, orders=np.asarray(own[1]), Q=None, Q_inertial=None, Q_weight=None)
                    for exc, own in zip(excitations, given)]  # a machine's given harmonics: its orders, no loads
     for exc, own in zip(excitations, given):
         Z = complex_amplitudes(model, exc, impedance=impedance) if own is None else np.asarray(own[0])  # (..., H, 6)

@@ -337,7 +337,7 @@ class CrankMechanism(MachinePart):
     def load_rows(self, omega: float, g: float) -> list[LoadRow]:
         """The forcing harmonics Q_n (Eq. (4), :func:`forcing_harmonics`) as loads at :attr:`at`:
         per order, the real part of Q_n at phase 0 and its imaginary part at phase π/2; the
-        inertia forces ``inertial``, the moving weight's moment not."""
+        inertia forces ``inertial``, the moving weight's moment ``weight``."""
         fh = forcing_harmonics(self.throws, omega, g)
         c = np.asarray(self.at, dtype=float)
         rows = []
@@ -346,7 +346,7 @@ class CrankMechanism(MachinePart):
                 for part, phase in ((q.real, 0.0), (q.imag, np.pi / 2.0)):
                     if np.any(part != 0.0):
                         F, M = part[:3], part[3:] - np.cross(c, part[:3])  # the moment about the point
-                        rows.append(LoadRow(int(n), F.tolist(), M.tolist(), phase, self.at, inertial))
+                        rows.append(LoadRow(int(n), F.tolist(), M.tolist(), phase, self.at, inertial, not inertial))
         return rows
 
     def assumption(self) -> str:

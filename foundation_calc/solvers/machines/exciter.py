@@ -24,7 +24,7 @@ the form of :mod:`foundation_calc.solvers.platform.dynamics`), per rotor::
     f(φ) = (-m L'', -m S × L'' - g m L × e3)                                                 (4)
 
 (4) is a force m ω² L(t) rotating at ω through ρ (inertial, ∝ ω²) and the moment -g m L × e3 of
-the rotor's weight about its axis point (not inertial): two loads of order 1 a quarter period
+the rotor's weight about its axis point (not inertial: the ``weight``, which no speed changes): two loads of order 1 a quarter period
 apart for each. The last term of (3) is the weight's tilt of the rotor's mean position
 (:func:`~foundation_calc.solvers.rigid_body.kinematics.weight_tilt`); the rest of (3) and (4)
 average to zero over a revolution, and (2) to the rotor's gyroscopic coupling
@@ -137,14 +137,15 @@ class UnbalancedExciter(MachinePart):
 
     def load_rows(self, omega: float, g: float) -> list[LoadRow]:
         """(4) as loads of order 1 at ρ: 2 Re(c e^{iσφ}) = 2 Re c cos φ + 2 Im c cos(φ + σπ/2) for the
-        force's coefficient c = m ω² λ (inertial) and the weight's moment's c = -g m λ × e3."""
+        force's coefficient c = m ω² λ (inertial) and the weight's moment's c = -g m λ × e3 (weight)."""
         lam = self.eccentric_phasor()
         rows = []
         for c, inertial in ((self.m * omega * omega * lam, True), (-g * self.m * np.cross(lam, E3), False)):
             for part, phase in ((c.real, 0.0), (c.imag, self.sense * np.pi / 2.0)):
                 if np.any(part != 0.0):
                     force, moment = (2.0 * part, np.zeros(3)) if inertial else (np.zeros(3), 2.0 * part)
-                    rows.append(LoadRow(1, force.tolist(), moment.tolist(), float(phase), tuple(self.rho), inertial))
+                    rows.append(LoadRow(1, force.tolist(), moment.tolist(), float(phase), tuple(self.rho), inertial,
+                                            not inertial))
         return rows
 
     def carried_inertia(self, omega: float) -> float:

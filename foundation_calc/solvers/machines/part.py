@@ -15,7 +15,8 @@ coordinates of :mod:`foundation_calc.solvers.rigid_body`):
   the mean mass in M;
 - its forcing harmonics at the speed as loads at points (:meth:`MachinePart.load_rows`, each
   :class:`LoadRow`), which :func:`~foundation_calc.solvers.block.model.excitation` carries to O
-  as Q_n, the rows whose amplitude grows as ω² marked ``inertial``;
+  as Q_n, the rows whose amplitude grows as ω² marked ``inertial``, those of the moving weight
+  (which no speed changes) marked ``weight``;
 - the rotating inertia the machine's motor turns besides its own (:meth:`MachinePart.carried_inertia`);
 - its derivation for the calculation sheet as plain data (:meth:`MachinePart.sheet_text`): text
   and numbers (:class:`Number`, :class:`Triple`) that the sheet formats, and the phrase of the
@@ -55,6 +56,9 @@ class LoadRow(NamedTuple):
     at : point of application from O (3,) [m]
     inertial : the amplitude grows as ω² when the speed changes (an unbalance's, a mechanism's
         inertia forces); given loads keep theirs
+    weight : the moment of the moving weight (a crank mechanism's rods and sliders, an exciter's
+        rotor): independent of the speed in every command, a sweep's and a start-up's alike, where
+        a start-up takes the vendor's given loads as the inertia forces they stand for
     """
 
     order: int
@@ -63,6 +67,7 @@ class LoadRow(NamedTuple):
     phase: float
     at: object
     inertial: bool
+    weight: bool = False
 
 
 @dataclass(frozen=True)
