@@ -1,0 +1,35 @@
+"""Block scenes as a careless user writes them: each mistake gives one message that names the
+key, its unit and what is allowed (docs/exit-codes.md), never a repeated or garbled one."""
+
+from __future__ import annotations
+
+import copy
+
+import tomli_w
+
+from foundation_calc.cli.app import app
+from foundation_calc.scenes import read_toml
+from tests.conftest import CONFIGS
+
+TWO_MACHINES = read_toml(CONFIGS / "block_two_machines.toml")
+
+
+def _scene(tmp_path, document, name="scene.toml"):
+    path = tmp_path / name
+    path.write_text(tomli_w.dumps(document), encoding="utf-8")
+    return path
+
+
+def test_check_names_a_problem_that_stops_every_check_once(runner, tmp_path):
+    """A block that tips over (its rocking springs typed in N m/rad × 1e-7) makes the resonance and
+    the amplitudes invalid alike: `fcalc check` prints the problem once, as `fcalc resonance` does,
+    and its JSON still gives each check its problems."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["soil"]["stiffness"] = [8.4e3, 8.0e3, 1.05e4, 6.6e3, 1.6e3, 9.1e3]
+    path = _scene(tmp_path, document)
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 3, result.output
+    assert result.stderr.count("the block tips over about x") == 1, result.stderr
+    assert result.stderr.count("error: invalid scene") == 1, result.stderr
+    single = runner.invoke(app, ["resonance", str(path)])
+    assert single.exit_code == 3 and single.stderr.count("the block tips over about x") == 1
