@@ -33,3 +33,15 @@ def test_check_names_a_problem_that_stops_every_check_once(runner, tmp_path):
     assert result.stderr.count("error: invalid scene") == 1, result.stderr
     single = runner.invoke(app, ["resonance", str(path)])
     assert single.exit_code == 3 and single.stderr.count("the block tips over about x") == 1
+
+
+def test_a_block_given_in_part_names_the_missing_key_and_its_unit(runner, tmp_path):
+    """A block given by its mass and cog without its inertia (or by its height without a density)
+    is refused with the missing key's full name and unit, not "block needs inertia too"."""
+    for block, key in (({"mass": 1.48e5, "cog": [0.0, 0.0, 1.1]}, "block.inertia [kg m²]"),
+                       ({"height": 2.2}, "block.density [kg/m³]")):
+        document = copy.deepcopy(TWO_MACHINES)
+        document["block"] = {"length": 7.0, "width": 4.0, **block}
+        result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
+        assert result.exit_code == 3, result.output
+        assert f"{key} missing" in result.stderr, result.stderr
