@@ -45,3 +45,21 @@ def test_a_block_given_in_part_names_the_missing_key_and_its_unit(runner, tmp_pa
         result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
         assert result.exit_code == 3, result.output
         assert f"{key} missing" in result.stderr, result.stderr
+
+
+def test_a_rule_over_an_array_of_tables_does_not_repeat_the_tables(runner, tmp_path):
+    """Two machines of one name, a machine with nothing that shakes the block, two points of one
+    name: the message names the array and the entry at fault, without the tables' text after it
+    ("(got [{'name': 'compressor', 'mass': 12000.0, ...")."""
+    same = copy.deepcopy(TWO_MACHINES)
+    same["machines"][1]["name"] = "compressor"
+    idle = copy.deepcopy(TWO_MACHINES)
+    del idle["machines"][0]["loads"]
+    points = copy.deepcopy(TWO_MACHINES)
+    points["points"][1]["name"] = points["points"][0]["name"]
+    for document, key, text in ((same, "machines", "distinct: compressor"), (idle, "machines", "'compressor' needs"),
+                                (points, "points", "distinct and not 'G'")):
+        result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
+        assert result.exit_code == 3, result.output
+        assert f"  {key}: " in result.stderr and text in result.stderr, result.stderr
+        assert "got [{" not in result.stderr, result.stderr
