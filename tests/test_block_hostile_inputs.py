@@ -63,3 +63,12 @@ def test_a_rule_over_an_array_of_tables_does_not_repeat_the_tables(runner, tmp_p
         assert result.exit_code == 3, result.output
         assert f"  {key}: " in result.stderr and text in result.stderr, result.stderr
         assert "got [{" not in result.stderr, result.stderr
+
+
+def test_a_soil_method_names_each_missing_key_with_its_unit(runner, tmp_path):
+    """Barkan's coefficients without c_x: `soil.c_x [N/m³]`, as every other message names a key."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["soil"] = {"method": "coefficients", "c_z": 8.0e7}
+    result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
+    assert result.exit_code == 3, result.output
+    assert "method 'coefficients' needs soil.c_x [N/m³]" in result.stderr, result.stderr

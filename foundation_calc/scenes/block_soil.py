@@ -99,9 +99,9 @@ class BlockSoil(Soil):
     def _method_has_its_data(self):
         method = self.method_used
         required = ("stiffness",) if method == "springs" else METHOD_REQUIRED[method]
-        missing = [k for k in required if getattr(self, k) is None]
+        missing = self.missing_text(required)
         if missing:
-            raise ValueError(f"method {method!r} needs {', '.join('soil.' + k for k in missing)}")
+            raise ValueError(f"method {method!r} needs {missing}")
         for key in ("stiffness", "dashpot"):
             values = getattr(self, key)
             if values is not None and any(v < 0 for v in values):
