@@ -6,6 +6,8 @@ from __future__ import annotations
 import copy
 
 import tomli_w
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from foundation_calc.cli.app import app
 from foundation_calc.scenes import read_toml
@@ -63,6 +65,28 @@ def test_a_rule_over_an_array_of_tables_does_not_repeat_the_tables(runner, tmp_p
         assert result.exit_code == 3, result.output
         assert f"  {key}: " in result.stderr and text in result.stderr, result.stderr
         assert "got [{" not in result.stderr, result.stderr
+
+
+SPRINGS = TWO_MACHINES["soil"]
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(direction=st.integers(0, 5), value=st.sampled_from([0.0, -0.0, -1.0, -8.4e9]), key=st.sampled_from(["stiffness", "dashpot"]))
+def test_a_spring_not_above_zero_is_refused_with_its_units(runner, tmp_path, direction, value, key):
+    """A given spring of 0 or below, in any direction, is refused naming soil.stiffness, both its
+    units and "> 0" (0 leaves the block unrestrained, so "must be >= 0" was wrong); a dashpot of 0
+    is allowed (none), one below 0 is refused naming soil.dashpot and its units."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["soil"][key][direction] = value
+    result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document)), "--json"])
+    if key == "dashpot" and value == 0.0:
+        assert result.exit_code in (0, 1), result.output
+        return
+    assert result.exit_code == 3, result.output
+    if key == "stiffness":
+        assert "soil.stiffness must be > 0 N/m (along x, y, z) and > 0 N m/rad" in result.stderr, result.stderr
+    else:
+        assert "soil.dashpot must be >= 0 N s/m (along x, y, z) and >= 0 N m s/rad" in result.stderr, result.stderr
 
 
 def test_a_soil_method_names_each_missing_key_with_its_unit(runner, tmp_path):
