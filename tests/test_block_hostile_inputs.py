@@ -96,3 +96,20 @@ def test_a_soil_method_names_each_missing_key_with_its_unit(runner, tmp_path):
     result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
     assert result.exit_code == 3, result.output
     assert "method 'coefficients' needs soil.c_x [N/m³]" in result.stderr, result.stderr
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(axis=st.sampled_from([3, 4]), exponent=st.floats(-9.0, -6.0))
+def test_design_judges_a_block_that_tips_over_as_check_does(runner, tmp_path, axis, exponent):
+    """A block whose rocking spring about x or y (typed 1e-6 ... 1e-9 of its value) cannot carry
+    the weight's overturning moment on any candidate: `fcalc check` refuses the scene, every check
+    with it; the design search failed the resonance and amplitudes but passed the office checks,
+    so its re-check by check's path reported a DISAGREEMENT, an internal error (exit 4). The
+    search now fails the office checks of a block that tips over too: no candidate passes (exit 1)."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["soil"]["stiffness"][axis] *= 10.0**exponent
+    path = _scene(tmp_path, document)
+    assert runner.invoke(app, ["check", str(path)]).exit_code == 3
+    result = runner.invoke(app, ["design", str(path), "--vary", "block.length=6:8", "--json"])
+    assert result.exit_code == 1, result.output
+    assert "DISAGREEMENT" not in result.output
