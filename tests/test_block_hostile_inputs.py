@@ -4,6 +4,7 @@ key, its unit and what is allowed (docs/exit-codes.md), never a repeated or garb
 from __future__ import annotations
 
 import copy
+import json
 
 import tomli_w
 from hypothesis import HealthCheck, given, settings
@@ -113,3 +114,25 @@ def test_design_judges_a_block_that_tips_over_as_check_does(runner, tmp_path, ax
     result = runner.invoke(app, ["design", str(path), "--vary", "block.length=6:8", "--json"])
     assert result.exit_code == 1, result.output
     assert "DISAGREEMENT" not in result.output
+
+
+CRANK_LENGTHS = ("crank_radius", "rod_length", "rod_cog_to_crank_pin", "rod_radius_of_gyration", "rotating_radius")
+
+
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(throw=st.sampled_from([0, 1]), scale=st.sampled_from([1e3, 1e2]))
+def test_a_crank_throw_typed_in_mm_is_warned(runner, tmp_path, throw, scale):
+    """A throw of configs/block_two_throw_compressor.toml with its lengths typed in mm (or cm): λ =
+    r/l and every position stay plausible, so nothing warned and the amplitudes were judged on a
+    110 m crank. Each length (0 is not judged) is now warned, naming its key and the slip to mm."""
+    document = read_toml(CONFIGS / "block_two_throw_compressor.toml")
+    crank = document["machines"][0]["cranks"][throw]
+    for key in CRANK_LENGTHS:
+        crank[key] = crank.get(key, 0.0) * scale
+    result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document)), "--json"])
+    assert result.exit_code in (0, 1), result.output
+    warned = " ".join(w if isinstance(w, str) else str(w) for w in json.loads(result.stdout)["warnings"])
+    for key in CRANK_LENGTHS:
+        if crank[key] > 0:
+            assert f"machines[0].cranks[{throw}].{key} = {crank[key]:g} m is above the plausible range" in warned, warned
+    assert "likely typed in mm" in result.stderr or scale != 1e3
