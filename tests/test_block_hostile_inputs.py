@@ -136,3 +136,13 @@ def test_a_crank_throw_typed_in_mm_is_warned(runner, tmp_path, throw, scale):
         if crank[key] > 0:
             assert f"machines[0].cranks[{throw}].{key} = {crank[key]:g} m is above the plausible range" in warned, warned
     assert "likely typed in mm" in result.stderr or scale != 1e3
+
+
+def test_sampling_a_block_on_isolators_does_not_ask_for_a_soil_key(runner):
+    """`fcalc soil --sample` refuses a block on [[isolators]] (exit 2); it told the user to give
+    soil.modulus_range, a key such a scene cannot have (no [soil]). A piled block keeps the advice."""
+    isolated = runner.invoke(app, ["soil", str(CONFIGS / "block_on_isolators.toml"), "--sample", "5"])
+    assert isolated.exit_code == 2, isolated.output
+    assert "not sampled, a block on [[isolators]]" in isolated.output and "soil.modulus_range" not in isolated.output
+    piled = runner.invoke(app, ["soil", str(CONFIGS / "block_on_piles.toml"), "--sample", "5"])
+    assert piled.exit_code == 2 and "give soil.modulus_range" in piled.output, piled.output
