@@ -146,3 +146,16 @@ def test_sampling_a_block_on_isolators_does_not_ask_for_a_soil_key(runner):
     assert "not sampled, a block on [[isolators]]" in isolated.output and "soil.modulus_range" not in isolated.output
     piled = runner.invoke(app, ["soil", str(CONFIGS / "block_on_piles.toml"), "--sample", "5"])
     assert piled.exit_code == 2 and "give soil.modulus_range" in piled.output, piled.output
+
+
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(factor=st.sampled_from([1.01, 3.0, 1e3]))
+def test_an_unbalanced_rotor_heavier_than_its_machine_is_warned(runner, tmp_path, factor):
+    """The motor of configs/block_two_machines.toml (6 t, its rotor 1.8 t) with a rotor heavier than
+    the whole machine, which includes it (the rotor in kg, the machine in t, or a typo): judged
+    silently before; now a warning names both keys and their unit."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["machines"][1]["unbalance"]["rotor_mass"] = document["machines"][1]["mass"] * factor
+    result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
+    assert result.exit_code in (0, 1), result.output
+    assert "machines[1].unbalance.rotor_mass" in result.stderr and "machines[1].mass = 6000 kg" in result.stderr
