@@ -159,3 +159,19 @@ def test_an_unbalanced_rotor_heavier_than_its_machine_is_warned(runner, tmp_path
     result = runner.invoke(app, ["resonance", str(_scene(tmp_path, document))])
     assert result.exit_code in (0, 1), result.output
     assert "machines[1].unbalance.rotor_mass" in result.stderr and "machines[1].mass = 6000 kg" in result.stderr
+
+
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(axis=st.sampled_from([3, 4]), exponent=st.floats(-9.0, -6.0))
+def test_sampling_a_block_that_tips_over_names_the_culprit(runner, tmp_path, axis, exponent):
+    """`fcalc soil --sample` of a block that tips over on its own soil: every sample's percentile
+    was NaN, so a numpy RuntimeWarning leaked to stderr and the error named
+    `sample.values.resonance_utilisation[0] is NaN`; it is refused as `fcalc check` refuses it,
+    naming soil.stiffness and the tipping, exit 3, and its JSON is the error's document."""
+    document = copy.deepcopy(TWO_MACHINES)
+    document["soil"]["stiffness"][axis] *= 10.0**exponent
+    result = runner.invoke(app, ["soil", str(_scene(tmp_path, document)), "--sample", "5", "--json"])
+    assert result.exit_code == 3, result.output
+    assert "RuntimeWarning" not in result.stderr and "is NaN" not in result.stderr, result.stderr
+    assert json.loads(result.stdout)["problems"][0]["field"] == "soil.stiffness"
+    assert "the block tips over about" in result.stderr
