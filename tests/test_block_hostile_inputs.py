@@ -72,7 +72,8 @@ SPRINGS = TWO_MACHINES["soil"]
 
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(direction=st.integers(0, 5), value=st.sampled_from([0.0, -0.0, -1.0, -8.4e9]), key=st.sampled_from(["stiffness", "dashpot"]))
+@given(direction=st.integers(0, 5), value=st.sampled_from([0.0, -0.0, -1.0, -8.4e9]),
+       key=st.sampled_from(["stiffness", "dashpot"]))
 def test_a_spring_not_above_zero_is_refused_with_its_units(runner, tmp_path, direction, value, key):
     """A given spring of 0 or below, in any direction, is refused naming soil.stiffness, both its
     units and "> 0" (0 leaves the block unrestrained, so "must be >= 0" was wrong); a dashpot of 0
@@ -134,7 +135,8 @@ def test_a_crank_throw_typed_in_mm_is_warned(runner, tmp_path, throw, scale):
     warned = " ".join(w if isinstance(w, str) else str(w) for w in json.loads(result.stdout)["warnings"])
     for key in CRANK_LENGTHS:
         if crank[key] > 0:
-            assert f"machines[0].cranks[{throw}].{key} = {crank[key]:g} m is above the plausible range" in warned, warned
+            found = f"machines[0].cranks[{throw}].{key} = {crank[key]:g} m is above the plausible range"
+            assert found in warned, warned
     assert "likely typed in mm" in result.stderr or scale != 1e3
 
 
