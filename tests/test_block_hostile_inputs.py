@@ -68,9 +68,6 @@ def test_a_rule_over_an_array_of_tables_does_not_repeat_the_tables(runner, tmp_p
         assert "got [{" not in result.stderr, result.stderr
 
 
-SPRINGS = TWO_MACHINES["soil"]
-
-
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(direction=st.integers(0, 5), value=st.sampled_from([0.0, -0.0, -1.0, -8.4e9]),
        key=st.sampled_from(["stiffness", "dashpot"]))
