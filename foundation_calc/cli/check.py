@@ -35,15 +35,21 @@ VerboseOpt = Annotated[
 
 
 def _report_problems(scenes) -> None:
-    """Every scene that could not be checked, on stderr, as the single-scene commands print it."""
+    """Every scene that could not be checked, on stderr, as the single-scene commands print it: a
+    problem that makes several checks invalid (a block that tips over stops the resonance and the
+    amplitudes alike) once."""
     from foundation_calc.cli.guard import print_warnings, report_error, report_internal
     from foundation_calc.errors import SceneError
 
     for scene in scenes:
         print_warnings(scene.warnings, scene.source)
+        shown: set = set()
         for run in scene.runs:
             if run.verdict == "invalid":
-                report_error(SceneError(scene.source, list(run.problems)))
+                new = [problem for problem in run.problems if tuple(problem) not in shown]
+                shown.update(tuple(problem) for problem in new)
+                if new:
+                    report_error(SceneError(scene.source, new))
             elif run.verdict == "internal":
                 report_internal(f"{scene.source}, check {run.check}: {run.problems[0][1]}")
 

@@ -257,6 +257,12 @@ class BlockScene(Plausible, OnSoil, SceneHeader):
                         f"machines[{i}].cranks[{j}]: λ = crank_radius/rod_length = {lam:.3g} is above {CRANK_RATIO:g}; connecting"
                         " rods of compressors and engines are 2.5 to 7 crank radii long (λ 0.14-0.4): was the stroke typed"
                         " as the crank radius, or the rod measured between other points?")))
+        for i, m in enumerate(self.machines):
+            if m.unbalance is not None and m.unbalance.rotor_mass > m.mass > 0.0:
+                key = f"machines[{i}].unbalance.rotor_mass"
+                found.append(Remark(key, f"{key} = {m.unbalance.rotor_mass:g} kg exceeds the machine's mass"
+                                         f" machines[{i}].mass = {m.mass:g} kg, which includes its rotor; are both in kg"
+                                         " (one typed in t is 1000 × low)?"))
         half = min(L, B) / 2.0
         for i, m in enumerate(self.machines):
             for j, e in enumerate(m.exciters):

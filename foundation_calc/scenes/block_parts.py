@@ -54,9 +54,13 @@ class BlockBody(SceneModel):
                 "give the block as height [m] and density [kg/m³], or by mass [kg], cog [m] and inertia [kg m²]"
                 + (" (not both)" if solid else "")
             )
-        missing = [k for k in (("height", "density") if solid else ("mass", "cog", "inertia")) if getattr(self, k) is None]
+        units = {"height": "m", "density": "kg/m³"} if solid else {"mass": "kg", "cog": "m", "inertia": "kg m²"}
+        missing = [f"block.{k} [{unit}]" for k, unit in units.items() if getattr(self, k) is None]
         if missing:
-            raise ValueError(f"block needs {' and '.join(missing)} too")
+            keys = [f"{k} [{unit}]" for k, unit in units.items()]
+            how = "as a solid" if solid else "by its mass properties"
+            raise ValueError(f"{' and '.join(missing)} missing: a block given {how} needs {', '.join(keys[:-1])}"
+                             f" and {keys[-1]}")
         if self.inertia is not None and any(j < 0 for j in self.inertia):
             raise ValueError(f"block.inertia must be >= 0 kg m² each (got {list(self.inertia)})")
         if self.embedment and self.height is not None and self.embedment > self.height:

@@ -99,15 +99,15 @@ class BlockSoil(Soil):
     def _method_has_its_data(self):
         method = self.method_used
         required = ("stiffness",) if method == "springs" else METHOD_REQUIRED[method]
-        missing = [k for k in required if getattr(self, k) is None]
+        missing = self.missing_text(required)
         if missing:
-            raise ValueError(f"method {method!r} needs {', '.join('soil.' + k for k in missing)}")
-        for key in ("stiffness", "dashpot"):
-            values = getattr(self, key)
-            if values is not None and any(v < 0 for v in values):
-                raise ValueError(f"soil.{key} must be >= 0 in every direction (got {list(values)})")
+            raise ValueError(f"method {method!r} needs {missing}")
+        if self.stiffness is not None and not all(k > 0 for k in self.stiffness):
+            raise ValueError("soil.stiffness must be > 0 N/m (along x, y, z) and > 0 N m/rad (about them) in every"
+                             f" direction, or the block is not restrained (got {list(self.stiffness)})")
+        if self.dashpot is not None and any(c < 0 for c in self.dashpot):
+            raise ValueError("soil.dashpot must be >= 0 N s/m (along x, y, z) and >= 0 N m s/rad (about them) in every"
+                             f" direction (got {list(self.dashpot)})")
         if method in HALF_SPACE_METHODS and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
             raise ValueError(f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and soil.shear_wave_velocity [m/s]")
-        if self.stiffness is not None and not all(self.stiffness):
-            raise ValueError(f"soil.stiffness must be > 0 in every direction, or the block is not restrained (got {list(self.stiffness)})")
         return self

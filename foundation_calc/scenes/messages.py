@@ -96,6 +96,12 @@ def _shorten(value: Any, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
+def _is_table(value: Any) -> bool:
+    """A TOML table or an array of tables (``[[machines]]``): the message names its key and the
+    entry at fault, and repeating the tables' text would bury that."""
+    return isinstance(value, dict) or (isinstance(value, list) and any(isinstance(item, dict) for item in value))
+
+
 def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> list[tuple[str, str]]:
     """Return ``(dotted location, message)`` pairs for every error in ``exc``."""
     problems = []
@@ -113,7 +119,7 @@ def describe_validation_error(model: type[BaseModel], exc: ValidationError) -> l
         msg = _plain(err, info)
         details = []
         given = err.get("input")
-        if kind != "missing" and not isinstance(given, dict) and not _names_value(msg, given):
+        if kind != "missing" and not _is_table(given) and not _names_value(msg, given):
             details.append(f"got {_shorten(given)}")
         table = _missing_table(info) if kind == "missing" else ""
         if table:

@@ -241,6 +241,11 @@ RANGES: dict[str, PlausibleRange] = {
         "balance quality grades", "mm/s", 0.4, 4000.0, "ISO 21940-11, Table 1", (Slip("m/s", 1e3),),
         basis="grades G 0.4 (gyroscopes, precision spindles) to G 4000 (crankshafts of slow marine diesel engines)",
     ),
+    "crank_length": PlausibleRange(
+        "lengths of crank mechanisms", "m", 1e-3, 5.0, _JUDGEMENT, (_MM,),
+        basis="crank radii of compressors, presses and engines some 0.03-1 m, their rods up to about 4 m (slow"
+        " marine engines); 0 (a rod's cog at its pin, no net unbalance) is not judged", zero_allowed=True,
+    ),
     "exciter_eccentricity": PlausibleRange(
         "eccentricities of exciter rotors", "m", 1e-3, 1.0, _JUDGEMENT, (_MM,),
         basis="the eccentric weights of vibratory motors and exciters sit some 1 cm to 0.3 m from their shafts"
@@ -388,6 +393,11 @@ KEYS: dict[str, str] = {
     "piles.density": "block_density",
     "machines[].unbalance.balance_grade_mm_s": "balance_grade",
     "machines[].exciters[].eccentricity": "exciter_eccentricity",
+    # a crank mechanism's lengths (a crank scene's [mechanism], a block machine's [[machines.cranks]]): mm
+    # typed as m keeps λ = r/l and the throw's place plausible
+    **{f"{table}{k}": "crank_length" for table in ("mechanism.", "machines[].cranks[].")
+       for k in ("crank_radius", "rod_length", "rod_cog_to_crank_pin", "rod_radius_of_gyration")},
+    "machines[].cranks[].rotating_radius": "crank_length",
     # limits (crank and block foundations; a platform's transient_amplitude)
     **{f"limits.{k}": "amplitude_limit" for k in ("amplitude", "amplitude_rms")},
     **{f"limits.{k}": "velocity_limit" for k in ("velocity", "velocity_rms")},

@@ -9,6 +9,7 @@ soil class. A key of another method, or a misspelt one, is an error that lists t
 from __future__ import annotations
 
 import difflib
+import re
 from typing import ClassVar, Literal
 
 from pydantic import field_validator, model_validator
@@ -187,15 +188,20 @@ class Soil(SceneModel):
             update = {"shear_wave_velocity": self.shear_wave_velocity * factor**0.5}
         return self.model_copy(update=update | {"modulus_range": None})
 
+    def missing_text(self, keys) -> str:
+        """``soil.c_x [N/m³], soil.soil_class``: the ``keys`` this soil leaves out, each with the unit
+        its field declares (none for text and ratios), for a method's message; "" if none is missing."""
+        fields = type(self).model_fields
+        units = {k: re.search(r"\[([^\]]+)\]", fields[k].description or "") for k in keys}
+        return ", ".join(f"soil.{k}" + (f" [{u[1]}]" if u and u[1] != "-" else "") for k, u in units.items()
+                         if getattr(self, k) is None)
+
     @model_validator(mode="after")
     def _method_has_its_data(self):
         method = self.method_used
-        missing = [k for k in METHOD_REQUIRED[method] if getattr(self, k) is None]
+        missing = self.missing_text(METHOD_REQUIRED[method])
         if missing:
-            raise ValueError(
-                f"method {method!r} needs {', '.join('soil.' + k for k in missing)}"
-                f" (its keys: {_method_keys(method)})"
-            )
+            raise ValueError(f"method {method!r} needs {missing} (its keys: {_method_keys(method)})")
         if method in HALF_SPACE_METHODS and (self.shear_modulus is None) == (self.shear_wave_velocity is None):
             raise ValueError(
                 f"method {method!r} needs exactly one of soil.shear_modulus [Pa] and"

@@ -42,7 +42,8 @@ does not drive, warns); amplitudes, the largest value over its limit (peak or RM
 velocity over the code zone's boundary that fails it); office, the largest of e/(e_max L),
 q_max/q_a and μ_min/μ (eccentricity and mass ratio warn, the pressure fails). A block that tips
 over or is unrestrained (a squared frequency not positive, which ``fcalc check`` reports as an
-error) fails the resonance and amplitude checks with utilisation inf.
+error) fails the resonance and amplitude checks with utilisation inf, and one that tips over (a
+rocking spring at O no stiffer than W z_G, which ``fcalc check`` refuses) the office checks too.
 """
 
 from __future__ import annotations
@@ -321,8 +322,19 @@ def _judge(scene, _, support, L, B, H, sizes) -> dict:
             found = over_range(scene, found, judged(scene, (L, B, H), _built, dynamics), RANGE_REASON)
         o, g, r = inputs
         found["inputs"] = (o, np.full(len(L), np.nan), g, r)
-        found["office"] = _office(scene, built.model, L, B, built.block_mass)
+        found["office"] = _unless_tipped(built.model, _office(scene, built.model, L, B, built.block_mass))
     return found
+
+
+def _unless_tipped(model, check):
+    """``check`` (outcome, utilisation, governing, reasons) with every candidate that tips over
+    failing it, utilisation inf: a rocking spring at O no stiffer than the weight's overturning
+    moment (K_rx or K_ry less W z_G not positive), which ``fcalc check`` refuses as an invalid
+    scene, every check with it (:meth:`~foundation_calc.scenes.block.BlockScene.stable_model`)."""
+    o, u, g, r = check
+    tips = ~(np.diagonal(model.K, axis1=-2, axis2=-1)[..., 3:5] > 0.0).all(axis=-1)
+    r = (*r, "the block tips over (fcalc check: invalid scene)")
+    return (*failing(tips, o, u, g, len(r) - 1), r)
 
 
 __all__ = ["NOT_EVALUATED", "VARIABLE_KEYS", "Built", "dynamics", "evaluate"]

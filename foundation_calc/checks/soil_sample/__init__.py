@@ -78,8 +78,9 @@ def refuse_unscaled(scene) -> None:
     from foundation_calc.errors import UsageError
 
     if (unscaled := scene.support().unscaled) is not None:
-        raise UsageError(f"not sampled, a {NOUNS[scene.kind]} on {unscaled}; give soil.modulus_range and fcalc check"
-                         " judges the range", "'--sample'")
+        judged = ("give soil.modulus_range and fcalc check judges the range" if getattr(scene, "soil", None) is not None
+                  else "fcalc check judges the block on the rates given")  # isolators: no [soil] to bracket
+        raise UsageError(f"not sampled, a {NOUNS[scene.kind]} on {unscaled}; {judged}", "'--sample'")
 
 
 def sample_scene(scene, n: int, cov_modulus: float, cov_speed: float = 0.0, seed: int = 0) -> SoilSample:

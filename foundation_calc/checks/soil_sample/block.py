@@ -23,13 +23,16 @@ MODES = tuple(f"mode{j}" for j in range(1, 7))
 
 
 def _piece(scene, factor) -> dict[str, np.ndarray]:
-    """The sampled quantities of the samples ``factor`` (N,): frequencies, utilisations, outcomes."""
+    """The sampled quantities of the samples ``factor`` (N,): frequencies, utilisations, outcomes.
+
+    Raises PhysicsError, naming the culprit, when the scene's own block tips over (every
+    sample but the stiffer ones would, and none gives a percentile), as ``fcalc check`` refuses it."""
     from foundation_calc.checks.design.block import Built, dynamics
     from foundation_calc.checks.design.block_range import on_factors, scaled_impedance
     from foundation_calc.checks.design.candidates import FAIL
     from foundation_calc.solvers.block.response import batch_modes, consistent_batch
 
-    model = on_factors(scene.model(), factor)
+    model = on_factors(scene.stable_model(), factor)  # the scene's own block tipping over is refused, as by check
     impedance = scaled_impedance(scene.soil_impedance, factor) if scene.support().frequency_dependent else None
     points = np.array([p.at for p in scene.points], dtype=float).reshape(-1, 3)
     built = Built(model, scene.excitations(), points, impedance, None)
