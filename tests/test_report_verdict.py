@@ -73,8 +73,9 @@ def _result_rows(check: dict) -> list[str]:
     """The verdicts of the rows of one check's result document, in the sheet's order."""
     result = check["result"]
     name = check["check"]
-    if name == "resonance":  # a condition that is not judged and sets no warning shows why instead of PASS
-        return [r["verdict"] if r["judged"] or r["status"] in ("warn", "fail") else
+    if name == "resonance":  # a condition that is not judged, is not the speed itself (order 1, always judged)
+        # and sets no warning shows why instead of PASS
+        return [r["verdict"] if r["judged"] or r.get("order", r.get("harmonic")) == 1 or r["status"] in ("warn", "fail") else
                 "information" if r["status"] == "information" else "not judged" for r in result["resonances"]]
     if name == "amplitudes":
         code = result.get("code") or {}
@@ -173,3 +174,23 @@ def test_long_tables_may_break_across_pages():
     short = table("", ("a", "b"), [("x", "1")] * 3)
     wordy = table("", ("a", "b"), [("word " * 300, "1")] * 8)  # some 200 lines of text: taller than a page
     assert "breakable: false" in _table(short) and "breakable: true" in _table(wordy)
+
+
+def test_a_sheet_labels_every_resonance_row_as_fcalc_resonance_does(runner, tmp_path):
+    """The speed itself (order 1) is always judged by the rule (docs/resonance-rule.md, rule 3),
+    whatever its forcing share: the sheet's checks table shows its verdict beside the band it needs,
+    as ``fcalc resonance`` shows PASS for it; a higher order under the share stays not judged. The
+    opposed compressor's ω = mode 3 (z) has a forcing share of 0 (the throws cancel vertically)."""
+    from foundation_calc.output.report.verdict import resonance_verdict
+
+    scene = CONFIGS / "block_opposed_compressor.toml"
+    rows = json.loads(runner.invoke(app, ["resonance", str(scene), "--json"]).stdout)["resonances"]
+    speed = [r for r in rows if r["order"] == 1 and not r["judged"]]
+    higher = [r for r in rows if r["order"] > 1 and not r["judged"] and r["status"] == "clear"]
+    assert speed and higher  # the scene still has both kinds of row
+    assert [resonance_verdict(r) for r in speed] == [r["verdict"] for r in speed] == ["pass"] * len(speed)
+    assert {resonance_verdict(r) for r in higher} == {"not judged"}
+    sheet = tmp_path / "sheet.md"
+    assert runner.invoke(app, ["report", str(scene), "-o", str(sheet)]).exit_code == 0
+    line = next(x for x in sheet.read_text(encoding="utf-8").splitlines() if ": ω = mode 3 (z), critical" in x)
+    assert "| PASS |" in line and "≥ 20.0 %" in line, line

@@ -32,10 +32,13 @@ def limit_source(scene, key: str) -> str:
 
 def resonance_verdict(row: dict) -> str:
     """What decides a resonance row (docs/resonance-rule.md): its verdict when the condition is
-    judged or sets a warning or failure; else "information" (inside its band, but its harmonic's
-    forcing share is under 1 %) or "not judged". A row of neither kind is never a PASS beside a
-    margin smaller than its band."""
-    if row["judged"] or row["status"] in ("warn", "fail"):
+    judged, is of order 1 (the speed itself, which the rule always judges: it fails within 5 % and
+    warns inside its band whatever its forcing share, as ``fcalc resonance`` shows it) or sets a
+    warning or failure; else "information" (inside its band, but its harmonic's forcing share is
+    under 1 %) or "not judged". A row of neither kind is never a PASS beside a margin smaller than
+    its band."""
+    order = row.get("order", row.get("harmonic"))  # a block's row names its order, a crank's its harmonic
+    if row["judged"] or order == 1 or row["status"] in ("warn", "fail"):
         return row["verdict"]
     return "information" if row["status"] == "information" else "not judged"
 
